@@ -1,0 +1,71 @@
+"""The one exception family users can cause; every message names where and why."""
+
+from __future__ import annotations
+
+
+class MechplanError(Exception):
+    """Base of every error a user can cause (bad scene, impossible geometry, unreadable file)."""
+
+    def __init__(self, message: str, *, file: str | None = None, key: str | None = None) -> None:
+        self.file = file
+        self.key = key
+        self.detail = message
+        where = []
+        if file:
+            where.append(str(file))
+        if key:
+            where.append(f"key '{key}'")
+        prefix = ": ".join(where)
+        super().__init__(f"{prefix}: {message}" if prefix else message)
+
+
+class SceneError(MechplanError):
+    """The scene file is malformed, incomplete or inconsistent."""
+
+
+class TopologyError(MechplanError):
+    """The mechanism's structure cannot be analysed (W ≠ drives, unsupported group class)."""
+
+
+class UnreachableError(MechplanError):
+    """A group cannot be assembled at some crank positions."""
+
+    def __init__(
+        self,
+        message: str,
+        *,
+        group: str | None = None,
+        intervals_deg: list[tuple[float, float]] | None = None,
+        gap: float | None = None,
+        file: str | None = None,
+    ) -> None:
+        self.group = group
+        self.intervals_deg = intervals_deg or []
+        self.gap = gap
+        super().__init__(message, file=file)
+
+
+class SingularError(MechplanError):
+    """A construction meets nearly parallel lines (toggle, change point): the result is refused."""
+
+    def __init__(
+        self,
+        message: str,
+        *,
+        step: str | None = None,
+        phi_deg: float | None = None,
+        condition: float | None = None,
+        file: str | None = None,
+    ) -> None:
+        self.step = step
+        self.phi_deg = phi_deg
+        self.condition = condition
+        super().__init__(message, file=file)
+
+
+class DrawingError(MechplanError):
+    """A sheet cannot be laid out or written."""
+
+
+class CheckError(MechplanError):
+    """A submission (hand-drawn DXF or table of values) cannot be read or matched."""

@@ -1,0 +1,127 @@
+"""Quantity parsing at the edges: "80 mm", "800 rpm", "1 MPa" → SI floats."""
+
+from __future__ import annotations
+
+import functools
+import math
+import re
+
+import pint
+
+from .errors import SceneError
+
+#: dimension name → (pint dimensionality string, SI unit to convert to)
+DIMENSIONS: dict[str, tuple[str, str]] = {
+    "length": ("[length]", "m"),
+    "angle": ("", "rad"),
+    "angular_velocity": ("1/[time]", "rad/s"),
+    "angular_acceleration": ("1/[time]**2", "rad/s**2"),
+    "velocity": ("[length]/[time]", "m/s"),
+    "acceleration": ("[length]/[time]**2", "m/s**2"),
+    "mass": ("[mass]", "kg"),
+    "inertia": ("[mass]*[length]**2", "kg*m**2"),
+    "force": ("[mass]*[length]/[time]**2", "N"),
+    "moment": ("[mass]*[length]**2/[time]**2", "N*m"),
+    "pressure": ("[mass]/[length]/[time]**2", "Pa"),
+    "area": ("[length]**2", "m**2"),
+    "dimensionless": ("", ""),
+    # scale factors: physical unit per mm of paper
+    "mu_length": ("", "m/mm"),
+    "mu_velocity": ("1/[time]", "m/s/mm"),
+    "mu_acceleration": ("1/[time]**2", "m/s**2/mm"),
+    "mu_force": ("[mass]/[time]**2", "N/mm"),
+    "mu_moment": ("[mass]*[length]/[time]**2", "N*m/mm"),
+}
+
+_EXAMPLES = {
+    "length": '"80 mm" or "0.08 m"',
+    "angle": '"60 deg" or "1.047 rad"',
+    "angular_velocity": '"800 rpm" or "83.8 rad/s"',
+    "angular_acceleration": '"0 rad/s^2"',
+    "velocity": '"6.7 m/s"',
+    "acceleration": '"9.81 m/s^2"',
+    "mass": '"3.1 kg" or "170 g"',
+    "inertia": '"0.1 kg*m^2"',
+    "force": '"7850 N" or "7.85 kN"',
+    "moment": '"100 N*m"',
+    "pressure": '"1 MPa" or "85 kPa"',
+    "area": '"78.5 cm^2"',
+    "dimensionless": '"0.35"',
+    "mu_length": '"0.0025 m/mm"',
+    "mu_velocity": '"0.1 (m/s)/mm"',
+    "mu_acceleration": '"2 (m/s^2)/mm"',
+    "mu_force": '"100 N/mm"',
+    "mu_moment": '"10 N*m/mm"',
+}
+
+
+@functools.lru_cache(maxsize=1)
+def registry() -> pint.UnitRegistry:
+    """Return the project's own explicit unit registry (angles are dimensionless radians)."""
+    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    ureg.define("rpm = revolution / minute")
+    return ureg
+
+
+_DECIMAL_COMMA = re.compile(r"(?<=\d),(?=\d)")
+
+
+def _noun(dimension: str) -> str:
+    words = dimension.replace("mu_", "scale factor of ").replace("_", " ")
+    return ("an " if words[0] in "aeiou" else "a ") + words
+
+
+def parse_quantity(text: object, dimension: str, *, file: str | None = None,
+                   key: str | None = None) -> float:
+    """Parse a quantity as people write it and return its SI value as a float.
+
+    Plain numbers are accepted only for ``dimensionless``; a decimal comma ("0,1") is accepted.
+    Angles come back in radians, angular speeds in rad/s, scale factors per millimetre of paper.
+    """
+    dim, si_unit = DIMENSIONS[dimension]
+    example = _EXAMPLES[dimension]
+    if isinstance(text, bool):
+        raise SceneError(f"expected {_noun(dimension)} such as {example} (got {text!r})",
+                         file=file, key=key)
+    if isinstance(text, (int, float)):
+        if dimension == "dimensionless" or dimension.startswith("mu_"):
+            return float(text)
+        raise SceneError(
+            f"{_noun(dimension)} needs a unit, such as {example} (got {text!r})",
+            file=file, key=key)
+    if not isinstance(text, str) or not text.strip():
+        raise SceneError(f"expected {_noun(dimension)} such as {example} (got {text!r})",
+                         file=file, key=key)
+    cleaned = _DECIMAL_COMMA.sub(".", text.strip()).replace("·", "*").replace("²", "^2")
+    cleaned = cleaned.replace("°", " deg").replace("^", "**")
+    ureg = registry()
+    try:
+        q = ureg.Quantity(cleaned)
+    except Exception as exc:  # pint raises several unrelated types for unparsable text
+        raise SceneError(f"cannot read {text!r} as {_noun(dimension)}; write it like "
+                         f"{example} ({exc.__class__.__name__})", file=file, key=key) from None
+    if not isinstance(q, pint.Quantity):
+        q = ureg.Quantity(float(q), "")
+    target = ureg.Quantity(1.0, si_unit) if si_unit else ureg.Quantity(1.0, "")
+    if q.unitless and dimension.startswith("mu_"):
+        return float(q.magnitude)  # a bare scale factor is in SI units per mm of paper
+    if q.unitless and dimension != "dimensionless":
+        raise SceneError(f"{_noun(dimension)} needs a unit, such as {example} "
+                         f"(got {text!r})", file=file, key=key)
+    if q.dimensionality != target.dimensionality:
+        raise SceneError(
+            f"{text!r} is not {_noun(dimension)} (its unit is "
+            f"'{q.units:~}' [{q.dimensionality}]); write it like {example}",
+            file=file, key=key)
+    value = float(q.to(si_unit).magnitude) if si_unit else float(q.to("").magnitude)
+    if not math.isfinite(value):
+        raise SceneError(f"{text!r} is not a finite number", file=file, key=key)
+    return value
+
+
+def format_number(value: float, digits: int, language: str) -> str:
+    """Format a number with a fixed number of decimals and the language's decimal mark."""
+    s = f"{value:.{digits}f}"
+    if s.startswith("-") and float(s) == 0.0:
+        s = s[1:]
+    return s.replace(".", ",") if language in ("ru", "vi") else s
