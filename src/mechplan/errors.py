@@ -23,7 +23,7 @@ class SceneError(MechplanError):
     """The scene file is malformed, incomplete or inconsistent."""
 
 
-class TopologyError(MechplanError):
+class TopologyError(SceneError):
     """The mechanism's structure cannot be analysed (W ≠ drives, unsupported group class)."""
 
 

@@ -1,0 +1,142 @@
+"""Construction: a DAG of steps evaluated lazily, memoised and vectorised over crank positions."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Iterable, Iterator
+
+import numpy as np
+
+from ..geom.vec import Array
+from .ops import EVALUATORS, SOURCES
+from .segments import Segment
+from .step import Op, Plan, Step
+
+
+@dataclass(frozen=True, slots=True)
+class DriveMap:
+    """Map the scene's crank angle φ to the absolute crank direction θ = ref + sense·φ."""
+
+    ref: float      # rad, direction of φ = 0, counter-clockwise from +x
+    sense: int      # +1 counter-clockwise, -1 clockwise
+
+    def absolute(self, phi: Array) -> Array:
+        """Return θ for φ (radians)."""
+        return self.ref + self.sense * np.asarray(phi, dtype=float)
+
+    def scene(self, theta: Array) -> Array:
+        """Return φ in [0, 2π) for θ (radians)."""
+        return np.mod(self.sense * (np.asarray(theta, dtype=float) - self.ref), 2.0 * np.pi)
+
+
+@dataclass
+class Construction:
+    """An ordered DAG of steps; steps are added after their inputs."""
+
+    drive: DriveMap
+    steps: dict[str, Step] = field(default_factory=dict)
+    segments: list[Segment] = field(default_factory=list)
+    #: vector equations per (plan, group): the equation and rows of (term, direction, magnitude)
+    equations: dict[tuple[Plan, str], tuple[str, list[tuple[str, str, str]]]] = field(
+        default_factory=dict)
+    #: named results: quantity key ("v_C", "omega_2", "r_C") → step id
+    results: dict[str, str] = field(default_factory=dict)
+
+    def add(self, step: Step) -> str:
+        """Add a step whose inputs are already present; return its id."""
+        if step.id in self.steps:
+            raise ValueError(f"duplicate step id {step.id!r}")
+        missing = [i for i in step.inputs if i not in self.steps]
+        if missing:
+            raise ValueError(f"step {step.id!r} needs unknown inputs {missing}")
+        self.steps[step.id] = step
+        return step.id
+
+    def replace(self, step: Step) -> None:
+        """Replace a step that nothing depends on yet (branch resolution)."""
+        if any(step.id in s.inputs for s in self.steps.values()):
+            raise ValueError(f"step {step.id!r} already has dependants")
+        self.steps[step.id] = step
+
+    def __contains__(self, step_id: str) -> bool:
+        return step_id in self.steps
+
+    def __getitem__(self, step_id: str) -> Step:
+        return self.steps[step_id]
+
+    def __iter__(self) -> Iterator[Step]:
+        return iter(self.steps.values())
+
+    def ancestors(self, targets: Iterable[str]) -> list[str]:
+        """Return the targets and everything they depend on, in construction order."""
+        needed: set[str] = set()
+        stack = list(targets)
+        while stack:
+            sid = stack.pop()
+            if sid in needed:
+                continue
+            needed.add(sid)
+            stack.extend(self.steps[sid].inputs)
+        return [sid for sid in self.steps if sid in needed]
+
+    def of_plan(self, plan: Plan) -> list[Step]:
+        """Return the steps of one plan in order."""
+        return [s for s in self.steps.values() if s.plan is plan]
+
+    def evaluate(self, phi: Array | float, dtype: type = np.float64) -> "Evaluation":
+        """Start a lazy evaluation at crank angles φ (radians, scene convention)."""
+        return Evaluation(self, np.atleast_1d(np.asarray(phi, dtype=float)), dtype)
+
+
+class Evaluation:
+    """Values of a construction at N positions, computed on demand and memoised by step id."""
+
+    def __init__(self, construction: Construction, phi: Array, dtype: type = np.float64) -> None:
+        self.construction = construction
+        self.dtype = dtype
+        self.phi = phi
+        self.n = phi.shape[0]
+        self.values: dict[str, Array] = {}
+        self.gaps: dict[str, Array] = {}
+        self.sines: dict[str, Array] = {}
+
+    @property
+    def evaluated(self) -> int:
+        """Number of steps evaluated so far."""
+        return len(self.values)
+
+    def __getitem__(self, step_id: str) -> Array:
+        return self.get(step_id)
+
+    def get(self, step_id: str) -> Array:
+        """Return the value of a step, evaluating its ancestors first if needed."""
+        if step_id in self.values:
+            return self.values[step_id]
+        for sid in self.construction.ancestors([step_id]):
+            if sid not in self.values:
+                self._compute(self.construction.steps[sid])
+        return self.values[step_id]
+
+    def evaluate_all(self, targets: Iterable[str]) -> None:
+        """Evaluate the ancestor closure of targets."""
+        for sid in self.construction.ancestors(targets):
+            if sid not in self.values:
+                self._compute(self.construction.steps[sid])
+
+    def _compute(self, step: Step) -> None:
+        if step.op is Op.CRANK_ANGLE:
+            theta = self.construction.drive.absolute(self.phi)
+            value, gap, sine = theta.astype(self.dtype), None, None
+        elif step.op in SOURCES:
+            value, gap, sine = SOURCES[step.op](step, self.n)
+            value = value.astype(self.dtype)
+        else:
+            args = [self.values[i] for i in step.inputs]
+            value, gap, sine = EVALUATORS[step.op](step, *args)
+        value = np.asarray(value)
+        value.flags.writeable = False
+        self.values[step.id] = value
+        if gap is not None:
+            self.gaps[step.id] = gap
+        if sine is not None:
+            self.sines[step.id] = sine

@@ -1,0 +1,181 @@
+"""Evaluators of construction operations: pure vectorised functions of input values.
+
+Each evaluator returns ``(value, gap, sine)``; ``gap``/``sine`` are None unless the step is a meet
+(see :mod:`mechplan.geom.meet`).
+"""
+
+from __future__ import annotations
+
+from typing import Callable
+
+import numpy as np
+
+from ..geom import meet
+from ..geom.vec import Array, angle_of, as_complex, cross, direction, dot, from_complex, perp, rotate, unit
+from .step import Op, Step
+
+Result = tuple[Array, Array | None, Array | None]
+
+
+def _line(point: Array, u: Array) -> Array:
+    return np.stack((point, u), axis=-2)
+
+
+def _fixed_point(step: Step, n: int) -> Result:
+    xy = np.asarray(step.param("xy"), dtype=float)
+    return np.broadcast_to(xy, (n, 2)).copy(), None, None
+
+
+def _polar(step: Step, centre: Array, angle: Array) -> Result:
+    return centre + step.param("length") * direction(angle + step.param("offset", 0.0)), None, None
+
+
+def _angle_of(step: Step, p: Array, q: Array) -> Result:
+    return angle_of(q - p) - step.param("minus", 0.0), None, None
+
+
+def _angle_plus(step: Step, angle: Array) -> Result:
+    return angle + step.param("delta"), None, None
+
+
+def _circle_circle(step: Step, c1: Array, c2: Array) -> Result:
+    return meet.circle_circle(c1, step.param("r1"), c2, step.param("r2"), step.param("sigma"))
+
+
+def _circle_line(step: Step, c: Array, line: Array) -> Result:
+    return meet.circle_line(c, step.param("r"), line[..., 0, :], line[..., 1, :], step.param("sigma"))
+
+
+def _line_line(step: Step, l1: Array, l2: Array) -> Result:
+    return meet.line_line(l1[..., 0, :], l1[..., 1, :], l2[..., 0, :], l2[..., 1, :])
+
+
+def _locus_line(step: Step, base: Array, *angle: Array) -> Result:
+    theta = angle[0] if angle else np.zeros(base.shape[:-1])
+    offset = np.asarray(step.param("offset"), dtype=float)
+    point = base + rotate(offset, theta)
+    return _line(point, direction(theta + step.param("dir_angle"))), None, None
+
+
+def _carrier_angle(step: Step, pc: Array, ps: Array) -> Result:
+    """Angle of a guide carrier pivoting at pc whose guide must pass through ps."""
+    q0 = np.asarray(step.param("q0"), dtype=float)
+    d = direction(np.asarray(step.param("dir_angle"), dtype=float))
+    rel = ps - pc
+    radius = np.hypot(rel[..., 0], rel[..., 1])
+    origin = np.zeros_like(rel)
+    hit, gap, sine = meet.circle_line(origin, radius, np.broadcast_to(q0, rel.shape),
+                                      np.broadcast_to(d, rel.shape), step.param("sigma"))
+    return angle_of(rel) - angle_of(hit), gap, sine
+
+
+def _place(step: Step, origin: Array, angle: Array) -> Result:
+    return origin + rotate(np.asarray(step.param("offset"), dtype=float), angle), None, None
+
+
+def _similar_position(step: Step, a: Array, b: Array) -> Result:
+    za, zb = as_complex(a), as_complex(b)
+    return from_complex(za + (zb - za) * step.param("z")), None, None
+
+
+def _similar_image(step: Step, a: Array, b: Array, pa: Array, pb: Array, px: Array) -> Result:
+    za, zb = as_complex(a), as_complex(b)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = (as_complex(px) - as_complex(pa)) / (as_complex(pb) - as_complex(pa))
+    return from_complex(za + (zb - za) * ratio), None, None
+
+
+def _rigid_velocity(step: Step, o: Array, omega: Array, po: Array, px: Array) -> Result:
+    return o + omega[..., None] * perp(px - po), None, None
+
+
+def _rigid_acceleration(step: Step, o: Array, omega: Array, eps: Array, po: Array,
+                        px: Array) -> Result:
+    r = px - po
+    return o + eps[..., None] * perp(r) - (omega * omega)[..., None] * r, None, None
+
+
+def _constant(step: Step, n: int) -> Result:
+    return np.full(n, float(step.param("value"))), None, None
+
+
+def _pole(step: Step, n: int) -> Result:
+    return np.zeros((n, 2)), None, None
+
+
+def _drive_velocity(step: Step, a: Array, b: Array) -> Result:
+    return step.param("omega") * perp(b - a), None, None
+
+
+def _drive_acceleration(step: Step, a: Array, b: Array) -> Result:
+    r = b - a
+    omega, eps = step.param("omega"), step.param("epsilon", 0.0)
+    return eps * perp(r) - omega * omega * r, None, None
+
+
+def _line_perp(step: Step, through: Array, p: Array, q: Array) -> Result:
+    return _line(through, unit(perp(q - p))), None, None
+
+
+def _line_parallel(step: Step, through: Array, line: Array) -> Result:
+    return _line(through, line[..., 1, :]), None, None
+
+
+def _omega(step: Step, p: Array, q: Array, vp: Array, vq: Array) -> Result:
+    r = q - p
+    return cross(r, vq - vp) / dot(r, r), None, None
+
+
+def _epsilon(step: Step, p: Array, q: Array, n: Array, aq: Array) -> Result:
+    r = q - p
+    return cross(r, aq - n) / dot(r, r), None, None
+
+
+def _normal(step: Step, ap: Array, omega: Array, p: Array, q: Array) -> Result:
+    return ap - (omega * omega)[..., None] * (q - p), None, None
+
+
+def _coriolis(step: Step, start: Array, omega: Array, v_from: Array, v_to: Array) -> Result:
+    return start + 2.0 * omega[..., None] * perp(v_to - v_from), None, None
+
+
+def _copy(step: Step, x: Array) -> Result:
+    return x, None, None
+
+
+def _difference(step: Step, a: Array, b: Array) -> Result:
+    return b - a, None, None
+
+
+EVALUATORS: dict[Op, Callable[..., Result]] = {
+    Op.POLAR_POINT: _polar,
+    Op.ANGLE_OF: _angle_of,
+    Op.ANGLE_PLUS: _angle_plus,
+    Op.CIRCLE_CIRCLE: _circle_circle,
+    Op.CIRCLE_LINE: _circle_line,
+    Op.LINE_LINE: _line_line,
+    Op.LOCUS_LINE: _locus_line,
+    Op.CARRIER_ANGLE: _carrier_angle,
+    Op.PLACE: _place,
+    Op.SIMILAR_POSITION: _similar_position,
+    Op.SIMILAR_IMAGE: _similar_image,
+    Op.RIGID_VELOCITY: _rigid_velocity,
+    Op.RIGID_ACCELERATION: _rigid_acceleration,
+    Op.DRIVE_VELOCITY: _drive_velocity,
+    Op.DRIVE_ACCELERATION: _drive_acceleration,
+    Op.LINE_PERP: _line_perp,
+    Op.LINE_PARALLEL: _line_parallel,
+    Op.OMEGA: _omega,
+    Op.EPSILON: _epsilon,
+    Op.NORMAL: _normal,
+    Op.CORIOLIS: _coriolis,
+    Op.COPY: _copy,
+    Op.DIFFERENCE: _difference,
+}
+
+#: operations whose value depends only on the number of positions
+SOURCES: dict[Op, Callable[[Step, int], Result]] = {
+    Op.FIXED_POINT: _fixed_point,
+    Op.POLE: _pole,
+    Op.CONSTANT: _constant,
+}

@@ -1,0 +1,1 @@
+"""Plans emitted group by group: position, velocity, acceleration (force in a later module)."""

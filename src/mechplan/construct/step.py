@@ -1,0 +1,92 @@
+"""Steps of a construction: what a student draws, one line or point at a time."""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+from typing import Any
+
+
+class Plan(enum.Enum):
+    """Which plan a step belongs to."""
+
+    POSITION = "position"
+    VELOCITY = "velocity"
+    ACCELERATION = "acceleration"
+    FORCE = "force"
+
+
+class Role(enum.Enum):
+    """How a step is drawn: given data, an auxiliary line, or a result."""
+
+    GIVEN = "given"
+    AUXILIARY = "auxiliary"
+    RESULT = "result"
+
+
+class Kind(enum.Enum):
+    """What a step's value is."""
+
+    POINT = "point"      # (N, 2)
+    LINE = "line"        # (N, 2, 2): a point and a unit direction
+    SCALAR = "scalar"    # (N,)
+
+
+class Op(enum.Enum):
+    """Operations of the graphical method."""
+
+    CRANK_ANGLE = "crank_angle"          # the input: absolute crank angle
+    FIXED_POINT = "fixed_point"          # a point of the frame
+    CONSTANT = "constant"                # a given scalar (ω1, a guide angle)
+    POLAR_POINT = "polar_point"          # centre + length at an angle (crank pin)
+    ANGLE_OF = "angle_of"                # direction of a segment
+    ANGLE_PLUS = "angle_plus"            # an angle plus a constant (slider on a guide)
+    CIRCLE_CIRCLE = "circle_circle"      # two compass arcs
+    CIRCLE_LINE = "circle_line"          # compass arc across a guide line
+    LINE_LINE = "line_line"              # two lines meet
+    LOCUS_LINE = "locus_line"            # line a point of a sliding link must lie on
+    CARRIER_ANGLE = "carrier_angle"      # coulisse direction through a slider pin
+    PLACE = "place"                      # point of a link from a point and the link angle
+    SIMILAR_POSITION = "similar_position"  # triangle on a known side (constant shape)
+    SIMILAR_IMAGE = "similar_image"      # similarity theorem on velocity/acceleration plans
+    RIGID_VELOCITY = "rigid_velocity"    # v_X = v_O + ω × OX
+    RIGID_ACCELERATION = "rigid_acceleration"  # a_X = a_O + ε × OX − ω² OX
+    POLE = "pole"                        # pole p or π (zero vector)
+    DRIVE_VELOCITY = "drive_velocity"    # pb ⊥ AB, ω1·l_AB
+    DRIVE_ACCELERATION = "drive_acceleration"  # π b′ (normal + tangential of the crank)
+    LINE_PERP = "line_perp"              # through an image, ⊥ to a link segment
+    LINE_PARALLEL = "line_parallel"      # through an image, ∥ to a direction (guide)
+    OMEGA = "omega"                      # ω of a link from a relative velocity
+    EPSILON = "epsilon"                  # ε of a link from a tangential component
+    NORMAL = "normal"                    # normal component: from an image, ∥ link, ω²l
+    CORIOLIS = "coriolis"                # Coriolis component 2ω × v_rel
+    COPY = "copy"                        # a value taken over from another step (ω3 = ω2)
+    DIFFERENCE = "difference"            # a vector between two images (relative velocity)
+
+
+@dataclass(frozen=True, slots=True)
+class Step:
+    """One construction step.
+
+    ``inputs`` are ids of earlier steps; ``params`` hold constants (lengths in m, branch signs,
+    local shapes); ``label`` is the name drawn on the plan (``c``, ``n_CB``, ``ω2``);
+    ``subject`` names the geometric objects for the protocol text (e.g. the link segment "BC").
+    """
+
+    id: str
+    op: Op
+    inputs: tuple[str, ...]
+    plan: Plan
+    kind: Kind
+    role: Role
+    label: str
+    group: str = ""
+    params: tuple[tuple[str, Any], ...] = field(default_factory=tuple)
+    subject: tuple[str, ...] = field(default_factory=tuple)
+
+    def param(self, name: str, default: Any = None) -> Any:
+        """Return a parameter by name."""
+        for key, value in self.params:
+            if key == name:
+                return value
+        return default

@@ -1,0 +1,1 @@
+"""Pure vectorised plane geometry: arrays of shape (N, 2) for points, (N,) for scalars."""

@@ -1,0 +1,61 @@
+"""Meets of construction loci with their conditioning, vectorised over positions.
+
+Every function returns ``(point, gap, sine)``:
+- ``point``: (N, 2), NaN where the loci do not meet;
+- ``gap``: (N,) metres by which the loci miss each other (> 0: no meet; ≤ 0: they meet);
+- ``sine``: (N,) |sin| of the angle at which the loci cross (0 = tangent/parallel; the meet's
+  condition number is 1/sine).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .vec import Array, cross, dot, norm, perp
+
+
+def circle_circle(c1: Array, r1: Array | float, c2: Array, r2: Array | float,
+                  sigma: int) -> tuple[Array, Array, Array]:
+    """Intersect circles (c1, r1) and (c2, r2); sigma=+1 takes the point left of c1→c2."""
+    d_vec = c2 - c1
+    d = norm(d_vec)
+    r1 = np.asarray(r1, dtype=float)
+    r2 = np.asarray(r2, dtype=float)
+    gap = np.maximum(d - (r1 + r2), np.abs(r1 - r2) - d)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d)
+        # product form of r1² − a² keeps precision near tangency (Heron)
+        h2 = ((r1 + r2) ** 2 - d * d) * (d * d - (r1 - r2) ** 2) / (4.0 * d * d)
+        h = np.sqrt(np.where(h2 >= 0.0, h2, np.nan))
+        h = np.where((h2 < 0.0) & (gap <= 0.0), 0.0, h)
+        u = d_vec / d[..., None]
+        point = c1 + a[..., None] * u + (sigma * h)[..., None] * perp(u)
+        sine = np.abs(h * d / (r1 * r2))
+    return point, gap, sine
+
+
+def circle_line(c: Array, r: Array | float, p: Array, u: Array,
+                sigma: int) -> tuple[Array, Array, Array]:
+    """Intersect circle (c, r) with the line through p along unit u; sigma=+1 takes the far one along u."""
+    r = np.asarray(r, dtype=float)
+    w = cross(u, c - p)
+    foot = p + dot(c - p, u)[..., None] * u
+    gap = np.abs(w) - r
+    with np.errstate(invalid="ignore"):
+        h2 = (r - w) * (r + w)
+        h = np.sqrt(np.where(h2 >= 0.0, h2, np.nan))
+        h = np.where((h2 < 0.0) & (gap <= 0.0), 0.0, h)
+        point = foot + (sigma * h)[..., None] * u
+        sine = np.abs(h / r)
+    return point, gap, sine
+
+
+def line_line(p1: Array, u1: Array, p2: Array, u2: Array) -> tuple[Array, Array, Array]:
+    """Intersect the line through p1 along u1 with the line through p2 along u2 (u unit)."""
+    s = cross(u1, u2)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = cross(p2 - p1, u2) / s
+        point = p1 + t[..., None] * u1
+    point = np.where((s == 0.0)[..., None], np.nan, point)
+    # two lines always meet unless parallel; parallelism is a conditioning matter, not a gap
+    return point, np.full(s.shape, -np.inf), np.abs(s)

@@ -1,0 +1,60 @@
+"""Vector helpers on arrays of shape (..., 2)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+Array = np.ndarray
+
+
+def perp(v: Array) -> Array:
+    """Rotate vectors by +90° (counter-clockwise)."""
+    return np.stack((-v[..., 1], v[..., 0]), axis=-1)
+
+
+def cross(a: Array, b: Array) -> Array:
+    """Return the z component of a × b."""
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+
+
+def dot(a: Array, b: Array) -> Array:
+    """Return a · b along the last axis."""
+    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1]
+
+
+def norm(v: Array) -> Array:
+    """Return the Euclidean length along the last axis."""
+    return np.hypot(v[..., 0], v[..., 1])
+
+
+def unit(v: Array) -> Array:
+    """Return v / |v| (NaN where |v| = 0)."""
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return v / norm(v)[..., None]
+
+
+def direction(angle: Array) -> Array:
+    """Return unit vectors at the given angles (radians, counter-clockwise from +x)."""
+    angle = np.asarray(angle, dtype=float)
+    return np.stack((np.cos(angle), np.sin(angle)), axis=-1)
+
+
+def angle_of(v: Array) -> Array:
+    """Return the direction angle of vectors in (-π, π]."""
+    return np.arctan2(v[..., 1], v[..., 0])
+
+
+def rotate(v: Array, angle: Array) -> Array:
+    """Rotate vectors counter-clockwise by angle (radians), broadcasting over positions."""
+    c, s = np.cos(angle), np.sin(angle)
+    return np.stack((c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]), axis=-1)
+
+
+def as_complex(v: Array) -> Array:
+    """View (..., 2) vectors as complex numbers."""
+    return v[..., 0] + 1j * v[..., 1]
+
+
+def from_complex(z: Array) -> Array:
+    """Turn complex numbers back into (..., 2) vectors."""
+    return np.stack((z.real, z.imag), axis=-1)

@@ -1,0 +1,1 @@
+"""Mechanism topology and dimensions: links, pairs, guides, drive; structure analysis."""

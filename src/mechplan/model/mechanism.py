@@ -1,0 +1,118 @@
+"""The mechanism as the course describes it: links with points, pairs, guides and a drive.
+
+Every link has its own frame. The frame (link ``"0"``) is the world. A link that slides on a guide
+has its origin at the sliding point and its x axis along the guide; any other link has its first
+two points on its x axis (the first at the origin). Coordinates are metres, angles radians.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+
+GROUND = "0"
+
+
+class PairKind(enum.Enum):
+    """Lower pairs of class 5."""
+
+    REVOLUTE = "R"
+    PRISMATIC = "P"
+
+
+@dataclass(frozen=True, slots=True)
+class Guide:
+    """A straight guide fixed to a link: a line through ``origin`` at ``angle`` in the link frame."""
+
+    name: str
+    link: str
+    origin: tuple[float, float]
+    angle: float
+    through: str            # the named point the guide passes through (for texts)
+
+
+@dataclass(frozen=True, slots=True)
+class Pair:
+    """A lower pair between links ``a`` and ``b``.
+
+    Revolute: ``point`` is the shared point. Prismatic: ``b`` carries ``guide`` and ``a`` is the
+    slider whose frame origin ``point`` lies on it.
+    """
+
+    kind: PairKind
+    a: str
+    b: str
+    point: str
+    guide: str | None = None
+
+    def other(self, link: str) -> str:
+        """Return the link at the other side of the pair."""
+        return self.b if link == self.a else self.a
+
+    def joins(self, link: str) -> bool:
+        """Tell whether the pair touches a link."""
+        return link in (self.a, self.b)
+
+    @property
+    def name(self) -> str:
+        """Short name such as ``R(1,2)@B`` or ``P(3/0)@C``."""
+        if self.kind is PairKind.REVOLUTE:
+            return f"R({self.a},{self.b})@{self.point}"
+        return f"P({self.a}/{self.b}:{self.guide})@{self.point}"
+
+
+@dataclass(frozen=True, slots=True)
+class Link:
+    """A rigid link: named points in its own frame."""
+
+    id: str
+    name: str
+    points: dict[str, tuple[float, float]]
+    slides_on: str | None = None     # guide name when the link is a slider
+
+    def distance(self, p: str, q: str) -> float:
+        """Return the distance between two of the link's points (m)."""
+        (x1, y1), (x2, y2) = self.points[p], self.points[q]
+        return float(((x2 - x1) ** 2 + (y2 - y1) ** 2) ** 0.5)
+
+
+@dataclass(frozen=True, slots=True)
+class Drive:
+    """The driving link: a crank turning about a frame point at constant or accelerating speed."""
+
+    link: str
+    pivot: str
+    omega: float          # rad/s, signed: + counter-clockwise
+    epsilon: float        # rad/s², signed
+    ref_angle: float      # rad, absolute direction of φ = 0
+    ref_name: str         # what φ is measured from ("Ax", "+x")
+
+    @property
+    def sense(self) -> int:
+        """+1 counter-clockwise, -1 clockwise."""
+        return 1 if self.omega >= 0 else -1
+
+
+@dataclass(frozen=True, slots=True)
+class Mechanism:
+    """Links (the frame is link "0"), pairs, guides and the drive."""
+
+    links: dict[str, Link]
+    pairs: tuple[Pair, ...]
+    guides: dict[str, Guide]
+    drive: Drive
+    sides: dict[str, tuple[str, str, int]] = field(default_factory=dict)  # assembly: point → (P, Q, ±1)
+    sketch: dict[str, tuple[float, float]] = field(default_factory=dict)  # assembly by sketch
+
+    @property
+    def moving(self) -> list[str]:
+        """Moving link ids in scene order."""
+        return [k for k in self.links if k != GROUND]
+
+    def pairs_of(self, link: str) -> list[Pair]:
+        """Return the pairs touching a link."""
+        return [p for p in self.pairs if p.joins(link)]
+
+    def links_at(self, point: str) -> list[str]:
+        """Return the links carrying a named point."""
+        return [k for k, link in self.links.items() if point in link.points]

@@ -1,0 +1,188 @@
+"""DXF R2013 backend (ezdxf): one layer per role, ISO 128 lineweights and line types, title block as
+a BLOCK with attributes.
+
+Text encoding: DXF R2007+ files are UTF-8 whatever $DWGCODEPAGE says (AutoCAD and ezdxf read them so).
+The code page is set to the one AutoCAD itself writes on a system of the sheet's language
+(ANSI_1252 en, ANSI_1251 ru, ANSI_1258 vi, ANSI_936 zh), which is what matters when AutoCAD saves the
+drawing down to R2004 or older. GDAL 3.6 instead decodes R2007+ text by the code page: read these files
+with `--config DXF_ENCODING UTF-8` (checked in the tests for vi/ru/zh). ANSI_65001 was tried too: GDAL
+then returns the right text only through a failed-recode fallback with one warning per string, and it
+is not a code page AutoCAD writes, so it is not used.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+from pathlib import Path
+
+import ezdxf
+from ezdxf.document import Drawing
+from ezdxf.enums import TextEntityAlignment
+from ezdxf.layouts import BaseLayout
+
+from mechplan.errors import DrawingError
+from mechplan.render.atomic import write_atomic
+from mechplan.sheet.fonts import SheetFont, font_for
+from mechplan.sheet.primitives import (
+    DASH_PATTERNS_MM,
+    Arc,
+    Arrow,
+    Block,
+    Circle,
+    HAlign,
+    Line,
+    LineType,
+    Polyline,
+    Primitive,
+    Role,
+    Sheet,
+    Text,
+    VAlign,
+)
+
+#: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
+ENCODINGS = {"en": "cp1252", "ru": "cp1251", "vi": "cp1258", "zh": "gbk"}
+
+LINETYPE_NAMES = {LineType.CONTINUOUS: "Continuous", LineType.DASHED: "DASHED",
+                  LineType.DASH_DOT: "DASHDOT"}
+_LINETYPE_DESCRIPTIONS = {LineType.DASHED: "ISO 128 dashed (02) __ __ __",
+                          LineType.DASH_DOT: "ISO 128 long-dash dotted (04) ____ . ____ ."}
+TEXT_STYLES = {SheetFont.ISO: "ISO", SheetFont.CJK: "CJK"}
+
+_ALIGN = {
+    (HAlign.LEFT, VAlign.BASELINE): TextEntityAlignment.LEFT,
+    (HAlign.CENTER, VAlign.BASELINE): TextEntityAlignment.CENTER,
+    (HAlign.RIGHT, VAlign.BASELINE): TextEntityAlignment.RIGHT,
+    (HAlign.LEFT, VAlign.BOTTOM): TextEntityAlignment.BOTTOM_LEFT,
+    (HAlign.CENTER, VAlign.BOTTOM): TextEntityAlignment.BOTTOM_CENTER,
+    (HAlign.RIGHT, VAlign.BOTTOM): TextEntityAlignment.BOTTOM_RIGHT,
+    (HAlign.LEFT, VAlign.MIDDLE): TextEntityAlignment.MIDDLE_LEFT,
+    (HAlign.CENTER, VAlign.MIDDLE): TextEntityAlignment.MIDDLE_CENTER,
+    (HAlign.RIGHT, VAlign.MIDDLE): TextEntityAlignment.MIDDLE_RIGHT,
+    (HAlign.LEFT, VAlign.TOP): TextEntityAlignment.TOP_LEFT,
+    (HAlign.CENTER, VAlign.TOP): TextEntityAlignment.TOP_CENTER,
+    (HAlign.RIGHT, VAlign.TOP): TextEntityAlignment.TOP_RIGHT,
+}
+
+
+def _setup(doc: Drawing, sheet: Sheet) -> None:
+    w, h = sheet.width_mm, sheet.height_mm
+    doc.units = 4  # $INSUNITS: millimetres
+    header = doc.header
+    header["$MEASUREMENT"] = 1
+    header["$LWDISPLAY"] = 1
+    header["$LUNITS"] = 2
+    header["$LTSCALE"] = 1.0
+    header["$CELTSCALE"] = 1.0
+    header["$PSLTSCALE"] = 1
+    header["$LIMMIN"] = (0.0, 0.0)
+    header["$LIMMAX"] = (w, h)
+    header["$EXTMIN"] = (0.0, 0.0, 0.0)
+    header["$EXTMAX"] = (w, h, 0.0)
+    header["$TEXTSTYLE"] = TEXT_STYLES[SheetFont.ISO]
+    for lt, name in LINETYPE_NAMES.items():
+        pattern = DASH_PATTERNS_MM[lt]
+        if not pattern:
+            continue
+        elements = [v if i % 2 == 0 else -v for i, v in enumerate(pattern)]
+        doc.linetypes.add(name, [sum(pattern), *elements],
+                          description=_LINETYPE_DESCRIPTIONS[lt])
+    doc.styles.get("Standard").dxf.font = SheetFont.ISO.file_name
+    for font, style in TEXT_STYLES.items():
+        doc.styles.add(style, font=font.file_name)
+    for role in Role:
+        st = role.style
+        doc.layers.add(role.layer, color=st.aci, linetype=LINETYPE_NAMES[st.linetype],
+                       lineweight=round(st.lineweight_mm * 100))
+    doc.set_modelspace_vport(height=h * 1.05, center=(w / 2.0, h / 2.0))
+    paper = doc.paperspace()
+    paper.page_setup(size=(w, h), margins=(0, 0, 0, 0), units="mm")
+    paper.add_viewport(center=(w / 2.0, h / 2.0), size=(w, h), view_center_point=(w / 2.0, h / 2.0),
+                       view_height=h)
+
+
+def _text_attribs(t: Text) -> dict[str, object]:
+    return {
+        "layer": t.role.layer,
+        "style": TEXT_STYLES[font_for(t.string)],
+        "height": t.height_mm,
+        "rotation": t.rotation_deg,
+        "width": t.width_factor,
+    }
+
+
+def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> None:
+    """Add primitive `p` to `layout`, shifted by (-dx, -dy) (block-local coordinates)."""
+    def q(pt: tuple[float, float]) -> tuple[float, float]:
+        return (pt[0] - dx, pt[1] - dy)
+
+    layer = {"layer": p.role.layer} if not isinstance(p, Block) else {}
+    if isinstance(p, Line):
+        layout.add_line(q(p.start), q(p.end), dxfattribs=layer)
+    elif isinstance(p, Polyline):
+        if p.filled:
+            hatch = layout.add_hatch(dxfattribs=layer)
+            hatch.paths.add_polyline_path([q(v) for v in p.points], is_closed=True)
+        else:
+            layout.add_lwpolyline([q(v) for v in p.points], format="xy", close=p.closed,
+                                  dxfattribs=layer)
+    elif isinstance(p, Circle):
+        layout.add_circle(q(p.center), p.radius, dxfattribs=layer)
+    elif isinstance(p, Arc):
+        layout.add_arc(q(p.center), p.radius, p.start_deg, p.end_deg, dxfattribs=layer)
+    elif isinstance(p, Arrow):
+        shaft = p.shaft()
+        if shaft is not None:
+            layout.add_line(q(shaft.start), q(shaft.end), dxfattribs=layer)
+        layout.add_solid([q(v) for v in p.head()], dxfattribs=layer)
+    elif isinstance(p, Text):
+        if p.tag is not None and isinstance(layout, ezdxf.layouts.BlockLayout):
+            attdef = layout.add_attdef(p.tag, q(p.position), p.string,
+                                       dxfattribs={**_text_attribs(p), "prompt": p.tag})
+            attdef.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])
+        elif p.string:
+            text = layout.add_text(p.string, dxfattribs=_text_attribs(p))
+            text.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])
+    else:
+        raise DrawingError(f"DXF backend cannot draw {type(p).__name__}")
+
+
+def _add_block(doc: Drawing, blk: Block) -> None:
+    ox, oy = blk.origin
+    definition = doc.blocks.new(blk.name, base_point=(0, 0))
+    for p in blk.primitives:
+        _add(definition, p, ox, oy)
+    ref = doc.modelspace().add_blockref(blk.name, (ox, oy), dxfattribs={"layer": "0"})
+    ref.add_auto_attribs(blk.attributes)
+
+
+def to_document(sheet: Sheet) -> Drawing:
+    """Build the ezdxf document of `sheet` (R2013, mm, 1 drawing unit = 1 sheet mm)."""
+    doc = ezdxf.new("R2013", setup=False)
+    doc.encoding = ENCODINGS[sheet.language]
+    _setup(doc, sheet)
+    msp = doc.modelspace()
+    for p in sheet.primitives:
+        if isinstance(p, Block):
+            _add_block(doc, p)
+        else:
+            _add(msp, p)
+    auditor = doc.audit()
+    if auditor.has_errors:
+        messages = "; ".join(str(e.message) for e in auditor.errors[:5])
+        raise DrawingError(f"DXF audit must report no errors (got {len(auditor.errors)}: {messages})")
+    return doc
+
+
+def to_bytes(sheet: Sheet) -> bytes:
+    """Return the DXF file of `sheet` (UTF-8, as every DXF R2007+ file)."""
+    doc = to_document(sheet)
+    stream = io.StringIO()
+    doc.write(stream)
+    return doc.encode(stream.getvalue())
+
+
+def write_dxf(sheet: Sheet, path: str | os.PathLike[str]) -> Path:
+    """Write `sheet` to `path` as DXF R2013, atomically."""
+    return write_atomic(path, to_bytes(sheet))

@@ -1,0 +1,522 @@
+"""Read a TOML scene file into a frozen :class:`Scene`."""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from pathlib import Path
+
+
+from ..errors import SceneError, TopologyError
+from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
+from ..model.structure import analyse
+from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
+from .reader import Table
+from .spec import (LANGUAGES, PLANS, DrawingSpec, Extreme, Gravity, LoadKind, LoadSpec,
+                   MassSpec, Positions, Scene)
+
+TOP_KEYS = ("title", "language", "ground", "links", "drive", "assembly", "positions", "analysis",
+            "gravity", "loads", "drawing", "title_block", "description")
+LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
+             "center", "J", "inertia")
+SHEETS = ("A0", "A1", "A2", "A3", "A4")
+STANDARDS = ("iso", "gost", "tcvn")
+SCALE_KEYS = {"mu_l": "mu_length", "mu_v": "mu_velocity", "mu_a": "mu_acceleration",
+              "mu_F": "mu_force", "mu_M": "mu_moment"}
+
+
+def load_scene(path: str | Path) -> Scene:
+    """Read and validate a scene file."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"cannot read the scene file ({exc.strerror})", file=str(path)) from None
+    except UnicodeDecodeError:
+        raise SceneError("the scene file is not UTF-8 text", file=str(path)) from None
+    return parse_scene(text, str(path))
+
+
+def parse_scene(text: str, file: str = "<scene>") -> Scene:
+    """Parse scene text (TOML)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"not valid TOML: {exc}", file=file) from None
+    top = Table(data, "", file)
+    top.check_keys(TOP_KEYS)
+    language = top.string("language", "en", choices=LANGUAGES)
+    ground_points, guides = _ground(top)
+    links, link_guides = _links(top, ground_points)
+    guides.update(link_guides)
+    for link in links.values():
+        if link.slides_on and link.slides_on not in guides:
+            raise top.error(f"links.{link.id}.slides.on", f"unknown guide {link.slides_on!r}; "
+                            f"guides are {', '.join(guides) or 'none'}")
+    _orient_sliders(top, links, guides)
+    pairs = _pairs(top, links, guides)
+    drive = _drive(top, links, guides, pairs)
+    sides, sketch, assembly_phi = _assembly(top, links)
+    mech = Mechanism(links=links, pairs=tuple(pairs), guides=guides, drive=drive, sides=sides,
+                     sketch=sketch)
+    try:
+        analyse(mech)
+    except TopologyError as exc:
+        raise TopologyError(exc.detail, file=file, key=exc.key) from None
+    all_points = {p for link in links.values() for p in link.points}
+    positions = _positions(top, drive, all_points, links)
+    plans, interest = _analysis(top, all_points)
+    masses = _masses(top, links)
+    return Scene(
+        path=file, title=top.string("title", Path(file).stem) or "", language=language or "en",
+        mechanism=mech, positions=positions, plans=plans, points_of_interest=interest,
+        masses=masses, loads=_loads(top, links, guides, masses), gravity=_gravity(top),
+        drawing=_drawing(top), assembly_phi=assembly_phi)
+
+
+def _ground(top: Table) -> tuple[dict[str, tuple[float, float]], dict[str, Guide]]:
+    ground = top.table("ground", required=True)
+    assert ground is not None
+    points: dict[str, tuple[float, float]] = {}
+    guide_tables = []
+    for name, value in ground.data.items():
+        if name in ("guide", "guides"):
+            guide_tables.append(ground.table(name))
+            continue
+        if not POINT_NAME.match(name):
+            raise ground.error(name, "a frame point name must start with a capital letter "
+                               "(A, O1, D) or be 'guides'")
+        if not isinstance(value, list) or len(value) != 2:
+            raise ground.error(name, f"expected coordinates [x, y], e.g. [\"0 mm\", \"0 mm\"] (got {value!r})")
+        points[name] = (ground.value_quantity(value[0], name, "length"),
+                        ground.value_quantity(value[1], name, "length"))
+    if not points:
+        raise ground.error(None, "needs at least one frame point, e.g. A = [\"0 mm\", \"0 mm\"]")
+    guides: dict[str, Guide] = {}
+    for gt in guide_tables:
+        assert gt is not None
+        for gname in gt.data:
+            g = gt.table(gname)
+            assert g is not None
+            guides[gname] = _guide(g, gname, GROUND, points)
+    return points, guides
+
+
+def _guide(g: Table, name: str, link: str, local: dict[str, tuple[float, float]]) -> Guide:
+    g.check_keys(("through", "angle", "toward", "towards"))
+    through = g.string("through", required=True)
+    assert through is not None
+    if through not in local:
+        raise g.error("through", f"unknown point {through!r}; the link has {', '.join(local)}")
+    origin = local[through]
+    toward = g.string("toward") or g.string("towards")
+    if toward is not None:
+        if toward not in local:
+            raise g.error("toward", f"unknown point {toward!r}; the link has {', '.join(local)}")
+        dx, dy = local[toward][0] - origin[0], local[toward][1] - origin[1]
+        if dx == 0 and dy == 0:
+            raise g.error("toward", f"point {toward} coincides with {through}")
+        angle = math.atan2(dy, dx)
+    else:
+        angle_v = g.quantity("angle", "angle")
+        if angle_v is None:
+            raise g.error(None, f"guide {name} needs an 'angle' (e.g. \"60 deg\") or 'toward' a point")
+        angle = angle_v
+    return Guide(name=name, link=link, origin=origin, angle=angle, through=through)
+
+
+def _links(top: Table, ground: dict[str, tuple[float, float]]) -> tuple[dict[str, Link], dict[str, Guide]]:
+    lt = top.table("links", required=True)
+    assert lt is not None
+    links: dict[str, Link] = {GROUND: Link(GROUND, "frame", dict(ground))}
+    guides: dict[str, Guide] = {}
+    if not lt.data:
+        raise lt.error(None, "no links are defined")
+    for link_id in lt.data:
+        if link_id == GROUND:
+            raise lt.error(link_id, "link 0 is the frame; define frame points under [ground]")
+        t = lt.table(link_id)
+        assert t is not None
+        t.check_keys(LINK_KEYS)
+        local, slides_on = _link_points(t, link_id)
+        link = Link(id=link_id, name=t.string("name", "") or "", points=local, slides_on=slides_on)
+        links[link_id] = link
+        for gkey in ("guides", "guide"):
+            gt = t.table(gkey)
+            if gt is not None:
+                for gname in gt.data:
+                    if gname in guides:
+                        raise gt.error(gname, "a guide of this name exists already")
+                    sub = gt.table(gname)
+                    assert sub is not None
+                    guides[gname] = _guide(sub, gname, link_id, local)
+    return links, guides
+
+
+def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]], str | None]:
+    lengths: dict[str, float] = {}
+    keys: dict[str, str] = {}
+    lengths_t = t.table("lengths")
+    if lengths_t is not None:
+        for key in lengths_t.data:
+            pair = split_pair(key)
+            if pair is None or pair[0] == pair[1]:
+                raise lengths_t.error(key, "expected two point names such as AB, O1A or \"O1-A\"")
+            value = lengths_t.quantity(key, "length", positive=True)
+            assert value is not None
+            k = "|".join(pair)
+            if k in lengths or "|".join(pair[::-1]) in lengths:
+                raise lengths_t.error(key, "this length is given twice")
+            lengths[k] = value
+            keys[k] = key
+    sides: dict[str, tuple[str, str, int]] = {}
+    side_t = t.table("side")
+    if side_t is not None:
+        for name in side_t.data:
+            text = side_t.string(name)
+            parsed = parse_side(text or "")
+            if parsed is None:
+                raise side_t.error(name, f"expected \"left of B->C\" or \"right of B->C\" (got {text!r})")
+            sides[name] = parsed
+    slides_on = None
+    local: dict[str, tuple[float, float]] = {}
+    slides_t = t.table("slides")
+    if slides_t is not None:
+        slides_t.check_keys(("point", "on"))
+        point = slides_t.string("point", required=True)
+        slides_on = slides_t.string("on", required=True)
+        if lengths:
+            raise t.error("lengths", "a slider's points are given under 'points' in its own frame "
+                          "(origin at the sliding point, x along the guide), not by lengths")
+        assert point is not None
+        if not POINT_NAME.match(point):
+            raise slides_t.error("point", f"{point!r} is not a point name (A, C, O1 …)")
+        local[point] = (0.0, 0.0)
+    elif lengths:
+        local = triangulate(t, lengths, keys, sides)
+    points_t = t.table("points")
+    if points_t is not None:
+        for name, spec in points_t.data.items():
+            if not POINT_NAME.match(name):
+                raise points_t.error(name, "a point name must start with a capital letter (S2, E)")
+            if name in local:
+                raise points_t.error(name, f"point {name} is already defined on link {link_id}")
+            local[name] = extra_point(t, name, spec, local)
+    centre = t.raw("centre", t.raw("center"))
+    if isinstance(centre, dict):
+        ct = t.table("centre" if t.has("centre") else "center")
+        assert ct is not None
+        for name, spec in ct.data.items():
+            if name not in local:
+                local[name] = extra_point(t, name, spec, local)
+    if not local:
+        raise t.error(None, f"link {link_id} has no points: give 'lengths' (e.g. AB = \"80 mm\") "
+                      "or 'slides' = { point = \"C\", on = \"Ax\" }")
+    if slides_on is None and len(local) < 2:
+        raise t.error("lengths", f"link {link_id} needs at least one length between two points")
+    return local, slides_on
+
+
+def _orient_sliders(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> None:
+    """Check sliders do not slide on their own guide."""
+    for link in links.values():
+        if link.slides_on and guides[link.slides_on].link == link.id:
+            raise top.error(f"links.{link.id}.slides.on", "a link cannot slide on its own guide")
+
+
+def _pairs(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> list[Pair]:
+    pairs: list[Pair] = []
+    seen: dict[str, list[str]] = {}
+    for lid, link in links.items():
+        for p in link.points:
+            seen.setdefault(p, []).append(lid)
+    for point, on in seen.items():
+        for other in on[1:]:
+            pairs.append(Pair(PairKind.REVOLUTE, on[0], other, point))
+    for lid, link in links.items():
+        if link.slides_on:
+            g = guides[link.slides_on]
+            point = next(iter(link.points))
+            pairs.append(Pair(PairKind.PRISMATIC, lid, g.link, point, g.name))
+    for lid, link in links.items():
+        if lid != GROUND and not any(p.joins(lid) for p in pairs):
+            raise top.error(f"links.{lid}", f"link {lid} is connected to nothing: share a point "
+                            "with another link or slide on a guide")
+    return pairs
+
+
+def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide], pairs: list[Pair]) -> Drive:
+    d = top.table("drive", required=True)
+    assert d is not None
+    d.check_keys(("link", "speed", "omega", "sense", "from", "angle", "epsilon"))
+    link = d.string("link", required=True)
+    assert link is not None
+    if link not in links or link == GROUND:
+        raise d.error("link", f"unknown link {link!r}; links are {', '.join(k for k in links if k != GROUND)}")
+    speed_key = "speed" if d.has("speed") else "omega"
+    speed = d.quantity(speed_key, "angular_velocity", required=True, positive=True)
+    assert speed is not None
+    sense = d.string("sense", "ccw", choices=("cw", "ccw"))
+    pivots = [p.point for p in pairs if p.kind is PairKind.REVOLUTE and {p.a, p.b} == {GROUND, link}]
+    if len(pivots) != 1:
+        raise d.error("link", f"the driving link {link} must turn about exactly one frame point "
+                      f"(it shares {len(pivots)} with the frame)")
+    ref_name = d.string("from", "+x") or "+x"
+    ref = _reference_angle(d, ref_name, guides)
+    eps = d.quantity("epsilon", "angular_acceleration", 0.0) or 0.0
+    sign = 1.0 if sense == "ccw" else -1.0
+    return Drive(link=link, pivot=pivots[0], omega=sign * speed, epsilon=sign * eps,
+                 ref_angle=ref, ref_name=ref_name)
+
+
+def _reference_angle(d: Table, name: str, guides: dict[str, Guide]) -> float:
+    axes = {"+x": 0.0, "x": 0.0, "+y": math.pi / 2, "y": math.pi / 2, "-x": math.pi, "-y": -math.pi / 2}
+    if name in axes:
+        return axes[name]
+    if name in guides:
+        if guides[name].link != GROUND:
+            raise d.error("from", f"guide {name} moves; measure φ from a frame guide or an axis")
+        return guides[name].angle
+    try:
+        return d.value_quantity(name, "from", "angle")
+    except SceneError:
+        raise d.error("from", f"expected a frame guide ({', '.join(guides) or 'none defined'}), "
+                      f"an axis (+x, -y, …) or an angle such as \"30 deg\" (got {name!r})") from None
+
+
+def _assembly(top: Table, links: dict[str, Link]) -> tuple[dict[str, tuple[str, str, int]],
+                                                            dict[str, tuple[float, float]], float]:
+    sides: dict[str, tuple[str, str, int]] = {}
+    sketch: dict[str, tuple[float, float]] = {}
+    a = top.table("assembly")
+    phi = 0.0
+    if a is None:
+        return sides, sketch, phi
+    names = {p for link in links.values() for p in link.points}
+    for key, value in a.data.items():
+        if key == "at":
+            phi = a.quantity("at", "angle") or 0.0
+            continue
+        if key not in names:
+            raise a.error(key, f"unknown point {key!r}")
+        if isinstance(value, list):
+            if len(value) != 2:
+                raise a.error(key, "expected sketch coordinates [x, y] with units")
+            sketch[key] = (a.value_quantity(value[0], key, "length"),
+                           a.value_quantity(value[1], key, "length"))
+        elif isinstance(value, str) and value.strip() in ("+", "-"):
+            sides[key] = ("", "", 1 if value.strip() == "+" else -1)
+        else:
+            parsed = parse_side(value) if isinstance(value, str) else None
+            if parsed is None:
+                raise a.error(key, f"expected \"left of B->D\", \"right of B->D\", \"+\", \"-\" or "
+                              f"sketch coordinates [x, y] (got {value!r})")
+            for p in parsed[:2]:
+                if p not in names:
+                    raise a.error(key, f"unknown point {p!r} in {value!r}")
+            sides[key] = parsed
+    return sides, sketch, phi
+
+
+def _positions(top: Table, drive: Drive, points: set[str], links: dict[str, Link]) -> Positions:
+    t = top.table("positions")
+    drive_t = top.table("drive")
+    if t is None:
+        if drive_t is not None and drive_t.has("angle"):
+            return Positions(angles=(drive_t.quantity("angle", "angle") or 0.0,))
+        return Positions(count=12)
+    t.check_keys(("at", "count", "start"))
+    if t.has("at"):
+        values = t.raw("at")
+        if not isinstance(values, list) or not values:
+            raise t.error("at", "expected a list of crank angles, e.g. [\"0 deg\", \"30 deg\"]")
+        return Positions(angles=tuple(t.value_quantity(v, f"at[{i}]", "angle") for i, v in enumerate(values)))
+    count = t.raw("count", 12)
+    if not isinstance(count, int) or isinstance(count, bool) or count < 1:
+        raise t.error("count", f"must be a whole number ≥ 1 (got {count!r})")
+    start = t.raw("start", "0 deg")
+    if isinstance(start, dict):
+        st = t.table("start")
+        assert st is not None
+        st.check_keys(("extreme", "which"))
+        subject = st.string("extreme", required=True)
+        which = st.string("which", "max", choices=("max", "min"))
+        if subject not in points and subject not in links:
+            raise st.error("extreme", f"unknown point or link {subject!r}")
+        return Positions(count=count, start_extreme=Extreme(subject or "", which or "max"))
+    return Positions(count=count, start_angle=t.value_quantity(start, "start", "angle"))
+
+
+def _analysis(top: Table, points: set[str]) -> tuple[tuple[str, ...], tuple[str, ...]]:
+    t = top.table("analysis")
+    if t is None:
+        return ("position", "velocity", "acceleration"), ()
+    t.check_keys(("plans", "points"))
+    plans = t.raw("plans", ["position", "velocity", "acceleration"])
+    if not isinstance(plans, list) or any(p not in PLANS for p in plans):
+        raise t.error("plans", f"expected a list from {', '.join(PLANS)} (got {plans!r})")
+    interest = t.raw("points", [])
+    if not isinstance(interest, list):
+        raise t.error("points", "expected a list of point names")
+    for p in interest:
+        if p not in points:
+            raise t.error("points", f"unknown point {p!r}")
+    return tuple(plans), tuple(interest)
+
+
+def _masses(top: Table, links: dict[str, Link]) -> dict[str, MassSpec]:
+    lt = top.table("links")
+    assert lt is not None
+    masses: dict[str, MassSpec] = {}
+    for lid in lt.data:
+        t = lt.table(lid)
+        assert t is not None
+        mass = t.quantity("mass", "mass", nonnegative=True)
+        inertia = t.quantity("J", "inertia", nonnegative=True)
+        if inertia is None:
+            inertia = t.quantity("inertia", "inertia", nonnegative=True)
+        centre_raw = t.raw("centre", t.raw("center"))
+        if mass is None and inertia is None:
+            continue
+        if isinstance(centre_raw, dict):
+            centre = next(iter(centre_raw))
+        elif isinstance(centre_raw, str):
+            centre = centre_raw
+        elif len(links[lid].points) == 1:
+            centre = next(iter(links[lid].points))
+        else:
+            raise t.error("centre", "a link with a mass needs its centre of mass, e.g. centre = \"S2\" "
+                          "or centre = { S2 = \"midpoint B C\" }")
+        if centre not in links[lid].points:
+            raise t.error("centre", f"point {centre!r} is not on link {lid} (it has "
+                          f"{', '.join(links[lid].points)})")
+        masses[lid] = MassSpec(lid, mass or 0.0, centre, inertia or 0.0)
+    return masses
+
+
+def _gravity(top: Table) -> Gravity:
+    t = top.table("gravity")
+    if t is None:
+        return Gravity(enabled=False)
+    t.check_keys(("g", "direction", "enabled"))
+    enabled = t.raw("enabled", True)
+    if not isinstance(enabled, bool):
+        raise t.error("enabled", "expected true or false")
+    g = t.quantity("g", "acceleration", 9.81, nonnegative=True) or 0.0
+    direction = t.string("direction", "-y") or "-y"
+    axes = {"-y": (0.0, -1.0), "+y": (0.0, 1.0), "y": (0.0, 1.0), "-x": (-1.0, 0.0),
+            "+x": (1.0, 0.0), "x": (1.0, 0.0)}
+    if direction in axes:
+        vec = axes[direction]
+    else:
+        ang = t.value_quantity(direction, "direction", "angle")
+        vec = (math.cos(ang), math.sin(ang))
+    return Gravity(g=g, direction=vec, enabled=enabled)
+
+
+def _loads(top: Table, links: dict[str, Link], guides: dict[str, Guide],
+           masses: dict[str, MassSpec]) -> tuple[LoadSpec, ...]:
+    raw = top.raw("loads", [])
+    if not isinstance(raw, list):
+        raise top.error("loads", "expected [[loads]] entries")
+    out: list[LoadSpec] = []
+    for i, entry in enumerate(raw):
+        t = Table(entry, f"loads[{i}]", top.file)
+        out.append(_load(t, links, guides))
+    return tuple(out)
+
+
+def _point_link(t: Table, links: dict[str, Link], point: str, link: str | None) -> str:
+    owners = [k for k, lk in links.items() if point in lk.points and k != GROUND]
+    if link is not None:
+        if link not in links or link == GROUND:
+            raise t.error("link", f"unknown moving link {link!r}")
+        if point not in links[link].points:
+            raise t.error("point", f"point {point!r} is not on link {link}")
+        return link
+    if not owners:
+        raise t.error("point", f"unknown point {point!r} (no moving link carries it)")
+    return owners[-1]
+
+
+def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpec:
+    t.check_keys(("type", "kind", "link", "point", "vector", "magnitude", "angle", "towards",
+                  "toward", "pressure", "bore", "moment", "against", "table", "name"))
+    kind_s = t.string("type", t.string("kind"), choices=tuple(k.value for k in LoadKind))
+    if kind_s is None:
+        raise t.error("type", f"is missing; one of {', '.join(k.value for k in LoadKind)}")
+    kind = LoadKind(kind_s)
+    link = t.string("link")
+    if kind is LoadKind.MOMENT:
+        if link is None or link not in links or link == GROUND:
+            raise t.error("link", f"a moment acts on a moving link; unknown link {link!r}")
+        return LoadSpec(kind, link, moment=t.quantity("moment", "moment", required=True), key=t.path)
+    point = t.string("point", required=True)
+    assert point is not None
+    owner = _point_link(t, links, point, link)
+    towards = t.string("towards") or t.string("toward")
+    if towards is not None and not any(towards in lk.points for lk in links.values()):
+        raise t.error("towards", f"unknown point {towards!r}")
+    if kind is LoadKind.FORCE:
+        if t.has("vector"):
+            v = t.raw("vector")
+            if not isinstance(v, list) or len(v) != 2:
+                raise t.error("vector", "expected [Fx, Fy] with units, e.g. [\"0 N\", \"-100 N\"]")
+            vec = (t.value_quantity(v[0], "vector", "force"), t.value_quantity(v[1], "vector", "force"))
+            return LoadSpec(kind, owner, point, vector=vec, key=t.path)
+        mag = t.quantity("magnitude", "force", required=True, nonnegative=True)
+        if towards is None and not t.has("angle"):
+            raise t.error(None, "a force needs 'vector', or 'magnitude' with 'angle' or 'towards'")
+        return LoadSpec(kind, owner, point, magnitude=mag, angle=t.quantity("angle", "angle"),
+                        towards=towards, key=t.path)
+    if links[owner].slides_on is None:
+        raise t.error("point", f"a {kind.value} load acts on a slider along its guide; link "
+                      f"{owner} does not slide")
+    if towards is None:
+        raise t.error("towards", "give the sense along the cylinder axis, e.g. towards = \"A\"")
+    if kind is LoadKind.PRESSURE:
+        if not t.has("bore"):
+            raise t.error("bore", "a pressure needs the piston's bore diameter, e.g. bore = \"100 mm\"")
+        return LoadSpec(kind, owner, point, pressure=t.quantity("pressure", "pressure", required=True),
+                        bore=t.quantity("bore", "length", positive=True), towards=towards, key=t.path)
+    against = t.string("against", "crank_angle", choices=("crank_angle", "displacement"))
+    rows = t.raw("table", required=True)
+    if not isinstance(rows, list) or len(rows) < 2:
+        raise t.error("table", "expected at least two rows [x, F]")
+    xdim = "angle" if against == "crank_angle" else "length"
+    parsed = []
+    for j, row in enumerate(rows):
+        if not isinstance(row, list) or len(row) != 2:
+            raise t.error(f"table[{j}]", "expected a row [x, F]")
+        parsed.append((t.value_quantity(row[0], f"table[{j}]", xdim),
+                       t.value_quantity(row[1], f"table[{j}]", "force")))
+    xs = [r[0] for r in parsed]
+    if any(b <= a for a, b in zip(xs, xs[1:])):
+        raise t.error("table", "the first column must increase strictly")
+    return LoadSpec(kind, owner, point, towards=towards, against=against, table=tuple(parsed),
+                    key=t.path)
+
+
+def _drawing(top: Table) -> DrawingSpec:
+    t = top.table("drawing")
+    tb = top.table("title_block")
+    fields: dict[str, str] = {}
+    if tb is not None:
+        for k, v in tb.data.items():
+            fields[k] = str(v)
+    if t is None:
+        return DrawingSpec(title_block=fields)
+    t.check_keys(("sheet", "standard", "scales"))
+    scales: dict[str, float] = {}
+    st = t.table("scales")
+    if st is not None:
+        st.check_keys(tuple(SCALE_KEYS))
+        for k, dim in SCALE_KEYS.items():
+            v = st.quantity(k, dim, positive=True)
+            if v is not None:
+                scales[k] = v
+    return DrawingSpec(sheet=t.string("sheet", "A1", choices=SHEETS) or "A1",
+                       standard=t.string("standard", "iso", choices=STANDARDS) or "iso",
+                       scales=scales, title_block=fields)
+
+
