@@ -117,12 +117,30 @@ def _metrics(font: SheetFont) -> _Metrics | None:
         cap = int(getattr(os2, "sCapHeight", 0) or 0) or int(upem * font.value.cap_ratio)
         cmap = tt.getBestCmap()
         hmtx = tt["hmtx"]
-        advances = {cp: int(hmtx[name][0]) for cp, name in cmap.items()}
+        glyf = tt["glyf"] if "glyf" in tt else None
+        advances = {cp: int(hmtx[name][0]) for cp, name in cmap.items()
+                    if glyf is None or not _is_placeholder(glyf[name], upem)}
         tt.close()
     except Exception as exc:  # a broken font file must not stop a drawing
         log.warning("cannot read font %s (%s); text metrics are estimated", path, exc)
         return None
     return _Metrics(upem, cap, advances)
+
+
+def _is_placeholder(glyph: object, upem: int) -> bool:
+    """Return True for a filled-box glyph standing in for a missing letter.
+
+    Debian's osifont maps Ё, ё, Э, э to such boxes; strings with them go to the CJK font instead.
+    """
+    if getattr(glyph, "numberOfContours", 0) != 1:
+        return False
+    coords = list(getattr(glyph, "coordinates", []))
+    if len(coords) != 4:
+        return False
+    xs, ys = [c[0] for c in coords], [c[1] for c in coords]
+    w, h = max(xs) - min(xs), max(ys) - min(ys)
+    area = abs(sum(xs[i] * ys[i - 1] - xs[i - 1] * ys[i] for i in range(4))) / 2.0
+    return w > 0.15 * upem and h > 0.15 * upem and area > 0.85 * w * h
 
 
 def cap_ratio(font: SheetFont) -> float:

@@ -156,14 +156,17 @@ def _fit(text: str, width: float, height: float, max_h: float, max_lines: int,
     heights = [h for h in (10.0, 7.0, 5.0, 3.5, 2.5) if h <= max_h]
     if not text:
         return [("", heights[-1] if heights else 2.5, 1.0)]
-    for h in heights:
-        if 1.4 * h <= height and text_width_mm(text, h) <= width:
-            return [(text, h, 1.0)]
+    one = next((h for h in heights
+                if 1.4 * h <= height and text_width_mm(text, h) <= width), None)
     parts = _split_two(text) if max_lines >= 2 else None
+    two = None
     if parts:
-        for h in heights:
-            if 2.6 * h <= height and max(text_width_mm(p, h) for p in parts) <= width:
-                return [(parts[0], h, 1.0), (parts[1], h, 1.0)]
+        two = next((h for h in heights if 3.0 * h <= height
+                    and max(text_width_mm(p, h) for p in parts) <= width), None)
+    if two is not None and parts and (one is None or two > one):
+        return [(parts[0], two, 1.0), (parts[1], two, 1.0)]
+    if one is not None:
+        return [(text, one, 1.0)]
     for h, min_factor in ((2.5, 0.7), (1.8, 1.0), (1.8, 0.6)):
         if 1.4 * h > height:
             continue

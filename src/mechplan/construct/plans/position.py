@@ -72,10 +72,14 @@ def complete(b: Builder, link: str, group: str) -> None:
     lk = b.mech.links[link]
     for name in lk.points:
         place_point(b, link, name, group)
-    names = list(lk.points)
-    for i, p in enumerate(names):
-        for q in names[i + 1:]:
+    joints = [p for p in lk.points if any(pr.point == p for pr in b.mech.pairs_of(link))]
+    for i, p in enumerate(joints):
+        for q in joints[i + 1:]:
             b.segment(P, b.pos[p], b.pos[q], f"{p}{q}", f"l_{p}{q}", SegmentKind.LINK, group)
+    for q in lk.points:
+        if q not in joints and joints:
+            b.segment(P, b.pos[joints[0]], b.pos[q], f"{joints[0]}{q}", f"l_{joints[0]}{q}",
+                      SegmentKind.LINK, group)
 
 
 def angle_from_pair(b: Builder, link: str, pair: Pair, partner: str, group: str) -> str:

@@ -68,6 +68,8 @@ def _omega(b: Builder, link: str, p: str, q_pos: str, vp: str, vq: str, group: s
 
 
 def _relative(b: Builder, start: str, end: str, quantity: str, kind: SegmentKind, group: str) -> None:
+    if start == "vel.p":        # relative to a frame point: the absolute segment says it
+        return
     b.segment(V, start, end, f"{b.c[start].label}{b.c[end].label}", quantity, kind, group)
 
 

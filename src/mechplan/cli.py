@@ -1,0 +1,75 @@
+"""Command line: mechplan solve | draw | check | bench | new."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from .errors import MechplanError
+
+
+def _solve(args: argparse.Namespace) -> int:
+    from .report import text_report
+    from .scene import load_scene
+    from .solve import solve, to_json
+
+    scene = load_scene(args.scene)
+    sol = solve(scene, at_deg=args.at, count=args.positions)
+    if args.json:
+        print(json.dumps(to_json(sol), ensure_ascii=False, indent=1))
+    else:
+        print(text_report(sol, args.lang))
+    if args.stats:
+        print(f"steps: {len(sol.construction.steps)} in the construction, "
+              f"{sol.ev.evaluated} evaluated for {sol.positions} position(s)", file=sys.stderr)
+    return 0
+
+
+def _new(args: argparse.Namespace) -> int:
+    templates = Path(__file__).resolve().parents[2] / "templates"
+    src = templates / f"{args.template}.toml"
+    if not src.exists():
+        names = ", ".join(sorted(p.stem for p in templates.glob("*.toml")))
+        raise MechplanError(f"unknown template {args.template!r}; templates are {names}")
+    dest = Path(args.output or f"{args.template}.toml")
+    if dest.exists():
+        raise MechplanError(f"{dest} exists already; choose another name with -o")
+    dest.write_text(src.read_text(encoding="utf-8"), encoding="utf-8")
+    print(dest)
+    return 0
+
+
+def parser() -> argparse.ArgumentParser:
+    """The argument parser."""
+    p = argparse.ArgumentParser(prog="mechplan", description="Graphical method of planar "
+                                "mechanism analysis, constructed step by step.")
+    sub = p.add_subparsers(dest="command", required=True)
+    s = sub.add_parser("solve", help="structure, plans, construction protocol and results")
+    s.add_argument("scene")
+    s.add_argument("--at", type=float, nargs="+", metavar="DEG", help="crank angles φ in degrees")
+    s.add_argument("--positions", type=int, metavar="N", help="N equal steps from the scene's start")
+    s.add_argument("--lang", choices=("en", "ru", "vi", "zh"))
+    s.add_argument("--json", action="store_true", help="one JSON document, SI units")
+    s.add_argument("--stats", action="store_true", help="print step counts to stderr")
+    s.set_defaults(func=_solve)
+    n = sub.add_parser("new", help="start a scene from a bundled template")
+    n.add_argument("template")
+    n.add_argument("-o", "--output")
+    n.set_defaults(func=_new)
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Entry point; user errors print one message and exit with code 2."""
+    args = parser().parse_args(argv)
+    try:
+        return int(args.func(args))
+    except MechplanError as exc:
+        print(f"mechplan: error: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

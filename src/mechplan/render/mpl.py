@@ -1,0 +1,169 @@
+"""PDF and PNG backend (matplotlib, Agg): true scale, fonts embedded as TrueType (fonttype 42).
+
+The figure is exactly the sheet (figsize = mm / 25.4, axes filling it, no tight bounding box), so one
+sheet millimetre is one millimetre on the page. Uses `Figure` directly: no pyplot state.
+"""
+
+from __future__ import annotations
+
+import io
+import os
+from pathlib import Path
+from typing import Any
+
+import matplotlib
+from matplotlib import font_manager
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.collections import LineCollection
+from matplotlib.figure import Figure
+from matplotlib.font_manager import FontProperties
+from matplotlib.patches import Arc as ArcPatch
+from matplotlib.patches import Circle as CirclePatch
+from matplotlib.patches import PathPatch
+from matplotlib.patches import Polygon as PolygonPatch
+from matplotlib.textpath import TextPath
+from matplotlib.transforms import Affine2D
+
+from mechplan.errors import DrawingError
+from mechplan.render.atomic import write_atomic
+from mechplan.sheet.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_path
+from mechplan.sheet.primitives import (
+    DASH_PATTERNS_MM,
+    Arc,
+    Arrow,
+    Circle,
+    HAlign,
+    Line,
+    Polyline,
+    Role,
+    Sheet,
+    Text,
+)
+
+PT_PER_MM = 72.0 / 25.4
+INK = "black"
+_RC = {"pdf.fonttype": 42, "ps.fonttype": 42, "lines.scale_dashes": False,
+       "path.simplify": False, "svg.fonttype": "none"}
+
+
+def _register_fonts() -> None:
+    """Make the sheet fonts known to matplotlib even if its font cache predates their install."""
+    known = {f.name for f in font_manager.fontManager.ttflist}
+    for font in SheetFont:
+        path = font_path(font)
+        if path is not None and font.family not in known:
+            font_manager.fontManager.addfont(str(path))
+
+
+def _style(role: Role) -> dict[str, Any]:
+    st = role.style
+    pattern = DASH_PATTERNS_MM[st.linetype]
+    linestyle: Any = (0, tuple(v * PT_PER_MM for v in pattern)) if pattern else "solid"
+    return {"linewidth": st.lineweight_mm * PT_PER_MM, "linestyle": linestyle,
+            "capstyle": "butt", "joinstyle": "miter", "color": INK}
+
+
+def _draw(ax: Any, sheet: Sheet) -> None:
+    paths: dict[Role, list[list[tuple[float, float]]]] = {}
+    for p in sheet.flat():
+        if isinstance(p, Line):
+            paths.setdefault(p.role, []).append([p.start, p.end])
+        elif isinstance(p, Polyline):
+            if p.filled:
+                ax.add_patch(PolygonPatch(p.points, closed=True, facecolor=INK, edgecolor="none",
+                                          linewidth=0))
+            else:
+                pts = list(p.points) + ([p.points[0]] if p.closed else [])
+                paths.setdefault(p.role, []).append(pts)
+        elif isinstance(p, Circle):
+            st = _style(p.role)
+            ax.add_patch(CirclePatch(p.center, p.radius, fill=False, linewidth=st["linewidth"],
+                                     linestyle=st["linestyle"], capstyle="butt", edgecolor=INK))
+        elif isinstance(p, Arc):
+            st = _style(p.role)
+            ax.add_patch(ArcPatch(p.center, 2 * p.radius, 2 * p.radius, theta1=p.start_deg,
+                                  theta2=p.start_deg + p.sweep_deg, linewidth=st["linewidth"],
+                                  linestyle=st["linestyle"], capstyle="butt", edgecolor=INK))
+        elif isinstance(p, Arrow):
+            shaft = p.shaft()
+            if shaft is not None:
+                paths.setdefault(p.role, []).append([shaft.start, shaft.end])
+            ax.add_patch(PolygonPatch(p.head(), closed=True, facecolor=INK, edgecolor="none",
+                                      linewidth=0))
+        elif isinstance(p, Text):
+            _text(ax, p)
+        else:
+            raise DrawingError(f"PDF/PNG backend cannot draw {type(p).__name__}")
+    for role, segs in paths.items():
+        st = _style(role)
+        ax.add_collection(LineCollection(segs, linewidths=st["linewidth"],
+                                         linestyles=[st["linestyle"]], colors=INK,
+                                         capstyle="butt", joinstyle="miter"))
+
+
+def _text(ax: Any, t: Text) -> None:
+    if not t.string:
+        return
+    x, y = baseline_point(t)
+    size_mm = em_size_mm(t)
+    families = list(families_for(t.string))
+    ha = {HAlign.LEFT: "left", HAlign.CENTER: "center", HAlign.RIGHT: "right"}[t.halign]
+    if t.width_factor == 1.0:
+        ax.text(x, y, t.string, fontsize=size_mm * PT_PER_MM, fontfamily=families,
+                rotation=t.rotation_deg, rotation_mode="anchor", ha=ha, va="baseline",
+                color=INK, transform=ax.transData)
+        return
+    # Condensed text has no font-level equivalent: draw the glyph outlines, scaled.
+    path = TextPath((0, 0), t.string, size=1.0, prop=FontProperties(family=families))
+    width = path.get_extents().x1 if len(path.vertices) else 0.0
+    shift = {HAlign.LEFT: 0.0, HAlign.CENTER: -width / 2, HAlign.RIGHT: -width}[t.halign]
+    transform = (Affine2D().translate(shift, 0).scale(size_mm * t.width_factor, size_mm)
+                 .rotate_deg(t.rotation_deg).translate(x, y))
+    ax.add_patch(PathPatch(transform.transform_path(path), facecolor=INK, edgecolor="none",
+                           linewidth=0))
+
+
+def figure(sheet: Sheet) -> Figure:
+    """Return a matplotlib figure of `sheet` at true scale (call inside `render_context()`)."""
+    _register_fonts()
+    w, h = sheet.width_mm, sheet.height_mm
+    fig = Figure(figsize=(w / 25.4, h / 25.4), facecolor="white")
+    FigureCanvasAgg(fig)
+    ax = fig.add_axes((0, 0, 1, 1))
+    ax.set_xlim(0, w)
+    ax.set_ylim(0, h)
+    ax.set_aspect("equal")
+    ax.set_axis_off()
+    _draw(ax, sheet)
+    return fig
+
+
+def render_context() -> Any:
+    """Return the rcParams context the figures are built and saved in."""
+    return matplotlib.rc_context(_RC)
+
+
+def to_bytes(sheet: Sheet, fmt: str, *, dpi: float = 150.0) -> bytes:
+    """Return `sheet` rendered as "pdf" or "png" (PNG at `dpi`)."""
+    if fmt not in ("pdf", "png"):
+        raise DrawingError(f"matplotlib format must be 'pdf' or 'png' (got {fmt!r})")
+    buf = io.BytesIO()
+    with render_context():
+        fig = figure(sheet)
+        if fmt == "pdf":
+            meta = {"Title": sheet.attributes.get("title", sheet.name), "Creator": "mechplan",
+                    "Author": sheet.attributes.get("author", ""), "CreationDate": None}
+            fig.savefig(buf, format="pdf", metadata=meta)
+        else:
+            fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": "mechplan"})
+    return buf.getvalue()
+
+
+def write_pdf(sheet: Sheet, path: str | os.PathLike[str]) -> Path:
+    """Write `sheet` to `path` as a true-scale PDF, atomically."""
+    return write_atomic(path, to_bytes(sheet, "pdf"))
+
+
+def write_png(sheet: Sheet, path: str | os.PathLike[str], *, dpi: float = 150.0) -> Path:
+    """Write `sheet` to `path` as PNG at `dpi`, atomically."""
+    return write_atomic(path, to_bytes(sheet, "png", dpi=dpi))

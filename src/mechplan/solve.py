@@ -1,0 +1,181 @@
+"""Solve a scene: structure, construction, positions, evaluation of what the scene asks for."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from . import __version__
+from .construct.builder import build_construction
+from .construct.extremes import extreme_positions
+from .construct.graph import Construction, Evaluation
+from .construct.scale import SCALE_KEYS, choose_scale
+from .construct.segments import SegmentKind
+from .construct.step import Plan
+from .construct.validity import MAX_CONDITION, ensure_valid
+from .errors import SceneError
+from .model.mechanism import GROUND
+from .model.structure import Structure, analyse
+from .scene.spec import Scene
+
+KINEMATIC = ("position", "velocity", "acceleration")
+
+
+@dataclass
+class Solution:
+    """A solved scene at N crank positions."""
+
+    scene: Scene
+    structure: Structure
+    construction: Construction
+    phi: np.ndarray
+    ev: Evaluation
+    plans: tuple[str, ...]
+    targets: list[str]
+    scales: dict[Plan, float] = field(default_factory=dict)
+    extras: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def positions(self) -> int:
+        """Number of positions."""
+        return int(self.phi.shape[0])
+
+
+def build(scene: Scene, plans: tuple[str, ...] | None = None, loading: Any = None) -> tuple[Structure, Construction]:
+    """Structure and construction of a scene."""
+    structure = analyse(scene.mechanism)
+    plans = plans or scene.plans
+    build_plans = tuple(p for p in (*KINEMATIC, "force") if p in plans or p in ("position", "velocity"))
+    c = build_construction(scene.mechanism, structure, build_plans, scene.assembly_phi, scene.path,
+                           loading)
+    return structure, c
+
+
+def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> np.ndarray:
+    """φ of the positions the scene asks for (rad), numbered in the sense of rotation."""
+    pos = scene.positions
+    if pos.angles and count is None:
+        return np.asarray(pos.angles, dtype=float)
+    n = count or pos.count or 12
+    start = pos.start_angle
+    if pos.start_extreme is not None:
+        ex = [e for e in extreme_positions(c, scene.mechanism, pos.start_extreme.subject)
+              if e.which == pos.start_extreme.which]
+        if not ex:
+            raise SceneError(f"{pos.start_extreme.subject} has no {pos.start_extreme.which} extreme "
+                             "position over the cycle", file=scene.path, key="positions.start")
+        start = ex[0].phi
+    return np.mod(start + np.arange(n) * 2.0 * math.pi / n, 2.0 * math.pi)
+
+
+def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[str]:
+    """Step ids of the results a scene asks for (their ancestors are all that is evaluated)."""
+    points = scene.points_of_interest or tuple(
+        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points)
+    out: list[str] = []
+    for p in points:
+        if "position" in plans:
+            out.append(f"pos.{p}")
+        for sym, plan in (("v", "velocity"), ("a", "acceleration")):
+            if plan in plans and f"{sym}_{p}" in c.results:
+                out.append(c.results[f"{sym}_{p}"])
+    if not scene.points_of_interest:
+        for key, sid in c.results.items():
+            plan = c[sid].plan.value
+            if plan in plans and key.split("_")[0] in ("angle", "omega", "epsilon"):
+                out.append(sid)
+    return list(dict.fromkeys(out))
+
+
+def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]) -> dict[Plan, float]:
+    """Scale factors: fixed by the scene or round values so each plan's largest segment ≤ 120 mm."""
+    out: dict[Plan, float] = {}
+    for plan in (Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION):
+        key, _ = SCALE_KEYS[plan.value]
+        if key in scene.drawing.scales:
+            out[plan] = scene.drawing.scales[key]
+            continue
+        largest = 0.0
+        for s in c.segments:
+            if s.plan is plan and s.start in ev.values and s.end in ev.values:
+                d = np.hypot(*(ev[s.end] - ev[s.start]).T)
+                if np.isfinite(d).any():
+                    largest = max(largest, float(np.nanmax(d)))
+        out[plan] = choose_scale(largest, 150.0 if plan is Plan.POSITION else 120.0) if largest else 1.0
+    return out
+
+
+def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = None,
+          plans: tuple[str, ...] | None = None, loading: Any = None,
+          max_condition: float = MAX_CONDITION) -> Solution:
+    """Solve a scene at the positions it (or the caller) asks for; raise on unbuildable ones."""
+    plans = plans or scene.plans
+    structure, c = build(scene, plans, loading)
+    if at_deg:
+        phi = np.radians(np.asarray(at_deg, dtype=float))
+    else:
+        phi = crank_positions(scene, c, count)
+    ev = c.evaluate(phi)
+    targets = targets_for(scene, c, plans)
+    ev.evaluate_all(targets)
+    ensure_valid(c, ev, scene.path, max_condition)
+    return Solution(scene, structure, c, phi, ev, plans, targets, choose_scales(scene, c, ev, plans))
+
+
+def _vec(a: np.ndarray) -> list[float]:
+    return [float(a[0]), float(a[1])]
+
+
+def to_json(sol: Solution) -> dict[str, Any]:
+    """The JSON document of ``mechplan solve --json`` (SI units, ω/ε counter-clockwise +)."""
+    scene, c, ev = sol.scene, sol.construction, sol.ev
+    points = scene.points_of_interest or tuple(
+        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points)
+    theta = c.drive.absolute(sol.phi)
+    positions = []
+    for k in range(sol.positions):
+        pts: dict[str, Any] = {}
+        for p in points:
+            entry = {}
+            if f"pos.{p}" in ev.values:
+                entry["r"] = _vec(ev[f"pos.{p}"][k])
+            for sym, key in (("v", "v"), ("a", "a")):
+                sid = c.results.get(f"{sym}_{p}")
+                if sid is not None and sid in ev.values:
+                    entry[key] = _vec(ev[sid][k])
+            pts[p] = entry
+        links: dict[str, Any] = {}
+        for lid in scene.mechanism.moving:
+            entry = {}
+            for key, name in (("angle", "angle_deg"), ("omega", "omega"), ("epsilon", "epsilon")):
+                sid = c.results.get(f"{key}_{lid}")
+                if sid is not None and sid in ev.values:
+                    val = float(ev[sid][k])
+                    entry[name] = math.degrees(math.remainder(val, 2 * math.pi)) if key == "angle" else val
+            if entry:
+                links[lid] = entry
+        positions.append({"phi_deg": math.degrees(float(sol.phi[k])),
+                          "crank_angle_deg": math.degrees(math.remainder(float(theta[k]), 2 * math.pi)),
+                          "points": pts, "links": links})
+    return {"mechplan": __version__, "title": scene.title, "dof": sol.structure.dof,
+            "structure": sol.structure.formula,
+            "groups": [{"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups],
+            "positions": positions,
+            "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated}}
+
+
+def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, float, str, float]]:
+    """(segment, mm on paper, μ, quantity, physical value) of a plan at position k."""
+    rows = []
+    mu = sol.scales.get(plan, 1.0)
+    for s in sol.construction.segments:
+        if s.plan is plan and s.start in sol.ev.values and s.end in sol.ev.values:
+            length = float(np.hypot(*(sol.ev[s.end][k] - sol.ev[s.start][k])))
+            rows.append((s.name, length / mu, mu, s.quantity, length))
+    return rows
+
+
+__all__ = ["Solution", "solve", "to_json", "segment_table", "crank_positions", "SegmentKind"]
