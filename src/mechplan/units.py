@@ -59,7 +59,8 @@ _EXAMPLES = {
 def registry() -> pint.UnitRegistry:
     """Return the project's own explicit unit registry (angles are dimensionless radians)."""
     ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-    ureg.define("rpm = revolution / minute")
+    if "rpm" not in ureg:
+        ureg.define("rpm = revolution / minute")
     return ureg
 
 

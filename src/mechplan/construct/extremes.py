@@ -55,7 +55,8 @@ def extreme_positions(c: Construction, mech: Mechanism, subject: str, samples: i
                       iterations: int = 64) -> list[ExtremePosition]:
     """All crank angles where the subject's rate vanishes with a sign change (max and min)."""
     f = _rate_and_value(c, mech, subject)
-    phi = np.linspace(0.0, TWO_PI, samples + 1)
+    # half-step offset: a root exactly on a round angle (φ = 0) falls inside a bracket
+    phi = (np.arange(samples + 1) - 0.5) * (TWO_PI / samples)
     rate, _ = f(phi)
     sign = np.sign(rate)
     idx = np.nonzero((sign[:-1] * sign[1:] < 0) | ((sign[:-1] != 0) & (sign[1:] == 0)))[0]

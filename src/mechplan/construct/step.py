@@ -62,6 +62,22 @@ class Op(enum.Enum):
     CORIOLIS = "coriolis"                # Coriolis component 2ω × v_rel
     COPY = "copy"                        # a value taken over from another step (ω3 = ω2)
     DIFFERENCE = "difference"            # a vector between two images (relative velocity)
+    # force plan (kinetostatics)
+    FORCE_INERTIA = "force_inertia"      # Q = −m·a_S
+    MOMENT_INERTIA = "moment_inertia"    # M_q = −J_S·ε
+    FORCE_LOAD = "force_load"            # a given force: weight, constant, pressure, table
+    MOMENT_ARM_TANGENTIAL = "moment_arm_tangential"  # R^t (or a guide's normal) from ΣM = 0
+    FORCE_SUM = "force_sum"              # next vertex of a force polygon: previous + force
+    FORCE_CLOSE = "force_close"          # two closing lines of known direction meet
+    BALANCING_MOMENT = "balancing_moment"  # M_b = −ΣM_A of all loads on the driving link
+    ZHUKOVSKY = "zhukovsky"              # M_b from moments about the pole of the turned plan
+    MOMENT_SUM = "moment_sum"            # ΣM_P of known forces and couples on a link
+    MOMENT_CLOSE = "moment_close"        # the couple of a guide reaction: −ΣM
+    FORCE_LINE = "force_line"            # through a polygon vertex, ∥ or ⊥ a link or guide
+    FORCE_REVERSE = "force_reverse"      # R_ji = −R_ij (action and reaction)
+    GUIDE_OFFSET = "guide_offset"        # where a guide reaction's line of action crosses the guide
+    LINE_OF_ACTION = "line_of_action"    # a point of the line of action of a force with a couple
+    INERTIA_OFFSET = "inertia_offset"    # h = M_q/|Q| of the single equivalent inertia force
 
 
 @dataclass(frozen=True, slots=True)

@@ -17,6 +17,7 @@ def emit_drive(b: Builder) -> None:
     b.add("acc.pi", Op.POLE, (), A, Kind.POINT, Role.GIVEN, "π")
     for name in b.mech.links[GROUND].points:
         b.acc[name] = "acc.pi"
+        b.result(f"a_{name}", "acc.pi")
     drive = b.mech.drive
     crank = b.mech.links[drive.link]
     tip = next(p for p in crank.points if p != drive.pivot)

@@ -17,6 +17,7 @@ def emit_drive(b: Builder) -> None:
     b.add("vel.p", Op.POLE, (), V, Kind.POINT, Role.GIVEN, "p")
     for name in b.mech.links[GROUND].points:
         b.vel[name] = "vel.p"
+        b.result(f"v_{name}", "vel.p")
     drive = b.mech.drive
     crank = b.mech.links[drive.link]
     tip = next(p for p in crank.points if p != drive.pivot)
