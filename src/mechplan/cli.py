@@ -69,6 +69,9 @@ def main(argv: list[str] | None = None) -> int:
     except MechplanError as exc:
         print(f"mechplan: error: {exc}", file=sys.stderr)
         return 2
+    except BrokenPipeError:          # output piped into `head`
+        sys.stderr.close()
+        return 0
 
 
 if __name__ == "__main__":

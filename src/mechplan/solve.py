@@ -157,8 +157,8 @@ def to_json(sol: Solution) -> dict[str, Any]:
                     entry[name] = math.degrees(math.remainder(val, 2 * math.pi)) if key == "angle" else val
             if entry:
                 links[lid] = entry
-        positions.append({"phi_deg": math.degrees(float(sol.phi[k])),
-                          "crank_angle_deg": math.degrees(math.remainder(float(theta[k]), 2 * math.pi)),
+        positions.append({"phi_deg": round(math.degrees(float(sol.phi[k])), 10),
+                          "crank_angle_deg": round(math.degrees(math.remainder(float(theta[k]), 2 * math.pi)), 10),
                           "points": pts, "links": links})
     return {"mechplan": __version__, "title": scene.title, "dof": sol.structure.dof,
             "structure": sol.structure.formula,

@@ -114,6 +114,11 @@ class Builder:
                 self.c.steps[step_id] = _with(step, sigma=sigma)
                 ev = self.c.evaluate(self.assembly_phi)
                 dist[sigma] = float(np.linalg.norm(ev[probe][0] - target))
+            if all(math.isnan(d) for d in dist.values()):
+                raise SceneError(f"the mechanism cannot be assembled at φ = "
+                                 f"{math.degrees(self.assembly_phi):g}° to match the sketch of "
+                                 f"{point} (group {group}); set assembly.at to a reachable angle",
+                                 file=self.file, key=f"assembly.{point}")
             best = min(dist, key=lambda s: (math.inf if math.isnan(dist[s]) else dist[s]))
             self.c.steps[step_id] = _with(step, sigma=best)
             return
