@@ -11,19 +11,56 @@ from typing import Callable
 import numpy as np
 
 from ..geom import meet
-from ..geom.vec import Array, angle_of, as_complex, cross, direction, dot, from_complex, perp, rotate, unit
+from ..geom.vec import (Array, angle_of, as_complex, cross, direction, dot, from_complex, norm, perp,
+                        rotate)
 from .step import Op, Step
 
 Result = tuple[Array, Array | None, Array | None]
 
 
 def _line(point: Array, u: Array) -> Array:
-    return np.stack((point, u), axis=-2)
+    # component-wise copies: numpy's inner loop over a trailing axis of 2 is ~5x slower
+    out = np.empty(np.broadcast_shapes(point.shape, u.shape)[:-1] + (2, 2),
+                   np.result_type(point, u))
+    out[..., 0, 0], out[..., 0, 1] = point[..., 0], point[..., 1]
+    out[..., 1, 0], out[..., 1, 1] = u[..., 0], u[..., 1]
+    return out
+
+
+def _scaled(k: Array, v: Array) -> Array:
+    """Return k[..., None] * v for k (N,) and v (N, 2), one component at a time (same values)."""
+    out = np.empty(np.broadcast_shapes(k.shape + (2,), v.shape), np.result_type(k, v))
+    np.multiply(k, v[..., 0], out=out[..., 0])
+    np.multiply(k, v[..., 1], out=out[..., 1])
+    return out
+
+
+def _unit(v: Array) -> Array:
+    """Return v / |v| like :func:`vec.unit`, one component at a time (same values)."""
+    n = norm(v)
+    out = np.empty(v.shape, np.result_type(v, n))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        np.divide(v[..., 0], n, out=out[..., 0])
+        np.divide(v[..., 1], n, out=out[..., 1])
+    return out
+
+
+def _complex(v: Array) -> Array:
+    """View (N, 2) float vectors as complex numbers without a copy where the layout allows."""
+    if v.dtype in (np.float64, np.float32) and v.flags.c_contiguous and v.shape[-1] == 2:
+        return v.view(np.complex128 if v.dtype == np.float64 else np.complex64)[..., 0]
+    return as_complex(v)
+
+
+def _from_complex(z: Array) -> Array:
+    if z.dtype in (np.complex128, np.complex64) and z.flags.c_contiguous:
+        return z.view(np.float64 if z.dtype == np.complex128 else np.float32).reshape(z.shape + (2,))
+    return from_complex(z)
 
 
 def _fixed_point(step: Step, n: int) -> Result:
     xy = np.asarray(step.param("xy"), dtype=float)
-    return np.broadcast_to(xy, (n, 2)).copy(), None, None
+    return np.tile(xy, (n, 1)), None, None
 
 
 def _polar(step: Step, centre: Array, angle: Array) -> Result:
@@ -51,17 +88,23 @@ def _line_line(step: Step, l1: Array, l2: Array) -> Result:
 
 
 def _locus_line(step: Step, base: Array, *angle: Array) -> Result:
-    theta = angle[0] if angle else np.zeros(base.shape[:-1])
-    offset = np.asarray(step.param("offset"), dtype=float)
+    offset = np.asarray(step.param("offset"), dtype=base.dtype)
+    if not angle:
+        # a guide of the frame: the same direction at every position; rotating by a zero angle
+        # and taking cos/sin once give the values the per-position evaluation would
+        zero = np.zeros(1, dtype=base.dtype)
+        point = base + rotate(offset, zero)
+        return _line(point, direction(zero + step.param("dir_angle"))), None, None
+    theta = angle[0]
     point = base + rotate(offset, theta)
     return _line(point, direction(theta + step.param("dir_angle"))), None, None
 
 
 def _carrier_angle(step: Step, pc: Array, ps: Array) -> Result:
     """Angle of a guide carrier pivoting at pc whose guide must pass through ps."""
-    q0 = np.asarray(step.param("q0"), dtype=float)
-    d = direction(np.asarray(step.param("dir_angle"), dtype=float))
     rel = ps - pc
+    q0 = np.asarray(step.param("q0"), dtype=rel.dtype)
+    d = direction(np.asarray(step.param("dir_angle"), dtype=rel.dtype))
     radius = np.hypot(rel[..., 0], rel[..., 1])
     origin = np.zeros_like(rel)
     hit, gap, sine = meet.circle_line(origin, radius, np.broadcast_to(q0, rel.shape),
@@ -70,29 +113,30 @@ def _carrier_angle(step: Step, pc: Array, ps: Array) -> Result:
 
 
 def _place(step: Step, origin: Array, angle: Array) -> Result:
-    return origin + rotate(np.asarray(step.param("offset"), dtype=float), angle), None, None
+    return origin + rotate(np.asarray(step.param("offset"), dtype=origin.dtype), angle), None, None
 
 
 def _similar_position(step: Step, a: Array, b: Array) -> Result:
-    za, zb = as_complex(a), as_complex(b)
-    return from_complex(za + (zb - za) * step.param("z")), None, None
+    za, zb = _complex(a), _complex(b)
+    return _from_complex(za + (zb - za) * step.param("z")), None, None
 
 
 def _similar_image(step: Step, a: Array, b: Array, pa: Array, pb: Array, px: Array) -> Result:
-    za, zb = as_complex(a), as_complex(b)
+    za, zb = _complex(a), _complex(b)
+    zpa = _complex(pa)
     with np.errstate(invalid="ignore", divide="ignore"):
-        ratio = (as_complex(px) - as_complex(pa)) / (as_complex(pb) - as_complex(pa))
-    return from_complex(za + (zb - za) * ratio), None, None
+        ratio = (_complex(px) - zpa) / (_complex(pb) - zpa)
+    return _from_complex(za + (zb - za) * ratio), None, None
 
 
 def _rigid_velocity(step: Step, o: Array, omega: Array, po: Array, px: Array) -> Result:
-    return o + omega[..., None] * perp(px - po), None, None
+    return o + _scaled(omega, perp(px - po)), None, None
 
 
 def _rigid_acceleration(step: Step, o: Array, omega: Array, eps: Array, po: Array,
                         px: Array) -> Result:
     r = px - po
-    return o + eps[..., None] * perp(r) - (omega * omega)[..., None] * r, None, None
+    return o + _scaled(eps, perp(r)) - _scaled(omega * omega, r), None, None
 
 
 def _constant(step: Step, n: int) -> Result:
@@ -114,7 +158,7 @@ def _drive_acceleration(step: Step, a: Array, b: Array) -> Result:
 
 
 def _line_perp(step: Step, through: Array, p: Array, q: Array) -> Result:
-    return _line(through, unit(perp(q - p))), None, None
+    return _line(through, _unit(perp(q - p))), None, None
 
 
 def _line_parallel(step: Step, through: Array, line: Array) -> Result:
@@ -132,11 +176,11 @@ def _epsilon(step: Step, p: Array, q: Array, n: Array, aq: Array) -> Result:
 
 
 def _normal(step: Step, ap: Array, omega: Array, p: Array, q: Array) -> Result:
-    return ap - (omega * omega)[..., None] * (q - p), None, None
+    return ap - _scaled(omega * omega, q - p), None, None
 
 
 def _coriolis(step: Step, start: Array, omega: Array, v_from: Array, v_to: Array) -> Result:
-    return start + 2.0 * omega[..., None] * perp(v_to - v_from), None, None
+    return start + _scaled(2.0 * omega, perp(v_to - v_from)), None, None
 
 
 def _copy(step: Step, x: Array) -> Result:

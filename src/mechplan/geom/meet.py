@@ -19,8 +19,8 @@ def circle_circle(c1: Array, r1: Array | float, c2: Array, r2: Array | float,
     """Intersect circles (c1, r1) and (c2, r2); sigma=+1 takes the point left of c1→c2."""
     d_vec = c2 - c1
     d = norm(d_vec)
-    r1 = np.asarray(r1, dtype=float)
-    r2 = np.asarray(r2, dtype=float)
+    r1 = np.asarray(r1, dtype=d.dtype)     # the points' float type (float32 stays float32)
+    r2 = np.asarray(r2, dtype=d.dtype)
     gap = np.maximum(d - (r1 + r2), np.abs(r1 - r2) - d)
     with np.errstate(invalid="ignore", divide="ignore"):
         a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d)
@@ -37,8 +37,8 @@ def circle_circle(c1: Array, r1: Array | float, c2: Array, r2: Array | float,
 def circle_line(c: Array, r: Array | float, p: Array, u: Array,
                 sigma: int) -> tuple[Array, Array, Array]:
     """Intersect circle (c, r) with the line through p along unit u; sigma=+1 takes the far one along u."""
-    r = np.asarray(r, dtype=float)
     w = cross(u, c - p)
+    r = np.asarray(r, dtype=np.result_type(w, np.float32))   # float32 points stay float32
     foot = p + dot(c - p, u)[..., None] * u
     gap = np.abs(w) - r
     with np.errstate(invalid="ignore"):
@@ -53,7 +53,7 @@ def circle_line(c: Array, r: Array | float, p: Array, u: Array,
 def line_line(p1: Array, u1: Array, p2: Array, u2: Array) -> tuple[Array, Array, Array]:
     """Intersect the line through p1 along u1 with the line through p2 along u2 (u unit)."""
     s = cross(u1, u2)
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         t = cross(p2 - p1, u2) / s
         point = p1 + t[..., None] * u1
     point = np.where((s == 0.0)[..., None], np.nan, point)

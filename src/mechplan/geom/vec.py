@@ -35,7 +35,9 @@ def unit(v: Array) -> Array:
 
 def direction(angle: Array) -> Array:
     """Return unit vectors at the given angles (radians, counter-clockwise from +x)."""
-    angle = np.asarray(angle, dtype=float)
+    angle = np.asarray(angle)
+    if angle.dtype.kind != "f":     # keep float32 evaluations in float32
+        angle = angle.astype(float)
     return np.stack((np.cos(angle), np.sin(angle)), axis=-1)
 
 

@@ -19,7 +19,8 @@ from pathlib import Path
 import ezdxf
 from ezdxf.document import Drawing
 from ezdxf.enums import TextEntityAlignment
-from ezdxf.layouts import BaseLayout
+from ezdxf.layouts.base import BaseLayout
+from ezdxf.layouts.blocklayout import BlockLayout
 
 from mechplan.errors import DrawingError
 from mechplan.render.atomic import write_atomic
@@ -117,12 +118,14 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
     def q(pt: tuple[float, float]) -> tuple[float, float]:
         return (pt[0] - dx, pt[1] - dy)
 
-    layer = {"layer": p.role.layer} if not isinstance(p, Block) else {}
+    if isinstance(p, Block):
+        raise DrawingError(f"block '{p.name}' must be placed on the sheet, not inside a layout")
+    layer = {"layer": p.role.layer}
     if isinstance(p, Line):
         layout.add_line(q(p.start), q(p.end), dxfattribs=layer)
     elif isinstance(p, Polyline):
         if p.filled:
-            hatch = layout.add_hatch(dxfattribs=layer)
+            hatch = layout.add_hatch(color=256, dxfattribs=layer)  # colour by layer
             hatch.paths.add_polyline_path([q(v) for v in p.points], is_closed=True)
         else:
             layout.add_lwpolyline([q(v) for v in p.points], format="xy", close=p.closed,
@@ -137,7 +140,7 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
             layout.add_line(q(shaft.start), q(shaft.end), dxfattribs=layer)
         layout.add_solid([q(v) for v in p.head()], dxfattribs=layer)
     elif isinstance(p, Text):
-        if p.tag is not None and isinstance(layout, ezdxf.layouts.BlockLayout):
+        if p.tag is not None and isinstance(layout, BlockLayout):
             attdef = layout.add_attdef(p.tag, q(p.position), p.string,
                                        dxfattribs={**_text_attribs(p), "prompt": p.tag})
             attdef.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])

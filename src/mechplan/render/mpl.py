@@ -9,7 +9,7 @@ from __future__ import annotations
 import io
 import os
 from pathlib import Path
-from typing import Any
+from typing import Any, cast
 
 import matplotlib
 from matplotlib import font_manager
@@ -140,7 +140,7 @@ def figure(sheet: Sheet) -> Figure:
 
 def render_context() -> Any:
     """Return the rcParams context the figures are built and saved in."""
-    return matplotlib.rc_context(_RC)
+    return matplotlib.rc_context(cast(Any, _RC))
 
 
 def to_bytes(sheet: Sheet, fmt: str, *, dpi: float = 150.0) -> bytes:

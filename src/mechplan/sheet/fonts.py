@@ -16,6 +16,8 @@ from dataclasses import dataclass
 from enum import Enum
 from pathlib import Path
 
+from fontTools.ttLib import TTFont, TTLibError
+
 from mechplan.sheet.primitives import Text, VAlign
 
 log = logging.getLogger(__name__)
@@ -83,7 +85,7 @@ def _font_dirs() -> Iterable[Path]:
             yield p
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def font_path(font: SheetFont) -> Path | None:
     """Return the installed file of `font`, or None (searched once per process)."""
     wanted = {n.lower() for n in font.value.file_names}
@@ -103,25 +105,23 @@ class _Metrics:
     advances: dict[int, int]  # code point -> advance width in font units
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _metrics(font: SheetFont) -> _Metrics | None:
     path = font_path(font)
     if path is None:
         return None
     try:
-        from fontTools.ttLib import TTFont
-
         tt = TTFont(path, fontNumber=font.value.collection_index, lazy=True)
         upem = int(tt["head"].unitsPerEm)
         os2 = tt["OS/2"]
         cap = int(getattr(os2, "sCapHeight", 0) or 0) or int(upem * font.value.cap_ratio)
         cmap = tt.getBestCmap()
         hmtx = tt["hmtx"]
-        glyf = tt["glyf"] if "glyf" in tt else None
+        glyf = tt.get("glyf")
         advances = {cp: int(hmtx[name][0]) for cp, name in cmap.items()
                     if glyf is None or not _is_placeholder(glyf[name], upem)}
         tt.close()
-    except Exception as exc:  # a broken font file must not stop a drawing
+    except (OSError, KeyError, ValueError, TTLibError) as exc:  # a broken font stops no drawing
         log.warning("cannot read font %s (%s); text metrics are estimated", path, exc)
         return None
     return _Metrics(upem, cap, advances)
@@ -140,7 +140,7 @@ def _is_placeholder(glyph: object, upem: int) -> bool:
     xs, ys = [c[0] for c in coords], [c[1] for c in coords]
     w, h = max(xs) - min(xs), max(ys) - min(ys)
     area = abs(sum(xs[i] * ys[i - 1] - xs[i - 1] * ys[i] for i in range(4))) / 2.0
-    return w > 0.15 * upem and h > 0.15 * upem and area > 0.85 * w * h
+    return bool(w > 0.15 * upem and h > 0.15 * upem and area > 0.85 * w * h)
 
 
 def cap_ratio(font: SheetFont) -> float:

@@ -269,17 +269,17 @@ def _gost_block(b: _Builder, f: Mapping[str, str], size: str) -> None:
     # name 70 × 25 and material 70 × 15, right part 50 mm (Лит. 15, Масса 17, Масштаб 18).
     b.rect(0, 0, 185, 55)
     thick = Role.FRAME
-    for y in (30, 35):
-        b.line(0, y, 65, y, thick)
-    for y in (5, 10, 15, 20, 25, 40, 45, 50):
-        b.line(0, y, 65, y)
+    for row in (30.0, 35.0):
+        b.line(0, row, 65, row, thick)
+    for row in (5.0, 10.0, 15.0, 20.0, 25.0, 40.0, 45.0, 50.0):
+        b.line(0, row, 65, row)
     b.line(65, 40, 185, 40, thick)
     b.line(65, 15, 185, 15, thick)
     b.line(135, 35, 185, 35, thick)
     b.line(135, 20, 185, 20, thick)
     b.line(7, 30, 7, 55, thick)
-    for x in (17, 40, 55, 65):
-        b.line(x, 0, x, 55, thick)
+    for col in (17.0, 40.0, 55.0, 65.0):
+        b.line(col, 0, col, 55, thick)
     b.line(135, 0, 135, 40, thick)
     b.line(150, 20, 150, 40, thick)
     b.line(167, 20, 167, 40, thick)

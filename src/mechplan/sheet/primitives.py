@@ -11,6 +11,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import Enum
 from types import MappingProxyType
+from typing import Any
 
 from mechplan.errors import DrawingError
 
@@ -55,7 +56,7 @@ class Role(Enum):
 
     FRAME = "FRAME"  # sheet frame and title-block main lines, 0.7 mm
     OUTLINE = "OUTLINE"  # links, result vectors, 0.5 mm
-    THICK = "OUTLINE"  # alias of OUTLINE
+    THICK = "OUTLINE"  # noqa: PIE796 - deliberate alias of OUTLINE
     THIN = "THIN"  # given and auxiliary lines, 0.25 mm
     DASHED = "DASHED"  # auxiliary construction lines, ISO dashed
     CHAIN = "CHAIN"  # guide axes, trajectories, dash-dot
@@ -109,8 +110,10 @@ class VAlign(Enum):
 
 def _point(value: object, what: str) -> Point:
     try:
-        x, y = value  # type: ignore[misc]
-        p = (float(x), float(y))
+        seq: tuple[Any, ...] = tuple(value)  # type: ignore[arg-type]
+        if len(seq) != 2:
+            raise ValueError(len(seq))
+        p = (float(seq[0]), float(seq[1]))
     except (TypeError, ValueError) as exc:
         raise DrawingError(f"{what} must be a pair of numbers in mm (got {value!r})") from exc
     if not (math.isfinite(p[0]) and math.isfinite(p[1])):
