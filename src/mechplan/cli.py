@@ -27,6 +27,24 @@ def _solve(args: argparse.Namespace) -> int:
     return 0
 
 
+def _draw(args: argparse.Namespace) -> int:
+    from .render import write
+    from .scene import load_scene
+    from .sheet.compose import compose_sheet
+    from .solve import solve
+
+    formats = [f.strip() for f in args.format.split(",") if f.strip()]
+    for path in args.scenes:
+        scene = load_scene(path)
+        sol = solve(scene)
+        sheet = compose_sheet(sol, args.sheet, args.standard, args.lang, name=Path(path).stem)
+        out = Path(args.output)
+        out.mkdir(parents=True, exist_ok=True)
+        for written in write(sheet, out, formats):
+            print(written)
+    return 0
+
+
 def _new(args: argparse.Namespace) -> int:
     templates = Path(__file__).resolve().parents[2] / "templates"
     src = templates / f"{args.template}.toml"
@@ -54,6 +72,14 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("--json", action="store_true", help="one JSON document, SI units")
     s.add_argument("--stats", action="store_true", help="print step counts to stderr")
     s.set_defaults(func=_solve)
+    d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG")
+    d.add_argument("scenes", nargs="+", metavar="SCENE")
+    d.add_argument("-o", "--output", default=".", help="output folder (default: .)")
+    d.add_argument("--format", default="dxf,svg,pdf", help="comma-separated: dxf,svg,pdf,png")
+    d.add_argument("--sheet", choices=("A0", "A1", "A2", "A3", "A4"))
+    d.add_argument("--lang", choices=("en", "ru", "vi", "zh"))
+    d.add_argument("--standard", choices=("iso", "gost", "tcvn"))
+    d.set_defaults(func=_draw)
     n = sub.add_parser("new", help="start a scene from a bundled template")
     n.add_argument("template")
     n.add_argument("-o", "--output")

@@ -12,10 +12,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mechplan.dynamics import Loading
 from mechplan.model.mechanism import GROUND, Mechanism, PairKind
 from mechplan.scene.spec import Gravity, LoadKind, LoadSpec, MassSpec
-
-from mechplan.dynamics import Loading
 
 
 def _cross(a, b):

@@ -13,7 +13,7 @@ import pytest
 from mechplan.construct.builder import build_construction
 from mechplan.construct.plans.force import pair_key
 from mechplan.dynamics import Loading
-from mechplan.dynamics.kinetostatics import analyse_forces, force_json, force_text
+from mechplan.dynamics.kinetostatics import analyse_forces, balancing_force, force_json, force_text
 from mechplan.model.mechanism import GROUND, PairKind
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
@@ -353,3 +353,18 @@ def test_loads_of_a_moving_guide_carrier_reach_earlier_links():
         np.testing.assert_allclose(ev[c.results[f"R_{pair_key(i, j)}"]], f, rtol=0,
                                    atol=1e-9 * np.abs(f).max())
     assert GROUND in {i for i, _ in ref.force}
+
+
+def test_balancing_force_is_equivalent_to_the_balancing_moment():
+    scene, loading = v_engine()
+    c, ev = solved(scene, loading, np.radians([30.0, 180.0, 250.0]))
+    mb = ev[c.results["M_b"]]
+    r = ev["pos.B"] - ev["pos.A"]
+    for angle in (None, math.radians(10.0)):
+        fb = balancing_force(c, ev, scene.mechanism, "B", angle)
+        np.testing.assert_allclose(r[:, 0] * fb[:, 1] - r[:, 1] * fb[:, 0], mb, rtol=1e-12)
+    fb = balancing_force(c, ev, scene.mechanism, "B")
+    np.testing.assert_allclose(np.sum(fb * r, axis=1), 0.0, atol=1e-9)
+    np.testing.assert_allclose(np.hypot(*fb.T), np.abs(mb) / 0.08, rtol=1e-12)
+    with pytest.raises(ValueError):
+        balancing_force(c, ev, scene.mechanism, "A")

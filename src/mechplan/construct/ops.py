@@ -96,8 +96,12 @@ def _locus_line(step: Step, base: Array, *angle: Array) -> Result:
         point = base + rotate(offset, zero)
         return _line(point, direction(zero + step.param("dir_angle"))), None, None
     theta = angle[0]
-    point = base + rotate(offset, theta)
-    return _line(point, direction(theta + step.param("dir_angle"))), None, None
+    c, s = np.cos(theta), np.sin(theta)
+    # rotate(offset, theta) with the cosine and sine computed once
+    point = base + np.stack((c * offset[0] - s * offset[1], s * offset[0] + c * offset[1]), axis=-1)
+    dir_angle = step.param("dir_angle")
+    u = np.stack((c, s), axis=-1) if dir_angle == 0.0 else direction(theta + dir_angle)
+    return _line(point, u), None, None
 
 
 def _carrier_angle(step: Step, pc: Array, ps: Array) -> Result:

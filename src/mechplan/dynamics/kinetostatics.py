@@ -16,7 +16,7 @@ import numpy as np
 from ..construct.graph import Construction, Evaluation
 from ..construct.plans.force import pair_key
 from ..construct.step import Op, Plan, Step
-from ..geom.vec import Array, cross, norm
+from ..geom.vec import Array, cross, norm, perp
 from ..model.mechanism import Mechanism, PairKind
 from .reduced import link_omega, reduced_of
 
@@ -133,6 +133,28 @@ def analyse_forces(c: Construction, ev: Evaluation, mech: Mechanism, loading: An
         reduced_moment=m_red, reduced_inertia=j_red)
 
 
+def balancing_force(c: Construction, ev: Evaluation, mech: Mechanism, point: str,
+                    angle: float | None = None) -> Array:
+    """The balancing force (N, 2) at a point of the driving link, equivalent to M_b.
+
+    Its line of action is ⊥ to the crank line from the pivot to ``point`` (the textbook case,
+    F_b = M_b/l) or, given ``angle`` (rad, counter-clockwise from +x), along that fixed direction;
+    NaN where that line passes through the pivot.
+    """
+    drive = mech.drive
+    if point not in mech.links[drive.link].points or point == drive.pivot:
+        raise ValueError(f"point {point!r} is not a point of the driving link {drive.link} other "
+                         f"than its pivot {drive.pivot}")
+    r = ev[f"pos.{point}"] - ev[f"pos.{drive.pivot}"]
+    if angle is None:
+        d = perp(r) / norm(r)[:, None]
+    else:
+        d = np.broadcast_to(np.array([math.cos(angle), math.sin(angle)]), r.shape)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        magnitude = ev[c.results["M_b"]] / cross(r, d)
+    return magnitude[:, None] * d
+
+
 # -- text --------------------------------------------------------------------------------------
 def _f(x: float, unit: str = "", digits: int = 6) -> str:
     if not math.isfinite(x):
@@ -141,20 +163,25 @@ def _f(x: float, unit: str = "", digits: int = 6) -> str:
     return f"{text} {unit}".rstrip()
 
 
+def _deg(angle: float) -> str:
+    return f"{math.degrees(angle) + 0.0:.6g}°"
+
+
 def _polar(v: Array) -> str:
     mag = float(norm(v))
     if mag == 0.0:
         return "0 N"
-    return f"{_f(mag, 'N')} at {_f(math.degrees(math.atan2(v[1], v[0])), '°', 5)}"
+    return f"{_f(mag, 'N')} at {_deg(math.atan2(v[1], v[0]))}"
 
 
 def force_text(c: Construction, ev: Evaluation, mech: Mechanism, loading: Any, i: int,
                mu_F: float | None = None, result: ForceAnalysis | None = None) -> list[str]:
     """Lines of the kinetostatic analysis at position i (English; the protocol translates)."""
     fa = result or analyse_forces(c, ev, mech, loading)
-    lines = [f"Kinetostatic analysis at φ{mech.drive.link} = "
-             f"{_f(math.degrees(float(fa.phi[i])), '°', 6)} "
-             f"(ω{mech.drive.link} = {_f(float(fa.omega1[i]), 'rad/s')})"]
+    link1 = mech.drive.link
+    head = (f"Kinetostatic analysis at φ{link1} = {_deg(float(fa.phi[i]))} "
+            f"(ω{link1} = {_f(float(fa.omega1[i]), 'rad/s')})")
+    lines = [head]
     steps = c.of_plan(Plan.FORCE)
     loads = [s for s in steps if s.id.startswith(LOAD_PREFIXES)]
     if loads:
@@ -198,7 +225,10 @@ def force_text(c: Construction, ev: Evaluation, mech: Mechanism, loading: Any, i
         sense, role = "zero", "neither driving nor resisting"
     lines.append(f"Balancing moment on link {mech.drive.link}: M_b = {_f(mb, 'N·m')} ({sense}; "
                  f"{role}, M_b·ω{mech.drive.link} {'>' if fa.driving(i) else '≤'} 0)")
-    lines.append(f"Zhukovsky's lever: M_b = {_f(mz, 'N·m')}; difference "
+    lever = c[c.results["M_b_zhukovsky"]]
+    applied = ", ".join(lever.subject) or "no loads"
+    lines.append(f"Zhukovsky's lever (the velocity plan turned by 90°, {applied} at their images, "
+                 f"couples as M·ω/ω{link1}): M_b = {_f(mz, 'N·m')}; difference "
                  f"{float(fa.difference_percent[i]):.3g} %")
     lines.append(f"Reduced moment of forces M_red = {_f(float(fa.reduced_moment[i]), 'N·m')}; "
                  f"reduced moment of inertia J_red = {_f(float(fa.reduced_inertia[i]), 'kg·m²')}")
@@ -214,7 +244,7 @@ def _step_text(c: Construction, ev: Evaluation, s: Step, i: int, mu_F: float | N
         return f", drawn {_f(float(norm(x)) / mu_F, 'mm', 4)}" if mu_F else ""
 
     if s.op is Op.MOMENT_SUM:
-        about, link, *names = s.subject
+        about, link = s.subject[:2]
         centre = ev[s.inputs[0]][i]
         parts, k = [], 1
         for kind in s.param("layout"):
@@ -228,16 +258,16 @@ def _step_text(c: Construction, ev: Evaluation, s: Step, i: int, mu_F: float | N
             else:
                 parts.append(f"{c[s.inputs[k]].label} = {_f(float(ev[s.inputs[k]][i]), 'N·m', 5)}")
                 k += 1
-        out = [f"{s.label}: moments about {about} of the known loads on link {link} = "
-               f"{_f(float(v), 'N·m')}"]
-        out += [f"    {p}" for p in parts]
-        return out
+        total = f"{s.label}: moments about {about} of the known loads on link {link} = " \
+            f"{_f(float(v), 'N·m')}"
+        return [total, *(f"    {p}" for p in parts)]
     if s.op is Op.MOMENT_ARM_TANGENTIAL:
         centre, at = ev[s.inputs[0]][i], ev[s.inputs[1]][i]
         arm = float(norm(at - centre))
         how = (f"⊥ {s.subject[3]}" if len(s.inputs) == 4 else f"⊥ {s.subject[0]}{s.subject[1]}")
-        return [f"{s.label} = −{lab[s.inputs[2]]}/arm ({how}, arm from {s.subject[1]} to "
-                f"{s.subject[0]} = {_f(arm * 1000, 'mm', 5)}) = {_polar(v)}"]
+        text = f"{s.label} = −{lab[s.inputs[2]]}/arm ({how}, arm from {s.subject[1]} to " \
+            f"{s.subject[0]} = {_f(arm * 1000, 'mm', 5)}) = {_polar(v)}"
+        return [text]
     if s.op in (Op.MOMENT_CLOSE, Op.BALANCING_MOMENT):
         return [f"{s.label} = −{lab[s.inputs[0]]} = {_f(float(v), 'N·m')}"]
     if s.op is Op.POLE:
@@ -258,8 +288,9 @@ def _step_text(c: Construction, ev: Evaluation, s: Step, i: int, mu_F: float | N
         return [f"{s.label} = {lab[s.inputs[0]]}{lab[s.inputs[1]]} = {_polar(v)}{drawn(v)}"]
     if s.op is Op.GUIDE_OFFSET:
         d = float(v)
-        return [f"{s.label} = {_f(d * 1000, 'mm')} (line of action of R_{s.label[2:]} along "
-                f"{s.subject[2]} from {s.subject[0]})"]
+        text = f"{s.label} = {_f(d * 1000, 'mm')} (line of action of R_{s.label[2:]} along " \
+            f"{s.subject[2]} from {s.subject[0]})"
+        return [text]
     return []
 
 
@@ -269,4 +300,5 @@ def force_json(c: Construction, ev: Evaluation, mech: Mechanism, loading: Any) -
     return [fa.json(i) for i in range(ev.n)]
 
 
-__all__ = ["ForceAnalysis", "Reaction", "analyse_forces", "force_json", "force_text"]
+__all__ = ["ForceAnalysis", "Reaction", "analyse_forces", "balancing_force", "force_json",
+           "force_text"]

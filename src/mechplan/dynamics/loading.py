@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
@@ -27,7 +28,7 @@ class Loading:
     file: str | None = None
 
     @classmethod
-    def from_scene(cls, scene: "Scene") -> "Loading":
+    def from_scene(cls, scene: Scene) -> Loading:
         """Take the masses, loads and gravity of a parsed scene."""
         return cls(dict(scene.masses), tuple(scene.loads), scene.gravity, scene.path)
 
@@ -36,7 +37,7 @@ class Loading:
         """True when nothing loads the mechanism (no masses, no loads)."""
         return not self.loads and not any(m.mass or m.inertia for m in self.masses.values())
 
-    def reversed(self) -> "Loading":
+    def reversed(self) -> Loading:
         """The same loading with every external force, moment and gravity reversed.
 
         Masses are kept, so reactions reverse only when the masses are zero.
@@ -119,7 +120,7 @@ class Loading:
         if spec.against not in ("crank_angle", "displacement"):
             raise fail(f"a table is given against crank_angle or displacement (got {spec.against!r})")
         xs = [x for x, _ in spec.table]
-        if len(xs) < 2 or any(b <= a for a, b in zip(xs, xs[1:])):
+        if len(xs) < 2 or any(b <= a for a, b in itertools.pairwise(xs)):
             raise fail("a table needs at least two rows with a strictly increasing first column")
         if spec.against == "crank_angle" and xs[-1] - xs[0] > 2 * math.pi * (1 + 1e-12):
             raise fail(f"a table against the crank angle spans one turn at most (it spans "

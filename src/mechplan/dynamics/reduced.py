@@ -7,7 +7,8 @@ J_red = Σ(m_i·v_Si² + J_Si·ω_i²)/ω1², both vectorised over positions (fi
 
 from __future__ import annotations
 
-from typing import Any, Iterable, Sequence
+from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 
@@ -88,8 +89,7 @@ def reduced_of(c: Construction, ev: Evaluation, mech: Mechanism, loading: Any) -
             forces.append(ev[step])
             velocities.append(point_velocity(c, ev, mech, spec.point))
     m_red = reduced_moment(forces, velocities, moments, omegas, omega1)
-    items: Iterable[Any] = loading.masses.values()
-    massive = [ms for ms in items if ms.mass > 0]
+    massive = [ms for ms in loading.masses.values() if ms.mass > 0]
     turning = [ms for ms in loading.masses.values() if ms.inertia > 0]
     j_red = reduced_inertia([ms.mass for ms in massive],
                             [point_velocity(c, ev, mech, ms.centre) for ms in massive],

@@ -49,7 +49,7 @@ LINETYPE_NAMES = {LineType.CONTINUOUS: "Continuous", LineType.DASHED: "DASHED",
                   LineType.DASH_DOT: "DASHDOT"}
 _LINETYPE_DESCRIPTIONS = {LineType.DASHED: "ISO 128 dashed (02) __ __ __",
                           LineType.DASH_DOT: "ISO 128 long-dash dotted (04) ____ . ____ ."}
-TEXT_STYLES = {SheetFont.ISO: "ISO", SheetFont.CJK: "CJK"}
+TEXT_STYLES = {SheetFont.ISO: "ISO", SheetFont.SYMBOL: "SYMBOL", SheetFont.CJK: "CJK"}
 
 _ALIGN = {
     (HAlign.LEFT, VAlign.BASELINE): TextEntityAlignment.LEFT,

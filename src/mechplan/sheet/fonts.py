@@ -45,9 +45,12 @@ class FontSpec:
 
 
 class SheetFont(Enum):
-    """The two fonts a sheet uses."""
+    """The fonts a sheet uses: ISO lettering, a symbol fallback (⊥ ∥ ′ → ✓), CJK."""
 
     ISO = FontSpec("osifont", ("osifont-lgpl3fe.ttf", "osifont.ttf"), 0, 0.74, 0.6)
+    # DejaVu Sans covers the plan symbols osifont lacks; it is small, so PDFs embed it quickly
+    # where the CJK collection would take a second to subset
+    SYMBOL = FontSpec("DejaVu Sans", ("DejaVuSans.ttf",), 0, 0.729, 0.6)
     CJK = FontSpec(
         "Noto Sans CJK SC",
         ("NotoSansCJK-Regular.ttc", "NotoSansCJKsc-Regular.otf", "NotoSansSC-Regular.otf"),
@@ -79,7 +82,10 @@ FALLBACK_FAMILIES: tuple[str, ...] = ("DejaVu Sans",)
 
 def _font_dirs() -> Iterable[Path]:
     extra = os.environ.get("MECHPLAN_FONT_DIRS", "")
-    for d in [*filter(None, extra.split(os.pathsep)), *_FONT_DIRS]:
+    import matplotlib  # its own copy of DejaVu Sans is a last resort
+
+    bundled = str(Path(matplotlib.get_data_path()) / "fonts" / "ttf")
+    for d in [*filter(None, extra.split(os.pathsep)), *_FONT_DIRS, bundled]:
         p = Path(d).expanduser()
         if p.is_dir():
             yield p
@@ -177,7 +183,11 @@ def font_for(text: str) -> SheetFont:
     """Return the font that shows `text`: osifont unless the string needs the CJK font."""
     if has_cjk(text):
         return SheetFont.CJK
-    if covers(SheetFont.ISO, text) or not covers(SheetFont.CJK, text):
+    if covers(SheetFont.ISO, text):
+        return SheetFont.ISO
+    if covers(SheetFont.SYMBOL, text):
+        return SheetFont.SYMBOL
+    if not covers(SheetFont.CJK, text):
         return SheetFont.ISO
     return SheetFont.CJK
 
@@ -189,7 +199,7 @@ def text_width_mm(text: str, height_mm: float, font: SheetFont | None = None) ->
     em_mm = height_mm / cap_ratio(font)
     if m is None:
         return sum(1.0 if _is_cjk(ord(c)) else font.value.advance_em for c in text) * em_mm
-    fallback = {SheetFont.ISO: 0.6, SheetFont.CJK: 1.0}[font] * m.units_per_em
+    fallback = {SheetFont.ISO: 0.6, SheetFont.SYMBOL: 0.6, SheetFont.CJK: 1.0}[font] * m.units_per_em
     units = sum(m.advances.get(ord(c), 1.0 * m.units_per_em if _is_cjk(ord(c)) else fallback)
                 for c in text)
     return units / m.units_per_em * em_mm
@@ -198,8 +208,8 @@ def text_width_mm(text: str, height_mm: float, font: SheetFont | None = None) ->
 def families_for(text: str) -> tuple[str, ...]:
     """Return the family fallback list for `text`, its own font first."""
     first = font_for(text)
-    other = SheetFont.ISO if first is SheetFont.CJK else SheetFont.CJK
-    return (first.family, other.family, *FALLBACK_FAMILIES)
+    others = [f.family for f in SheetFont if f is not first]
+    return tuple(dict.fromkeys((first.family, *others, *FALLBACK_FAMILIES)))
 
 
 def baseline_shift_mm(valign: VAlign, height_mm: float) -> float:

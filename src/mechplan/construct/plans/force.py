@@ -15,15 +15,17 @@ force), ``G_<link>`` (weight), ``load_<j>`` (the j-th external load of the loadi
 or a moment), ``R_<ij>`` (force of link i on link j at their pair), ``d_<ij>`` (prismatic pairs:
 where the line of action of R_ij crosses the guide, measured along the guide from the pair's
 point), ``K_<ij>`` (that crossing point), ``M_b`` (balancing moment on the driving link),
-``M_b_zhukovsky`` (the same from Zhukovsky's lever).
+``M_b_zhukovsky`` (the same from Zhukovsky's lever), ``K_q<link>`` (a point of the line of
+action of the single equivalent inertia force, |S K| = |h|).
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from string import ascii_lowercase
-from typing import Any, Mapping, Protocol
+from typing import Any, Protocol
 
 import numpy as np
 
@@ -59,15 +61,15 @@ def pair_key(i: str, j: str) -> str:
 Result = ops.Result
 
 
-def _force_inertia(step: Any, a: Array) -> Result:
+def _ev_force_inertia(step: Any, a: Array) -> Result:
     return -float(step.param("mass")) * a, None, None
 
 
-def _moment_inertia(step: Any, eps: Array) -> Result:
+def _ev_moment_inertia(step: Any, eps: Array) -> Result:
     return -float(step.param("inertia")) * eps, None, None
 
 
-def _force_load(step: Any, *args: Array) -> Result:
+def _ev_force_load(step: Any, *args: Array) -> Result:
     mode = step.param("mode")
     if mode == "vector":
         vec = np.asarray(step.param("vector"), dtype=float)
@@ -95,7 +97,7 @@ def _force_load(step: Any, *args: Array) -> Result:
     return (value * sense)[..., None] * u, None, None
 
 
-def _moment_sum(step: Any, centre: Array, *args: Array) -> Result:
+def _ev_moment_sum(step: Any, centre: Array, *args: Array) -> Result:
     total = np.zeros(centre.shape[:-1])
     i = 0
     for kind in step.param("layout"):
@@ -108,7 +110,7 @@ def _moment_sum(step: Any, centre: Array, *args: Array) -> Result:
     return total, None, None
 
 
-def _moment_arm_tangential(step: Any, centre: Array, at: Array, total: Array,
+def _ev_moment_arm_tangential(step: Any, centre: Array, at: Array, total: Array,
                            *angle: Array) -> Result:
     """Force at ``at`` ⊥ (at − centre), or ⊥ a guide, whose moment about centre is −total."""
     r = at - centre
@@ -120,43 +122,43 @@ def _moment_arm_tangential(step: Any, centre: Array, at: Array, total: Array,
     return lam[..., None] * d, None, sine
 
 
-def _force_sum(step: Any, prev: Array, force: Array) -> Result:
+def _ev_force_sum(step: Any, prev: Array, force: Array) -> Result:
     return prev + force, None, None
 
 
-def _force_line(step: Any, through: Array, *args: Array) -> Result:
+def _ev_force_line(step: Any, through: Array, *args: Array) -> Result:
     u = unit(args[1] - args[0]) if len(args) == 2 else direction(args[0])
     if step.param("turn") == 90:
         u = perp(u)
     return np.stack((through, u), axis=-2), None, None
 
 
-def _force_close(step: Any, l1: Array, l2: Array) -> Result:
+def _ev_force_close(step: Any, l1: Array, l2: Array) -> Result:
     return meet.line_line(l1[..., 0, :], l1[..., 1, :], l2[..., 0, :], l2[..., 1, :])
 
 
-def _negate(step: Any, x: Array) -> Result:
+def _ev_negate(step: Any, x: Array) -> Result:
     return -x, None, None
 
 
-def _guide_offset(step: Any, o: Array, at: Array, couple: Array, force: Array,
+def _ev_guide_offset(step: Any, o: Array, at: Array, couple: Array, force: Array,
                   theta: Array) -> Result:
     u = direction(theta)
     with np.errstate(invalid="ignore", divide="ignore"):
         return dot(at - o, u) + couple / cross(u, force), None, None
 
 
-def _line_of_action(step: Any, at: Array, force: Array, couple: Array) -> Result:
+def _ev_line_of_action(step: Any, at: Array, force: Array, couple: Array) -> Result:
     with np.errstate(invalid="ignore", divide="ignore"):
         return at - (couple / dot(force, force))[..., None] * perp(force), None, None
 
 
-def _inertia_offset(step: Any, q: Array, m: Array) -> Result:
+def _ev_inertia_offset(step: Any, q: Array, m: Array) -> Result:
     with np.errstate(invalid="ignore", divide="ignore"):
         return m / norm(q), None, None
 
 
-def _zhukovsky(step: Any, omega1: Array, *args: Array) -> Result:
+def _ev_zhukovsky(step: Any, omega1: Array, *args: Array) -> Result:
     """Moments about the pole of forces at velocity images turned by +90°, couples as M·ω."""
     lever = np.zeros(omega1.shape)
     i = 0
@@ -170,21 +172,21 @@ def _zhukovsky(step: Any, omega1: Array, *args: Array) -> Result:
 
 
 ops.EVALUATORS.update({
-    Op.FORCE_INERTIA: _force_inertia,
-    Op.MOMENT_INERTIA: _moment_inertia,
-    Op.FORCE_LOAD: _force_load,
-    Op.MOMENT_SUM: _moment_sum,
-    Op.MOMENT_ARM_TANGENTIAL: _moment_arm_tangential,
-    Op.FORCE_SUM: _force_sum,
-    Op.FORCE_LINE: _force_line,
-    Op.FORCE_CLOSE: _force_close,
-    Op.FORCE_REVERSE: _negate,
-    Op.MOMENT_CLOSE: _negate,
-    Op.BALANCING_MOMENT: _negate,
-    Op.GUIDE_OFFSET: _guide_offset,
-    Op.LINE_OF_ACTION: _line_of_action,
-    Op.INERTIA_OFFSET: _inertia_offset,
-    Op.ZHUKOVSKY: _zhukovsky,
+    Op.FORCE_INERTIA: _ev_force_inertia,
+    Op.MOMENT_INERTIA: _ev_moment_inertia,
+    Op.FORCE_LOAD: _ev_force_load,
+    Op.MOMENT_SUM: _ev_moment_sum,
+    Op.MOMENT_ARM_TANGENTIAL: _ev_moment_arm_tangential,
+    Op.FORCE_SUM: _ev_force_sum,
+    Op.FORCE_LINE: _ev_force_line,
+    Op.FORCE_CLOSE: _ev_force_close,
+    Op.FORCE_REVERSE: _ev_negate,
+    Op.MOMENT_CLOSE: _ev_negate,
+    Op.BALANCING_MOMENT: _ev_negate,
+    Op.GUIDE_OFFSET: _ev_guide_offset,
+    Op.LINE_OF_ACTION: _ev_line_of_action,
+    Op.INERTIA_OFFSET: _ev_inertia_offset,
+    Op.ZHUKOVSKY: _ev_zhukovsky,
 })
 
 
@@ -276,8 +278,10 @@ def _inertia_and_weights(st: _State) -> None:
             h = st.add(f"force.h.{link}", Op.INERTIA_OFFSET, (q, mq), Kind.SCALAR,
                        Role.AUXILIARY, f"h_q{link}", group, subject=(f"M_q{link}", f"Q{link}"))
             b.result(f"h_{link}", h)
-            st.add(f"force.Kq.{link}", Op.LINE_OF_ACTION, (s_pos, q, mq), Kind.POINT,
-                   Role.AUXILIARY, f"K{link}", group, subject=(ms.centre, f"Q{link}", f"M_q{link}"))
+            k = st.add(f"force.Kq.{link}", Op.LINE_OF_ACTION, (s_pos, q, mq), Kind.POINT,
+                       Role.AUXILIARY, f"K{link}", group,
+                       subject=(ms.centre, f"Q{link}", f"M_q{link}"))
+            b.result(f"K_q{link}", k)
         if grav.enabled and ms.mass > 0 and grav.g > 0:
             gx, gy = grav.direction
             vec = (ms.mass * grav.g * gx, ms.mass * grav.g * gy)
@@ -323,10 +327,10 @@ def _external_loads(st: _State) -> None:
                 f = st.add(sid, Op.FORCE_LOAD, (p,), Kind.POINT, Role.GIVEN, label, group,
                            subject=(point,), mode="vector", vector=vec)
         else:
-            slider = b.mech.links[link]
-            guide = b.mech.guides[slider.slides_on]
+            slides_on = b.mech.links[link].slides_on
             theta = b.bodies[link].angle
-            assert theta is not None
+            assert slides_on is not None and theta is not None    # Loading.check made sure
+            guide = b.mech.guides[slides_on]
             towards = b.pos[spec.towards]
             direction_text = f"∥ {guide.name}, towards {spec.towards}"
             if kind == "pressure":

@@ -1,0 +1,13 @@
+"""Check a submission (a hand-drawn DXF or a table of measured values) against the exact plans.
+
+``check(scene, submission, Options(at_deg=60))`` returns a :class:`CheckReport` with a row per
+segment and named value (submitted, exact, error in mm and %, direction error, verdict, cause and
+hint) and the root causes found (new errors, swapped labels, arithmetic slips).
+"""
+
+from .grade import Options, check
+from .report import CheckReport, Finding, PlanReport, PointRow, SegmentRow, Tolerance, ValueRow
+from .submission import Submission, read_submission
+
+__all__ = ["CheckReport", "Finding", "Options", "PlanReport", "PointRow", "SegmentRow",
+           "Submission", "Tolerance", "ValueRow", "check", "read_submission"]

@@ -1,0 +1,904 @@
+"""Grade a submission against the exact construction.
+
+Every labelled point is compared with its exact image twice: with the exact point (its total error)
+and with the point the student's *own* earlier points give when the step is re-evaluated from them
+(its new error). A wrong point whose new error is within tolerance is carried from earlier wrong
+items; otherwise the error is new at that step, and the hint says which part of the step's rule is
+broken. Two wrong points that would both be right with their labels exchanged are swapped labels.
+A written value that differs from the student's own segment × μ is an arithmetic slip.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..construct.graph import Construction, Evaluation
+from ..construct.ops import EVALUATORS, SOURCES
+from ..construct.segments import Segment
+from ..construct.step import Kind, Op, Plan
+from ..errors import CheckError, MechplanError
+from ..scene.spec import Scene
+from .hints import HintContext, depends_on, rule
+from .labels import LabelBook, PlanKey, is_angle_name, plan_key, plan_name
+from .match import (GivenValue, Interpretation, QuantityIndex, SegmentIndex, TableSegment,
+                    interpret)
+from .points import DrawnPlan, DrawnSheet, find_plans
+from .report import (ACCUMULATED, CARRIED, MISSING, NEW, OK, REFERENCE, SLIP, SWAPPED, UNCHECKED,
+                     WRONG, CheckReport, Finding, PlanReport, PointRow, SegmentRow, Tolerance,
+                     ValueRow)
+from .submission import Note, Submission, read_submission
+
+SI_UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
+           "angular_acceleration": "rad/s²", "force": "N", "moment": "N·m", "inertia": "kg·m²",
+           "length": "m", "angle": "rad", "mass": "kg", "dimensionless": ""}
+PLAN_UNIT = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
+
+
+@dataclass
+class Options:
+    """How to check: crank angle, tolerances and scale factors per plan, label search."""
+
+    at_deg: float | None = None
+    tolerance: dict[Plan | None, Tolerance] = field(default_factory=dict)
+    mu: dict[Plan, float] = field(default_factory=dict)
+    label_distance: float | None = None
+    snap: float = 0.5
+    lang: str = "en"
+
+    def tol(self, plan: Plan | None) -> Tolerance:
+        """The tolerance of a plan (or the default one)."""
+        return self.tolerance.get(plan) or self.tolerance.get(None) or Tolerance()
+
+
+# -- the student's own values: re-evaluating steps from submitted points -----------------------
+class Rederive:
+    """Values of steps computed from the submitted points instead of the exact ones."""
+
+    def __init__(self, c: Construction, ev: Evaluation, k: int,
+                 overrides: dict[str, np.ndarray]) -> None:
+        self.c, self.ev, self.k = c, ev, k
+        self.over = {s: np.asarray(v, dtype=float).reshape(1, 2) for s, v in overrides.items()}
+        self._anc: dict[str, set[str]] = {}
+
+    def exact(self, sid: str) -> np.ndarray:
+        """The exact value of a step (leading axis 1)."""
+        return np.asarray(self.ev[sid][self.k:self.k + 1])
+
+    def _touched(self, sid: str) -> bool:
+        anc = self._anc.get(sid)
+        if anc is None:
+            anc = set(self.c.ancestors([sid])) - {sid}
+            self._anc[sid] = anc
+        return bool(anc & self.over.keys())
+
+    def own(self, sid: str) -> np.ndarray:
+        """The value the step gets from the submitted points (never its own submitted value)."""
+        memo: dict[str, np.ndarray] = {}
+
+        def get(x: str, top: bool = False) -> np.ndarray:
+            if not top and x in self.over:
+                return self.over[x]
+            if x in memo:
+                return memo[x]
+            st = self.c[x]
+            if st.op is Op.CRANK_ANGLE or st.op in SOURCES or not self._touched(x):
+                v = self.exact(x)
+            else:
+                fn = EVALUATORS.get(st.op)
+                if fn is None:
+                    v = self.exact(x)
+                else:
+                    with np.errstate(all="ignore"):
+                        v = np.asarray(fn(st, *[get(i) for i in st.inputs])[0])
+            memo[x] = v
+            return v
+
+        return get(sid, top=True)
+
+
+# -- public entry point -------------------------------------------------------------------------
+def check(scene: Scene | str | Path, submission: str | Path | Submission,
+          options: Options | None = None) -> CheckReport:
+    """Check a submission (DXF or table) against the exact construction of a scene."""
+    from ..scene import load_scene
+
+    options = options or Options()
+    if not isinstance(scene, Scene):
+        scene = load_scene(scene)
+    sub = submission if isinstance(submission, Submission) else read_submission(submission)
+    notes: list[Note] = list(sub.notes)
+    candidates, phi_source = _angles(scene, sub, options, notes)
+    sol = _solve(scene, sub, candidates, notes)
+    c, ev = sol.construction, sol.ev
+    book = LabelBook.build(c, scene.mechanism)
+    qi = QuantityIndex(c, scene.mechanism, with_dynamics=True)
+    si = SegmentIndex(c, book)
+    sheet: DrawnSheet | None = None
+    if sub.kind == "dxf":
+        sheet = find_plans(sub, book, options.mu, options.label_distance, options.snap)
+        notes.extend(sheet.notes)
+        interp = interpret(sheet.other_entries, c, book, qi, si, from_sheet=True)
+    else:
+        interp = interpret(sub.entries, c, book, qi, si, from_sheet=False)
+    notes.extend(interp.notes)
+    if sheet is not None and not sheet.plans and not interp.values:
+        raise CheckError("no plan could be found on the sheet: " + "; ".join(
+            str(n) for n in notes if n.level != "info")[:600] or "no labelled points",
+            file=sub.path)
+    if sub.kind == "table" and not interp.segments and not interp.values:
+        problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
+        raise CheckError("nothing in the table can be checked"
+                         + (f": {problems}" if problems else ""), file=sub.path)
+    ctx = _Ctx(scene, sub, sol.construction, ev, book, qi, sheet, interp, options)
+    reports = [_grade(ctx, k) for k in range(len(candidates))]
+    if len(reports) == 1:
+        best = 0
+    else:
+        best = min(range(len(reports)), key=lambda i: _score(reports[i]))
+        phi_source = (f"the best fit of the scene's {len(candidates)} positions "
+                      f"(no --at given)")
+    report = reports[best]
+    report.phi_source = phi_source
+    report.notes = _dedupe(notes + report.notes)
+    if sheet is not None:
+        report.label_distance_mm = sheet.label_distance
+    report.units = sub.units
+    return report
+
+
+def _dedupe(notes: list[Note]) -> list[Note]:
+    seen, out = set(), []
+    for n in notes:
+        key = (n.level, n.message, n.where)
+        if key not in seen:
+            seen.add(key)
+            out.append(n)
+    return out
+
+
+def _score(r: CheckReport) -> tuple[float, float]:
+    errs = [abs(s.error_pct) for p in r.plans for s in p.segments if s.error_pct is not None]
+    errs += [abs(v.error_pct) for v in r.values if v.error_pct is not None]
+    wrong = sum(1 for row in r.rows if row.verdict in (WRONG, SLIP))
+    return (wrong, float(np.median(errs)) if errs else math.inf)
+
+
+def _angles(scene: Scene, sub: Submission, options: Options,
+            notes: list[Note]) -> tuple[list[float], str]:
+    from ..units import parse_quantity
+    from .points import units_ascii
+
+    if options.at_deg is not None:
+        return [float(options.at_deg)], "given with --at"
+    for e in sub.entries:
+        if is_angle_name(e.name):
+            text = e.text or e.value or e.length or ""
+            try:
+                value = parse_quantity(units_ascii(text) if any(ch.isalpha() or ch == "°"
+                                                                for ch in text)
+                                       else f"{text} deg", "angle")
+            except MechplanError as exc:
+                notes.append(Note("warning", f"crank angle '{e.name} = {text}': {exc.detail}",
+                                  e.where))
+                continue
+            return [math.degrees(value)], f"read from '{e.name} = {text}' ({e.where})"
+    if len(scene.positions.angles) == 1:
+        return [math.degrees(scene.positions.angles[0])], "the scene's only position"
+    from ..solve import build, crank_positions
+
+    _, c = build(scene, ("position", "velocity"))
+    phi = crank_positions(scene, c)
+    return [float(math.degrees(p)) for p in phi], "best fit"
+
+
+def _wants_force(sub: Submission) -> bool:
+    from .labels import dimension_of, mu_plan, quantity_key
+    from .points import _layer_plan
+
+    for e in sub.entries:
+        if mu_plan(e.name) is Plan.FORCE:
+            return True
+        if dimension_of(quantity_key(e.name)) in ("force", "moment") or (
+                e.section and "force" in e.section.lower()):
+            return True
+    return any(_layer_plan(t.layer) is Plan.FORCE for t in sub.texts) or any(
+        _layer_plan(ln.layer) is Plan.FORCE for ln in sub.lines)
+
+
+def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]) -> Any:
+    from ..solve import solve
+
+    plans = tuple(dict.fromkeys(("position", "velocity", "acceleration", *scene.plans)))
+    if "force" in plans or _wants_force(sub):
+        try:
+            from ..dynamics import Loading
+
+            loading = Loading.from_scene(scene)
+            if not loading.is_empty:
+                sol = solve(scene, at_deg=at_deg, plans=tuple(dict.fromkeys((*plans, "force"))),
+                            loading=loading)
+                sol.extras["loading"] = loading
+                return sol
+            notes.append(Note("info", "the scene gives no masses or loads; force quantities "
+                              "are not checked", scene.path or ""))
+        except MechplanError:
+            raise
+        except Exception as exc:   # the force plan is optional: check the rest without it
+            notes.append(Note("warning", f"the force plan cannot be built "
+                              f"({exc.__class__.__name__}: {exc}); force quantities are not "
+                              "checked", scene.path or ""))
+    plans = tuple(p for p in plans if p != "force")
+    return solve(scene, at_deg=at_deg, plans=plans)
+
+
+# -- grading at one crank position ------------------------------------------------------------
+@dataclass
+class _Ctx:
+    scene: Scene
+    sub: Submission
+    c: Construction
+    ev: Evaluation
+    book: LabelBook
+    qi: QuantityIndex
+    sheet: DrawnSheet | None
+    interp: Interpretation
+    options: Options
+
+
+@dataclass
+class _Drawn:
+    dp: DrawnPlan
+    mu: float | None
+    mu_source: str
+    anchor: str | None
+    si: dict[str, np.ndarray]          # step → submitted value (SI, exact frame)
+    reference: Segment | None = None
+    status: dict[str, str] = field(default_factory=dict)      # step → cause of a wrong point
+    errors: dict[str, float] = field(default_factory=dict)    # step → total error (mm)
+    own_err: dict[str, float] = field(default_factory=dict)
+    tol: dict[str, float] = field(default_factory=dict)
+    swapped: dict[str, str] = field(default_factory=dict)
+
+
+def _exact(ctx: _Ctx, sid: str, k: int) -> np.ndarray:
+    return np.asarray(ctx.ev[sid][k], dtype=float)
+
+
+def _segments_of(c: Construction, key: PlanKey) -> list[Segment]:
+    out = []
+    for s in c.segments:
+        group = c[s.start].group if s.plan is Plan.FORCE else ""
+        if plan_key(s.plan, group) == key or (s.plan is Plan.FORCE
+                                                and plan_key(s.plan, c[s.end].group) == key):
+            out.append(s)
+    return out
+
+
+def _grade(ctx: _Ctx, k: int) -> CheckReport:
+    import math as _m
+
+    phi = _m.degrees(float(ctx.ev.phi[k]))
+    report = CheckReport(str(ctx.scene.path or ""), ctx.sub.path, ctx.sub.kind, round(phi, 10),
+                         "")
+    drawn = [_prepare(ctx, dp, k, report.notes) for dp in (ctx.sheet.plans if ctx.sheet else [])]
+    first: dict[PlanKey, _Drawn] = {}
+    for d in drawn:
+        first.setdefault(d.dp.key, d)
+    # swapped labels first: the geometry is right, so later steps use the corrected points
+    for d in drawn:
+        _find_swaps(ctx, d, k)
+    overrides = _overrides(list(first.values()))
+    mu_all = {d.dp.plan: d.mu for d in first.values() if d.mu}
+    for plan, (mu, _) in ctx.interp.scales.items():
+        mu_all.setdefault(plan, mu)
+    for plan, mu in ctx.options.mu.items():
+        mu_all[plan] = mu
+    for d in drawn:
+        over = dict(overrides)
+        over.update(_overrides([d]))
+        red = Rederive(ctx.c, ctx.ev, k, over)
+        report.plans.append(_grade_drawn(ctx, d, k, red, mu_all, report.findings))
+    global_red = Rederive(ctx.c, ctx.ev, k, overrides)
+    table_reports = _grade_table_segments(ctx, k, mu_all, report)
+    report.plans.extend(table_reports)
+    _grade_values(ctx, k, drawn, first, global_red, mu_all, report)
+    return report
+
+
+def _prepare(ctx: _Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> _Drawn:
+    c = ctx.c
+    plan = dp.plan
+    mu, source = dp.mu, dp.mu_source
+    if mu is None and plan in ctx.interp.scales:
+        mu, source = ctx.interp.scales[plan]
+    segs = _segments_of(c, dp.key)
+    reference = next((s for s in segs if s.start in dp.points and s.end in dp.points), None)
+    if mu is None:
+        if reference is not None:
+            exact = float(np.hypot(*(_exact(ctx, reference.end, k) - _exact(ctx, reference.start, k))))
+            drawn = math.dist(dp.points[reference.end].at, dp.points[reference.start].at)
+            if drawn > 1e-9 and exact > 0:
+                mu = exact / drawn
+                source = (f"inferred from {reference.name} ↔ {reference.quantity} "
+                          f"({reference.name} is drawn {drawn:.1f} mm; {reference.quantity} = "
+                          f"{exact:.4g} {PLAN_UNIT[plan]}); no scale factor is written for the "
+                          f"{plan.value} plan")
+        if mu is None:
+            notes.append(Note("error", f"no scale factor for the {dp.name}: none is written "
+                              f"(e.g. 'μ{plan.value[0]} = …'), none given on the command line, and "
+                              "no segment with both ends labelled to infer it from; its lengths "
+                              "are not checked", ctx.sub.path))
+    else:
+        reference = None
+    pole = ctx.book.poles.get(dp.key)
+    anchor = pole if pole in dp.points else None
+    if anchor is None and dp.points:
+        order = list(c.steps)
+        anchor = min(dp.points, key=order.index)
+        if plan is Plan.POSITION:
+            fixed = [s for s in dp.points if c[s].op is Op.FIXED_POINT]
+            drive_pivot = segs[0].start if segs else None
+            anchor = drive_pivot if drive_pivot in dp.points else (fixed[0] if fixed else anchor)
+    si: dict[str, np.ndarray] = {}
+    if mu is not None and anchor is not None:
+        base = _exact(ctx, anchor, k)
+        a_at = np.asarray(dp.points[anchor].at)
+        for sid, p in dp.points.items():
+            si[sid] = base + (np.asarray(p.at) - a_at) * mu
+    return _Drawn(dp, mu, source, anchor, si, reference)
+
+
+def _overrides(drawn: list[_Drawn]) -> dict[str, np.ndarray]:
+    out: dict[str, np.ndarray] = {}
+    for d in drawn:
+        for sid, v in d.si.items():
+            other = d.swapped.get(sid)
+            out[sid] = d.si[other] if other else v
+    return out
+
+
+def _point_tol(ctx: _Ctx, d: _Drawn, sid: str, k: int) -> float:
+    tol = ctx.options.tol(d.dp.plan)
+    if d.anchor is None or d.mu is None:
+        return tol.mm
+    dist = float(np.hypot(*(_exact(ctx, sid, k) - _exact(ctx, d.anchor, k)))) / d.mu
+    return tol.allowed_mm(dist)
+
+
+def _find_swaps(ctx: _Ctx, d: _Drawn, k: int) -> None:
+    if d.mu is None:
+        return
+    wrong = []
+    for sid, v in d.si.items():
+        d.tol[sid] = _point_tol(ctx, d, sid, k)
+        d.errors[sid] = float(np.hypot(*(v - _exact(ctx, sid, k)))) / d.mu
+        if d.errors[sid] > d.tol[sid]:
+            wrong.append(sid)
+    for i, a in enumerate(wrong):
+        for b in wrong[i + 1:]:
+            if a in d.swapped or b in d.swapped:
+                continue
+            ab = float(np.hypot(*(d.si[a] - _exact(ctx, b, k)))) / d.mu
+            ba = float(np.hypot(*(d.si[b] - _exact(ctx, a, k)))) / d.mu
+            if ab <= d.tol[b] and ba <= d.tol[a]:
+                d.swapped[a], d.swapped[b] = b, a
+
+
+def _labels_fn(ctx: _Ctx) -> Any:
+    def label(sid: str) -> str:
+        return ctx.c[sid].label
+    return label
+
+
+def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan, float | None],
+                 findings: list[Finding]) -> PlanReport:
+    c, dp = ctx.c, d.dp
+    tol = ctx.options.tol(dp.plan)
+    pr = PlanReport(dp.name, dp.plan.value, dp.key[1], d.mu, d.mu_source, tol,
+                    anchor=c[d.anchor].label if d.anchor else "", convention=dp.convention)
+    labels = _labels_fn(ctx)
+    mu_map = {p: m for p, m in mu_all.items() if m}
+    if d.mu:
+        mu_map[dp.plan] = d.mu
+    hctx = HintContext(c, ctx.scene.mechanism, lambda s: red.own(s), red.exact, mu_map, labels)
+    # points: total error, then new or carried
+    present = set(d.si)
+    for sid, p in dp.points.items():
+        err = d.errors.get(sid)
+        verdict = UNCHECKED if err is None else (OK if err <= d.tol[sid] else WRONG)
+        cause, own_err = "", None
+        if verdict == WRONG:
+            if sid in d.swapped:
+                cause = SWAPPED
+            else:
+                own = np.asarray(red.own(sid)).reshape(-1)[:2]
+                own_err = (float(np.hypot(*(d.si[sid] - own))) / d.mu if d.mu and
+                           np.all(np.isfinite(own)) else math.inf)
+                cause = CARRIED if own_err <= d.tol[sid] else NEW
+            d.status[sid] = cause
+            d.own_err[sid] = own_err if own_err is not None else math.nan
+        pr.points.append(PointRow(p.label, p.written, sid, p.at, err, d.tol.get(sid), verdict,
+                                  cause, own_err, p.how, p.distance, p.where))
+    for sid, cause in list(d.status.items()):
+        if cause == CARRIED and not _roots(ctx, d, sid, {}):
+            d.status[sid] = ACCUMULATED
+    # segments of the construction, then drawn lines between labelled points
+    segs = _segments_of(c, dp.key)
+    pairs = {(s.start, s.end) for s in segs} | {(s.end, s.start) for s in segs}
+    rows: list[SegmentRow] = []
+    for s in segs:
+        rows.append(_segment_row(ctx, d, k, s.start, s.end, s.name, s.quantity, s.kind.value,
+                                 tol, hctx, present, s is d.reference))
+    seen: set[tuple[str, str]] = set()
+    for line in dp.lines:
+        a = _point_at(dp, line.start, ctx.options.snap)
+        b = _point_at(dp, line.end, ctx.options.snap)
+        if a is None or b is None or a == b or (a, b) in pairs or (a, b) in seen or (b, a) in seen:
+            continue
+        seen.add((a, b))
+        row = _segment_row(ctx, d, k, a, b, labels(a) + labels(b), "", "drawn", tol, hctx,
+                           present, False)
+        row.in_construction = False
+        row.drawn = True
+        rows.append(row)
+    for row in rows:
+        if row.drawn is None and row.submitted_mm is not None:
+            row.drawn = _is_drawn(dp, row, ctx.options.snap)
+    pr.segments = rows
+    pr.drawn_lines = [(ln.start, ln.end) for ln in dp.lines]
+    if d.mu and d.anchor is not None:
+        a_at = np.asarray(dp.points[d.anchor].at)
+        base = _exact(ctx, d.anchor, k)
+        place = {}
+        for sid in ctx.book.plans.get(dp.key, {}):
+            v = a_at + (_exact(ctx, sid, k) - base) / d.mu
+            if np.all(np.isfinite(v)):
+                place[sid] = (float(v[0]), float(v[1]))
+                pr.exact_mm[labels(sid)] = place[sid]
+        for s in segs:
+            if s.start in place and s.end in place:
+                pr.exact_segments.append((s.name, place[s.start], place[s.end]))
+    # findings: one per root cause
+    for sid, cause in d.status.items():
+        if cause == NEW:
+            mine = [r for r in rows if r.verdict == WRONG and r.step == sid and r.cause == NEW]
+            kinds = set()
+            for r in mine:
+                if r.error_mm is not None and r.tolerance_mm is not None and \
+                        abs(r.error_mm) > r.tolerance_mm:
+                    kinds.add("length")
+                if r.direction_deg is not None and r.tolerance_deg is not None and \
+                        abs(r.direction_deg) > r.tolerance_deg:
+                    kinds.add("direction")
+            error = " and ".join(x for x in ("length", "direction") if x in kinds)
+            segtxt = "; ".join(_row_brief(r) for r in mine)
+            findings.append(Finding(
+                "wrong point", pr.name, labels(sid),
+                f"{labels(sid)} is {d.errors[sid]:.1f} mm from its exact place and "
+                f"{d.own_err[sid]:.1f} mm from where your own earlier points put it"
+                + (f" ({segtxt})" if segtxt else "") + ": "
+                + rule(hctx, c[sid], d.si[sid], d.tol[sid]), sid, error))
+    done: set[str] = set()
+    for a, b in d.swapped.items():
+        if a in done:
+            continue
+        done |= {a, b}
+        findings.append(Finding("swapped labels", pr.name, f"{labels(a)}/{labels(b)}",
+                                f"the labels {labels(a)} and {labels(b)} are swapped: the point "
+                                f"labelled {labels(a)} is where {labels(b)} belongs and the other "
+                                "way round", a))
+    for r in rows:
+        if r.verdict == WRONG and r.cause == NEW and r.step not in d.status and \
+                not any(f.step == r.step for f in findings):
+            findings.append(Finding("wrong segment", pr.name, r.name, _row_brief(r) + ": " + r.hint,
+                                    r.step, _row_error(r)))
+    return pr
+
+
+def _row_error(r: SegmentRow) -> str:
+    kinds = []
+    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
+        kinds.append("length")
+    if r.direction_deg is not None and r.tolerance_deg is not None and \
+            abs(r.direction_deg) > r.tolerance_deg:
+        kinds.append("direction")
+    return " and ".join(kinds)
+
+
+def _row_brief(r: SegmentRow) -> str:
+    parts = []
+    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
+        parts.append(f"{r.name} is {abs(r.error_mm):.1f} mm too {'long' if r.error_mm > 0 else 'short'}")
+    if r.direction_deg is not None and r.tolerance_deg is not None and \
+            abs(r.direction_deg) > r.tolerance_deg:
+        parts.append(f"{r.name} is turned {r.direction_deg:+.1f}°")
+    return ", ".join(parts) or f"{r.name} is off"
+
+
+def _roots(ctx: _Ctx, d: _Drawn, sid: str, _memo: dict[str, list[str]]) -> list[str]:
+    anc = set(ctx.c.ancestors([sid])) - {sid}
+    out = [s for s in anc if d.status.get(s) in (NEW, SWAPPED)]
+    return sorted(out, key=list(ctx.c.steps).index)
+
+
+def _all_roots(ctx: _Ctx, sid: str, drawn_status: dict[str, str]) -> list[str]:
+    anc = set(ctx.c.ancestors([sid])) - {sid}
+    return sorted((s for s in anc if drawn_status.get(s) in (NEW, SWAPPED)),
+                  key=list(ctx.c.steps).index)
+
+
+def _point_at(dp: DrawnPlan, at: tuple[float, float], snap: float) -> str | None:
+    best, dist = None, snap + 1e-9
+    for sid, p in dp.points.items():
+        dd = math.dist(p.at, at)
+        if dd <= dist:
+            best, dist = sid, dd
+    return best
+
+
+def _is_drawn(dp: DrawnPlan, row: SegmentRow, snap: float) -> bool:
+    a = dp.points.get(row.start)
+    b = dp.points.get(row.end)
+    if a is None or b is None:
+        return False
+    for ln in dp.lines:
+        for p, q in ((ln.start, ln.end), (ln.end, ln.start)):
+            if math.dist(p, a.at) <= snap and math.dist(q, b.at) <= snap:
+                return True
+    return False
+
+
+def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, quantity: str,
+                 kind: str, tol: Tolerance, hctx: HintContext, present: set[str],
+                 is_reference: bool) -> SegmentRow:
+    c, dp = ctx.c, d.dp
+    exact_vec = _exact(ctx, end, k) - _exact(ctx, start, k)
+    exact_mm = float(np.hypot(*exact_vec)) / d.mu if d.mu else None
+    row = SegmentRow(name, quantity, kind, end, None, exact_mm,
+                     exact_value=float(np.hypot(*exact_vec)), start=start, end=end)
+    row.depends_on = depends_on(c, end, present, hctx.labels)
+    if start not in dp.points or end not in dp.points:
+        row.verdict = MISSING
+        missing = [c[s].label for s in (start, end) if s not in dp.points]
+        row.hint = f"not labelled on the submission: {', '.join(missing)}"
+        return row
+    a, b = np.asarray(dp.points[start].at), np.asarray(dp.points[end].at)
+    vec = b - a
+    row.submitted_mm = float(np.hypot(*vec))
+    row.where = f"{dp.points[start].where}; {dp.points[end].where}"
+    if d.mu:
+        row.submitted_value = row.submitted_mm * d.mu
+    ref_len = exact_mm if exact_mm is not None else row.submitted_mm
+    row.tolerance_mm = tol.allowed_mm(ref_len)
+    row.tolerance_deg = tol.allowed_deg(ref_len)
+    if np.hypot(*exact_vec) > 0 and row.submitted_mm > 1e-9:
+        row.direction_deg = math.degrees(math.remainder(
+            math.atan2(vec[1], vec[0]) - math.atan2(exact_vec[1], exact_vec[0]), 2 * math.pi))
+    len_ok = dir_ok = True
+    if exact_mm is not None:
+        row.error_mm = row.submitted_mm - exact_mm
+        row.error_pct = 100.0 * row.error_mm / exact_mm if exact_mm > 0 else None
+        len_ok = abs(row.error_mm) <= row.tolerance_mm
+    if row.direction_deg is not None:
+        dir_ok = abs(row.direction_deg) <= row.tolerance_deg
+    if is_reference:
+        len_ok = True
+    if exact_mm is None:
+        row.verdict = WRONG if not dir_ok else UNCHECKED
+    elif len_ok and dir_ok:
+        row.verdict = REFERENCE if is_reference else OK
+    else:
+        row.verdict = WRONG
+    if is_reference:
+        row.hint = "used for the scale factor: its length is right by definition"
+    if row.verdict != WRONG:
+        return row
+    # why: swapped labels, a new error at one end, carried from earlier items, or small ones adding up
+    status = d.status
+    if start in d.swapped or end in d.swapped:
+        row.cause = SWAPPED
+        x = end if end in d.swapped else start
+        row.hint = f"the labels {c[x].label} and {c[d.swapped[x]].label} are swapped"
+        row.step = x
+    elif status.get(end) == NEW or status.get(start) == NEW:
+        x = end if status.get(end) == NEW else start
+        row.cause = NEW
+        row.step = x
+        row.hint = rule(hctx, c[x], d.si[x], d.tol.get(x, tol.mm))
+    elif status.get(end) in (CARRIED, ACCUMULATED) or status.get(start) in (CARRIED, ACCUMULATED):
+        roots: list[str] = []
+        for x in (start, end):
+            if status.get(x) in (CARRIED, ACCUMULATED):
+                roots += _roots(ctx, d, x, {})
+        roots = list(dict.fromkeys(roots))
+        if roots:
+            row.cause = CARRIED
+            row.carried_from = [c[r].label for r in roots]
+            row.hint = (f"carried from {', '.join(row.carried_from)}: built right from wrong "
+                        "earlier points")
+        else:
+            row.cause = ACCUMULATED
+            row.hint = "small errors of the earlier points add up"
+    else:
+        row.cause = ACCUMULATED
+        errs = ", ".join(f"{c[x].label} {d.errors.get(x, 0.0):.1f} mm" for x in (start, end))
+        row.hint = f"both ends are within tolerance ({errs}) but their errors add up"
+    return row
+
+
+# -- tables of lengths -------------------------------------------------------------------------
+def _grade_table_segments(ctx: _Ctx, k: int, mu_all: dict[Plan, float | None],
+                          report: CheckReport) -> list[PlanReport]:
+    c = ctx.c
+    by_key: dict[PlanKey, list[TableSegment]] = {}
+    for ts in ctx.interp.segments:
+        if ctx.sheet is not None:
+            continue     # lengths written on a drawn sheet are checked against the drawing below
+        by_key.setdefault(ts.key, []).append(ts)
+    out = []
+    order = {id(s): i for i, s in enumerate(c.segments)}
+    for key, items in by_key.items():
+        plan = key[0]
+        tol = ctx.options.tol(plan)
+        items.sort(key=lambda t: order.get(id(t.segment), 0))
+        mu, source = None, ""
+        if plan in ctx.options.mu:
+            mu, source = ctx.options.mu[plan], "given on the command line"
+        elif plan in ctx.interp.scales:
+            mu, source = ctx.interp.scales[plan]
+        elif any(t.mu for t in items):
+            t0 = next(t for t in items if t.mu)
+            mu, source = t0.mu, f"read from the row of {t0.written} ({t0.where})"
+        reference = None
+        if mu is None and items:
+            reference = items[0]
+            exact = _seg_exact(ctx, reference.segment, k)
+            if reference.length_mm > 0:
+                mu = exact / reference.length_mm
+                source = (f"inferred from {reference.written} ↔ {reference.segment.quantity} "
+                          f"(no scale factor is given for the {plan.value} plan)")
+        pr = PlanReport(plan_name(key) + " plan (table)", plan.value, key[1], mu, source, tol)
+        wrong_ends: dict[str, str] = {}
+        for ts in items:
+            seg = ts.segment
+            row_mu = ts.mu or mu
+            exact_val = _seg_exact(ctx, seg, k)
+            exact_mm = exact_val / row_mu if row_mu else None
+            row = SegmentRow(seg.name, seg.quantity, seg.kind.value, seg.end, ts.length_mm,
+                             exact_mm, exact_value=exact_val, where=ts.where, start=seg.start,
+                             end=seg.end)
+            row.submitted_value = ts.length_mm * row_mu if row_mu else None
+            if exact_mm is None:
+                row.verdict = UNCHECKED
+                row.hint = "no scale factor"
+            else:
+                row.tolerance_mm = tol.allowed_mm(exact_mm)
+                row.error_mm = ts.length_mm - exact_mm
+                row.error_pct = 100 * row.error_mm / exact_mm if exact_mm else None
+                if ts is reference:
+                    row.verdict = REFERENCE
+                    row.hint = "used for the scale factor: its length is right by definition"
+                else:
+                    row.verdict = OK if abs(row.error_mm) <= row.tolerance_mm else WRONG
+            present = {t.segment.end for t in items} | {t.segment.start for t in items}
+            row.depends_on = depends_on(c, seg.end, present, _labels_fn(ctx))
+            if row.verdict == WRONG:
+                anc = set(c.ancestors([seg.end])) - {seg.end}
+                earlier = [name for sid, name in wrong_ends.items() if sid in anc]
+                if earlier:
+                    row.cause = CARRIED
+                    row.carried_from = earlier
+                    row.hint = (f"may be carried from {', '.join(earlier)} (an earlier wrong "
+                                "segment it is built from)")
+                else:
+                    row.cause = NEW
+                    row.hint = _table_hint(ctx, seg)
+                    report.findings.append(Finding("wrong segment", pr.name, seg.name,
+                                                   f"{_row_brief(row)}: {row.hint}", seg.end,
+                                                   "length"))
+                wrong_ends[seg.end] = seg.name
+            pr.segments.append(row)
+        out.append(pr)
+    return out
+
+
+def _table_hint(ctx: _Ctx, seg: Segment) -> str:
+    from ..construct.protocol import TEXT
+
+    st = ctx.c[seg.end]
+    texts = TEXT.get(st.op)
+    base = f"built by the step '{st.op.value.replace('_', ' ')}' ({st.label})"
+    if texts and st.op in (Op.LINE_LINE,):
+        base = (f"{st.label} is where the lines {ctx.c[st.inputs[0]].label} and "
+                f"{ctx.c[st.inputs[1]].label} meet")
+    elif st.op is Op.NORMAL:
+        base = f"{st.label}: ω²·l of the link, with ω from the velocity plan"
+    elif st.op is Op.SIMILAR_IMAGE:
+        base = f"{st.label} follows by the similarity theorem from the images of its link"
+    elif st.op in (Op.DRIVE_VELOCITY, Op.DRIVE_ACCELERATION):
+        base = f"the driving vector to {st.label}"
+    return base
+
+
+def _seg_exact(ctx: _Ctx, seg: Segment, k: int) -> float:
+    return float(np.hypot(*(_exact(ctx, seg.end, k) - _exact(ctx, seg.start, k))))
+
+
+# -- named values -------------------------------------------------------------------------------
+def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _Drawn],
+                  red: Rederive, mu_all: dict[Plan, float | None], report: CheckReport) -> None:
+    c = ctx.c
+    status: dict[str, str] = {}
+    for d in first.values():
+        for sid, cause in d.status.items():
+            status[sid] = cause
+    table_len: dict[int, TableSegment] = {id(t.segment): t for t in ctx.interp.segments}
+    for gv in ctx.interp.values:
+        q = gv.quantity
+        row = ValueRow(gv.written, q.display, SI_UNIT.get(q.dimension, ""), gv.value, None,
+                       where=gv.where)
+        exact = _value_exact(ctx, q, k, report.notes, gv.where)
+        if exact is None:
+            row.verdict = UNCHECKED
+            report.values.append(row)
+            continue
+        scalar = q.step is not None and ctx.c[q.step].kind is Kind.SCALAR
+        signed = scalar and gv.value < 0
+        exact_cmp = exact if signed else abs(exact)
+        sub_cmp = gv.value if signed else abs(gv.value)
+        row.exact = exact_cmp
+        plan = q.plan
+        tol = ctx.options.tol(plan)
+        mu = mu_all.get(plan) if plan else None
+        seg = q.segment or _absolute_segment(c, q.step)
+        tol_abs = tol.pct / 100 * abs(exact_cmp)
+        if seg is not None and mu:
+            tol_abs = max(tol_abs, tol.mm * mu)
+        elif q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON) and plan is not None:
+            mu_p = mu_all.get(plan)
+            l = _link_length(ctx, q.step, k)
+            if mu_p and l:
+                tol_abs = max(tol_abs, tol.mm * mu_p / l)
+        row.tolerance = tol_abs
+        row.error_pct = 100 * (sub_cmp - exact_cmp) / exact_cmp if exact_cmp else None
+        # what the student's own drawing or lengths give
+        own, own_text, arith = _own_value(ctx, gv, seg, q, k, red, first, table_len, mu)
+        row.own = own
+        if own is not None and abs(sub_cmp - abs(own) if not signed else sub_cmp - own) > arith:
+            row.verdict = SLIP
+            row.cause = NEW
+            row.hint = f"arithmetic slip: {own_text}, but {gv.written} = {gv.text} is written"
+            report.findings.append(Finding("arithmetic slip", plan.value if plan else "",
+                                           gv.written, row.hint, q.step or ""))
+        elif abs(sub_cmp - exact_cmp) <= tol_abs:
+            row.verdict = OK
+        else:
+            row.verdict = WRONG
+            roots = []
+            if seg is not None:
+                roots = [c[s].label for s in _all_roots(ctx, seg.end, status)]
+                if status.get(seg.end) in (NEW, SWAPPED):
+                    roots.insert(0, c[seg.end].label)
+            elif q.step is not None:
+                roots = [c[s].label for s in _all_roots(ctx, q.step, status)]
+            if own is not None:
+                row.cause = CARRIED
+                row.hint = f"follows from your own drawing ({own_text})" + (
+                    f"; carried from {', '.join(dict.fromkeys(roots))}" if roots else "")
+            elif roots:
+                row.cause = CARRIED
+                row.hint = f"may be carried from {', '.join(dict.fromkeys(roots))}"
+            else:
+                row.cause = NEW
+                row.hint = _value_hint(ctx, q)
+                report.findings.append(Finding("wrong value", plan.value if plan else "",
+                                               gv.written, f"{gv.written} = {gv.text} differs "
+                                               f"from the exact {exact_cmp:.4g} "
+                                               f"{row.unit} by {row.error_pct:+.1f} %: {row.hint}"
+                                               if row.error_pct is not None else row.hint,
+                                               q.step or ""))
+        report.values.append(row)
+
+
+def _value_hint(ctx: _Ctx, q: Any) -> str:
+    c = ctx.c
+    if q.step is not None:
+        st = c[q.step]
+        if st.op is Op.OMEGA:
+            p, qq, vp, vq = st.inputs
+            return (f"{st.label} = v_rel / l_{c[p].label}{c[qq].label} with v_rel the segment "
+                    f"{c[vp].label}{c[vq].label} of the velocity plan")
+        if st.op is Op.EPSILON:
+            p, qq, n, aq = st.inputs
+            return (f"{st.label} = a^t / l_{c[p].label}{c[qq].label} with a^t the segment "
+                    f"{c[n].label} {c[aq].label} of the acceleration plan")
+        return f"{q.display} comes from the step '{st.op.value.replace('_', ' ')}' ({st.label})"
+    if q.segment is not None:
+        return f"{q.display} is the segment {q.segment.name} × μ"
+    return f"{q.display} is computed from the velocity plan and the masses"
+
+
+def _absolute_segment(c: Construction, step: str | None) -> Segment | None:
+    if step is None:
+        return None
+    return next((s for s in c.segments if s.end == step and c[s.start].op is Op.POLE), None)
+
+
+def _link_length(ctx: _Ctx, sid: str, k: int) -> float | None:
+    st = ctx.c[sid]
+    if st.op not in (Op.OMEGA, Op.EPSILON):
+        return None
+    p, q = st.inputs[0], st.inputs[1]
+    return float(np.hypot(*(_exact(ctx, q, k) - _exact(ctx, p, k))))
+
+
+def _value_exact(ctx: _Ctx, q: Any, k: int, notes: list[Note], where: str) -> float | None:
+    if q.step is not None:
+        v = _exact(ctx, q.step, k)
+        return float(np.hypot(*v)) if v.ndim == 1 and v.shape[0] == 2 else float(v)
+    if q.segment is not None:
+        return _seg_exact(ctx, q.segment, k)
+    if q.extra in ("J_red", "M_red"):
+        try:
+            from ..dynamics.reduced import reduced_of
+            from ..dynamics import Loading
+
+            loading = Loading.from_scene(ctx.scene)
+            m_red, j_red = reduced_of(ctx.c, ctx.ev, ctx.scene.mechanism, loading)
+            return float((j_red if q.extra == "J_red" else m_red)[k])
+        except Exception as exc:   # the dynamics module is optional for a check
+            notes.append(Note("warning", f"{q.extra} cannot be computed for this scene "
+                              f"({exc.__class__.__name__}: {exc})", where))
+            return None
+    return None
+
+
+def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, red: Rederive,
+               first: dict[PlanKey, _Drawn], table_len: dict[int, TableSegment],
+               mu: float | None) -> tuple[float | None, str, float]:
+    """The student's own value of a quantity, its derivation and the arithmetic tolerance."""
+    c = ctx.c
+    rel = 0.005 * abs(gv.value)
+    if gv.length_mm is not None:
+        m = gv.mu or mu
+        if m:
+            own = gv.length_mm * m
+            return own, (f"{gv.length_mm:g} mm × {m:g} = {own:.4g}"), max(
+                rel, gv.half_unit, gv.length_half_unit * m)
+    if seg is not None:
+        key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
+        d = first.get(key)
+        if d is not None and d.mu and seg.start in d.dp.points and seg.end in d.dp.points:
+            length = math.dist(d.dp.points[seg.start].at, d.dp.points[seg.end].at)
+            own = length * d.mu
+            return own, f"{seg.name} = {length:.1f} mm × {d.mu:g} = {own:.4g}", max(
+                rel, gv.half_unit, 0.5 * d.mu)
+        ts = table_len.get(id(seg))
+        m = (ts.mu if ts else None) or mu
+        if ts is not None and m:
+            own = ts.length_mm * m
+            return own, f"{seg.name} = {ts.length_mm:g} mm × {m:g} = {own:.4g}", max(
+                rel, gv.half_unit, ts.length_half_unit * m)
+    if q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON):
+        st = c[q.step]
+        plan_points = [first.get(plan_key(st.plan))]
+        if plan_points[0] is not None and plan_points[0].si:
+            own = float(np.asarray(red.own(q.step)).reshape(-1)[0])
+            return abs(own), f"from your plan {st.label} = {abs(own):.4g}", max(
+                0.01 * abs(gv.value), gv.half_unit)
+        # from a table: the relative segment's length × μ / l
+        p, qq, a, b = st.inputs
+        relseg = next((s for s in c.segments if {s.start, s.end} == {a, b}), None)
+        ts = table_len.get(id(relseg)) if relseg is not None else None
+        m = (ts.mu if ts else None) or mu
+        l = _link_length(ctx, q.step, k)
+        if ts is not None and m and l:
+            own = ts.length_mm * m / l
+            return own, (f"{relseg.name} × μ / l = {ts.length_mm:g} mm × {m:g} / {l:.4g} m = "  # type: ignore[union-attr]
+                         f"{own:.4g}"), max(0.01 * abs(gv.value), gv.half_unit)
+    return None, "", 0.0

@@ -1,0 +1,317 @@
+"""Labels and quantity names as people write them, normalised to the construction's own.
+
+Points on a plan are written in four traditions: ``b`` / ``b′`` / ``b'`` / ``b1`` for the
+acceleration image of B, ``π`` / ``π′`` / ``p′`` / ``pi`` / ``P`` for its pole, ``n_CB`` / ``n_cb``
+/ ``nCB`` / ``n2`` / ``n1`` for the end of a normal component, ``k`` / ``k_A3A2`` for the Coriolis
+component, ``S2`` / ``s2`` for the image of a centre of mass. A :class:`LabelBook` built from a
+construction answers "which step is this label on which plan" with a weight saying how sure the
+reading is; clusters of labels on a sheet then vote for their plan.
+"""
+
+from __future__ import annotations
+
+import re
+import unicodedata
+from dataclasses import dataclass, field
+
+from ..construct.graph import Construction
+from ..construct.step import Kind, Op, Plan
+from ..model.mechanism import GROUND, Mechanism
+
+#: a plan drawn on its own: force polygons are one per group, the other plans one each
+PlanKey = tuple[Plan, str]
+
+PRIMES = "′'’`´ʹ‘‛＇"
+_SUB = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
+_SUP = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹ⁿᵗᵏʳ", "0123456789ntkr")
+_GREEK = {"π": "π", "Π": "π", "ω": "omega", "Ω": "omega", "ε": "epsilon", "ϵ": "epsilon",
+          "μ": "mu", "µ": "mu", "φ": "phi", "ϕ": "phi", "τ": "t", "Δ": "delta"}
+
+# -- MTEXT and TEXT formatting -----------------------------------------------------------------
+_MTEXT_STACK = re.compile(r"\\S([^;^/#]*)[\^/#]([^;]*);")
+_MTEXT_CODE = re.compile(r"\\[fFcCHhWwQqTtAap][^;]*;|\\[LlOoKkNX~]")
+_TEXT_CODE = re.compile(r"%%([dDpPcCuUoOkK%]|\d{3})")
+_TEXT_SPECIAL = {"d": "°", "p": "±", "c": "Ø", "%": "%"}
+
+
+def clean_text(raw: str, mtext: bool = False) -> str:
+    """Strip DXF formatting codes and return the plain text (lines joined by newlines)."""
+    text = raw
+    if mtext:
+        text = text.replace("\\P", "\n").replace("\\~", " ")
+        text = _MTEXT_STACK.sub(lambda m: f"{m.group(1)}{m.group(2)}", text)
+        text = _MTEXT_CODE.sub("", text)
+        text = text.replace("\\\\", "\x00").replace("\\{", "\x01").replace("\\}", "\x02")
+        text = text.replace("{", "").replace("}", "")
+        text = text.replace("\x00", "\\").replace("\x01", "{").replace("\x02", "}")
+
+    def special(m: re.Match[str]) -> str:
+        code = m.group(1)
+        if code.isdigit():
+            return chr(int(code))
+        return _TEXT_SPECIAL.get(code.lower(), "")
+
+    text = _TEXT_CODE.sub(special, text)
+    text = unicodedata.normalize("NFC", text)
+    return "\n".join(line.strip() for line in text.splitlines()).strip()
+
+
+def label_key(text: str) -> str:
+    """Return the comparison key of a written label: lower case, one prime mark, no decoration.
+
+    ``"b′"``, ``"b'"`` and ``"B’"`` → ``"b'"``; ``"n_{CB}"`` and ``"nCB"`` → ``"ncb"``;
+    ``"π′"`` → ``"π'"``; ``"s₂"`` → ``"s2"``.
+    """
+    t = text.strip().translate(_SUB).translate(_SUP)
+    for ch in PRIMES:
+        t = t.replace(ch, "'")
+    t = t.replace("″", "''")
+    t = re.sub(r"[\s_{}^$\\]", "", t)
+    t = t.replace("Π", "π")
+    return t.lower()
+
+
+@dataclass(frozen=True, slots=True)
+class Candidate:
+    """One reading of a written label: a point step of a plan, and how sure the reading is."""
+
+    plan: PlanKey
+    step: str
+    label: str          # the construction's label of the step
+    weight: int         # 3 exact, 2 usual alias, 1 weak alias
+    convention: str = ""  # "link" / "ordinal" for numbered normals and Coriolis points
+
+
+@dataclass
+class LabelBook:
+    """Label readings of every point of every plan of a construction."""
+
+    plans: dict[PlanKey, dict[str, str]] = field(default_factory=dict)   # plan → step → label
+    aliases: dict[PlanKey, dict[str, list[Candidate]]] = field(default_factory=dict)
+    poles: dict[PlanKey, str] = field(default_factory=dict)
+
+    @classmethod
+    def build(cls, c: Construction, mech: Mechanism | None = None) -> "LabelBook":
+        """Collect the point steps of every plan with the ways people write their labels."""
+        book = cls()
+        for step in c:
+            if step.kind is not Kind.POINT:
+                continue
+            key = plan_key(step.plan, step.group)
+            book.plans.setdefault(key, {})
+            if step.label in book.plans[key].values():
+                continue        # an earlier step already carries this label on this plan
+            book.plans[key][step.id] = step.label
+            if step.op is Op.POLE:
+                book.poles[key] = step.id
+        for key, steps in book.plans.items():
+            table: dict[str, list[Candidate]] = {}
+            book.aliases[key] = table
+            for sid, label in steps.items():
+                book._add(key, label_key(label), sid, label, 3)
+            book._add_plan_aliases(c, mech, key)
+        return book
+
+    def _add(self, key: PlanKey, alias: str, sid: str, label: str, weight: int,
+             convention: str = "") -> None:
+        table = self.aliases[key]
+        entries = table.setdefault(alias, [])
+        if any(e.step == sid and e.convention == convention for e in entries):
+            return
+        entries.append(Candidate(key, sid, label, weight, convention))
+
+    def _add_plan_aliases(self, c: Construction, mech: Mechanism | None, key: PlanKey) -> None:
+        plan = key[0]
+        steps = self.plans[key]
+        pole = self.poles.get(key)
+        if pole is not None:
+            label = steps[pole]
+            if plan is Plan.VELOCITY:
+                for alias in ("p", "pv"):
+                    self._add(key, alias, pole, label, 2)
+            elif plan is Plan.ACCELERATION:
+                for alias in ("π", "π'", "p'", "pi", "pi'", "pa", "p1", "π1"):
+                    self._add(key, alias, pole, label, 2 if alias[0] in "πp" else 1)
+            if mech is not None and plan in (Plan.VELOCITY, Plan.ACCELERATION):
+                # the images of frame points are the pole itself ("p ≡ o1 ≡ o3")
+                prime = "'" if plan is Plan.ACCELERATION else ""
+                for point in mech.links[GROUND].points:
+                    self._add(key, label_key(point) + prime, pole, label, 1)
+        if plan is Plan.ACCELERATION:
+            for sid, label in steps.items():
+                base = label_key(label)
+                if base.endswith("'") and not base[:-1][-1:].isdigit():
+                    self._add(key, base[:-1] + "1", sid, label, 1)  # Russian "b1" for b′
+        if mech is not None and plan in (Plan.VELOCITY, Plan.ACCELERATION):
+            prime = "'" if plan is Plan.ACCELERATION else ""
+            by_label = {label_key(lbl): sid for sid, lbl in steps.items()}
+            for link_id, link in mech.links.items():
+                if link_id == GROUND:
+                    continue
+                for point in link.points:
+                    own = label_key(point) + prime
+                    if own not in by_label:
+                        continue
+                    for alias in (label_key(point) + link_id + prime,
+                                  label_key(point) + "_" + link_id + prime):
+                        alias = label_key(alias)
+                        if alias not in by_label:
+                            self._add(key, alias, by_label[own], steps[by_label[own]], 2)
+        # normals n_XY and Coriolis points k_XY: reversed names, link numbers, ordinals, bare
+        for op, letter in ((Op.NORMAL, "n"), (Op.CORIOLIS, "k")):
+            found = [(sid, c[sid]) for sid in steps if c[sid].op is op]
+            for i, (sid, step) in enumerate(found, start=1):
+                label = steps[sid]
+                sub = label_key(label)[1:]
+                names = split_names(sub, mech)
+                if names and len(names) == 2:
+                    self._add(key, letter + label_key(names[1] + names[0]), sid, label, 2)
+                link = _link_of_omega(step.inputs[1]) if len(step.inputs) > 1 else None
+                if link:
+                    self._add(key, f"{letter}{link}", sid, label, 2, "link")
+                self._add(key, f"{letter}{i}", sid, label, 2, "ordinal")
+                if len(found) == 1:
+                    self._add(key, letter, sid, label, 2)
+
+    def candidates(self, text: str, group_hint: str | None = None) -> list[Candidate]:
+        """All readings of a written label, best first (exact label, usual alias, weak alias)."""
+        raw = text.strip()
+        alias = label_key(raw)
+        out: list[Candidate] = []
+        for key, table in self.aliases.items():
+            for cand in table.get(alias, []):
+                out.append(cand)
+        if raw == "P":       # an upper-case P is the acceleration pole in several textbooks
+            for key, pole in self.poles.items():
+                if key[0] is Plan.ACCELERATION:
+                    out.append(Candidate(key, pole, self.plans[key][pole], 2))
+        out.sort(key=lambda cnd: -cnd.weight)
+        return out
+
+    def is_label(self, text: str) -> bool:
+        """True if the text reads as some point of some plan."""
+        return bool(self.candidates(text))
+
+    def label_of(self, key: PlanKey, sid: str) -> str:
+        """The construction's label of a step."""
+        return self.plans[key][sid]
+
+
+def plan_key(plan: Plan, group: str = "") -> PlanKey:
+    """The key of a plan drawn on its own (force polygons per group)."""
+    return (plan, group if plan is Plan.FORCE else "")
+
+
+def plan_name(key: PlanKey) -> str:
+    """"velocity", "force II(2,3)"."""
+    return f"{key[0].value} {key[1]}".strip()
+
+
+def feature_votes(text: str) -> dict[Plan, int]:
+    """What the look of a label says about its plan: primes and π → acceleration, capitals →
+    position, lower case → velocity."""
+    raw = text.strip()
+    key = label_key(raw)
+    if not key:
+        return {}
+    if key.startswith("π") or key.startswith("pi") or key.endswith("'"):
+        return {Plan.ACCELERATION: 2}
+    if key[0] in "nk" and len(key) > 1 and raw[0].islower():
+        return {Plan.ACCELERATION: 1}
+    if raw == "P":
+        return {Plan.ACCELERATION: 1, Plan.POSITION: 1}
+    if raw[0].isupper():
+        return {Plan.POSITION: 2}
+    return {Plan.VELOCITY: 1}
+
+
+def _link_of_omega(step_id: str) -> str | None:
+    m = re.fullmatch(r"vel\.omega\.(\w+)", step_id)
+    return m.group(1) if m else None
+
+
+def split_names(sub: str, mech: Mechanism | None) -> list[str] | None:
+    """Split "a3o3" into point names ["a3", "o3"] using the mechanism's points and links."""
+    if mech is None:
+        return None
+    names = {label_key(p) for link in mech.links.values() for p in link.points}
+    names |= {label_key(p) + lk for lk, link in mech.links.items() for p in link.points}
+    for i in range(1, len(sub)):
+        if sub[:i] in names and sub[i:] in names:
+            return [sub[:i], sub[i:]]
+    return None
+
+
+# -- quantity names ----------------------------------------------------------------------------
+#: key prefix → dimension name of :data:`mechplan.units.DIMENSIONS`
+DIMENSION_OF_PREFIX: tuple[tuple[str, str], ...] = (
+    ("omega", "angular_velocity"), ("epsilon", "angular_acceleration"), ("angle", "angle"),
+    ("jred", "inertia"), ("mred", "moment"), ("mq", "moment"), ("mb", "moment"),
+    ("load", "force"), ("v", "velocity"), ("a", "acceleration"), ("r", "force"), ("q", "force"),
+    ("g", "force"), ("f", "force"), ("p", "force"), ("l", "length"), ("h", "length"),
+    ("d", "length"), ("m", "moment"), ("j", "inertia"),
+)
+
+_QTY_SYNONYMS = (
+    (re.compile(r"^(j)_?(пр|прив|red|r|e|eq|п)$"), r"jred"),
+    (re.compile(r"^(m)_?(пр|прив|red|e|eq|п)$"), r"mred"),
+    (re.compile(r"^(m)_?(ур|b|bal|y|урав)$"), r"mb"),
+)
+
+
+def quantity_key(name: str) -> str:
+    """Return the comparison key of a quantity name.
+
+    ``"ω2"``, ``"omega_2"``, ``"w2"`` → ``"omega2"``; ``"a^n_CB"``, ``"aⁿ_CB"``, ``"a_CB^n"`` →
+    ``"ancb"``; ``"v_{S2}"`` → ``"vs2"``; ``"J_red"``, ``"J_пр"`` → ``"jred"``; ``"R12"`` →
+    ``"r12"``.
+    """
+    t = name.strip().translate(_SUB)
+    for g, rep in _GREEK.items():
+        t = t.replace(g, rep)
+    m = re.fullmatch(r"([A-Za-z]+)_?\{?([A-Za-z0-9]+)\}?\^\{?([ntkrτ])\}?", t)
+    if m:                              # a_CB^n → a^n_CB
+        t = f"{m.group(1)}{m.group(3)}{m.group(2)}"
+    t = t.translate(_SUP)
+    t = re.sub(r"[\s_{}^()\[\]$\\·.,]", "", t).lower()
+    t = re.sub(r"^w(?=\d)", "omega", t)
+    t = re.sub(r"^eps(?=\d)", "epsilon", t)
+    t = re.sub(r"^e(?=\d)", "epsilon", t)
+    t = re.sub(r"^a(τ)", "at", t)
+    t = t.replace("кор", "k").replace("ρ", "r")
+    for pattern, rep in _QTY_SYNONYMS:
+        t = pattern.sub(rep, t)
+    return t
+
+
+def dimension_of(key: str) -> str | None:
+    """Dimension of a quantity from its key ("vb" → velocity, "omega2" → angular_velocity)."""
+    for prefix, dim in DIMENSION_OF_PREFIX:
+        if key.startswith(prefix):
+            return dim
+    return None
+
+
+MU_NAMES: dict[str, Plan] = {
+    "l": Plan.POSITION, "s": Plan.POSITION, "v": Plan.VELOCITY, "a": Plan.ACCELERATION,
+    "f": Plan.FORCE, "p": Plan.FORCE, "r": Plan.FORCE,
+}
+MU_DIMENSION = {Plan.POSITION: "mu_length", Plan.VELOCITY: "mu_velocity",
+                Plan.ACCELERATION: "mu_acceleration", Plan.FORCE: "mu_force"}
+_MU_NAME = re.compile(r"^(?:μ|µ|mu|u|k)[_\s{]*([lsvafprLSVAFPR])[}]?$", re.IGNORECASE)
+
+
+def mu_plan(name: str) -> Plan | None:
+    """The plan of a scale-factor name: "μv", "mu_v", "μ_a", "mu_F", "μl" (None otherwise)."""
+    m = _MU_NAME.match(name.strip())
+    if not m:
+        return None
+    return MU_NAMES[m.group(1).lower()]
+
+
+_PHI_NAME = re.compile(r"^(?:φ|ϕ|phi|fi|at|angle|crank[_ ]?angle)[_\s]*1?$", re.IGNORECASE)
+
+
+def is_angle_name(name: str) -> bool:
+    """True for the name of the crank angle of the submission ("φ", "φ1", "phi", "at")."""
+    return bool(_PHI_NAME.match(name.strip()))

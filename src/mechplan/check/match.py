@@ -1,0 +1,352 @@
+"""Give a submission's names meaning: segments and quantities of the construction, scale factors,
+the crank angle. Everything here is about names; numbers are compared in :mod:`.grade`."""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+
+from ..construct.graph import Construction
+from ..construct.segments import Segment
+from ..construct.step import Kind, Op, Plan
+from ..errors import SceneError
+from ..model.mechanism import Mechanism
+from ..units import parse_quantity
+from .labels import (MU_DIMENSION, LabelBook, PlanKey, split_names, dimension_of, is_angle_name,
+                     label_key, mu_plan, plan_key, quantity_key)
+from .points import LAYER_HINTS, units_ascii
+from .submission import Entry, Note
+
+_NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?")
+
+
+@dataclass(frozen=True, slots=True)
+class Quantity:
+    """A quantity of the construction a submission may name."""
+
+    name: str                 # "v_S2", "omega_2", "a^n_CB", "J_red"
+    dimension: str            # a key of units.DIMENSIONS
+    plan: Plan | None
+    step: str | None = None   # a result step (vector → magnitude, scalar → signed value)
+    segment: Segment | None = None
+    extra: str | None = None  # "J_red", "M_red": computed by the dynamics module
+
+    @property
+    def display(self) -> str:
+        """"ω2", "ε3", "v_S2"."""
+        m = re.fullmatch(r"(omega|epsilon)_(\w+)", self.name)
+        if m:
+            return ("ω" if m.group(1) == "omega" else "ε") + m.group(2)
+        return self.name
+
+
+@dataclass
+class TableSegment:
+    """A drawn length given in a table (or written on the sheet), matched to a segment."""
+
+    segment: Segment
+    key: PlanKey
+    written: str
+    where: str
+    length_mm: float
+    length_half_unit: float          # half a unit of the last written digit (mm)
+    reversed: bool = False
+    mu: float | None = None          # μ written on the same row
+    value: "GivenValue | None" = None  # the physical value written with it
+
+
+@dataclass
+class GivenValue:
+    """A physical value given by name: "v_S2 = 2.95 m/s", "ω2 = 27 rad/s"."""
+
+    written: str
+    quantity: Quantity
+    value: float                     # SI
+    text: str
+    where: str
+    half_unit: float                 # half a unit of the last written digit, SI
+    length_mm: float | None = None   # a length written with it ("pb = 67 mm → v_B = 6.7 m/s")
+    length_half_unit: float = 0.0
+    mu: float | None = None
+
+
+@dataclass
+class Interpretation:
+    """What the names of a submission mean."""
+
+    segments: list[TableSegment] = field(default_factory=list)
+    values: list[GivenValue] = field(default_factory=list)
+    scales: dict[Plan, tuple[float, str]] = field(default_factory=dict)
+    at_deg: tuple[float, str] | None = None
+    notes: list[Note] = field(default_factory=list)
+
+
+# -- quantities --------------------------------------------------------------------------------
+class QuantityIndex:
+    """Quantities of a construction by the ways their names are written."""
+
+    def __init__(self, c: Construction, mech: Mechanism | None, with_dynamics: bool) -> None:
+        self.by_key: dict[str, Quantity] = {}
+        for name, sid in c.results.items():
+            step = c[sid]
+            if step.plan is Plan.POSITION and step.kind is Kind.POINT:
+                continue
+            if name.startswith("K_"):
+                continue                  # a point of a line of action, not a value
+            dim = self._dimension(name, step.kind, step.plan)
+            if dim is None:
+                continue
+            self._put(quantity_key(name), Quantity(name, dim, step.plan, step=sid))
+        for seg in c.segments:
+            dim = dimension_of(quantity_key(seg.quantity)) or {
+                Plan.POSITION: "length", Plan.VELOCITY: "velocity",
+                Plan.ACCELERATION: "acceleration", Plan.FORCE: "force"}[seg.plan]
+            if seg.plan is Plan.FORCE:
+                dim = "force"
+            q = Quantity(seg.quantity, dim, seg.plan, segment=seg)
+            key = quantity_key(seg.quantity)
+            self._put(key, q)
+            rev = _reversed_quantity(seg, mech)
+            if rev:
+                self._put(quantity_key(rev), q)
+        if with_dynamics:
+            self._put("jred", Quantity("J_red", "inertia", None, extra="J_red"))
+            self._put("mred", Quantity("M_red", "moment", None, extra="M_red"))
+
+    @staticmethod
+    def _dimension(name: str, kind: Kind, plan: Plan) -> str | None:
+        key = quantity_key(name)
+        if name.startswith("load_"):
+            return "moment" if kind is Kind.SCALAR else "force"
+        if plan is Plan.FORCE and kind is Kind.POINT:
+            return "force"
+        return dimension_of(key)
+
+    def _put(self, key: str, q: Quantity) -> None:
+        self.by_key.setdefault(key, q)
+
+    def find(self, name: str) -> Quantity | None:
+        """The quantity a written name stands for, or None."""
+        return self.by_key.get(quantity_key(name))
+
+    def names(self) -> list[str]:
+        """Display names of all quantities, for messages."""
+        return sorted({q.display for q in self.by_key.values()})
+
+
+def _reversed_quantity(seg: Segment, mech: Mechanism | None) -> str | None:
+    """v_CB ≡ v_BC, a^n_CB ≡ a^n_BC: the same magnitude named from the other end."""
+    m = re.fullmatch(r"(v|a\^n|a\^t|a\^k|a\^r|a)_(\w+)", seg.quantity)
+    if not m:
+        return None
+    names = split_names(label_key(m.group(2)), mech)
+    if not names or len(names) != 2:
+        return None
+    return f"{m.group(1)}_{names[1].upper()}{names[0].upper()}"
+
+
+# -- segments ----------------------------------------------------------------------------------
+class SegmentIndex:
+    """Segments of a construction by the ways their names are written ("pb", "πb'", "b1n2")."""
+
+    def __init__(self, c: Construction, book: LabelBook) -> None:
+        self.by_key: dict[str, list[tuple[Segment, PlanKey, bool, int]]] = {}
+        for seg in c.segments:
+            key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
+            if key not in book.aliases:
+                key = plan_key(seg.plan, c[seg.end].group)
+            table = book.aliases.get(key, {})
+            starts = [(a, cand.weight) for a, cs in table.items() for cand in cs
+                      if cand.step == seg.start]
+            ends = [(a, cand.weight) for a, cs in table.items() for cand in cs
+                    if cand.step == seg.end]
+            self._put(label_key(seg.name), seg, key, False, 4)
+            for a, wa in starts:
+                for b, wb in ends:
+                    self._put(a + b, seg, key, False, min(wa, wb))
+                    self._put(b + a, seg, key, True, min(wa, wb) - 1)
+
+    def _put(self, k: str, seg: Segment, key: PlanKey, rev: bool, weight: int) -> None:
+        entries = self.by_key.setdefault(k, [])
+        if not any(e[0] is seg for e in entries):
+            entries.append((seg, key, rev, weight))
+
+    def find(self, name: str, plan: Plan | None = None) -> tuple[Segment, PlanKey, bool] | None:
+        """The segment a written name stands for (best reading), or None."""
+        entries = self.by_key.get(label_key(name), [])
+        if plan is not None:
+            entries = [e for e in entries if e[1][0] is plan] or []
+        if not entries:
+            return None
+        best = max(entries, key=lambda e: e[3])
+        return best[0], best[1], best[2]
+
+
+# -- entries -----------------------------------------------------------------------------------
+def section_plan(section: str | None) -> PlanKey | None:
+    """The plan named by a table section or a CSV plan column ("velocity", "план ускорений")."""
+    if not section:
+        return None
+    low = section.lower().strip()
+    for word, plan in (("position", Plan.POSITION), ("velocit", Plan.VELOCITY),
+                       ("acceleration", Plan.ACCELERATION), ("force", Plan.FORCE)):
+        if low.startswith(word):
+            group = section.strip()[len(word):].strip() if plan is Plan.FORCE else ""
+            group = group.lstrip("s").strip() if group.startswith("s ") else group
+            return plan_key(plan, group)
+    for plan, words in LAYER_HINTS:
+        if any(w in low for w in words):
+            return plan_key(plan)
+    return None
+
+
+def _number_and_half(text: str) -> tuple[float | None, float]:
+    m = _NUMBER.search(text)
+    if not m:
+        return None, 0.0
+    s = m.group(0).replace("−", "-").replace(",", ".")
+    mant = s.split("e")[0].split("E")[0]
+    decimals = len(mant.split(".")[1]) if "." in mant else 0
+    exp = int(re.split("[eE]", s)[1]) if re.search("[eE]", s) else 0
+    return float(s), 0.5 * 10.0 ** (exp - decimals)
+
+
+def _is_length_text(text: str) -> bool:
+    t = text.strip().lower()
+    return bool(re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?\s*(mm|мм)?", t))
+
+
+def parse_value(text: str, dimension: str, where: str, notes: list[Note],
+                name: str) -> tuple[float, float] | None:
+    """(SI value, half a unit of the last digit in SI) of a written value, or None with a note."""
+    number, half = _number_and_half(text)
+    bare = bool(re.fullmatch(r"\s*[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?\s*", text))
+    if bare and number is not None:
+        from ..units import DIMENSIONS
+
+        notes.append(Note("info", f"'{name} = {text}' has no unit; read in SI "
+                          f"({DIMENSIONS[dimension][1] or '1'})", where))
+        return number, half
+    try:
+        value = parse_quantity(units_ascii(text), dimension)
+    except SceneError as exc:
+        notes.append(Note("error", f"'{name} = {text}': {exc.detail}", where))
+        return None
+    ratio = value / number if number else 1.0
+    return value, abs(half * ratio)
+
+
+def interpret(entries: list[Entry], c: Construction, book: LabelBook, qi: QuantityIndex,
+              si: SegmentIndex, from_sheet: bool) -> Interpretation:
+    """Sort entries into scale factors, the crank angle, drawn lengths and physical values."""
+    out = Interpretation()
+    for e in entries:
+        _interpret_one(e, out, qi, si, from_sheet)
+    return out
+
+
+def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: SegmentIndex,
+                   from_sheet: bool) -> None:
+    notes = out.notes
+    text = e.text if e.text is not None else (e.length if e.length is not None else e.value)
+    plan = mu_plan(e.name)
+    if plan is not None:
+        if text is None:
+            return
+        try:
+            mu = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
+        except SceneError as exc:
+            notes.append(Note("error", f"scale factor '{e.name} = {text}': {exc.detail}", e.where))
+            return
+        if not (mu > 0 and math.isfinite(mu)):
+            notes.append(Note("error", f"scale factor '{e.name} = {text}' must be positive",
+                              e.where))
+            return
+        if not from_sheet:
+            prev = out.scales.get(plan)
+            if prev and abs(prev[0] - mu) > 1e-12 * mu:
+                notes.append(Note("warning", f"a second scale factor for the {plan.value} plan "
+                                  f"({e.name} = {text}) differs from the first; the first is used",
+                                  e.where))
+            else:
+                out.scales[plan] = (mu, f"read from '{e.name} = {text}' ({e.where})")
+        return
+    if is_angle_name(e.name):
+        if text is None:
+            return
+        try:
+            deg = math.degrees(parse_quantity(units_ascii(text) if re.search(r"[a-z°]", text)
+                                              else f"{text} deg", "angle"))
+        except SceneError as exc:
+            notes.append(Note("error", f"crank angle '{e.name} = {text}': {exc.detail}", e.where))
+            return
+        out.at_deg = (deg, f"'{e.name} = {text}' ({e.where})")
+        return
+    sec = section_plan(e.section)
+    length_text = e.length if e.length is not None else (
+        e.text if e.text is not None and _is_length_text(e.text) else None)
+    found = si.find(e.name, sec[0] if sec else None) if length_text is not None else None
+    if found is None and length_text is not None and sec is None:
+        found = si.find(e.name)
+    if found is not None and length_text is not None:
+        seg, key, rev = found
+        number, half = _number_and_half(length_text)
+        if number is None or not math.isfinite(number) or number < 0:
+            notes.append(Note("error", f"'{e.name} = {length_text}': expected a length in mm "
+                              "such as 67.0 or \"67,0 mm\"", e.where))
+            return
+        row_mu = None
+        if e.mu:
+            try:
+                row_mu = parse_quantity(units_ascii(e.mu), MU_DIMENSION[seg.plan])
+            except SceneError as exc:
+                notes.append(Note("error", f"scale factor '{e.mu}' of {e.name}: {exc.detail}",
+                                  e.where))
+        ts = TableSegment(seg, key, e.name, e.where, number, half, rev, row_mu)
+        if e.value is not None:
+            qname = e.quantity or seg.quantity
+            q = qi.find(qname) or qi.find(seg.quantity)
+            if q is not None:
+                parsed = parse_value(e.value, q.dimension, e.where, notes, qname)
+                if parsed is not None:
+                    ts.value = GivenValue(qname, q, parsed[0], e.value, e.where, parsed[1],
+                                          number, half, row_mu)
+                    out.values.append(ts.value)
+            else:
+                notes.append(Note("warning", f"unknown quantity '{qname}'; its value is not "
+                                  "checked", e.where))
+        out.segments.append(ts)
+        return
+    q = qi.find(e.name)
+    if q is None and e.quantity:
+        q = qi.find(e.quantity)
+    if q is not None:
+        vtext = e.value if e.value is not None else text
+        if vtext is None:
+            return
+        if _is_length_text(vtext) and "mm" in vtext.lower() and q.dimension != "length":
+            notes.append(Note("error", f"'{e.name} = {vtext}' is a length on the paper, but "
+                              f"{q.display} is {'an' if q.dimension[0] in 'aeiou' else 'a'} "
+                              f"{q.dimension.replace('_', ' ')}; write the segment's name "
+                              "(e.g. pb) for a drawn length, or the value with its unit",
+                              e.where))
+            return
+        parsed = parse_value(vtext, q.dimension, e.where, notes, e.name)
+        if parsed is None:
+            return
+        gv = GivenValue(e.name, q, parsed[0], vtext, e.where, parsed[1])
+        if e.length is not None and e.value is not None:
+            number, half = _number_and_half(e.length)
+            gv.length_mm, gv.length_half_unit = number, half
+        out.values.append(gv)
+        return
+    if found is None and length_text is not None and si.find(e.name) is None and sec is not None:
+        pass
+    level = "info" if from_sheet else "error"
+    if from_sheet and not re.match(r"^[A-Za-zα-ωΑ-Ω]", e.name):
+        return
+    known_q = ", ".join(qi.names()[:24])
+    notes.append(Note(level, f"unknown quantity or segment '{e.name}'"
+                      + ("" if from_sheet else f"; known quantities: {known_q} …, segments: "
+                         "their names as on the plan (pb, bc, πb′, b′n_CB …)"), e.where))

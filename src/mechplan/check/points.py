@@ -1,0 +1,551 @@
+"""Labelled points of a drawn sheet, grouped into plans.
+
+Line ends that meet (within ``snap`` mm) are one node; each label is given to the node nearest to
+its text (within ``label_distance`` mm, reported), arrowhead barbs are not nodes a label can take,
+and a label with no line end near it may take a crossing of two lines. Lines joined through nodes
+form drawings; each drawing votes for its plan from the look of its labels (primes → acceleration,
+capitals → position, lower case → velocity), a scale-factor text near it ("μv = 0,1") and its layer
+name. Drawings of one plan whose labels do not clash are one plan.
+"""
+
+from __future__ import annotations
+
+import math
+import statistics
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..construct.step import Plan
+from .labels import (Candidate, LabelBook, PlanKey, feature_votes, label_key, mu_plan, plan_key,
+                     plan_name)
+from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
+
+#: words in layer names that say which plan a drawing is (acceleration before velocity: 加速度)
+LAYER_HINTS: tuple[tuple[Plan, tuple[str, ...]], ...] = (
+    (Plan.ACCELERATION, ("acc", "ускор", "gia tốc", "gia toc", "加速度")),
+    (Plan.VELOCITY, ("vel", "скор", "vận tốc", "van toc", "速度")),
+    (Plan.FORCE, ("force", "сил", "lực", "luc", "力")),
+    (Plan.POSITION, ("pos", "mech", "полож", "vị trí", "vi tri", "位置", "机构")),
+)
+BARB_MAX_MM = 8.0
+
+
+@dataclass(frozen=True, slots=True)
+class LabelledPoint:
+    """A point of a drawn plan: the step it stands for and where its label was found."""
+
+    step: str
+    label: str          # the construction's label
+    written: str        # as written on the sheet
+    at: Point           # the point (mm of paper)
+    where: str          # the text entity of the label
+    distance: float     # label → point (mm)
+    how: str = "line end"   # "line end", "point marker", "crossing of two lines", "inferred"
+
+
+@dataclass
+class DrawnPlan:
+    """One plan found on a sheet."""
+
+    key: PlanKey
+    points: dict[str, LabelledPoint] = field(default_factory=dict)
+    lines: list[DrawnLine] = field(default_factory=list)
+    number: int = 0                 # 1, 2 … when a sheet holds several plans of one kind
+    mu: float | None = None
+    mu_source: str = ""
+    convention: str = ""            # how numbered normals / Coriolis points were read
+
+    @property
+    def name(self) -> str:
+        """"velocity plan", "acceleration plan #2"."""
+        return plan_name(self.key) + " plan" + (f" #{self.number}" if self.number else "")
+
+    @property
+    def plan(self) -> Plan:
+        """The kind of plan."""
+        return self.key[0]
+
+
+@dataclass
+class DrawnSheet:
+    """What was found on a sheet."""
+
+    plans: list[DrawnPlan]
+    notes: list[Note]
+    label_distance: float
+    snap: float
+    scale_entries: list[tuple[Plan, Entry]]
+    other_entries: list[Entry]
+
+
+# -- nodes -----------------------------------------------------------------------------------
+class _UnionFind:
+    def __init__(self, n: int) -> None:
+        self.parent = list(range(n))
+
+    def find(self, i: int) -> int:
+        while self.parent[i] != i:
+            self.parent[i] = self.parent[self.parent[i]]
+            i = self.parent[i]
+        return i
+
+    def union(self, a: int, b: int) -> None:
+        ra, rb = self.find(a), self.find(b)
+        if ra != rb:
+            self.parent[max(ra, rb)] = min(ra, rb)
+
+
+def _cluster(points: np.ndarray, snap: float) -> list[int]:
+    """Cluster index of each point: points closer than ``snap`` (transitively) are one cluster."""
+    n = len(points)
+    uf = _UnionFind(n)
+    if n:
+        cells: dict[tuple[int, int], list[int]] = {}
+        size = max(snap, 1e-9)
+        keys = np.floor(points / size).astype(np.int64)
+        for i, (cx, cy) in enumerate(keys):
+            for dx in (-1, 0, 1):
+                for dy in (-1, 0, 1):
+                    for j in cells.get((int(cx) + dx, int(cy) + dy), ()):
+                        if np.hypot(*(points[i] - points[j])) <= snap:
+                            uf.union(i, j)
+            cells.setdefault((int(cx), int(cy)), []).append(i)
+    roots = [uf.find(i) for i in range(n)]
+    index: dict[int, int] = {}
+    return [index.setdefault(r, len(index)) for r in roots]
+
+
+@dataclass
+class _Graph:
+    nodes: np.ndarray                  # (M, 2)
+    line_nodes: list[tuple[int, int]]  # per line
+    markers: dict[int, str]            # node → marker entity
+    decoration: set[int]               # arrowhead corners: labels go elsewhere first
+    component: list[int]               # node → drawing
+
+
+def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float) -> _Graph:
+    pts = [p for ln in lines for p in (ln.start, ln.end)] + [m[0] for m in markers]
+    arr = np.asarray(pts, dtype=float).reshape(-1, 2)
+    cl = _cluster(arr, snap)
+    m = max(cl) + 1 if cl else 0
+    nodes = np.zeros((m, 2))
+    counts = np.zeros(m)
+    for i, c in enumerate(cl):
+        nodes[c] += arr[i]
+        counts[c] += 1
+    if m:
+        nodes /= counts[:, None]
+    line_nodes = [(cl[2 * i], cl[2 * i + 1]) for i in range(len(lines))]
+    marker_nodes = {cl[2 * len(lines) + j]: markers[j][1] for j in range(len(markers))}
+    at_node: dict[int, list[int]] = {}
+    for i, (a, b) in enumerate(line_nodes):
+        at_node.setdefault(a, []).append(i)
+        at_node.setdefault(b, []).append(i)
+    length = [ln.length for ln in lines]
+    decoration: set[int] = set()
+    for n, idx in at_node.items():
+        if n in marker_nodes or any(length[i] > BARB_MAX_MM for i in idx):
+            continue
+        for i in idx:
+            other = line_nodes[i][1] if line_nodes[i][0] == n else line_nodes[i][0]
+            if any(length[j] >= 2.5 * length[i] for j in at_node.get(other, ())):
+                decoration.add(n)
+                break
+    uf = _UnionFind(m)
+    for a, b in line_nodes:
+        uf.union(a, b)
+    roots = [uf.find(i) for i in range(m)]
+    index: dict[int, int] = {}
+    component = [index.setdefault(r, len(index)) for r in roots]
+    return _Graph(nodes, line_nodes, marker_nodes, decoration, component)
+
+
+def _crossings(lines: list[DrawnLine], near: Point, radius: float) -> list[Point]:
+    """Crossings of drawn lines (within their extents) closer than ``radius`` to ``near``."""
+    cand = []
+    x, y = near
+    for ln in lines:
+        (x1, y1), (x2, y2) = ln.start, ln.end
+        if (min(x1, x2) - radius <= x <= max(x1, x2) + radius
+                and min(y1, y2) - radius <= y <= max(y1, y2) + radius):
+            cand.append(ln)
+    out = []
+    for i, a in enumerate(cand):
+        for b in cand[i + 1:]:
+            p = _intersect(a, b)
+            if p is not None and math.hypot(p[0] - x, p[1] - y) <= radius:
+                out.append(p)
+    return out
+
+
+def _intersect(a: DrawnLine, b: DrawnLine) -> Point | None:
+    (x1, y1), (x2, y2) = a.start, a.end
+    (x3, y3), (x4, y4) = b.start, b.end
+    d = (x2 - x1) * (y4 - y3) - (y2 - y1) * (x4 - x3)
+    la, lb = a.length, b.length
+    if abs(d) < 1e-9 * la * lb or abs(d) < math.sin(math.radians(5.0)) * la * lb:
+        return None        # nearly parallel lines do not define a point
+    t = ((x3 - x1) * (y4 - y3) - (y3 - y1) * (x4 - x3)) / d
+    u = ((x3 - x1) * (y2 - y1) - (y3 - y1) * (x2 - x1)) / d
+    eps = 1e-6
+    if -eps <= t <= 1 + eps and -eps <= u <= 1 + eps:
+        return (x1 + t * (x2 - x1), y1 + t * (y2 - y1))
+    return None
+
+
+# -- labels ----------------------------------------------------------------------------------
+@dataclass
+class _Label:
+    text: SheetText
+    written: str
+    cands: list[Candidate]
+    node: int = -1          # -1: a crossing or nothing
+    at: Point | None = None
+    distance: float = math.inf
+    how: str = ""
+
+
+def _is_label_text(t: SheetText) -> bool:
+    s = t.text.strip()
+    return ("\n" not in s and "=" not in s and ":" not in s and 0 < len(label_key(s)) <= 9
+            and not s.replace(",", "").replace(".", "").isdigit())
+
+
+def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | None = None,
+               label_distance: float | None = None, snap: float = 0.5) -> DrawnSheet:
+    """Find the labelled points of a sheet and group them into plans."""
+    notes: list[Note] = []
+    mu_given = mu_given or {}
+    graph = _graph(sub.lines, sub.markers, snap)
+    # scale-factor texts and other "name = value" texts
+    scale_entries: list[tuple[Plan, Entry]] = []
+    other: list[Entry] = []
+    for e in sub.entries:
+        plan = mu_plan(e.name)
+        if plan is not None:
+            scale_entries.append((plan, e))
+        else:
+            other.append(e)
+    labels: list[_Label] = []
+    for t in sub.texts:
+        if not _is_label_text(t):
+            continue
+        cands = book.candidates(t.text)
+        if cands:
+            labels.append(_Label(t, t.text.strip(), cands))
+        elif len(label_key(t.text)) <= 3 and t.text.strip().isalpha():
+            notes.append(Note("info", f"text '{t.text.strip()}' is not a label of any plan of "
+                              "this mechanism; it is not used", t.where))
+    if not labels:
+        if sub.lines:
+            raise _no_labels(sub, book)
+        return DrawnSheet([], notes, label_distance or 0.0, snap, scale_entries, other)
+    if label_distance is None:
+        heights = [lb.text.height for lb in labels if lb.text.height > 0]
+        label_distance = min(10.0, max(3.0, 2.0 * statistics.median(heights))) if heights else 5.0
+    _attach(labels, graph, sub.lines, label_distance, notes)
+    attached = [lb for lb in labels if lb.at is not None]
+    if not attached:
+        raise _far_labels(sub, labels, label_distance)
+    plans = _group(attached, graph, sub, book, scale_entries, notes)
+    for dp in plans:
+        _scale_of(dp, scale_entries, mu_given, graph, notes)
+    return DrawnSheet(plans, notes, label_distance, snap, scale_entries, other)
+
+
+def _no_labels(sub: Submission, book: LabelBook) -> Exception:
+    from ..errors import CheckError
+
+    known = sorted({lbl for steps in book.plans.values() for lbl in steps.values()})
+    sample = ", ".join(known[:14]) + (" …" if len(known) > 14 else "")
+    texts = [t.text for t in sub.texts][:6]
+    found = (f"; the texts found ({', '.join(repr(t) for t in texts)}) are not point labels"
+             if texts else "")
+    return CheckError(f"found {len(sub.lines)} line(s) but no point labels{found}; label the "
+                      f"points of each plan with TEXT or MTEXT next to the line ends "
+                      f"(labels of this mechanism: {sample})", file=sub.path)
+
+
+def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
+    from ..errors import CheckError
+
+    worst = ", ".join(f"'{lb.written}' ({lb.text.where}, {lb.distance:.1f} mm)"
+                      for lb in labels[:5])
+    return CheckError(f"no label is within {tol:.1f} mm of a line end: {worst}; move the labels "
+                      "next to the points or raise --label-distance", file=sub.path)
+
+
+def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: float,
+            notes: list[Note]) -> None:
+    nodes = graph.nodes
+    for lb in labels:
+        if not len(nodes):
+            break
+        c = np.asarray(lb.text.centre)
+        a = np.asarray(lb.text.anchor)
+        d = np.minimum(np.hypot(*(nodes - c).T), np.hypot(*(nodes - a).T))
+        order = np.argsort(d)
+        best = next((int(i) for i in order if int(i) not in graph.decoration), int(order[0]))
+        if d[best] > tol and d[order[0]] <= tol:
+            best = int(order[0])       # only an arrowhead corner is near: take it
+        lb.distance = float(d[best])
+        if lb.distance <= tol:
+            lb.node, lb.at = best, (float(nodes[best][0]), float(nodes[best][1]))
+            lb.how = "point marker" if best in graph.markers else "line end"
+            continue
+        crossings = [p for q in (lb.text.centre, lb.text.anchor) for p in _crossings(lines, q, tol)]
+        if crossings:
+            p = min(crossings, key=lambda q: min(math.dist(q, lb.text.centre),
+                                                 math.dist(q, lb.text.anchor)))
+            lb.at, lb.how = p, "crossing of two lines"
+            lb.distance = min(math.dist(p, lb.text.centre), math.dist(p, lb.text.anchor))
+            continue
+        notes.append(Note("warning", f"label '{lb.written}' is {lb.distance:.1f} mm from the "
+                          f"nearest line end, more than the {tol:.1f} mm allowed "
+                          "(--label-distance); it is not used", lb.text.where))
+
+
+def _layer_plan(layer: str) -> Plan | None:
+    low = layer.lower()
+    for plan, words in LAYER_HINTS:
+        if any(w in low for w in words):
+            return plan
+    return None
+
+
+def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook,
+           scale_entries: list[tuple[Plan, Entry]], notes: list[Note]) -> list[DrawnPlan]:
+    comp_of = lambda lb: graph.component[lb.node] if lb.node >= 0 else _nearest_component(  # noqa
+        lb.at, graph)
+    comps: dict[int, list[_Label]] = {}
+    for lb in labels:
+        comps.setdefault(comp_of(lb), []).append(lb)
+    lines_of: dict[int, list[DrawnLine]] = {}
+    for i, (a, _) in enumerate(graph.line_nodes):
+        lines_of.setdefault(graph.component[a], []).append(sub.lines[i])
+    kinds_in_book = {k[0] for k in book.plans}
+    decided: list[tuple[PlanKey, int, list[_Label]]] = []
+    for comp, members in comps.items():
+        votes: dict[Plan, float] = {}
+        for lb in members:
+            plans_here = {c.plan[0]: c.weight for c in reversed(lb.cands)}
+            for plan, w in plans_here.items():
+                votes[plan] = votes.get(plan, 0.0) + w
+            for plan, w in feature_votes(lb.written).items():
+                if plan in plans_here:
+                    votes[plan] = votes.get(plan, 0.0) + w
+        hint = _hint_of(comp, members, graph, lines_of.get(comp, []), scale_entries)
+        force_hint = False
+        for plan in hint:
+            votes[plan] = votes.get(plan, 0.0) + 3.0 * len(members) ** 0.5 + 3.0
+            force_hint |= plan is Plan.FORCE
+        if not force_hint:
+            votes.pop(Plan.FORCE, None)
+        votes = {p: v for p, v in votes.items() if p in kinds_in_book}
+        if not votes:
+            continue
+        plan = max(votes, key=lambda p: (votes[p], -list(Plan).index(p)))
+        keys = [k for k in book.plans if k[0] is plan]
+        key = max(keys, key=lambda k: sum(any(c.plan == k for c in lb.cands) for lb in members))
+        decided.append((key, comp, members))
+    # merge drawings of one plan unless their labels clash
+    plans: list[DrawnPlan] = []
+    groups: list[tuple[PlanKey, list[int], list[_Label]]] = []
+    for key, comp, members in decided:
+        steps = {_resolve_one(lb, key) for lb in members} - {None}
+        for g in groups:
+            if g[0] == key and not (steps & {_resolve_one(lb, key) for lb in g[2]} - {None}):
+                g[1].append(comp)
+                g[2].extend(members)
+                break
+        else:
+            groups.append((key, [comp], list(members)))
+    counts: dict[PlanKey, int] = {}
+    for key, _, _ in groups:
+        counts[key] = counts.get(key, 0) + 1
+    seen: dict[PlanKey, int] = {}
+    for key, comps_, members in groups:
+        dp = DrawnPlan(key)
+        if counts[key] > 1:
+            seen[key] = seen.get(key, 0) + 1
+            dp.number = seen[key]
+        for comp in comps_:
+            dp.lines.extend(lines_of.get(comp, []))
+        _resolve(dp, members, book, notes)
+        _pole(dp, book, graph, sub, notes)
+        if dp.points:
+            plans.append(dp)
+    for key, n in counts.items():
+        if n > 1:
+            notes.append(Note("warning", f"the sheet holds {n} drawings of the {plan_name(key)} "
+                              "plan whose labels repeat; each is checked on its own", sub.path))
+    return plans
+
+
+def _nearest_component(at: Point | None, graph: _Graph) -> int:
+    if at is None or not len(graph.nodes):
+        return -1
+    d = np.hypot(*(graph.nodes - np.asarray(at)).T)
+    return graph.component[int(np.argmin(d))]
+
+
+def _hint_of(comp: int, members: list[_Label], graph: _Graph, lines: list[DrawnLine],
+             scale_entries: list[tuple[Plan, Entry]]) -> set[Plan]:
+    hints: set[Plan] = set()
+    layers = [_layer_plan(ln.layer) for ln in lines] + [_layer_plan(lb.text.layer)
+                                                         for lb in members]
+    named = [p for p in layers if p is not None]
+    if named and named.count(max(set(named), key=named.count)) > len(named) / 2:
+        hints.add(max(set(named), key=named.count))
+    # a scale-factor text belongs to the drawing nearest to it
+    comp_nodes = {i for i, c in enumerate(graph.component) if c == comp}
+    for plan, entry in scale_entries:
+        if entry.at is None or not comp_nodes:
+            continue
+        best = _nearest_component(entry.at, graph)
+        if best == comp:
+            hints.add(plan)
+    return hints
+
+
+def _resolve_one(lb: _Label, key: PlanKey) -> str | None:
+    for c in lb.cands:
+        if c.plan == key and not c.convention:
+            return c.step
+    return None
+
+
+def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[Note]) -> None:
+    key = dp.key
+    chosen: dict[int, Candidate] = {}
+    numbered: list[int] = []
+    for i, lb in enumerate(members):
+        mine = [c for c in lb.cands if c.plan == key]
+        plain = [c for c in mine if not c.convention]
+        if plain:
+            chosen[i] = plain[0]
+        elif mine:
+            numbered.append(i)
+        else:
+            known = ", ".join(sorted(book.plans[key].values()))
+            notes.append(Note("warning", f"label '{lb.written}' is not a point of the "
+                              f"{plan_name(key)} plan (its points: {known}); it is not used",
+                              lb.text.where))
+    if numbered:
+        for convention in ("link", "ordinal"):
+            picks = {}
+            for i in numbered:
+                c = next((c for c in members[i].cands if c.plan == key
+                          and c.convention == convention), None)
+                if c is None:
+                    break
+                picks[i] = c
+            else:
+                if len({c.step for c in picks.values()}) == len(picks):
+                    chosen.update(picks)
+                    dp.convention = (f"numbered labels ({', '.join(members[i].written for i in numbered)})"
+                                     f" read by {'link number' if convention == 'link' else 'order of construction'}")
+                    break
+        else:
+            for i in numbered:
+                notes.append(Note("warning", f"cannot tell which point '{members[i].written}' is "
+                                  "on the plan; it is not used", members[i].text.where))
+    by_step: dict[str, list[int]] = {}
+    for i, c in chosen.items():
+        by_step.setdefault(c.step, []).append(i)
+    for sid, idx in by_step.items():
+        spots = {members[i].at for i in idx}
+        if len(spots) > 1:
+            where = "; ".join(f"{members[i].text.where} at ({members[i].at[0]:.1f}, "  # type: ignore
+                              f"{members[i].at[1]:.1f})" for i in idx)
+            notes.append(Note("error", f"label '{book.label_of(key, sid)}' appears {len(idx)} times "
+                              f"on the {plan_name(key)} plan at different points ({where}); "
+                              "it is not used", members[idx[0]].text.where))
+            continue
+        lb = min((members[i] for i in idx), key=lambda m: m.distance)
+        assert lb.at is not None
+        dp.points[sid] = LabelledPoint(sid, book.label_of(key, sid), lb.written, lb.at,
+                                       lb.text.where, lb.distance, lb.how)
+
+
+def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
+          notes: list[Note]) -> None:
+    pole = book.poles.get(dp.key)
+    if pole is None or pole in dp.points or len(dp.points) < 2:
+        return
+    # the pole is where most vectors to labelled points start
+    labelled = {tuple(np.round(p.at, 6)) for p in dp.points.values()}
+    node_of = {tuple(np.round(graph.nodes[i], 6)): i for i in range(len(graph.nodes))}
+    count: dict[int, int] = {}
+    for a, b in graph.line_nodes:
+        pa, pb = tuple(np.round(graph.nodes[a], 6)), tuple(np.round(graph.nodes[b], 6))
+        if pa in labelled and pb not in labelled:
+            count[b] = count.get(b, 0) + 1
+        elif pb in labelled and pa not in labelled:
+            count[a] = count.get(a, 0) + 1
+    if not count:
+        return
+    best = max(count.values())
+    tops = [n for n, v in count.items() if v == best]
+    if best < 2 or len(tops) > 1:
+        notes.append(Note("warning", f"the pole of the {dp.name} is not labelled and cannot be "
+                          "told from the lines; absolute vectors are not checked", sub.path))
+        return
+    n = tops[0]
+    at = (float(graph.nodes[n][0]), float(graph.nodes[n][1]))
+    label = book.label_of(dp.key, pole)
+    dp.points[pole] = LabelledPoint(pole, label, "", at, sub.path, 0.0, "inferred")
+    notes.append(Note("info", f"the pole {label} of the {dp.name} is not labelled; taken as the "
+                      f"point ({at[0]:.1f}, {at[1]:.1f}) where {best} vectors to labelled points "
+                      "start", sub.path))
+    del node_of
+
+
+def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],
+              graph: _Graph, notes: list[Note]) -> None:
+    from ..errors import SceneError
+    from ..units import parse_quantity
+    from .labels import MU_DIMENSION
+
+    plan = dp.plan
+    if plan in mu_given:
+        dp.mu, dp.mu_source = mu_given[plan], "given on the command line"
+        return
+    mine = [e for p, e in scale_entries if p is plan]
+    if len(mine) > 1 and dp.points:
+        centre = np.mean([p.at for p in dp.points.values()], axis=0)
+        mine.sort(key=lambda e: math.inf if e.at is None else math.dist(e.at, centre))
+    for e in mine:
+        text = e.text or e.value or e.length or ""
+        try:
+            dp.mu = parse_quantity(_units_ascii(text), MU_DIMENSION[plan])
+        except SceneError as exc:
+            notes.append(Note("warning", f"scale factor '{e.name} = {text}' cannot be used: "
+                              f"{exc.detail}", e.where))
+            continue
+        if not (dp.mu > 0 and math.isfinite(dp.mu)):
+            notes.append(Note("warning", f"scale factor '{e.name} = {text}' must be positive",
+                              e.where))
+            dp.mu = None
+            continue
+        dp.mu_source = f"read from the text '{e.name} = {text}' ({e.where})"
+        return
+
+
+_CYRILLIC_UNITS = (("мм", "mm"), ("м", "m"), ("с", "s"), ("кН", "kN"), ("Н", "N"), ("рад", "rad"),
+                   ("кг", "kg"), ("об/мин", "rpm"), ("град", "deg"))
+
+
+def _units_ascii(text: str) -> str:
+    """Units as pint reads them: Cyrillic unit names, "м/с/мм", "(m/s^2)/mm" → Latin."""
+    out = text.replace("µ", "μ")
+    for cyr, lat in _CYRILLIC_UNITS:
+        out = out.replace(cyr, lat)
+    out = out.replace("−", "-").replace("⋅", "*").replace("×", "*")
+    out = out.replace("⁻¹", "^-1").replace("⁻²", "^-2").replace("³", "^3")
+    return out
+
+
+units_ascii = _units_ascii

@@ -1,0 +1,548 @@
+"""Read a submission: a hand-drawn DXF (lines, polylines, text labels) or a table of measured values.
+
+Nothing here knows the mechanism: the reader returns drawn lines, texts and "name = value" entries
+with where each came from (file, entity handle, line number); :mod:`mechplan.check.match` gives them
+meaning against a construction.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+import re
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Iterable
+
+from ..errors import CheckError
+from .labels import clean_text
+
+Point = tuple[float, float]
+
+#: $INSUNITS → millimetres per drawing unit (0 = unitless, read as millimetres)
+INSUNITS_MM = {0: 1.0, 1: 25.4, 2: 304.8, 4: 1.0, 5: 10.0, 6: 1000.0, 14: 100.0}
+INSUNITS_NAME = {0: "unitless", 1: "inches", 2: "feet", 4: "millimetres", 5: "centimetres",
+                 6: "metres", 14: "decimetres"}
+
+
+@dataclass(frozen=True, slots=True)
+class Note:
+    """A message about the submission: what could not be used, and where it is."""
+
+    level: str          # "error" (an item could not be checked), "warning", "info"
+    message: str
+    where: str = ""
+
+    def __str__(self) -> str:
+        return f"{self.where}: {self.message}" if self.where else self.message
+
+
+@dataclass(frozen=True, slots=True)
+class DrawnLine:
+    """A straight line of the sheet in millimetres of paper."""
+
+    start: Point
+    end: Point
+    where: str
+    layer: str = ""
+
+    @property
+    def length(self) -> float:
+        """Length in mm."""
+        return math.hypot(self.end[0] - self.start[0], self.end[1] - self.start[1])
+
+
+@dataclass(frozen=True, slots=True)
+class SheetText:
+    """A text of the sheet: plain content and the estimated centre of its box (mm)."""
+
+    text: str
+    centre: Point
+    height: float
+    where: str
+    layer: str = ""
+    anchor: Point = (0.0, 0.0)     # insertion (or alignment) point
+
+
+@dataclass(frozen=True, slots=True)
+class Entry:
+    """One "name = value" item of a table or of a text on the sheet, not yet interpreted.
+
+    ``length`` is a drawn length ("67.0", "67,0 mm"); ``value`` a physical value with its unit
+    ("6.7 m/s"); ``quantity`` the name the value is given for when it differs from ``name``
+    ("pb = 67 mm → v_B = 6.7 m/s"); ``section`` the plan named by the table section or column.
+    """
+
+    name: str
+    where: str
+    length: str | None = None
+    mu: str | None = None
+    quantity: str | None = None
+    value: str | None = None
+    section: str | None = None
+    text: str | None = None        # a single uninterpreted value ("67", "2.95 m/s")
+    at: Point | None = None        # where the text stands on a sheet (mm)
+
+
+@dataclass
+class Submission:
+    """What a submission holds, in millimetres of paper and raw texts."""
+
+    path: str
+    kind: str                                  # "dxf" or "table"
+    lines: list[DrawnLine] = field(default_factory=list)
+    markers: list[tuple[Point, str]] = field(default_factory=list)   # POINT / small CIRCLE
+    texts: list[SheetText] = field(default_factory=list)
+    entries: list[Entry] = field(default_factory=list)
+    notes: list[Note] = field(default_factory=list)
+    units: str = ""
+
+
+def read_submission(path: str | Path) -> Submission:
+    """Read a DXF, TOML or CSV submission; raise :class:`CheckError` if it cannot be read at all."""
+    p = Path(path)
+    if not p.exists():
+        raise CheckError("the submission file does not exist", file=str(p))
+    if p.is_dir():
+        raise CheckError("the submission must be a file (a DXF, TOML or CSV), not a directory",
+                         file=str(p))
+    suffix = p.suffix.lower()
+    if suffix == ".dxf":
+        return read_dxf(p)
+    if suffix == ".toml":
+        return read_toml(p)
+    if suffix in (".csv", ".tsv", ".txt"):
+        return read_csv(p)
+    head = p.read_bytes()[:256]
+    if re.match(rb"\s*0\s*\r?\n\s*SECTION", head) or head.startswith(b"AutoCAD Binary DXF"):
+        return read_dxf(p)
+    raise CheckError(f"cannot tell what kind of submission {p.suffix or 'a file without suffix'} "
+                     "is; expected a .dxf drawing, a .toml or a .csv table", file=str(p))
+
+
+# -- DXF ---------------------------------------------------------------------------------------
+def read_dxf(path: Path) -> Submission:
+    """Read lines, polylines, point markers and texts of a DXF's model space (recovering damage)."""
+    import ezdxf
+    from ezdxf import recover
+
+    sub = Submission(str(path), "dxf")
+    try:
+        doc, auditor = recover.readfile(str(path))
+    except ezdxf.DXFStructureError as exc:
+        raise CheckError(f"cannot read the file as DXF ({exc}); expected a DXF drawing saved by "
+                         "a CAD program (ASCII or binary)", file=str(path)) from None
+    except (OSError, UnicodeDecodeError, ValueError, EOFError) as exc:
+        raise CheckError(f"cannot read the file as DXF ({exc.__class__.__name__}: {exc})",
+                         file=str(path)) from None
+    except Exception as exc:  # ezdxf raises assorted errors on badly damaged files
+        raise CheckError(f"cannot read the file as DXF; it looks damaged "
+                         f"({exc.__class__.__name__}: {exc})", file=str(path)) from None
+    if auditor.has_errors:
+        sub.notes.append(Note("warning", f"the DXF was damaged and repaired on reading "
+                              f"({len(auditor.errors)} problem(s), e.g. "
+                              f"{auditor.errors[0].message})", str(path)))
+    try:
+        code = int(doc.header.get("$INSUNITS", 0))
+    except (TypeError, ValueError):
+        code = 0
+    scale = INSUNITS_MM.get(code)
+    if scale is None:
+        sub.notes.append(Note("warning", f"drawing units $INSUNITS = {code} are not supported; "
+                              "lengths are read as millimetres", str(path)))
+        scale = 1.0
+        sub.units = f"$INSUNITS = {code}, read as millimetres"
+    elif code == 0:
+        sub.units = "unitless, read as millimetres"
+    else:
+        sub.units = INSUNITS_NAME[code] + ("" if code == 4 else f" (× {scale:g} mm)")
+    msp = doc.modelspace()
+    _collect(sub, msp, scale, depth=0)
+    if not sub.lines:
+        for layout in doc.layouts:
+            if layout.name.lower() == "model":
+                continue
+            _collect(sub, layout, scale, depth=0)
+            if sub.lines:
+                sub.notes.append(Note("info", f"model space is empty; read layout '{layout.name}'",
+                                      str(path)))
+                break
+    if not sub.lines and not sub.texts:
+        raise CheckError("the DXF holds no lines and no texts in model space; expected the lines "
+                         "of a plan (LINE, LWPOLYLINE, POLYLINE) with TEXT/MTEXT labels",
+                         file=str(path))
+    for text in sub.texts:
+        for i, line in enumerate(text.text.splitlines(), start=1):
+            where = text.where + (f", line {i}" if "\n" in text.text else "")
+            sub.entries.extend(parse_assignments(line, where, at=text.centre))
+    return sub
+
+
+def _where(e: Any, extra: str = "") -> str:
+    handle = getattr(e.dxf, "handle", None) or "?"
+    layer = getattr(e.dxf, "layer", "") or ""
+    return f"{e.dxftype()} #{handle}" + (f" on layer '{layer}'" if layer not in ("", "0") else "") + extra
+
+
+def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
+             via: str = "") -> None:
+    for e in space:
+        kind = e.dxftype()
+        try:
+            if kind == "LINE":
+                a, b = e.dxf.start, e.dxf.end
+                _add_line(sub, (a.x, a.y), (b.x, b.y), scale, _where(e, via), e.dxf.layer)
+            elif kind == "LWPOLYLINE":
+                pts = [(v.x, v.y) for v in e.vertices_in_wcs()]
+                _add_polyline(sub, pts, bool(e.closed), scale, _where(e, via), e.dxf.layer,
+                              any(b for *_, b in e.get_points("xyb")))
+            elif kind == "POLYLINE":
+                if e.is_polygon_mesh or e.is_poly_face_mesh:
+                    continue
+                pts = [(v.x, v.y) for v in e.points_in_wcs()]
+                _add_polyline(sub, pts, bool(e.is_closed), scale, _where(e, via), e.dxf.layer,
+                              any(v.dxf.bulge for v in e.vertices))
+            elif kind == "POINT":
+                p = e.dxf.location
+                sub.markers.append(((p.x * scale, p.y * scale), _where(e, via)))
+            elif kind == "CIRCLE" and e.dxf.radius * scale <= 2.0:
+                p = e.dxf.center
+                if e.dxf.extrusion.z < 0:
+                    p = e.ocs().to_wcs(p)
+                sub.markers.append(((p.x * scale, p.y * scale), _where(e, via)))
+            elif kind in ("TEXT", "ATTRIB"):
+                _add_text(sub, _text_box(e, scale), e, via)
+            elif kind == "MTEXT":
+                _add_text(sub, _mtext_box(e, scale), e, via)
+            elif kind == "INSERT" and depth < 8:
+                name = e.dxf.name
+                _collect(sub, e.virtual_entities(), scale, depth + 1,
+                         via=f" in block '{name}' (INSERT #{e.dxf.handle})")
+                for attrib in getattr(e, "attribs", []):
+                    _add_text(sub, _text_box(attrib, scale), attrib, via)
+        except Exception as exc:  # one unreadable entity must not lose the rest of the sheet
+            sub.notes.append(Note("warning", f"skipped an unreadable {kind} "
+                                  f"({exc.__class__.__name__}: {exc})", _where(e, via)))
+
+
+def _finite(*values: float) -> bool:
+    return all(math.isfinite(v) for v in values)
+
+
+def _add_line(sub: Submission, a: Point, b: Point, scale: float, where: str, layer: str) -> None:
+    if not _finite(*a, *b):
+        sub.notes.append(Note("warning", "skipped a line with non-finite coordinates", where))
+        return
+    sa, sb = (a[0] * scale, a[1] * scale), (b[0] * scale, b[1] * scale)
+    if math.hypot(sb[0] - sa[0], sb[1] - sa[1]) < 1e-9:
+        return
+    sub.lines.append(DrawnLine(sa, sb, where, layer))
+
+
+def _add_polyline(sub: Submission, pts: list[Point], closed: bool, scale: float, where: str,
+                  layer: str, bulges: bool) -> None:
+    if closed and len(pts) > 2:
+        pts = pts + [pts[0]]
+    for i, (a, b) in enumerate(zip(pts, pts[1:]), start=1):
+        _add_line(sub, a, b, scale, f"{where}, segment {i}", layer)
+    if bulges:
+        sub.notes.append(Note("info", "arc segments of the polyline are read as straight chords",
+                              where))
+
+
+_H_FRAC = {"LEFT": 0.0, "CENTER": -0.5, "RIGHT": -1.0, "MIDDLE": -0.5}
+_V_FRAC = {"BASELINE": 0.0, "BOTTOM": 0.0, "MIDDLE": -0.5, "TOP": -1.0}
+
+
+def _text_box(e: Any, scale: float) -> tuple[str, Point, float, Point]:
+    plain = clean_text(e.dxf.text, mtext=False)
+    h = float(e.dxf.get("height", 2.5)) or 2.5
+    wf = float(e.dxf.get("width", 1.0)) or 1.0
+    rot = math.radians(float(e.dxf.get("rotation", 0.0)))
+    w = 0.6 * h * wf * max(1, len(plain))
+    align = e.get_align_enum()
+    name = align.name
+    ocs = e.ocs()
+    insert = ocs.to_wcs(e.dxf.insert)
+    if name in ("ALIGNED", "FIT") and e.dxf.hasattr("align_point"):
+        end = ocs.to_wcs(e.dxf.align_point)
+        ux, uy = end.x - insert.x, end.y - insert.y
+        n = math.hypot(ux, uy) or 1.0
+        cx = (insert.x + end.x) / 2 - uy / n * h / 2
+        cy = (insert.y + end.y) / 2 + ux / n * h / 2
+        return plain, (cx * scale, cy * scale), h * scale, (insert.x * scale, insert.y * scale)
+    anchor = insert
+    if name != "LEFT" and e.dxf.hasattr("align_point"):
+        anchor = ocs.to_wcs(e.dxf.align_point)
+    if name in ("LEFT", "CENTER", "RIGHT", "ALIGNED", "FIT"):
+        hx, vy = _H_FRAC.get(name, 0.0), 0.0
+    elif name == "MIDDLE":
+        hx, vy = -0.5, -0.5
+    else:
+        v, hname = name.split("_", 1)
+        hx, vy = _H_FRAC[hname], _V_FRAC[v]
+    lx, ly = (hx + 0.5) * w, (vy + 0.5) * h
+    cx = anchor.x + lx * math.cos(rot) - ly * math.sin(rot)
+    cy = anchor.y + lx * math.sin(rot) + ly * math.cos(rot)
+    return plain, (cx * scale, cy * scale), h * scale, (anchor.x * scale, anchor.y * scale)
+
+
+def _mtext_box(e: Any, scale: float) -> tuple[str, Point, float, Point]:
+    plain = clean_text(e.text, mtext=True)
+    h = float(e.dxf.get("char_height", 2.5)) or 2.5
+    lines = plain.splitlines() or [""]
+    w = 0.6 * h * max(1, max(len(s) for s in lines))
+    total = h * (1 + 1.67 * (len(lines) - 1))
+    att = int(e.dxf.get("attachment_point", 1))
+    hx = {0: 0.5, 1: 0.0, 2: -0.5}[(att - 1) % 3]
+    vy = {0: -0.5, 1: 0.0, 2: 0.5}[(att - 1) // 3]
+    rot = math.radians(e.get_rotation())
+    lx, ly = hx * w, vy * total
+    ins = e.dxf.insert
+    cx = ins.x + lx * math.cos(rot) - ly * math.sin(rot)
+    cy = ins.y + lx * math.sin(rot) + ly * math.cos(rot)
+    return plain, (cx * scale, cy * scale), h * scale, (ins.x * scale, ins.y * scale)
+
+
+def _add_text(sub: Submission, box: tuple[str, Point, float, Point], e: Any, via: str) -> None:
+    plain, centre, h, anchor = box
+    if plain and _finite(*centre):
+        sub.texts.append(SheetText(plain, centre, h, _where(e, via), e.dxf.get("layer", ""),
+                                   anchor))
+
+
+# -- "name = value" texts ------------------------------------------------------------------------
+_ARROW = re.compile(r"\s*(?:→|->|=>|⟶|⇒)\s*")
+_ASSIGN = re.compile(r"^\s*([^=:]{1,24}?)\s*(?:=|:)\s*(.+?)\s*$")
+
+
+def parse_assignments(line: str, where: str, section: str | None = None,
+                      at: Point | None = None) -> list[Entry]:
+    """Entries of one written line: "μv = 0,1 m/s/mm", "pb = 67 mm → v_B = 6,7 m/s"; several
+    separated by ";" are allowed."""
+    out: list[Entry] = []
+    for part in re.split(r";|\s{3,}", line):
+        if "=" not in part and ":" not in part:
+            continue
+        pieces = [p for p in _ARROW.split(part.strip()) if p]
+        first = _ASSIGN.match(pieces[0]) if pieces else None
+        if not first:
+            continue
+        name, text = first.group(1).strip(), first.group(2).strip()
+        if not name or not text:
+            continue
+        entry = Entry(name=name, where=where, text=text, section=section, at=at)
+        if len(pieces) > 1:
+            second = _ASSIGN.match(pieces[1])
+            if second:
+                entry = Entry(name=name, where=where, length=text, quantity=second.group(1).strip(),
+                              value=second.group(2).strip(), section=section, at=at)
+            else:
+                entry = Entry(name=name, where=where, length=text, value=pieces[1].strip(),
+                              section=section, at=at)
+        out.append(entry)
+    return out
+
+
+# -- TOML --------------------------------------------------------------------------------------
+def read_toml(path: Path) -> Submission:
+    """Read a TOML table: sections named by plan hold lengths, [values] physical values,
+    [scales] scale factors; top-level keys may hold any of them."""
+    sub = Submission(str(path), "table")
+    text = _read_text(path)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CheckError(f"not a valid TOML table ({exc}); expected entries like "
+                         "'pb = 67.0' under [velocity] or 'v_S2 = \"2.95 m/s\"' under [values]",
+                         file=str(path)) from None
+    lines = text.splitlines()
+
+    def line_of(key: str) -> str:
+        pat = re.compile(r"^\s*[\"']?" + re.escape(key) + r"[\"']?\s*=")
+        for i, ln in enumerate(lines, start=1):
+            if pat.match(ln):
+                return f"{path.name} line {i}"
+        return f"{path.name} key '{key}'"
+
+    def walk(table: dict[str, Any], section: str | None, prefix: str) -> None:
+        for key, value in table.items():
+            where = line_of(key)
+            if isinstance(value, dict):
+                if _is_row(value):
+                    sub.entries.append(_row_entry(key, value, where, section))
+                else:
+                    inner = key if section is None else f"{section} {key}"
+                    walk(value, inner, f"{prefix}{key}.")
+            elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+                for i, row in enumerate(value, start=1):
+                    name = str(row.get("name") or row.get("segment") or row.get("quantity") or "")
+                    if not name:
+                        sub.notes.append(Note("error", "a row without 'name' (or 'segment', "
+                                              "'quantity') is skipped", f"{where}, row {i}"))
+                        continue
+                    sub.entries.append(_row_entry(name, row, f"{where}, row {i}",
+                                                  _str(row.get("plan")) or section))
+            elif isinstance(value, (str, int, float)) and not isinstance(value, bool):
+                sub.entries.extend(_value_entries(key, value, where, section))
+            else:
+                sub.notes.append(Note("error", f"cannot use {value!r}; expected a number, a text "
+                                      "such as \"2.95 m/s\", or a table", where))
+
+    walk(data, None, "")
+    if not sub.entries:
+        raise CheckError("the table holds no values; expected lengths in mm under a plan section "
+                         "([velocity] pb = 67.0) or physical values ([values] v_B = \"6.7 m/s\")",
+                         file=str(path))
+    return sub
+
+
+_ROW_KEYS = {"mm", "length", "length_mm", "mu", "value", "quantity", "unit"}
+
+
+def _is_row(d: dict[str, Any]) -> bool:
+    return bool(d) and set(d) <= _ROW_KEYS | {"name", "segment", "plan"} and bool(set(d) & _ROW_KEYS)
+
+
+def _str(v: Any) -> str | None:
+    if v is None:
+        return None
+    return str(v)
+
+
+def _row_entry(name: str, row: dict[str, Any], where: str, section: str | None) -> Entry:
+    length = row.get("mm", row.get("length_mm", row.get("length")))
+    value = _str(row.get("value"))
+    unit = _str(row.get("unit"))
+    if value is not None and unit:
+        value = f"{value} {unit}"
+    quantity = _str(row.get("quantity"))
+    if "segment" in row and quantity is None and "name" in row:
+        quantity = str(row["name"])
+    return Entry(name=str(row.get("segment", name)), where=where, length=_str(length),
+                 mu=_str(row.get("mu")), quantity=quantity, value=value, section=section)
+
+
+def _value_entries(key: str, value: Any, where: str, section: str | None) -> list[Entry]:
+    if isinstance(value, str):
+        entries = parse_assignments(f"{key} = {value}", where, section)
+        if entries:
+            return entries
+    return [Entry(name=key, where=where, text=str(value), section=section)]
+
+
+# -- CSV ---------------------------------------------------------------------------------------
+_COLUMNS = {
+    "name": ("name", "segment", "item", "label", "отрезок", "название", "đoạn", "tên", "线段",
+             "名称"),
+    "length": ("mm", "length", "length_mm", "length, mm", "длина", "длина, мм", "мм", "độ dài",
+               "độ dài, mm", "长度", "长度/mm"),
+    "mu": ("mu", "μ", "µ", "scale", "scale factor", "масштаб", "tỉ lệ", "tỉ lệ xích", "比例尺"),
+    "quantity": ("quantity", "величина", "đại lượng", "物理量", "量"),
+    "value": ("value", "значение", "giá trị", "值", "数值"),
+    "unit": ("unit", "units", "ед.", "единица", "đơn vị", "单位"),
+    "plan": ("plan", "план", "họa đồ", "图"),
+}
+
+
+def read_csv(path: Path) -> Submission:
+    """Read a CSV table: with a header (segment, mm, mu, quantity, value, unit, plan) or rows of
+    "name, value[, unit]"; the delimiter may be ",", ";" or a tab; decimal commas are accepted."""
+    sub = Submission(str(path), "table")
+    text = _read_text(path)
+    if "\x00" in text:
+        raise CheckError("the file is binary, not a CSV table", file=str(path))
+    sample = "\n".join(text.splitlines()[:20])
+    try:
+        dialect: Any = csv.Sniffer().sniff(sample, delimiters=",;\t|")
+    except csv.Error:
+        dialect = _Semicolon if sample.count(";") > sample.count(",") else csv.excel
+    try:
+        rows = list(csv.reader(io.StringIO(text), dialect))
+    except csv.Error as exc:
+        raise CheckError(f"not a readable CSV table ({exc})", file=str(path)) from None
+    header: dict[str, int] | None = None
+    for lineno, row in enumerate(rows, start=1):
+        cells = [c.strip() for c in row]
+        if not any(cells) or cells[0].startswith("#"):
+            continue
+        where = f"{path.name} line {lineno}"
+        if header is None and lineno == _first_line(rows):
+            header = _header(cells)
+            if header is not None:
+                if "name" not in header:
+                    raise CheckError("the header has no name column; expected one of "
+                                     "'segment', 'name'", file=str(path), key=f"line {lineno}")
+                continue
+        if header is not None:
+            get = lambda k: (cells[header[k]] if k in header and header[k] < len(cells)  # noqa: E731
+                             and cells[header[k]] else None)
+            name = get("name")
+            if not name:
+                sub.notes.append(Note("error", "a row without a name is skipped", where))
+                continue
+            value, unit = get("value"), get("unit")
+            if value is not None and unit:
+                value = f"{value} {unit}"
+            sub.entries.append(Entry(name=name, where=where, length=get("length"), mu=get("mu"),
+                                     quantity=get("quantity"), value=value, section=get("plan")))
+            continue
+        cells = [c for c in cells if c != ""]
+        if len(cells) < 2:
+            if len(cells) == 1 and "=" in cells[0]:
+                sub.entries.extend(parse_assignments(cells[0], where))
+            else:
+                sub.notes.append(Note("error", f"expected 'name, value' (got {','.join(row)!r})",
+                                      where))
+            continue
+        if len(cells) >= 4:
+            sub.entries.append(Entry(name=cells[0], where=where, length=cells[1], mu=cells[2],
+                                     quantity=cells[3],
+                                     value=cells[4] if len(cells) > 4 else None))
+        elif len(cells) == 3 and not re.search(r"\d", cells[2]):
+            sub.entries.append(Entry(name=cells[0], where=where, text=f"{cells[1]} {cells[2]}"))
+        elif len(cells) == 3:
+            sub.entries.append(Entry(name=cells[0], where=where, length=cells[1], value=cells[2]))
+        else:
+            sub.entries.append(Entry(name=cells[0], where=where, text=cells[1]))
+    if not sub.entries:
+        raise CheckError("the CSV holds no rows; expected 'name, value' rows such as "
+                         "'pb, 67.0' or 'v_S2, 2.95 m/s', or a header 'segment, mm, mu, quantity, "
+                         "value'", file=str(path))
+    return sub
+
+
+class _Semicolon(csv.excel):
+    delimiter = ";"
+
+
+def _first_line(rows: list[list[str]]) -> int:
+    for i, row in enumerate(rows, start=1):
+        cells = [c.strip() for c in row]
+        if any(cells) and not cells[0].startswith("#"):
+            return i
+    return 0
+
+
+def _header(cells: list[str]) -> dict[str, int] | None:
+    found: dict[str, int] = {}
+    for i, cell in enumerate(cells):
+        low = cell.lower().strip()
+        for col, names in _COLUMNS.items():
+            if low in names and col not in found:
+                found[col] = i
+    if len(found) >= 2 or (found and not any(re.search(r"\d", c) for c in cells)):
+        return found
+    return None
+
+
+def _read_text(path: Path) -> str:
+    data = path.read_bytes()
+    for enc in ("utf-8-sig", "cp1251", "latin-1"):
+        try:
+            return data.decode(enc)
+        except UnicodeDecodeError:
+            continue
+    return data.decode("latin-1", errors="replace")

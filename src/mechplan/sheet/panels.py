@@ -1,0 +1,313 @@
+"""Panels of a sheet: each plan drawn from its evaluated construction steps, with its tables.
+
+A panel is built in its own millimetre coordinates; the layout moves it into place. Nothing here
+computes mechanics: values come from an evaluated construction, this module only scales them by μ
+and decides line kinds, labels and table cells.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..construct.graph import Construction, Evaluation
+from ..construct.protocol import MM, PLAN_TITLE, pole_label
+from ..construct.segments import SegmentKind
+from ..construct.step import Kind, Op, Plan
+from ..units import format_number
+from .fonts import text_width_mm
+from .labels import LabelPlacer
+from .primitives import Arrow, Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
+
+LABEL_H = 3.5
+TITLE_H = 5.0
+TABLE_H = 2.5
+ROW = 5.0
+
+SCALE_UNIT = {Plan.POSITION: ("μl", "m/mm"), Plan.VELOCITY: ("μv", "(m/s)/mm"),
+              Plan.ACCELERATION: ("μa", "(m/s²)/mm"), Plan.FORCE: ("μF", "N/mm")}
+UNIT = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
+HEAD = {
+    "en": ("segment", "on paper", "μ", "quantity", "value", "term", "direction", "magnitude"),
+    "ru": ("отрезок", "на чертеже", "μ", "величина", "значение", "вектор", "направление", "модуль"),
+    "vi": ("đoạn", "trên bản vẽ", "μ", "đại lượng", "giá trị", "véc tơ", "phương chiều", "giá trị"),
+    "zh": ("线段", "图上长度", "μ", "物理量", "数值", "矢量", "方向", "大小"),
+}
+POSITION_WORD = {"en": "position", "ru": "положение", "vi": "vị trí", "zh": "位置"}
+
+
+@dataclass
+class Panel:
+    """Primitives in panel millimetres with the box they occupy."""
+
+    name: str
+    primitives: list[Primitive] = field(default_factory=list)
+
+    def bounds(self) -> tuple[float, float, float, float]:
+        """(x0, y0, x1, y1) of everything drawn."""
+        xs: list[float] = []
+        ys: list[float] = []
+        for p in self.primitives:
+            for x, y in _points_of(p):
+                xs.append(x)
+                ys.append(y)
+        return (min(xs), min(ys), max(xs), max(ys)) if xs else (0.0, 0.0, 0.0, 0.0)
+
+
+def _points_of(p: Primitive) -> list[tuple[float, float]]:
+    if isinstance(p, (Line, Arrow)):
+        return [p.start, p.end]
+    if isinstance(p, Polyline):
+        return list(p.points)
+    if isinstance(p, Circle):
+        (x, y), r = p.center, p.radius
+        return [(x - r, y - r), (x + r, y + r)]
+    if isinstance(p, Text):
+        w = text_width_mm(p.string, p.height_mm)
+        x, y = p.position
+        dx = {HAlign.LEFT: 0.0, HAlign.CENTER: -w / 2, HAlign.RIGHT: -w}[p.halign]
+        dy = {VAlign.BASELINE: 0.0, VAlign.BOTTOM: 0.0, VAlign.MIDDLE: -p.height_mm / 2,
+              VAlign.TOP: -p.height_mm}[p.valign]
+        return [(x + dx, y + dy - 0.3 * p.height_mm), (x + dx + w, y + dy + p.height_mm)]
+    if isinstance(p, Table):
+        x0, y0 = p.origin
+        return [(x0, y0), (x0 + sum(p.column_widths_mm), y0 - sum(p.row_heights_mm))]
+    return []
+
+
+def mu_text(plan: Plan, mu: float, lang: str) -> str:
+    """"μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
+    sym, unit = SCALE_UNIT[plan]
+    digits = max(0, -int(math.floor(math.log10(mu))) + 3) if mu > 0 else 3
+    num = format_number(mu, digits, lang).rstrip("0").rstrip(",.")
+    return f"{sym} = {num} {unit}"
+
+
+def table(rows: list[tuple[str, ...]], origin: tuple[float, float]) -> Table:
+    """A table whose column widths fit their texts."""
+    ncol = len(rows[0])
+    widths = tuple(max(text_width_mm(r[c], TABLE_H) for r in rows) + 3.0 for c in range(ncol))
+    return Table(origin, widths, tuple(ROW for _ in rows), tuple(rows), TABLE_H)
+
+
+def _mm(v: np.ndarray, mu: float) -> tuple[float, float]:
+    return (float(v[0]) / mu, float(v[1]) / mu)
+
+
+def _finite(*pts: tuple[float, float]) -> bool:
+    return all(math.isfinite(x) and math.isfinite(y) for x, y in pts)
+
+
+def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, lang: str,
+                title: str) -> Panel:
+    """A velocity, acceleration or force plan at position k: lines, arrows, labels, tables."""
+    panel = Panel(f"{plan.value}-{k}")
+    prims = panel.primitives
+    steps = [s for s in c.of_plan(plan) if s.id in ev.values]
+    pts: dict[str, tuple[float, float]] = {}
+    for s in steps:
+        if s.kind is Kind.POINT:
+            p = _mm(ev[s.id][k], mu)
+            if _finite(p):
+                pts[s.id] = p
+    # auxiliary construction lines: from the point they pass through to (and past) their meet
+    for s in steps:
+        if s.kind is not Kind.LINE:
+            continue
+        line = ev[s.id][k]
+        through = _mm(line[0], mu)
+        u = (float(line[1][0]), float(line[1][1]))
+        meet = next((m for m in steps if m.op is Op.LINE_LINE and s.id in m.inputs and m.id in pts), None)
+        if meet is None or not _finite(through):
+            continue
+        end = pts[meet.id]
+        t_end = (end[0] - through[0]) * u[0] + (end[1] - through[1]) * u[1]
+        t0, t1 = min(0.0, t_end) - 8.0, max(0.0, t_end) + 8.0
+        prims.append(Line((through[0] + t0 * u[0], through[1] + t0 * u[1]),
+                          (through[0] + t1 * u[0], through[1] + t1 * u[1]), Role.DASHED))
+    # similarity images: the image triangle of a link
+    for s in steps:
+        if s.op is Op.SIMILAR_IMAGE and s.id in pts:
+            for src in s.inputs[:2]:
+                if src in pts and math.dist(pts[src], pts[s.id]) > 1e-6:
+                    prims.append(Line(pts[src], pts[s.id], Role.THIN))
+    # vectors: absolute ones thick, components and relative ones thin
+    for seg in c.segments:
+        if seg.plan is not plan or seg.start not in pts or seg.end not in pts:
+            continue
+        a, b = pts[seg.start], pts[seg.end]
+        if math.dist(a, b) < 0.5:
+            continue
+        thick = seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE)
+        prims.append(Arrow(a, b, Role.OUTLINE if thick else Role.THIN,
+                           head_length_mm=3.5 if thick else 3.0, head_width_mm=1.2 if thick else 1.0))
+    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
+    seen: dict[tuple[int, int], list[str]] = {}
+    for s in steps:
+        if s.id not in pts or s.kind is not Kind.POINT:
+            continue
+        key = (round(pts[s.id][0] * 2), round(pts[s.id][1] * 2))
+        seen.setdefault(key, []).append(pole_label(s.label, lang))
+        prims.append(Circle(pts[s.id], 0.5, Role.OUTLINE))
+    for key, labels in seen.items():
+        text = "≡".join(dict.fromkeys(labels))
+        anchor = (key[0] / 2, key[1] / 2)
+        prims.append(placer.place(anchor, text))
+    _title_and_tables(panel, c, ev, k, plan, mu, lang, title)
+    return panel
+
+
+def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, plan: Plan,
+                      mu: float, lang: str, title: str) -> None:
+    x0, y0, x1, y1 = panel.bounds()
+    prims = panel.primitives
+    prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
+    prims.append(Text((x0, y1 + 3.0), mu_text(plan, mu, lang), LABEL_H))
+    head = HEAD[lang]
+    rows: list[tuple[str, ...]] = [(head[0], f"{head[1]}, {MM[lang]}", head[3], f"{head[4]}, {UNIT[plan]}")]
+    for seg in c.segments:
+        if seg.plan is not plan or seg.start not in ev.values or seg.end not in ev.values:
+            continue
+        length = float(np.hypot(*(ev[seg.end][k] - ev[seg.start][k])))
+        if not math.isfinite(length):
+            continue
+        rows.append((pole_label(seg.name, lang), format_number(length / mu, 1, lang), seg.quantity,
+                     format_number(length, 3, lang)))
+    y = y0 - 6.0
+    if len(rows) > 1:
+        t = table(rows, (x0, y))
+        prims.append(t)
+        y -= sum(t.row_heights_mm) + 4.0
+    for (p, group), (eq, terms) in c.equations.items():
+        if p is not plan:
+            continue
+        prims.append(Text((x0, y - TABLE_H), f"{group}:  {eq}", TABLE_H))
+        y -= TABLE_H + 2.5
+        t2 = table([(head[5], head[6], head[7])] + [tuple(r) for r in terms], (x0, y))
+        prims.append(t2)
+        y -= sum(t2.row_heights_mm) + 4.0
+
+
+def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech, highlight: list[int],
+                  extremes: list[float], ev_ext: Evaluation | None, mu: float, lang: str,
+                  title: str, numbers: list[str]) -> Panel:
+    """Positions overlaid (highlighted ones thick), trajectories, extreme positions, guides."""
+    panel = Panel("position")
+    prims = panel.primitives
+    links = [lk for lk in mech.links.values() if lk.id != "0"]
+    joints = {lk.id: [p for p in lk.points if any(pr.point == p for pr in mech.pairs_of(lk.id))]
+              for lk in links}
+
+    def draw_links(ev: Evaluation, k: int, role: Role) -> None:
+        for lk in links:
+            pts = [_mm(ev[f"pos.{p}"][k], mu) for p in joints[lk.id] if f"pos.{p}" in ev.values]
+            pts = [p for p in pts if _finite(p)]
+            if len(pts) == 2 and math.dist(*pts) > 1e-6:
+                prims.append(Line(pts[0], pts[1], role))
+            elif len(pts) > 2:
+                prims.append(Polyline(tuple(pts), role, closed=True))
+
+    # trajectories of points that do not move on a circle about the frame or along a guide
+    crank = mech.drive.link
+    for lk in links:
+        if lk.id == crank or lk.slides_on:
+            continue
+        for p in lk.points:
+            if p in mech.links["0"].points or f"pos.{p}" not in ev_traj.values:
+                continue
+            if any(p in other.points for other in links if other.slides_on):
+                continue
+            path = [_mm(v, mu) for v in ev_traj[f"pos.{p}"]]
+            path = [q for q in path if _finite(q)]
+            if len(path) > 2:
+                prims.append(Polyline(tuple(path), Role.CHAIN))
+    tip = next(p for p in mech.links[crank].points if p != mech.drive.pivot)
+    centre = _mm(ev_all[f"pos.{mech.drive.pivot}"][0], mu)
+    radius = math.dist(centre, _mm(ev_all[f"pos.{tip}"][0], mu))
+    prims.append(Circle(centre, radius, Role.CHAIN))
+    for k in range(ev_all.n):
+        draw_links(ev_all, k, Role.OUTLINE if k in highlight else Role.THIN)
+        tip_mm = _mm(ev_all[f"pos.{tip}"][k], mu)
+        if _finite(tip_mm):
+            d = (tip_mm[0] - centre[0], tip_mm[1] - centre[1])
+            n = math.hypot(*d) or 1.0
+            prims.append(Text((tip_mm[0] + 4.0 * d[0] / n, tip_mm[1] + 4.0 * d[1] / n), numbers[k],
+                              2.5, halign=HAlign.CENTER, valign=VAlign.MIDDLE))
+    if ev_ext is not None:
+        for k in range(ev_ext.n):
+            draw_links(ev_ext, k, Role.DASHED)
+    # guides of the frame, along the travel of their sliders
+    for lk in links:
+        if not lk.slides_on:
+            continue
+        g = mech.guides[lk.slides_on]
+        if g.link != "0":
+            continue
+        p = next(iter(lk.points))
+        path = np.asarray(ev_traj[f"pos.{p}"])
+        path = path[np.isfinite(path).all(axis=1)]
+        if path.size == 0:
+            continue
+        u = np.array([math.cos(g.angle), math.sin(g.angle)])
+        o = np.array(g.origin)
+        t = (path - o) @ u
+        a, b = o + (t.min() - 10 * mu) * u, o + (t.max() + 10 * mu) * u
+        prims.append(Line(_mm(a, mu), _mm(b, mu), Role.CHAIN))
+        prims.append(Text(_mm(b, mu), g.name, 2.5))
+    # sliders, frame pivots and joints of the highlighted positions
+    for k in highlight:
+        for lk in links:
+            if lk.slides_on:
+                g = mech.guides[lk.slides_on]
+                p = _mm(ev_all[f"pos.{next(iter(lk.points))}"][k], mu)
+                ang = g.angle if g.link == "0" else float(ev_all[c.results[f"angle_{lk.id}"]][k])
+                if _finite(p):
+                    prims.append(_slider(p, ang))
+        for p in {q for js in joints.values() for q in js}:
+            if f"pos.{p}" in ev_all.values:
+                q = _mm(ev_all[f"pos.{p}"][k], mu)
+                if _finite(q):
+                    prims.append(Circle(q, 1.0, Role.OUTLINE))
+    for name in mech.links["0"].points:
+        if any(name in js for js in joints.values()):
+            prims.extend(_pivot(_mm(ev_all[f"pos.{name}"][0], mu)))
+    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H)
+    k0 = highlight[0] if highlight else 0
+    for lk in links:
+        for p in lk.points:
+            if f"pos.{p}" in ev_all.values:
+                q = _mm(ev_all[f"pos.{p}"][k0], mu)
+                if _finite(q):
+                    prims.append(placer.place(q, p))
+    placed = {p for lk in links for p in lk.points}
+    for name in mech.links["0"].points:
+        if name not in placed:
+            continue
+    x0, y0, x1, y1 = panel.bounds()
+    prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
+    prims.append(Text((x0, y1 + 3.0), mu_text(Plan.POSITION, mu, lang), LABEL_H))
+    return panel
+
+
+def _slider(p: tuple[float, float], angle: float) -> Polyline:
+    c, s = math.cos(angle), math.sin(angle)
+    corners = [(-6.0, -3.5), (6.0, -3.5), (6.0, 3.5), (-6.0, 3.5)]
+    return Polyline(tuple((p[0] + c * x - s * y, p[1] + s * x + c * y) for x, y in corners),
+                    Role.OUTLINE, closed=True)
+
+
+def _pivot(p: tuple[float, float]) -> list[Primitive]:
+    x, y = p
+    out: list[Primitive] = [Polyline(((x, y), (x - 4.0, y - 6.0), (x + 4.0, y - 6.0)), Role.OUTLINE,
+                                     closed=True),
+                            Line((x - 6.0, y - 6.0), (x + 6.0, y - 6.0), Role.OUTLINE)]
+    out += [Line((x - 6.0 + 2.0 * i, y - 6.0), (x - 8.0 + 2.0 * i, y - 8.5), Role.THIN) for i in range(7)]
+    return out
+
+
+def plan_title(plan: Plan, lang: str, k: int, phi_deg: float) -> str:
+    """"Họa đồ vận tốc — vị trí 1, φ = 30°"."""
+    return (f"{PLAN_TITLE[plan][lang]} — {POSITION_WORD[lang]} {k}, "
+            f"φ = {format_number(phi_deg, 1, lang)}°")
