@@ -12,7 +12,7 @@ ROOT = HERE.parent
 if str(ROOT / "src") not in sys.path:        # run from a clone without installing
     sys.path.insert(0, str(ROOT / "src"))
 
-from mechplan import bench  # noqa: E402
+from mechplan import bench
 
 RESULTS = HERE / "RESULTS.md"
 HEADER = """# Benchmarks
@@ -31,10 +31,10 @@ def machine_block() -> str:
     """The machine and versions as a Markdown list."""
     info = bench.machine()
     lines = [f"- CPU: {info['cpu']}, {info['cores']} logical cores; {info['os']}",
-             f"- Python {info['python']}, numpy {info['numpy']}, mpmath {info['mpmath']}, "
-             f"scipy {info['scipy']}",
-             f"- peers: pylinkage {info['pylinkage']}, numba {info['numba']}, "
-             f"mechanism {info['mechanism']}",
+             (f"- Python {info['python']}, numpy {info['numpy']}, mpmath {info['mpmath']}, "
+              f"scipy {info['scipy']}"),
+             (f"- peers: pylinkage {info['pylinkage']}, numba {info['numba']}, "
+              f"mechanism {info['mechanism']}"),
              f"- run: {time.strftime('%Y-%m-%d %H:%M %Z')}"]
     return "\n".join(lines)
 
@@ -44,7 +44,7 @@ def write_section(name: str, title: str, body: str) -> None:
     text = RESULTS.read_text(encoding="utf-8") if RESULTS.exists() else HEADER
     block = f"<!-- BEGIN {name} -->\n## {title}\n\n{body.strip()}\n<!-- END {name} -->"
     pattern = re.compile(rf"<!-- BEGIN {re.escape(name)} -->.*?<!-- END {re.escape(name)} -->",
-                         re.S)
+                         re.DOTALL)
     if pattern.search(text):
         text = pattern.sub(lambda _: block, text)
     else:

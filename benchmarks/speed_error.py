@@ -18,7 +18,15 @@ import subprocess
 import sys
 import time
 
-from _common import HERE, ROOT, bench, goals_block, machine_block, tables_by_mechanism, write_section
+from _common import (
+    HERE,
+    ROOT,
+    bench,
+    goals_block,
+    machine_block,
+    tables_by_mechanism,
+    write_section,
+)
 
 PNG = HERE / "speed_error.png"
 
@@ -84,14 +92,14 @@ allocated before; the "cold allocator" table below shows the effect.
 def cold_allocator(n: int) -> list[dict]:
     """Exact float64 and the closed form at N in a fresh child process without the allocator setting."""
     code = ("import json, sys; from mechplan import bench\n"
-            "cfg = bench.Config(cases=('slider_crank', 'four_bar'), ns=(%d,), "
+            f"cfg = bench.Config(cases=('slider_crank', 'four_bar'), ns=({n},), "
             "methods=('exact float64', 'numpy closed form'), steady_allocator=False)\n"
             "rows = bench.run_benchmark(cfg)\n"
             "print(json.dumps([{'mechanism': r.mechanism, 'method': r.method, "
-            "'ns': r.ns_per_position} for r in rows]))" % n)
+            "'ns': r.ns_per_position} for r in rows]))")
     env = {**os.environ, "PYTHONPATH": str(ROOT / "src")}
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
-                          timeout=600)
+                          timeout=600, check=False)
     if proc.returncode:
         return []
     return json.loads(proc.stdout.strip().splitlines()[-1])
@@ -173,8 +181,8 @@ def main(argv: list[str] | None = None) -> int:
     if args.no_write:
         return 0
     scatter(rows)
-    cold_lines = ["| mechanism | method | steady allocator ns/position | fresh process, default "
-                  "allocator ns/position |", "|---|---|---|---|"]
+    cold_lines = [("| mechanism | method | steady allocator ns/position | fresh process, default "
+                   "allocator ns/position |"), "|---|---|---|---|"]
     for c in cold:
         w = warm.get((c["mechanism"], c["method"]))
         cold_lines.append(f"| {c['mechanism']} | {c['method']} | "

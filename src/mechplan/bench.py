@@ -28,10 +28,11 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from types import ModuleType
-from typing import Any, Callable, Iterable, Sequence
+from typing import Any
 
 import numpy as np
 
@@ -268,7 +269,7 @@ class Model:
     position_targets: list[str]
 
     @classmethod
-    def load(cls, case: Case, templates: Path = ROOT / "templates") -> "Model":
+    def load(cls, case: Case, templates: Path = ROOT / "templates") -> Model:
         """Load the case's template and build its construction."""
         scene = load_scene(templates / f"{case.name}.toml")
         _, c = build(scene, KINEMATIC)
@@ -427,7 +428,7 @@ def closed_form(model: Model, phi: np.ndarray) -> Callable[[], Result] | None:
 
 
 # -- peers ------------------------------------------------------------------------------------------
-def _pylinkage_linkage(case: Case, theta0: float, step: float, omega: float):
+def _pylinkage_linkage(case: Case, theta0: float, step: float, omega: float) -> tuple[Any, dict[str, int]]:
     """A pylinkage model of a case whose k-th output is at θ0 + k·step; (linkage, names).
 
     Dimensions are those of ``templates/<case>.toml`` (metres); the assembly branch is given by
@@ -438,7 +439,14 @@ def _pylinkage_linkage(case: Case, theta0: float, step: float, omega: float):
     from pylinkage.dyads import FixedDyad, RRPDyad, RRRDyad
     from pylinkage.simulation import Linkage
 
-    def crank(anchor, radius):
+    parts: list[Any]
+    a: Any
+    b: Any
+    c: Any
+    d: Any
+    e: Any
+
+    def crank(anchor: Any, radius: float) -> Any:
         return Crank(anchor=anchor, radius=radius, angular_velocity=step,
                      initial_angle=theta0 - step, name="crank")
 
@@ -452,7 +460,7 @@ def _pylinkage_linkage(case: Case, theta0: float, step: float, omega: float):
         ga, gd = Ground(0.0, 0.0, name="A"), Ground(0.25, 0.0, name="D")
         b = crank(ga, 0.08)
         bx, by = 0.08 * math.cos(theta0 - step), 0.08 * math.sin(theta0 - step)
-        cx, cy = _circle_meet((bx, by), 0.26, (0.25, 0.0), 0.18, (0.25 - bx, -by))
+        cx, cy = _circle_meet((bx, by), 0.26, (0.25, 0.0), 0.18)
         c = RRRDyad(b.output, gd, distance1=0.26, distance2=0.18, x=cx, y=cy, name="C")
         beta = math.acos((0.15 ** 2 + 0.26 ** 2 - 0.18 ** 2) / (2 * 0.15 * 0.26))
         e = FixedDyad(b.output, c, distance=0.15, angle=beta, name="E")
@@ -462,10 +470,11 @@ def _pylinkage_linkage(case: Case, theta0: float, step: float, omega: float):
         gx = Ground(math.cos(math.radians(60)), math.sin(math.radians(60)), name="X")
         gy = Ground(math.cos(math.radians(120)), math.sin(math.radians(120)), name="Y")
         b = crank(ga, 0.08)
-        c = RRPDyad(b.output, ga, gx, distance=0.248, x=0.3 * gx.x, y=0.3 * gx.y, name="C")
+        ux, uy = math.cos(math.radians(60)), math.sin(math.radians(60))
+        c = RRPDyad(b.output, ga, gx, distance=0.248, x=0.3 * ux, y=0.3 * uy, name="C")
         beta = math.acos((0.248 ** 2 + 0.062 ** 2 - 0.218 ** 2) / (2 * 0.248 * 0.062))
         d = FixedDyad(b.output, c, distance=0.062, angle=beta, name="D")
-        e = RRPDyad(d, ga, gy, distance=0.218, x=0.3 * gy.x, y=0.3 * gy.y, name="E")
+        e = RRPDyad(d, ga, gy, distance=0.218, x=-0.3 * ux, y=0.3 * uy, name="E")
         s2 = FixedDyad(b.output, c, distance=0.124, angle=0.0, name="S2")
         parts, names = [ga, gx, gy, b, c, d, e, s2], {"B": 3, "C": 4, "D": 5, "E": 6, "S2": 7}
         drive = b
@@ -483,7 +492,8 @@ def _pylinkage_linkage(case: Case, theta0: float, step: float, omega: float):
     return linkage, names
 
 
-def _circle_meet(p, r1, q, r2, toward):
+def _circle_meet(p: tuple[float, float], r1: float, q: tuple[float, float],
+                 r2: float) -> tuple[float, float]:
     """Meet of circles (p, r1), (q, r2) left of p→q (a branch hint for pylinkage)."""
     dx, dy = q[0] - p[0], q[1] - p[1]
     d = math.hypot(dx, dy)
@@ -547,7 +557,7 @@ def mechanism_runner(model: Model, phi: np.ndarray) -> Callable[[], Result] | No
                 return (va(inp) + vb(x[0]) - vc(x[1]) - vd()).flatten()
             t0 = float(theta[0])
             bx, by = 0.08 * math.cos(t0), 0.08 * math.sin(t0)
-            cx, cy = _circle_meet((bx, by), 0.26, (0.25, 0.0), 0.18, None)
+            cx, cy = _circle_meet((bx, by), 0.26, (0.25, 0.0), 0.18)
             guess = (np.array([math.atan2(cy - by, cx - bx), math.atan2(cy, cx - 0.25)]),
                      np.zeros(2), np.zeros(2))
             m = Mechanism(vectors=(va, vb, vc, vd), origin=a0, loops=loops, pos=theta,
@@ -577,9 +587,9 @@ def _pylinkage_without_numba(cfg: Config, cases: Sequence[str], ns: Sequence[int
         env = dict(os.environ, NUMBA_DISABLE_JIT="1")
         env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "src"), env.get("PYTHONPATH", "")])
         log("pylinkage without numba: child process (NUMBA_DISABLE_JIT=1)")
-        proc = subprocess.run([sys.executable, "-c", "import sys, json; from mechplan.bench import "
-                               "_child; _child(json.loads(sys.argv[1]))", json.dumps(spec)],
-                              env=env, capture_output=True, text=True, timeout=3600)
+        code = "import sys, json; from mechplan.bench import _child; _child(json.loads(sys.argv[1]))"
+        proc = subprocess.run([sys.executable, "-c", code, json.dumps(spec)], env=env, check=False,
+                              capture_output=True, text=True, timeout=3600)
         if proc.returncode != 0:
             raise MechplanError(f"pylinkage child process failed: {proc.stderr.strip()[-500:]}")
         meta = json.loads((Path(tmp) / "meta.json").read_text())
@@ -641,7 +651,7 @@ def run_benchmark(cfg: Config | None = None, log: Callable[[str], None] | None =
             log(f"{name}: N = {n}, reference at {idx.size} position(s)")
             want = reference_result(case, ref.at(name, model.theta(phi[idx])))
             for method in cfg.methods:
-                runner, note, run_n = _runner(method, model, phi, cfg, slow_peer)
+                runner, note = _runner(method, model, phi, cfg, slow_peer)
                 if runner is None:
                     if note:
                         rows.append(Row(name, method, n, math.nan, 0, 0, {}, note))
@@ -654,44 +664,44 @@ def run_benchmark(cfg: Config | None = None, log: Callable[[str], None] | None =
 
 
 def _runner(method: str, model: Model, phi: np.ndarray, cfg: Config,
-            slow_peer: dict) -> tuple[Any, str, int]:
+            slow_peer: dict) -> tuple[Any, str]:
     """The runner of a method (or a finished measurement) and a note; (None, note) if not run."""
     n, name = phi.shape[0], model.case.name
     if method == "exact float64":
-        return model.exact(phi), "", n
+        return model.exact(phi), ""
     if method == "exact float32":
-        return model.exact(phi, np.float32), "", n
+        return model.exact(phi, np.float32), ""
     if method.startswith("ruler"):
-        return model.ruler(phi, float(method.split()[1])), "", n
+        return model.ruler(phi, float(method.split()[1])), ""
     if method == "finite differences":
-        return model.finite_differences(phi), f"h_v = {FD_STEP_V:g}, h_a = {FD_STEP_A:g} rad", n
+        return model.finite_differences(phi), f"h_v = {FD_STEP_V:g}, h_a = {FD_STEP_A:g} rad"
     if method == "λ-series":
         if name != "slider_crank":
-            return None, "", n
-        return lambda_series(model, phi), "slider B only", n
+            return None, ""
+        return lambda_series(model, phi), "slider B only"
     if method == "numpy closed form":
-        return closed_form(model, phi), "", n
+        return closed_form(model, phi), ""
     if method == "pylinkage + numba":
         if not (_have("pylinkage") and _have("numba")):
-            return None, "pylinkage or numba not installed", n
-        return pylinkage_runner(model, phi), "points only (no ω, ε)", n
+            return None, "pylinkage or numba not installed"
+        return pylinkage_runner(model, phi), "points only (no ω, ε)"
     if method == "pylinkage (no numba)":
         if (name, n) in slow_peer:
-            return slow_peer[(name, n)], "points only; NUMBA_DISABLE_JIT=1 child process", n
+            return slow_peer[(name, n)], "points only; NUMBA_DISABLE_JIT=1 child process"
         if not _have("pylinkage"):
-            return None, "pylinkage not installed", n
-        return None, "", n
+            return None, "pylinkage not installed"
+        return None, ""
     if method == "mechanism (fsolve)":
         if name not in ("slider_crank", "four_bar"):
-            return None, "", n
+            return None, ""
         if not _have("mechanism"):
-            return None, "mechanism not installed", n
+            return None, "mechanism not installed"
         if n > cfg.fsolve_max_n:
             return None, (f"not run: a Python loop of three fsolve calls per position (see the "
-                          f"largest N ≤ {cfg.fsolve_max_n} for its cost per position)"), n
+                          f"largest N ≤ {cfg.fsolve_max_n} for its cost per position)")
         run = mechanism_runner(model, phi)
         return run, ("" if run is None else "four-bar: B, C only" if name == "four_bar" else
-                     "slider: A, B only"), n
+                     "slider: A, B only")
     raise KeyError(method)
 
 
@@ -791,7 +801,7 @@ def machine() -> dict[str, str]:
         try:
             from importlib.metadata import version
             info[mod] = version(mod)
-        except Exception:  # noqa: BLE001 - a missing or odd distribution is just "not installed"
+        except Exception:
             info[mod] = "not installed"
     return info
 

@@ -30,18 +30,19 @@ def _solve(args: argparse.Namespace) -> int:
 def _draw(args: argparse.Namespace) -> int:
     from .render import write
     from .scene import load_scene
-    from .sheet.compose import compose_sheet
+    from .sheet.compose import compose_sheets
     from .solve import solve
 
     formats = [f.strip() for f in args.format.split(",") if f.strip()]
     for path in args.scenes:
         scene = load_scene(path)
         sol = solve(scene)
-        sheet = compose_sheet(sol, args.sheet, args.standard, args.lang, name=Path(path).stem)
+        sheets = compose_sheets(sol, args.sheet, args.standard, args.lang, name=Path(path).stem)
         out = Path(args.output)
         out.mkdir(parents=True, exist_ok=True)
-        for written in write(sheet, out, formats):
-            print(written)
+        for sheet in sheets:
+            for written in write(sheet, out, formats):
+                print(written)
     return 0
 
 

@@ -28,7 +28,10 @@ WORDS = {
                term="矢量", direction="方向", magnitude="大小", segments="测量线段", results="结果",
                point="点", link="构件", groups="杆组", crank="曲柄位于", fromx="（自 +x 轴）"),
 }
-PLANS = {"position": Plan.POSITION, "velocity": Plan.VELOCITY, "acceleration": Plan.ACCELERATION}
+PLANS = {"position": Plan.POSITION, "velocity": Plan.VELOCITY, "acceleration": Plan.ACCELERATION,
+         "force": Plan.FORCE}
+UNITS = {Plan.POSITION: "m/mm", Plan.VELOCITY: "(m/s)/mm", Plan.ACCELERATION: "(m/s²)/mm",
+         Plan.FORCE: "N/mm"}
 
 
 def text_report(sol: Solution, lang: str | None = None) -> str:
@@ -50,7 +53,7 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         steps = protocol(sol.construction, sol.ev, k, lang, sol.scales, plans)
         for plan in plans:
             mu = sol.scales.get(plan, 1.0)
-            unit = {Plan.POSITION: "m/mm", Plan.VELOCITY: "(m/s)/mm", Plan.ACCELERATION: "(m/s²)/mm"}[plan]
+            unit = UNITS[plan]
             out += ["", f"### {PLAN_TITLE[plan][lang]} (μ = {format_number(mu, 6, lang).rstrip('0').rstrip(',.')} {unit})"]
             for (p, group), (eq, rows) in sol.construction.equations.items():
                 if p is plan:
@@ -70,6 +73,11 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
                                f"   {quantity:<14} {format_number(value, 4, lang)}")
         out += ["", f"### {w['results']}"]
         out += _results(sol, k, lang)
+        if "forces" in sol.extras:
+            from .dynamics.kinetostatics import force_text
+            out += [""] + force_text(sol.construction, sol.ev, sol.scene.mechanism,
+                                     sol.extras["loading"], k, sol.scales.get(Plan.FORCE),
+                                     sol.extras["forces"])
     return "\n".join(out)
 
 

@@ -48,6 +48,9 @@ def build(scene: Scene, plans: tuple[str, ...] | None = None, loading: Any = Non
     """Structure and construction of a scene."""
     structure = analyse(scene.mechanism)
     plans = plans or scene.plans
+    if "force" in plans and loading is None:
+        from .dynamics.loading import Loading
+        loading = Loading.from_scene(scene)
     build_plans = tuple(p for p in (*KINEMATIC, "force") if p in plans or p in ("position", "velocity"))
     c = build_construction(scene.mechanism, structure, build_plans, scene.assembly_phi, scene.path,
                            loading)
@@ -87,13 +90,16 @@ def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[s
             plan = c[sid].plan.value
             if plan in plans and key.split("_")[0] in ("angle", "omega", "epsilon"):
                 out.append(sid)
+    if "force" in plans:
+        out += [sid for key, sid in c.results.items()
+                if key in ("M_b", "M_b_zhukovsky") or key.startswith(("R_", "d_"))]
     return list(dict.fromkeys(out))
 
 
 def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]) -> dict[Plan, float]:
     """Scale factors: fixed by the scene or round values so each plan's largest segment ≤ 120 mm."""
     out: dict[Plan, float] = {}
-    for plan in (Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION):
+    for plan in (Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION, Plan.FORCE):
         key, _ = SCALE_KEYS[plan.value]
         if key in scene.drawing.scales:
             out[plan] = scene.drawing.scales[key]
@@ -122,7 +128,13 @@ def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = N
     targets = targets_for(scene, c, plans)
     ev.evaluate_all(targets)
     ensure_valid(c, ev, scene.path, max_condition)
-    return Solution(scene, structure, c, phi, ev, plans, targets, choose_scales(scene, c, ev, plans))
+    sol = Solution(scene, structure, c, phi, ev, plans, targets, choose_scales(scene, c, ev, plans))
+    if "force" in plans:
+        from .dynamics.kinetostatics import analyse_forces
+        from .dynamics.loading import Loading
+        sol.extras["loading"] = loading or Loading.from_scene(scene)
+        sol.extras["forces"] = analyse_forces(c, ev, scene.mechanism, sol.extras["loading"])
+    return sol
 
 
 def _vec(a: np.ndarray) -> list[float]:
@@ -157,9 +169,13 @@ def to_json(sol: Solution) -> dict[str, Any]:
                     entry[name] = math.degrees(math.remainder(val, 2 * math.pi)) if key == "angle" else val
             if entry:
                 links[lid] = entry
-        positions.append({"phi_deg": round(math.degrees(float(sol.phi[k])), 10),
-                          "crank_angle_deg": round(math.degrees(math.remainder(float(theta[k]), 2 * math.pi)), 10),
-                          "points": pts, "links": links})
+        entry_k: dict[str, Any] = {
+            "phi_deg": round(math.degrees(float(sol.phi[k])), 10),
+            "crank_angle_deg": round(math.degrees(math.remainder(float(theta[k]), 2 * math.pi)), 10),
+            "points": pts, "links": links}
+        if "forces" in sol.extras:
+            entry_k.update(sol.extras["forces"].json(k))
+        positions.append(entry_k)
     return {"mechplan": __version__, "title": scene.title, "dof": sol.structure.dof,
             "structure": sol.structure.formula,
             "groups": [{"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups],

@@ -201,8 +201,11 @@ def _wants_force(sub: Submission) -> bool:
     from .points import _layer_plan
 
     for e in sub.entries:
-        if mu_plan(e.name) is Plan.FORCE:
-            return True
+        plan = mu_plan(e.name)
+        if plan is not None or is_angle_name(e.name):
+            if plan is Plan.FORCE:
+                return True
+            continue
         if dimension_of(quantity_key(e.name)) in ("force", "moment") or (
                 e.section and "force" in e.section.lower()):
             return True
@@ -298,11 +301,23 @@ def _grade(ctx: _Ctx, k: int) -> CheckReport:
         mu_all.setdefault(plan, mu)
     for plan, mu in ctx.options.mu.items():
         mu_all[plan] = mu
+    reds = []
     for d in drawn:
         over = dict(overrides)
         over.update(_overrides([d]))
         red = Rederive(ctx.c, ctx.ev, k, over)
-        report.plans.append(_grade_drawn(ctx, d, k, red, mu_all, report.findings))
+        reds.append(red)
+        _classify_points(ctx, d, red)
+    status: dict[str, str] = {}
+    for d in reversed(drawn):           # the first drawing of a plan wins
+        status.update(d.status)
+    for d in drawn:
+        for sid, cause in list(d.status.items()):
+            if cause == CARRIED and not _roots(ctx, status, sid):
+                d.status[sid] = ACCUMULATED
+                status[sid] = ACCUMULATED if status.get(sid) == CARRIED else status[sid]
+    for d, red in zip(drawn, reds):
+        report.plans.append(_grade_drawn(ctx, d, k, red, mu_all, report.findings, status))
     global_red = Rederive(ctx.c, ctx.ev, k, overrides)
     table_reports = _grade_table_segments(ctx, k, mu_all, report)
     report.plans.extend(table_reports)
@@ -395,8 +410,24 @@ def _labels_fn(ctx: _Ctx) -> Any:
     return label
 
 
+def _classify_points(ctx: _Ctx, d: _Drawn, red: Rederive) -> None:
+    """Total error of each point, and for wrong ones whether the error is new or carried."""
+    for sid in d.dp.points:
+        err = d.errors.get(sid)
+        if err is None or err <= d.tol[sid]:
+            continue
+        if sid in d.swapped:
+            d.status[sid] = SWAPPED
+            continue
+        own = np.asarray(red.own(sid)).reshape(-1)[:2]
+        own_err = (float(np.hypot(*(d.si[sid] - own))) / d.mu if d.mu and
+                   np.all(np.isfinite(own)) else math.inf)
+        d.own_err[sid] = own_err
+        d.status[sid] = CARRIED if own_err <= d.tol[sid] else NEW
+
+
 def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan, float | None],
-                 findings: list[Finding]) -> PlanReport:
+                 findings: list[Finding], status: dict[str, str]) -> PlanReport:
     c, dp = ctx.c, d.dp
     tol = ctx.options.tol(dp.plan)
     pr = PlanReport(dp.name, dp.plan.value, dp.key[1], d.mu, d.mu_source, tol,
@@ -406,34 +437,20 @@ def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan,
     if d.mu:
         mu_map[dp.plan] = d.mu
     hctx = HintContext(c, ctx.scene.mechanism, lambda s: red.own(s), red.exact, mu_map, labels)
-    # points: total error, then new or carried
     present = set(d.si)
     for sid, p in dp.points.items():
         err = d.errors.get(sid)
         verdict = UNCHECKED if err is None else (OK if err <= d.tol[sid] else WRONG)
-        cause, own_err = "", None
-        if verdict == WRONG:
-            if sid in d.swapped:
-                cause = SWAPPED
-            else:
-                own = np.asarray(red.own(sid)).reshape(-1)[:2]
-                own_err = (float(np.hypot(*(d.si[sid] - own))) / d.mu if d.mu and
-                           np.all(np.isfinite(own)) else math.inf)
-                cause = CARRIED if own_err <= d.tol[sid] else NEW
-            d.status[sid] = cause
-            d.own_err[sid] = own_err if own_err is not None else math.nan
         pr.points.append(PointRow(p.label, p.written, sid, p.at, err, d.tol.get(sid), verdict,
-                                  cause, own_err, p.how, p.distance, p.where))
-    for sid, cause in list(d.status.items()):
-        if cause == CARRIED and not _roots(ctx, d, sid, {}):
-            d.status[sid] = ACCUMULATED
+                                  d.status.get(sid, ""), d.own_err.get(sid), p.how, p.distance,
+                                  p.where))
     # segments of the construction, then drawn lines between labelled points
     segs = _segments_of(c, dp.key)
     pairs = {(s.start, s.end) for s in segs} | {(s.end, s.start) for s in segs}
     rows: list[SegmentRow] = []
     for s in segs:
         rows.append(_segment_row(ctx, d, k, s.start, s.end, s.name, s.quantity, s.kind.value,
-                                 tol, hctx, present, s is d.reference))
+                                 tol, hctx, present, s is d.reference, red, status))
     seen: set[tuple[str, str]] = set()
     for line in dp.lines:
         a = _point_at(dp, line.start, ctx.options.snap)
@@ -442,7 +459,7 @@ def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan,
             continue
         seen.add((a, b))
         row = _segment_row(ctx, d, k, a, b, labels(a) + labels(b), "", "drawn", tol, hctx,
-                           present, False)
+                           present, False, red, status)
         row.in_construction = False
         row.drawn = True
         rows.append(row)
@@ -467,8 +484,10 @@ def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan,
     for sid, cause in d.status.items():
         if cause == NEW:
             mine = [r for r in rows if r.verdict == WRONG and r.step == sid and r.cause == NEW]
+            primary = [r for r in mine if r.end == sid and ctx.c[r.start].op is Op.POLE] or [
+                r for r in mine if r.end == sid] or mine
             kinds = set()
-            for r in mine:
+            for r in primary[:1]:
                 if r.error_mm is not None and r.tolerance_mm is not None and \
                         abs(r.error_mm) > r.tolerance_mm:
                     kinds.add("length")
@@ -520,16 +539,17 @@ def _row_brief(r: SegmentRow) -> str:
     return ", ".join(parts) or f"{r.name} is off"
 
 
-def _roots(ctx: _Ctx, d: _Drawn, sid: str, _memo: dict[str, list[str]]) -> list[str]:
+def _roots(ctx: _Ctx, status: dict[str, str], sid: str) -> list[str]:
+    """Wrong points with a new error (or swapped labels) that a step is built from."""
     anc = set(ctx.c.ancestors([sid])) - {sid}
-    out = [s for s in anc if d.status.get(s) in (NEW, SWAPPED)]
-    return sorted(out, key=list(ctx.c.steps).index)
+    order = list(ctx.c.steps)
+    return sorted((s for s in anc if status.get(s) in (NEW, SWAPPED)), key=order.index)
 
 
-def _all_roots(ctx: _Ctx, sid: str, drawn_status: dict[str, str]) -> list[str]:
-    anc = set(ctx.c.ancestors([sid])) - {sid}
-    return sorted((s for s in anc if drawn_status.get(s) in (NEW, SWAPPED)),
-                  key=list(ctx.c.steps).index)
+def _where_label(ctx: _Ctx, sid: str, d: _Drawn) -> str:
+    """A step's label, with its plan when it is on another plan than ``d``."""
+    st = ctx.c[sid]
+    return st.label if st.plan is d.dp.plan else f"{st.label} ({st.plan.value} plan)"
 
 
 def _point_at(dp: DrawnPlan, at: tuple[float, float], snap: float) -> str | None:
@@ -555,7 +575,7 @@ def _is_drawn(dp: DrawnPlan, row: SegmentRow, snap: float) -> bool:
 
 def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, quantity: str,
                  kind: str, tol: Tolerance, hctx: HintContext, present: set[str],
-                 is_reference: bool) -> SegmentRow:
+                 is_reference: bool, red: Rederive, status: dict[str, str]) -> SegmentRow:
     c, dp = ctx.c, d.dp
     exact_vec = _exact(ctx, end, k) - _exact(ctx, start, k)
     exact_mm = float(np.hypot(*exact_vec)) / d.mu if d.mu else None
@@ -599,35 +619,39 @@ def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, 
     if row.verdict != WRONG:
         return row
     # why: swapped labels, a new error at one end, carried from earlier items, or small ones adding up
-    status = d.status
     if start in d.swapped or end in d.swapped:
         row.cause = SWAPPED
         x = end if end in d.swapped else start
         row.hint = f"the labels {c[x].label} and {c[d.swapped[x]].label} are swapped"
         row.step = x
-    elif status.get(end) == NEW or status.get(start) == NEW:
+        return row
+    if status.get(end) == NEW or (status.get(start) == NEW and end not in status):
         x = end if status.get(end) == NEW else start
         row.cause = NEW
         row.step = x
         row.hint = rule(hctx, c[x], d.si[x], d.tol.get(x, tol.mm))
-    elif status.get(end) in (CARRIED, ACCUMULATED) or status.get(start) in (CARRIED, ACCUMULATED):
-        roots: list[str] = []
-        for x in (start, end):
-            if status.get(x) in (CARRIED, ACCUMULATED):
-                roots += _roots(ctx, d, x, {})
-        roots = list(dict.fromkeys(roots))
-        if roots:
-            row.cause = CARRIED
-            row.carried_from = [c[r].label for r in roots]
-            row.hint = (f"carried from {', '.join(row.carried_from)}: built right from wrong "
-                        "earlier points")
-        else:
-            row.cause = ACCUMULATED
-            row.hint = "small errors of the earlier points add up"
-    else:
+        return row
+    # does the student's own construction from their earlier points give this segment?
+    own_end = np.asarray(red.own(end)).reshape(-1)[:2]
+    own_vec = (own_end - d.si[start]) / d.mu if d.mu else vec
+    explained = bool(np.all(np.isfinite(own_vec))) and \
+        float(np.hypot(*(vec - own_vec))) <= row.tolerance_mm
+    roots = _roots(ctx, status, end)
+    if start in status and status[start] in (NEW, SWAPPED):
+        roots = [start, *roots]
+    roots = list(dict.fromkeys(roots))
+    if explained and roots:
+        row.cause = CARRIED
+        row.carried_from = [_where_label(ctx, r, d) for r in roots]
+        row.hint = (f"carried from {', '.join(row.carried_from)}: built right from wrong "
+                    "earlier points")
+    elif explained or status.get(end) in (CARRIED, ACCUMULATED):
         row.cause = ACCUMULATED
         errs = ", ".join(f"{c[x].label} {d.errors.get(x, 0.0):.1f} mm" for x in (start, end))
-        row.hint = f"both ends are within tolerance ({errs}) but their errors add up"
+        row.hint = f"small errors of the points ({errs}) add up on this short segment"
+    else:
+        row.cause = NEW
+        row.hint = rule(hctx, c[end], d.si[end], d.tol.get(end, tol.mm))
     return row
 
 
@@ -769,23 +793,23 @@ def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _
         # what the student's own drawing or lengths give
         own, own_text, arith = _own_value(ctx, gv, seg, q, k, red, first, table_len, mu)
         row.own = own
-        if own is not None and abs(sub_cmp - abs(own) if not signed else sub_cmp - own) > arith:
+        if abs(sub_cmp - exact_cmp) <= tol_abs:
+            row.verdict = OK
+        elif own is not None and abs(sub_cmp - (own if signed else abs(own))) > arith:
             row.verdict = SLIP
             row.cause = NEW
             row.hint = f"arithmetic slip: {own_text}, but {gv.written} = {gv.text} is written"
             report.findings.append(Finding("arithmetic slip", plan.value if plan else "",
                                            gv.written, row.hint, q.step or ""))
-        elif abs(sub_cmp - exact_cmp) <= tol_abs:
-            row.verdict = OK
         else:
             row.verdict = WRONG
             roots = []
             if seg is not None:
-                roots = [c[s].label for s in _all_roots(ctx, seg.end, status)]
+                roots = [c[s].label for s in _roots(ctx, status, seg.end)]
                 if status.get(seg.end) in (NEW, SWAPPED):
                     roots.insert(0, c[seg.end].label)
             elif q.step is not None:
-                roots = [c[s].label for s in _all_roots(ctx, q.step, status)]
+                roots = [c[s].label for s in _roots(ctx, status, q.step)]
             if own is not None:
                 row.cause = CARRIED
                 row.hint = f"follows from your own drawing ({own_text})" + (
@@ -864,11 +888,12 @@ def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, r
     """The student's own value of a quantity, its derivation and the arithmetic tolerance."""
     c = ctx.c
     rel = 0.005 * abs(gv.value)
+    unit = SI_UNIT.get(q.dimension, "")
     if gv.length_mm is not None:
         m = gv.mu or mu
         if m:
             own = gv.length_mm * m
-            return own, (f"{gv.length_mm:g} mm × {m:g} = {own:.4g}"), max(
+            return own, (f"{gv.length_mm:g} mm × {m:g} = {own:.4g} {unit}"), max(
                 rel, gv.half_unit, gv.length_half_unit * m)
     if seg is not None:
         key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
@@ -876,20 +901,20 @@ def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, r
         if d is not None and d.mu and seg.start in d.dp.points and seg.end in d.dp.points:
             length = math.dist(d.dp.points[seg.start].at, d.dp.points[seg.end].at)
             own = length * d.mu
-            return own, f"{seg.name} = {length:.1f} mm × {d.mu:g} = {own:.4g}", max(
+            return own, f"{seg.name} = {length:.1f} mm × {d.mu:g} = {own:.4g} {unit}", max(
                 rel, gv.half_unit, 0.5 * d.mu)
         ts = table_len.get(id(seg))
         m = (ts.mu if ts else None) or mu
         if ts is not None and m:
             own = ts.length_mm * m
-            return own, f"{seg.name} = {ts.length_mm:g} mm × {m:g} = {own:.4g}", max(
+            return own, f"{seg.name} = {ts.length_mm:g} mm × {m:g} = {own:.4g} {unit}", max(
                 rel, gv.half_unit, ts.length_half_unit * m)
     if q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON):
         st = c[q.step]
         plan_points = [first.get(plan_key(st.plan))]
         if plan_points[0] is not None and plan_points[0].si:
             own = float(np.asarray(red.own(q.step)).reshape(-1)[0])
-            return abs(own), f"from your plan {st.label} = {abs(own):.4g}", max(
+            return abs(own), f"from your plan {st.label} = {abs(own):.4g} {unit}", max(
                 0.01 * abs(gv.value), gv.half_unit)
         # from a table: the relative segment's length × μ / l
         p, qq, a, b = st.inputs
@@ -900,5 +925,5 @@ def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, r
         if ts is not None and m and l:
             own = ts.length_mm * m / l
             return own, (f"{relseg.name} × μ / l = {ts.length_mm:g} mm × {m:g} / {l:.4g} m = "  # type: ignore[union-attr]
-                         f"{own:.4g}"), max(0.01 * abs(gv.value), gv.half_unit)
+                         f"{own:.4g} {unit}"), max(0.01 * abs(gv.value), gv.half_unit)
     return None, "", 0.0

@@ -13,8 +13,8 @@ from ..construct.step import Kind, Op, Plan
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
 from ..units import parse_quantity
-from .labels import (MU_DIMENSION, LabelBook, PlanKey, split_names, dimension_of, is_angle_name,
-                     label_key, mu_plan, plan_key, quantity_key)
+from .labels import (MU_DIMENSION, LabelBook, PlanKey, dimension_of, feature_votes,
+                     is_angle_name, label_key, mu_plan, plan_key, quantity_key, split_names)
 from .points import LAYER_HINTS, units_ascii
 from .submission import Entry, Note
 
@@ -110,6 +110,7 @@ class QuantityIndex:
             rev = _reversed_quantity(seg, mech)
             if rev:
                 self._put(quantity_key(rev), q)
+        self.has_force = any(st.plan is Plan.FORCE for st in c)
         if with_dynamics:
             self._put("jred", Quantity("J_red", "inertia", None, extra="J_red"))
             self._put("mred", Quantity("M_red", "moment", None, extra="M_red"))
@@ -147,11 +148,21 @@ def _reversed_quantity(seg: Segment, mech: Mechanism | None) -> str | None:
 
 
 # -- segments ----------------------------------------------------------------------------------
+def case_key(text: str) -> str:
+    """Like :func:`label_key` but keeping upper and lower case ("BC" ≠ "bc")."""
+    low = label_key(text)
+    t = "".join(ch for ch in text if not ch.isspace() and ch not in "_{}^$\\")
+    if len(t) != len(low):
+        return low
+    return "".join(a.upper() if b.isupper() else a for a, b in zip(low, t))
+
+
 class SegmentIndex:
     """Segments of a construction by the ways their names are written ("pb", "πb'", "b1n2")."""
 
     def __init__(self, c: Construction, book: LabelBook) -> None:
         self.by_key: dict[str, list[tuple[Segment, PlanKey, bool, int]]] = {}
+        self.exact_case: dict[str, Segment] = {}
         for seg in c.segments:
             key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
             if key not in book.aliases:
@@ -162,6 +173,7 @@ class SegmentIndex:
             ends = [(a, cand.weight) for a, cs in table.items() for cand in cs
                     if cand.step == seg.end]
             self._put(label_key(seg.name), seg, key, False, 4)
+            self.exact_case.setdefault(case_key(seg.name), seg)
             for a, wa in starts:
                 for b, wb in ends:
                     self._put(a + b, seg, key, False, min(wa, wb))
@@ -172,14 +184,26 @@ class SegmentIndex:
         if not any(e[0] is seg for e in entries):
             entries.append((seg, key, rev, weight))
 
-    def find(self, name: str, plan: Plan | None = None) -> tuple[Segment, PlanKey, bool] | None:
-        """The segment a written name stands for (best reading), or None."""
+    def find(self, name: str, plan: Plan | None = None,
+             prefer: Plan | None = None) -> tuple[Segment, PlanKey, bool] | None:
+        """The segment a written name stands for (best reading), or None.
+
+        ``plan`` restricts the reading to one plan; ``prefer`` breaks ties (the plan of the
+        quantity written with it); a name written exactly as on the plan ("BC" on the position
+        plan, "bc" on the velocity plan) wins over other readings.
+        """
         entries = self.by_key.get(label_key(name), [])
         if plan is not None:
             entries = [e for e in entries if e[1][0] is plan] or []
         if not entries:
             return None
-        best = max(entries, key=lambda e: e[3])
+        exact = self.exact_case.get(case_key(name))
+        votes = feature_votes(name.strip())
+
+        def rank(e: tuple[Segment, PlanKey, bool, int]) -> tuple[int, int, int, int]:
+            return (int(e[0] is exact), int(e[1][0] is prefer), e[3], votes.get(e[1][0], 0))
+
+        best = max(entries, key=rank)
         return best[0], best[1], best[2]
 
 
@@ -225,8 +249,8 @@ def parse_value(text: str, dimension: str, where: str, notes: list[Note],
     if bare and number is not None:
         from ..units import DIMENSIONS
 
-        notes.append(Note("info", f"'{name} = {text}' has no unit; read in SI "
-                          f"({DIMENSIONS[dimension][1] or '1'})", where))
+        unit = DIMENSIONS[dimension][1].replace("**2", "²").replace("*", "·") or "1"
+        notes.append(Note("info", f"'{name} = {text}' has no unit; read in SI ({unit})", where))
         return number, half
     try:
         value = parse_quantity(units_ascii(text), dimension)
@@ -286,9 +310,12 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
     sec = section_plan(e.section)
     length_text = e.length if e.length is not None else (
         e.text if e.text is not None and _is_length_text(e.text) else None)
-    found = si.find(e.name, sec[0] if sec else None) if length_text is not None else None
-    if found is None and length_text is not None and sec is None:
-        found = si.find(e.name)
+    prefer = None
+    if e.quantity:
+        qq = qi.find(e.quantity)
+        prefer = qq.plan if qq is not None else None
+    found = (si.find(e.name, sec[0] if sec else None, prefer) if length_text is not None
+             else None)
     if found is not None and length_text is not None:
         seg, key, rev = found
         number, half = _number_and_half(length_text)
@@ -345,6 +372,12 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         pass
     level = "info" if from_sheet else "error"
     if from_sheet and not re.match(r"^[A-Za-zα-ωΑ-Ω]", e.name):
+        return
+    dim = dimension_of(quantity_key(e.name))
+    if dim in ("force", "moment") and not qi.has_force:
+        notes.append(Note(level, f"'{e.name}' looks like a force or moment, but this check has no "
+                          "force plan (the scene gives no loads or masses); it is not checked",
+                          e.where))
         return
     known_q = ", ".join(qi.names()[:24])
     notes.append(Note(level, f"unknown quantity or segment '{e.name}'"

@@ -277,31 +277,98 @@ def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
                       "next to the points or raise --label-distance", file=sub.path)
 
 
+def _assign(cost: list[list[float]]) -> list[int]:
+    """Minimum-cost assignment of rows to distinct columns (rows ≤ columns); column per row."""
+    n, m = len(cost), len(cost[0]) if cost else 0
+    inf = math.inf
+    u, v = [0.0] * (n + 1), [0.0] * (m + 1)
+    p, way = [0] * (m + 1), [0] * (m + 1)
+    for i in range(1, n + 1):
+        p[0] = i
+        j0 = 0
+        minv = [inf] * (m + 1)
+        used = [False] * (m + 1)
+        while True:
+            used[j0] = True
+            i0, delta, j1 = p[j0], inf, 0
+            for j in range(1, m + 1):
+                if not used[j]:
+                    cur = cost[i0 - 1][j - 1] - u[i0] - v[j]
+                    if cur < minv[j]:
+                        minv[j], way[j] = cur, j0
+                    if minv[j] < delta:
+                        delta, j1 = minv[j], j
+            for j in range(m + 1):
+                if used[j]:
+                    u[p[j]] += delta
+                    v[j] -= delta
+                else:
+                    minv[j] -= delta
+            j0 = j1
+            if p[j0] == 0:
+                break
+        while True:
+            j1 = way[j0]
+            p[j0] = p[j1]
+            j0 = j1
+            if not j0:
+                break
+    out = [-1] * n
+    for j in range(1, m + 1):
+        if p[j]:
+            out[p[j] - 1] = j - 1
+    return out
+
+
 def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: float,
             notes: list[Note]) -> None:
+    """Give each label a point: line ends nearest to its text box, one label per point where
+    possible (a minimum-cost assignment), arrowhead corners only when nothing else is near."""
     nodes = graph.nodes
+    options: list[list[tuple[float, int]]] = []
     for lb in labels:
-        if not len(nodes):
-            break
-        c = np.asarray(lb.text.centre)
-        a = np.asarray(lb.text.anchor)
-        d = np.minimum(np.hypot(*(nodes - c).T), np.hypot(*(nodes - a).T))
-        order = np.argsort(d)
-        best = next((int(i) for i in order if int(i) not in graph.decoration), int(order[0]))
-        if d[best] > tol and d[order[0]] <= tol:
-            best = int(order[0])       # only an arrowhead corner is near: take it
-        lb.distance = float(d[best])
-        if lb.distance <= tol:
-            lb.node, lb.at = best, (float(nodes[best][0]), float(nodes[best][1]))
-            lb.how = "point marker" if best in graph.markers else "line end"
+        near = []
+        for i in range(len(nodes)):
+            d = lb.text.distance((float(nodes[i][0]), float(nodes[i][1])))
+            if d <= tol:
+                near.append((d + (tol if i in graph.decoration else 0.0), i))
+        near.sort()
+        options.append(near[:8])
+        lb.distance = min((d for d, _ in near), default=math.inf)
+    columns = sorted({i for near in options for _, i in near})
+    if columns:
+        col = {n: j for j, n in enumerate(columns)}
+        big = 1e6
+        width = len(columns) + len(labels)
+        cost = []
+        for r, near in enumerate(options):
+            row = [big] * width
+            for d, i in near:
+                row[col[i]] = d
+            # sharing a point with another label (p ≡ o1) costs more than a point of its own
+            row[len(columns) + r] = (near[0][0] + 2 * tol) if near else big
+            cost.append(row)
+        pick = _assign(cost)
+        for r, lb in enumerate(labels):
+            j = pick[r]
+            if j < 0 or cost[r][j] >= big:
+                continue
+            node = columns[j] if j < len(columns) else options[r][0][1]
+            lb.node = node
+            lb.at = (float(nodes[node][0]), float(nodes[node][1]))
+            lb.distance = lb.text.distance(lb.at)
+            lb.how = "point marker" if node in graph.markers else "line end"
+    for lb in labels:
+        if lb.at is not None:
             continue
-        crossings = [p for q in (lb.text.centre, lb.text.anchor) for p in _crossings(lines, q, tol)]
+        crossings = _crossings(lines, lb.text.centre, tol + max(lb.text.half))
+        crossings = [p for p in crossings if lb.text.distance(p) <= tol]
         if crossings:
-            p = min(crossings, key=lambda q: min(math.dist(q, lb.text.centre),
-                                                 math.dist(q, lb.text.anchor)))
-            lb.at, lb.how = p, "crossing of two lines"
-            lb.distance = min(math.dist(p, lb.text.centre), math.dist(p, lb.text.anchor))
+            p = min(crossings, key=lb.text.distance)
+            lb.at, lb.how, lb.distance = p, "crossing of two lines", lb.text.distance(p)
             continue
+        if not math.isfinite(lb.distance) and len(nodes):
+            lb.distance = min(lb.text.distance((float(x), float(y))) for x, y in nodes)
         notes.append(Note("warning", f"label '{lb.written}' is {lb.distance:.1f} mm from the "
                           f"nearest line end, more than the {tol:.1f} mm allowed "
                           "(--label-distance); it is not used", lb.text.where))

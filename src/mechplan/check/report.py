@@ -172,19 +172,13 @@ class CheckReport:
     def summary(self) -> dict[str, int]:
         """Counts of rows by verdict and of wrong rows by cause."""
         out = {"checked": 0, "ok": 0, "wrong": 0, "slip": 0, "missing": 0, "unchecked": 0,
-               "new": 0, "carried": 0, "findings": len(self.findings)}
+               NEW: 0, CARRIED: 0, SWAPPED: 0, ACCUMULATED: 0, "findings": len(self.findings)}
         for r in self.rows:
-            if r.verdict in (OK, WRONG, SLIP):
+            if r.verdict in (OK, WRONG, SLIP, REFERENCE):
                 out["checked"] += 1
-            if r.verdict == REFERENCE:
-                out["ok"] += 1
-                out["checked"] += 1
-            elif r.verdict in out:
-                out[r.verdict] += 1
-            if r.verdict == WRONG and r.cause in (CARRIED,):
-                out["carried"] += 1
-            elif r.verdict == WRONG:
-                out["new"] += 1
+            out[OK if r.verdict == REFERENCE else r.verdict] += 1
+            if r.verdict == WRONG:
+                out[r.cause if r.cause in out else NEW] += 1
         return out
 
     @property
@@ -229,7 +223,10 @@ class CheckReport:
 
 
 def _num(x: float | None, fmt: str) -> str:
-    return "—" if x is None or not math.isfinite(x) else format(x, fmt)
+    if x is None or not math.isfinite(x):
+        return "—"
+    text = format(x, fmt)
+    return text.replace("-", "+") if text.strip().lstrip("-+").strip("0.") == "" else text
 
 
 def _verdict(v: str, cause: str) -> str:
@@ -250,7 +247,8 @@ def render_text(r: CheckReport) -> str:
     if r.label_distance_mm is not None:
         out.append(f"labels taken within {r.label_distance_mm:.1f} mm of a line end")
     out.append(f"result: {'PASSED' if r.passed else 'FAILED'} — {s['checked']} checked, "
-               f"{s['ok']} ok, {s['wrong']} wrong ({s['new']} new, {s['carried']} carried), "
+               f"{s['ok']} ok, {s['wrong']} wrong ({s['new']} new, {s['carried']} carried, "
+               f"{s['swapped']} by swapped labels, {s['accumulated']} by small errors adding up), "
                f"{s['slip']} arithmetic slip(s), {s['missing']} not on the submission")
     for p in r.plans:
         out.append("")

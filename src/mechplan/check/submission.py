@@ -64,6 +64,16 @@ class SheetText:
     where: str
     layer: str = ""
     anchor: Point = (0.0, 0.0)     # insertion (or alignment) point
+    half: tuple[float, float] = (0.0, 0.0)   # half width and height of the text box (mm)
+    rotation: float = 0.0          # degrees
+
+    def distance(self, p: Point) -> float:
+        """Distance from a point to the text's box (0 inside it)."""
+        a = math.radians(self.rotation)
+        dx, dy = p[0] - self.centre[0], p[1] - self.centre[1]
+        u = dx * math.cos(a) + dy * math.sin(a)
+        v = -dx * math.sin(a) + dy * math.cos(a)
+        return math.hypot(max(abs(u) - self.half[0], 0.0), max(abs(v) - self.half[1], 0.0))
 
 
 @dataclass(frozen=True, slots=True)
@@ -256,7 +266,10 @@ _H_FRAC = {"LEFT": 0.0, "CENTER": -0.5, "RIGHT": -1.0, "MIDDLE": -0.5}
 _V_FRAC = {"BASELINE": 0.0, "BOTTOM": 0.0, "MIDDLE": -0.5, "TOP": -1.0}
 
 
-def _text_box(e: Any, scale: float) -> tuple[str, Point, float, Point]:
+Box = tuple[str, Point, float, Point, tuple[float, float], float]
+
+
+def _text_box(e: Any, scale: float) -> Box:
     plain = clean_text(e.dxf.text, mtext=False)
     h = float(e.dxf.get("height", 2.5)) or 2.5
     wf = float(e.dxf.get("width", 1.0)) or 1.0
@@ -272,7 +285,8 @@ def _text_box(e: Any, scale: float) -> tuple[str, Point, float, Point]:
         n = math.hypot(ux, uy) or 1.0
         cx = (insert.x + end.x) / 2 - uy / n * h / 2
         cy = (insert.y + end.y) / 2 + ux / n * h / 2
-        return plain, (cx * scale, cy * scale), h * scale, (insert.x * scale, insert.y * scale)
+        return (plain, (cx * scale, cy * scale), h * scale, (insert.x * scale, insert.y * scale),
+                (n / 2 * scale, h / 2 * scale), math.degrees(math.atan2(uy, ux)))
     anchor = insert
     if name != "LEFT" and e.dxf.hasattr("align_point"):
         anchor = ocs.to_wcs(e.dxf.align_point)
@@ -286,10 +300,11 @@ def _text_box(e: Any, scale: float) -> tuple[str, Point, float, Point]:
     lx, ly = (hx + 0.5) * w, (vy + 0.5) * h
     cx = anchor.x + lx * math.cos(rot) - ly * math.sin(rot)
     cy = anchor.y + lx * math.sin(rot) + ly * math.cos(rot)
-    return plain, (cx * scale, cy * scale), h * scale, (anchor.x * scale, anchor.y * scale)
+    return (plain, (cx * scale, cy * scale), h * scale, (anchor.x * scale, anchor.y * scale),
+            (w / 2 * scale, h / 2 * scale), math.degrees(rot))
 
 
-def _mtext_box(e: Any, scale: float) -> tuple[str, Point, float, Point]:
+def _mtext_box(e: Any, scale: float) -> Box:
     plain = clean_text(e.text, mtext=True)
     h = float(e.dxf.get("char_height", 2.5)) or 2.5
     lines = plain.splitlines() or [""]
@@ -303,14 +318,15 @@ def _mtext_box(e: Any, scale: float) -> tuple[str, Point, float, Point]:
     ins = e.dxf.insert
     cx = ins.x + lx * math.cos(rot) - ly * math.sin(rot)
     cy = ins.y + lx * math.sin(rot) + ly * math.cos(rot)
-    return plain, (cx * scale, cy * scale), h * scale, (ins.x * scale, ins.y * scale)
+    return (plain, (cx * scale, cy * scale), h * scale, (ins.x * scale, ins.y * scale),
+            (w / 2 * scale, total / 2 * scale), math.degrees(rot))
 
 
-def _add_text(sub: Submission, box: tuple[str, Point, float, Point], e: Any, via: str) -> None:
-    plain, centre, h, anchor = box
+def _add_text(sub: Submission, box: Box, e: Any, via: str) -> None:
+    plain, centre, h, anchor, half, rot = box
     if plain and _finite(*centre):
         sub.texts.append(SheetText(plain, centre, h, _where(e, via), e.dxf.get("layer", ""),
-                                   anchor))
+                                   anchor, half, rot))
 
 
 # -- "name = value" texts ------------------------------------------------------------------------

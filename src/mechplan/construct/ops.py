@@ -6,13 +6,23 @@ Each evaluator returns ``(value, gap, sine)``; ``gap``/``sine`` are None unless 
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
 from ..geom import meet
-from ..geom.vec import (Array, angle_of, as_complex, cross, direction, dot, from_complex, norm, perp,
-                        rotate)
+from ..geom.vec import (
+    Array,
+    angle_of,
+    as_complex,
+    cross,
+    direction,
+    dot,
+    from_complex,
+    norm,
+    perp,
+    rotate,
+)
 from .step import Op, Step
 
 Result = tuple[Array, Array | None, Array | None]

@@ -99,6 +99,51 @@ TEXT: dict[Op, dict[str, str]] = {
     Op.ANGLE_PLUS: {"en": "{label} = {v}", "ru": "{label} = {v}", "vi": "{label} = {v}", "zh": "{label} = {v}"},
 }
 
+_FORCE_TEXT = {
+    "FORCE_INERTIA": ("Inertia force {label} = −m·a_S = {v}", "Сила инерции {label} = −m·a_S = {v}",
+                      "Lực quán tính {label} = −m·a_S = {v}", "惯性力 {label} = −m·a_S = {v}"),
+    "MOMENT_INERTIA": ("Inertia couple {label} = −J_S·ε = {v}", "Момент сил инерции {label} = −J_S·ε = {v}",
+                       "Mômen lực quán tính {label} = −J_S·ε = {v}", "惯性力偶矩 {label} = −J_S·ε = {v}"),
+    "INERTIA_OFFSET": ("Offset of the single inertia force {label} = |M_q|/|Q| = {v}",
+                       "Плечо переноса силы инерции {label} = |M_q|/|Q| = {v}",
+                       "Độ lệch của lực quán tính {label} = |M_q|/|Q| = {v}",
+                       "惯性力的偏移 {label} = |M_q|/|Q| = {v}"),
+    "FORCE_LOAD": ("Load {label} = {v}", "Нагрузка {label} = {v}", "Tải trọng {label} = {v}",
+                   "载荷 {label} = {v}"),
+    "MOMENT_SUM": ("{label}: moments about {0} of the known loads on link {1} = {v}",
+                   "{label}: сумма моментов известных сил звена {1} относительно точки {0} = {v}",
+                   "{label}: tổng mômen các lực đã biết của khâu {1} đối với điểm {0} = {v}",
+                   "{label}：构件 {1} 上已知力对 {0} 点之矩 = {v}"),
+    "MOMENT_ARM_TANGENTIAL": ("From the moment equation about {1}: {label} = {v}",
+                              "Из уравнения моментов относительно точки {1}: {label} = {v}",
+                              "Từ phương trình mômen đối với điểm {1}: {label} = {v}",
+                              "由对 {1} 点的力矩方程：{label} = {v}"),
+    "MOMENT_CLOSE": ("{label} = {v}", "{label} = {v}", "{label} = {v}", "{label} = {v}"),
+    "FORCE_SUM": ("Lay off {m}", "Откладываем {m}", "Đặt {m}", "依次作 {m}"),
+    "FORCE_LINE": ("Through {0} draw a line {1}", "Через точку {0} проводим прямую {1}",
+                   "Qua {0} kẻ đường thẳng {1}", "过 {0} 作直线 {1}"),
+    "FORCE_CLOSE": ("Lines {0} and {1} meet at {label}{m}", "Прямые {0} и {1} пересекаются в точке {label}{m}",
+                    "Các đường {0} và {1} cắt nhau tại {label}{m}", "直线 {0} 与 {1} 交于 {label}{m}"),
+    "DIFFERENCE": ("{label} = {v}", "{label} = {v}", "{label} = {v}", "{label} = {v}"),
+    "FORCE_REVERSE": ("{label} = −{0}", "{label} = −{0}", "{label} = −{0}", "{label} = −{0}"),
+    "GUIDE_OFFSET": ("The line of action of the guide reaction crosses {2} at {label} = {v} from {0}",
+                     "Линия действия реакции направляющей пересекает {2} на расстоянии {label} = {v} от {0}",
+                     "Đường tác dụng của phản lực dẫn hướng cắt {2} cách {0} một đoạn {label} = {v}",
+                     "导路反力作用线与 {2} 交于距 {0} {label} = {v} 处"),
+    "BALANCING_MOMENT": ("Balancing moment {label} = {v}", "Уравновешивающий момент {label} = {v}",
+                         "Mômen cân bằng {label} = {v}", "平衡力矩 {label} = {v}"),
+    "ZHUKOVSKY": ("Zhukovsky's lever (velocity plan turned by 90°): {label} = {v}",
+                  "Рычаг Жуковского (план скоростей, повёрнутый на 90°): {label} = {v}",
+                  "Đòn Giucôpxki (họa đồ vận tốc quay 90°): {label} = {v}",
+                  "儒可夫斯基杠杆（速度图转 90°）：{label} = {v}"),
+}
+for _name, _texts in _FORCE_TEXT.items():
+    if hasattr(Op, _name):
+        TEXT[getattr(Op, _name)] = dict(zip(("en", "ru", "vi", "zh"), _texts))
+#: force-plan steps that say nothing a reader needs (drawn, not written)
+SILENT = {getattr(Op, n) for n in ("LINE_OF_ACTION",) if hasattr(Op, n)}
+_OFFSETS = {getattr(Op, n) for n in ("GUIDE_OFFSET", "INERTIA_OFFSET") if hasattr(Op, n)}
+
 UNITS = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
 MM = {"en": "mm", "ru": "мм", "vi": "mm", "zh": "mm"}
 
@@ -108,7 +153,19 @@ def pole_label(label: str, lang: str) -> str:
     return label.replace("π", "p′") if lang == "zh" else label
 
 
+def _vector_text(value: np.ndarray, lang: str) -> str:
+    mag = float(np.hypot(*value))
+    text = f"{format_number(mag, 1, lang)} N"
+    if float(f"{mag:.1f}") != 0:
+        text += f" ∠ {format_number(math.degrees(math.atan2(value[1], value[0])), 1, lang)}°"
+    return text
+
+
 def _scalar_text(step: Step, value: float, lang: str) -> str:
+    if step.plan is Plan.FORCE:
+        if step.op in _OFFSETS:
+            return f"{format_number(value * 1000, 1, lang)} {MM[lang]}"
+        return f"{format_number(value, 2, lang)} N·m"
     if step.op in (Op.CRANK_ANGLE, Op.ANGLE_OF, Op.ANGLE_PLUS, Op.CARRIER_ANGLE) or step.label.startswith("θ"):
         return f"{format_number(math.degrees(value), 2, lang)}°"
     unit = "rad/s" if step.plan is Plan.VELOCITY else "rad/s²"
@@ -136,10 +193,16 @@ def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
     segs = [s for s in c.segments if s.end == step.id and s.plan is step.plan]
     m = "; ".join(measured(s, ev, k, mu.get(s.plan, 1.0), lang) for s in segs)
     value = ev[step.id]
-    v = _scalar_text(step, float(value[k]), lang) if value.ndim == 1 else ""
+    if value.ndim == 1:
+        v = _scalar_text(step, float(value[k]), lang)
+    elif step.plan is Plan.FORCE and value.ndim == 2:
+        v = _vector_text(value[k], lang)
+    else:
+        v = ""
     templates = TEXT.get(step.op)
     fields = dict(label=pole_label(step.label, lang), m=(": " + m) if m and step.op in (
-        Op.LINE_LINE, Op.SIMILAR_IMAGE, Op.RIGID_VELOCITY, Op.RIGID_ACCELERATION) else m, v=v,
+        Op.LINE_LINE, Op.SIMILAR_IMAGE, Op.RIGID_VELOCITY, Op.RIGID_ACCELERATION,
+        getattr(Op, "FORCE_CLOSE", Op.LINE_LINE)) else m, v=v,
         pole="p" if step.plan is Plan.VELOCITY else pole_label("π", lang), a="", b="")
     if step.op is Op.SIMILAR_IMAGE:
         a_lbl, b_lbl = (pole_label(c[i].label, lang) for i in step.inputs[:2])
@@ -154,6 +217,7 @@ def protocol(c: Construction, ev: Evaluation, k: int, lang: str, mu: dict[Plan, 
     """(plan, label, sentence) for every evaluated step of the given plans at position k."""
     out = []
     for step in c:
-        if step.plan in plans and step.id in ev.values and step.op is not Op.FIXED_POINT:
+        if step.plan in plans and step.id in ev.values and step.op is not Op.FIXED_POINT \
+                and step.op not in SILENT:
             out.append((step.plan, pole_label(step.label, lang), sentence(c, step, ev, k, lang, mu)))
     return out

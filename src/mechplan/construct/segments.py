@@ -19,6 +19,8 @@ class SegmentKind(enum.Enum):
     CORIOLIS = "coriolis"        # Coriolis component 2ωv_rel
     SLIDING = "sliding"          # relative sliding velocity / acceleration along a guide
     DRIVE = "drive"              # the driving vector
+    FORCE = "force"              # a known force laid head to tail on a force polygon
+    REACTION = "reaction"        # a reaction read off a closed force polygon
 
 
 @dataclass(frozen=True, slots=True)

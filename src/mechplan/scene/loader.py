@@ -65,8 +65,10 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
         raise TopologyError(exc.detail, file=file, key=exc.key) from None
     all_points = {p for link in links.values() for p in link.points}
     positions = _positions(top, drive, all_points, links)
-    plans, interest = _analysis(top, all_points)
     masses = _masses(top, links)
+    plans, interest = _analysis(top, all_points)
+    if not top.has("analysis") and (masses or top.raw("loads")):
+        plans = (*plans, "force")      # a scene with masses or loads asks for its forces
     return Scene(
         path=file, title=top.string("title", Path(file).stem) or "", language=language or "en",
         mechanism=mech, positions=positions, plans=plans, points_of_interest=interest,

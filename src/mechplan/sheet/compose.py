@@ -84,10 +84,15 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
                             mu[Plan.POSITION], lang, title, numbers)]
     for k in highlight:
         phi_deg = math.degrees(float(sol.phi[k]))
-        for plan in (Plan.VELOCITY, Plan.ACCELERATION, Plan.FORCE):
+        for plan in (Plan.VELOCITY, Plan.ACCELERATION):
             if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
                 panels.append(vector_plan(c, ev_all, k, plan, mu[plan], lang,
                                           plan_title(plan, lang, k, phi_deg)))
+        if "force" in sol.plans:
+            groups = list(dict.fromkeys(s.group for s in c.segments if s.plan is Plan.FORCE))
+            for group in groups:
+                panels.append(vector_plan(c, ev_all, k, Plan.FORCE, mu[Plan.FORCE], lang,
+                                          plan_title(Plan.FORCE, lang, k, phi_deg, group), group))
     return panels
 
 
@@ -155,48 +160,79 @@ def scale_field(mu_l: float) -> str:
     return f"1:{r:g}" if r >= 1 else f"{1 / r:g}:1"
 
 
-def compose_sheet(sol: Solution, size: str | None = None, standard: str | None = None,
-                  lang: str | None = None, name: str = "sheet") -> Sheet:
-    """Lay out the plans of a solution on a framed sheet; shrink free scales until they fit."""
+def compose_sheets(sol: Solution, size: str | None = None, standard: str | None = None,
+                   lang: str | None = None, name: str = "sheet") -> list[Sheet]:
+    """Lay out the plans of a solution on framed sheets.
+
+    Everything goes on one sheet when it fits; otherwise the force analysis gets a second sheet, as
+    course projects do. Free scale factors shrink by round steps until their plans fit; scale
+    factors fixed by the scene never change.
+    """
     scene = sol.scene
     lang = lang or scene.language
     size = size or scene.drawing.sheet
     standard = standard or scene.drawing.standard
-    fixed = {Plan.POSITION: "mu_l", Plan.VELOCITY: "mu_v", Plan.ACCELERATION: "mu_a",
-             Plan.FORCE: "mu_F"}
     frame = make_frame(size, standard, {"title": scene.title}, language=lang)
     short_side = min(frame.frame.width, frame.frame.height)
-    # free scale factors start large (each plan about 40 % of the sheet's short side, solve chose
-    # 120 mm) and shrink by one round step until everything fits
+    # free scale factors start large (a vector plan about 40 % of the sheet's short side) and
+    # shrink by one round step at a time until everything fits
     drawn = plan_positions(sol)
-    mu = {plan: sol.scales.get(plan, 1.0) if key in scene.drawing.scales or plan is Plan.POSITION
-          else round_scale(_largest(sol, plan, drawn) / (0.4 * short_side))
-          for plan, key in fixed.items()}
+    mu0 = {plan: sol.scales.get(plan, 1.0) if key in scene.drawing.scales
+           else round_scale(_largest(sol, plan, drawn) / (0.4 * short_side))
+           for plan, key in FIXED.items()}
     if "mu_l" not in scene.drawing.scales:
-        mu[Plan.POSITION] = round_scale(sol.scales.get(Plan.POSITION, 1.0) * 150.0 / (0.45 * short_side))
+        mu0[Plan.POSITION] = round_scale(sol.scales.get(Plan.POSITION, 1.0) * 150.0 / (0.45 * short_side))
+    for split in (False, True):
+        sheets = _fit(sol, dict(mu0), size, standard, lang, name, split)
+        if sheets is not None:
+            return sheets
+    fixed = ", ".join(f"{k} = {mu0[p]:g}" for p, k in FIXED.items() if k in scene.drawing.scales)
+    raise DrawingError(f"the plans do not fit on {size} sheets at the scale factors "
+                       f"{fixed or 'chosen'}; use a larger sheet (--sheet A0) or larger scale "
+                       "factors in [drawing.scales]", file=scene.path)
+
+
+FIXED = {Plan.POSITION: "mu_l", Plan.VELOCITY: "mu_v", Plan.ACCELERATION: "mu_a", Plan.FORCE: "mu_F"}
+
+
+def _fit(sol: Solution, mu: dict[Plan, float], size: str, standard: str, lang: str, name: str,
+         split: bool) -> list[Sheet] | None:
+    scene = sol.scene
+    free = [p for p, key in FIXED.items() if key not in scene.drawing.scales]
     for _ in range(40):
-        fields = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION])}
-        fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
-        frame = make_frame(size, standard, fields, language=lang)
         panels = _panels(sol, mu, lang)
-        offsets, failed = _pack(panels, packing_area(frame))
-        if failed is None:
+        if split and any(_plan_of(p) is Plan.FORCE for p in panels):
+            parts = [[p for p in panels if _plan_of(p) is not Plan.FORCE],
+                     [p for p in panels if _plan_of(p) is Plan.FORCE]]
+        elif split:
+            return None
+        else:
+            parts = [panels]
+        sheets: list[Sheet] = []
+        failed_panel = None
+        for i, part in enumerate(parts):
+            fields = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION]),
+                      "sheet_number": str(i + 1), "sheets_total": str(len(parts))}
+            fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
+            frame = make_frame(size, standard, fields, language=lang)
+            offsets, failed = _pack(part, packing_area(frame))
+            if failed is not None:
+                failed_panel = part[failed]
+                break
             prims: list[Primitive] = []
-            for panel, (dx, dy) in zip(panels, offsets):
+            for panel, (dx, dy) in zip(part, offsets):
                 for p in panel.primitives:
                     moved = _moved(p, dx, dy)
                     prims.extend(moved.expand() if isinstance(moved, Table) else (moved,))
-            return frame.sheet(prims, name)
-        free = [p for p, key in fixed.items() if key not in scene.drawing.scales]
-        if not free:
-            break
-        # shrink the plan that did not fit, or else the largest free one
-        failed_plan = _plan_of(panels[failed])
-        if failed_plan not in free:
-            failed_plan = max(free, key=lambda p: max((_area(q) for q in panels if _plan_of(q) is p),
-                                                      default=0.0))
-        mu[failed_plan] = round_scale(mu[failed_plan] * 1.0001 * 1.25)
-    raise DrawingError(f"the plans do not fit on a {size} sheet at the scale factors "
-                       f"{', '.join(f'{k} = {mu[p]:g}' for p, k in fixed.items() if k in scene.drawing.scales) or 'chosen'}; "
-                       "use a larger sheet (--sheet A0) or larger scale factors in [drawing.scales]",
-                       file=scene.path)
+            sheets.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
+        if failed_panel is None:
+            return sheets
+        plan = _plan_of(failed_panel)
+        if plan not in free:
+            in_part = {_plan_of(p) for p in parts[0 if failed_panel in parts[0] else -1]} & set(free)
+            if not in_part:
+                return None
+            plan = max(in_part, key=lambda q: max((_area(x) for x in panels if _plan_of(x) is q),
+                                                  default=0.0))
+        mu[plan] = round_scale(mu[plan] * 1.0001 * 1.25)
+    return None

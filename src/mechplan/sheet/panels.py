@@ -101,11 +101,19 @@ def _finite(*pts: tuple[float, float]) -> bool:
 
 
 def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, lang: str,
-                title: str) -> Panel:
-    """A velocity, acceleration or force plan at position k: lines, arrows, labels, tables."""
-    panel = Panel(f"{plan.value}-{k}")
+                title: str, group: str | None = None) -> Panel:
+    """A velocity, acceleration or force plan at position k: lines, arrows, labels, tables.
+
+    ``group`` keeps one group's steps only (each force polygon has a pole of its own).
+    """
+    panel = Panel(f"{plan.value}-{k}" + (f"-{group}" if group else ""))
     prims = panel.primitives
-    steps = [s for s in c.of_plan(plan) if s.id in ev.values]
+    steps = [s for s in c.of_plan(plan) if s.id in ev.values and (group is None or s.group == group)]
+    segments = [g for g in c.segments if g.plan is plan and (group is None or g.group == group)]
+    vertex_ops = {Op.POLE, getattr(Op, "FORCE_SUM", Op.POLE), getattr(Op, "FORCE_CLOSE", Op.POLE)}
+    if plan is Plan.FORCE:       # force vectors and lines of action are not polygon vertices
+        steps = [s for s in steps if s.kind is not Kind.POINT or s.op in vertex_ops]
+    meet_ops = {Op.LINE_LINE, getattr(Op, "FORCE_CLOSE", Op.LINE_LINE)}
     pts: dict[str, tuple[float, float]] = {}
     for s in steps:
         if s.kind is Kind.POINT:
@@ -119,7 +127,7 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
         line = ev[s.id][k]
         through = _mm(line[0], mu)
         u = (float(line[1][0]), float(line[1][1]))
-        meet = next((m for m in steps if m.op is Op.LINE_LINE and s.id in m.inputs and m.id in pts), None)
+        meet = next((m for m in steps if m.op in meet_ops and s.id in m.inputs and m.id in pts), None)
         if meet is None or not _finite(through):
             continue
         end = pts[meet.id]
@@ -134,13 +142,13 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
                 if src in pts and math.dist(pts[src], pts[s.id]) > 1e-6:
                     prims.append(Line(pts[src], pts[s.id], Role.THIN))
     # vectors: absolute ones thick, components and relative ones thin
-    for seg in c.segments:
-        if seg.plan is not plan or seg.start not in pts or seg.end not in pts:
+    for seg in segments:
+        if seg.start not in pts or seg.end not in pts:
             continue
         a, b = pts[seg.start], pts[seg.end]
         if math.dist(a, b) < 0.5:
             continue
-        thick = seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE)
+        thick = seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE, SegmentKind.REACTION)
         prims.append(Arrow(a, b, Role.OUTLINE if thick else Role.THIN,
                            head_length_mm=3.5 if thick else 3.0, head_width_mm=1.2 if thick else 1.0))
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
@@ -155,20 +163,20 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
         text = "≡".join(dict.fromkeys(labels))
         anchor = (key[0] / 2, key[1] / 2)
         prims.append(placer.place(anchor, text))
-    _title_and_tables(panel, c, ev, k, plan, mu, lang, title)
+    _title_and_tables(panel, c, ev, k, plan, mu, lang, title, segments, group)
     return panel
 
 
 def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, plan: Plan,
-                      mu: float, lang: str, title: str) -> None:
+                      mu: float, lang: str, title: str, segments: list, group: str | None) -> None:
     x0, y0, x1, y1 = panel.bounds()
     prims = panel.primitives
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(plan, mu, lang), LABEL_H))
     head = HEAD[lang]
     rows: list[tuple[str, ...]] = [(head[0], f"{head[1]}, {MM[lang]}", head[3], f"{head[4]}, {UNIT[plan]}")]
-    for seg in c.segments:
-        if seg.plan is not plan or seg.start not in ev.values or seg.end not in ev.values:
+    for seg in segments:
+        if seg.start not in ev.values or seg.end not in ev.values:
             continue
         length = float(np.hypot(*(ev[seg.end][k] - ev[seg.start][k])))
         if not math.isfinite(length):
@@ -180,10 +188,10 @@ def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, pla
         t = table(rows, (x0, y))
         prims.append(t)
         y -= sum(t.row_heights_mm) + 4.0
-    for (p, group), (eq, terms) in c.equations.items():
-        if p is not plan:
+    for (p, g), (eq, terms) in c.equations.items():
+        if p is not plan or (group is not None and g != group):
             continue
-        prims.append(Text((x0, y - TABLE_H), f"{group}:  {eq}", TABLE_H))
+        prims.append(Text((x0, y - TABLE_H), f"{g}:  {eq}", TABLE_H))
         y -= TABLE_H + 2.5
         t2 = table([(head[5], head[6], head[7])] + [tuple(r) for r in terms], (x0, y))
         prims.append(t2)
@@ -307,7 +315,7 @@ def _pivot(p: tuple[float, float]) -> list[Primitive]:
     return out
 
 
-def plan_title(plan: Plan, lang: str, k: int, phi_deg: float) -> str:
-    """"Họa đồ vận tốc — vị trí 1, φ = 30°"."""
-    return (f"{PLAN_TITLE[plan][lang]} — {POSITION_WORD[lang]} {k}, "
-            f"φ = {format_number(phi_deg, 1, lang)}°")
+def plan_title(plan: Plan, lang: str, k: int, phi_deg: float, group: str | None = None) -> str:
+    """"Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
+    head = PLAN_TITLE[plan][lang] + (f" {group}" if group else "")
+    return f"{head} — {POSITION_WORD[lang]} {k}, φ = {format_number(phi_deg, 1, lang)}°"

@@ -1,0 +1,152 @@
+"""The ``mechplan check`` subcommand."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import re
+import sys
+from pathlib import Path
+from typing import Any
+
+from ..construct.step import Plan
+from ..errors import CheckError, SceneError
+from .report import Tolerance
+
+PLAN_NAMES = {"position": Plan.POSITION, "velocity": Plan.VELOCITY,
+              "acceleration": Plan.ACCELERATION, "force": Plan.FORCE, "l": Plan.POSITION,
+              "v": Plan.VELOCITY, "a": Plan.ACCELERATION, "f": Plan.FORCE}
+TEXT_SUFFIXES = (".txt", ".md", ".log", ".text")
+
+
+def add_parser(subparsers: Any) -> None:
+    """Register ``mechplan check`` on the main parser's subparsers."""
+    p = subparsers.add_parser(
+        "check", help="check a hand-drawn plan (DXF) or a table of values against the exact one",
+        description="Compare a submission with the exact construction: a DXF with the lines "
+        "and labels of the plans, or a TOML/CSV table of measured lengths and values. Exit "
+        "code 0: everything checked is right; 1: something is wrong; 2: unusable input.")
+    p.add_argument("scene", help="the scene (TOML) the submission solves")
+    p.add_argument("submission", help="a .dxf drawing, or a .toml / .csv table")
+    p.add_argument("--at", type=float, metavar="DEG",
+                   help="crank angle φ of the submission in degrees (default: written on the "
+                   "submission, the scene's only position, or the best fit of its positions)")
+    p.add_argument("--tolerance", action="append", default=[], metavar="[PLAN=]SPEC",
+                   help="allowed error: '1mm', '2%%', '1mm,2%%', '1.5deg'; per plan with "
+                   "'velocity=0.5mm,1%%' (default ±1 mm or ±2 %%, whichever is larger)")
+    for key, plan in (("l", "position"), ("v", "velocity"), ("a", "acceleration"),
+                      ("F", "force")):
+        p.add_argument(f"--mu-{key}", metavar="MU", dest=f"mu_{key.lower()}",
+                       help=f"scale factor of the {plan} plan per mm of paper, e.g. "
+                       + {"l": "'0.002 m/mm'", "v": "'0.1 m/s/mm'", "a": "'2 (m/s^2)/mm'",
+                          "F": "'100 N/mm'"}[key] + " (overrides the sheet)")
+    p.add_argument("--label-distance", type=float, metavar="MM",
+                   help="how far (mm) a label may stand from its point (default: twice the "
+                   "text height, 3…10 mm)")
+    p.add_argument("--snap", type=float, default=0.5, metavar="MM",
+                   help="line ends closer than this (mm) are one point (default 0.5)")
+    p.add_argument("-o", "--output", action="append", default=[], metavar="FILE",
+                   help="write the report: .json, .txt, or an overlay sheet .svg / .dxf / .pdf "
+                   "(may be repeated)")
+    p.add_argument("--json", action="store_true", help="print the report as JSON")
+    p.set_defaults(func=run)
+
+
+def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
+    """'1mm,2%' → default; 'velocity=0.5mm' → per plan (unset parts keep the defaults)."""
+    out: dict[Plan | None, Tolerance] = {}
+    for spec in specs:
+        plan: Plan | None = None
+        body = spec
+        m = re.match(r"^\s*([A-Za-z]+)\s*[=:]\s*(.*)$", spec)
+        if m:
+            name = m.group(1).lower()
+            if name not in PLAN_NAMES:
+                raise CheckError(f"--tolerance {spec!r}: unknown plan {m.group(1)!r}; plans are "
+                                 "position, velocity, acceleration, force")
+            plan, body = PLAN_NAMES[name], m.group(2)
+        base = out.get(plan) or out.get(None) or Tolerance()
+        mm, pct, deg = base.mm, base.pct, base.deg
+        parts = [x for x in re.split(r"[,\s;]+", body.strip()) if x]
+        if not parts:
+            raise CheckError(f"--tolerance {spec!r}: expected '1mm', '2%', '1.5deg' or a list "
+                             "of them")
+        for part in parts:
+            pm = re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(mm|%|deg|°)", part.lower())
+            if not pm:
+                raise CheckError(f"--tolerance {spec!r}: cannot read {part!r}; write it like "
+                                 "'1mm', '2%' or '1.5deg'")
+            value = float(pm.group(1).replace(",", "."))
+            unit = pm.group(2)
+            if unit == "mm":
+                mm = value
+            elif unit == "%":
+                pct = value
+            else:
+                deg = value
+        out[plan] = Tolerance(mm, pct, deg)
+    return out
+
+
+def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
+    """Scale factors given on the command line."""
+    from ..units import parse_quantity
+    from .labels import MU_DIMENSION
+    from .points import units_ascii
+
+    out: dict[Plan, float] = {}
+    for key, plan in (("l", Plan.POSITION), ("v", Plan.VELOCITY), ("a", Plan.ACCELERATION),
+                      ("f", Plan.FORCE)):
+        text = getattr(args, f"mu_{key}", None)
+        if text is None:
+            continue
+        try:
+            value = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
+        except SceneError as exc:
+            raise CheckError(f"--mu-{key.upper() if key == 'f' else key} {text!r}: "
+                             f"{exc.detail}") from None
+        if not value > 0:
+            raise CheckError(f"--mu-{key} must be positive (got {text!r})")
+        out[plan] = value
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run a check; print the report; write the requested files. 0 passed, 1 errors found."""
+    from .grade import Options, check
+    from .overlay import write_overlay
+
+    outputs = [Path(o) for o in args.output]
+    for o in outputs:
+        if o.suffix.lower() not in (".json", ".svg", ".dxf", ".pdf", *TEXT_SUFFIXES):
+            raise CheckError(f"-o {o}: the report is written as .json, .txt, or an overlay "
+                             ".svg / .dxf / .pdf")
+    if args.label_distance is not None and not args.label_distance > 0:
+        raise CheckError(f"--label-distance must be positive (got {args.label_distance})")
+    if not args.snap >= 0:
+        raise CheckError(f"--snap must not be negative (got {args.snap})")
+    options = Options(at_deg=args.at, tolerance=parse_tolerances(args.tolerance),
+                      mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
+    report = check(args.scene, args.submission, options)
+    doc = report.to_json()
+    for o in outputs:
+        suffix = o.suffix.lower()
+        if suffix == ".json":
+            _write(o, (json.dumps(doc, ensure_ascii=False, indent=1) + "\n").encode("utf-8"))
+        elif suffix in TEXT_SUFFIXES:
+            _write(o, (report.text() + "\n").encode("utf-8"))
+        else:
+            write_overlay(report, o)
+    if args.json:
+        print(json.dumps(doc, ensure_ascii=False, indent=1))
+    else:
+        print(report.text())
+    for o in outputs:
+        print(f"wrote {o}", file=sys.stderr)
+    return 0 if report.passed else 1
+
+
+def _write(path: Path, data: bytes) -> None:
+    from .overlay import _write_atomic
+
+    _write_atomic(path, data)
