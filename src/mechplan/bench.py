@@ -30,6 +30,7 @@ import tempfile
 import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import asdict, dataclass, field
+from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from types import ModuleType
 from typing import Any
@@ -799,9 +800,8 @@ def machine() -> dict[str, str]:
             "python": platform.python_version(), "numpy": np.__version__}
     for mod in ("mpmath", "numba", "pylinkage", "mechanism", "scipy"):
         try:
-            from importlib.metadata import version
             info[mod] = version(mod)
-        except Exception:
+        except PackageNotFoundError:
             info[mod] = "not installed"
     return info
 

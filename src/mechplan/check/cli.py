@@ -43,8 +43,8 @@ def add_parser(subparsers: Any) -> None:
     p.add_argument("--label-distance", type=float, metavar="MM",
                    help="how far (mm) a label may stand from its point (default: twice the "
                    "text height, 3…10 mm)")
-    p.add_argument("--snap", type=float, default=0.5, metavar="MM",
-                   help="line ends closer than this (mm) are one point (default 0.5)")
+    p.add_argument("--snap", type=float, default=0.2, metavar="MM",
+                   help="line ends closer than this (mm) are one point (default 0.2)")
     p.add_argument("-o", "--output", action="append", default=[], metavar="FILE",
                    help="write the report: .json, .txt, or an overlay sheet .svg / .dxf / .pdf "
                    "(may be repeated)")

@@ -47,7 +47,7 @@ class Options:
     tolerance: dict[Plan | None, Tolerance] = field(default_factory=dict)
     mu: dict[Plan, float] = field(default_factory=dict)
     label_distance: float | None = None
-    snap: float = 0.5
+    snap: float = 0.2
     lang: str = "en"
 
     def tol(self, plan: Plan | None) -> Tolerance:

@@ -214,7 +214,7 @@ def _is_label_text(t: SheetText) -> bool:
 
 
 def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | None = None,
-               label_distance: float | None = None, snap: float = 0.5) -> DrawnSheet:
+               label_distance: float | None = None, snap: float = 0.2) -> DrawnSheet:
     """Find the labelled points of a sheet and group them into plans."""
     notes: list[Note] = []
     mu_given = mu_given or {}
@@ -346,7 +346,7 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
             for d, i in near:
                 row[col[i]] = d
             # sharing a point with another label (p ≡ o1) costs more than a point of its own
-            row[len(columns) + r] = (near[0][0] + 2 * tol) if near else big
+            row[len(columns) + r] = (near[0][0] + 0.5 * tol) if near else big
             cost.append(row)
         pick = _assign(cost)
         for r, lb in enumerate(labels):

@@ -139,6 +139,14 @@ def read_dxf(path: Path) -> Submission:
     from ezdxf import recover
 
     sub = Submission(str(path), "dxf")
+    raw = path.read_bytes()
+    if not raw.strip():
+        raise CheckError("the file is empty; expected a DXF drawing", file=str(path))
+    truncated = not raw.startswith(b"AutoCAD Binary DXF") and \
+        raw.rstrip()[-3:].upper() != b"EOF"
+    if truncated:
+        sub.notes.append(Note("warning", "the file ends early (no EOF marker): it may be "
+                              "truncated; what could be read is checked", str(path)))
     try:
         doc, auditor = recover.readfile(str(path))
     except ezdxf.DXFStructureError as exc:
@@ -169,25 +177,52 @@ def read_dxf(path: Path) -> Submission:
     else:
         sub.units = INSUNITS_NAME[code] + ("" if code == 4 else f" (× {scale:g} mm)")
     msp = doc.modelspace()
-    _collect(sub, msp, scale, depth=0)
+    _collect(sub, msp, 1.0, depth=0)
     if not sub.lines:
         for layout in doc.layouts:
             if layout.name.lower() == "model":
                 continue
-            _collect(sub, layout, scale, depth=0)
+            _collect(sub, layout, 1.0, depth=0)
             if sub.lines:
                 sub.notes.append(Note("info", f"model space is empty; read layout '{layout.name}'",
                                       str(path)))
                 break
+    xs = [v for ln in sub.lines for v in (ln.start[0], ln.end[0])]
+    ys = [v for ln in sub.lines for v in (ln.start[1], ln.end[1])]
+    extent = max(max(xs) - min(xs), max(ys) - min(ys)) if xs else 0.0
+    if scale != 1.0 and extent * scale > SHEET_MAX_MM and extent <= SHEET_MAX_MM:
+        sub.notes.append(Note("warning", f"the drawing units say {INSUNITS_NAME.get(code, code)}, "
+                              f"but the drawing would then be {extent * scale / 1000:.1f} m "
+                              f"across; it is read in millimetres ({extent:.0f} mm across)",
+                              str(path)))
+        sub.units = f"{INSUNITS_NAME.get(code, code)} in the header, read as millimetres"
+        scale = 1.0
+    if scale != 1.0:
+        _rescale(sub, scale)
     if not sub.lines and not sub.texts:
-        raise CheckError("the DXF holds no lines and no texts in model space; expected the lines "
-                         "of a plan (LINE, LWPOLYLINE, POLYLINE) with TEXT/MTEXT labels",
-                         file=str(path))
+        raise CheckError("the DXF holds no lines and no texts in model space"
+                         + (" (the file ends early: it may be truncated)" if truncated else "")
+                         + "; expected the lines of a plan (LINE, LWPOLYLINE, POLYLINE) with "
+                         "TEXT/MTEXT labels", file=str(path))
     for text in sub.texts:
         for i, line in enumerate(text.text.splitlines(), start=1):
             where = text.where + (f", line {i}" if "\n" in text.text else "")
             sub.entries.extend(parse_assignments(line, where, at=text.centre))
     return sub
+
+
+#: a plan drawn on paper is smaller than an A0 sheet's long side with margin
+SHEET_MAX_MM = 2000.0
+
+
+def _rescale(sub: Submission, f: float) -> None:
+    def q(p: Point) -> Point:
+        return (p[0] * f, p[1] * f)
+
+    sub.lines = [DrawnLine(q(ln.start), q(ln.end), ln.where, ln.layer) for ln in sub.lines]
+    sub.markers = [(q(p), w) for p, w in sub.markers]
+    sub.texts = [SheetText(t.text, q(t.centre), t.height * f, t.where, t.layer, q(t.anchor),
+                           (t.half[0] * f, t.half[1] * f), t.rotation) for t in sub.texts]
 
 
 def _where(e: Any, extra: str = "") -> str:

@@ -162,6 +162,12 @@ def scale_field(mu_l: float) -> str:
 
 def compose_sheets(sol: Solution, size: str | None = None, standard: str | None = None,
                    lang: str | None = None, name: str = "sheet") -> list[Sheet]:
+    """The sheets of :func:`compose`."""
+    return compose(sol, size, standard, lang, name).sheets
+
+
+def compose(sol: Solution, size: str | None = None, standard: str | None = None,
+            lang: str | None = None, name: str = "sheet") -> Composition:
     """Lay out the plans of a solution on framed sheets.
 
     Everything goes on one sheet when it fits; otherwise the force analysis gets a second sheet, as
@@ -183,9 +189,9 @@ def compose_sheets(sol: Solution, size: str | None = None, standard: str | None 
     if "mu_l" not in scene.drawing.scales:
         mu0[Plan.POSITION] = round_scale(sol.scales.get(Plan.POSITION, 1.0) * 150.0 / (0.45 * short_side))
     for split in (False, True):
-        sheets = _fit(sol, dict(mu0), size, standard, lang, name, split)
-        if sheets is not None:
-            return sheets
+        composition = _fit(sol, dict(mu0), size, standard, lang, name, split)
+        if composition is not None:
+            return composition
     fixed = ", ".join(f"{k} = {mu0[p]:g}" for p, k in FIXED.items() if k in scene.drawing.scales)
     raise DrawingError(f"the plans do not fit on {size} sheets at the scale factors "
                        f"{fixed or 'chosen'}; use a larger sheet (--sheet A0) or larger scale "
@@ -195,8 +201,17 @@ def compose_sheets(sol: Solution, size: str | None = None, standard: str | None 
 FIXED = {Plan.POSITION: "mu_l", Plan.VELOCITY: "mu_v", Plan.ACCELERATION: "mu_a", Plan.FORCE: "mu_F"}
 
 
+@dataclasses.dataclass(frozen=True)
+class Composition:
+    """Sheets, the panels placed on each (with their offsets) and the scale factors used."""
+
+    sheets: list[Sheet]
+    placements: list[list[tuple[Panel, tuple[float, float]]]]
+    scales: dict[Plan, float]
+
+
 def _fit(sol: Solution, mu: dict[Plan, float], size: str, standard: str, lang: str, name: str,
-         split: bool) -> list[Sheet] | None:
+         split: bool) -> Composition | None:
     scene = sol.scene
     free = [p for p, key in FIXED.items() if key not in scene.drawing.scales]
     for _ in range(40):
@@ -209,6 +224,7 @@ def _fit(sol: Solution, mu: dict[Plan, float], size: str, standard: str, lang: s
         else:
             parts = [panels]
         sheets: list[Sheet] = []
+        placements: list[list[tuple[Panel, tuple[float, float]]]] = []
         failed_panel = None
         for i, part in enumerate(parts):
             fields = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION]),
@@ -219,6 +235,7 @@ def _fit(sol: Solution, mu: dict[Plan, float], size: str, standard: str, lang: s
             if failed is not None:
                 failed_panel = part[failed]
                 break
+            placements.append(list(zip(part, offsets)))
             prims: list[Primitive] = []
             for panel, (dx, dy) in zip(part, offsets):
                 for p in panel.primitives:
@@ -226,7 +243,7 @@ def _fit(sol: Solution, mu: dict[Plan, float], size: str, standard: str, lang: s
                     prims.extend(moved.expand() if isinstance(moved, Table) else (moved,))
             sheets.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
         if failed_panel is None:
-            return sheets
+            return Composition(sheets, placements, dict(mu))
         plan = _plan_of(failed_panel)
         if plan not in free:
             in_part = {_plan_of(p) for p in parts[0 if failed_panel in parts[0] else -1]} & set(free)

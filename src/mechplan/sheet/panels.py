@@ -273,7 +273,7 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
                 ang = g.angle if g.link == "0" else float(ev_all[c.results[f"angle_{lk.id}"]][k])
                 if _finite(p):
                     prims.append(_slider(p, ang))
-        for p in {q for js in joints.values() for q in js}:
+        for p in dict.fromkeys(q for js in joints.values() for q in js):
             if f"pos.{p}" in ev_all.values:
                 q = _mm(ev_all[f"pos.{p}"][k], mu)
                 if _finite(q):
