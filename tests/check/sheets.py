@@ -6,6 +6,7 @@ so the reader is tested against a different writer.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -95,7 +96,7 @@ def write_dxf(path: Path, sol, specs: dict[Plan, PlanSpec], st: Student, *, styl
             for ch in chains:
                 msp.add_lwpolyline([tuple(st.points[(plan, x)]) for x in ch],
                                    dxfattribs={"layer": layer})
-                drawn |= {(a, b) for a, b in zip(ch, ch[1:])}
+                drawn |= {(a, b) for a, b in itertools.pairwise(ch)}
         for a, b in segs:
             if (a, b) in drawn:
                 continue
@@ -149,7 +150,7 @@ def _label(msp, text, at, style, offset, height, i) -> None:
 
 def _mtext_code(text: str) -> str:
     """A label with MTEXT formatting: font, height, and n_CB as a stacked subscript."""
-    if text.startswith("n_") or text.startswith("k_"):
+    if text.startswith(("n_", "k_")):
         return r"{\fArial|b0|i1;" + text[0] + r"\H0.7x;\S^" + text[2:] + ";}"
     return r"{\fArial|b0|i1;" + text + "}"
 

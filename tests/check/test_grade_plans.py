@@ -13,7 +13,7 @@ from mechplan.check.report import CARRIED, NEW, OK, REFERENCE, SLIP, SWAPPED, WR
 from mechplan.construct.step import Plan
 from mechplan.solve import build, crank_positions
 
-from .sheets import (PlanSpec, exact_sheet, move, rotate_about, solved, swap, write_dxf)
+from .sheets import PlanSpec, exact_sheet, move, rotate_about, solved, swap, write_dxf
 
 V, A, P = Plan.VELOCITY, Plan.ACCELERATION, Plan.POSITION
 
@@ -65,7 +65,7 @@ def _specs(sol) -> dict[Plan, PlanSpec]:
 @pytest.mark.parametrize("name, at", ROUND_TRIP, ids=[r[0] for r in ROUND_TRIP])
 @pytest.mark.parametrize("style", ["text", "mixed"])
 def test_round_trip_passes_within_a_hundredth(tmp_path, name, at, style) -> None:
-    scene, sol = solved(name, at)
+    _scene, sol = solved(name, at)
     specs = _specs(sol)
     report = _run(tmp_path, name, at, specs, style=style, arrows=True,
                   polylines=(style == "mixed"))
@@ -139,8 +139,8 @@ def _four_bar_acceleration(sol, st, mu_v: float, mu_a: float) -> None:
     form, independent of the construction engine)."""
     ev = sol.ev
     P_ = {x: ev[f"pos.{x}"][0] for x in "ABCDE"}
-    perp = lambda r: np.array([-r[1], r[0]])  # noqa: E731
-    cross = lambda a, b: a[0] * b[1] - a[1] * b[0]  # noqa: E731
+    perp = lambda r: np.array([-r[1], r[0]])
+    cross = lambda a, b: a[0] * b[1] - a[1] * b[0]
     p0 = st.points[(V, "p")]
     vb, vc = (st.points[(V, "b")] - p0) * mu_v, (st.points[(V, "c")] - p0) * mu_v
     bc, dc = P_["C"] - P_["B"], P_["C"] - P_["D"]
@@ -157,7 +157,7 @@ def _four_bar_acceleration(sol, st, mu_v: float, mu_a: float) -> None:
 
 
 def test_error_carried_into_the_acceleration_plan(tmp_path) -> None:
-    scene, sol = solved("four_bar", 60)
+    _scene, sol = solved("four_bar", 60)
 
     def mutate(st):
         move(st, V, "c", (3.0, -4.0))
@@ -224,7 +224,7 @@ def test_position_plan_error(tmp_path) -> None:
 
 
 def test_arithmetic_slip_on_the_sheet(tmp_path) -> None:
-    scene, sol = solved("four_bar", 60)
+    _scene, sol = solved("four_bar", 60)
     vc = float(np.linalg.norm(sol.ev["vel.C"][0]))
     w2 = abs(float(sol.ev["vel.omega.2"][0]))
     ac = float(np.linalg.norm(sol.ev["acc.C"][0]))

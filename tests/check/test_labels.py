@@ -4,8 +4,14 @@ from __future__ import annotations
 
 import pytest
 
-from mechplan.check.labels import (LabelBook, clean_text, is_angle_name, label_key, mu_plan,
-                                   quantity_key)
+from mechplan.check.labels import (
+    LabelBook,
+    clean_text,
+    is_angle_name,
+    label_key,
+    mu_plan,
+    quantity_key,
+)
 from mechplan.construct.step import Plan
 
 from .sheets import solved

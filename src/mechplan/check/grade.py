@@ -25,12 +25,27 @@ from ..errors import CheckError, MechplanError
 from ..scene.spec import Scene
 from .hints import HintContext, depends_on, rule
 from .labels import LabelBook, PlanKey, is_angle_name, plan_key, plan_name
-from .match import (GivenValue, Interpretation, QuantityIndex, SegmentIndex, TableSegment,
-                    interpret)
+from .match import GivenValue, Interpretation, QuantityIndex, SegmentIndex, TableSegment, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
-from .report import (ACCUMULATED, CARRIED, MISSING, NEW, OK, REFERENCE, SLIP, SWAPPED, UNCHECKED,
-                     WRONG, CheckReport, Finding, PlanReport, PointRow, SegmentRow, Tolerance,
-                     ValueRow)
+from .report import (
+    ACCUMULATED,
+    CARRIED,
+    MISSING,
+    NEW,
+    OK,
+    REFERENCE,
+    SLIP,
+    SWAPPED,
+    UNCHECKED,
+    WRONG,
+    CheckReport,
+    Finding,
+    PlanReport,
+    PointRow,
+    SegmentRow,
+    Tolerance,
+    ValueRow,
+)
 from .submission import Note, Submission, read_submission
 
 SI_UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
@@ -231,7 +246,7 @@ def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]
                               "are not checked", scene.path or ""))
         except MechplanError:
             raise
-        except Exception as exc:   # the force plan is optional: check the rest without it
+        except Exception as exc:  # noqa: BLE001 - the force plan is optional for a check
             notes.append(Note("warning", f"the force plan cannot be built "
                               f"({exc.__class__.__name__}: {exc}); force quantities are not "
                               "checked", scene.path or ""))
@@ -426,7 +441,7 @@ def _classify_points(ctx: _Ctx, d: _Drawn, red: Rederive) -> None:
         d.status[sid] = CARRIED if own_err <= d.tol[sid] else NEW
 
 
-def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan, float | None],
+def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan, float],
                  findings: list[Finding], status: dict[str, str]) -> PlanReport:
     c, dp = ctx.c, d.dp
     tol = ctx.options.tol(dp.plan)
@@ -656,7 +671,7 @@ def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, 
 
 
 # -- tables of lengths -------------------------------------------------------------------------
-def _grade_table_segments(ctx: _Ctx, k: int, mu_all: dict[Plan, float | None],
+def _grade_table_segments(ctx: _Ctx, k: int, mu_all: dict[Plan, float],
                           report: CheckReport) -> list[PlanReport]:
     c = ctx.c
     by_key: dict[PlanKey, list[TableSegment]] = {}
@@ -755,7 +770,7 @@ def _seg_exact(ctx: _Ctx, seg: Segment, k: int) -> float:
 
 # -- named values -------------------------------------------------------------------------------
 def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _Drawn],
-                  red: Rederive, mu_all: dict[Plan, float | None], report: CheckReport) -> None:
+                  red: Rederive, mu_all: dict[Plan, float], report: CheckReport) -> None:
     c = ctx.c
     status: dict[str, str] = {}
     for d in first.values():
@@ -869,13 +884,13 @@ def _value_exact(ctx: _Ctx, q: Any, k: int, notes: list[Note], where: str) -> fl
         return _seg_exact(ctx, q.segment, k)
     if q.extra in ("J_red", "M_red"):
         try:
-            from ..dynamics.reduced import reduced_of
             from ..dynamics import Loading
+            from ..dynamics.reduced import reduced_of
 
             loading = Loading.from_scene(ctx.scene)
             m_red, j_red = reduced_of(ctx.c, ctx.ev, ctx.scene.mechanism, loading)
             return float((j_red if q.extra == "J_red" else m_red)[k])
-        except Exception as exc:   # the dynamics module is optional for a check
+        except Exception as exc:  # noqa: BLE001 - the dynamics module is optional here
             notes.append(Note("warning", f"{q.extra} cannot be computed for this scene "
                               f"({exc.__class__.__name__}: {exc})", where))
             return None
@@ -917,7 +932,7 @@ def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, r
             return abs(own), f"from your plan {st.label} = {abs(own):.4g} {unit}", max(
                 0.01 * abs(gv.value), gv.half_unit)
         # from a table: the relative segment's length × μ / l
-        p, qq, a, b = st.inputs
+        _p, _qq, a, b = st.inputs
         relseg = next((s for s in c.segments if {s.start, s.end} == {a, b}), None)
         ts = table_len.get(id(relseg)) if relseg is not None else None
         m = (ts.mu if ts else None) or mu

@@ -82,14 +82,15 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> str:
         A, B, X = c[pa].label, c[pb].label, c[px].label
         link = link_of_points(ctx.mech, A, B, X)
         link_txt = f" of link {link}" if link else ""
-        P = [_pt(ctx.exact(s)) for s in (pa, pb, px)]
-        cross = (P[1] - P[0])[0] * (P[2] - P[0])[1] - (P[1] - P[0])[1] * (P[2] - P[0])[0]
-        ab = float(np.hypot(*(P[1] - P[0])))
+        pts = [_pt(ctx.exact(s)) for s in (pa, pb, px)]
+        cross = (pts[1] - pts[0])[0] * (pts[2] - pts[0])[1] - \
+            (pts[1] - pts[0])[1] * (pts[2] - pts[0])[0]
+        ab = float(np.hypot(*(pts[1] - pts[0])))
         oa, ob = _pt(ctx.own(ia)), _pt(ctx.own(ib))
         text = (f"by the similarity theorem the image {label} of a point{link_txt} makes the "
                 f"triangle {a_l}{b_l}{label} similar to {A}{B}{X} (same sense of rotation)")
         if ab and abs(cross) <= 1e-9 * ab * ab:
-            t = float(np.dot(P[2] - P[0], P[1] - P[0]) / ab ** 2)
+            t = float(np.dot(pts[2] - pts[0], pts[1] - pts[0]) / ab ** 2)
             seg = ob - oa
             n2 = float(np.dot(seg, seg))
             if n2 > 0:

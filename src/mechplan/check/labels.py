@@ -91,7 +91,7 @@ class LabelBook:
     poles: dict[PlanKey, str] = field(default_factory=dict)
 
     @classmethod
-    def build(cls, c: Construction, mech: Mechanism | None = None) -> "LabelBook":
+    def build(cls, c: Construction, mech: Mechanism | None = None) -> LabelBook:
         """Collect the point steps of every plan with the ways people write their labels."""
         book = cls()
         for step in c:
@@ -166,9 +166,9 @@ class LabelBook:
                 names = split_names(sub, mech)
                 if names and len(names) == 2:
                     self._add(key, letter + label_key(names[1] + names[0]), sid, label, 2)
-                link = _link_of_omega(step.inputs[1]) if len(step.inputs) > 1 else None
-                if link:
-                    self._add(key, f"{letter}{link}", sid, label, 2, "link")
+                link_no = _link_of_omega(step.inputs[1]) if len(step.inputs) > 1 else None
+                if link_no:
+                    self._add(key, f"{letter}{link_no}", sid, label, 2, "link")
                 self._add(key, f"{letter}{i}", sid, label, 2, "ordinal")
                 if len(found) == 1:
                     self._add(key, letter, sid, label, 2)
@@ -178,9 +178,8 @@ class LabelBook:
         raw = text.strip()
         alias = label_key(raw)
         out: list[Candidate] = []
-        for key, table in self.aliases.items():
-            for cand in table.get(alias, []):
-                out.append(cand)
+        for table in self.aliases.values():
+            out.extend(table.get(alias, []))
         if raw == "P":       # an upper-case P is the acceleration pole in several textbooks
             for key, pole in self.poles.items():
                 if key[0] is Plan.ACCELERATION:
@@ -214,7 +213,7 @@ def feature_votes(text: str) -> dict[Plan, int]:
     key = label_key(raw)
     if not key:
         return {}
-    if key.startswith("π") or key.startswith("pi") or key.endswith("'"):
+    if key.startswith(("π", "pi")) or key.endswith("'"):
         return {Plan.ACCELERATION: 2}
     if key[0] in "nk" and len(key) > 1 and raw[0].islower():
         return {Plan.ACCELERATION: 1}

@@ -9,12 +9,23 @@ from dataclasses import dataclass, field
 
 from ..construct.graph import Construction
 from ..construct.segments import Segment
-from ..construct.step import Kind, Op, Plan
+from ..construct.step import Kind, Plan
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
 from ..units import parse_quantity
-from .labels import (MU_DIMENSION, LabelBook, PlanKey, dimension_of, feature_votes,
-                     is_angle_name, label_key, mu_plan, plan_key, quantity_key, split_names)
+from .labels import (
+    MU_DIMENSION,
+    LabelBook,
+    PlanKey,
+    dimension_of,
+    feature_votes,
+    is_angle_name,
+    label_key,
+    mu_plan,
+    plan_key,
+    quantity_key,
+    split_names,
+)
 from .points import LAYER_HINTS, units_ascii
 from .submission import Entry, Note
 
@@ -53,7 +64,7 @@ class TableSegment:
     length_half_unit: float          # half a unit of the last written digit (mm)
     reversed: bool = False
     mu: float | None = None          # μ written on the same row
-    value: "GivenValue | None" = None  # the physical value written with it
+    value: GivenValue | None = None  # the physical value written with it
 
 
 @dataclass

@@ -5,7 +5,6 @@ green, each wrong segment marked in red with its error. SVG (svgwrite), DXF (ezd
 from __future__ import annotations
 
 import io
-import math
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -46,9 +45,10 @@ def marks(report: CheckReport) -> list[Mark]:
         for row in plan.segments:
             if row.verdict not in (WRONG, SLIP):
                 continue
-            a, b = points.get(row.start), points.get(row.end)
-            if a is None or b is None:
+            pa, pb = points.get(row.start), points.get(row.end)
+            if pa is None or pb is None:
                 continue
+            a, b = pa, pb
             out.append(Mark("ERRORS", a, b))
             mid = ((a[0] + b[0]) / 2 + 1.0, (a[1] + b[1]) / 2 + 1.0)
             out.append(Mark("ERRORS", mid, None, _error_text(row), 2.0))

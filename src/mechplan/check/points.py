@@ -17,8 +17,15 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..construct.step import Plan
-from .labels import (Candidate, LabelBook, PlanKey, feature_votes, label_key, mu_plan, plan_key,
-                     plan_name)
+from .labels import (
+    Candidate,
+    LabelBook,
+    PlanKey,
+    feature_votes,
+    label_key,
+    mu_plan,
+    plan_name,
+)
 from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
 
 #: words in layer names that say which plan a drawing is (acceleration before velocity: 加速度)
@@ -384,7 +391,7 @@ def _layer_plan(layer: str) -> Plan | None:
 
 def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook,
            scale_entries: list[tuple[Plan, Entry]], notes: list[Note]) -> list[DrawnPlan]:
-    comp_of = lambda lb: graph.component[lb.node] if lb.node >= 0 else _nearest_component(  # noqa
+    comp_of = lambda lb: graph.component[lb.node] if lb.node >= 0 else _nearest_component(
         lb.at, graph)
     comps: dict[int, list[_Label]] = {}
     for lb in labels:
@@ -512,8 +519,9 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
             else:
                 if len({c.step for c in picks.values()}) == len(picks):
                     chosen.update(picks)
-                    dp.convention = (f"numbered labels ({', '.join(members[i].written for i in numbered)})"
-                                     f" read by {'link number' if convention == 'link' else 'order of construction'}")
+                    how = "link number" if convention == "link" else "order of construction"
+                    written = ", ".join(members[i].written for i in numbered)
+                    dp.convention = f"numbered labels ({written}) read by {how}"
                     break
         else:
             for i in numbered:
@@ -525,8 +533,7 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
     for sid, idx in by_step.items():
         spots = {members[i].at for i in idx}
         if len(spots) > 1:
-            where = "; ".join(f"{members[i].text.where} at ({members[i].at[0]:.1f}, "  # type: ignore
-                              f"{members[i].at[1]:.1f})" for i in idx)
+            where = "; ".join(f"{members[i].text.where} at {_xy(members[i].at)}" for i in idx)
             notes.append(Note("error", f"label '{book.label_of(key, sid)}' appears {len(idx)} times "
                               f"on the {plan_name(key)} plan at different points ({where}); "
                               "it is not used", members[idx[0]].text.where))
@@ -535,6 +542,10 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
         assert lb.at is not None
         dp.points[sid] = LabelledPoint(sid, book.label_of(key, sid), lb.written, lb.at,
                                        lb.text.where, lb.distance, lb.how)
+
+
+def _xy(p: Point | None) -> str:
+    return "(?)" if p is None else f"({p[0]:.1f}, {p[1]:.1f})"
 
 
 def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,

@@ -9,12 +9,14 @@ from __future__ import annotations
 
 import csv
 import io
+import itertools
 import math
 import re
 import tomllib
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any
 
 from ..errors import CheckError
 from .labels import clean_text
@@ -155,7 +157,7 @@ def read_dxf(path: Path) -> Submission:
     except (OSError, UnicodeDecodeError, ValueError, EOFError) as exc:
         raise CheckError(f"cannot read the file as DXF ({exc.__class__.__name__}: {exc})",
                          file=str(path)) from None
-    except Exception as exc:  # ezdxf raises assorted errors on badly damaged files
+    except Exception as exc:  # noqa: BLE001 - ezdxf raises assorted errors on damaged files
         raise CheckError(f"cannot read the file as DXF; it looks damaged "
                          f"({exc.__class__.__name__}: {exc})", file=str(path)) from None
     if auditor.has_errors:
@@ -267,7 +269,7 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
                          via=f" in block '{name}' (INSERT #{e.dxf.handle})")
                 for attrib in getattr(e, "attribs", []):
                     _add_text(sub, _text_box(attrib, scale), attrib, via)
-        except Exception as exc:  # one unreadable entity must not lose the rest of the sheet
+        except Exception as exc:  # noqa: BLE001 - one bad entity must not lose the sheet
             sub.notes.append(Note("warning", f"skipped an unreadable {kind} "
                                   f"({exc.__class__.__name__}: {exc})", _where(e, via)))
 
@@ -290,7 +292,7 @@ def _add_polyline(sub: Submission, pts: list[Point], closed: bool, scale: float,
                   layer: str, bulges: bool) -> None:
     if closed and len(pts) > 2:
         pts = pts + [pts[0]]
-    for i, (a, b) in enumerate(zip(pts, pts[1:]), start=1):
+    for i, (a, b) in enumerate(itertools.pairwise(pts), start=1):
         _add_line(sub, a, b, scale, f"{where}, segment {i}", layer)
     if bulges:
         sub.notes.append(Note("info", "arc segments of the polyline are read as straight chords",
@@ -528,8 +530,11 @@ def read_csv(path: Path) -> Submission:
                                      "'segment', 'name'", file=str(path), key=f"line {lineno}")
                 continue
         if header is not None:
-            get = lambda k: (cells[header[k]] if k in header and header[k] < len(cells)  # noqa: E731
-                             and cells[header[k]] else None)
+            def get(k: str, cells: list[str] = cells, header: dict[str, int] = header
+                    ) -> str | None:
+                i = header.get(k)
+                return cells[i] if i is not None and i < len(cells) and cells[i] else None
+
             name = get("name")
             if not name:
                 sub.notes.append(Note("error", "a row without a name is skipped", where))

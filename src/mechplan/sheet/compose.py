@@ -15,7 +15,7 @@ from ..errors import DrawingError, MechplanError
 from ..model.mechanism import GROUND, PairKind
 from ..solve import Solution
 from .frame import make_frame
-from .panels import Panel, plan_title, position_plan, vector_plan
+from .panels import LEVER_TITLE, Panel, plan_title, position_plan, vector_plan, zhukovsky_lever
 from .primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 
 GAP = 8.0          # mm between panels
@@ -93,6 +93,10 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
             for group in groups:
                 panels.append(vector_plan(c, ev_all, k, Plan.FORCE, mu[Plan.FORCE], lang,
                                           plan_title(Plan.FORCE, lang, k, phi_deg, group), group))
+            lever = zhukovsky_lever(c, ev_all, k, mu[Plan.VELOCITY], lang,
+                                    f"{LEVER_TITLE[lang]} — φ = {phi_deg:.1f}°")
+            if lever is not None:
+                panels.append(lever)
     return panels
 
 

@@ -319,3 +319,64 @@ def plan_title(plan: Plan, lang: str, k: int, phi_deg: float, group: str | None 
     """"Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
     head = PLAN_TITLE[plan][lang] + (f" {group}" if group else "")
     return f"{head} — {POSITION_WORD[lang]} {k}, φ = {format_number(phi_deg, 1, lang)}°"
+
+
+LEVER_TITLE = {"en": "Zhukovsky's lever", "ru": "Рычаг Жуковского", "vi": "Đòn Giucôpxki",
+               "zh": "儒可夫斯基杠杆"}
+
+
+def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: str,
+                    title: str) -> Panel | None:
+    """The velocity plan turned by 90° with every load at the image of its point."""
+    lever = next((s for s in c.of_plan(Plan.FORCE) if s.op is getattr(Op, "ZHUKOVSKY", None)), None)
+    if lever is None or lever.id not in ev.values:
+        return None
+    panel = Panel(f"force-{k}-lever")
+    prims = panel.primitives
+
+    def turned(v: np.ndarray) -> tuple[float, float]:
+        return (-float(v[1]) / mu_v, float(v[0]) / mu_v)
+
+    for seg in c.segments:
+        if seg.plan is Plan.VELOCITY and seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE) \
+                and seg.start in ev.values and seg.end in ev.values:
+            a, b = turned(ev[seg.start][k]), turned(ev[seg.end][k])
+            if _finite(a, b) and math.dist(a, b) > 0.5:
+                prims.append(Line(a, b, Role.THIN))
+    layout = lever.param("layout", "")
+    inputs = list(lever.inputs[1:])
+    forces: list[tuple[tuple[float, float], np.ndarray, str]] = []
+    couples: list[str] = []
+    for kind in layout:
+        if kind == "F":
+            img, force = inputs[0], inputs[1]
+            inputs = inputs[2:]
+            forces.append((turned(ev[img][k]), ev[force][k], c[force].label))
+        else:
+            couple, omega = inputs[0], inputs[1]
+            inputs = inputs[2:]
+            couples.append(f"{c[couple].label} = {format_number(float(ev[couple][k]), 2, lang)} N·m")
+    largest = max((float(np.hypot(*f)) for _, f, _ in forces), default=0.0)
+    if largest > 0:
+        from ..construct.scale import choose_scale
+        mu_f = choose_scale(largest, 40.0)
+        placer_items: list[tuple[tuple[float, float], str]] = []
+        for at, f, label in forces:
+            tip = (at[0] + float(f[0]) / mu_f, at[1] + float(f[1]) / mu_f)
+            if _finite(at, tip) and math.dist(at, tip) > 0.5:
+                prims.append(Arrow(at, tip, Role.OUTLINE, head_length_mm=3.0, head_width_mm=1.0))
+                placer_items.append((tip, label))
+        prims.append(Circle((0.0, 0.0), 0.8, Role.OUTLINE))
+        placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
+        prims.append(placer.place((0.0, 0.0), "p"))
+        for at, label in placer_items:
+            prims.append(placer.place(at, label))
+        x0, y0, x1, y1 = panel.bounds()
+        prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
+        prims.append(Text((x0, y1 + 3.0), f"{mu_text(Plan.VELOCITY, mu_v, lang)};  "
+                          f"{mu_text(Plan.FORCE, mu_f, lang)}", LABEL_H))
+        y = y0 - 6.0
+        for line in couples + [f"{lever.label} = {format_number(float(ev[lever.id][k]), 2, lang)} N·m"]:
+            prims.append(Text((x0, y), line, TABLE_H))
+            y -= 4.5
+    return panel if prims else None
