@@ -74,10 +74,7 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         out += ["", f"### {w['results']}"]
         out += _results(sol, k, lang)
         if "forces" in sol.extras:
-            from .dynamics.kinetostatics import force_text
-            out += [""] + force_text(sol.construction, sol.ev, sol.scene.mechanism,
-                                     sol.extras["loading"], k, sol.scales.get(Plan.FORCE),
-                                     sol.extras["forces"])
+            out += [""] + _forces(sol, k, lang)
     return "\n".join(out)
 
 
@@ -110,3 +107,54 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
         if parts:
             lines.append("  " + "   ".join(parts))
     return lines
+
+
+FORCE_WORDS = {
+    "en": ("Reactions R_ij (force of link i on link j)", "Guide reactions (⊥ guide), line of action from",
+           "Balancing moment on link", "driving", "resisting", "Zhukovsky's lever", "difference",
+           "Reduced moment of forces", "Reduced moment of inertia", "at", "pure couple"),
+    "ru": ("Реакции R_ij (сила звена i на звено j)", "Реакции направляющих (⊥ направляющей), линия действия от",
+           "Уравновешивающий момент на звене", "движущий", "момент сопротивления", "Рычаг Жуковского",
+           "расхождение", "Приведённый момент сил", "Приведённый момент инерции", "в точке",
+           "чистая пара"),
+    "vi": ("Áp lực khớp động R_ij (lực của khâu i lên khâu j)", "Phản lực dẫn hướng (⊥ đường dẫn), đường tác dụng cách",
+           "Mômen cân bằng trên khâu", "phát động", "cản", "Đòn Giucôpxki", "sai lệch",
+           "Mômen thay thế của lực", "Mômen quán tính thay thế", "tại", "ngẫu lực thuần"),
+    "zh": ("运动副反力 R_ij（构件 i 对构件 j 的力）", "导路反力（⊥ 导路），作用线距",
+           "构件上的平衡力矩", "驱动", "阻抗", "儒可夫斯基杠杆", "相差", "等效力矩", "等效转动惯量",
+           "作用于", "纯力偶"),
+}
+
+
+def _polar(v: np.ndarray, lang: str) -> str:
+    mag = float(np.hypot(*v))
+    text = f"{format_number(mag, 2, lang)} N"
+    if float(f"{mag:.2f}") != 0:
+        text += f" ∠ {format_number(math.degrees(math.atan2(v[1], v[0])), 2, lang)}°"
+    return text
+
+
+def _forces(sol: Solution, k: int, lang: str) -> list[str]:
+    """Reactions, guide reactions, balancing moment (two ways), M_red and J_red at position k."""
+    fa = sol.extras["forces"]
+    w = FORCE_WORDS[lang]
+    out = [f"### {w[0]}"]
+    for r in fa.reactions.values():
+        out.append(f"  R_{r.key} = {_polar(r.force[k], lang)}   ({w[9]} {r.point})")
+    if fa.guide_reactions:
+        out.append(f"### {w[1]} {', '.join(r.point for r in fa.guide_reactions.values())}")
+    for r in fa.guide_reactions.values():
+        d = float(r.offset[k]) if r.offset is not None else math.nan
+        where = f"d = {format_number(d * 1000, 2, lang)} mm ({r.guide})" if math.isfinite(d) else w[10]
+        out.append(f"  R_{r.key} = {_polar(r.force[k], lang)};  {where}")
+    mb, mz = float(fa.balancing_moment[k]), float(fa.zhukovsky_moment[k])
+    role = w[3] if fa.driving(k) else w[4]
+    link = sol.scene.mechanism.drive.link
+    from .construct.protocol import SENSE
+    sense = SENSE[lang][0 if mb > 0 else 1]
+    out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} N·m ({sense}; {role})")
+    out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} N·m; {w[6]} "
+               f"{float(fa.difference_percent[k]):.2e} %")
+    out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} N·m")
+    out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} kg·m²")
+    return out

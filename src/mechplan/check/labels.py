@@ -94,8 +94,13 @@ class LabelBook:
     def build(cls, c: Construction, mech: Mechanism | None = None) -> LabelBook:
         """Collect the point steps of every plan with the ways people write their labels."""
         book = cls()
+        # points of a plan are the ends of its segments and its pole (a force's own vector, a
+        # value of Kind.POINT, is not a point of the polygon)
+        ends = {sid for seg in c.segments for sid in (seg.start, seg.end)}
         for step in c:
             if step.kind is not Kind.POINT:
+                continue
+            if step.plan is not Plan.POSITION and step.op is not Op.POLE and step.id not in ends:
                 continue
             key = plan_key(step.plan, step.group)
             book.plans.setdefault(key, {})
@@ -130,7 +135,7 @@ class LabelBook:
                 for alias in ("p", "pv"):
                     self._add(key, alias, pole, label, 2)
             elif plan is Plan.ACCELERATION:
-                for alias in ("π", "π'", "p'", "pi", "pi'", "pa", "p1", "π1"):
+                for alias in ("π", "π'", "p'", "pi", "pi'", "p1", "π1"):
                     self._add(key, alias, pole, label, 2 if alias[0] in "πp" else 1)
             if mech is not None and plan in (Plan.VELOCITY, Plan.ACCELERATION):
                 # the images of frame points are the pole itself ("p ≡ o1 ≡ o3")

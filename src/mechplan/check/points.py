@@ -130,6 +130,7 @@ class _Graph:
     markers: dict[int, str]            # node → marker entity
     decoration: set[int]               # arrowhead corners: labels go elsewhere first
     component: list[int]               # node → drawing
+    degree: list[int]                  # line ends at each node
 
 
 def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float) -> _Graph:
@@ -166,7 +167,8 @@ def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float
     roots = [uf.find(i) for i in range(m)]
     index: dict[int, int] = {}
     component = [index.setdefault(r, len(index)) for r in roots]
-    return _Graph(nodes, line_nodes, marker_nodes, decoration, component)
+    degree = [len(at_node.get(i, ())) for i in range(m)]
+    return _Graph(nodes, line_nodes, marker_nodes, decoration, component, degree)
 
 
 def _crossings(lines: list[DrawnLine], near: Point, radius: float) -> list[Point]:
@@ -338,7 +340,11 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
         for i in range(len(nodes)):
             d = lb.text.distance((float(nodes[i][0]), float(nodes[i][1])))
             if d <= tol:
-                near.append((d + (tol if i in graph.decoration else 0.0), i))
+                # points of a plan are where lines meet; a loose end of one line (a construction
+                # line drawn past its point, hatching) is taken only when nothing better is near
+                degree = 3 if i in graph.markers else graph.degree[i]
+                near.append((d + (tol if i in graph.decoration else 0.0)
+                             + 0.15 * tol * max(0, 3 - degree), i))
         near.sort()
         options.append(near[:8])
         lb.distance = min((d for d, _ in near), default=math.inf)

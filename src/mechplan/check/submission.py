@@ -110,6 +110,7 @@ class Submission:
     entries: list[Entry] = field(default_factory=list)
     notes: list[Note] = field(default_factory=list)
     units: str = ""
+    skipped: int = 0        # dash-dot lines and lines of frames and tables, not read
 
 
 def read_submission(path: str | Path) -> Submission:
@@ -189,6 +190,10 @@ def read_dxf(path: Path) -> Submission:
                 sub.notes.append(Note("info", f"model space is empty; read layout '{layout.name}'",
                                       str(path)))
                 break
+    if sub.skipped:
+        sub.notes.append(Note("info", f"{sub.skipped} dash-dot line(s) (axes, trajectories) and "
+                              "lines of frames and tables are not read as lines of a plan",
+                              str(path)))
     xs = [v for ln in sub.lines for v in (ln.start[0], ln.end[0])]
     ys = [v for ln in sub.lines for v in (ln.start[1], ln.end[1])]
     extent = max(max(xs) - min(xs), max(ys) - min(ys)) if xs else 0.0
@@ -233,11 +238,30 @@ def _where(e: Any, extra: str = "") -> str:
     return f"{e.dxftype()} #{handle}" + (f" on layer '{layer}'" if layer not in ("", "0") else "") + extra
 
 
+_SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|border", re.I)
+_SKIP_LAYER = re.compile(r"^(frame|table|title|border|рамка|штамп|таблиц)", re.I)
+
+
+def _skipped(e: Any) -> bool:
+    """Axes and trajectories (dash-dot lines) and sheet frames and tables are not plan lines."""
+    layer_name = e.dxf.get("layer", "0") or "0"
+    if _SKIP_LAYER.match(layer_name):
+        return True
+    linetype = e.dxf.get("linetype", "BYLAYER") or "BYLAYER"
+    if linetype.upper() == "BYLAYER" and e.doc is not None:
+        layer = e.doc.layers.get(layer_name) if layer_name in e.doc.layers else None
+        linetype = layer.dxf.get("linetype", "CONTINUOUS") if layer is not None else "CONTINUOUS"
+    return bool(_SKIP_LINETYPE.search(linetype))
+
+
 def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
              via: str = "") -> None:
     for e in space:
         kind = e.dxftype()
         try:
+            if kind in ("LINE", "LWPOLYLINE", "POLYLINE") and _skipped(e):
+                sub.skipped += 1
+                continue
             if kind == "LINE":
                 a, b = e.dxf.start, e.dxf.end
                 _add_line(sub, (a.x, a.y), (b.x, b.y), scale, _where(e, via), e.dxf.layer)

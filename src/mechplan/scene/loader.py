@@ -459,6 +459,9 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     towards = t.string("towards") or t.string("toward")
     if towards is not None and not any(towards in lk.points for lk in links.values()):
         raise t.error("towards", f"unknown point {towards!r}")
+    if towards is not None and towards == point:
+        raise t.error("towards", f"a load at {point} cannot point towards {point} itself; name "
+                      "another point on its line of action")
     if kind is LoadKind.FORCE:
         if t.has("vector"):
             v = t.raw("vector")
@@ -495,6 +498,10 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     xs = [r[0] for r in parsed]
     if any(b <= a for a, b in zip(xs, xs[1:])):
         raise t.error("table", "the first column must increase strictly")
+    if against == "crank_angle" and xs[-1] - xs[0] > 2 * math.pi + 1e-9:
+        raise t.error("table", "a table against crank angle spans at most one crank turn "
+                      f"(360°; got {math.degrees(xs[-1] - xs[0]):g}°); a four-stroke cycle of 720° "
+                      "needs two crank turns, which a one-turn analysis cannot represent")
     return LoadSpec(kind, owner, point, towards=towards, against=against, table=tuple(parsed),
                     key=t.path)
 
