@@ -118,3 +118,12 @@ def test_loads_are_validated():
     assert "must not be negative" in str(error_of(base.replace('mass = "2 kg"', 'mass = "-2 kg"')))
     assert "unknown point 'Q'" in str(error_of(base + '\n[[loads]]\ntype = "force"\npoint = "Q"\nvector = ["1 N", "0 N"]\n'))
     assert "bore" in str(error_of(base + '\n[[loads]]\ntype = "pressure"\npoint = "B"\npressure = "1 MPa"\ntowards = "O"\n'))
+
+
+def test_load_towards_its_own_point_and_table_longer_than_a_turn():
+    base = GOOD.replace('[links.3]\nslides', '[links.3]\nmass = "2 kg"\nslides')
+    err = error_of(base + '\n[[loads]]\ntype = "force"\npoint = "B"\nmagnitude = "5 N"\ntowards = "B"\n')
+    assert "key 'loads[0].towards'" in str(err) and "towards B itself" in str(err)
+    table = '[["0 deg", "0 N"], ["400 deg", "10 N"]]'
+    err = error_of(base + f'\n[[loads]]\ntype = "table"\npoint = "B"\ntowards = "O"\ntable = {table}\n')
+    assert "key 'loads[0].table'" in str(err) and "one crank turn" in str(err)
