@@ -44,7 +44,7 @@ at N = 100 000 a deterministic subsample of 50 evenly spread positions (indices
 φ = {bench.PHI0} rad + 2πk/N in each scene's own convention; none of the four mechanisms has a singular
 position, so all of them are "regular positions".
 
-**Timing.** `time.perf_counter`, best of k runs in one process (k ≥ 5 and ≥ 0.25 s of runs, fewer only
+**Timing.** `time.perf_counter`, best of k runs in one process (k ≥ 7 and ≥ 0.5 s of runs, fewer only
 for runs longer than 2 s), after the model is built: the construction graph (scene → steps), the
 pylinkage `Linkage` and its numba compilation, the `mechanism` objects are all set up outside the
 timed call. What is timed computes, for all N positions, the positions, velocities and accelerations

@@ -51,7 +51,7 @@ def test_velocity_of_one_point_runs_no_acceleration_force_or_later_group(v_engin
     assert not [s.id for s in done if s.group == later]
     assert not [s.id for s in done if s.plan in (Plan.ACCELERATION, Plan.FORCE)]
     # exactly the ancestor closure, and a small part of the graph
-    assert ev.evaluated == len(c.ancestors([c.results["v_C"]])) == 10
+    assert ev.evaluated == len(c.ancestors([c.results["v_C"]]))
     assert ev.evaluated < len(c.steps) / 5
 
 
@@ -108,16 +108,18 @@ def test_cli_stats_counts_steps(capsys, tmp_path: Path) -> None:
     scene = tmp_path / "v_only.toml"
     scene.write_text(_v_engine_text(plans='["velocity"]', points='["C"]'), encoding="utf-8")
     small = _stats(capsys, ["solve", str(scene), "--stats", "--at", "30"])
-    assert small == (28, 10, 1)          # position + velocity plans built; v_C's closure run
-    assert small[1] < evaluated
-
-    # the number printed is the engine's own count
+    # the numbers printed are the engine's own: the whole graph (position and velocity plans
+    # only, since nothing asks for more) and the ancestor closure of v_C
     sol = solve(load_scene(scene), at_deg=[30.0])
-    assert sol.ev.evaluated == small[1] and len(sol.construction.steps) == small[0]
+    c = sol.construction
+    assert {s.plan for s in c} == {Plan.POSITION, Plan.VELOCITY}
+    assert small == (len(c.steps), len(c.ancestors([c.results["v_C"]])), 1)
+    assert small[1] < small[0] and small[1] < evaluated
 
 
 def test_cli_stats_text_report_same_counts(capsys, tmp_path: Path) -> None:
     scene = tmp_path / "v_only.toml"
     scene.write_text(_v_engine_text(plans='["velocity"]', points='["C"]'), encoding="utf-8")
     text = _stats(capsys, ["solve", str(scene), "--stats", "--at", "30", "60"])
-    assert text == (28, 10, 2)
+    c = solve(load_scene(scene), at_deg=[30.0]).construction
+    assert text == (len(c.steps), len(c.ancestors([c.results["v_C"]])), 2)

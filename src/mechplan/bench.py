@@ -90,8 +90,8 @@ class Config:
     max_compared: int = 360
     subsample: int = 50
     #: timing: repeat until both counts are reached (best of k), at most max_repeats
-    min_repeats: int = 5
-    min_seconds: float = 0.25
+    min_repeats: int = 7
+    min_seconds: float = 0.5
     max_repeats: int = 200
     #: largest N for the slow peers (pure-Python pylinkage, mechanism's fsolve loop)
     slow_peer_max_n: int = 100_000

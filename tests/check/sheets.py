@@ -35,6 +35,7 @@ class PlanSpec:
     mu: float
     origin: tuple[float, float]
     mu_text: str | None = None         # e.g. "μv = 0,02 m/s/mm"; None: no scale factor written
+    group: str = ""                    # the group of a force polygon
 
 
 @dataclass
@@ -56,17 +57,18 @@ def exact_sheet(sol, specs: dict[Plan, PlanSpec], k: int = 0) -> Student:
             anchor = next(s.start for s in c.segments if s.plan is plan)
         base = np.zeros(2) if anchor is None else ev[anchor][k]
         for s in c.segments:
-            if s.plan is not plan:
+            if s.plan is not plan or (spec.group and s.group != spec.group):
                 continue
             for sid in (s.start, s.end):
                 st.points[(plan, c[sid].label)] = np.asarray(spec.origin) + (ev[sid][k] - base) / spec.mu
     return st
 
 
-def segments(sol, plan: Plan) -> list[tuple[str, str]]:
-    """(start label, end label) of the plan's segments."""
+def segments(sol, plan: Plan, group: str = "") -> list[tuple[str, str]]:
+    """(start label, end label) of the plan's segments (of one force polygon)."""
     c = sol.construction
-    return [(c[s.start].label, c[s.end].label) for s in c.segments if s.plan is plan]
+    return [(c[s.start].label, c[s.end].label) for s in c.segments
+            if s.plan is plan and (not group or s.group == group)]
 
 
 def write_dxf(path: Path, sol, specs: dict[Plan, PlanSpec], st: Student, *, style: str = "text",
@@ -81,7 +83,7 @@ def write_dxf(path: Path, sol, specs: dict[Plan, PlanSpec], st: Student, *, styl
     for plan, spec in specs.items():
         layer = {Plan.POSITION: "POSITION", Plan.VELOCITY: "PLAN_V",
                  Plan.ACCELERATION: "PLAN_A", Plan.FORCE: "FORCE"}[plan]
-        segs = segments(sol, plan)
+        segs = segments(sol, plan, spec.group)
         drawn = set()
         if polylines:
             # chains of segments as one LWPOLYLINE where they join end to start

@@ -289,3 +289,22 @@ def test_scale_on_the_command_line_wins(tmp_path) -> None:
                   options=Options(at_deg=60, mu={Plan.VELOCITY: 0.01}))
     assert report.passed
     assert report.plans[0].mu_source == "given on the command line"
+
+
+def test_zhukovsky_lever_turned_velocity_plan(tmp_path) -> None:
+    """A velocity plan drawn turned by 90° is read as Zhukovsky's lever and checked turned back."""
+    def mutate(st):
+        p0 = st.points[(V, "p")]
+        for key, at in list(st.points.items()):
+            if key[0] is V:
+                d = at - p0
+                st.points[key] = p0 + np.array([-d[1], d[0]])
+        rotate_about(st, V, "e", "p", 5.0)
+
+    specs = {V: FOUR_BAR[V]}
+    report = _run(tmp_path, "four_bar", 60, specs, mutate)
+    plan = report.plans[0]
+    assert "turned by +90°" in plan.convention and "Zhukovsky" in plan.convention
+    assert {(f.subject, f.error) for f in report.findings} == {("e", "direction")}
+    pe = next(s for s in plan.segments if s.name == "pe")
+    assert pe.direction_deg == pytest.approx(5.0, abs=1e-6)

@@ -63,7 +63,6 @@ class Options:
     mu: dict[Plan, float] = field(default_factory=dict)
     label_distance: float | None = None
     snap: float = 0.2
-    lang: str = "en"
 
     def tol(self, plan: Plan | None) -> Tolerance:
         """The tolerance of a plan (or the default one)."""
@@ -137,9 +136,9 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
     if sub.kind == "dxf":
         sheet = find_plans(sub, book, options.mu, options.label_distance, options.snap)
         notes.extend(sheet.notes)
-        interp = interpret(sheet.other_entries, c, book, qi, si, from_sheet=True)
+        interp = interpret(sheet.other_entries, qi, si, from_sheet=True)
     else:
-        interp = interpret(sub.entries, c, book, qi, si, from_sheet=False)
+        interp = interpret(sub.entries, qi, si, from_sheet=False)
     notes.extend(interp.notes)
     if sheet is not None and not sheet.plans and not interp.values:
         raise CheckError("no plan could be found on the sheet: " + "; ".join(
@@ -298,9 +297,7 @@ def _segments_of(c: Construction, key: PlanKey) -> list[Segment]:
 
 
 def _grade(ctx: _Ctx, k: int) -> CheckReport:
-    import math as _m
-
-    phi = _m.degrees(float(ctx.ev.phi[k]))
+    phi = math.degrees(float(ctx.ev.phi[k]))
     report = CheckReport(str(ctx.scene.path or ""), ctx.sub.path, ctx.sub.kind, round(phi, 10),
                          "")
     drawn = [_prepare(ctx, dp, k, report.notes) for dp in (ctx.sheet.plans if ctx.sheet else [])]
@@ -340,9 +337,70 @@ def _grade(ctx: _Ctx, k: int) -> CheckReport:
     return report
 
 
+def _anchor_of(ctx: _Ctx, dp: DrawnPlan) -> str | None:
+    """The point a drawn plan is placed by: its pole, else the drive pivot or the first point."""
+    c = ctx.c
+    pole = ctx.book.poles.get(dp.key)
+    if pole in dp.points:
+        return pole
+    if not dp.points:
+        return None
+    order = list(c.steps)
+    anchor = min(dp.points, key=order.index)
+    if dp.plan is Plan.POSITION:
+        segs = _segments_of(c, dp.key)
+        fixed = [s for s in dp.points if c[s].op is Op.FIXED_POINT]
+        pivot = segs[0].start if segs else None
+        anchor = pivot if pivot in dp.points else (fixed[0] if fixed else anchor)
+    return anchor
+
+
+def _turned(ctx: _Ctx, dp: DrawnPlan, k: int, anchor: str | None) -> float:
+    """±90 when a velocity plan is drawn turned by a right angle (Zhukovsky's lever), else 0."""
+    if dp.plan is not Plan.VELOCITY or anchor is None:
+        return 0.0
+    a_at = np.asarray(dp.points[anchor].at)
+    base = _exact(ctx, anchor, k)
+    diffs = []
+    for sid, p in dp.points.items():
+        v, e = np.asarray(p.at) - a_at, _exact(ctx, sid, k) - base
+        if sid != anchor and np.hypot(*v) > 1e-6 and np.hypot(*e) > 0:
+            diffs.append(math.degrees(math.remainder(
+                math.atan2(v[1], v[0]) - math.atan2(e[1], e[0]), 2 * math.pi)))
+    if len(diffs) < 2:
+        return 0.0
+    for turn in (90.0, -90.0):
+        if sum(abs(d - turn) < 3.0 for d in diffs) > len(diffs) / 2:
+            return turn
+    return 0.0
+
+
+def _turn_back(dp: DrawnPlan, anchor: str, turn: float) -> DrawnPlan:
+    from dataclasses import replace
+
+    a = math.radians(-turn)
+    ox, oy = dp.points[anchor].at
+
+    def q(p: tuple[float, float]) -> tuple[float, float]:
+        x, y = p[0] - ox, p[1] - oy
+        return (ox + x * math.cos(a) - y * math.sin(a), oy + x * math.sin(a) + y * math.cos(a))
+
+    out = DrawnPlan(dp.key, {s: replace(p, at=q(p.at)) for s, p in dp.points.items()},
+                    [replace(ln, start=q(ln.start), end=q(ln.end)) for ln in dp.lines],
+                    dp.number, dp.mu, dp.mu_source, dp.convention)
+    note = (f"drawn turned by {turn:+.0f}° (Zhukovsky's lever); checked turned back about "
+            f"{dp.points[anchor].label}")
+    out.convention = f"{dp.convention}; {note}" if dp.convention else note
+    return out
+
+
 def _prepare(ctx: _Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> _Drawn:
     c = ctx.c
     plan = dp.plan
+    anchor = _anchor_of(ctx, dp)
+    turn = _turned(ctx, dp, k, anchor)
+    if turn and anchor is not None:
+        dp = _turn_back(dp, anchor, turn)
     mu, source = dp.mu, dp.mu_source
     if mu is None and plan in ctx.interp.scales:
         mu, source = ctx.interp.scales[plan]
@@ -365,15 +423,6 @@ def _prepare(ctx: _Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> _Drawn:
                               "are not checked", ctx.sub.path))
     else:
         reference = None
-    pole = ctx.book.poles.get(dp.key)
-    anchor = pole if pole in dp.points else None
-    if anchor is None and dp.points:
-        order = list(c.steps)
-        anchor = min(dp.points, key=order.index)
-        if plan is Plan.POSITION:
-            fixed = [s for s in dp.points if c[s].op is Op.FIXED_POINT]
-            drive_pivot = segs[0].start if segs else None
-            anchor = drive_pivot if drive_pivot in dp.points else (fixed[0] if fixed else anchor)
     si: dict[str, np.ndarray] = {}
     if mu is not None and anchor is not None:
         base = _exact(ctx, anchor, k)

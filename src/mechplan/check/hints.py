@@ -67,6 +67,26 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> str:
     off = ctx.mm(plan, float(np.hypot(*(at - own_here)))) if np.all(np.isfinite(own_here)) else math.nan
     tail = f"; from your own earlier points it belongs {_fmt(off)} mm from where it is drawn"
     op = step.op
+    if op is Op.FORCE_SUM:
+        prev, force = step.inputs[0], step.inputs[1]
+        exact_len = ctx.mm(plan, float(np.hypot(*_pt(ctx.exact(force)))))
+        drawn = ctx.mm(plan, float(np.hypot(*(at - _pt(ctx.own(prev))))))
+        name = c[force].label
+        if drawn <= tol_mm < exact_len:
+            return (f"the load {name} is missing from this force polygon: it acts on the group "
+                    f"and is laid off from {lbl(prev)}, {_fmt(exact_len)} mm long")
+        return (f"{label} is the end of the load {name} laid off from {lbl(prev)}: "
+                f"{_fmt(exact_len)} mm long, in the direction of the force" + tail)
+    if op in (Op.LINE_LINE, Op.FORCE_CLOSE):
+        parts = []
+        for lid in step.inputs:
+            line_step = c[lid]
+            through = lbl(line_step.inputs[0]) if line_step.inputs else "?"
+            d = ctx.mm(plan, _dist_to_line(at, ctx.own(lid)))
+            where = "on it" if d <= tol_mm else f"{_fmt(d)} mm off"
+            parts.append(f"on the line through {through} {line_step.label} ({where})")
+        closes = "closes the force polygon: it " if op is Op.FORCE_CLOSE else ""
+        return f"{label} {closes}must lie " + " and ".join(parts) + tail
     if op is Op.LINE_LINE:
         parts = []
         for lid in step.inputs:

@@ -241,10 +241,13 @@ def _number_and_half(text: str) -> tuple[float | None, float]:
     if not m:
         return None, 0.0
     s = m.group(0).replace("−", "-").replace(",", ".")
-    mant = s.split("e")[0].split("E")[0]
+    mant = re.split("[eE]", s)[0]
     decimals = len(mant.split(".")[1]) if "." in mant else 0
     exp = int(re.split("[eE]", s)[1]) if re.search("[eE]", s) else 0
-    return float(s), 0.5 * 10.0 ** (exp - decimals)
+    value = float(s)
+    if not math.isfinite(value) or abs(exp - decimals) > 300:
+        return None, 0.0
+    return value, 0.5 * 10.0 ** (exp - decimals)
 
 
 def _is_length_text(text: str) -> bool:
@@ -257,6 +260,9 @@ def parse_value(text: str, dimension: str, where: str, notes: list[Note],
     """(SI value, half a unit of the last digit in SI) of a written value, or None with a note."""
     number, half = _number_and_half(text)
     bare = bool(re.fullmatch(r"\s*[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?\s*", text))
+    if bare and number is None:
+        notes.append(Note("error", f"'{name} = {text}' is not a finite number", where))
+        return None
     if bare and number is not None:
         from ..units import DIMENSIONS
 
@@ -272,8 +278,8 @@ def parse_value(text: str, dimension: str, where: str, notes: list[Note],
     return value, abs(half * ratio)
 
 
-def interpret(entries: list[Entry], c: Construction, book: LabelBook, qi: QuantityIndex,
-              si: SegmentIndex, from_sheet: bool) -> Interpretation:
+def interpret(entries: list[Entry], qi: QuantityIndex, si: SegmentIndex,
+              from_sheet: bool) -> Interpretation:
     """Sort entries into scale factors, the crank angle, drawn lengths and physical values."""
     out = Interpretation()
     for e in entries:
@@ -379,8 +385,6 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
             gv.length_mm, gv.length_half_unit = number, half
         out.values.append(gv)
         return
-    if found is None and length_text is not None and si.find(e.name) is None and sec is not None:
-        pass
     level = "info" if from_sheet else "error"
     if from_sheet and not re.match(r"^[A-Za-zα-ωΑ-Ω]", e.name):
         return

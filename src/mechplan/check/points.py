@@ -561,7 +561,6 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
         return
     # the pole is where most vectors to labelled points start
     labelled = {tuple(np.round(p.at, 6)) for p in dp.points.values()}
-    node_of = {tuple(np.round(graph.nodes[i], 6)): i for i in range(len(graph.nodes))}
     count: dict[int, int] = {}
     for a, b in graph.line_nodes:
         pa, pb = tuple(np.round(graph.nodes[a], 6)), tuple(np.round(graph.nodes[b], 6))
@@ -584,7 +583,6 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
     notes.append(Note("info", f"the pole {label} of the {dp.name} is not labelled; taken as the "
                       f"point ({at[0]:.1f}, {at[1]:.1f}) where {best} vectors to labelled points "
                       "start", sub.path))
-    del node_of
 
 
 def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],

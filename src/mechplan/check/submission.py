@@ -10,6 +10,7 @@ from __future__ import annotations
 import csv
 import io
 import itertools
+import logging
 import math
 import re
 import tomllib
@@ -150,6 +151,9 @@ def read_dxf(path: Path) -> Submission:
     if truncated:
         sub.notes.append(Note("warning", "the file ends early (no EOF marker): it may be "
                               "truncated; what could be read is checked", str(path)))
+    repairs = _Collect()
+    log = logging.getLogger("ezdxf")
+    log.addHandler(repairs)   # the repair messages become notes, not lines on stderr
     try:
         doc, auditor = recover.readfile(str(path))
     except ezdxf.DXFStructureError as exc:
@@ -161,6 +165,11 @@ def read_dxf(path: Path) -> Submission:
     except Exception as exc:  # noqa: BLE001 - ezdxf raises assorted errors on damaged files
         raise CheckError(f"cannot read the file as DXF; it looks damaged "
                          f"({exc.__class__.__name__}: {exc})", file=str(path)) from None
+    finally:
+        log.removeHandler(repairs)
+    if repairs.messages:
+        sub.notes.append(Note("warning", f"{len(repairs.messages)} damaged value(s) repaired on "
+                              f"reading, e.g. {repairs.messages[0]}", str(path)))
     if auditor.has_errors:
         sub.notes.append(Note("warning", f"the DXF was damaged and repaired on reading "
                               f"({len(auditor.errors)} problem(s), e.g. "
@@ -232,14 +241,26 @@ def _rescale(sub: Submission, f: float) -> None:
                            (t.half[0] * f, t.half[1] * f), t.rotation) for t in sub.texts]
 
 
+class _Collect(logging.Handler):
+    """Keep the log messages of a DXF read (repairs of damaged values)."""
+
+    def __init__(self) -> None:
+        super().__init__(logging.WARNING)
+        self.messages: list[str] = []
+
+    def emit(self, record: logging.LogRecord) -> None:
+        self.messages.append(record.getMessage())
+
+
 def _where(e: Any, extra: str = "") -> str:
     handle = getattr(e.dxf, "handle", None) or "?"
     layer = getattr(e.dxf, "layer", "") or ""
     return f"{e.dxftype()} #{handle}" + (f" on layer '{layer}'" if layer not in ("", "0") else "") + extra
 
 
-_SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|border", re.I)
-_SKIP_LAYER = re.compile(r"^(frame|table|title|border|рамка|штамп|таблиц)", re.I)
+_SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|border",
+                            re.IGNORECASE)
+_SKIP_LAYER = re.compile(r"^(frame|table|title|border|рамка|штамп|таблиц)", re.IGNORECASE)
 
 
 def _skipped(e: Any) -> bool:

@@ -120,9 +120,10 @@ def _carrier_angle(step: Step, pc: Array, ps: Array) -> Result:
     q0 = np.asarray(step.param("q0"), dtype=rel.dtype)
     d = direction(np.asarray(step.param("dir_angle"), dtype=rel.dtype))
     radius = np.hypot(rel[..., 0], rel[..., 1])
-    origin = np.zeros_like(rel)
-    hit, gap, sine = meet.circle_line(origin, radius, np.broadcast_to(q0, rel.shape),
-                                      np.broadcast_to(d, rel.shape), step.param("sigma"))
+    # the circle's centre and the guide are the same at every position: pass them once, (1, 2),
+    # and let numpy broadcast (same values as (N, 2) copies, without N-sized work on constants)
+    origin = np.zeros((1, 2), dtype=rel.dtype)
+    hit, gap, sine = meet.circle_line(origin, radius, q0[None, :], d[None, :], step.param("sigma"))
     return angle_of(rel) - angle_of(hit), gap, sine
 
 
