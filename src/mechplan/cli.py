@@ -81,6 +81,11 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--lang", choices=("en", "ru", "vi", "zh"))
     d.add_argument("--standard", choices=("iso", "gost", "tcvn"))
     d.set_defaults(func=_draw)
+    from .bench import add_parser as add_bench
+    from .check.cli import add_parser as add_check
+
+    add_check(sub)
+    add_bench(sub)
     n = sub.add_parser("new", help="start a scene from a bundled template")
     n.add_argument("template")
     n.add_argument("-o", "--output")

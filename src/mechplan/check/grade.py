@@ -141,9 +141,9 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         interp = interpret(sub.entries, qi, si, from_sheet=False)
     notes.extend(interp.notes)
     if sheet is not None and not sheet.plans and not interp.values:
-        raise CheckError("no plan could be found on the sheet: " + "; ".join(
-            str(n) for n in notes if n.level != "info")[:600] or "no labelled points",
-            file=sub.path)
+        why = "; ".join(str(n) for n in notes if n.level != "info")[:600]
+        raise CheckError("no plan could be found on the sheet: "
+                         + (why or "no labelled points next to its lines"), file=sub.path)
     if sub.kind == "table" and not interp.segments and not interp.values:
         problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
         raise CheckError("nothing in the table can be checked"
@@ -852,6 +852,7 @@ def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _
             l = _link_length(ctx, q.step, k)
             if mu_p and l:
                 tol_abs = max(tol_abs, tol.mm * mu_p / l)
+        tol_abs = max(tol_abs, gv.half_unit)      # "0.00" is right for anything below 0.005
         row.tolerance = tol_abs
         row.error_pct = 100 * (sub_cmp - exact_cmp) / exact_cmp if exact_cmp else None
         # what the student's own drawing or lengths give

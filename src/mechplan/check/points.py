@@ -11,6 +11,7 @@ name. Drawings of one plan whose labels do not clash are one plan.
 from __future__ import annotations
 
 import math
+import re
 import statistics
 from dataclasses import dataclass, field
 
@@ -36,6 +37,14 @@ LAYER_HINTS: tuple[tuple[Plan, tuple[str, ...]], ...] = (
     (Plan.POSITION, ("pos", "mech", "полож", "vị trí", "vi tri", "位置", "机构")),
 )
 BARB_MAX_MM = 8.0
+#: extra cost (× the label distance) of giving a label to a point where only 1 or 2 line ends
+#: meet: points of a plan are where vectors meet; a construction line drawn past its point ends
+#: loose, and the label is often nearer to that end
+LOOSE_END_COST = {0: 0.45, 1: 0.45, 2: 0.15}
+#: a point marked on the sheet (POINT, a small CIRCLE) is preferred by this much (× distance)
+MARKER_BONUS = 0.2
+#: drawings of one plan whose lines do not join are one plan when they are this close (mm)
+MERGE_GAP_MM = 30.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -161,6 +170,16 @@ def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float
             if any(length[j] >= 2.5 * length[i] for j in at_node.get(other, ())):
                 decoration.add(n)
                 break
+    degree_of = {n: len(idx) for n, idx in at_node.items()}
+    for i, (a, b) in enumerate(line_nodes):
+        da, db = degree_of.get(a, 0), degree_of.get(b, 0)
+        if length[i] <= BARB_MAX_MM and da == 1 and db == 1 and a not in marker_nodes \
+                and b not in marker_nodes:
+            decoration |= {a, b}           # hatching of a support, a loose short stroke
+        for end, other, deg in ((a, b, da), (b, a, db)):
+            if deg == 1 and end not in marker_nodes and _overshoot(nodes, end, other, at_node,
+                                                                   snap):
+                decoration.add(end)
     uf = _UnionFind(m)
     for a, b in line_nodes:
         uf.union(a, b)
@@ -169,6 +188,23 @@ def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float
     component = [index.setdefault(r, len(index)) for r in roots]
     degree = [len(at_node.get(i, ())) for i in range(m)]
     return _Graph(nodes, line_nodes, marker_nodes, decoration, component, degree)
+
+
+def _overshoot(nodes: np.ndarray, end: int, other: int, at_node: dict[int, list[int]],
+               snap: float, reach: float = 15.0) -> bool:
+    """True if the line from ``other`` to the loose ``end`` passes through a point where other
+    lines meet, within ``reach`` mm of the end: a construction line drawn on past its point."""
+    e, o = nodes[end], nodes[other]
+    d = o - e
+    length = float(np.hypot(*d))
+    if length < 1e-9:
+        return False
+    u = d / length
+    rel = nodes - e
+    along = rel @ u
+    across = np.abs(rel[:, 0] * u[1] - rel[:, 1] * u[0])
+    hits = np.nonzero((along > snap) & (along < min(reach, length - snap)) & (across <= snap))[0]
+    return any(len(at_node.get(int(k), ())) >= 2 for k in hits)
 
 
 def _crossings(lines: list[DrawnLine], near: Point, radius: float) -> list[Point]:
@@ -214,12 +250,19 @@ class _Label:
     at: Point | None = None
     distance: float = math.inf
     how: str = ""
+    same: list[tuple[str, list[Candidate]]] = field(default_factory=list)  # "p≡c"
 
 
-def _is_label_text(t: SheetText) -> bool:
+_SAME_POINT = re.compile(r"\s*(?:≡|,|;)\s*")
+
+
+def _label_names(t: SheetText) -> list[str]:
+    """The names a label text gives its point: "c", or several for one point ("p≡c", "p, o1")."""
     s = t.text.strip()
-    return ("\n" not in s and "=" not in s and ":" not in s and 0 < len(label_key(s)) <= 9
-            and not s.replace(",", "").replace(".", "").isdigit())
+    if "\n" in s or "=" in s or ":" in s or s.replace(",", "").replace(".", "").isdigit():
+        return []
+    names = [n for n in _SAME_POINT.split(s) if n]
+    return [n for n in names if 0 < len(label_key(n)) <= 9]
 
 
 def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | None = None,
@@ -239,12 +282,14 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
             other.append(e)
     labels: list[_Label] = []
     for t in sub.texts:
-        if not _is_label_text(t):
-            continue
-        cands = book.candidates(t.text)
-        if cands:
-            labels.append(_Label(t, t.text.strip(), cands))
-        elif len(label_key(t.text)) <= 3 and t.text.strip().isalpha():
+        names = _label_names(t)
+        readings = [(n, book.candidates(n)) for n in names]
+        readings = [(n, cands) for n, cands in readings if cands]
+        if readings:
+            lb = _Label(t, readings[0][0], readings[0][1])
+            lb.same = readings[1:]
+            labels.append(lb)
+        elif len(names) == 1 and len(label_key(names[0])) <= 3 and names[0].isalpha():
             notes.append(Note("info", f"text '{t.text.strip()}' is not a label of any plan of "
                               "this mechanism; it is not used", t.where))
     if not labels:
@@ -255,6 +300,9 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
         heights = [lb.text.height for lb in labels if lb.text.height > 0]
         label_distance = min(10.0, max(3.0, 2.0 * statistics.median(heights))) if heights else 5.0
     _attach(labels, graph, sub.lines, label_distance, notes)
+    for lb in list(labels):        # "p≡c": one point, several names
+        for written, cands in lb.same:
+            labels.append(_Label(lb.text, written, cands, lb.node, lb.at, lb.distance, lb.how))
     attached = [lb for lb in labels if lb.at is not None]
     if not attached:
         raise _far_labels(sub, labels, label_distance)
@@ -339,15 +387,18 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
         near = []
         for i in range(len(nodes)):
             d = lb.text.distance((float(nodes[i][0]), float(nodes[i][1])))
+            lb.distance = min(lb.distance, d)
             if d <= tol:
                 # points of a plan are where lines meet; a loose end of one line (a construction
                 # line drawn past its point, hatching) is taken only when nothing better is near
-                degree = 3 if i in graph.markers else graph.degree[i]
-                near.append((d + (tol if i in graph.decoration else 0.0)
-                             + 0.15 * tol * max(0, 3 - degree), i))
+                if i in graph.markers:     # a point marked with a dot or a small circle
+                    score = d - MARKER_BONUS * tol
+                else:
+                    score = d + (tol if i in graph.decoration else 0.0) + \
+                        LOOSE_END_COST.get(graph.degree[i], 0.0) * tol
+                near.append((score, i))
         near.sort()
         options.append(near[:8])
-        lb.distance = min((d for d, _ in near), default=math.inf)
     columns = sorted({i for near in options for _, i in near})
     if columns:
         col = {n: j for j, n in enumerate(columns)}
@@ -360,6 +411,7 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
                 row[col[i]] = d
             # sharing a point with another label (p ≡ o1) costs more than a point of its own
             row[len(columns) + r] = (near[0][0] + 0.5 * tol) if near else big
+            row = [x + tol for x in row]       # keep costs positive (marker bonus)
             cost.append(row)
         pick = _assign(cost)
         for r, lb in enumerate(labels):
@@ -380,8 +432,6 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
             p = min(crossings, key=lb.text.distance)
             lb.at, lb.how, lb.distance = p, "crossing of two lines", lb.text.distance(p)
             continue
-        if not math.isfinite(lb.distance) and len(nodes):
-            lb.distance = min(lb.text.distance((float(x), float(y))) for x, y in nodes)
         notes.append(Note("warning", f"label '{lb.written}' is {lb.distance:.1f} mm from the "
                           f"nearest line end, more than the {tol:.1f} mm allowed "
                           "(--label-distance); it is not used", lb.text.where))
@@ -416,7 +466,7 @@ def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook
             for plan, w in feature_votes(lb.written).items():
                 if plan in plans_here:
                     votes[plan] = votes.get(plan, 0.0) + w
-        hint = _hint_of(comp, members, graph, lines_of.get(comp, []), scale_entries)
+        hint = _hint_of(comp, members, graph, lines_of.get(comp, []), scale_entries, set(comps))
         force_hint = False
         for plan in hint:
             votes[plan] = votes.get(plan, 0.0) + 3.0 * len(members) ** 0.5 + 3.0
@@ -428,7 +478,9 @@ def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook
             continue
         plan = max(votes, key=lambda p: (votes[p], -list(Plan).index(p)))
         keys = [k for k in book.plans if k[0] is plan]
-        key = max(keys, key=lambda k: sum(any(c.plan == k for c in lb.cands) for lb in members))
+
+        fits = {k: _fit(book, k, members) for k in keys}
+        key = max(keys, key=fits.__getitem__)
         decided.append((key, comp, members))
     # merge drawings of one plan unless their labels clash
     plans: list[DrawnPlan] = []
@@ -436,7 +488,8 @@ def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook
     for key, comp, members in decided:
         steps = {_resolve_one(lb, key) for lb in members} - {None}
         for g in groups:
-            if g[0] == key and not (steps & {_resolve_one(lb, key) for lb in g[2]} - {None}):
+            if g[0] == key and not (steps & {_resolve_one(lb, key) for lb in g[2]} - {None}) \
+                    and _gap(members, g[2]) <= MERGE_GAP_MM:
                 g[1].append(comp)
                 g[2].extend(members)
                 break
@@ -464,28 +517,46 @@ def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook
     return plans
 
 
-def _nearest_component(at: Point | None, graph: _Graph) -> int:
+def _fit(book: LabelBook, key: PlanKey, members: list[_Label]) -> float:
+    """How well labels fit one plan: force polygons share letters (a, b, c …), so the group
+    whose points the labels cover best, and fill best."""
+    found = {c.step for lb in members for c in lb.cands if c.plan == key}
+    return len(found) / (len(book.plans[key]) + len(members) - len(found))
+
+
+def _gap(a: list[_Label], b: list[_Label]) -> float:
+    """Distance between the boxes around two sets of labelled points (0 if they overlap)."""
+    pa = np.array([lb.at for lb in a if lb.at is not None])
+    pb = np.array([lb.at for lb in b if lb.at is not None])
+    if not len(pa) or not len(pb):
+        return math.inf
+    dx = max(0.0, pb[:, 0].min() - pa[:, 0].max(), pa[:, 0].min() - pb[:, 0].max())
+    dy = max(0.0, pb[:, 1].min() - pa[:, 1].max(), pa[:, 1].min() - pb[:, 1].max())
+    return math.hypot(dx, dy)
+
+
+def _nearest_component(at: Point | None, graph: _Graph, among: set[int] | None = None) -> int:
     if at is None or not len(graph.nodes):
         return -1
     d = np.hypot(*(graph.nodes - np.asarray(at)).T)
+    if among is not None:
+        d = np.where(np.isin(graph.component, list(among)), d, np.inf)
+        if not np.isfinite(d).any():
+            return -1
     return graph.component[int(np.argmin(d))]
 
 
 def _hint_of(comp: int, members: list[_Label], graph: _Graph, lines: list[DrawnLine],
-             scale_entries: list[tuple[Plan, Entry]]) -> set[Plan]:
+             scale_entries: list[tuple[Plan, Entry]], labelled: set[int]) -> set[Plan]:
     hints: set[Plan] = set()
     layers = [_layer_plan(ln.layer) for ln in lines] + [_layer_plan(lb.text.layer)
                                                          for lb in members]
     named = [p for p in layers if p is not None]
     if named and named.count(max(set(named), key=named.count)) > len(named) / 2:
         hints.add(max(set(named), key=named.count))
-    # a scale-factor text belongs to the drawing nearest to it
-    comp_nodes = {i for i, c in enumerate(graph.component) if c == comp}
+    # a scale-factor text belongs to the labelled drawing nearest to it
     for plan, entry in scale_entries:
-        if entry.at is None or not comp_nodes:
-            continue
-        best = _nearest_component(entry.at, graph)
-        if best == comp:
+        if entry.at is not None and _nearest_component(entry.at, graph, labelled) == comp:
             hints.add(plan)
     return hints
 

@@ -296,6 +296,8 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
                 pts = [(v.x, v.y) for v in e.points_in_wcs()]
                 _add_polyline(sub, pts, bool(e.is_closed), scale, _where(e, via), e.dxf.layer,
                               any(v.dxf.bulge for v in e.vertices))
+            elif kind in ("SOLID", "TRACE"):
+                _add_arrowhead(sub, e, scale, _where(e, via))
             elif kind == "POINT":
                 p = e.dxf.location
                 sub.markers.append(((p.x * scale, p.y * scale), _where(e, via)))
@@ -317,6 +319,26 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
         except Exception as exc:  # noqa: BLE001 - one bad entity must not lose the sheet
             sub.notes.append(Note("warning", f"skipped an unreadable {kind} "
                                   f"({exc.__class__.__name__}: {exc})", _where(e, via)))
+
+
+def _add_arrowhead(sub: Submission, e: Any, scale: float, where: str) -> None:
+    """A filled triangle (an arrowhead): its tip is a point of the plan, joined to the middle of
+    its base, where the vector's shaft ends."""
+    ocs = e.ocs()
+    pts = [ocs.to_wcs(e.dxf.get(f"vtx{i}")) for i in range(4) if e.dxf.hasattr(f"vtx{i}")]
+    corners: list[Point] = []
+    for p in pts:
+        q = (p.x, p.y)
+        if all(math.dist(q, r) > 1e-9 for r in corners):
+            corners.append(q)
+    if len(corners) != 3:
+        return
+    sides = [math.dist(corners[(i + 1) % 3], corners[(i + 2) % 3]) for i in range(3)]
+    tip = corners[sides.index(min(sides))]
+    b1, b2 = (corners[i] for i in range(3) if corners[i] != tip)
+    base = ((b1[0] + b2[0]) / 2, (b1[1] + b2[1]) / 2)
+    _add_line(sub, tip, base, scale, where, e.dxf.get("layer", ""))
+    sub.markers.append(((tip[0] * scale, tip[1] * scale), where))
 
 
 def _finite(*values: float) -> bool:

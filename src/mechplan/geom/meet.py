@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .vec import Array, cross, dot, norm, perp
+from .vec import Array, cross, dot, norm
 
 
 def circle_circle(c1: Array, r1: Array | float, c2: Array, r2: Array | float,
@@ -22,14 +22,16 @@ def circle_circle(c1: Array, r1: Array | float, c2: Array, r2: Array | float,
     r1 = np.asarray(r1, dtype=d.dtype)     # the points' float type (float32 stays float32)
     r2 = np.asarray(r2, dtype=d.dtype)
     gap = np.maximum(d - (r1 + r2), np.abs(r1 - r2) - d)
-    with np.errstate(invalid="ignore", divide="ignore"):
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d)
         # product form of r1² − a² keeps precision near tangency (Heron)
         h2 = ((r1 + r2) ** 2 - d * d) * (d * d - (r1 - r2) ** 2) / (4.0 * d * d)
         h = np.sqrt(np.where(h2 >= 0.0, h2, np.nan))
         h = np.where((h2 < 0.0) & (gap <= 0.0), 0.0, h)
-        u = d_vec / d[..., None]
-        point = c1 + a[..., None] * u + (sigma * h)[..., None] * perp(u)
+        ux, uy = d_vec[..., 0] / d, d_vec[..., 1] / d
+        sh = sigma * h
+        # per component: cheaper than broadcasting over a trailing axis of length 2
+        point = np.stack((c1[..., 0] + a * ux - sh * uy, c1[..., 1] + a * uy + sh * ux), axis=-1)
         sine = np.abs(h * d / (r1 * r2))
     return point, gap, sine
 
@@ -39,13 +41,16 @@ def circle_line(c: Array, r: Array | float, p: Array, u: Array,
     """Intersect circle (c, r) with the line through p along unit u; sigma=+1 takes the far one along u."""
     w = cross(u, c - p)
     r = np.asarray(r, dtype=np.result_type(w, np.float32))   # float32 points stay float32
-    foot = p + dot(c - p, u)[..., None] * u
+    along = dot(c - p, u)
+    ux, uy = u[..., 0], u[..., 1]
     gap = np.abs(w) - r
     with np.errstate(invalid="ignore"):
         h2 = (r - w) * (r + w)
         h = np.sqrt(np.where(h2 >= 0.0, h2, np.nan))
         h = np.where((h2 < 0.0) & (gap <= 0.0), 0.0, h)
-        point = foot + (sigma * h)[..., None] * u
+        sh = sigma * h
+        fx, fy = p[..., 0] + along * ux, p[..., 1] + along * uy
+        point = np.stack((fx + sh * ux, fy + sh * uy), axis=-1)
         sine = np.abs(h / r)
     return point, gap, sine
 
@@ -54,8 +59,7 @@ def line_line(p1: Array, u1: Array, p2: Array, u2: Array) -> tuple[Array, Array,
     """Intersect the line through p1 along u1 with the line through p2 along u2 (u unit)."""
     s = cross(u1, u2)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        t = cross(p2 - p1, u2) / s
-        point = p1 + t[..., None] * u1
-    point = np.where((s == 0.0)[..., None], np.nan, point)
+        t = np.where(s == 0.0, np.nan, cross(p2 - p1, u2) / s)
+        point = np.stack((p1[..., 0] + t * u1[..., 0], p1[..., 1] + t * u1[..., 1]), axis=-1)
     # two lines always meet unless parallel; parallelism is a conditioning matter, not a gap
     return point, np.full(s.shape, -np.inf), np.abs(s)

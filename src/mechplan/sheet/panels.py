@@ -281,18 +281,19 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
     for name in mech.links["0"].points:
         if any(name in js for js in joints.values()):
             prims.extend(_pivot(_mm(ev_all[f"pos.{name}"][0], mu)))
-    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H)
     k0 = highlight[0] if highlight else 0
-    for lk in links:
-        for p in lk.points:
-            if f"pos.{p}" in ev_all.values:
-                q = _mm(ev_all[f"pos.{p}"][k0], mu)
-                if _finite(q):
-                    prims.append(placer.place(q, p))
-    placed = {p for lk in links for p in lk.points}
-    for name in mech.links["0"].points:
-        if name not in placed:
-            continue
+    names = list(dict.fromkeys(p for lk in links for p in lk.points))
+    for p in names:                      # points that are not joints get a small marker too
+        if not any(p in js for js in joints.values()) and f"pos.{p}" in ev_all.values:
+            q = _mm(ev_all[f"pos.{p}"][k0], mu)
+            if _finite(q):
+                prims.append(Circle(q, 0.8, Role.OUTLINE))
+    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H)
+    for p in names:
+        if f"pos.{p}" in ev_all.values:
+            q = _mm(ev_all[f"pos.{p}"][k0], mu)
+            if _finite(q):
+                prims.append(placer.place(q, p))
     x0, y0, x1, y1 = panel.bounds()
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(Plan.POSITION, mu, lang), LABEL_H))
