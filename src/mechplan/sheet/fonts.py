@@ -123,7 +123,9 @@ def _metrics(font: SheetFont) -> _Metrics | None:
         cap = int(getattr(os2, "sCapHeight", 0) or 0) or int(upem * font.value.cap_ratio)
         cmap = tt.getBestCmap()
         hmtx = tt["hmtx"]
-        glyf = tt.get("glyf")
+        # only osifont has placeholder boxes (Ё ё Э э); expanding every glyph of the other fonts
+        # would cost half a second per drawing
+        glyf = tt.get("glyf") if font is SheetFont.ISO else None
         advances = {cp: int(hmtx[name][0]) for cp, name in cmap.items()
                     if glyf is None or not _is_placeholder(glyf[name], upem)}
         tt.close()
