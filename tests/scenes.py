@@ -86,4 +86,40 @@ def build_text(text: str, plans=("position", "velocity", "acceleration")):
     return scene, construction_of(scene, plans)
 
 
+#: Scotch yoke: the yoke slides on the frame, the block on the crank pin slides in its slot (RPP)
+SCOTCH_YOKE = """
+[ground]
+O = ["0 mm", "0 mm"]
+guides.h = { through = "O", angle = "0 deg" }
+[links.1]
+lengths = { OA = "50 mm" }
+[links.2]
+slides = { point = "A", on = "slot" }
+[links.3]
+slides = { point = "Y", on = "h" }
+points = { K = ["0 mm", "30 mm"] }
+guides.slot = { through = "Y", angle = "90 deg" }
+[drive]
+link = "1"
+speed = "20 rad/s"
+"""
+
+#: a slider in a slot along the crank pinned to a slider on a frame guide (PRP)
+SLOTTED_CRANK_PRP = """
+[ground]
+O = ["0 mm", "0 mm"]
+H = ["0 mm", "50 mm"]
+guides.h = { through = "H", angle = "0 deg" }
+[links.1]
+lengths = { OA = "100 mm" }
+guides.slot = { through = "O", toward = "A" }
+[links.2]
+slides = { point = "K", on = "slot" }
+[links.3]
+slides = { point = "K", on = "h" }
+[drive]
+link = "1"
+speed = "5 rad/s"
+"""
+
 PHI = np.radians(np.array([0.0, 17.0, 60.0, 91.0, 135.0, 180.0, 222.0, 270.0, 300.0, 341.0]))

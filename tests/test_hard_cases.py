@@ -17,6 +17,7 @@ from mechplan.construct.extremes import extreme_positions
 from mechplan.construct.validity import MAX_CONDITION, unreachable_intervals, valid_mask
 from mechplan.errors import SingularError, UnreachableError
 from mechplan.geom import meet
+from scenes import SLOTTED_CRANK_PRP
 from mechplan.scene import load_scene, parse_scene
 from mechplan.solve import build, solve
 
@@ -310,22 +311,7 @@ def test_line_meet_reports_its_conditioning_and_is_accurate(alpha: float) -> Non
     assert norm(point[0] - exact) <= 4 * EPS * cond * size
 
 
-SLOTTED = """
-[ground]
-O = ["0 mm", "0 mm"]
-H = ["0 mm", "50 mm"]
-guides.h = { through = "H", angle = "0 deg" }
-[links.1]
-lengths = { OA = "100 mm" }
-guides.slot = { through = "O", toward = "A" }
-[links.2]
-slides = { point = "K", on = "slot" }
-[links.3]
-slides = { point = "K", on = "h" }
-[drive]
-link = "1"
-speed = "5 rad/s"
-"""
+SLOTTED = SLOTTED_CRANK_PRP
 
 
 def test_near_parallel_guides_refused_above_threshold_accurate_below() -> None:

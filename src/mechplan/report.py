@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from .construct.protocol import MM, PLAN_TITLE, pole_label, protocol
+from .construct.protocol import MM, PLAN_TITLE, SENSE, pole_label, protocol, vector_text
 from .construct.step import Plan
 from .solve import Solution, segment_table
 from .units import format_number
@@ -126,31 +126,22 @@ FORCE_WORDS = {
 }
 
 
-def _polar(v: np.ndarray, lang: str) -> str:
-    mag = float(np.hypot(*v))
-    text = f"{format_number(mag, 2, lang)} N"
-    if float(f"{mag:.2f}") != 0:
-        text += f" ∠ {format_number(math.degrees(math.atan2(v[1], v[0])), 2, lang)}°"
-    return text
-
-
 def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     """Reactions, guide reactions, balancing moment (two ways), M_red and J_red at position k."""
     fa = sol.extras["forces"]
     w = FORCE_WORDS[lang]
     out = [f"### {w[0]}"]
     for r in fa.reactions.values():
-        out.append(f"  R_{r.key} = {_polar(r.force[k], lang)}   ({w[9]} {r.point})")
+        out.append(f"  R_{r.key} = {vector_text(r.force[k], lang, 2)}   ({w[9]} {r.point})")
     if fa.guide_reactions:
         out.append(f"### {w[1]} {', '.join(r.point for r in fa.guide_reactions.values())}")
     for r in fa.guide_reactions.values():
         d = float(r.offset[k]) if r.offset is not None else math.nan
         where = f"d = {format_number(d * 1000, 2, lang)} mm ({r.guide})" if math.isfinite(d) else w[10]
-        out.append(f"  R_{r.key} = {_polar(r.force[k], lang)};  {where}")
+        out.append(f"  R_{r.key} = {vector_text(r.force[k], lang, 2)};  {where}")
     mb, mz = float(fa.balancing_moment[k]), float(fa.zhukovsky_moment[k])
     role = w[3] if fa.driving(k) else w[4]
     link = sol.scene.mechanism.drive.link
-    from .construct.protocol import SENSE
     sense = SENSE[lang][0 if mb > 0 else 1]
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} N·m ({sense}; {role})")
     out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} N·m; {w[6]} "

@@ -8,8 +8,7 @@ import pytest
 
 from independent import closed_form, mpref
 from mechplan.scene import parse_scene
-from scenes import PHI, TEMPLATES, construction_of, template
-from model.test_structure import SCOTCH_YOKE, SLOTTED_CRANK_PRP
+from scenes import PHI, SCOTCH_YOKE, SLOTTED_CRANK_PRP, TEMPLATES, construction_of, template
 
 POINTS = {
     "slider_crank": ["A", "B", "S2"], "offset_slider_crank": ["A", "B", "S2"],

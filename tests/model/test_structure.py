@@ -4,7 +4,7 @@ import pytest
 
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
-from scenes import ROOT
+from scenes import ROOT, SCOTCH_YOKE, SLOTTED_CRANK_PRP
 
 EXPECTED = {
     "slider_crank": ("I(0,1) → II(2,3)", ["RRP"]),
@@ -15,41 +15,6 @@ EXPECTED = {
     "quick_return": ("I(0,1) → II(2,3)", ["RPR"]),
     "shaper": ("I(0,1) → II(2,3) → II(4,5)", ["RPR", "RRP"]),
 }
-
-SCOTCH_YOKE = """
-[ground]
-O = ["0 mm", "0 mm"]
-guides.h = { through = "O", angle = "0 deg" }
-[links.1]
-lengths = { OA = "50 mm" }
-[links.2]
-slides = { point = "A", on = "slot" }
-[links.3]
-slides = { point = "Y", on = "h" }
-points = { K = ["0 mm", "30 mm"] }
-guides.slot = { through = "Y", angle = "90 deg" }
-[drive]
-link = "1"
-speed = "20 rad/s"
-"""
-
-SLOTTED_CRANK_PRP = """
-[ground]
-O = ["0 mm", "0 mm"]
-H = ["0 mm", "50 mm"]
-guides.h = { through = "H", angle = "0 deg" }
-[links.1]
-lengths = { OA = "100 mm" }
-guides.slot = { through = "O", toward = "A" }
-[links.2]
-slides = { point = "K", on = "slot" }
-[links.3]
-slides = { point = "K", on = "h" }
-[drive]
-link = "1"
-speed = "5 rad/s"
-"""
-
 
 @pytest.mark.parametrize("name", sorted(EXPECTED))
 def test_templates_structure(name):

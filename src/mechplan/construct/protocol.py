@@ -153,11 +153,12 @@ def pole_label(label: str, lang: str) -> str:
     return label.replace("π", "p′") if lang == "zh" else label
 
 
-def _vector_text(value: np.ndarray, lang: str) -> str:
+def vector_text(value: np.ndarray, lang: str, digits: int = 1, unit: str = "N") -> str:
+    """"1459,8 N ∠ -120,0°": magnitude and direction (no angle for a zero vector)."""
     mag = float(np.hypot(*value))
-    text = f"{format_number(mag, 1, lang)} N"
-    if float(f"{mag:.1f}") != 0:
-        text += f" ∠ {format_number(math.degrees(math.atan2(value[1], value[0])), 1, lang)}°"
+    text = f"{format_number(mag, digits, lang)} {unit}"
+    if float(f"{mag:.{digits}f}") != 0:
+        text += f" ∠ {format_number(math.degrees(math.atan2(value[1], value[0])), digits, lang)}°"
     return text
 
 
@@ -196,7 +197,7 @@ def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
     if value.ndim == 1:
         v = _scalar_text(step, float(value[k]), lang)
     elif step.plan is Plan.FORCE and value.ndim == 2:
-        v = _vector_text(value[k], lang)
+        v = vector_text(value[k], lang)
     else:
         v = ""
     templates = TEXT.get(step.op)

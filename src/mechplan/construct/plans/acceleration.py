@@ -7,7 +7,7 @@ from ...model.structure import Group
 from ..builder import Builder, alabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
-from .images import absolute, coincident, complete, link_scalar
+from .images import absolute, coincident, complete, link_scalar, meet_lines, parallel_line, perp_line
 
 A = Plan.ACCELERATION
 
@@ -55,18 +55,6 @@ def _normal(b: Builder, start: str, link: str, p: str, q: str, q_name: str, grou
     return sid
 
 
-def _perp(b: Builder, through: str, p: str, q: str, group: str) -> str:
-    return b.add(f"acc.line.{b.c[through].label}.perp.{p}{q}", Op.LINE_PERP,
-                 (through, b.pos[p], b.pos[q]), A, Kind.LINE, Role.AUXILIARY, f"⊥{p}{q}", group,
-                 subject=(b.c[through].label, f"{p}{q}"))
-
-
-def _parallel(b: Builder, through: str, locus: str, group: str) -> str:
-    return b.add(f"acc.line.{b.c[through].label}.par.{b.c[locus].label}", Op.LINE_PARALLEL,
-                 (through, locus), A, Kind.LINE, Role.AUXILIARY, f"∥{b.c[locus].label}", group,
-                 subject=(b.c[through].label, b.c[locus].label))
-
-
 def _coriolis(b: Builder, start: str, frame_link: str, v_from: str, v_to: str, name: str,
               group: str) -> str:
     """k: from ``start``, 2ω × v_rel where v_rel = v_to − v_from and ω of the guide's link."""
@@ -80,12 +68,6 @@ def _coriolis(b: Builder, start: str, frame_link: str, v_from: str, v_to: str, n
     b.segment(A, start, sid, f"{b.c[start].label}k_{name}", f"a^k_{name}", SegmentKind.CORIOLIS,
               group)
     return sid
-
-
-def _meet(b: Builder, id: str, l1: str, l2: str, label: str, group: str,
-          role: Role = Role.RESULT) -> str:
-    return b.add(id, Op.LINE_LINE, (l1, l2), A, Kind.POINT, role, label, group,
-                 subject=(b.c[l1].label, b.c[l2].label))
 
 
 def _epsilon(b: Builder, link: str, p: str, q_pos: str, n: str, aq: str, group: str) -> str:
@@ -110,7 +92,7 @@ def _rrr(b: Builder, g: Group) -> None:
     p1, p2, k = g.outer1.point, g.outer2.point, g.inner.point
     n1 = _normal(b, b.acc[p1], l1, p1, k, k, g.name)
     n2 = _normal(b, b.acc[p2], l2, p2, k, k, g.name)
-    meet = _meet(b, f"acc.{k}", _perp(b, n1, p1, k, g.name), _perp(b, n2, p2, k, g.name),
+    meet = meet_lines(b, A, f"acc.{k}", perp_line(b, A, n1, p1, k, g.name), perp_line(b, A, n2, p2, k, g.name),
                  alabel(k), g.name)
     b.acc[k] = meet
     _epsilon(b, l1, p1, b.pos[k], n1, meet, g.name)
@@ -134,7 +116,7 @@ def _rrp(b: Builder, g: Group) -> None:
     km_v = coincident(b, m, k, Plan.VELOCITY, g.name)
     km = coincident(b, m, k, A, g.name)
     kk = _coriolis(b, km, m, km_v, b.vel[k], f"{k}{l2}{k}{m}", g.name)
-    meet = _meet(b, f"acc.{k}", _perp(b, n1, p1, k, g.name), _parallel(b, kk, locus, g.name),
+    meet = meet_lines(b, A, f"acc.{k}", perp_line(b, A, n1, p1, k, g.name), parallel_line(b, A, kk, locus, g.name),
                  alabel(k), g.name)
     b.acc[k] = meet
     _epsilon(b, l1, p1, b.pos[k], n1, meet, g.name)
@@ -169,7 +151,7 @@ def _rpr(b: Builder, g: Group) -> None:
     n = _normal(b, b.acc[pc], c, pc, ps, f"{ps}{c}", g.name)
     kk = _coriolis(b, b.acc[ps], c, b.vel[ps], im.vel, f"{ps}{c}{ps}{s}", g.name)
     label = b.c[im.vel].label + "′"
-    meet = _meet(b, f"acc.{ps}@{c}", _perp(b, n, pc, ps, g.name), _parallel(b, kk, gline, g.name),
+    meet = meet_lines(b, A, f"acc.{ps}@{c}", perp_line(b, A, n, pc, ps, g.name), parallel_line(b, A, kk, gline, g.name),
                  label, g.name)
     im.acc = meet
     _epsilon(b, c, pc, b.pos[ps], n, meet, g.name)
@@ -198,8 +180,8 @@ def _prp(b: Builder, g: Group) -> None:
         kv = coincident(b, m, k, Plan.VELOCITY, g.name)
         ka = coincident(b, m, k, A, g.name)
         kk = _coriolis(b, ka, m, kv, b.vel[k], f"{k}{link}{k}{m}", g.name)
-        lines.append(_parallel(b, kk, locus, g.name))
-    b.acc[k] = _meet(b, f"acc.{k}", lines[0], lines[1], alabel(k), g.name)
+        lines.append(parallel_line(b, A, kk, locus, g.name))
+    b.acc[k] = meet_lines(b, A, f"acc.{k}", lines[0], lines[1], alabel(k), g.name)
     link_scalar(b, l1, m1, A, g.name)
     link_scalar(b, l2, m2, A, g.name)
     absolute(b, k, A, g.name)
@@ -224,8 +206,8 @@ def _rpp(b: Builder, g: Group) -> None:
         xv = coincident(b, partner, x, Plan.VELOCITY, g.name)
         xa = coincident(b, partner, x, A, g.name)
         kk = _coriolis(b, xa, partner, xv, b.vel[x], f"{x}{l2}{x}{partner}", g.name)
-        lines.append(_parallel(b, kk, locus, g.name))
-    b.acc[x] = _meet(b, f"acc.{x}", lines[0], lines[1], alabel(x), g.name)
+        lines.append(parallel_line(b, A, kk, locus, g.name))
+    b.acc[x] = meet_lines(b, A, f"acc.{x}", lines[0], lines[1], alabel(x), g.name)
     absolute(b, x, A, g.name)
     b.c.equations[(A, g.name)] = (
         f"a_{x} = a_{x}{m} + a^k + a^r_{x}{l2}{x}{m} = a_{x}{l1} + a^k + a^r_{x}{l2}{x}{l1}", [

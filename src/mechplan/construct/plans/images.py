@@ -113,3 +113,26 @@ def link_scalar(b: Builder, link: str, source_link: str, plan: Plan, group: str)
     setattr(body, attr, sid)
     b.result(f"{attr}_{link}", sid)
     return sid
+
+
+def perp_line(b: Builder, plan: Plan, through: str, p: str, q: str, group: str) -> str:
+    """A line through an image, ⊥ to the link segment PQ."""
+    prefix = "vel" if plan is Plan.VELOCITY else "acc"
+    return b.add(f"{prefix}.line.{b.c[through].label}.perp.{p}{q}", Op.LINE_PERP,
+                 (through, b.pos[p], b.pos[q]), plan, Kind.LINE, Role.AUXILIARY, f"⊥{p}{q}", group,
+                 subject=(b.c[through].label, f"{p}{q}"))
+
+
+def parallel_line(b: Builder, plan: Plan, through: str, locus: str, group: str) -> str:
+    """A line through an image, ∥ to a guide (the direction of a locus line)."""
+    prefix = "vel" if plan is Plan.VELOCITY else "acc"
+    return b.add(f"{prefix}.line.{b.c[through].label}.par.{b.c[locus].label}", Op.LINE_PARALLEL,
+                 (through, locus), plan, Kind.LINE, Role.AUXILIARY, f"∥{b.c[locus].label}", group,
+                 subject=(b.c[through].label, b.c[locus].label))
+
+
+def meet_lines(b: Builder, plan: Plan, id: str, l1: str, l2: str, label: str, group: str,
+         role: Role = Role.RESULT) -> str:
+    """The image where two construction lines meet."""
+    return b.add(id, Op.LINE_LINE, (l1, l2), plan, Kind.POINT, role, label, group,
+                 subject=(b.c[l1].label, b.c[l2].label))

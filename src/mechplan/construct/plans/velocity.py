@@ -7,7 +7,7 @@ from ...model.structure import Group
 from ..builder import Builder, Image, vlabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
-from .images import absolute, coincident, complete, link_scalar
+from .images import absolute, coincident, complete, link_scalar, meet_lines, parallel_line, perp_line
 
 V = Plan.VELOCITY
 
@@ -42,24 +42,6 @@ def emit_group(b: Builder, g: Group) -> None:
         complete(b, link, V, g.name)
 
 
-def _perp(b: Builder, through: str, p: str, q: str, group: str) -> str:
-    return b.add(f"vel.line.{b.c[through].label}.perp.{p}{q}", Op.LINE_PERP,
-                 (through, b.pos[p], b.pos[q]), V, Kind.LINE, Role.AUXILIARY, f"⊥{p}{q}", group,
-                 subject=(b.c[through].label, f"{p}{q}"))
-
-
-def _parallel(b: Builder, through: str, locus: str, group: str) -> str:
-    return b.add(f"vel.line.{b.c[through].label}.par.{b.c[locus].label}", Op.LINE_PARALLEL,
-                 (through, locus), V, Kind.LINE, Role.AUXILIARY, f"∥{b.c[locus].label}", group,
-                 subject=(b.c[through].label, b.c[locus].label))
-
-
-def _meet(b: Builder, id: str, l1: str, l2: str, label: str, group: str,
-          role: Role = Role.RESULT) -> str:
-    return b.add(id, Op.LINE_LINE, (l1, l2), V, Kind.POINT, role, label, group,
-                 subject=(b.c[l1].label, b.c[l2].label))
-
-
 def _omega(b: Builder, link: str, p: str, q_pos: str, vp: str, vq: str, group: str) -> str:
     body = b.bodies[link]
     body.omega = b.add(f"vel.omega.{link}", Op.OMEGA, (b.pos[p], q_pos, vp, vq), V, Kind.SCALAR,
@@ -77,8 +59,8 @@ def _relative(b: Builder, start: str, end: str, quantity: str, kind: SegmentKind
 def _rrr(b: Builder, g: Group) -> None:
     l1, l2 = g.links
     p1, p2, k = g.outer1.point, g.outer2.point, g.inner.point
-    meet = _meet(b, f"vel.{k}", _perp(b, b.vel[p1], p1, k, g.name),
-                 _perp(b, b.vel[p2], p2, k, g.name), vlabel(k), g.name)
+    meet = meet_lines(b, V, f"vel.{k}", perp_line(b, V, b.vel[p1], p1, k, g.name),
+                 perp_line(b, V, b.vel[p2], p2, k, g.name), vlabel(k), g.name)
     b.vel[k] = meet
     _omega(b, l1, p1, b.pos[k], b.vel[p1], meet, g.name)
     _omega(b, l2, p2, b.pos[k], b.vel[p2], meet, g.name)
@@ -96,7 +78,7 @@ def _rrp(b: Builder, g: Group) -> None:
     m = g.outer2.other(l2)
     locus = next(s.id for s in b.c if s.op is Op.LOCUS_LINE and s.id.startswith(f"pos.locus.{l2}.{k}."))
     km = coincident(b, m, k, V, g.name)
-    meet = _meet(b, f"vel.{k}", _perp(b, b.vel[p1], p1, k, g.name), _parallel(b, km, locus, g.name),
+    meet = meet_lines(b, V, f"vel.{k}", perp_line(b, V, b.vel[p1], p1, k, g.name), parallel_line(b, V, km, locus, g.name),
                  vlabel(k), g.name)
     b.vel[k] = meet
     _omega(b, l1, p1, b.pos[k], b.vel[p1], meet, g.name)
@@ -122,8 +104,8 @@ def _rpr(b: Builder, g: Group) -> None:
     guide = b.guide_of(g.inner)
     gline = f"pos.guide.{guide.name}"
     label = (vlabel(ps) + c) if not any(ch.isdigit() for ch in ps) else f"{vlabel(ps)}_{c}"
-    meet = _meet(b, f"vel.{ps}@{c}", _perp(b, b.vel[pc], pc, ps, g.name),
-                 _parallel(b, b.vel[ps], gline, g.name), label, g.name)
+    meet = meet_lines(b, V, f"vel.{ps}@{c}", perp_line(b, V, b.vel[pc], pc, ps, g.name),
+                 parallel_line(b, V, b.vel[ps], gline, g.name), label, g.name)
     body = b.bodies[c]
     body.images.append(Image(f"{ps}@{c}", f"{ps}{c}", b.pos[ps], vel=meet))
     _omega(b, c, pc, b.pos[ps], b.vel[pc], meet, g.name)
@@ -145,7 +127,7 @@ def _prp(b: Builder, g: Group) -> None:
     loc1 = next(s.id for s in b.c if s.id.startswith(f"pos.locus.{l1}.{k}."))
     loc2 = next(s.id for s in b.c if s.id.startswith(f"pos.locus.{l2}.{k}."))
     k1, k2 = coincident(b, m1, k, V, g.name), coincident(b, m2, k, V, g.name)
-    meet = _meet(b, f"vel.{k}", _parallel(b, k1, loc1, g.name), _parallel(b, k2, loc2, g.name),
+    meet = meet_lines(b, V, f"vel.{k}", parallel_line(b, V, k1, loc1, g.name), parallel_line(b, V, k2, loc2, g.name),
                  vlabel(k), g.name)
     b.vel[k] = meet
     link_scalar(b, l1, m1, V, g.name)
@@ -168,7 +150,7 @@ def _rpp(b: Builder, g: Group) -> None:
     loc_ext = next(s.id for s in b.c if s.id.startswith(f"pos.locus.{l2}.{x}.{g.outer2.guide}"))
     loc_in = next(s.id for s in b.c if s.id.startswith(f"pos.locus.{l2}.{x}.{g.inner.guide}"))
     xm, x1 = coincident(b, m, x, V, g.name), coincident(b, l1, x, V, g.name)
-    meet = _meet(b, f"vel.{x}", _parallel(b, xm, loc_ext, g.name), _parallel(b, x1, loc_in, g.name),
+    meet = meet_lines(b, V, f"vel.{x}", parallel_line(b, V, xm, loc_ext, g.name), parallel_line(b, V, x1, loc_in, g.name),
                  vlabel(x), g.name)
     b.vel[x] = meet
     _relative(b, x1, meet, f"v_{x}{l2}{x}{l1}", SegmentKind.SLIDING, g.name)
