@@ -1,14 +1,15 @@
 """The command line: solve prints reports and JSON; user errors exit 2 without a traceback."""
 
+import itertools
 import json
 import math
 import subprocess
 import sys
 
 import pytest
+from scenes import ROOT, TEMPLATES
 
 from mechplan.cli import main
-from scenes import ROOT, TEMPLATES
 
 
 def run(args, capsys):
@@ -35,7 +36,7 @@ def test_solve_languages(capsys, lang, words):
 
 
 def test_solve_json_document(capsys):
-    code, out, _ = run(["solve", str(ROOT / "templates" / "v_engine.toml"), "--json"], capsys)
+    _code, out, _ = run(["solve", str(ROOT / "templates" / "v_engine.toml"), "--json"], capsys)
     doc = json.loads(out)
     assert doc["dof"] == 1 and doc["structure"] == "I(0,1) → II(2,3) → II(4,5)"
     assert doc["groups"] == [{"class": 2, "kind": "RRP", "links": ["2", "3"]},
@@ -56,7 +57,7 @@ def test_solve_at_and_positions(capsys):
     assert [p["phi_deg"] for p in doc["positions"]] == [0.0, 90.0]
     doc = json.loads(run(["solve", path, "--json", "--positions", "8"], capsys)[1])
     phis = [p["phi_deg"] for p in doc["positions"]]
-    assert len(phis) == 8 and all(math.isclose((b - a) % 360, 45.0) for a, b in zip(phis, phis[1:]))
+    assert len(phis) == 8 and all(math.isclose((b - a) % 360, 45.0) for a, b in itertools.pairwise(phis))
 
 
 def test_scene_error_exits_2_with_one_message(tmp_path):

@@ -12,12 +12,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 from independent import mpref
+from scenes import SLOTTED_CRANK_PRP
 
 from mechplan.construct.extremes import extreme_positions
 from mechplan.construct.validity import MAX_CONDITION, unreachable_intervals, valid_mask
 from mechplan.errors import SingularError, UnreachableError
 from mechplan.geom import meet
-from scenes import SLOTTED_CRANK_PRP
 from mechplan.scene import load_scene, parse_scene
 from mechplan.solve import build, solve
 

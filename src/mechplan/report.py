@@ -12,21 +12,21 @@ from .solve import Solution, segment_table
 from .units import format_number
 
 WORDS = {
-    "en": dict(dof="Degrees of freedom", structure="Structure formula", cls="class", position="Position",
-               equation="Vector equation", term="term", direction="direction", magnitude="magnitude",
-               segments="Measured segments", results="Results", point="point", link="link",
-               groups="Assur groups", crank="crank at", fromx="from +x"),
-    "ru": dict(dof="Степень подвижности", structure="Формула строения", cls="класс", position="Положение",
-               equation="Векторное уравнение", term="вектор", direction="направление", magnitude="величина",
-               segments="Измеренные отрезки", results="Результаты", point="точка", link="звено",
-               groups="Группы Ассура", crank="кривошип под углом", fromx="от оси +x"),
-    "vi": dict(dof="Bậc tự do", structure="Công thức cấu trúc", cls="loại", position="Vị trí",
-               equation="Phương trình véc tơ", term="véc tơ", direction="phương chiều", magnitude="giá trị",
-               segments="Các đoạn đo được", results="Kết quả", point="điểm", link="khâu",
-               groups="Nhóm Axua", crank="tay quay ở góc", fromx="so với trục +x"),
-    "zh": dict(dof="自由度", structure="机构的组成式", cls="级", position="位置", equation="矢量方程",
-               term="矢量", direction="方向", magnitude="大小", segments="测量线段", results="结果",
-               point="点", link="构件", groups="杆组", crank="曲柄位于", fromx="（自 +x 轴）"),
+    "en": {"dof": "Degrees of freedom", "structure": "Structure formula", "cls": "class", "position": "Position",
+               "equation": "Vector equation", "term": "term", "direction": "direction", "magnitude": "magnitude",
+               "segments": "Measured segments", "results": "Results", "point": "point", "link": "link",
+               "groups": "Assur groups", "crank": "crank at", "fromx": "from +x"},
+    "ru": {"dof": "Степень подвижности", "structure": "Формула строения", "cls": "класс", "position": "Положение",
+               "equation": "Векторное уравнение", "term": "вектор", "direction": "направление", "magnitude": "величина",
+               "segments": "Измеренные отрезки", "results": "Результаты", "point": "точка", "link": "звено",
+               "groups": "Группы Ассура", "crank": "кривошип под углом", "fromx": "от оси +x"},
+    "vi": {"dof": "Bậc tự do", "structure": "Công thức cấu trúc", "cls": "loại", "position": "Vị trí",
+               "equation": "Phương trình véc tơ", "term": "véc tơ", "direction": "phương chiều", "magnitude": "giá trị",
+               "segments": "Các đoạn đo được", "results": "Kết quả", "point": "điểm", "link": "khâu",
+               "groups": "Nhóm Axua", "crank": "tay quay ở góc", "fromx": "so với trục +x"},
+    "zh": {"dof": "自由度", "structure": "机构的组成式", "cls": "级", "position": "位置", "equation": "矢量方程",
+               "term": "矢量", "direction": "方向", "magnitude": "大小", "segments": "测量线段", "results": "结果",
+               "point": "点", "link": "构件", "groups": "杆组", "crank": "曲柄位于", "fromx": "（自 +x 轴）"},
 }
 PLANS = {"position": Plan.POSITION, "velocity": Plan.VELOCITY, "acceleration": Plan.ACCELERATION,
          "force": Plan.FORCE}
@@ -65,10 +65,10 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
                 if p is plan:
                     n += 1
                     out.append(f"  {n:>2}. {text}")
-            rows = segment_table(sol, plan, k)
-            if rows:
+            measured = segment_table(sol, plan, k)
+            if measured:
                 out.append(f"  {w['segments']}:")
-                for name, mm, mu_s, quantity, value in rows:
+                for name, mm, _mu, quantity, value in measured:
                     out.append(f"    {pole_label(name, lang):<14} {format_number(mm, 1, lang):>8} {MM[lang]}"
                                f"   {quantity:<14} {format_number(value, 4, lang)}")
         out += ["", f"### {w['results']}"]

@@ -151,17 +151,17 @@ def to_json(sol: Solution) -> dict[str, Any]:
     for k in range(sol.positions):
         pts: dict[str, Any] = {}
         for p in points:
-            entry = {}
+            entry_p: dict[str, Any] = {}
             if f"pos.{p}" in ev.values:
-                entry["r"] = _vec(ev[f"pos.{p}"][k])
-            for sym, key in (("v", "v"), ("a", "a")):
+                entry_p["r"] = _vec(ev[f"pos.{p}"][k])
+            for sym in ("v", "a"):
                 sid = c.results.get(f"{sym}_{p}")
                 if sid is not None and sid in ev.values:
-                    entry[key] = _vec(ev[sid][k])
-            pts[p] = entry
+                    entry_p[sym] = _vec(ev[sid][k])
+            pts[p] = entry_p
         links: dict[str, Any] = {}
         for lid in scene.mechanism.moving:
-            entry = {}
+            entry: dict[str, Any] = {}
             for key, name in (("angle", "angle_deg"), ("omega", "omega"), ("epsilon", "epsilon")):
                 sid = c.results.get(f"{key}_{lid}")
                 if sid is not None and sid in ev.values:
@@ -194,4 +194,4 @@ def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, f
     return rows
 
 
-__all__ = ["Solution", "solve", "to_json", "segment_table", "crank_positions", "SegmentKind"]
+__all__ = ["SegmentKind", "Solution", "crank_positions", "segment_table", "solve", "to_json"]

@@ -5,6 +5,7 @@ from __future__ import annotations
 import functools
 import math
 import re
+from typing import Any
 
 import pint
 
@@ -58,7 +59,7 @@ _EXAMPLES = {
 @functools.lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
     """Return the project's own explicit unit registry (angles are dimensionless radians)."""
-    ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    ureg: pint.UnitRegistry = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     if "rpm" not in ureg:
         ureg.define("rpm = revolution / minute")
     return ureg
@@ -79,7 +80,7 @@ def parse_quantity(text: object, dimension: str, *, file: str | None = None,
     Plain numbers are accepted only for ``dimensionless``; a decimal comma ("0,1") is accepted.
     Angles come back in radians, angular speeds in rad/s, scale factors per millimetre of paper.
     """
-    dim, si_unit = DIMENSIONS[dimension]
+    _dim, si_unit = DIMENSIONS[dimension]
     example = _EXAMPLES[dimension]
     if isinstance(text, bool):
         raise SceneError(f"expected {_noun(dimension)} such as {example} (got {text!r})",
@@ -97,8 +98,8 @@ def parse_quantity(text: object, dimension: str, *, file: str | None = None,
     cleaned = cleaned.replace("°", " deg").replace("^", "**")
     ureg = registry()
     try:
-        q = ureg.Quantity(cleaned)
-    except Exception as exc:  # pint raises several unrelated types for unparsable text
+        q: Any = ureg.Quantity(cleaned)
+    except Exception as exc:  # noqa: BLE001 - pint raises many unrelated types for bad text
         raise SceneError(f"cannot read {text!r} as {_noun(dimension)}; write it like "
                          f"{example} ({exc.__class__.__name__})", file=file, key=key) from None
     if not isinstance(q, pint.Quantity):

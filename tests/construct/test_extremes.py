@@ -4,9 +4,9 @@ import math
 
 import numpy as np
 import pytest
+from scenes import template
 
 from mechplan.construct.extremes import extreme_positions
-from scenes import template
 
 
 def phi_of(c, theta):

@@ -5,7 +5,6 @@ import math
 import numpy as np
 from hypothesis import given, settings
 from hypothesis import strategies as st
-
 from scenes import build_text, four_bar_text, slider_crank_text
 
 PHI = np.radians(np.array([5.0, 50.0, 100.0, 170.0, 200.0, 290.0]))

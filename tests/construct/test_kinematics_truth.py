@@ -5,10 +5,10 @@ import math
 
 import numpy as np
 import pytest
-
 from independent import closed_form, mpref
-from mechplan.scene import parse_scene
 from scenes import PHI, SCOTCH_YOKE, SLOTTED_CRANK_PRP, TEMPLATES, construction_of, template
+
+from mechplan.scene import parse_scene
 
 POINTS = {
     "slider_crank": ["A", "B", "S2"], "offset_slider_crank": ["A", "B", "S2"],
@@ -25,7 +25,7 @@ def rel(a, b):
 
 @pytest.mark.parametrize("name", sorted(POINTS))
 def test_template_matches_40_digit_reference(name):
-    scene, c = template(name)
+    _scene, c = template(name)
     phi = PHI[::2]
     ev = c.evaluate(phi)
     ref = mpref.reference(name, c.drive.absolute(phi))
@@ -40,7 +40,7 @@ def test_template_matches_40_digit_reference(name):
 
 @pytest.mark.parametrize("name", ["slider_crank", "offset_slider_crank", "four_bar"])
 def test_closed_form_over_the_cycle(name):
-    scene, c = template(name)
+    _scene, c = template(name)
     phi = np.linspace(0, 2 * np.pi, 3601)
     ev = c.evaluate(phi)
     ref = closed_form.preset(name, c.drive.absolute(phi))
@@ -126,7 +126,7 @@ def test_slotted_crank_prp_closed_form():
 
 def test_v_engine_worked_example_position():
     """§1: at φ1 = 180° (BDC of C) v_C = 0, c coincides with p, s2 is the midpoint of bc."""
-    scene, c = template("v_engine")
+    _scene, c = template("v_engine")
     ev = c.evaluate(np.radians([180.0]))
     w1 = 800 * 2 * math.pi / 60
     vb = ev[c.results["v_B"]][0]

@@ -14,12 +14,12 @@ from +x, ``omega`` signed (+ = counter-clockwise), constant crank speed.  Each f
 from __future__ import annotations
 
 import math
-from typing import Callable, Sequence
+from collections.abc import Callable, Sequence
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["slider_crank", "four_bar", "PRESETS", "preset", "rpm"]
+__all__ = ["PRESETS", "four_bar", "preset", "rpm", "slider_crank"]
 
 F64 = NDArray[np.float64]
 

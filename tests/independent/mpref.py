@@ -30,8 +30,9 @@ the global precision later.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Callable, Iterable, Sequence
+from typing import Any
 
 import mpmath
 import numpy as np
@@ -39,24 +40,24 @@ from mpmath import mp, mpf
 
 __all__ = [
     "DPS",
-    "RESIDUAL_LIMIT",
-    "ConvergenceError",
-    "rpm",
-    "slider_crank",
-    "four_bar",
-    "v_engine",
-    "quick_return",
-    "shaper",
-    "guess_slider_crank",
-    "guess_four_bar",
-    "guess_v_engine",
-    "guess_quick_return",
-    "guess_shaper",
     "PRESETS",
     "PRESET_PARAMS",
+    "RESIDUAL_LIMIT",
+    "ConvergenceError",
+    "four_bar",
+    "guess_four_bar",
+    "guess_quick_return",
+    "guess_shaper",
+    "guess_slider_crank",
+    "guess_v_engine",
     "preset_omega",
-    "solve",
+    "quick_return",
     "reference",
+    "rpm",
+    "shaper",
+    "slider_crank",
+    "solve",
+    "v_engine",
 ]
 
 DPS: int = 40
@@ -576,10 +577,10 @@ def _coulisse_mech(lO1A: Number, O3: Sequence[Number], lO3B: Number, lBC: Number
         return bool(ok)
 
     if six:
-        guess = lambda th: guess_shaper(th, *f_six)  # noqa: E731
+        guess = lambda th: guess_shaper(th, *f_six)
         links = {"1": ("O1", "A"), "3": ("O3", "B"), "4": ("B", "C")}
     else:
-        guess = lambda th: guess_quick_return(th, float(lO1A), f_O3)  # noqa: E731
+        guess = lambda th: guess_quick_return(th, float(lO1A), f_O3)
         links = {"1": ("O1", "A"), "3": ("O3", "B")}
     return _Mechanism(
         name="shaper" if six else "quick_return",

@@ -6,7 +6,7 @@ Neither module imports mechplan.  Run: ``python -m pytest tests/independent -q``
 from __future__ import annotations
 
 import math
-from typing import Sequence
+from collections.abc import Sequence
 
 import numpy as np
 import pytest
@@ -218,11 +218,11 @@ def test_guesses_agree_with_newton() -> None:
     """The float closed-form guesses land on the same assembly as the Newton solution."""
     for th in FEW_THETAS:
         s = mpref.shaper(th)
-        phi3, sA, phi4, xC = mpref.guess_shaper(th)
+        _phi3, sA, phi4, xC = mpref.guess_shaper(th)
         assert abs(sA - float(s["s3"][0])) < 1e-12 and abs(xC - float(s["C"][0])) < 1e-12
         assert abs(math.remainder(phi4 - float(s["4"][0]), 2 * math.pi)) < 1e-12
         v = mpref.v_engine(th)
-        phi2, sC, _, sE = mpref.guess_v_engine(th)
+        _phi2, sC, _, sE = mpref.guess_v_engine(th)
         assert abs(sC - float(mp.hypot(v["C"][0], v["C"][1]))) < 1e-12
         assert abs(sE - float(mp.hypot(v["E"][0], v["E"][1]))) < 1e-12
 

@@ -1,10 +1,10 @@
 """Degrees of freedom, Assur groups of all five kinds, structure formulas."""
 
 import pytest
+from scenes import ROOT, SCOTCH_YOKE, SLOTTED_CRANK_PRP
 
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
-from scenes import ROOT, SCOTCH_YOKE, SLOTTED_CRANK_PRP
 
 EXPECTED = {
     "slider_crank": ("I(0,1) → II(2,3)", ["RRP"]),

@@ -1,10 +1,10 @@
 """Bad scenes raise SceneError naming the file, the key path and what was expected."""
 
 import pytest
+from scenes import slider_crank_text
 
 from mechplan.errors import SceneError, TopologyError
 from mechplan.scene import parse_scene
-from scenes import slider_crank_text
 
 GOOD = slider_crank_text()
 

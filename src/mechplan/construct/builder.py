@@ -187,5 +187,14 @@ def build_construction(mech: Mechanism, structure: Structure,
     return Builder(mech, structure, assembly_phi, file, loading).build(plans)
 
 
-__all__ = ["Body", "Builder", "Image", "alabel", "build_construction", "group_of", "vlabel",
-           "GROUND", "PairKind"]
+__all__ = [
+    "GROUND",
+    "Body",
+    "Builder",
+    "Image",
+    "PairKind",
+    "alabel",
+    "build_construction",
+    "group_of",
+    "vlabel",
+]

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,17 +25,20 @@ class ExtremePosition:
     which: str
 
 
-def _rate_and_value(c: Construction, mech: Mechanism, subject: str):
+RateFunction = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
+
+
+def _rate_and_value(c: Construction, mech: Mechanism, subject: str) -> RateFunction:
     """Return f(φ) → (rate, value): v along the guide and coordinate, or ω and link angle."""
     if subject in mech.links:
         omega_id, angle_id = c.results.get(f"omega_{subject}"), c.results.get(f"angle_{subject}")
         if omega_id is None or angle_id is None:
             raise SceneError(f"link {subject} has no angular velocity to find extremes of")
 
-        def f(phi: np.ndarray):
+        def link_rate(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             ev = c.evaluate(phi)
             return ev[omega_id], ev[angle_id]
-        return f
+        return link_rate
     owner = next((k for k, lk in mech.links.items() if subject in lk.points and lk.slides_on
                   and mech.guides[lk.slides_on].link == GROUND), None)
     if owner is None:
@@ -45,10 +49,10 @@ def _rate_and_value(c: Construction, mech: Mechanism, subject: str):
     o = np.array(g.origin)
     vid, pid = c.results[f"v_{subject}"], f"pos.{subject}"
 
-    def f(phi: np.ndarray):
+    def slider_rate(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         ev = c.evaluate(phi)
         return ev[vid] @ d, (ev[pid] - o) @ d
-    return f
+    return slider_rate
 
 
 def extreme_positions(c: Construction, mech: Mechanism, subject: str, samples: int = 720,

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
-from typing import Iterable, Iterator
 
 import numpy as np
 
@@ -83,7 +83,7 @@ class Construction:
         """Return the steps of one plan in order."""
         return [s for s in self.steps.values() if s.plan is plan]
 
-    def evaluate(self, phi: Array | float, dtype: type = np.float64) -> "Evaluation":
+    def evaluate(self, phi: Array | float, dtype: type = np.float64) -> Evaluation:
         """Start a lazy evaluation at crank angles φ (radians, scene convention)."""
         return Evaluation(self, np.atleast_1d(np.asarray(phi, dtype=float)), dtype)
 
@@ -124,6 +124,7 @@ class Evaluation:
                 self._compute(self.construction.steps[sid])
 
     def _compute(self, step: Step) -> None:
+        value: Array
         if step.op is Op.CRANK_ANGLE:
             theta = self.construction.drive.absolute(self.phi)
             value, gap, sine = theta.astype(self.dtype), None, None
@@ -133,9 +134,9 @@ class Evaluation:
         else:
             args = [self.values[i] for i in step.inputs]
             value, gap, sine = EVALUATORS[step.op](step, *args)
-        value = np.asarray(value)
-        value.flags.writeable = False
-        self.values[step.id] = value
+        stored: Array = np.asarray(value)
+        stored.flags.writeable = False
+        self.values[step.id] = stored
         if gap is not None:
             self.gaps[step.id] = gap
         if sine is not None:

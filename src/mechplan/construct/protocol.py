@@ -201,10 +201,10 @@ def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
     else:
         v = ""
     templates = TEXT.get(step.op)
-    fields = dict(label=pole_label(step.label, lang), m=(": " + m) if m and step.op in (
+    fields = {"label": pole_label(step.label, lang), "m": (": " + m) if m and step.op in (
         Op.LINE_LINE, Op.SIMILAR_IMAGE, Op.RIGID_VELOCITY, Op.RIGID_ACCELERATION,
-        getattr(Op, "FORCE_CLOSE", Op.LINE_LINE)) else m, v=v,
-        pole="p" if step.plan is Plan.VELOCITY else pole_label("π", lang), a="", b="")
+        getattr(Op, "FORCE_CLOSE", Op.LINE_LINE)) else m, "v": v,
+        "pole": "p" if step.plan is Plan.VELOCITY else pole_label("π", lang), "a": "", "b": ""}
     if step.op is Op.SIMILAR_IMAGE:
         a_lbl, b_lbl = (pole_label(c[i].label, lang) for i in step.inputs[:2])
         fields.update(a=a_lbl, b=b_lbl)

@@ -17,9 +17,9 @@ TWO_PI = 2.0 * math.pi
 def valid_mask(ev: Evaluation, max_condition: float = MAX_CONDITION) -> np.ndarray:
     """Positions where every evaluated meet exists and is well conditioned."""
     ok = np.ones(ev.n, dtype=bool)
-    for sid, gap in ev.gaps.items():
+    for gap in ev.gaps.values():
         ok &= ~(gap > 0)
-    for sid, sine in ev.sines.items():
+    for sine in ev.sines.values():
         with np.errstate(divide="ignore"):
             ok &= ~(1.0 / sine > max_condition)
     return ok

@@ -2,18 +2,28 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 import tomllib
 from pathlib import Path
-
 
 from ..errors import SceneError, TopologyError
 from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
 from ..model.structure import analyse
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
 from .reader import Table
-from .spec import (LANGUAGES, PLANS, DrawingSpec, Extreme, Gravity, LoadKind, LoadSpec,
-                   MassSpec, Positions, Scene)
+from .spec import (
+    LANGUAGES,
+    PLANS,
+    DrawingSpec,
+    Extreme,
+    Gravity,
+    LoadKind,
+    LoadSpec,
+    MassSpec,
+    Positions,
+    Scene,
+)
 
 TOP_KEYS = ("title", "language", "ground", "links", "drive", "assembly", "positions", "analysis",
             "gravity", "loads", "drawing", "title_block", "description")
@@ -496,7 +506,7 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
         parsed.append((t.value_quantity(row[0], f"table[{j}]", xdim),
                        t.value_quantity(row[1], f"table[{j}]", "force")))
     xs = [r[0] for r in parsed]
-    if any(b <= a for a, b in zip(xs, xs[1:])):
+    if any(b <= a for a, b in itertools.pairwise(xs)):
         raise t.error("table", "the first column must increase strictly")
     if against == "crank_angle" and xs[-1] - xs[0] > 2 * math.pi + 1e-9:
         raise t.error("table", "a table against crank angle spans at most one crank turn "

@@ -40,7 +40,7 @@ class Table:
             return default
         return self.data[name]
 
-    def table(self, name: str, required: bool = False) -> "Table | None":
+    def table(self, name: str, required: bool = False) -> Table | None:
         """Return a child table."""
         if name not in self.data:
             if required:

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+
 import numpy as np
 from shapely import box
 from shapely.prepared import prep
@@ -22,7 +23,7 @@ GAP = 8.0          # mm between panels
 MAX_PLAN_POSITIONS = 2
 
 
-def _moved(p: Primitive, dx: float, dy: float) -> Primitive:
+def _moved(p: Primitive | Table, dx: float, dy: float) -> Primitive | Table:
     def mv(q: tuple[float, float]) -> tuple[float, float]:
         return (q[0] + dx, q[1] + dy)
     if isinstance(p, (Line, Arrow)):
@@ -61,7 +62,7 @@ def _extreme_phis(sol: Solution) -> list[float]:
             phis += [e.phi for e in extreme_positions(sol.construction, mech, s)]
         except MechplanError:
             continue
-    return sorted(set(round(p, 12) for p in phis))
+    return sorted({round(p, 12) for p in phis})
 
 
 def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:

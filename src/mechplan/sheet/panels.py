@@ -43,7 +43,7 @@ class Panel:
     """Primitives in panel millimetres with the box they occupy."""
 
     name: str
-    primitives: list[Primitive] = field(default_factory=list)
+    primitives: list[Primitive | Table] = field(default_factory=list)
 
     def bounds(self) -> tuple[float, float, float, float]:
         """(x0, y0, x1, y1) of everything drawn."""
@@ -56,7 +56,7 @@ class Panel:
         return (min(xs), min(ys), max(xs), max(ys)) if xs else (0.0, 0.0, 0.0, 0.0)
 
 
-def _points_of(p: Primitive) -> list[tuple[float, float]]:
+def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
     if isinstance(p, (Line, Arrow)):
         return [p.start, p.end]
     if isinstance(p, Polyline):
@@ -80,7 +80,7 @@ def _points_of(p: Primitive) -> list[tuple[float, float]]:
 def mu_text(plan: Plan, mu: float, lang: str) -> str:
     """"μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
     sym, unit = SCALE_UNIT[plan]
-    digits = max(0, -int(math.floor(math.log10(mu))) + 3) if mu > 0 else 3
+    digits = max(0, -math.floor(math.log10(mu)) + 3) if mu > 0 else 3
     num = format_number(mu, digits, lang).rstrip("0").rstrip(",.")
     return f"{sym} = {num} {unit}"
 
@@ -169,7 +169,7 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
 
 def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, plan: Plan,
                       mu: float, lang: str, title: str, segments: list, group: str | None) -> None:
-    x0, y0, x1, y1 = panel.bounds()
+    x0, y0, _x1, y1 = panel.bounds()
     prims = panel.primitives
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(plan, mu, lang), LABEL_H))
@@ -254,13 +254,13 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
         if g.link != "0":
             continue
         p = next(iter(lk.points))
-        path = np.asarray(ev_traj[f"pos.{p}"])
-        path = path[np.isfinite(path).all(axis=1)]
-        if path.size == 0:
+        travel = np.asarray(ev_traj[f"pos.{p}"])
+        travel = travel[np.isfinite(travel).all(axis=1)]
+        if travel.size == 0:
             continue
         u = np.array([math.cos(g.angle), math.sin(g.angle)])
         o = np.array(g.origin)
-        t = (path - o) @ u
+        t = (travel - o) @ u
         a, b = o + (t.min() - 10 * mu) * u, o + (t.max() + 10 * mu) * u
         prims.append(Line(_mm(a, mu), _mm(b, mu), Role.CHAIN))
         prims.append(Text(_mm(b, mu), g.name, 2.5))
@@ -294,7 +294,7 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
             q = _mm(ev_all[f"pos.{p}"][k0], mu)
             if _finite(q):
                 prims.append(placer.place(q, p))
-    x0, y0, x1, y1 = panel.bounds()
+    x0, _y0, _x1, y1 = panel.bounds()
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(Plan.POSITION, mu, lang), LABEL_H))
     return panel
@@ -354,7 +354,7 @@ def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: 
             inputs = inputs[2:]
             forces.append((turned(ev[img][k]), ev[force][k], c[force].label))
         else:
-            couple, omega = inputs[0], inputs[1]
+            couple, _omega = inputs[0], inputs[1]
             inputs = inputs[2:]
             couples.append(f"{c[couple].label} = {format_number(float(ev[couple][k]), 2, lang)} N·m")
     largest = max((float(np.hypot(*f)) for _, f, _ in forces), default=0.0)
@@ -372,7 +372,7 @@ def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: 
         prims.append(placer.place((0.0, 0.0), "p"))
         for at, label in placer_items:
             prims.append(placer.place(at, label))
-        x0, y0, x1, y1 = panel.bounds()
+        x0, y0, _x1, y1 = panel.bounds()
         prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
         prims.append(Text((x0, y1 + 3.0), f"{mu_text(Plan.VELOCITY, mu_v, lang)};  "
                           f"{mu_text(Plan.FORCE, mu_f, lang)}", LABEL_H))

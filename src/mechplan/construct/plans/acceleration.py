@@ -7,7 +7,15 @@ from ...model.structure import Group
 from ..builder import Builder, alabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
-from .images import absolute, coincident, complete, link_scalar, meet_lines, parallel_line, perp_line
+from .images import (
+    absolute,
+    coincident,
+    complete,
+    link_scalar,
+    meet_lines,
+    parallel_line,
+    perp_line,
+)
 
 A = Plan.ACCELERATION
 
@@ -162,8 +170,8 @@ def _rpr(b: Builder, g: Group) -> None:
     b.segment(A, "acc.pi", meet, f"π{label}", f"a_{ps}{c}", SegmentKind.ABSOLUTE, g.name)
     b.result(f"a_{ps}{c}", meet)
     b.c.equations[(A, g.name)] = (
-        f"a_{ps}{c} = a_{ps}{s} + a^k_{ps}{c}{ps}{s} + a^r_{ps}{c}{ps}{s} = a_{pc} + a^n_{ps}{c}{pc} + "
-        f"a^t_{ps}{c}{pc}", [
+        (f"a_{ps}{c} = a_{ps}{s} + a^k_{ps}{c}{ps}{s} + a^r_{ps}{c}{ps}{s} = a_{pc} + a^n_{ps}{c}{pc} + "
+        f"a^t_{ps}{c}{pc}"), [
             (f"a_{ps}{s}", "✓", "✓"), (f"a^k_{ps}{c}{ps}{s}", f"⊥ {guide.name}", f"2ω{c}·v_{ps}{c}{ps}{s}"),
             (f"a^r_{ps}{c}{ps}{s}", f"∥ {guide.name}", "?"), (f"a_{pc}", "✓", "✓"),
             (f"a^n_{ps}{c}{pc}", f"{ps} → {pc}", f"ω{c}²·l_{pc}{ps}"),
@@ -186,8 +194,8 @@ def _prp(b: Builder, g: Group) -> None:
     link_scalar(b, l2, m2, A, g.name)
     absolute(b, k, A, g.name)
     b.c.equations[(A, g.name)] = (
-        f"a_{k} = a_{k}{m1} + a^k_{k}{l1}{k}{m1} + a^r_{k}{l1}{k}{m1} = a_{k}{m2} + a^k_{k}{l2}{k}{m2} + "
-        f"a^r_{k}{l2}{k}{m2}", [
+        (f"a_{k} = a_{k}{m1} + a^k_{k}{l1}{k}{m1} + a^r_{k}{l1}{k}{m1} = a_{k}{m2} + a^k_{k}{l2}{k}{m2} + "
+        f"a^r_{k}{l2}{k}{m2}"), [
             (f"a_{k}{m1}", "✓", "✓"), (f"a^k_{k}{l1}{k}{m1}", "⊥", f"2ω{m1}·v_{k}{l1}{k}{m1}"),
             (f"a^r_{k}{l1}{k}{m1}", "∥", "?"), (f"a_{k}{m2}", "✓", "✓"),
             (f"a^k_{k}{l2}{k}{m2}", "⊥", f"2ω{m2}·v_{k}{l2}{k}{m2}"), (f"a^r_{k}{l2}{k}{m2}", "∥", "?")])

@@ -7,7 +7,15 @@ from ...model.structure import Group
 from ..builder import Builder, Image, vlabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
-from .images import absolute, coincident, complete, link_scalar, meet_lines, parallel_line, perp_line
+from .images import (
+    absolute,
+    coincident,
+    complete,
+    link_scalar,
+    meet_lines,
+    parallel_line,
+    perp_line,
+)
 
 V = Plan.VELOCITY
 
