@@ -94,3 +94,18 @@ def test_new_copies_a_template(tmp_path, capsys):
     assert run(["new", "shaper", "-o", str(dest)], capsys)[0] == 0
     assert dest.read_text() == (ROOT / "templates" / "shaper.toml").read_text()
     assert run(["new", "shaper", "-o", str(dest)], capsys)[0] == 2
+
+
+def test_solve_json_carries_forces_and_reduced_values(capsys):
+    code, out, _ = run(["solve", str(ROOT / "templates" / "v_engine.toml"), "--json"], capsys)
+    pos = json.loads(out)["positions"][0]
+    forces = pos["forces"]
+    assert set(forces) == {"inertia", "reactions", "guide_reactions", "balancing_moment",
+                           "zhukovsky_balancing_moment"}
+    assert set(forces["reactions"]) == {"01", "12", "23", "24", "45"}
+    assert set(forces["guide_reactions"]) == {"03", "05"}
+    assert forces["balancing_moment"] == pytest.approx(forces["zhukovsky_balancing_moment"], rel=1e-9)
+    # gas force p·πd²/4 on piston E, along Ay towards A: the guide reaction is ⊥ Ay
+    r05 = forces["guide_reactions"]["05"]["force"]
+    assert r05[0] * math.cos(math.radians(120)) + r05[1] * math.sin(math.radians(120)) == pytest.approx(0, abs=1e-9)
+    assert set(pos["reduced"]) == {"moment", "inertia"} and pos["reduced"]["inertia"] > 0

@@ -127,3 +127,8 @@ def test_load_towards_its_own_point_and_table_longer_than_a_turn():
     table = '[["0 deg", "0 N"], ["400 deg", "10 N"]]'
     err = error_of(base + f'\n[[loads]]\ntype = "table"\npoint = "B"\ntowards = "O"\ntable = {table}\n')
     assert "key 'loads[0].table'" in str(err) and "one crank turn" in str(err)
+
+
+def test_title_block_fields_are_checked():
+    err = error_of(GOOD + '\n[title_block]\nautor = "Nguyễn Văn A"\n')
+    assert "key 'title_block.autor'" in str(err) and "did you mean 'author'" in str(err)

@@ -15,6 +15,7 @@ from .reader import Table
 from .spec import (
     LANGUAGES,
     PLANS,
+    TITLE_BLOCK_FIELDS,
     DrawingSpec,
     Extreme,
     Gravity,
@@ -521,7 +522,10 @@ def _drawing(top: Table) -> DrawingSpec:
     tb = top.table("title_block")
     fields: dict[str, str] = {}
     if tb is not None:
+        tb.check_keys(TITLE_BLOCK_FIELDS)
         for k, v in tb.data.items():
+            if isinstance(v, (dict, list)) or "\n" in str(v):
+                raise tb.error(k, f"expected one line of text (got {v!r})")
             fields[k] = str(v)
     if t is None:
         return DrawingSpec(title_block=fields)

@@ -14,6 +14,7 @@ from types import MappingProxyType
 from shapely.geometry import Polygon, box
 
 from mechplan.errors import DrawingError
+from mechplan.scene.spec import TITLE_BLOCK_FIELDS
 from mechplan.sheet.fonts import text_width_mm
 from mechplan.sheet.primitives import (
     LANGUAGES,
@@ -52,10 +53,7 @@ PAPER_SIZES_MM: Mapping[str, tuple[float, float]] = MappingProxyType(
 )
 
 #: Field names accepted by `make_frame`.
-TITLE_FIELDS: tuple[str, ...] = (
-    "title", "author", "group", "instructor", "school", "department", "date", "scale",
-    "sheet_number", "sheets_total", "designation", "document_type", "material", "litera",
-)
+TITLE_FIELDS: tuple[str, ...] = TITLE_BLOCK_FIELDS
 
 #: Margins (left, bottom, right, top) in mm.
 _MARGINS = {
