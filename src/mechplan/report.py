@@ -6,7 +6,8 @@ import math
 
 import numpy as np
 
-from .construct.protocol import MM, PLAN_TITLE, SENSE, pole_label, protocol, vector_text
+from .construct.protocol import (MM, PLAN_TITLE, SENSE, localize_direction, pole_label, protocol,
+                                 vector_text)
 from .construct.step import Plan
 from .solve import Solution, segment_table
 from .units import format_number
@@ -59,7 +60,8 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
                 if p is plan:
                     out.append(f"{w['equation']} {group}: {eq}")
                     for term, direction, magnitude in rows:
-                        out.append(f"    {term:<16} {direction:<12} {magnitude}")
+                        out.append(f"    {term:<16} {localize_direction(direction, lang):<12} "
+                                   f"{magnitude}")
             n = 0
             for p, label, text in steps:
                 if p is plan:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -146,6 +147,23 @@ _OFFSETS = {getattr(Op, n) for n in ("GUIDE_OFFSET", "INERTIA_OFFSET") if hasatt
 
 UNITS = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
 MM = {"en": "mm", "ru": "мм", "vi": "mm", "zh": "mm"}
+
+
+_DIRECTION_WORDS = [
+    (re.compile(r"opposite to (\S+)"), {"ru": r"противоположно \1", "vi": r"ngược chiều \1",
+                                         "zh": r"与 \1 反向"}),
+    (re.compile(r"against (\S+)"), {"ru": r"против \1", "vi": r"ngược chiều \1", "zh": r"与 \1 反向"}),
+    (re.compile(r"towards (\S+)"), {"ru": r"к \1", "vi": r"hướng về \1", "zh": r"指向 \1"}),
+]
+
+
+def localize_direction(text: str, lang: str) -> str:
+    """Translate the words of a vector-equation direction ("opposite to πs2′", "towards A")."""
+    if lang == "en":
+        return text
+    for pattern, words in _DIRECTION_WORDS:
+        text = pattern.sub(words[lang], text)
+    return pole_label(text, lang)
 
 
 def pole_label(label: str, lang: str) -> str:

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..construct.graph import Construction, Evaluation
-from ..construct.protocol import MM, PLAN_TITLE, pole_label
+from ..construct.protocol import MM, PLAN_TITLE, localize_direction, pole_label
 from ..construct.segments import SegmentKind
 from ..construct.step import Kind, Op, Plan
 from ..units import format_number
@@ -193,7 +193,8 @@ def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, pla
             continue
         prims.append(Text((x0, y - TABLE_H), f"{g}:  {eq}", TABLE_H))
         y -= TABLE_H + 2.5
-        t2 = table([(head[5], head[6], head[7])] + [tuple(r) for r in terms], (x0, y))
+        t2 = table([(head[5], head[6], head[7])] +
+                   [(term, localize_direction(d, lang), m) for term, d, m in terms], (x0, y))
         prims.append(t2)
         y -= sum(t2.row_heights_mm) + 4.0
 
