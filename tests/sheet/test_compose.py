@@ -211,3 +211,12 @@ def test_chromium_renders_a_full_sheet(tmp_path, require):
     cols = np.nonzero(row)[0]
     frame_px = cols.max() - cols.min()
     assert frame_px * 25.4 / 96 == pytest.approx(811.0, abs=1.0)
+
+
+def test_plans_at_chooses_the_positions_drawn(tmp_path):
+    text = (ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
+    scene_path = tmp_path / "fb.toml"
+    scene_path.write_text(text + "\n[drawing]\nplans_at = [3, 7]\n", encoding="utf-8")
+    comp = composed(scene_path)
+    names = [panel.name for placed in comp.placements for panel, _ in placed]
+    assert "velocity-3" in names and "velocity-7" in names and "velocity-1" not in names

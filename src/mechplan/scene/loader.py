@@ -84,7 +84,8 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
         path=file, title=top.string("title", Path(file).stem) or "", language=language or "en",
         mechanism=mech, positions=positions, plans=plans, points_of_interest=interest,
         masses=masses, loads=_loads(top, links, guides, masses), gravity=_gravity(top),
-        drawing=_drawing(top), assembly_phi=assembly_phi)
+        drawing=_drawing(top, len(positions.angles) or positions.count),
+        assembly_phi=assembly_phi)
 
 
 def _ground(top: Table) -> tuple[dict[str, tuple[float, float]], dict[str, Guide]]:
@@ -517,7 +518,7 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
                     key=t.path)
 
 
-def _drawing(top: Table) -> DrawingSpec:
+def _drawing(top: Table, positions: int) -> DrawingSpec:
     t = top.table("drawing")
     tb = top.table("title_block")
     fields: dict[str, str] = {}
@@ -529,7 +530,7 @@ def _drawing(top: Table) -> DrawingSpec:
             fields[k] = str(v)
     if t is None:
         return DrawingSpec(title_block=fields)
-    t.check_keys(("sheet", "standard", "scales"))
+    t.check_keys(("sheet", "standard", "scales", "plans_at"))
     scales: dict[str, float] = {}
     st = t.table("scales")
     if st is not None:
@@ -538,8 +539,13 @@ def _drawing(top: Table) -> DrawingSpec:
             v = st.quantity(k, dim, positive=True)
             if v is not None:
                 scales[k] = v
+    plans_at = t.raw("plans_at", [])
+    if not isinstance(plans_at, list) or not all(
+            isinstance(n, int) and not isinstance(n, bool) and 0 <= n < positions for n in plans_at):
+        raise t.error("plans_at", f"expected position numbers from 0 to {positions - 1}, e.g. "
+                      f"[1, 4] (got {plans_at!r})")
     return DrawingSpec(sheet=t.string("sheet", "A1", choices=SHEETS) or "A1",
                        standard=t.string("standard", "iso", choices=STANDARDS) or "iso",
-                       scales=scales, title_block=fields)
+                       scales=scales, title_block=fields, plan_positions=tuple(plans_at))
 
 

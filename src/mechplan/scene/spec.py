@@ -96,6 +96,7 @@ class DrawingSpec:
     standard: str = "iso"
     scales: dict[str, float] = field(default_factory=dict)
     title_block: dict[str, str] = field(default_factory=dict)
+    plan_positions: tuple[int, ...] = ()     # numbers of the positions whose plans are drawn
 
 
 @dataclass(frozen=True, slots=True)

@@ -41,6 +41,9 @@ def _moved(p: Primitive | Table, dx: float, dy: float) -> Primitive | Table:
 
 def plan_positions(sol: Solution) -> list[int]:
     """Positions whose velocity and acceleration plans go on the sheet."""
+    chosen = [k for k in sol.scene.drawing.plan_positions if k < sol.positions]
+    if chosen:
+        return chosen
     if sol.scene.positions.angles:
         return list(range(min(sol.positions, MAX_PLAN_POSITIONS)))
     return [1 % sol.positions]
