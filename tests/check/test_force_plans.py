@@ -6,7 +6,6 @@ import pytest
 
 from mechplan.check import Options, check
 from mechplan.check.report import CARRIED, NEW, OK, REFERENCE, WRONG
-from mechplan.construct.segments import SegmentKind
 from mechplan.construct.step import Plan
 from mechplan.dynamics import Loading
 from mechplan.scene import load_scene
@@ -17,8 +16,6 @@ from .sheets import TEMPLATES, PlanSpec, exact_sheet, move, write_dxf
 F, V = Plan.FORCE, Plan.VELOCITY
 GROUP = "II(2,3)"
 
-pytestmark = pytest.mark.skipif(not hasattr(SegmentKind, "FORCE"),
-                                reason="the force plan has no segments yet")
 
 
 @pytest.fixture

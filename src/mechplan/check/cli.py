@@ -12,6 +12,7 @@ from typing import Any
 from ..construct.step import Plan
 from ..errors import CheckError, SceneError
 from .report import Tolerance
+from .texts import LANGUAGES, T
 
 PLAN_NAMES = {"position": Plan.POSITION, "velocity": Plan.VELOCITY,
               "acceleration": Plan.ACCELERATION, "force": Plan.FORCE, "l": Plan.POSITION,
@@ -49,6 +50,9 @@ def add_parser(subparsers: Any) -> None:
                    help="write the report: .json, .txt, or an overlay sheet .svg / .dxf / .pdf "
                    "(may be repeated)")
     p.add_argument("--json", action="store_true", help="print the report as JSON")
+    p.add_argument("--lang", choices=LANGUAGES, default=None,
+                   help="language of the report, its hints and the overlay's notes: en, ru, vi "
+                   "or zh (default: the scene's language); ru and vi write a decimal comma")
     p.set_defaults(func=run)
 
 
@@ -127,22 +131,29 @@ def run(args: argparse.Namespace) -> int:
         raise CheckError(f"--snap must not be negative (got {args.snap})")
     options = Options(at_deg=args.at, tolerance=parse_tolerances(args.tolerance),
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
-    report = check(args.scene, args.submission, options)
-    doc = report.to_json()
+    from ..scene import load_scene
+
+    scene = load_scene(args.scene)
+    lang = getattr(args, "lang", None) or scene.language or "en"
+    if lang not in LANGUAGES:
+        lang = "en"
+    report = check(scene, args.submission, options)
+    doc = report.to_json(lang)
+    text = report.text(lang)
     for o in outputs:
         suffix = o.suffix.lower()
         if suffix == ".json":
             _write(o, (json.dumps(doc, ensure_ascii=False, indent=1) + "\n").encode("utf-8"))
         elif suffix in TEXT_SUFFIXES:
-            _write(o, (report.text() + "\n").encode("utf-8"))
+            _write(o, (text + "\n").encode("utf-8"))
         else:
-            write_overlay(report, o)
+            write_overlay(report, o, lang)
     if args.json:
         print(json.dumps(doc, ensure_ascii=False, indent=1))
     else:
-        print(report.text())
+        print(text)
     for o in outputs:
-        print(f"wrote {o}", file=sys.stderr)
+        print(T("cli.wrote", path=str(o)).tr(lang), file=sys.stderr)
     return 0 if report.passed else 1
 
 

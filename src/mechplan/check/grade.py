@@ -24,7 +24,7 @@ from ..construct.step import Kind, Op, Plan
 from ..errors import CheckError, MechplanError
 from ..scene.spec import Scene
 from .hints import HintContext, depends_on, rule
-from .labels import LabelBook, PlanKey, is_angle_name, plan_key, plan_name
+from .labels import LabelBook, PlanKey, is_angle_name, plan_key
 from .match import GivenValue, Interpretation, QuantityIndex, SegmentIndex, TableSegment, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
 from .report import (
@@ -47,6 +47,7 @@ from .report import (
     ValueRow,
 )
 from .submission import Note, Submission, read_submission
+from .texts import T, join, plan_title, plan_word, with_case
 
 SI_UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
            "angular_acceleration": "rad/s²", "force": "N", "moment": "N·m", "inertia": "kg·m²",
@@ -154,8 +155,7 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         best = 0
     else:
         best = min(range(len(reports)), key=lambda i: _score(reports[i]))
-        phi_source = (f"the best fit of the scene's {len(candidates)} positions "
-                      f"(no --at given)")
+        phi_source = T("phi.best_of", n=len(candidates))
     report = reports[best]
     report.phi_source = phi_source
     report.notes = _dedupe(notes + report.notes)
@@ -188,7 +188,7 @@ def _angles(scene: Scene, sub: Submission, options: Options,
     from .points import units_ascii
 
     if options.at_deg is not None:
-        return [float(options.at_deg)], "given with --at"
+        return [float(options.at_deg)], T("phi.at")
     for e in sub.entries:
         if is_angle_name(e.name):
             text = e.text or e.value or e.length or ""
@@ -197,17 +197,17 @@ def _angles(scene: Scene, sub: Submission, options: Options,
                                                                 for ch in text)
                                        else f"{text} deg", "angle")
             except MechplanError as exc:
-                notes.append(Note("warning", f"crank angle '{e.name} = {text}': {exc.detail}",
-                                  e.where))
+                notes.append(Note("warning", T("note.crank_angle", name=e.name, text=text,
+                                                detail=exc.detail), e.where))
                 continue
-            return [math.degrees(value)], f"read from '{e.name} = {text}' ({e.where})"
+            return [math.degrees(value)], T("read_from", name=e.name, text=text, where=e.where)
     if len(scene.positions.angles) == 1:
-        return [math.degrees(scene.positions.angles[0])], "the scene's only position"
+        return [math.degrees(scene.positions.angles[0])], T("phi.only")
     from ..solve import build, crank_positions
 
     _, c = build(scene, ("position", "velocity"))
     phi = crank_positions(scene, c)
-    return [float(math.degrees(p)) for p in phi], "best fit"
+    return [float(math.degrees(p)) for p in phi], T("phi.best")
 
 
 def _wants_force(sub: Submission) -> bool:
@@ -241,14 +241,13 @@ def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]
                             loading=loading)
                 sol.extras["loading"] = loading
                 return sol
-            notes.append(Note("info", "the scene gives no masses or loads; force quantities "
-                              "are not checked", scene.path or ""))
+            notes.append(Note("info", T("note.no_loads"), scene.path or ""))
         except MechplanError:
             raise
         except Exception as exc:  # noqa: BLE001 - the force plan is optional for a check
-            notes.append(Note("warning", f"the force plan cannot be built "
-                              f"({exc.__class__.__name__}: {exc}); force quantities are not "
-                              "checked", scene.path or ""))
+            notes.append(Note("warning", T("note.no_force_plan",
+                                           error=f"{exc.__class__.__name__}: {exc}"),
+                              scene.path or ""))
     plans = tuple(p for p in plans if p != "force")
     return solve(scene, at_deg=at_deg, plans=plans)
 
@@ -388,9 +387,8 @@ def _turn_back(dp: DrawnPlan, anchor: str, turn: float) -> DrawnPlan:
     out = DrawnPlan(dp.key, {s: replace(p, at=q(p.at)) for s, p in dp.points.items()},
                     [replace(ln, start=q(ln.start), end=q(ln.end)) for ln in dp.lines],
                     dp.number, dp.mu, dp.mu_source, dp.convention)
-    note = (f"drawn turned by {turn:+.0f}° (Zhukovsky's lever); checked turned back about "
-            f"{dp.points[anchor].label}")
-    out.convention = f"{dp.convention}; {note}" if dp.convention else note
+    note = T("convention.turned", turn=turn, label=dp.points[anchor].label)
+    out.convention = T("pair", a=dp.convention, b=note) if dp.convention else note
     return out
 
 
@@ -412,15 +410,12 @@ def _prepare(ctx: _Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> _Drawn:
             drawn = math.dist(dp.points[reference.end].at, dp.points[reference.start].at)
             if drawn > 1e-9 and exact > 0:
                 mu = exact / drawn
-                source = (f"inferred from {reference.name} ↔ {reference.quantity} "
-                          f"({reference.name} is drawn {drawn:.1f} mm; {reference.quantity} = "
-                          f"{exact:.4g} {PLAN_UNIT[plan]}); no scale factor is written for the "
-                          f"{plan.value} plan")
+                source = T("mu.inferred_drawn", ref=reference.name, q=reference.quantity,
+                           drawn=drawn, exact=exact, unit=PLAN_UNIT[plan],
+                           plan=plan_title(plan.value, case="gen"))
         if mu is None:
-            notes.append(Note("error", f"no scale factor for the {dp.name}: none is written "
-                              f"(e.g. 'μ{plan.value[0]} = …'), none given on the command line, and "
-                              "no segment with both ends labelled to infer it from; its lengths "
-                              "are not checked", ctx.sub.path))
+            notes.append(Note("error", T("note.no_mu", plan=with_case(dp.name, "gen"),
+                                         v=plan.value[0]), ctx.sub.path))
     else:
         reference = None
     si: dict[str, np.ndarray] = {}
@@ -559,27 +554,24 @@ def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan,
                         abs(r.direction_deg) > r.tolerance_deg:
                     kinds.add("direction")
             error = " and ".join(x for x in ("length", "direction") if x in kinds)
-            segtxt = "; ".join(_row_brief(r) for r in mine)
+            segtxt = join((_row_brief(r) for r in mine), "; ")
             findings.append(Finding(
                 "wrong point", pr.name, labels(sid),
-                f"{labels(sid)} is {d.errors[sid]:.1f} mm from its exact place and "
-                f"{d.own_err[sid]:.1f} mm from where your own earlier points put it"
-                + (f" ({segtxt})" if segtxt else "") + ": "
-                + rule(hctx, c[sid], d.si[sid], d.tol[sid]), sid, error))
+                T("finding.wrong_point", label=labels(sid), err=d.errors[sid],
+                  own=d.own_err[sid], segments=T("paren", x=segtxt) if mine else "",
+                  rule=rule(hctx, c[sid], d.si[sid], d.tol[sid])), sid, error))
     done: set[str] = set()
     for a, b in d.swapped.items():
         if a in done:
             continue
         done |= {a, b}
         findings.append(Finding("swapped labels", pr.name, f"{labels(a)}/{labels(b)}",
-                                f"the labels {labels(a)} and {labels(b)} are swapped: the point "
-                                f"labelled {labels(a)} is where {labels(b)} belongs and the other "
-                                "way round", a))
+                                T("finding.swapped", a=labels(a), b=labels(b)), a))
     for r in rows:
         if r.verdict == WRONG and r.cause == NEW and r.step not in d.status and \
                 not any(f.step == r.step for f in findings):
-            findings.append(Finding("wrong segment", pr.name, r.name, _row_brief(r) + ": " + r.hint,
-                                    r.step, _row_error(r)))
+            findings.append(Finding("wrong segment", pr.name, r.name,
+                                    T("colon", a=_row_brief(r), b=r.hint), r.step, _row_error(r)))
     return pr
 
 
@@ -596,11 +588,12 @@ def _row_error(r: SegmentRow) -> str:
 def _row_brief(r: SegmentRow) -> str:
     parts = []
     if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
-        parts.append(f"{r.name} is {abs(r.error_mm):.1f} mm too {'long' if r.error_mm > 0 else 'short'}")
+        parts.append(T("brief.long" if r.error_mm > 0 else "brief.short", name=r.name,
+                       err=abs(r.error_mm)))
     if r.direction_deg is not None and r.tolerance_deg is not None and \
             abs(r.direction_deg) > r.tolerance_deg:
-        parts.append(f"{r.name} is turned {r.direction_deg:+.1f}°")
-    return ", ".join(parts) or f"{r.name} is off"
+        parts.append(T("brief.turned", name=r.name, dir=r.direction_deg))
+    return join(parts) if parts else T("brief.off", name=r.name)
 
 
 def _roots(ctx: _Ctx, status: dict[str, str], sid: str) -> list[str]:
@@ -613,7 +606,8 @@ def _roots(ctx: _Ctx, status: dict[str, str], sid: str) -> list[str]:
 def _where_label(ctx: _Ctx, sid: str, d: _Drawn) -> str:
     """A step's label, with its plan when it is on another plan than ``d``."""
     st = ctx.c[sid]
-    return st.label if st.plan is d.dp.plan else f"{st.label} ({st.plan.value} plan)"
+    return st.label if st.plan is d.dp.plan else T("where_label", label=st.label,
+                                                    plan=plan_title(st.plan.value))
 
 
 def _point_at(dp: DrawnPlan, at: tuple[float, float], snap: float) -> str | None:
@@ -649,12 +643,12 @@ def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, 
     if start not in dp.points or end not in dp.points:
         row.verdict = MISSING
         missing = [c[s].label for s in (start, end) if s not in dp.points]
-        row.hint = f"not labelled on the submission: {', '.join(missing)}"
+        row.hint = T("hint.missing", labels=join(missing))
         return row
     a, b = np.asarray(dp.points[start].at), np.asarray(dp.points[end].at)
     vec = b - a
     row.submitted_mm = float(np.hypot(*vec))
-    row.where = f"{dp.points[start].where}; {dp.points[end].where}"
+    row.where = T("pair", a=dp.points[start].where, b=dp.points[end].where)
     if d.mu:
         row.submitted_value = row.submitted_mm * d.mu
     ref_len = exact_mm if exact_mm is not None else row.submitted_mm
@@ -679,14 +673,14 @@ def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, 
     else:
         row.verdict = WRONG
     if is_reference:
-        row.hint = "used for the scale factor: its length is right by definition"
+        row.hint = T("hint.reference")
     if row.verdict != WRONG:
         return row
     # why: swapped labels, a new error at one end, carried from earlier items, or small ones adding up
     if start in d.swapped or end in d.swapped:
         row.cause = SWAPPED
         x = end if end in d.swapped else start
-        row.hint = f"the labels {c[x].label} and {c[d.swapped[x]].label} are swapped"
+        row.hint = T("hint.swapped", a=c[x].label, b=c[d.swapped[x]].label)
         row.step = x
         return row
     if status.get(end) == NEW or (status.get(start) == NEW and end not in status):
@@ -707,12 +701,12 @@ def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, 
     if explained and roots:
         row.cause = CARRIED
         row.carried_from = [_where_label(ctx, r, d) for r in roots]
-        row.hint = (f"carried from {', '.join(row.carried_from)}: built right from wrong "
-                    "earlier points")
+        row.hint = T("hint.carried", roots=join(row.carried_from))
     elif explained or status.get(end) in (CARRIED, ACCUMULATED):
         row.cause = ACCUMULATED
-        errs = ", ".join(f"{c[x].label} {d.errors.get(x, 0.0):.1f} mm" for x in (start, end))
-        row.hint = f"small errors of the points ({errs}) add up on this short segment"
+        errs = join(T("hint.point_err", label=c[x].label, err=d.errors.get(x, 0.0))
+                    for x in (start, end))
+        row.hint = T("hint.accumulated", errs=errs)
     else:
         row.cause = NEW
         row.hint = rule(hctx, c[end], d.si[end], d.tol.get(end, tol.mm))
@@ -736,21 +730,22 @@ def _grade_table_segments(ctx: _Ctx, k: int, mu_all: dict[Plan, float],
         items.sort(key=lambda t: order.get(id(t.segment), 0))
         mu, source = None, ""
         if plan in ctx.options.mu:
-            mu, source = ctx.options.mu[plan], "given on the command line"
+            mu, source = ctx.options.mu[plan], T("mu.cli")
         elif plan in ctx.interp.scales:
             mu, source = ctx.interp.scales[plan]
         elif any(t.mu for t in items):
             t0 = next(t for t in items if t.mu)
-            mu, source = t0.mu, f"read from the row of {t0.written} ({t0.where})"
+            mu, source = t0.mu, T("mu.row", written=t0.written, where=t0.where)
         reference = None
         if mu is None and items:
             reference = items[0]
             exact = _seg_exact(ctx, reference.segment, k)
             if reference.length_mm > 0:
                 mu = exact / reference.length_mm
-                source = (f"inferred from {reference.written} ↔ {reference.segment.quantity} "
-                          f"(no scale factor is given for the {plan.value} plan)")
-        pr = PlanReport(plan_name(key) + " plan (table)", plan.value, key[1], mu, source, tol)
+                source = T("mu.inferred_table", written=reference.written,
+                           q=reference.segment.quantity, plan=plan_title(plan.value, case="gen"))
+        pr = PlanReport(plan_title(plan.value, key[1], table=True), plan.value, key[1], mu,
+                        source, tol)
         wrong_ends: dict[str, str] = {}
         for ts in items:
             seg = ts.segment
@@ -763,14 +758,14 @@ def _grade_table_segments(ctx: _Ctx, k: int, mu_all: dict[Plan, float],
             row.submitted_value = ts.length_mm * row_mu if row_mu else None
             if exact_mm is None:
                 row.verdict = UNCHECKED
-                row.hint = "no scale factor"
+                row.hint = T("hint.no_mu")
             else:
                 row.tolerance_mm = tol.allowed_mm(exact_mm)
                 row.error_mm = ts.length_mm - exact_mm
                 row.error_pct = 100 * row.error_mm / exact_mm if exact_mm else None
                 if ts is reference:
                     row.verdict = REFERENCE
-                    row.hint = "used for the scale factor: its length is right by definition"
+                    row.hint = T("hint.reference")
                 else:
                     row.verdict = OK if abs(row.error_mm) <= row.tolerance_mm else WRONG
             present = {t.segment.end for t in items} | {t.segment.start for t in items}
@@ -781,14 +776,13 @@ def _grade_table_segments(ctx: _Ctx, k: int, mu_all: dict[Plan, float],
                 if earlier:
                     row.cause = CARRIED
                     row.carried_from = earlier
-                    row.hint = (f"may be carried from {', '.join(earlier)} (an earlier wrong "
-                                "segment it is built from)")
+                    row.hint = T("hint.may_carried_segment", earlier=join(earlier))
                 else:
                     row.cause = NEW
                     row.hint = _table_hint(ctx, seg)
                     report.findings.append(Finding("wrong segment", pr.name, seg.name,
-                                                   f"{_row_brief(row)}: {row.hint}", seg.end,
-                                                   "length"))
+                                                   T("colon", a=_row_brief(row), b=row.hint),
+                                                   seg.end, "length"))
                 wrong_ends[seg.end] = seg.name
             pr.segments.append(row)
         out.append(pr)
@@ -800,16 +794,16 @@ def _table_hint(ctx: _Ctx, seg: Segment) -> str:
 
     st = ctx.c[seg.end]
     texts = TEXT.get(st.op)
-    base = f"built by the step '{st.op.value.replace('_', ' ')}' ({st.label})"
+    base = T("hint.step", op=st.op.value.replace('_', ' '), label=st.label)
     if texts and st.op in (Op.LINE_LINE,):
-        base = (f"{st.label} is where the lines {ctx.c[st.inputs[0]].label} and "
-                f"{ctx.c[st.inputs[1]].label} meet")
+        base = T("hint.meet", label=st.label, a=ctx.c[st.inputs[0]].label,
+                 b=ctx.c[st.inputs[1]].label)
     elif st.op is Op.NORMAL:
-        base = f"{st.label}: ω²·l of the link, with ω from the velocity plan"
+        base = T("hint.normal", label=st.label)
     elif st.op is Op.SIMILAR_IMAGE:
-        base = f"{st.label} follows by the similarity theorem from the images of its link"
+        base = T("hint.similar", label=st.label)
     elif st.op in (Op.DRIVE_VELOCITY, Op.DRIVE_ACCELERATION):
-        base = f"the driving vector to {st.label}"
+        base = T("hint.drive", label=st.label)
     return base
 
 
@@ -863,8 +857,8 @@ def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _
         elif own is not None and abs(sub_cmp - (own if signed else abs(own))) > arith:
             row.verdict = SLIP
             row.cause = NEW
-            row.hint = f"arithmetic slip: {own_text}, but {gv.written} = {gv.text} is written"
-            report.findings.append(Finding("arithmetic slip", plan.value if plan else "",
+            row.hint = T("hint.slip", own=own_text, written=gv.written, text=gv.text)
+            report.findings.append(Finding("arithmetic slip", plan_word(plan.value) if plan else "",
                                            gv.written, row.hint, q.step or ""))
         else:
             row.verdict = WRONG
@@ -877,18 +871,20 @@ def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _
                 roots = [c[s].label for s in _roots(ctx, status, q.step)]
             if own is not None:
                 row.cause = CARRIED
-                row.hint = f"follows from your own drawing ({own_text})" + (
-                    f"; carried from {', '.join(dict.fromkeys(roots))}" if roots else "")
+                row.hint = (T("hint.own_carried", own=own_text, roots=join(dict.fromkeys(roots)))
+                            if roots else T("hint.own", own=own_text))
             elif roots:
                 row.cause = CARRIED
-                row.hint = f"may be carried from {', '.join(dict.fromkeys(roots))}"
+                row.hint = T("hint.may_carried", roots=join(dict.fromkeys(roots)))
             else:
                 row.cause = NEW
                 row.hint = _value_hint(ctx, q)
-                report.findings.append(Finding("wrong value", plan.value if plan else "",
-                                               gv.written, f"{gv.written} = {gv.text} differs "
-                                               f"from the exact {exact_cmp:.4g} "
-                                               f"{row.unit} by {row.error_pct:+.1f} %: {row.hint}"
+                report.findings.append(Finding("wrong value",
+                                               plan_word(plan.value) if plan else "",
+                                               gv.written, T("finding.wrong_value",
+                                                             written=gv.written, text=gv.text,
+                                                             exact=exact_cmp, unit=row.unit,
+                                                             pct=row.error_pct, hint=row.hint)
                                                if row.error_pct is not None else row.hint,
                                                q.step or ""))
         report.values.append(row)
@@ -900,16 +896,17 @@ def _value_hint(ctx: _Ctx, q: Any) -> str:
         st = c[q.step]
         if st.op is Op.OMEGA:
             p, qq, vp, vq = st.inputs
-            return (f"{st.label} = v_rel / l_{c[p].label}{c[qq].label} with v_rel the segment "
-                    f"{c[vp].label}{c[vq].label} of the velocity plan")
+            return T("hint.omega", label=st.label, p=c[p].label, q=c[qq].label,
+                     a=c[vp].label, b=c[vq].label)
         if st.op is Op.EPSILON:
             p, qq, n, aq = st.inputs
-            return (f"{st.label} = a^t / l_{c[p].label}{c[qq].label} with a^t the segment "
-                    f"{c[n].label} {c[aq].label} of the acceleration plan")
-        return f"{q.display} comes from the step '{st.op.value.replace('_', ' ')}' ({st.label})"
+            return T("hint.epsilon", label=st.label, p=c[p].label, q=c[qq].label,
+                     n=c[n].label, a=c[aq].label)
+        return T("hint.value_step", display=q.display, op=st.op.value.replace('_', ' '),
+                 label=st.label)
     if q.segment is not None:
-        return f"{q.display} is the segment {q.segment.name} × μ"
-    return f"{q.display} is computed from the velocity plan and the masses"
+        return T("hint.value_segment", display=q.display, seg=q.segment.name)
+    return T("hint.value_dynamics", display=q.display)
 
 
 def _absolute_segment(c: Construction, step: str | None) -> Segment | None:
@@ -941,8 +938,8 @@ def _value_exact(ctx: _Ctx, q: Any, k: int, notes: list[Note], where: str) -> fl
             m_red, j_red = reduced_of(ctx.c, ctx.ev, ctx.scene.mechanism, loading)
             return float((j_red if q.extra == "J_red" else m_red)[k])
         except Exception as exc:  # noqa: BLE001 - the dynamics module is optional here
-            notes.append(Note("warning", f"{q.extra} cannot be computed for this scene "
-                              f"({exc.__class__.__name__}: {exc})", where))
+            notes.append(Note("warning", T("note.not_computable", extra=q.extra,
+                                           error=f"{exc.__class__.__name__}: {exc}"), where))
             return None
     return None
 
@@ -958,7 +955,7 @@ def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, r
         m = gv.mu or mu
         if m:
             own = gv.length_mm * m
-            return own, (f"{gv.length_mm:g} mm × {m:g} = {own:.4g} {unit}"), max(
+            return own, T("own.length", len=gv.length_mm, mu=m, own=own, unit=unit), max(
                 rel, gv.half_unit, gv.length_half_unit * m)
     if seg is not None:
         key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
@@ -966,20 +963,22 @@ def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, r
         if d is not None and d.mu and seg.start in d.dp.points and seg.end in d.dp.points:
             length = math.dist(d.dp.points[seg.start].at, d.dp.points[seg.end].at)
             own = length * d.mu
-            return own, f"{seg.name} = {length:.1f} mm × {d.mu:g} = {own:.4g} {unit}", max(
+            return own, T("own.drawn", seg=seg.name, len=length, mu=d.mu, own=own,
+                          unit=unit), max(
                 rel, gv.half_unit, 0.5 * d.mu)
         ts = table_len.get(id(seg))
         m = (ts.mu if ts else None) or mu
         if ts is not None and m:
             own = ts.length_mm * m
-            return own, f"{seg.name} = {ts.length_mm:g} mm × {m:g} = {own:.4g} {unit}", max(
+            return own, T("own.table", seg=seg.name, len=ts.length_mm, mu=m, own=own,
+                          unit=unit), max(
                 rel, gv.half_unit, ts.length_half_unit * m)
     if q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON):
         st = c[q.step]
         plan_points = [first.get(plan_key(st.plan))]
         if plan_points[0] is not None and plan_points[0].si:
             own = float(np.asarray(red.own(q.step)).reshape(-1)[0])
-            return abs(own), f"from your plan {st.label} = {abs(own):.4g} {unit}", max(
+            return abs(own), T("own.plan", label=st.label, own=abs(own), unit=unit), max(
                 0.01 * abs(gv.value), gv.half_unit)
         # from a table: the relative segment's length × μ / l
         _p, _qq, a, b = st.inputs
@@ -989,6 +988,7 @@ def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, r
         l = _link_length(ctx, q.step, k)
         if ts is not None and m and l:
             own = ts.length_mm * m / l
-            return own, (f"{relseg.name} × μ / l = {ts.length_mm:g} mm × {m:g} / {l:.4g} m = "  # type: ignore[union-attr]
-                         f"{own:.4g} {unit}"), max(0.01 * abs(gv.value), gv.half_unit)
+            return own, T("own.omega", seg=relseg.name,  # type: ignore[union-attr]
+                          len=ts.length_mm, mu=m, l=l, own=own, unit=unit), max(
+                0.01 * abs(gv.value), gv.half_unit)
     return None, "", 0.0

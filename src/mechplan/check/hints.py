@@ -12,6 +12,7 @@ import numpy as np
 from ..construct.graph import Construction
 from ..construct.step import Kind, Op, Plan, Step
 from ..model.mechanism import GROUND, Mechanism
+from .texts import T, Text, join
 
 Value = Callable[[str], np.ndarray]      # the student's own value of a step (leading axis 1)
 
@@ -46,10 +47,6 @@ def _dist_to_line(p: np.ndarray, line: np.ndarray) -> float:
     return abs(d[0] * u[1] - d[1] * u[0]) / n
 
 
-def _fmt(x: float, digits: int = 1) -> str:
-    return "?" if not math.isfinite(x) else f"{x:.{digits}f}"
-
-
 def link_of_points(mech: Mechanism, *points: str) -> str | None:
     """The moving link that holds all the named points."""
     for lid, link in mech.links.items():
@@ -58,14 +55,27 @@ def link_of_points(mech: Mechanism, *points: str) -> str | None:
     return None
 
 
-def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> str:
+def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> Text:
     """What the step's rule is and how the submitted point ``at`` (SI) breaks it."""
     c, plan = ctx.c, step.plan
     lbl = ctx.labels
     label = lbl(step.id)
     own_here = _pt(ctx.own(step.id))
     off = ctx.mm(plan, float(np.hypot(*(at - own_here)))) if np.all(np.isfinite(own_here)) else math.nan
-    tail = f"; from your own earlier points it belongs {_fmt(off)} mm from where it is drawn"
+
+    def tail(body: Text) -> Text:
+        return T("rule.tail", body=body, off=off)
+
+    def on_lines() -> Text:
+        parts = []
+        for lid in step.inputs:
+            line_step = c[lid]
+            through = lbl(line_step.inputs[0]) if line_step.inputs else "?"
+            d = ctx.mm(plan, _dist_to_line(at, ctx.own(lid)))
+            where = T("rule.on_it") if d <= tol_mm else T("rule.off_by", d=d)
+            parts.append(T("rule.on_line", through=through, line=line_step.label, where=where))
+        return join(parts, " and ")
+
     op = step.op
     if op is Op.FORCE_SUM:
         prev, force = step.inputs[0], step.inputs[1]
@@ -73,42 +83,23 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> str:
         drawn = ctx.mm(plan, float(np.hypot(*(at - _pt(ctx.own(prev))))))
         name = c[force].label
         if drawn <= tol_mm < exact_len:
-            return (f"the load {name} is missing from this force polygon: it acts on the group "
-                    f"and is laid off from {lbl(prev)}, {_fmt(exact_len)} mm long")
-        return (f"{label} is the end of the load {name} laid off from {lbl(prev)}: "
-                f"{_fmt(exact_len)} mm long, in the direction of the force" + tail)
+            return T("rule.load_missing", name=name, prev=lbl(prev), len=exact_len)
+        return tail(T("rule.load_end", label=label, name=name, prev=lbl(prev), len=exact_len))
     if op in (Op.LINE_LINE, Op.FORCE_CLOSE):
-        parts = []
-        for lid in step.inputs:
-            line_step = c[lid]
-            through = lbl(line_step.inputs[0]) if line_step.inputs else "?"
-            d = ctx.mm(plan, _dist_to_line(at, ctx.own(lid)))
-            where = "on it" if d <= tol_mm else f"{_fmt(d)} mm off"
-            parts.append(f"on the line through {through} {line_step.label} ({where})")
-        closes = "closes the force polygon: it " if op is Op.FORCE_CLOSE else ""
-        return f"{label} {closes}must lie " + " and ".join(parts) + tail
-    if op is Op.LINE_LINE:
-        parts = []
-        for lid in step.inputs:
-            line_step = c[lid]
-            through = lbl(line_step.inputs[0]) if line_step.inputs else "?"
-            d = ctx.mm(plan, _dist_to_line(at, ctx.own(lid)))
-            where = "on it" if d <= tol_mm else f"{_fmt(d)} mm off"
-            parts.append(f"on the line through {through} {line_step.label} ({where})")
-        return f"{label} must lie " + " and ".join(parts) + tail
+        key = "rule.closes" if op is Op.FORCE_CLOSE else "rule.must_lie"
+        return tail(T(key, label=label, parts=on_lines()))
     if op is Op.SIMILAR_IMAGE:
         ia, ib, pa, pb, px = step.inputs
         a_l, b_l = lbl(ia), lbl(ib)
         A, B, X = c[pa].label, c[pb].label, c[px].label
         link = link_of_points(ctx.mech, A, B, X)
-        link_txt = f" of link {link}" if link else ""
+        link_txt = T("rule.of_link", link=link) if link else ""
         pts = [_pt(ctx.exact(s)) for s in (pa, pb, px)]
         cross = (pts[1] - pts[0])[0] * (pts[2] - pts[0])[1] - \
             (pts[1] - pts[0])[1] * (pts[2] - pts[0])[0]
         ab = float(np.hypot(*(pts[1] - pts[0])))
         oa, ob = _pt(ctx.own(ia)), _pt(ctx.own(ib))
-        text = (f"by the similarity theorem the image {label} of a point{link_txt} makes the "
-                f"triangle {a_l}{b_l}{label} similar to {A}{B}{X} (same sense of rotation)")
+        text = T("rule.similar", label=label, link=link_txt, a=a_l, b=b_l, A=A, B=B, X=X)
         if ab and abs(cross) <= 1e-9 * ab * ab:
             t = float(np.dot(pts[2] - pts[0], pts[1] - pts[0]) / ab ** 2)
             seg = ob - oa
@@ -117,10 +108,9 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> str:
                 line = np.array([oa, seg])
                 d = ctx.mm(plan, _dist_to_line(at, line))
                 yours = float(np.dot(at - oa, seg) / n2)
-                text = (f"the image of a point{link_txt} lies on the image of the link: {label} "
-                        f"must lie on {a_l}{b_l} ({_fmt(d)} mm off it) and divide it as "
-                        f"{A}{X}/{A}{B} = {t:.3f} (yours {yours:.3f})")
-        return text + tail
+                text = T("rule.similar_line", link=link_txt, label=label, a=a_l, b=b_l, d=d,
+                         A=A, B=B, X=X, t=t, yours=yours)
+        return tail(text)
     if op in (Op.DRIVE_VELOCITY, Op.DRIVE_ACCELERATION):
         pivot, tip = c[step.inputs[0]].label, c[step.inputs[1]].label
         exact = _pt(ctx.exact(step.id))
@@ -128,10 +118,9 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> str:
         drawn = ctx.mm(plan, float(np.hypot(*at)))
         ang = math.degrees(math.remainder(math.atan2(at[1], at[0]) - math.atan2(exact[1], exact[0]),
                                           2 * math.pi))
-        how = (f"⊥ {pivot}{tip} in the sense of ω, ω·l_{pivot}{tip}" if op is Op.DRIVE_VELOCITY
-               else f"∥ {tip}{pivot} from {tip} towards {pivot}, ω²·l_{pivot}{tip}")
-        return (f"the driving vector to {label} is drawn {how} = {_fmt(length)} mm at this scale; "
-                f"yours is {_fmt(drawn)} mm, turned {_fmt(ang)}°")
+        how = T("rule.drive_v" if op is Op.DRIVE_VELOCITY else "rule.drive_a", pivot=pivot,
+                tip=tip)
+        return T("rule.drive", label=label, how=how, len=length, drawn=drawn, ang=ang)
     if op is Op.NORMAL:
         ap, omega, p, q = step.inputs
         own_w = float(np.asarray(ctx.own(omega)).reshape(-1)[0])
@@ -141,28 +130,23 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> str:
         own_len = ctx.mm(plan, own_w * own_w * l)
         exact_len = ctx.mm(plan, exact_w * exact_w * l)
         wl = c[omega].label
-        text = (f"the normal component {label} is laid off from {lbl(ap)} ∥ {Q}{P}, from {Q} "
-                f"towards {P}, {wl}²·l_{P}{Q} long: {_fmt(exact_len)} mm")
-        if abs(own_w - exact_w) > 1e-9 * max(1.0, abs(exact_w)):
-            text += (f" (with {wl} = {own_w:.3f} rad/s from your velocity plan: "
-                     f"{_fmt(own_len)} mm)")
-        return text + tail
+        own_txt = (T("rule.normal_own", w=wl, ow=own_w, olen=own_len)
+                   if abs(own_w - exact_w) > 1e-9 * max(1.0, abs(exact_w)) else "")
+        return tail(T("rule.normal", label=label, ap=lbl(ap), P=P, Q=Q, w=wl, len=exact_len,
+                      own=own_txt))
     if op is Op.CORIOLIS:
         start, omega, _, _ = step.inputs
         wl = c[omega].label
-        return (f"the Coriolis component {label} = 2{wl}·v_rel is laid off from {lbl(start)}, "
-                f"perpendicular to the guide, v_rel turned 90° in the sense of {wl}: "
-                f"{_fmt(ctx.mm(plan, float(np.hypot(*(_pt(ctx.exact(step.id)) - _pt(ctx.exact(start)))))))}"
-                f" mm" + tail)
+        length = ctx.mm(plan, float(np.hypot(*(_pt(ctx.exact(step.id)) - _pt(ctx.exact(start))))))
+        return tail(T("rule.coriolis", label=label, w=wl, start=lbl(start), len=length))
     if op in (Op.RIGID_VELOCITY, Op.RIGID_ACCELERATION):
         o = step.inputs[0]
-        return (f"the image {label} of {c[step.inputs[-1]].label} follows from {lbl(o)} by the "
-                f"link's rotation" + tail)
+        return tail(T("rule.rigid", label=label, X=c[step.inputs[-1]].label, o=lbl(o)))
     if op in (Op.POLAR_POINT, Op.CIRCLE_CIRCLE, Op.CIRCLE_LINE, Op.PLACE, Op.SIMILAR_POSITION):
-        return f"{label} follows from the link lengths and the points before it" + tail
+        return tail(T("rule.position", label=label))
     if op is Op.POLE:
-        return f"{label} is the pole"
-    return f"{label} is built by '{op.value.replace('_', ' ')}'" + tail
+        return T("rule.pole", label=label)
+    return tail(T("rule.op", label=label, op=op.value.replace('_', ' ')))
 
 
 def depends_on(c: Construction, sid: str, present: set[str], labels: Callable[[str], str]

@@ -28,6 +28,7 @@ from .labels import (
 )
 from .points import LAYER_HINTS, units_ascii
 from .submission import Entry, Note
+from .texts import MESSAGES, T, join, plan_title
 
 _NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?")
 
@@ -261,18 +262,19 @@ def parse_value(text: str, dimension: str, where: str, notes: list[Note],
     number, half = _number_and_half(text)
     bare = bool(re.fullmatch(r"\s*[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?\s*", text))
     if bare and number is None:
-        notes.append(Note("error", f"'{name} = {text}' is not a finite number", where))
+        notes.append(Note("error", T("note.not_finite", name=name, text=text), where))
         return None
     if bare and number is not None:
         from ..units import DIMENSIONS
 
         unit = DIMENSIONS[dimension][1].replace("**2", "²").replace("*", "·") or "1"
-        notes.append(Note("info", f"'{name} = {text}' has no unit; read in SI ({unit})", where))
+        notes.append(Note("info", T("note.no_unit", name=name, text=text, unit=unit), where))
         return number, half
     try:
         value = parse_quantity(units_ascii(text), dimension)
     except SceneError as exc:
-        notes.append(Note("error", f"'{name} = {text}': {exc.detail}", where))
+        notes.append(Note("error", T("note.value_error", name=name, text=text,
+                                     detail=exc.detail), where))
         return None
     ratio = value / number if number else 1.0
     return value, abs(half * ratio)
@@ -298,20 +300,21 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         try:
             mu = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
         except SceneError as exc:
-            notes.append(Note("error", f"scale factor '{e.name} = {text}': {exc.detail}", e.where))
+            notes.append(Note("error", T("note.mu_error", name=e.name, text=text,
+                                         detail=exc.detail), e.where))
             return
         if not (mu > 0 and math.isfinite(mu)):
-            notes.append(Note("error", f"scale factor '{e.name} = {text}' must be positive",
+            notes.append(Note("error", T("note.mu_positive", name=e.name, text=text),
                               e.where))
             return
         if not from_sheet:
             prev = out.scales.get(plan)
             if prev and abs(prev[0] - mu) > 1e-12 * mu:
-                notes.append(Note("warning", f"a second scale factor for the {plan.value} plan "
-                                  f"({e.name} = {text}) differs from the first; the first is used",
-                                  e.where))
+                notes.append(Note("warning", T("note.mu_second",
+                                               plan=plan_title(plan.value, case="gen"),
+                                               name=e.name, text=text), e.where))
             else:
-                out.scales[plan] = (mu, f"read from '{e.name} = {text}' ({e.where})")
+                out.scales[plan] = (mu, T("read_from", name=e.name, text=text, where=e.where))
         return
     if is_angle_name(e.name):
         if text is None:
@@ -320,9 +323,10 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
             deg = math.degrees(parse_quantity(units_ascii(text) if re.search(r"[a-z°]", text)
                                               else f"{text} deg", "angle"))
         except SceneError as exc:
-            notes.append(Note("error", f"crank angle '{e.name} = {text}': {exc.detail}", e.where))
+            notes.append(Note("error", T("note.crank_angle", name=e.name, text=text,
+                                         detail=exc.detail), e.where))
             return
-        out.at_deg = (deg, f"'{e.name} = {text}' ({e.where})")
+        out.at_deg = (deg, T("name_text_where", name=e.name, text=text, where=e.where))
         return
     sec = section_plan(e.section)
     length_text = e.length if e.length is not None else (
@@ -337,16 +341,16 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         seg, key, rev = found
         number, half = _number_and_half(length_text)
         if number is None or not math.isfinite(number) or number < 0:
-            notes.append(Note("error", f"'{e.name} = {length_text}': expected a length in mm "
-                              "such as 67.0 or \"67,0 mm\"", e.where))
+            notes.append(Note("error", T("note.length_expected", name=e.name, text=length_text),
+                              e.where))
             return
         row_mu = None
         if e.mu:
             try:
                 row_mu = parse_quantity(units_ascii(e.mu), MU_DIMENSION[seg.plan])
             except SceneError as exc:
-                notes.append(Note("error", f"scale factor '{e.mu}' of {e.name}: {exc.detail}",
-                                  e.where))
+                notes.append(Note("error", T("note.row_mu_error", mu=e.mu, name=e.name,
+                                             detail=exc.detail), e.where))
         ts = TableSegment(seg, key, e.name, e.where, number, half, rev, row_mu)
         if e.value is not None:
             qname = e.quantity or seg.quantity
@@ -358,8 +362,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
                                           number, half, row_mu)
                     out.values.append(ts.value)
             else:
-                notes.append(Note("warning", f"unknown quantity '{qname}'; its value is not "
-                                  "checked", e.where))
+                notes.append(Note("warning", T("note.unknown_quantity", name=qname), e.where))
         out.segments.append(ts)
         return
     q = qi.find(e.name)
@@ -370,11 +373,10 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         if vtext is None:
             return
         if _is_length_text(vtext) and "mm" in vtext.lower() and q.dimension != "length":
-            notes.append(Note("error", f"'{e.name} = {vtext}' is a length on the paper, but "
-                              f"{q.display} is {'an' if q.dimension[0] in 'aeiou' else 'a'} "
-                              f"{q.dimension.replace('_', ' ')}; write the segment's name "
-                              "(e.g. pb) for a drawn length, or the value with its unit",
-                              e.where))
+            noun = (T(f"dim.{q.dimension}") if f"dim.{q.dimension}" in MESSAGES else
+                    f"{'an' if q.dimension[0] in 'aeiou' else 'a'} {q.dimension.replace('_', ' ')}")
+            notes.append(Note("error", T("note.length_not_value", name=e.name, text=vtext,
+                                         display=q.display, dim=noun), e.where))
             return
         parsed = parse_value(vtext, q.dimension, e.where, notes, e.name)
         if parsed is None:
@@ -390,11 +392,8 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         return
     dim = dimension_of(quantity_key(e.name))
     if dim in ("force", "moment") and not qi.has_force:
-        notes.append(Note(level, f"'{e.name}' looks like a force or moment, but this check has no "
-                          "force plan (the scene gives no loads or masses); it is not checked",
-                          e.where))
+        notes.append(Note(level, T("note.force_without_plan", name=e.name), e.where))
         return
-    known_q = ", ".join(qi.names()[:24])
-    notes.append(Note(level, f"unknown quantity or segment '{e.name}'"
-                      + ("" if from_sheet else f"; known quantities: {known_q} …, segments: "
-                         "their names as on the plan (pb, bc, πb′, b′n_CB …)"), e.where))
+    known_q = join(qi.names()[:24])
+    notes.append(Note(level, T("note.unknown_name", name=e.name) if from_sheet else
+                      T("note.unknown_name_known", name=e.name, known=known_q), e.where))

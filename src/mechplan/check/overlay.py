@@ -7,13 +7,16 @@ from __future__ import annotations
 import io
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from ..errors import CheckError
 from .report import SLIP, WRONG, CheckReport, SegmentRow
+from .texts import T, tr, word
 
 Point = tuple[float, float]
 
 SUBMISSION_RGB, EXACT_RGB, ERROR_RGB = "#1f4fd6", "#13a03c", "#d62020"
+CJK_STYLE = "CJK"       # DXF text style of Chinese texts
 LAYERS = {"SUBMISSION": 5, "EXACT": 3, "ERRORS": 1, "NOTES": 7}     # DXF colour indices
 
 
@@ -28,8 +31,8 @@ class Mark:
     height: float = 2.5
 
 
-def marks(report: CheckReport) -> list[Mark]:
-    """The overlay's primitives."""
+def marks(report: CheckReport, lang: str = "en") -> list[Mark]:
+    """The overlay's primitives, their texts in a language (en, ru, vi, zh)."""
     out: list[Mark] = []
     for plan in report.plans:
         if not plan.drawn_lines and not plan.exact_segments:
@@ -51,10 +54,11 @@ def marks(report: CheckReport) -> list[Mark]:
             a, b = pa, pb
             out.append(Mark("ERRORS", a, b))
             mid = ((a[0] + b[0]) / 2 + 1.0, (a[1] + b[1]) / 2 + 1.0)
-            out.append(Mark("ERRORS", mid, None, _error_text(row), 2.0))
+            out.append(Mark("ERRORS", mid, None, _error_text(row, lang), 2.0))
         xs = [p[0] for m in out[start:] for p in (m.start, m.end) if p is not None] or [0.0]
         ys = [p[1] for m in out[start:] for p in (m.start, m.end) if p is not None] or [0.0]
-        title = f"{plan.name}: μ = {plan.mu:.4g} {plan.mu_unit}" if plan.mu else plan.name
+        title = (T("overlay.title", plan=plan.name, mu=plan.mu, unit=plan.mu_unit).tr(lang)
+                 if plan.mu else tr(plan.name, lang))
         out.append(Mark("NOTES", (min(xs), max(ys) + 6.0), None, title, 3.0))
     if not out:
         raise CheckError("an overlay needs a drawn submission (a DXF with labelled plans); "
@@ -62,23 +66,42 @@ def marks(report: CheckReport) -> list[Mark]:
     xs = [p[0] for m in out for p in (m.start, m.end) if p is not None]
     ys = [p[1] for m in out for p in (m.start, m.end) if p is not None]
     legend = (min(xs), min(ys) - 8.0)
-    out.append(Mark("NOTES", legend, None, "blue: submission   green: exact plan (placed by the "
-                    "pole)   red: wrong, with its error", 3.0))
+    out.append(Mark("NOTES", legend, None, T("overlay.legend").tr(lang), 3.0))
     return out
 
 
-def _error_text(row: SegmentRow) -> str:
+def _error_text(row: SegmentRow, lang: str = "en") -> str:
     parts = [row.name]
     if row.error_mm is not None:
-        parts.append(f"{row.error_mm:+.1f} mm")
+        parts.append(T("overlay.err_mm", v=row.error_mm).tr(lang))
     if row.error_pct is not None:
-        parts.append(f"({row.error_pct:+.1f} %)")
+        parts.append(T("overlay.err_pct", v=row.error_pct).tr(lang))
     if row.direction_deg is not None and row.tolerance_deg is not None and \
             abs(row.direction_deg) > row.tolerance_deg:
-        parts.append(f"{row.direction_deg:+.1f}°")
+        parts.append(T("overlay.err_deg", v=row.direction_deg).tr(lang))
     if row.cause:
-        parts.append(row.cause)
+        parts.append(word("cause", row.cause, lang))
     return " ".join(parts)
+
+
+def has_cjk(text: str) -> bool:
+    """True when a text needs a CJK font (Chinese overlays)."""
+    from ..sheet.fonts import has_cjk as needs_cjk
+
+    return bool(text) and needs_cjk(text)
+
+
+def families_for(text: str) -> tuple[str, ...]:
+    """Font families for a text, its own font first (the sheet's choice)."""
+    from ..sheet.fonts import families_for as sheet_families
+
+    return sheet_families(text)
+
+
+def _css_family(text: str) -> str:
+    if not has_cjk(text):
+        return "DejaVu Sans, sans-serif"
+    return ", ".join([*(f"'{f}'" if " " in f else f for f in families_for(text)), "sans-serif"])
 
 
 def _bounds(ms: list[Mark]) -> tuple[float, float, float, float]:
@@ -89,16 +112,17 @@ def _bounds(ms: list[Mark]) -> tuple[float, float, float, float]:
                 xs.append(p[0])
                 ys.append(p[1])
         if m.end is None:
-            xs.append(m.start[0] + 0.6 * m.height * len(m.text))
+            wide = sum(1 for ch in m.text if ord(ch) >= 0x2E80)
+            xs.append(m.start[0] + 0.6 * m.height * (len(m.text) + wide))
             ys.append(m.start[1] + m.height)
     return min(xs), min(ys), max(xs), max(ys)
 
 
-def write_overlay(report: CheckReport, path: str | Path) -> Path:
-    """Write the overlay as SVG, DXF or PDF (by the file's suffix)."""
+def write_overlay(report: CheckReport, path: str | Path, lang: str = "en") -> Path:
+    """Write the overlay as SVG, DXF or PDF (by the file's suffix), its texts in a language."""
     p = Path(path)
     suffix = p.suffix.lower()
-    ms = marks(report)
+    ms = marks(report, lang)
     if suffix == ".svg":
         data = svg_bytes(ms)
     elif suffix == ".dxf":
@@ -152,7 +176,7 @@ def svg_bytes(ms: list[Mark], margin: float = 10.0) -> bytes:
             g.add(dwg.line(q(m.start), q(m.end)))
         else:
             g.add(dwg.text(m.text, insert=q(m.start), fill=colours[m.layer], stroke="none",
-                           font_size=m.height, font_family="DejaVu Sans, sans-serif"))
+                           font_size=m.height, font_family=_css_family(m.text)))
     buf = io.StringIO()
     dwg.write(buf, pretty=True)
     return buf.getvalue().encode("utf-8")
@@ -167,12 +191,18 @@ def dxf_bytes(ms: list[Mark]) -> bytes:
     for name, colour in LAYERS.items():
         doc.layers.add(name, color=colour)
     doc.layers.get("EXACT").dxf.linetype = "DASHED" if "DASHED" in doc.linetypes else "CONTINUOUS"
+    if any(has_cjk(m.text) for m in ms):
+        from ..sheet.fonts import SheetFont
+
+        doc.styles.add(CJK_STYLE, font=SheetFont.CJK.file_name)
     msp = doc.modelspace()
     for m in ms:
         attribs = {"layer": m.layer}
         if m.end is not None:
             msp.add_line(m.start, m.end, dxfattribs=attribs)
         else:
+            if has_cjk(m.text):
+                attribs["style"] = CJK_STYLE
             msp.add_text(m.text, height=m.height, dxfattribs=attribs).set_placement(m.start)
     buf = io.StringIO()
     doc.write(buf)
@@ -201,8 +231,9 @@ def pdf_bytes(ms: list[Mark], margin: float = 10.0) -> bytes:
                     linewidth=1.6 if m.layer == "ERRORS" else 0.8,
                     linestyle="--" if m.layer == "EXACT" else "-")
         else:
+            family: Any = list(families_for(m.text)) if has_cjk(m.text) else None
             ax.text(m.start[0], m.start[1], m.text, color=colours[m.layer],
-                    fontsize=m.height / 0.3528)
+                    fontsize=m.height / 0.3528, fontfamily=family)
     buf = io.BytesIO()
     fig.savefig(buf, format="pdf")
     return buf.getvalue()

@@ -25,9 +25,9 @@ from .labels import (
     feature_votes,
     label_key,
     mu_plan,
-    plan_name,
 )
 from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
+from .texts import T, Text, join, plan_title, with_case
 
 #: words in layer names that say which plan a drawing is (acceleration before velocity: 加速度)
 LAYER_HINTS: tuple[tuple[Plan, tuple[str, ...]], ...] = (
@@ -57,7 +57,7 @@ class LabelledPoint:
     at: Point           # the point (mm of paper)
     where: str          # the text entity of the label
     distance: float     # label → point (mm)
-    how: str = "line end"   # "line end", "point marker", "crossing of two lines", "inferred"
+    how: str = T("how.line_end")   # "line end", "point marker", "crossing of two lines", "inferred"
 
 
 @dataclass
@@ -73,9 +73,9 @@ class DrawnPlan:
     convention: str = ""            # how numbered normals / Coriolis points were read
 
     @property
-    def name(self) -> str:
+    def name(self) -> Text:
         """"velocity plan", "acceleration plan #2"."""
-        return plan_name(self.key) + " plan" + (f" #{self.number}" if self.number else "")
+        return plan_title(self.key[0].value, self.key[1], self.number)
 
     @property
     def plan(self) -> Plan:
@@ -290,8 +290,7 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
             lb.same = readings[1:]
             labels.append(lb)
         elif len(names) == 1 and len(label_key(names[0])) <= 3 and names[0].isalpha():
-            notes.append(Note("info", f"text '{t.text.strip()}' is not a label of any plan of "
-                              "this mechanism; it is not used", t.where))
+            notes.append(Note("info", T("note.not_label", text=t.text.strip()), t.where))
     if not labels:
         if sub.lines:
             raise _no_labels(sub, book)
@@ -422,7 +421,7 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
             lb.node = node
             lb.at = (float(nodes[node][0]), float(nodes[node][1]))
             lb.distance = lb.text.distance(lb.at)
-            lb.how = "point marker" if node in graph.markers else "line end"
+            lb.how = T("how.marker") if node in graph.markers else T("how.line_end")
     for lb in labels:
         if lb.at is not None:
             continue
@@ -430,11 +429,10 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
         crossings = [p for p in crossings if lb.text.distance(p) <= tol]
         if crossings:
             p = min(crossings, key=lb.text.distance)
-            lb.at, lb.how, lb.distance = p, "crossing of two lines", lb.text.distance(p)
+            lb.at, lb.how, lb.distance = p, T("how.crossing"), lb.text.distance(p)
             continue
-        notes.append(Note("warning", f"label '{lb.written}' is {lb.distance:.1f} mm from the "
-                          f"nearest line end, more than the {tol:.1f} mm allowed "
-                          "(--label-distance); it is not used", lb.text.where))
+        notes.append(Note("warning", T("note.label_far", written=lb.written, d=lb.distance,
+                                       tol=tol), lb.text.where))
 
 
 def _layer_plan(layer: str) -> Plan | None:
@@ -512,8 +510,9 @@ def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook
             plans.append(dp)
     for key, n in counts.items():
         if n > 1:
-            notes.append(Note("warning", f"the sheet holds {n} drawings of the {plan_name(key)} "
-                              "plan whose labels repeat; each is checked on its own", sub.path))
+            notes.append(Note("warning", T("note.repeated_plans", n=n,
+                                           plan=plan_title(key[0].value, key[1], case="gen")),
+                              sub.path))
     return plans
 
 
@@ -581,9 +580,9 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
             numbered.append(i)
         else:
             known = ", ".join(sorted(book.plans[key].values()))
-            notes.append(Note("warning", f"label '{lb.written}' is not a point of the "
-                              f"{plan_name(key)} plan (its points: {known}); it is not used",
-                              lb.text.where))
+            notes.append(Note("warning", T("note.not_point_of_plan", written=lb.written,
+                                           plan=plan_title(key[0].value, key[1], case="gen"),
+                                           known=known), lb.text.where))
     if numbered:
         for convention in ("link", "ordinal"):
             picks = {}
@@ -596,24 +595,27 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
             else:
                 if len({c.step for c in picks.values()}) == len(picks):
                     chosen.update(picks)
-                    how = "link number" if convention == "link" else "order of construction"
-                    written = ", ".join(members[i].written for i in numbered)
-                    dp.convention = f"numbered labels ({written}) read by {how}"
+                    how = T("convention.link" if convention == "link" else "convention.ordinal")
+                    written = join(members[i].written for i in numbered)
+                    dp.convention = T("convention.numbered", written=written, how=how)
                     break
         else:
             for i in numbered:
-                notes.append(Note("warning", f"cannot tell which point '{members[i].written}' is "
-                                  "on the plan; it is not used", members[i].text.where))
+                notes.append(Note("warning", T("note.ambiguous_numbered",
+                                               written=members[i].written),
+                                  members[i].text.where))
     by_step: dict[str, list[int]] = {}
     for i, c in chosen.items():
         by_step.setdefault(c.step, []).append(i)
     for sid, idx in by_step.items():
         spots = {members[i].at for i in idx}
         if len(spots) > 1:
-            where = "; ".join(f"{members[i].text.where} at {_xy(members[i].at)}" for i in idx)
-            notes.append(Note("error", f"label '{book.label_of(key, sid)}' appears {len(idx)} times "
-                              f"on the {plan_name(key)} plan at different points ({where}); "
-                              "it is not used", members[idx[0]].text.where))
+            where = join((T("note.where_at", where=members[i].text.where, xy=_xy(members[i].at))
+                          for i in idx), "; ")
+            notes.append(Note("error", T("note.label_repeated", label=book.label_of(key, sid),
+                                         n=len(idx), where=where,
+                                         plan=plan_title(key[0].value, key[1], case="loc")),
+                              members[idx[0]].text.where))
             continue
         lb = min((members[i] for i in idx), key=lambda m: m.distance)
         assert lb.at is not None
@@ -622,7 +624,7 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
 
 
 def _xy(p: Point | None) -> str:
-    return "(?)" if p is None else f"({p[0]:.1f}, {p[1]:.1f})"
+    return "(?)" if p is None else T("xy", x=p[0], y=p[1])
 
 
 def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
@@ -644,16 +646,15 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
     best = max(count.values())
     tops = [n for n, v in count.items() if v == best]
     if best < 2 or len(tops) > 1:
-        notes.append(Note("warning", f"the pole of the {dp.name} is not labelled and cannot be "
-                          "told from the lines; absolute vectors are not checked", sub.path))
+        notes.append(Note("warning", T("note.pole_unknown", plan=with_case(dp.name, "gen")),
+                          sub.path))
         return
     n = tops[0]
     at = (float(graph.nodes[n][0]), float(graph.nodes[n][1]))
     label = book.label_of(dp.key, pole)
-    dp.points[pole] = LabelledPoint(pole, label, "", at, sub.path, 0.0, "inferred")
-    notes.append(Note("info", f"the pole {label} of the {dp.name} is not labelled; taken as the "
-                      f"point ({at[0]:.1f}, {at[1]:.1f}) where {best} vectors to labelled points "
-                      "start", sub.path))
+    dp.points[pole] = LabelledPoint(pole, label, "", at, sub.path, 0.0, T("how.inferred"))
+    notes.append(Note("info", T("note.pole_inferred", label=label, plan=with_case(dp.name, "gen"),
+                                xy=_xy(at), n=best), sub.path))
 
 
 def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],
@@ -664,7 +665,7 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
 
     plan = dp.plan
     if plan in mu_given:
-        dp.mu, dp.mu_source = mu_given[plan], "given on the command line"
+        dp.mu, dp.mu_source = mu_given[plan], T("mu.cli")
         return
     mine = [e for p, e in scale_entries if p is plan]
     if len(mine) > 1 and dp.points:
@@ -675,15 +676,15 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
         try:
             dp.mu = parse_quantity(_units_ascii(text), MU_DIMENSION[plan])
         except SceneError as exc:
-            notes.append(Note("warning", f"scale factor '{e.name} = {text}' cannot be used: "
-                              f"{exc.detail}", e.where))
+            notes.append(Note("warning", T("note.mu_unusable", name=e.name, text=text,
+                                           detail=exc.detail), e.where))
             continue
         if not (dp.mu > 0 and math.isfinite(dp.mu)):
-            notes.append(Note("warning", f"scale factor '{e.name} = {text}' must be positive",
+            notes.append(Note("warning", T("note.mu_positive", name=e.name, text=text),
                               e.where))
             dp.mu = None
             continue
-        dp.mu_source = f"read from the text '{e.name} = {text}' ({e.where})"
+        dp.mu_source = T("mu.text", name=e.name, text=text, where=e.where)
         return
 
 

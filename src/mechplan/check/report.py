@@ -9,6 +9,7 @@ from typing import Any
 from .. import __version__
 from ..construct.scale import SCALE_KEYS
 from .submission import Note
+from .texts import T, Text, capitalize, join, num, pad, plan_word, tr, word
 
 #: verdicts
 OK, WRONG, SLIP, REFERENCE, MISSING, UNCHECKED = ("ok", "wrong", "slip", "reference", "missing",
@@ -35,10 +36,11 @@ class Tolerance:
         across = math.degrees(math.atan2(self.allowed_mm(length_mm), max(abs(length_mm), 1e-9)))
         return max(across, self.deg or 0.0)
 
-    def text(self) -> str:
-        """"±1 mm or ±2 %"."""
-        out = f"±{self.mm:g} mm or ±{self.pct:g} %"
-        return out + (f" (directions ±{self.deg:g}°)" if self.deg else "")
+    def text(self, lang: str = "en") -> str:
+        """"±1 mm or ±2 %" (in a language: en, ru, vi, zh)."""
+        if self.deg:
+            return T("tolerance_deg", mm=self.mm, pct=self.pct, deg=self.deg).tr(lang)
+        return T("tolerance", mm=self.mm, pct=self.pct).tr(lang)
 
 
 @dataclass
@@ -187,8 +189,12 @@ class CheckReport:
         return not any(r.verdict in (WRONG, SLIP) for r in self.rows)
 
     # -- output ------------------------------------------------------------------------------
-    def to_json(self) -> dict[str, Any]:
-        """One JSON document (lengths in mm of paper, values in SI, angles in degrees)."""
+    def to_json(self, lang: str = "en") -> dict[str, Any]:
+        """One JSON document (lengths in mm of paper, values in SI, angles in degrees).
+
+        Keys and codes (verdict, cause, kind, level, plan …) are the same in every language;
+        the sentences (hints, messages, sources, where) are written in ``lang``, and each code
+        has its words alongside (``verdict_text``, ``kind_text`` …)."""
         def clean(x: Any) -> Any:
             if isinstance(x, float):
                 return None if not math.isfinite(x) else round(x, 6)
@@ -205,94 +211,173 @@ class CheckReport:
             d.pop("exact_segments")
             d["mu_unit"] = p.mu_unit
             d["tolerance"] = asdict(p.tolerance)
+            d["title"] = capitalize(tr(p.name, lang))
+            d["tolerance_text"] = p.tolerance.text(lang)
+            for pt, rd in zip(p.points, d["points"]):
+                rd.update(verdict_text=verdict_text(pt.verdict, pt.cause, lang),
+                          cause_text=word("cause", pt.cause, lang) if pt.cause else "",
+                          found_text=tr(pt.found, lang))
+            for seg, rd in zip(p.segments, d["segments"]):
+                rd.update(verdict_text=verdict_text(seg.verdict, seg.cause, lang),
+                          cause_text=word("cause", seg.cause, lang) if seg.cause else "")
             plans.append(d)
-        return clean({
+        values = []
+        for v in self.values:
+            d = asdict(v)
+            d.update(verdict_text=verdict_text(v.verdict, v.cause, lang),
+                     cause_text=word("cause", v.cause, lang) if v.cause else "")
+            values.append(d)
+        findings = []
+        for f in self.findings:
+            d = asdict(f)
+            d.update(kind_text=word("kind", f.kind, lang), plan_text=tr(_plan_of(f.plan), lang),
+                     error_text=word("error", f.error, lang) if f.error else "")
+            findings.append(d)
+        doc = clean({
             "mechplan": __version__, "scene": self.scene, "submission": self.submission,
             "kind": self.kind, "phi_deg": self.phi_deg, "phi_source": self.phi_source,
             "units": self.units, "label_distance_mm": self.label_distance_mm,
             "passed": self.passed, "summary": self.summary(), "plans": plans,
-            "values": [asdict(v) for v in self.values],
-            "findings": [asdict(f) for f in self.findings],
-            "notes": [{"level": n.level, "message": n.message, "where": n.where}
-                      for n in self.notes],
+            "values": values, "findings": findings,
+            "notes": [{"level": n.level, "message": n.message, "where": n.where,
+                       "level_text": word("level", n.level, lang)} for n in self.notes],
+            "lang": lang,
+            "result_text": T("report.passed" if self.passed else "report.failed").tr(lang),
         })
+        return _say(doc, lang)
 
-    def text(self) -> str:
-        """The report for a terminal."""
-        return render_text(self)
+    def text(self, lang: str = "en") -> str:
+        """The report for a terminal, in a language (en, ru, vi, zh)."""
+        return render_text(self, lang)
 
 
-def _num(x: float | None, fmt: str) -> str:
+#: JSON keys whose values are sentences, written in the report's language; every other string
+#: (codes, names, labels) stays as it is
+PROSE_KEYS = frozenset({"hint", "message", "mu_source", "phi_source", "convention", "units",
+                        "where"})
+
+
+def _say(x: Any, lang: str, key: str = "") -> Any:
+    """Sentences of a JSON document in a language; every other Text as its plain English."""
+    if isinstance(x, dict):
+        return {k: _say(v, lang, k) for k, v in x.items()}
+    if isinstance(x, list):
+        return [_say(v, lang, key) for v in x]
+    if isinstance(x, Text):
+        return x.tr(lang) if key in PROSE_KEYS else str(x)
+    return x
+
+
+def verdict_text(v: str, cause: str, lang: str = "en") -> str:
+    """"ok", "WRONG (new)", "SLIP" in a language."""
+    if v in (WRONG, SLIP):
+        w = word("verdict", v, lang)
+        if cause and v == WRONG:
+            return T("report.verdict_cause", word=w, cause=word("cause", cause, lang)).tr(lang)
+        return w
+    return word("verdict", v, lang)
+
+
+def _num(x: float | None, fmt: str, lang: str = "en") -> str:
     if x is None or not math.isfinite(x):
         return "—"
+    if lang != "en":
+        return num(x, fmt, lang)        # format_number: "0,0", never "-0,0"
     text = format(x, fmt)
     return text.replace("-", "+") if text.strip().lstrip("-+").strip("0.") == "" else text
 
 
-def _verdict(v: str, cause: str) -> str:
-    if v in (WRONG, SLIP):
-        word = "WRONG" if v == WRONG else "SLIP"
-        return f"{word} ({cause})" if cause and v == WRONG else word
-    return v
+def _plan_of(plan: str) -> str:
+    """A finding's plan as a text to translate: a plan title, or a bare kind ("velocity")."""
+    if isinstance(plan, Text) or plan not in ("position", "velocity", "acceleration", "force"):
+        return plan
+    return plan_word(plan)
 
 
-def render_text(r: CheckReport) -> str:
+def _verdict(v: str, cause: str, lang: str = "en") -> str:
+    return verdict_text(v, cause, lang)
+
+
+def _cols(lang: str, *cells: tuple[str, int, str]) -> str:
+    """Column titles: (message id, width, alignment)."""
+    return "".join(pad(T(key).tr(lang), w, a) for key, w, a in cells)
+
+
+def render_text(r: CheckReport, lang: str = "en") -> str:
     """The report as plain text: per plan a table of segments, then values, findings, notes."""
+    def say(key: str, **args: Any) -> str:
+        return T(key, **args).tr(lang)
+
     s = r.summary()
-    out = [f"mechplan check: {r.submission}",
-           f"scene: {r.scene}",
-           f"crank angle φ = {r.phi_deg:.2f}° ({r.phi_source})"]
+    out = [say("report.title", submission=r.submission),
+           say("report.scene", scene=r.scene),
+           say("report.phi", phi=r.phi_deg, source=r.phi_source)]
     if r.units:
-        out.append(f"drawing units: {r.units}")
+        out.append(say("report.units", units=r.units))
     if r.label_distance_mm is not None:
-        out.append(f"labels taken within {r.label_distance_mm:.1f} mm of a line end")
-    out.append(f"result: {'PASSED' if r.passed else 'FAILED'} — {s['checked']} checked, "
-               f"{s['ok']} ok, {s['wrong']} wrong ({s['new']} new, {s['carried']} carried, "
-               f"{s['swapped']} by swapped labels, {s['accumulated']} by small errors adding up), "
-               f"{s['slip']} arithmetic slip(s), {s['missing']} not on the submission")
+        out.append(say("report.label_distance", d=r.label_distance_mm))
+    out.append(say("report.result", verdict=T("report.passed" if r.passed else "report.failed"),
+                   **{k: s[k] for k in ("checked", "ok", "wrong", "new", "carried", "swapped",
+                                        "accumulated", "slip", "missing")}))
     for p in r.plans:
         out.append("")
-        mu = (f"μ = {p.mu:.6g} {p.mu_unit}" if p.mu else "μ unknown")
-        out.append(f"## {p.name[0].upper() + p.name[1:]}: {mu}" + (f" ({p.mu_source})"
-                                                                   if p.mu_source else ""))
-        out.append(f"   tolerance {p.tolerance.text()}" + (f"; placed by {p.anchor}"
-                                                           if p.anchor else ""))
+        mu = (T("report.mu", mu=p.mu, unit=p.mu_unit) if p.mu else T("report.mu_unknown"))
+        title = capitalize(tr(p.name, lang))
+        out.append(say("report.plan_source", title=title, mu=mu, source=p.mu_source)
+                   if p.mu_source else say("report.plan", title=title, mu=mu))
+        tol = p.tolerance.text(lang)
+        out.append("   " + (say("report.tolerance_anchor", tol=tol, anchor=p.anchor)
+                            if p.anchor else say("report.tolerance", tol=tol)))
         if p.convention:
-            out.append(f"   {p.convention}")
+            out.append(f"   {tr(p.convention, lang)}")
         wrong_pts = [pt for pt in p.points if pt.verdict == WRONG]
         if wrong_pts:
-            out.append("   points off their exact place: " + ", ".join(
-                f"{pt.label} {pt.error_mm:.1f} mm ({pt.cause})" for pt in wrong_pts
-                if pt.error_mm is not None))
-        out.append(f"   {'segment':<14}{'quantity':<12}{'drawn mm':>9}{'exact mm':>9}"
-                   f"{'err mm':>8}{'err %':>8}{'dir °':>7}  verdict")
+            out.append("   " + say("report.points_off", points=join(
+                T("report.point_off", label=pt.label, err=pt.error_mm,
+                  cause=word("cause", pt.cause, lang)) for pt in wrong_pts
+                if pt.error_mm is not None)))
+        out.append("   " + _cols(lang, ("col.segment", 14, "<"), ("col.quantity", 12, "<"),
+                                 ("col.drawn_mm", 9, ">"), ("col.exact_mm", 9, ">"),
+                                 ("col.err_mm", 8, ">"), ("col.err_pct", 8, ">"),
+                                 ("col.dir", 7, ">")) + "  " + say("col.verdict"))
         for row in p.segments:
             name = row.name if row.in_construction else f"{row.name}*"
-            out.append(f"   {name:<14}{row.quantity:<12}{_num(row.submitted_mm, '9.1f'):>9}"
-                       f"{_num(row.exact_mm, '9.1f'):>9}{_num(row.error_mm, '+8.1f'):>8}"
-                       f"{_num(row.error_pct, '+8.1f'):>8}{_num(row.direction_deg, '+7.1f'):>7}"
-                       f"  {_verdict(row.verdict, row.cause)}")
+            out.append(f"   {pad(name, 14)}{pad(row.quantity, 12)}"
+                       f"{pad(_num(row.submitted_mm, '9.1f', lang), 9, '>')}"
+                       f"{pad(_num(row.exact_mm, '9.1f', lang), 9, '>')}"
+                       f"{pad(_num(row.error_mm, '+8.1f', lang), 8, '>')}"
+                       f"{pad(_num(row.error_pct, '+8.1f', lang), 8, '>')}"
+                       f"{pad(_num(row.direction_deg, '+7.1f', lang), 7, '>')}"
+                       f"  {_verdict(row.verdict, row.cause, lang)}")
             if row.verdict in (WRONG, SLIP) and row.hint:
-                out.append(f"        → {row.hint}")
+                out.append(f"        → {tr(row.hint, lang)}")
         if any(not row.in_construction for row in p.segments):
-            out.append("   * drawn between labelled points, not a segment of the construction")
+            out.append("   " + say("report.not_in_construction"))
     if r.values:
         out.append("")
-        out.append("## Values")
-        out.append(f"   {'name':<12}{'submitted':>12}{'exact':>12}{'unit':>8}{'err %':>8}  verdict")
+        out.append(say("report.values"))
+        out.append("   " + _cols(lang, ("col.name", 12, "<"), ("col.submitted", 12, ">"),
+                                 ("col.exact", 12, ">"), ("col.unit", 8, ">"),
+                                 ("col.err_pct", 8, ">")) + "  " + say("col.verdict"))
         for v in r.values:
-            out.append(f"   {v.name:<12}{_num(v.submitted, '12.4g'):>12}{_num(v.exact, '12.4g'):>12}"
-                       f"{v.unit:>8}{_num(v.error_pct, '+8.1f'):>8}  {_verdict(v.verdict, v.cause)}")
+            out.append(f"   {pad(v.name, 12)}{pad(_num(v.submitted, '12.4g', lang), 12, '>')}"
+                       f"{pad(_num(v.exact, '12.4g', lang), 12, '>')}{pad(v.unit, 8, '>')}"
+                       f"{pad(_num(v.error_pct, '+8.1f', lang), 8, '>')}"
+                       f"  {_verdict(v.verdict, v.cause, lang)}")
             if v.verdict in (WRONG, SLIP) and v.hint:
-                out.append(f"        → {v.hint}")
+                out.append(f"        → {tr(v.hint, lang)}")
     if r.findings:
         out.append("")
-        out.append("## Findings (root causes)")
+        out.append(say("report.findings"))
         for i, f in enumerate(r.findings, start=1):
-            out.append(f"   {i}. [{f.kind}] {f.plan}: {f.subject}: {f.message}")
+            out.append("   " + say("report.finding", i=i, kind=word("kind", f.kind, lang),
+                                   plan=_plan_of(f.plan), subject=f.subject,
+                                   message=f.message))
     if r.notes:
         out.append("")
-        out.append("## Notes")
+        out.append(say("report.notes"))
         for n in r.notes:
-            out.append(f"   {n.level}: {n}")
+            note = (say("report.note_where", where=n.where, message=n.message) if n.where
+                    else tr(n.message, lang))
+            out.append("   " + say("report.note", level=word("level", n.level, lang), note=note))
     return "\n".join(out)

@@ -21,6 +21,7 @@ from typing import Any
 
 from ..errors import CheckError
 from .labels import clean_text
+from .texts import MESSAGES, T
 
 Point = tuple[float, float]
 
@@ -149,8 +150,7 @@ def read_dxf(path: Path) -> Submission:
     truncated = not raw.startswith(b"AutoCAD Binary DXF") and \
         raw.rstrip()[-3:].upper() != b"EOF"
     if truncated:
-        sub.notes.append(Note("warning", "the file ends early (no EOF marker): it may be "
-                              "truncated; what could be read is checked", str(path)))
+        sub.notes.append(Note("warning", T("note.truncated"), str(path)))
     repairs = _Collect()
     log = logging.getLogger("ezdxf")
     log.addHandler(repairs)   # the repair messages become notes, not lines on stderr
@@ -168,26 +168,25 @@ def read_dxf(path: Path) -> Submission:
     finally:
         log.removeHandler(repairs)
     if repairs.messages:
-        sub.notes.append(Note("warning", f"{len(repairs.messages)} damaged value(s) repaired on "
-                              f"reading, e.g. {repairs.messages[0]}", str(path)))
+        sub.notes.append(Note("warning", T("note.repaired_values", n=len(repairs.messages),
+                                           example=repairs.messages[0]), str(path)))
     if auditor.has_errors:
-        sub.notes.append(Note("warning", f"the DXF was damaged and repaired on reading "
-                              f"({len(auditor.errors)} problem(s), e.g. "
-                              f"{auditor.errors[0].message})", str(path)))
+        sub.notes.append(Note("warning", T("note.repaired_dxf", n=len(auditor.errors),
+                                           example=auditor.errors[0].message), str(path)))
     try:
         code = int(doc.header.get("$INSUNITS", 0))
     except (TypeError, ValueError):
         code = 0
     scale = INSUNITS_MM.get(code)
     if scale is None:
-        sub.notes.append(Note("warning", f"drawing units $INSUNITS = {code} are not supported; "
-                              "lengths are read as millimetres", str(path)))
+        sub.notes.append(Note("warning", T("note.insunits", code=code), str(path)))
         scale = 1.0
-        sub.units = f"$INSUNITS = {code}, read as millimetres"
+        sub.units = T("units.insunits", code=code)
     elif code == 0:
-        sub.units = "unitless, read as millimetres"
+        sub.units = T("units.unitless")
     else:
-        sub.units = INSUNITS_NAME[code] + ("" if code == 4 else f" (× {scale:g} mm)")
+        sub.units = (unit_name(code) if code == 4 else
+                     T("units.scaled", unit=unit_name(code), scale=scale))
     msp = doc.modelspace()
     _collect(sub, msp, 1.0, depth=0)
     if not sub.lines:
@@ -196,22 +195,17 @@ def read_dxf(path: Path) -> Submission:
                 continue
             _collect(sub, layout, 1.0, depth=0)
             if sub.lines:
-                sub.notes.append(Note("info", f"model space is empty; read layout '{layout.name}'",
-                                      str(path)))
+                sub.notes.append(Note("info", T("note.layout", name=layout.name), str(path)))
                 break
     if sub.skipped:
-        sub.notes.append(Note("info", f"{sub.skipped} dash-dot line(s) (axes, trajectories) and "
-                              "lines of frames and tables are not read as lines of a plan",
-                              str(path)))
+        sub.notes.append(Note("info", T("note.skipped", n=sub.skipped), str(path)))
     xs = [v for ln in sub.lines for v in (ln.start[0], ln.end[0])]
     ys = [v for ln in sub.lines for v in (ln.start[1], ln.end[1])]
     extent = max(max(xs) - min(xs), max(ys) - min(ys)) if xs else 0.0
     if scale != 1.0 and extent * scale > SHEET_MAX_MM and extent <= SHEET_MAX_MM:
-        sub.notes.append(Note("warning", f"the drawing units say {INSUNITS_NAME.get(code, code)}, "
-                              f"but the drawing would then be {extent * scale / 1000:.1f} m "
-                              f"across; it is read in millimetres ({extent:.0f} mm across)",
-                              str(path)))
-        sub.units = f"{INSUNITS_NAME.get(code, code)} in the header, read as millimetres"
+        sub.notes.append(Note("warning", T("note.units_too_big", unit=unit_name(code),
+                                           m=extent * scale / 1000, mm=extent), str(path)))
+        sub.units = T("units.header", unit=unit_name(code))
         scale = 1.0
     if scale != 1.0:
         _rescale(sub, scale)
@@ -222,7 +216,8 @@ def read_dxf(path: Path) -> Submission:
                          "TEXT/MTEXT labels", file=str(path))
     for text in sub.texts:
         for i, line in enumerate(text.text.splitlines(), start=1):
-            where = text.where + (f", line {i}" if "\n" in text.text else "")
+            where = T("where.text_line", where=text.where, n=i) if "\n" in text.text \
+                else text.where
             sub.entries.extend(parse_assignments(line, where, at=text.centre))
     return sub
 
@@ -252,10 +247,17 @@ class _Collect(logging.Handler):
         self.messages.append(record.getMessage())
 
 
+def unit_name(code: int) -> str:
+    """The name of a $INSUNITS code ("millimetres"), or the code itself when it has none."""
+    return T(f"unit.{code}") if f"unit.{code}" in MESSAGES else str(code)
+
+
 def _where(e: Any, extra: str = "") -> str:
     handle = getattr(e.dxf, "handle", None) or "?"
     layer = getattr(e.dxf, "layer", "") or ""
-    return f"{e.dxftype()} #{handle}" + (f" on layer '{layer}'" if layer not in ("", "0") else "") + extra
+    if layer not in ("", "0"):
+        return T("where.entity_layer", type=e.dxftype(), handle=handle, layer=layer, extra=extra)
+    return T("where.entity", type=e.dxftype(), handle=handle, extra=extra)
 
 
 _SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|border",
@@ -313,12 +315,13 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
             elif kind == "INSERT" and depth < 8:
                 name = e.dxf.name
                 _collect(sub, e.virtual_entities(), scale, depth + 1,
-                         via=f" in block '{name}' (INSERT #{e.dxf.handle})")
+                         via=T("where.block", name=name, handle=e.dxf.handle))
                 for attrib in getattr(e, "attribs", []):
                     _add_text(sub, _text_box(attrib, scale), attrib, via)
         except Exception as exc:  # noqa: BLE001 - one bad entity must not lose the sheet
-            sub.notes.append(Note("warning", f"skipped an unreadable {kind} "
-                                  f"({exc.__class__.__name__}: {exc})", _where(e, via)))
+            sub.notes.append(Note("warning", T("note.unreadable_entity", kind=kind,
+                                               error=f"{exc.__class__.__name__}: {exc}"),
+                                  _where(e, via)))
 
 
 def _add_arrowhead(sub: Submission, e: Any, scale: float, where: str) -> None:
@@ -347,7 +350,7 @@ def _finite(*values: float) -> bool:
 
 def _add_line(sub: Submission, a: Point, b: Point, scale: float, where: str, layer: str) -> None:
     if not _finite(*a, *b):
-        sub.notes.append(Note("warning", "skipped a line with non-finite coordinates", where))
+        sub.notes.append(Note("warning", T("note.nonfinite_line"), where))
         return
     sa, sb = (a[0] * scale, a[1] * scale), (b[0] * scale, b[1] * scale)
     if math.hypot(sb[0] - sa[0], sb[1] - sa[1]) < 1e-9:
@@ -360,10 +363,9 @@ def _add_polyline(sub: Submission, pts: list[Point], closed: bool, scale: float,
     if closed and len(pts) > 2:
         pts = pts + [pts[0]]
     for i, (a, b) in enumerate(itertools.pairwise(pts), start=1):
-        _add_line(sub, a, b, scale, f"{where}, segment {i}", layer)
+        _add_line(sub, a, b, scale, T("where.segment", where=where, n=i), layer)
     if bulges:
-        sub.notes.append(Note("info", "arc segments of the polyline are read as straight chords",
-                              where))
+        sub.notes.append(Note("info", T("note.arc_chords"), where))
 
 
 _H_FRAC = {"LEFT": 0.0, "CENTER": -0.5, "RIGHT": -1.0, "MIDDLE": -0.5}
@@ -484,8 +486,8 @@ def read_toml(path: Path) -> Submission:
         pat = re.compile(r"^\s*[\"']?" + re.escape(key) + r"[\"']?\s*=")
         for i, ln in enumerate(lines, start=1):
             if pat.match(ln):
-                return f"{path.name} line {i}"
-        return f"{path.name} key '{key}'"
+                return T("where.line", file=path.name, n=i)
+        return T("where.key", file=path.name, key=key)
 
     def walk(table: dict[str, Any], section: str | None, prefix: str) -> None:
         for key, value in table.items():
@@ -500,16 +502,15 @@ def read_toml(path: Path) -> Submission:
                 for i, row in enumerate(value, start=1):
                     name = str(row.get("name") or row.get("segment") or row.get("quantity") or "")
                     if not name:
-                        sub.notes.append(Note("error", "a row without 'name' (or 'segment', "
-                                              "'quantity') is skipped", f"{where}, row {i}"))
+                        sub.notes.append(Note("error", T("note.row_no_name_toml"),
+                                              T("where.row", where=where, n=i)))
                         continue
-                    sub.entries.append(_row_entry(name, row, f"{where}, row {i}",
+                    sub.entries.append(_row_entry(name, row, T("where.row", where=where, n=i),
                                                   _str(row.get("plan")) or section))
             elif isinstance(value, (str, int, float)) and not isinstance(value, bool):
                 sub.entries.extend(_value_entries(key, value, where, section))
             else:
-                sub.notes.append(Note("error", f"cannot use {value!r}; expected a number, a text "
-                                      "such as \"2.95 m/s\", or a table", where))
+                sub.notes.append(Note("error", T("note.cannot_use", value=repr(value)), where))
 
     walk(data, None, "")
     if not sub.entries:
@@ -588,7 +589,7 @@ def read_csv(path: Path) -> Submission:
         cells = [c.strip() for c in row]
         if not any(cells) or cells[0].startswith("#"):
             continue
-        where = f"{path.name} line {lineno}"
+        where = T("where.line", file=path.name, n=lineno)
         if header is None and lineno == _first_line(rows):
             header = _header(cells)
             if header is not None:
@@ -604,7 +605,7 @@ def read_csv(path: Path) -> Submission:
 
             name = get("name")
             if not name:
-                sub.notes.append(Note("error", "a row without a name is skipped", where))
+                sub.notes.append(Note("error", T("note.row_no_name"), where))
                 continue
             value, unit = get("value"), get("unit")
             if value is not None and unit:
@@ -617,8 +618,8 @@ def read_csv(path: Path) -> Submission:
             if len(cells) == 1 and "=" in cells[0]:
                 sub.entries.extend(parse_assignments(cells[0], where))
             else:
-                sub.notes.append(Note("error", f"expected 'name, value' (got {','.join(row)!r})",
-                                      where))
+                sub.notes.append(Note("error", T("note.expected_name_value",
+                                                 row=repr(','.join(row))), where))
             continue
         if len(cells) >= 4:
             sub.entries.append(Entry(name=cells[0], where=where, length=cells[1], mu=cells[2],
