@@ -15,6 +15,7 @@ from .images import (
     meet_lines,
     parallel_line,
     perp_line,
+    start_plan,
 )
 
 A = Plan.ACCELERATION
@@ -22,18 +23,12 @@ A = Plan.ACCELERATION
 
 def emit_drive(b: Builder) -> None:
     """Pole π, frame images, ε1 and the driving vector π b′."""
-    b.add("acc.pi", Op.POLE, (), A, Kind.POINT, Role.GIVEN, "π")
-    for name in b.mech.links[GROUND].points:
-        b.acc[name] = "acc.pi"
-        b.result(f"a_{name}", "acc.pi")
+    tip, group = start_plan(b, A)
     drive = b.mech.drive
-    crank = b.mech.links[drive.link]
-    tip = next(p for p in crank.points if p != drive.pivot)
     body = b.bodies[drive.link]
     body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR, Role.GIVEN,
                          f"ε{drive.link}", value=drive.epsilon)
     b.result(f"epsilon_{drive.link}", body.epsilon)
-    group = f"I(0,{drive.link})"
     b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
                        Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
                        omega=drive.omega, epsilon=drive.epsilon)

@@ -19,6 +19,19 @@ def known_images(b: Builder, link: str, plan: Plan) -> list[tuple[str, str]]:
     return out
 
 
+def start_plan(b: Builder, plan: Plan) -> tuple[str, str]:
+    """Put the pole (p or π) at the images of the frame points; return (crank tip, group name)."""
+    sid = pole(plan)
+    b.add(sid, Op.POLE, (), plan, Kind.POINT, Role.GIVEN, "p" if plan is Plan.VELOCITY else "π")
+    table, sym = (b.vel, "v") if plan is Plan.VELOCITY else (b.acc, "a")
+    for name in b.mech.links[GROUND].points:
+        table[name] = sid
+        b.result(f"{sym}_{name}", sid)
+    drive = b.mech.drive
+    tip = next(p for p in b.mech.links[drive.link].points if p != drive.pivot)
+    return tip, f"I(0,{drive.link})"
+
+
 def pole(plan: Plan) -> str:
     """Step id of the pole of a plan."""
     return "vel.p" if plan is Plan.VELOCITY else "acc.pi"

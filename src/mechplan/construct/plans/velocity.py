@@ -15,6 +15,7 @@ from .images import (
     meet_lines,
     parallel_line,
     perp_line,
+    start_plan,
 )
 
 V = Plan.VELOCITY
@@ -22,18 +23,12 @@ V = Plan.VELOCITY
 
 def emit_drive(b: Builder) -> None:
     """Pole, frame images, ω1 and the driving vector pb ⊥ AB."""
-    b.add("vel.p", Op.POLE, (), V, Kind.POINT, Role.GIVEN, "p")
-    for name in b.mech.links[GROUND].points:
-        b.vel[name] = "vel.p"
-        b.result(f"v_{name}", "vel.p")
+    tip, group = start_plan(b, V)
     drive = b.mech.drive
-    crank = b.mech.links[drive.link]
-    tip = next(p for p in crank.points if p != drive.pivot)
     body = b.bodies[drive.link]
     body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR, Role.GIVEN,
                        f"ω{drive.link}", value=drive.omega)
     b.result(f"omega_{drive.link}", body.omega)
-    group = f"I(0,{drive.link})"
     b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY, (b.pos[drive.pivot], b.pos[tip]), V,
                        Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
                        omega=drive.omega)
