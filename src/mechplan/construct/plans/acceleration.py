@@ -17,6 +17,7 @@ from .images import (
     perp_line,
     start_plan,
 )
+from .position import locus_id
 
 A = Plan.ACCELERATION
 
@@ -85,11 +86,6 @@ def _tangential(b: Builder, n: str, end: str, quantity: str, group: str) -> None
     b.segment(A, n, end, f"{b.c[n].label} {b.c[end].label}", quantity, SegmentKind.TANGENTIAL, group)
 
 
-def _locus(b: Builder, link: str, point: str, guide: str | None = None) -> str:
-    prefix = f"pos.locus.{link}.{point}." + (guide or "")
-    return next(s.id for s in b.c if s.id.startswith(prefix))
-
-
 def _rrr(b: Builder, g: Group) -> None:
     l1, l2 = g.links
     p1, p2, k = g.outer1.point, g.outer2.point, g.inner.point
@@ -114,7 +110,7 @@ def _rrp(b: Builder, g: Group) -> None:
     l1, l2 = g.links
     p1, k = g.outer1.point, g.inner.point
     m = g.outer2.other(l2)
-    locus = _locus(b, l2, k)
+    locus = locus_id(l2, k, g.outer2.guide)
     n1 = _normal(b, b.acc[p1], l1, p1, k, k, g.name)
     km_v = coincident(b, m, k, Plan.VELOCITY, g.name)
     km = coincident(b, m, k, A, g.name)
@@ -178,8 +174,8 @@ def _prp(b: Builder, g: Group) -> None:
     k = g.inner.point
     m1, m2 = g.outer1.other(l1), g.outer2.other(l2)
     lines = []
-    for link, m in ((l1, m1), (l2, m2)):
-        locus = _locus(b, link, k)
+    for link, m, outer in ((l1, m1, g.outer1), (l2, m2, g.outer2)):
+        locus = locus_id(link, k, outer.guide)
         kv = coincident(b, m, k, Plan.VELOCITY, g.name)
         ka = coincident(b, m, k, A, g.name)
         kk = _coriolis(b, ka, m, kv, b.vel[k], f"{k}{link}{k}{m}", g.name)
@@ -205,7 +201,7 @@ def _rpp(b: Builder, g: Group) -> None:
     x = next(iter(b.mech.links[l2].points))
     lines = []
     for partner, guide in ((m, g.outer2.guide), (l1, g.inner.guide)):
-        locus = _locus(b, l2, x, guide)
+        locus = locus_id(l2, x, guide)
         xv = coincident(b, partner, x, Plan.VELOCITY, g.name)
         xa = coincident(b, partner, x, A, g.name)
         kk = _coriolis(b, xa, partner, xv, b.vel[x], f"{x}{l2}{x}{partner}", g.name)

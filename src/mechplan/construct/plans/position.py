@@ -102,11 +102,16 @@ def angle_from_pair(b: Builder, link: str, pair: Pair, partner: str, group: str)
     return body.angle
 
 
+def locus_id(link: str, point: str, guide: str | None) -> str:
+    """Step id of the line a point of a sliding link lies on (see :func:`locus`)."""
+    return f"pos.locus.{link}.{point}.{guide}"
+
+
 def locus(b: Builder, link: str, point: str, pair: Pair, partner: str, group: str) -> str:
     """Line on which a point of a sliding link lies, given the partner link's pose."""
     g = b.guide_of(pair)
     x, y = b.mech.links[link].points[point]
-    sid = f"pos.locus.{link}.{point}.{g.name}"
+    sid = locus_id(link, point, g.name)
     cg, sg = math.cos(g.angle), math.sin(g.angle)
     if pair.a == link:      # the link slides on the partner's guide
         rx, ry = cg * x - sg * y, sg * x + cg * y

@@ -17,6 +17,7 @@ from .images import (
     perp_line,
     start_plan,
 )
+from .position import locus_id
 
 V = Plan.VELOCITY
 
@@ -79,7 +80,7 @@ def _rrp(b: Builder, g: Group) -> None:
     l1, l2 = g.links
     p1, k = g.outer1.point, g.inner.point
     m = g.outer2.other(l2)
-    locus = next(s.id for s in b.c if s.op is Op.LOCUS_LINE and s.id.startswith(f"pos.locus.{l2}.{k}."))
+    locus = locus_id(l2, k, g.outer2.guide)
     km = coincident(b, m, k, V, g.name)
     meet = meet_lines(b, V, f"vel.{k}", perp_line(b, V, b.vel[p1], p1, k, g.name), parallel_line(b, V, km, locus, g.name),
                  vlabel(k), g.name)
@@ -127,8 +128,7 @@ def _prp(b: Builder, g: Group) -> None:
     l1, l2 = g.links
     k = g.inner.point
     m1, m2 = g.outer1.other(l1), g.outer2.other(l2)
-    loc1 = next(s.id for s in b.c if s.id.startswith(f"pos.locus.{l1}.{k}."))
-    loc2 = next(s.id for s in b.c if s.id.startswith(f"pos.locus.{l2}.{k}."))
+    loc1, loc2 = locus_id(l1, k, g.outer1.guide), locus_id(l2, k, g.outer2.guide)
     k1, k2 = coincident(b, m1, k, V, g.name), coincident(b, m2, k, V, g.name)
     meet = meet_lines(b, V, f"vel.{k}", parallel_line(b, V, k1, loc1, g.name), parallel_line(b, V, k2, loc2, g.name),
                  vlabel(k), g.name)
@@ -150,8 +150,7 @@ def _rpp(b: Builder, g: Group) -> None:
     link_scalar(b, l1, l2, V, g.name)
     complete(b, l1, V, g.name)
     x = next(iter(b.mech.links[l2].points))
-    loc_ext = next(s.id for s in b.c if s.id.startswith(f"pos.locus.{l2}.{x}.{g.outer2.guide}"))
-    loc_in = next(s.id for s in b.c if s.id.startswith(f"pos.locus.{l2}.{x}.{g.inner.guide}"))
+    loc_ext, loc_in = locus_id(l2, x, g.outer2.guide), locus_id(l2, x, g.inner.guide)
     xm, x1 = coincident(b, m, x, V, g.name), coincident(b, l1, x, V, g.name)
     meet = meet_lines(b, V, f"vel.{x}", parallel_line(b, V, xm, loc_ext, g.name), parallel_line(b, V, x1, loc_in, g.name),
                  vlabel(x), g.name)
