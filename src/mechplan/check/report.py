@@ -204,6 +204,10 @@ class CheckReport:
                 return [clean(v) for v in x]
             return x
 
+        def verdict_words(item: Any) -> dict[str, str]:
+            return {"verdict_text": verdict_text(item.verdict, item.cause, lang),
+                    "cause_text": word("cause", item.cause, lang) if item.cause else ""}
+
         plans = []
         for p in self.plans:
             d = asdict(p)
@@ -214,18 +218,14 @@ class CheckReport:
             d["title"] = capitalize(tr(p.name, lang))
             d["tolerance_text"] = p.tolerance.text(lang)
             for pt, rd in zip(p.points, d["points"]):
-                rd.update(verdict_text=verdict_text(pt.verdict, pt.cause, lang),
-                          cause_text=word("cause", pt.cause, lang) if pt.cause else "",
-                          found_text=tr(pt.found, lang))
+                rd.update(verdict_words(pt), found_text=tr(pt.found, lang))
             for seg, rd in zip(p.segments, d["segments"]):
-                rd.update(verdict_text=verdict_text(seg.verdict, seg.cause, lang),
-                          cause_text=word("cause", seg.cause, lang) if seg.cause else "")
+                rd.update(verdict_words(seg))
             plans.append(d)
         values = []
         for v in self.values:
             d = asdict(v)
-            d.update(verdict_text=verdict_text(v.verdict, v.cause, lang),
-                     cause_text=word("cause", v.cause, lang) if v.cause else "")
+            d.update(verdict_words(v))
             values.append(d)
         findings = []
         for f in self.findings:
