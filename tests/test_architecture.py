@@ -17,11 +17,13 @@ ALLOWED = {
     "scene": {"model"},
     "construct": {"geom", "model"},
     "dynamics": {"geom", "model", "scene", "construct"},
-    "sheet": {"geom", "model", "scene", "construct", "solve", "render.atomic"},
+    "synthesis": {"geom", "model"},
+    "sheet": {"geom", "model", "scene", "construct", "dynamics", "synthesis", "solve",
+              "render.atomic"},
     "render": {"sheet"},
     "check": {"geom", "model", "scene", "construct", "dynamics", "solve", "sheet", "render"},
 }
-BASE = {"errors", "units", "__init__", "__version__"}
+BASE = {"errors", "units", "i18n", "__init__", "__version__"}
 
 
 def _imports(path: Path) -> set[str]:

@@ -11,17 +11,15 @@ from .errors import MechplanError
 
 
 def _solve(args: argparse.Namespace) -> int:
-    from .report import text_report
-    from .scene import load_scene
-    from .solve import solve, to_json
+    from .studies import MechanismStudy, solve_file
 
-    scene = load_scene(args.scene)
-    sol = solve(scene, at_deg=args.at, count=args.positions)
+    study = solve_file(args.scene, at_deg=args.at, count=args.positions)
     if args.json:
-        print(json.dumps(to_json(sol), ensure_ascii=False, indent=1))
+        print(json.dumps(study.to_json(), ensure_ascii=False, indent=1))
     else:
-        print(text_report(sol, args.lang))
-    if args.stats:
+        print(study.report(args.lang))
+    if args.stats and isinstance(study, MechanismStudy):
+        sol = study.solution
         print(f"steps: {len(sol.construction.steps)} in the construction, "
               f"{sol.ev.evaluated} evaluated for {sol.positions} position(s)", file=sys.stderr)
     return 0
@@ -29,15 +27,12 @@ def _solve(args: argparse.Namespace) -> int:
 
 def _draw(args: argparse.Namespace) -> int:
     from .render import write
-    from .scene import load_scene
-    from .sheet.compose import compose_sheets
-    from .solve import solve
+    from .studies import solve_file
 
     formats = [f.strip() for f in args.format.split(",") if f.strip()]
     for path in args.scenes:
-        scene = load_scene(path)
-        sol = solve(scene)
-        sheets = compose_sheets(sol, args.sheet, args.standard, args.lang, name=Path(path).stem)
+        study = solve_file(path)
+        sheets = study.sheets(args.sheet, args.standard, args.lang, Path(path).stem)
         out = Path(args.output)
         out.mkdir(parents=True, exist_ok=True)
         for sheet in sheets:
@@ -47,7 +42,7 @@ def _draw(args: argparse.Namespace) -> int:
 
 
 def _new(args: argparse.Namespace) -> int:
-    templates = Path(__file__).resolve().parents[2] / "templates"
+    templates = Path(__file__).resolve().parent / "templates"
     src = templates / f"{args.template}.toml"
     if not src.exists():
         names = ", ".join(sorted(p.stem for p in templates.glob("*.toml")))

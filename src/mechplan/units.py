@@ -123,7 +123,6 @@ def parse_quantity(text: object, dimension: str, *, file: str | None = None,
 
 def format_number(value: float, digits: int, language: str) -> str:
     """Format a number with a fixed number of decimals and the language's decimal mark."""
-    s = f"{value:.{digits}f}"
-    if s.startswith("-") and float(s) == 0.0:
-        s = s[1:]
-    return s.replace(".", ",") if language in ("ru", "vi") else s
+    from .i18n import number
+
+    return number(value, digits, language)

@@ -26,7 +26,7 @@ from .spec import (
     Scene,
 )
 
-TOP_KEYS = ("title", "language", "ground", "links", "drive", "assembly", "positions", "analysis",
+TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions", "analysis",
             "gravity", "loads", "drawing", "title_block", "description")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")

@@ -1,0 +1,39 @@
+"""A scene file's text and its kind (the top-level ``kind`` key)."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+from typing import Any
+
+from ..errors import SceneError
+
+SCENE_KINDS: tuple[str, ...] = ("mechanism", "cam", "gears", "engine")
+
+
+def read_text(path: str | Path) -> str:
+    """Read a scene file as UTF-8 text; a user error names the file."""
+    path = Path(path)
+    try:
+        return path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SceneError(f"cannot read the scene file ({exc.strerror})", file=str(path)) from None
+    except UnicodeDecodeError:
+        raise SceneError("the scene file is not UTF-8 text", file=str(path)) from None
+
+
+def parse_toml(text: str, file: str) -> dict[str, Any]:
+    """Parse TOML text; a syntax error names the file."""
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise SceneError(f"not valid TOML: {exc}", file=file) from None
+
+
+def scene_kind(data: dict[str, Any], file: str) -> str:
+    """Return the ``kind`` of a parsed scene (default ``"mechanism"``)."""
+    kind = data.get("kind", "mechanism")
+    if kind not in SCENE_KINDS:
+        raise SceneError(f"kind must be one of {', '.join(SCENE_KINDS)} (got {kind!r})", file=file,
+                         key="kind")
+    return str(kind)
