@@ -12,7 +12,17 @@ from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[1]
-TEMPLATES = sorted((ROOT / "templates").glob("*.toml"))
+ALL_TEMPLATES = sorted((ROOT / "templates").glob("*.toml"))
+
+
+def _kind(path: Path) -> str:
+    import tomllib
+
+    return str(tomllib.loads(path.read_text(encoding="utf-8")).get("kind", "mechanism"))
+
+
+#: templates of linkages (the kind every plan, force and sheet test of the linkage half runs on)
+TEMPLATES = [p for p in ALL_TEMPLATES if _kind(p) == "mechanism"]
 
 
 def construction_of(scene, plans=("position", "velocity", "acceleration")):

@@ -11,7 +11,8 @@ from .errors import MechplanError
 
 
 def _solve(args: argparse.Namespace) -> int:
-    from .studies import MechanismStudy, solve_file
+    from .studies import solve_file
+    from .studies.mechanism import MechanismStudy
 
     study = solve_file(args.scene, at_deg=args.at, count=args.positions)
     if args.json:

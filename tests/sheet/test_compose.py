@@ -9,6 +9,7 @@ from pathlib import Path
 
 import ezdxf
 import pytest
+from scenes import ROOT, TEMPLATES
 from shapely import box
 
 from mechplan.cli import main
@@ -22,9 +23,6 @@ from mechplan.sheet.frame import make_frame
 from mechplan.sheet.panels import _points_of
 from mechplan.sheet.primitives import Text
 from mechplan.solve import solve
-
-ROOT = Path(__file__).resolve().parents[2]
-TEMPLATES = sorted((ROOT / "templates").glob("*.toml"))
 
 
 def composed(path: Path, **kw):

@@ -2,21 +2,21 @@
 
 A scene file says what it describes with its top-level ``kind`` key: ``"mechanism"`` (the default: a
 linkage, optionally with ``[dynamics]``/``[engine]`` sections), ``"cam"``, ``"gears"`` or ``"engine"``.
-Each kind is solved by its own package; the CLI and the public API only see :class:`Study`.
+Each kind is solved by its own package and presented by its module here (``studies/<kind>.py``);
+the CLI and the public API only see :class:`Study`.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
-from .errors import SceneError
-from .scene.document import parse_toml, read_text, scene_kind
+from ..errors import SceneError
+from ..scene.document import parse_toml, read_text, scene_kind
 
 if TYPE_CHECKING:
-    from .sheet.primitives import Sheet
-    from .solve import Solution
+    from ..sheet.primitives import Sheet
+
 
 class Study(Protocol):
     """A solved scene of any kind."""
@@ -35,36 +35,14 @@ class Study(Protocol):
         ...
 
 
-@dataclass(frozen=True)
-class MechanismStudy:
-    """A linkage solved at its positions (plans, forces and what its sections ask for)."""
-
-    solution: Solution
-
-    def report(self, language: str | None = None) -> str:
-        from .report import text_report
-
-        return text_report(self.solution, language)
-
-    def to_json(self) -> dict[str, Any]:
-        from .solve import to_json
-
-        return to_json(self.solution)
-
-    def sheets(self, size: str | None, standard: str | None, language: str | None,
-               name: str) -> list[Sheet]:
-        from .sheet.compose import compose_sheets
-
-        return compose_sheets(self.solution, size, standard, language, name=name)
-
-
 def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
                count: int | None = None) -> Study:
     """Solve a scene given as text; ``at_deg``/``count`` choose crank positions of a mechanism."""
     kind = scene_kind(parse_toml(text, file), file)
     if kind == "mechanism":
-        from .scene import parse_scene
-        from .solve import solve
+        from ..scene import parse_scene
+        from ..solve import solve
+        from .mechanism import MechanismStudy
 
         return MechanismStudy(solve(parse_scene(text, file), at_deg=at_deg, count=count))
     raise SceneError(f"scenes of kind {kind!r} are not supported by this build", file=file,
