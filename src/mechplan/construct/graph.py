@@ -67,6 +67,44 @@ class Construction:
     def __iter__(self) -> Iterator[Step]:
         return iter(self.steps.values())
 
+    # -- typed accessors: the only place outside the plan builders that knows how ids are formed --
+    def position(self, point: str) -> str:
+        """Return the step id of a point's position (position plan)."""
+        sid = f"pos.{point}"
+        if sid not in self.steps:
+            raise KeyError(f"point {point!r} has no position step")
+        return sid
+
+    def velocity_image(self, point: str) -> str:
+        """Return the step id of a point's image on the velocity plan."""
+        return self._result("v", point)
+
+    def acceleration_image(self, point: str) -> str:
+        """Return the step id of a point's image on the acceleration plan."""
+        return self._result("a", point)
+
+    def link_angle(self, link: str) -> str:
+        """Return the step id of a link's angle (rad, counter-clockwise from +x)."""
+        return self._result("angle", link)
+
+    def omega(self, link: str) -> str:
+        """Return the step id of a link's angular velocity (rad/s, counter-clockwise +)."""
+        return self._result("omega", link)
+
+    def epsilon(self, link: str) -> str:
+        """Return the step id of a link's angular acceleration (rad/s², counter-clockwise +)."""
+        return self._result("epsilon", link)
+
+    def has_result(self, quantity: str, subject: str) -> bool:
+        """Tell whether a result (``"v"``, ``"a"``, ``"angle"``, ``"omega"``, ``"epsilon"``) exists."""
+        return f"{quantity}_{subject}" in self.results
+
+    def _result(self, quantity: str, subject: str) -> str:
+        try:
+            return self.results[f"{quantity}_{subject}"]
+        except KeyError:
+            raise KeyError(f"the construction has no {quantity} of {subject!r}") from None
+
     def ancestors(self, targets: Iterable[str]) -> list[str]:
         """Return the targets and everything they depend on, in construction order."""
         needed: set[str] = set()
