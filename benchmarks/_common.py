@@ -13,7 +13,7 @@ for _path in (ROOT / "src", HERE):              # run from a clone without insta
     if str(_path) not in sys.path:
         sys.path.insert(0, str(_path))
 
-import mechplan_bench as bench  # noqa: E402
+import mechplan_bench as bench
 
 RESULTS = HERE / "RESULTS.md"
 HEADER = """# Benchmarks

@@ -13,6 +13,7 @@ from mechplan.construct.graph import Construction, Evaluation
 from mechplan.scene import load_scene
 from mechplan.scene.spec import Scene
 from mechplan.solve import KINEMATIC, build, choose_scales
+
 from .config import FD_STEP_A, FD_STEP_V, PHI0, ROOT, TWO_PI, Case
 from .results import Result
 from .ruler import RulerEvaluation

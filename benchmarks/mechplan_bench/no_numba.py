@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from mechplan.errors import MechplanError
+
 from .config import CASES, KINDS, ROOT, Config
 from .model import Model
 from .peers import pylinkage_runner

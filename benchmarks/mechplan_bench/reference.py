@@ -10,6 +10,7 @@ from types import ModuleType
 import numpy as np
 
 from mechplan.errors import MechplanError
+
 from .config import KINDS, ROOT, Case
 from .results import Result
 

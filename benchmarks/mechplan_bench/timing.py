@@ -11,6 +11,7 @@ from collections.abc import Callable
 from typing import Any
 
 from mechplan.construct.graph import Evaluation
+
 from .config import Config
 from .model import Model
 

@@ -23,8 +23,9 @@ def report() -> str:
     """Return the report as text, one finding a line."""
     from .sheet.fonts import BUNDLED_DIR, SheetFont, font_path
 
-    lines = [f"mechplan {__version__} (Python {platform.python_version()}, "
-             f"{sys.platform}, {sys.executable})", "fonts:"]
+    head = (f"mechplan {__version__} (Python {platform.python_version()}, {sys.platform}, "
+            f"{sys.executable})")
+    lines = [head, "fonts:"]
     for font in SheetFont:
         path = font_path(font)
         where = "not found: text metrics are estimated" if path is None else (

@@ -5,10 +5,10 @@ from __future__ import annotations
 import argparse
 import math
 
+import mechplan_bench as bench
 import numpy as np
 import pytest
 
-import mechplan_bench as bench
 from mechplan.construct.step import Kind, Op
 
 METHODS = ("exact float64", "exact float32", "ruler 0.5 mm", "finite differences", "λ-series",
