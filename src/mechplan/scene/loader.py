@@ -421,6 +421,9 @@ def _masses(top: Table, links: dict[str, Link]) -> dict[str, MassSpec]:
         if mass is None and inertia is None:
             continue
         if isinstance(centre_raw, dict):
+            if len(centre_raw) != 1:
+                raise t.error("centre", "expected one point, e.g. centre = { S2 = \"midpoint B C\" }"
+                              f" (got {centre_raw!r})")
             centre = next(iter(centre_raw))
         elif isinstance(centre_raw, str):
             centre = centre_raw
@@ -482,6 +485,10 @@ def _point_link(t: Table, links: dict[str, Link], point: str, link: str | None) 
 
 
 def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpec:
+    if "force" in t.data:
+        raise t.error("force", "unknown key; a load of type = \"force\" takes vector = "
+                      "[\"0 N\", \"-800 N\"], or magnitude = \"800 N\" with angle = \"90 deg\" "
+                      "or towards = \"A\" (see docs/reference.md)")
     t.check_keys(("type", "kind", "link", "point", "vector", "magnitude", "angle", "towards",
                   "toward", "pressure", "bore", "moment", "against", "table", "name"))
     kind_s = t.string("type", t.string("kind"), choices=tuple(k.value for k in LoadKind))
