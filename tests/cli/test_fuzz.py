@@ -22,7 +22,7 @@ import mechplan
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = {p.stem: tomllib.loads(p.read_text(encoding="utf-8"))
           for p in sorted((ROOT / "templates").glob("*.toml"))}
-EXAMPLES = int(os.environ.get("MECHPLAN_FUZZ_EXAMPLES", "300"))
+EXAMPLES = int(os.environ.get("MECHPLAN_FUZZ_EXAMPLES", "200"))
 
 junk = st.one_of(
     st.sampled_from(["", "0 mm", "-5 mm", "1e300 mm", "1,0,0 mm", "80", "abc", "800 rpm",
