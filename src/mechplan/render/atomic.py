@@ -37,7 +37,10 @@ def atomic_open(path: str | os.PathLike[str]) -> Iterator[BinaryIO]:
                 fh.flush()
                 os.fsync(fh.fileno())
             except OSError as exc:
-                raise DrawingError(f"cannot write the file ({os_reason(exc)})", file=str(path)) from None
+                if exc.errno is None:        # not from the operating system
+                    raise
+                raise DrawingError(f"cannot write the file ({os_reason(exc)})",
+                                   file=str(path)) from None
         if target.exists():
             # keep the permissions of the file being replaced
             with contextlib.suppress(OSError):

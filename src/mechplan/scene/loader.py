@@ -271,7 +271,9 @@ def _pairs(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> list
             point = next(iter(link.points))
             pairs.append(Pair(PairKind.PRISMATIC, lid, g.link, point, g.name))
     for lid, link in links.items():
-        if link.slides_on and len(seen) and not any(len(seen[p]) > 1 for p in link.points):
+        carries = any(g.link == lid and any(o.slides_on == g.name for o in links.values())
+                      for g in guides.values())
+        if link.slides_on and not carries and not any(len(seen[p]) > 1 for p in link.points):
             point = next(iter(link.points))
             joints = sorted(p for p, on in seen.items() if lid not in on)
             raise top.error(f"links.{lid}.slides.point", f"unknown point {point!r}: the point a "
