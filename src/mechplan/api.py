@@ -337,7 +337,7 @@ def _toml_value(value: Any, key: str) -> str:
 
 
 def to_toml(data: Mapping[str, Any]) -> str:
-    """Return TOML text for a scene given as a dict (inline tables; round-trips ``tomllib``)."""
+    """Return TOML text for a scene given as a dict (inline tables, read back unchanged)."""
     if not isinstance(data, Mapping):
         raise SceneError(f"a scene must be a table (got {type(data).__name__})", file="<dict>")
     return "".join(f"{json.dumps(str(k), ensure_ascii=False)} = {_toml_value(v, str(k))}\n"
@@ -350,7 +350,7 @@ def loads(text: str | Mapping[str, Any], name: str = "<scene>") -> Mechanism | S
     Parameters
     ----------
     text : str or Mapping
-        The scene as TOML text, or as the dict ``tomllib`` would return for it.
+        The scene as TOML text, or as the dict a TOML reader returns for it.
     name : str
         The name errors give for the scene (default ``"<scene>"``, ``"<dict>"`` for a dict).
 
