@@ -18,7 +18,7 @@ import os
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 import numpy as np
 
@@ -41,14 +41,17 @@ def _frozen(a: Any) -> np.ndarray:
     return out
 
 
-class Table(Mapping[str, np.ndarray]):
+V = TypeVar("V")
+
+
+class ByName(Mapping[str, V]):
     """A read-only mapping from a point or link name to its values over the positions."""
 
-    def __init__(self, values: dict[str, np.ndarray], what: str) -> None:
+    def __init__(self, values: dict[str, V], what: str) -> None:
         self._values = values
         self._what = what
 
-    def __getitem__(self, name: object) -> np.ndarray:
+    def __getitem__(self, name: object) -> V:
         key = str(name)
         if key not in self._values:
             known = ", ".join(self._values) or "none"
@@ -279,9 +282,9 @@ def _solution(s: _Solved) -> Solution:
             if plan in s.plans and c.has_result(quantity, link):
                 out[link] = _frozen(ev.get(accessor(link)))
     forces = _forces(s.extras["forces"]) if "forces" in s.extras else None
-    return Solution(_frozen(np.degrees(s.phi)), Table(r, "position"), Table(v, "velocity"),
-                    Table(a, "acceleration"), Table(angle, "angle"), Table(omega, "omega"),
-                    Table(epsilon, "epsilon"), forces)
+    return Solution(_frozen(np.degrees(s.phi)), ByName(r, "position"), ByName(v, "velocity"),
+                    ByName(a, "acceleration"), ByName(angle, "angle"), ByName(omega, "omega"),
+                    ByName(epsilon, "epsilon"), forces)
 
 
 def _take(out: dict[str, np.ndarray], point: str, ev: Evaluation, accessor: Any) -> None:
@@ -299,11 +302,10 @@ def _forces(fa: Any) -> Forces:
 
     inertia = {k: InertiaLoad(k, _frozen(q), _frozen(m)) for k, (q, m) in fa.inertia.items()}
     return Forces(
-        inertia=Table(inertia, "inertia"),  # type: ignore[arg-type]
-        reactions=Table({k: reaction(x) for k, x in fa.reactions.items()},  # type: ignore[misc]
-                        "reaction"),
-        guide_reactions=Table({k: reaction(x)  # type: ignore[misc]
-                               for k, x in fa.guide_reactions.items()}, "guide reaction"),
+        inertia=ByName(inertia, "inertia"),
+        reactions=ByName({k: reaction(x) for k, x in fa.reactions.items()}, "reaction"),
+        guide_reactions=ByName({k: reaction(x) for k, x in fa.guide_reactions.items()},
+                              "guide reaction"),
         M_b=_frozen(fa.balancing_moment), M_b_zhukovsky=_frozen(fa.zhukovsky_moment),
         M_red=_frozen(fa.reduced_moment), J_red=_frozen(fa.reduced_inertia))
 
@@ -401,7 +403,7 @@ def load(source: SceneSource) -> Mechanism | Study:
         return loads(source)
     from .scene.document import read_text
 
-    return loads(read_text(source), str(source))
+    return loads(read_text(os.fspath(source)), str(source))
 
 
 def _study(scene: SceneSource | Mechanism | Study) -> tuple[Study, str]:
@@ -417,7 +419,7 @@ def _study(scene: SceneSource | Mechanism | Study) -> tuple[Study, str]:
     if isinstance(scene, (str, os.PathLike)):
         from .studies import solve_file
 
-        return solve_file(scene), Path(scene).stem
+        return solve_file(os.fspath(scene)), Path(scene).stem
     return scene, "scene"
 
 
@@ -488,5 +490,5 @@ def check(scene: SceneSource | Mechanism, submission: str | os.PathLike[str], *,
     return run_check(spec, str(submission), Options(at_deg=at_deg))
 
 
-__all__ = ["Forces", "InertiaLoad", "Mechanism", "PairReaction", "Solution", "Table", "check",
+__all__ = ["ByName", "Forces", "InertiaLoad", "Mechanism", "PairReaction", "Solution", "check",
            "draw", "load", "loads", "to_toml"]

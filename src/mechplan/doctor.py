@@ -42,6 +42,6 @@ def report() -> str:
         lines.append(f"  {program}: {found or 'not found'} ({what})")
     lines.append("optional packages:")
     for name, what in EXTRAS:
-        found = importlib.util.find_spec(name) is not None
-        lines.append(f"  {name}: {'found' if found else 'not installed'} ({what})")
+        present = importlib.util.find_spec(name) is not None
+        lines.append(f"  {name}: {'found' if present else 'not installed'} ({what})")
     return "\n".join(lines)
