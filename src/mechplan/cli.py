@@ -55,7 +55,10 @@ def _draw(args: argparse.Namespace) -> int:
                             f"{args.format!r})")
     out = prepare_dir(args.output)
     failed = 0
-    for path in args.scenes:
+    progress = len(args.scenes) > 1 and sys.stderr.isatty()
+    for i, path in enumerate(args.scenes, start=1):
+        if progress:
+            print(f"mechplan: [{i}/{len(args.scenes)}] {path}", file=sys.stderr, flush=True)
         try:
             study = solve_file(path)
             for sheet in study.sheets(args.sheet, args.standard, args.lang, Path(path).stem):
