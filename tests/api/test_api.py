@@ -71,6 +71,7 @@ def test_kinematics_match_the_closed_form(mech: mechplan.Mechanism) -> None:
     np.testing.assert_allclose(sol.omega["2"], ref["omega2"], atol=1e-9)
     np.testing.assert_allclose(sol.epsilon["2"], ref["eps2"], rtol=1e-9, atol=1e-6)
     np.testing.assert_allclose(sol.omega["1"], W1, rtol=1e-15)
+    assert sol.omega[2] is sol.omega["2"]                 # a link may be named by its number
 
 
 def test_forces_are_typed_and_satisfy_virtual_power(mech: mechplan.Mechanism) -> None:
