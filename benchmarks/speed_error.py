@@ -5,7 +5,7 @@ Writes the section "Speed against error" of ``benchmarks/RESULTS.md`` and the lo
 ``benchmarks/speed_error.png``. Run from the repository root::
 
     python benchmarks/speed_error.py            # full run, a few minutes
-    python benchmarks/speed_error.py --quick    # the reduced run of `mechplan bench --quick`
+    python benchmarks/speed_error.py --quick    # the reduced run of `python benchmarks/bench.py --quick`
 """
 
 from __future__ import annotations
@@ -63,7 +63,7 @@ allocated before; the "cold allocator" table below shows the effect.
   from the point its segment starts at, its length is rounded to the ruler's precision and its
   direction to the angle whose arc at that length is the same precision (the end moves at most half a
   step sideways), and everything after it — lines through it, meets, ω and ε computed from measured
-  segments — is built from the rounded point (`mechplan.bench.RulerEvaluation`). Frame points and
+  segments — is built from the rounded point (`mechplan_bench.RulerEvaluation`). Frame points and
   poles are exact. Rounding is deterministic (nearest), so this is one realisation of a careful
   drawing, not an average over students.
 - *finite differences*: positions from the construction, v and a by central differences in φ with

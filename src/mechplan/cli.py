@@ -1,13 +1,29 @@
-"""Command line: mechplan solve | draw | check | bench | new."""
+"""Command line: mechplan solve | draw | check | new | doctor | completion."""
 
 from __future__ import annotations
 
 import argparse
 import json
 import sys
+from importlib import resources
 from pathlib import Path
 
+from . import __version__
 from .errors import MechplanError
+
+LANGUAGE_CHOICES = ("en", "ru", "vi", "zh")
+SHEETS = ("A0", "A1", "A2", "A3", "A4")
+STANDARDS = ("iso", "gost", "tcvn")
+
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})")
+    return value
 
 
 def _solve(args: argparse.Namespace) -> int:
@@ -27,32 +43,84 @@ def _solve(args: argparse.Namespace) -> int:
 
 
 def _draw(args: argparse.Namespace) -> int:
-    from .render import write
+    """Draw every scene; a failing one is reported and the others are still drawn."""
+    from .outputs import prepare_dir
+    from .render import FORMATS, write
     from .studies import solve_file
 
-    formats = [f.strip() for f in args.format.split(",") if f.strip()]
-    for path in args.scenes:
-        study = solve_file(path)
-        sheets = study.sheets(args.sheet, args.standard, args.lang, Path(path).stem)
-        out = Path(args.output)
-        out.mkdir(parents=True, exist_ok=True)
-        for sheet in sheets:
-            for written in write(sheet, out, formats):
-                print(written)
-    return 0
+    formats = [f.strip().lower() for f in args.format.split(",") if f.strip()]
+    unknown = [f for f in formats if f not in FORMATS]
+    if unknown or not formats:
+        raise MechplanError(f"--format must list some of {', '.join(FORMATS)} (got "
+                            f"{args.format!r})")
+    out = prepare_dir(args.output)
+    failed = 0
+    progress = len(args.scenes) > 1 and sys.stderr.isatty()
+    for i, path in enumerate(args.scenes, start=1):
+        if progress:
+            print(f"mechplan: [{i}/{len(args.scenes)}] {path}", file=sys.stderr, flush=True)
+        try:
+            study = solve_file(path)
+            for sheet in study.sheets(args.sheet, args.standard, args.lang, Path(path).stem):
+                for written in write(sheet, out, formats):
+                    print(written)
+        except MechplanError as exc:
+            failed += 1
+            print(f"mechplan: error: {exc}", file=sys.stderr)
+    if failed and len(args.scenes) > 1:
+        print(f"mechplan: {failed} of {len(args.scenes)} scenes failed", file=sys.stderr)
+    return 2 if failed else 0
+
+
+def template_names() -> list[str]:
+    """Names of the bundled templates (without ``.toml``)."""
+    folder = resources.files("mechplan") / "templates"
+    return sorted(p.name.removesuffix(".toml") for p in folder.iterdir()
+                  if p.name.endswith(".toml"))
+
+
+def _template_text(name: str) -> str:
+    stem = name.removesuffix(".toml")
+    names = template_names()
+    if stem not in names:
+        raise MechplanError(f"template must be one of {', '.join(names)} (got {name!r}); "
+                            "see mechplan new --list")
+    return (resources.files("mechplan") / "templates" / f"{stem}.toml").read_text(
+        encoding="utf-8")
 
 
 def _new(args: argparse.Namespace) -> int:
-    templates = Path(__file__).resolve().parent / "templates"
-    src = templates / f"{args.template}.toml"
-    if not src.exists():
-        names = ", ".join(sorted(p.stem for p in templates.glob("*.toml")))
-        raise MechplanError(f"unknown template {args.template!r}; templates are {names}")
-    dest = Path(args.output or f"{args.template}.toml")
+    if args.list:
+        for name in template_names():
+            print(name)
+        return 0
+    if not args.template:
+        raise MechplanError("name a template (see mechplan new --list), e.g. mechplan new "
+                            "four_bar")
+    text = _template_text(args.template)
+    dest = Path(args.output or f"{args.template.removesuffix('.toml')}.toml")
+    if dest.is_dir():
+        dest = dest / f"{args.template.removesuffix('.toml')}.toml"
     if dest.exists():
         raise MechplanError(f"{dest} exists already; choose another name with -o")
-    dest.write_text(src.read_text(encoding="utf-8"), encoding="utf-8")
+    from .render.atomic import write_atomic
+
+    write_atomic(dest, text.encode("utf-8"))
     print(dest)
+    return 0
+
+
+def _doctor(args: argparse.Namespace) -> int:
+    from .doctor import report
+
+    print(report())
+    return 0
+
+
+def _completion(args: argparse.Namespace) -> int:
+    from .completion import bash_script
+
+    print(bash_script(parser(), template_names()))
     return 0
 
 
@@ -60,32 +128,49 @@ def parser() -> argparse.ArgumentParser:
     """The argument parser."""
     p = argparse.ArgumentParser(prog="mechplan", description="Graphical method of planar "
                                 "mechanism analysis, constructed step by step.")
-    sub = p.add_subparsers(dest="command", required=True)
+    p.add_argument("--version", action="version", version=f"mechplan {__version__}")
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
     s = sub.add_parser("solve", help="structure, plans, construction protocol and results")
     s.add_argument("scene")
-    s.add_argument("--at", type=float, nargs="+", metavar="DEG", help="crank angles φ in degrees")
-    s.add_argument("--positions", type=int, metavar="N", help="N equal steps from the scene's start")
-    s.add_argument("--lang", choices=("en", "ru", "vi", "zh"))
+    where = s.add_mutually_exclusive_group()
+    where.add_argument("--at", type=float, nargs="+", metavar="DEG",
+                       help="crank angles φ in degrees")
+    where.add_argument("--positions", type=_positive_int, metavar="N",
+                       help="N ≥ 1 equal steps from the scene's start")
+    s.add_argument("--lang", choices=LANGUAGE_CHOICES)
     s.add_argument("--json", action="store_true", help="one JSON document, SI units")
     s.add_argument("--stats", action="store_true", help="print step counts to stderr")
     s.set_defaults(func=_solve)
-    d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG")
+    d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG",
+                       description="Draw the sheets of one or more scenes. A scene that fails is "
+                       "reported and the others are still drawn; the exit code is 2 if any "
+                       "failed.")
     d.add_argument("scenes", nargs="+", metavar="SCENE")
     d.add_argument("-o", "--output", default=".", help="output folder (default: .)")
     d.add_argument("--format", default="dxf,svg,pdf", help="comma-separated: dxf,svg,pdf,png")
-    d.add_argument("--sheet", choices=("A0", "A1", "A2", "A3", "A4"))
-    d.add_argument("--lang", choices=("en", "ru", "vi", "zh"))
-    d.add_argument("--standard", choices=("iso", "gost", "tcvn"))
+    d.add_argument("--sheet", choices=SHEETS)
+    d.add_argument("--lang", choices=LANGUAGE_CHOICES)
+    d.add_argument("--standard", choices=STANDARDS)
     d.set_defaults(func=_draw)
-    from .bench import add_parser as add_bench
     from .check.cli import add_parser as add_check
 
     add_check(sub)
-    add_bench(sub)
-    n = sub.add_parser("new", help="start a scene from a bundled template")
-    n.add_argument("template")
-    n.add_argument("-o", "--output")
+    names = template_names()
+    n = sub.add_parser("new", help="start a scene from a bundled template",
+                       description="Copy a bundled template to start a scene.",
+                       epilog="templates: " + ", ".join(names))
+    n.add_argument("template", nargs="?", help="a template name (with or without .toml)")
+    n.add_argument("-o", "--output", help="file or folder to write (default: TEMPLATE.toml)")
+    n.add_argument("--list", action="store_true", help="list the templates and exit")
     n.set_defaults(func=_new)
+    dr = sub.add_parser("doctor", help="report fonts, viewers and optional extras found")
+    dr.set_defaults(func=_doctor)
+    c = sub.add_parser("completion", help="print a shell completion script",
+                       description="Print a completion script: eval \"$(mechplan completion "
+                       "bash)\", or save it in ~/.local/share/bash-completion/completions/"
+                       "mechplan.")
+    c.add_argument("shell", choices=("bash",))
+    c.set_defaults(func=_completion)
     return p
 
 
@@ -100,6 +185,9 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:          # output piped into `head`
         sys.stderr.close()
         return 0
+    except KeyboardInterrupt:
+        print("mechplan: interrupted", file=sys.stderr)
+        return 130
 
 
 if __name__ == "__main__":

@@ -2,6 +2,19 @@
 
 from __future__ import annotations
 
+import errno
+
+_OS_REASONS = {errno.EACCES: "permission denied", errno.EPERM: "permission denied",
+               errno.EROFS: "the file system is read-only", errno.ENOSPC: "the disk is full",
+               errno.EDQUOT: "the disk quota is exceeded", errno.ENOTDIR: "a part of it is a file",
+               errno.EEXIST: "a file of that name exists", errno.EISDIR: "it is a folder",
+               errno.ENAMETOOLONG: "the name is too long"}
+
+
+def os_reason(exc: OSError) -> str:
+    """Return a short reason for an operating-system error (for a user message)."""
+    return _OS_REASONS.get(exc.errno or 0, exc.strerror or exc.__class__.__name__)
+
 
 class MechplanError(Exception):
     """Base of every error a user can cause (bad scene, impossible geometry, unreadable file)."""

@@ -17,6 +17,7 @@ from .construct.segments import SegmentKind
 from .construct.step import Plan
 from .construct.validity import MAX_CONDITION, ensure_valid
 from .errors import SceneError
+from .limits import ensure_within_budget
 from .model.mechanism import GROUND
 from .model.structure import Structure, analyse
 from .scene.spec import Scene
@@ -116,19 +117,28 @@ def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[st
 
 def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = None,
           plans: tuple[str, ...] | None = None, loading: Any = None,
-          max_condition: float = MAX_CONDITION) -> Solution:
-    """Solve a scene at the positions it (or the caller) asks for; raise on unbuildable ones."""
+          max_condition: float = MAX_CONDITION, *,
+          built: tuple[Structure, Construction] | None = None,
+          scales: bool = True) -> Solution:
+    """Solve a scene at the positions it (or the caller) asks for; raise on unbuildable ones.
+
+    ``built`` reuses a structure and construction from :func:`build` (same scene, plans and
+    loading); ``scales=False`` chooses no drawing scale factors (nothing will be drawn).
+    """
     plans = plans or scene.plans
-    structure, c = build(scene, plans, loading)
+    structure, c = built or build(scene, plans, loading)
     if at_deg:
         phi = np.radians(np.asarray(at_deg, dtype=float))
     else:
         phi = crank_positions(scene, c, count)
-    ev = c.evaluate(phi)
     targets = targets_for(scene, c, plans)
+    ensure_within_budget(int(phi.shape[0]), len(c.ancestors(targets)), file=scene.path,
+                         key=None if at_deg or count else "positions.count")
+    ev = c.evaluate(phi)
     ev.evaluate_all(targets)
     ensure_valid(c, ev, scene.path, max_condition)
-    sol = Solution(scene, structure, c, phi, ev, plans, targets, choose_scales(scene, c, ev, plans))
+    sol = Solution(scene, structure, c, phi, ev, plans, targets,
+                   choose_scales(scene, c, ev, plans) if scales else {})
     if "force" in plans:
         from .dynamics.kinetostatics import analyse_forces
         from .dynamics.loading import Loading

@@ -66,6 +66,7 @@ def registry() -> pint.UnitRegistry:
 
 
 _DECIMAL_COMMA = re.compile(r"(?<=\d),(?=\d)")
+_TWO_MARKS = re.compile(r"\d[.,]\d*[.,]\d")
 
 
 def _noun(dimension: str) -> str:
@@ -94,6 +95,9 @@ def parse_quantity(text: object, dimension: str, *, file: str | None = None,
     if not isinstance(text, str) or not text.strip():
         raise SceneError(f"expected {_noun(dimension)} such as {example} (got {text!r})",
                          file=file, key=key)
+    if _TWO_MARKS.search(text):
+        raise SceneError(f"cannot read {text!r} as {_noun(dimension)}: a number has at most one "
+                         f"decimal mark; write it like {example}", file=file, key=key)
     cleaned = _DECIMAL_COMMA.sub(".", text.strip()).replace("·", "*").replace("²", "^2")
     cleaned = cleaned.replace("°", " deg").replace("^", "**")
     ureg = registry()

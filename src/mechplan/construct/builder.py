@@ -134,6 +134,7 @@ class Builder:
                              "give its side relative to points known by then "
                              f"({', '.join(sorted(self.pos))}) or sketch coordinates",
                              file=self.file, key=f"assembly.{point}")
+        sides = []
         for sigma in (1, -1):
             self.c.steps[step_id] = _with(step, sigma=sigma)
             ev = self.c.evaluate(self.assembly_phi)
@@ -141,6 +142,14 @@ class Builder:
             side = (b[0] - a[0]) * (k[1] - a[1]) - (b[1] - a[1]) * (k[0] - a[0])
             if side * want > 0:
                 return
+            sides.append(abs(side) / max(float(np.hypot(*(b - a)) * np.hypot(*(k - a))), 1e-300))
+        if all(math.isnan(x) or x < 1e-8 for x in sides):
+            raise SceneError(f"the side of point {point} relative to {p}->{q} cannot be decided at "
+                             f"φ = {math.degrees(self.assembly_phi):g}°: the points are collinear "
+                             "there (a change point or toggle, where both assemblies meet and the "
+                             "construction is ill-conditioned); set assembly.at to another crank "
+                             "angle, e.g. at = \"30 deg\"", file=self.file,
+                             key=f"assembly.{point}")
         raise SceneError(f"neither assembly of point {point} lies {'left' if want > 0 else 'right'} "
                          f"of {p}->{q} at φ = {math.degrees(self.assembly_phi):g}°",
                          file=self.file, key=f"assembly.{point}")

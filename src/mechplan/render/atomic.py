@@ -9,7 +9,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import BinaryIO
 
-from mechplan.errors import DrawingError
+from mechplan.errors import DrawingError, os_reason
 
 
 @contextlib.contextmanager
@@ -22,12 +22,25 @@ def atomic_open(path: str | os.PathLike[str]) -> Iterator[BinaryIO]:
     directory = target.parent if str(target.parent) else Path(".")
     if not directory.is_dir():
         raise DrawingError(f"output directory must exist (got {str(directory)!r})", file=str(path))
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
+    if target.is_dir():
+        raise DrawingError(f"the output file must not be a folder (got {str(target)!r})",
+                           file=str(path))
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
+    except OSError as exc:
+        raise DrawingError(f"cannot write in {str(directory)!r} ({os_reason(exc)})",
+                           file=str(path)) from None
     try:
         with os.fdopen(fd, "wb") as fh:
-            yield fh
-            fh.flush()
-            os.fsync(fh.fileno())
+            try:
+                yield fh
+                fh.flush()
+                os.fsync(fh.fileno())
+            except OSError as exc:
+                if exc.errno is None:        # not from the operating system
+                    raise
+                raise DrawingError(f"cannot write the file ({os_reason(exc)})",
+                                   file=str(path)) from None
         if target.exists():
             # keep the permissions of the file being replaced
             with contextlib.suppress(OSError):
@@ -36,7 +49,10 @@ def atomic_open(path: str | os.PathLike[str]) -> Iterator[BinaryIO]:
             umask = os.umask(0)
             os.umask(umask)
             os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, target)
+        try:
+            os.replace(tmp, target)
+        except OSError as exc:
+            raise DrawingError(f"cannot replace the file ({os_reason(exc)})", file=str(path)) from None
     except BaseException:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(tmp)

@@ -73,7 +73,8 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
     try:
         analyse(mech)
     except TopologyError as exc:
-        raise TopologyError(exc.detail, file=file, key=exc.key) from None
+        raise TopologyError(exc.detail + _shared_frame_hint(top, links), file=file,
+                            key=exc.key) from None
     all_points = {p for link in links.values() for p in link.points}
     positions = _positions(top, drive, all_points, links)
     masses = _masses(top, links)
@@ -231,6 +232,23 @@ def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]]
     return local, slides_on
 
 
+def _shared_frame_hint(top: Table, links: dict[str, Link]) -> str:
+    """Name the extra points (``points = {...}``) that join a link to the frame by their name."""
+    frame = set(links[GROUND].points)
+    found = []
+    lt = top.table("links")
+    for lid in links:
+        t = lt.table(lid) if lt is not None and lid != GROUND and lid in lt.data else None
+        extra = t.raw("points", {}) if t is not None else {}
+        for name in extra if isinstance(extra, dict) else ():
+            if name in frame:
+                found.append(f"links.{lid}.points.{name}")
+    if not found:
+        return ""
+    return (f"; {', '.join(found)} has the name of a frame point, which joins the link to the "
+            "frame there: rename it if it is another point")
+
+
 def _orient_sliders(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> None:
     """Check sliders do not slide on their own guide."""
     for link in links.values():
@@ -253,6 +271,15 @@ def _pairs(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> list
             point = next(iter(link.points))
             pairs.append(Pair(PairKind.PRISMATIC, lid, g.link, point, g.name))
     for lid, link in links.items():
+        carries = any(g.link == lid and any(o.slides_on == g.name for o in links.values())
+                      for g in guides.values())
+        if link.slides_on and not carries and not any(len(seen[p]) > 1 for p in link.points):
+            point = next(iter(link.points))
+            joints = sorted(p for p, on in seen.items() if lid not in on)
+            raise top.error(f"links.{lid}.slides.point", f"unknown point {point!r}: the point a "
+                            "slider slides at must be a joint with another link (points are "
+                            f"{', '.join(joints) or 'none'})")
+    for lid, link in links.items():
         if lid != GROUND and not any(p.joins(lid) for p in pairs):
             raise top.error(f"links.{lid}", f"link {lid} is connected to nothing: share a point "
                             "with another link or slide on a guide")
@@ -267,6 +294,9 @@ def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide], pairs: 
     assert link is not None
     if link not in links or link == GROUND:
         raise d.error("link", f"unknown link {link!r}; links are {', '.join(k for k in links if k != GROUND)}")
+    if not d.has("speed") and not d.has("omega"):
+        raise d.error("speed", "is missing: give the crank speed, e.g. speed = \"800 rpm\" or "
+                      "\"83.8 rad/s\"")
     speed_key = "speed" if d.has("speed") else "omega"
     speed = d.quantity(speed_key, "angular_velocity", required=True, positive=True)
     assert speed is not None
@@ -393,6 +423,9 @@ def _masses(top: Table, links: dict[str, Link]) -> dict[str, MassSpec]:
         if mass is None and inertia is None:
             continue
         if isinstance(centre_raw, dict):
+            if len(centre_raw) != 1:
+                raise t.error("centre", "expected one point, e.g. centre = { S2 = \"midpoint B C\" }"
+                              f" (got {centre_raw!r})")
             centre = next(iter(centre_raw))
         elif isinstance(centre_raw, str):
             centre = centre_raw
@@ -454,6 +487,10 @@ def _point_link(t: Table, links: dict[str, Link], point: str, link: str | None) 
 
 
 def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpec:
+    if "force" in t.data:
+        raise t.error("force", "unknown key; a load of type = \"force\" takes vector = "
+                      "[\"0 N\", \"-800 N\"], or magnitude = \"800 N\" with angle = \"90 deg\" "
+                      "or towards = \"A\" (see docs/reference.md)")
     t.check_keys(("type", "kind", "link", "point", "vector", "magnitude", "angle", "towards",
                   "toward", "pressure", "bore", "moment", "against", "table", "name"))
     kind_s = t.string("type", t.string("kind"), choices=tuple(k.value for k in LoadKind))

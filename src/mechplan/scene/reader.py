@@ -8,6 +8,17 @@ from typing import Any
 from ..errors import SceneError
 from ..units import parse_quantity
 
+#: largest magnitude (SI) a scene may give per dimension: beyond, squares overflow or lose all digits
+LIMITS = {"length": 1e6, "angle": 1e6, "angular_velocity": 1e9}
+DEFAULT_LIMIT = 1e15
+
+
+def _limit(dimension: str) -> str:
+    from ..units import DIMENSIONS
+
+    unit = DIMENSIONS.get(dimension, ("", ""))[1]
+    return f"{LIMITS.get(dimension, DEFAULT_LIMIT):g} {unit}".strip()
+
 
 class Table:
     """A TOML table that remembers its key path and which keys were used."""
@@ -70,6 +81,10 @@ class Table:
                 raise self.error(name, f"is missing (a {dimension.replace('_', ' ')})")
             return default
         value = parse_quantity(self.data[name], dimension, file=self.file, key=self.key(name))
+        limit = LIMITS.get(dimension, DEFAULT_LIMIT)
+        if abs(value) > limit:
+            raise self.error(name, f"must be at most {_limit(dimension)} (got "
+                             f"{self.data[name]!r}); numbers this large cannot be constructed")
         if positive and not value > 0:
             raise self.error(name, f"must be positive (got {self.data[name]!r})")
         if nonnegative and value < 0:
@@ -78,7 +93,12 @@ class Table:
 
     def value_quantity(self, value: Any, name: str, dimension: str) -> float:
         """Parse a value that sits at a child key."""
-        return parse_quantity(value, dimension, file=self.file, key=self.key(name))
+        out = parse_quantity(value, dimension, file=self.file, key=self.key(name))
+        limit = LIMITS.get(dimension, DEFAULT_LIMIT)
+        if abs(out) > limit:
+            raise self.error(name, f"must be at most {_limit(dimension)} (got {value!r}); "
+                             "numbers this large cannot be constructed")
+        return out
 
     def check_keys(self, allowed: tuple[str, ...]) -> None:
         """Reject unknown keys, suggesting the closest allowed one."""

@@ -80,12 +80,17 @@ class SheetFont(Enum):
 FALLBACK_FAMILIES: tuple[str, ...] = ("DejaVu Sans",)
 
 
+#: fonts installed with mechplan: osifont and a subset of Noto Sans CJK SC (see the licences there)
+BUNDLED_DIR = Path(__file__).resolve().parents[1] / "fonts"
+
+
 def _font_dirs() -> Iterable[Path]:
     extra = os.environ.get("MECHPLAN_FONT_DIRS", "")
     import matplotlib  # its own copy of DejaVu Sans is a last resort
 
-    bundled = str(Path(matplotlib.get_data_path()) / "fonts" / "ttf")
-    for d in [*filter(None, extra.split(os.pathsep)), *_FONT_DIRS, bundled]:
+    mpl_fonts = str(Path(matplotlib.get_data_path()) / "fonts" / "ttf")
+    # the system's fonts first (a full CJK font covers more than the bundled subset)
+    for d in [*filter(None, extra.split(os.pathsep)), *_FONT_DIRS, str(BUNDLED_DIR), mpl_fonts]:
         p = Path(d).expanduser()
         if p.is_dir():
             yield p

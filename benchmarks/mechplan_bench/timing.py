@@ -10,7 +10,8 @@ import time
 from collections.abc import Callable
 from typing import Any
 
-from ..construct.graph import Evaluation
+from mechplan.construct.graph import Evaluation
+
 from .config import Config
 from .model import Model
 

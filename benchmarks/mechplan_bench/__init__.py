@@ -1,6 +1,6 @@
 """Speed against error: every way of getting a mechanism's kinematics, timed and checked.
 
-``mechplan bench [--quick]`` times, in one process, the construction engine (float64 and float32),
+``python benchmarks/bench.py [--quick]`` times, in one process, the construction engine (float64 and float32),
 "ruler mode" (the construction with every placed point rounded to the drawing's precision, as a
 student carries measured segments on), velocities and accelerations by finite differences of
 positions, the engine λ-series (slider-crank), the hand-written numpy closed forms and the peer
@@ -18,7 +18,7 @@ Config), ``results`` (Result, Row), ``reference`` (the mpmath reference, relativ
 ``ruler`` (RulerEvaluation), ``model`` (the construction exact, in ruler mode, by finite
 differences), ``formulas`` (λ-series, closed form), ``peers`` (pylinkage, mechanism), ``timing``
 (best of k, allocator, profile), ``no_numba`` (pylinkage in a child process), ``measure`` (the
-run), ``report`` (table, goals, machine), ``cli`` (``mechplan bench``). ``measure`` and ``cli``
+run), ``report`` (table, goals, machine), ``cli`` (``python benchmarks/bench.py``). ``measure`` and ``cli``
 call ``steady_allocator`` / the entry points through this package, so substitutes set here hold.
 """
 

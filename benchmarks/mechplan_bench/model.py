@@ -9,10 +9,11 @@ from pathlib import Path
 
 import numpy as np
 
-from ..construct.graph import Construction, Evaluation
-from ..scene import load_scene
-from ..scene.spec import Scene
-from ..solve import KINEMATIC, build, choose_scales
+from mechplan.construct.graph import Construction, Evaluation
+from mechplan.scene import load_scene
+from mechplan.scene.spec import Scene
+from mechplan.solve import KINEMATIC, build, choose_scales
+
 from .config import FD_STEP_A, FD_STEP_V, PHI0, ROOT, TWO_PI, Case
 from .results import Result
 from .ruler import RulerEvaluation

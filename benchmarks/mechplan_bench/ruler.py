@@ -6,8 +6,8 @@ from typing import Any
 
 import numpy as np
 
-from ..construct.graph import Construction, Evaluation
-from ..construct.step import Kind, Op, Plan
+from mechplan.construct.graph import Construction, Evaluation
+from mechplan.construct.step import Kind, Op, Plan
 
 
 class RulerEvaluation(Evaluation):

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 #: the repository checkout (templates, ``tests/independent``, ``src``)
-ROOT = Path(__file__).resolve().parents[3]
+ROOT = Path(__file__).resolve().parents[2]
 KINDS = ("r", "v", "a", "omega", "epsilon")
 TWO_PI = 2.0 * math.pi
 #: φ of the first position (rad, scene convention); the others follow at 2π/N
@@ -63,7 +63,7 @@ class Config:
 
 
 def quick_config() -> Config:
-    """A reduced run for ``mechplan bench --quick`` (about ten seconds)."""
+    """A reduced run for ``python benchmarks/bench.py --quick`` (about ten seconds)."""
     return Config(ns=(1, 12, 10_000), max_compared=12, subsample=12, min_repeats=3,
                   min_seconds=0.05, max_repeats=50, fsolve_max_n=12,
                   methods=tuple(m for m in METHODS if m != "pylinkage (no numba)"))

@@ -1,4 +1,4 @@
-"""``mechplan bench``: the subcommand's parser and its entry point."""
+"""``python benchmarks/bench.py``: the subcommand's parser and its entry point."""
 
 from __future__ import annotations
 
@@ -8,13 +8,13 @@ import math
 import sys
 from typing import Any
 
-from mechplan import bench
+import mechplan_bench as bench
 
 from .config import CASES
 
 
 def add_parser(subparsers: Any) -> argparse.ArgumentParser:
-    """Register ``mechplan bench`` on the CLI's subparsers."""
+    """Register ``python benchmarks/bench.py`` on the CLI's subparsers."""
     b = subparsers.add_parser("bench", help="speed against error of every method, against a "
                               "40-digit reference")
     b.add_argument("--quick", action="store_true", help="N = 1, 12, 10 000; fewer repeats")
@@ -29,7 +29,7 @@ def run(args: argparse.Namespace) -> int:
     """Run the benchmark for the CLI; print the table (progress goes to stderr).
 
     The package's names are looked up at call time, so that substitutes set on
-    ``mechplan.bench`` (as the tests do) are the ones used.
+    ``mechplan_bench`` (as the tests do) are the ones used.
     """
     cfg = bench.quick_config() if args.quick else bench.Config()
     if getattr(args, "mechanism", None):

@@ -9,7 +9,8 @@ from types import ModuleType
 
 import numpy as np
 
-from ..errors import MechplanError
+from mechplan.errors import MechplanError
+
 from .config import KINDS, ROOT, Case
 from .results import Result
 
@@ -18,7 +19,7 @@ def independent(name: str) -> ModuleType:
     """Load ``tests/independent/<name>.py`` (mpref, closed_form) from the repository checkout."""
     path = ROOT / "tests" / "independent" / f"{name}.py"
     if not path.exists():
-        raise MechplanError(f"mechplan bench needs the independent reference {path} (got no such "
+        raise MechplanError(f"the benchmark needs the independent reference {path} (got no such "
                             "file); run it from a clone installed with pip install -e '.[bench]'")
     key = f"_mechplan_bench_{name}"
     if key in sys.modules:

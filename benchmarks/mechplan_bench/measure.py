@@ -8,9 +8,9 @@ from typing import Any
 
 import numpy as np
 
-from mechplan import bench
+import mechplan_bench as bench
+from mechplan.construct.graph import Evaluation
 
-from ..construct.graph import Evaluation
 from .config import CASES, FD_STEP_A, FD_STEP_V, SCALE_POSITIONS, Config
 from .formulas import closed_form, lambda_series
 from .model import Model

@@ -1,14 +1,14 @@
-"""Smoke test of the speed-against-error benchmark (``mechplan bench``) on a tiny configuration."""
+"""Smoke test of the speed-against-error benchmark (``python benchmarks/bench.py``) on a tiny configuration."""
 
 from __future__ import annotations
 
 import argparse
 import math
 
+import mechplan_bench as bench
 import numpy as np
 import pytest
 
-from mechplan import bench
 from mechplan.construct.step import Kind, Op
 
 METHODS = ("exact float64", "exact float32", "ruler 0.5 mm", "finite differences", "λ-series",

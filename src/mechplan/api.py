@@ -1,0 +1,494 @@
+"""The public Python API: load a scene, solve it at crank angles, draw it, check a submission.
+
+Examples
+--------
+>>> import mechplan
+>>> m = mechplan.load("templates/slider_crank.toml")
+>>> sol = m.solve(phi_deg=[0, 30, 60])
+>>> sol.r["B"].shape, sol.omega["2"].shape
+((3, 2), (3,))
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import math
+import os
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, TypeVar
+
+import numpy as np
+
+from .errors import MechplanError, SceneError
+
+if TYPE_CHECKING:
+    from .check import CheckReport
+    from .construct.graph import Construction, Evaluation
+    from .model.structure import Structure
+    from .scene.spec import Scene
+    from .solve import Solution as _Solved
+    from .studies import Study
+
+SceneSource = str | os.PathLike[str] | Mapping[str, Any]
+
+
+def _frozen(a: Any) -> np.ndarray:
+    out = np.array(a, dtype=float, copy=True)
+    out.flags.writeable = False
+    return out
+
+
+V = TypeVar("V")
+
+
+class ByName(Mapping[str, V]):
+    """A read-only mapping from a point or link name to its values over the positions."""
+
+    def __init__(self, values: dict[str, V], what: str) -> None:
+        self._values = values
+        self._what = what
+
+    def __getitem__(self, name: object) -> V:
+        key = str(name)
+        if key not in self._values:
+            known = ", ".join(self._values) or "none"
+            raise KeyError(f"no {self._what} of {key!r}; known: {known}")
+        return self._values[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._values)
+
+    def __len__(self) -> int:
+        return len(self._values)
+
+    def __repr__(self) -> str:
+        return f"<{self._what} of {', '.join(self._values)}>"
+
+
+@dataclass(frozen=True, slots=True)
+class InertiaLoad:
+    """Inertia of a link over the positions: force ``Q`` (N, 2) in N, moment ``M_q`` (N,) in N·m."""
+
+    link: str
+    Q: np.ndarray
+    M_q: np.ndarray
+
+
+@dataclass(frozen=True, slots=True)
+class PairReaction:
+    """Reaction ``R_ij`` (N, 2), in N: the force of link ``i`` on link ``j`` at their pair.
+
+    For a prismatic pair ``guide`` names the guide and ``offset`` (N,), in m, is where the line of
+    action crosses the guide, measured from ``point`` (NaN where the reaction is a pure couple).
+    """
+
+    key: str
+    i: str
+    j: str
+    point: str
+    R: np.ndarray
+    guide: str | None = None
+    offset: np.ndarray | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Forces:
+    """Kinetostatics over the positions (SI units, moments counter-clockwise positive).
+
+    Attributes
+    ----------
+    inertia : Mapping[str, InertiaLoad]
+        Inertia force and moment of each link with mass data.
+    reactions : Mapping[str, PairReaction]
+        Reactions of revolute pairs, keyed ``"ij"`` (``"01"``, ``"12"`` …).
+    guide_reactions : Mapping[str, PairReaction]
+        Reactions of prismatic pairs.
+    M_b, M_b_zhukovsky : np.ndarray
+        Balancing moment on the crank (N,) from the force polygons and from Zhukovsky's lever.
+    M_red, J_red : np.ndarray
+        Reduced moment (N·m) and reduced moment of inertia (kg·m²), shape (N,).
+    """
+
+    inertia: Mapping[str, InertiaLoad]
+    reactions: Mapping[str, PairReaction]
+    guide_reactions: Mapping[str, PairReaction]
+    M_b: np.ndarray
+    M_b_zhukovsky: np.ndarray
+    M_red: np.ndarray
+    J_red: np.ndarray
+
+
+@dataclass(frozen=True, slots=True)
+class Solution:
+    """A mechanism solved at N crank positions; every array is read-only, SI units.
+
+    Attributes
+    ----------
+    phi_deg : np.ndarray
+        Crank angles φ (N,) in degrees, in the scene's convention (from ``drive.from``, in the
+        sense of rotation).
+    r, v, a : Mapping[str, np.ndarray]
+        Position (m), velocity (m/s) and acceleration (m/s²) of each point, shape (N, 2).
+    angle, omega, epsilon : Mapping[str, np.ndarray]
+        Angle (rad), angular velocity (rad/s) and acceleration (rad/s²) of each moving link
+        (keys ``"1"``, ``"2"`` …), shape (N,), counter-clockwise positive.
+    forces : Forces or None
+        Kinetostatics when the force plan was asked for (a scene with masses or loads).
+    """
+
+    phi_deg: np.ndarray
+    r: Mapping[str, np.ndarray]
+    v: Mapping[str, np.ndarray]
+    a: Mapping[str, np.ndarray]
+    angle: Mapping[str, np.ndarray]
+    omega: Mapping[str, np.ndarray]
+    epsilon: Mapping[str, np.ndarray]
+    forces: Forces | None
+
+    @property
+    def positions(self) -> int:
+        """Number of positions N."""
+        return int(self.phi_deg.shape[0])
+
+
+_KINEMATIC = ("position", "velocity", "acceleration")
+
+
+class Mechanism:
+    """A linkage read from a scene; solve it at any crank angles.
+
+    The construction (the graph of steps) is built once per set of plans and reused by every
+    :meth:`solve` call. Create it with :func:`load` or :func:`loads`.
+    """
+
+    def __init__(self, scene: Scene) -> None:
+        self.scene = scene
+        self._built: dict[tuple[str, ...], tuple[Structure, Construction]] = {}
+
+    def __repr__(self) -> str:
+        return f"<mechplan.Mechanism {self.scene.title!r} from {self.scene.path}>"
+
+    @property
+    def title(self) -> str:
+        """The scene's title."""
+        return self.scene.title
+
+    @property
+    def points(self) -> tuple[str, ...]:
+        """Names of the points of the moving links."""
+        from .model.mechanism import GROUND
+
+        return tuple(dict.fromkeys(p for lk in self.scene.mechanism.links.values()
+                                   if lk.id != GROUND for p in lk.points))
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        """Ids of the moving links."""
+        return tuple(self.scene.mechanism.moving)
+
+    def construction(self, plans: Sequence[str] | None = None) -> Construction:
+        """Return the construction of ``plans`` (built on first use, then reused)."""
+        return self._build(self._plans(plans))[1]
+
+    def _plans(self, plans: Sequence[str] | None) -> tuple[str, ...]:
+        from .scene.spec import PLANS
+
+        chosen = tuple(plans) if plans is not None else self.scene.plans
+        unknown = [p for p in chosen if p not in PLANS]
+        if unknown or not chosen:
+            raise SceneError(f"plans must be among {', '.join(PLANS)} (got {list(chosen)!r})",
+                             file=self.scene.path)
+        return tuple(p for p in (*_KINEMATIC, "force") if p in chosen or p == "position")
+
+    def _build(self, plans: tuple[str, ...]) -> tuple[Structure, Construction]:
+        if plans not in self._built:
+            from .solve import build
+
+            self._built[plans] = build(self.scene, plans)
+        return self._built[plans]
+
+    def solve(self, phi_deg: float | Sequence[float] | np.ndarray | None = None, *,
+              positions: int | None = None, plans: Sequence[str] | None = None) -> Solution:
+        """Solve the mechanism at crank angles.
+
+        Parameters
+        ----------
+        phi_deg : float or array_like, optional
+            Crank angles φ in degrees (scene convention). Default: the scene's ``[positions]``.
+        positions : int, optional
+            Instead of ``phi_deg``: N equal steps from the scene's start position.
+        plans : sequence of str, optional
+            Any of ``"position"``, ``"velocity"``, ``"acceleration"``, ``"force"`` (default:
+            the scene's ``[analysis] plans``, with ``"force"`` when it has masses or loads).
+
+        Returns
+        -------
+        Solution
+            Read-only arrays over the N positions.
+
+        Raises
+        ------
+        MechplanError
+            Bad arguments, positions where the mechanism cannot be assembled or is singular, or
+            a position count over the memory budget.
+        """
+        from .solve import solve
+
+        if phi_deg is not None and positions is not None:
+            raise MechplanError("give either phi_deg or positions, not both")
+        if positions is not None and (isinstance(positions, bool)
+                                      or not isinstance(positions, (int, np.integer))
+                                      or positions < 1):
+            raise MechplanError(f"positions must be a whole number ≥ 1 (got {positions!r})")
+        at: list[float] | None = None
+        if phi_deg is not None:
+            arr = np.atleast_1d(np.asarray(phi_deg, dtype=float))
+            if arr.ndim != 1 or arr.size == 0 or not np.all(np.isfinite(arr)):
+                raise MechplanError(f"phi_deg must be finite crank angles in degrees "
+                                    f"(got {phi_deg!r})")
+            at = [float(x) for x in arr]
+        chosen = self._plans(plans)
+        scene = dataclasses.replace(self.scene, points_of_interest=())
+        solved = solve(scene, at_deg=at, count=int(positions) if positions else None,
+                       plans=chosen, built=self._build(chosen), scales=False)
+        return _solution(solved)
+
+
+def _solution(s: _Solved) -> Solution:
+    c, ev = s.construction, s.ev
+    r: dict[str, np.ndarray] = {}
+    v: dict[str, np.ndarray] = {}
+    a: dict[str, np.ndarray] = {}
+    from .model.mechanism import GROUND
+
+    points = dict.fromkeys(p for lk in s.scene.mechanism.links.values() if lk.id != GROUND
+                           for p in lk.points)
+    for p in points:
+        _take(r, p, ev, c.position)
+        if "velocity" in s.plans and c.has_result("v", p):
+            _take(v, p, ev, c.velocity_image)
+        if "acceleration" in s.plans and c.has_result("a", p):
+            _take(a, p, ev, c.acceleration_image)
+    angle: dict[str, np.ndarray] = {}
+    omega: dict[str, np.ndarray] = {}
+    epsilon: dict[str, np.ndarray] = {}
+    for link in s.scene.mechanism.moving:
+        for quantity, out, plan, accessor in (("angle", angle, "position", c.link_angle),
+                                              ("omega", omega, "velocity", c.omega),
+                                              ("epsilon", epsilon, "acceleration", c.epsilon)):
+            if plan in s.plans and c.has_result(quantity, link):
+                out[link] = _frozen(ev.get(accessor(link)))
+    forces = _forces(s.extras["forces"]) if "forces" in s.extras else None
+    return Solution(_frozen(np.degrees(s.phi)), ByName(r, "position"), ByName(v, "velocity"),
+                    ByName(a, "acceleration"), ByName(angle, "angle"), ByName(omega, "omega"),
+                    ByName(epsilon, "epsilon"), forces)
+
+
+def _take(out: dict[str, np.ndarray], point: str, ev: Evaluation, accessor: Any) -> None:
+    try:
+        sid = accessor(point)
+    except KeyError:        # a point with no step on this plan (e.g. a frame point of a guide)
+        return
+    out[point] = _frozen(ev.get(sid))
+
+
+def _forces(fa: Any) -> Forces:
+    def reaction(rx: Any) -> PairReaction:
+        return PairReaction(rx.key, rx.i, rx.j, rx.point, _frozen(rx.force), rx.guide,
+                            None if rx.offset is None else _frozen(rx.offset))
+
+    inertia = {k: InertiaLoad(k, _frozen(q), _frozen(m)) for k, (q, m) in fa.inertia.items()}
+    return Forces(
+        inertia=ByName(inertia, "inertia"),
+        reactions=ByName({k: reaction(x) for k, x in fa.reactions.items()}, "reaction"),
+        guide_reactions=ByName({k: reaction(x) for k, x in fa.guide_reactions.items()},
+                              "guide reaction"),
+        M_b=_frozen(fa.balancing_moment), M_b_zhukovsky=_frozen(fa.zhukovsky_moment),
+        M_red=_frozen(fa.reduced_moment), J_red=_frozen(fa.reduced_inertia))
+
+
+# -- reading scenes ---------------------------------------------------------------------------
+
+def _toml_value(value: Any, key: str) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        x = float(value)
+        if math.isnan(x):
+            return "nan"
+        if math.isinf(x):
+            return "inf" if x > 0 else "-inf"
+        return repr(x)
+    if isinstance(value, str):
+        return json.dumps(value, ensure_ascii=False)
+    if isinstance(value, os.PathLike):
+        return json.dumps(os.fspath(value), ensure_ascii=False)
+    if isinstance(value, Mapping):
+        items = ", ".join(f"{json.dumps(str(k), ensure_ascii=False)} = "
+                          f"{_toml_value(v, f'{key}.{k}')}" for k, v in value.items())
+        return "{" + items + "}"
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_toml_value(v, f"{key}[{i}]") for i, v in enumerate(value)) + "]"
+    raise SceneError(f"must be text, a number, a list or a table (got {type(value).__name__})",
+                     file="<dict>", key=key)
+
+
+def to_toml(data: Mapping[str, Any]) -> str:
+    """Return TOML text for a scene given as a dict (inline tables, read back unchanged)."""
+    if not isinstance(data, Mapping):
+        raise SceneError(f"a scene must be a table (got {type(data).__name__})", file="<dict>")
+    return "".join(f"{json.dumps(str(k), ensure_ascii=False)} = {_toml_value(v, str(k))}\n"
+                   for k, v in data.items())
+
+
+def loads(text: str | Mapping[str, Any], name: str = "<scene>") -> Mechanism | Study:
+    """Read a scene from TOML text or a dict.
+
+    Parameters
+    ----------
+    text : str or Mapping
+        The scene as TOML text, or as the dict a TOML reader returns for it.
+    name : str
+        The name errors give for the scene (default ``"<scene>"``, ``"<dict>"`` for a dict).
+
+    Returns
+    -------
+    Mechanism or Study
+        A :class:`Mechanism` for a linkage (``kind = "mechanism"``, the default); for the other
+        kinds (``"cam"``, ``"gears"``, ``"engine"``) the solved study, with ``report(language)``,
+        ``to_json()`` and ``sheets(...)``.
+    """
+    if isinstance(text, Mapping):
+        if name == "<scene>":
+            name = "<dict>"
+        text = to_toml(text)
+    elif not isinstance(text, str):
+        raise SceneError(f"a scene must be TOML text or a dict (got {type(text).__name__})",
+                         file=name)
+    from .scene.document import parse_toml, scene_kind
+
+    if scene_kind(parse_toml(text, name), name) == "mechanism":
+        from .scene import parse_scene
+
+        return Mechanism(parse_scene(text, name))
+    from .studies import solve_text
+
+    return solve_text(text, name)
+
+
+def load(source: SceneSource) -> Mechanism | Study:
+    """Read a scene file (or a dict) and return a :class:`Mechanism` or, for other kinds, a Study.
+
+    Parameters
+    ----------
+    source : str, os.PathLike or Mapping
+        Path of a ``.toml`` scene file, or the scene as a dict.
+
+    Returns
+    -------
+    Mechanism or Study
+        See :func:`loads`.
+
+    Raises
+    ------
+    SceneError
+        The file cannot be read, or the scene is malformed (the message names file and key).
+    """
+    if isinstance(source, Mapping):
+        return loads(source)
+    from .scene.document import read_text
+
+    return loads(read_text(os.fspath(source)), str(source))
+
+
+def _study(scene: SceneSource | Mechanism | Study) -> tuple[Study, str]:
+    from .studies.mechanism import MechanismStudy
+
+    if isinstance(scene, Mechanism):
+        from .solve import solve
+
+        return MechanismStudy(solve(scene.scene)), Path(scene.scene.path).stem or "scene"
+    if isinstance(scene, Mapping):
+        loaded = loads(scene)
+        return _study(loaded)[0] if isinstance(loaded, Mechanism) else loaded, "scene"
+    if isinstance(scene, (str, os.PathLike)):
+        from .studies import solve_file
+
+        return solve_file(os.fspath(scene)), Path(scene).stem
+    return scene, "scene"
+
+
+def draw(scene: SceneSource | Mechanism | Study, out_dir: str | os.PathLike[str] = ".", *,
+         formats: Sequence[str] = ("dxf", "svg", "pdf"), sheet: str | None = None,
+         standard: str | None = None, language: str | None = None,
+         name: str | None = None) -> list[Path]:
+    """Draw the sheets of a scene and return the files written.
+
+    Parameters
+    ----------
+    scene : path, dict, Mechanism or Study
+        What to draw; a path or dict is solved at the scene's own positions.
+    out_dir : path
+        Output folder, created if missing.
+    formats : sequence of str
+        Any of ``"dxf"``, ``"svg"``, ``"pdf"``, ``"png"``.
+    sheet, standard, language : str, optional
+        ``"A0"`` … ``"A4"``; ``"iso"``, ``"gost"``, ``"tcvn"``; ``"en"``, ``"ru"``, ``"vi"``,
+        ``"zh"`` (default: the scene's ``[drawing]`` and ``language``).
+    name : str, optional
+        Base name of the files (default: the scene file's stem).
+
+    Raises
+    ------
+    MechplanError
+        A bad scene, or an output folder that cannot be written (the message names it).
+    """
+    from .outputs import prepare_dir
+    from .render import write
+
+    study, stem = _study(scene)
+    out = prepare_dir(out_dir)
+    written: list[Path] = []
+    for s in study.sheets(sheet, standard, language, name or stem):
+        written += write(s, out, list(formats))
+    return written
+
+
+def check(scene: SceneSource | Mechanism, submission: str | os.PathLike[str], *,
+          at_deg: float | None = None) -> CheckReport:
+    """Check a submission (a hand-drawn DXF, or a TOML/CSV table of values) against the scene.
+
+    Parameters
+    ----------
+    scene : path, dict or Mechanism
+        The scene the submission solves.
+    submission : path
+        A ``.dxf`` drawing, or a ``.toml`` / ``.csv`` table of measured values.
+    at_deg : float, optional
+        Crank angle φ of the submission (default: written on it, or the best fit).
+
+    Returns
+    -------
+    mechplan.check.CheckReport
+        ``passed``, ``text(language)``, ``to_json(language)`` and the rows per segment.
+    """
+    from .check import Options
+    from .check import check as run_check
+
+    if isinstance(scene, Mechanism):
+        spec = scene.scene
+    else:
+        loaded = load(scene)
+        if not isinstance(loaded, Mechanism):
+            raise SceneError("only mechanism scenes can be checked", key="kind")
+        spec = loaded.scene
+    return run_check(spec, str(submission), Options(at_deg=at_deg))
+
+
+__all__ = ["ByName", "Forces", "InertiaLoad", "Mechanism", "PairReaction", "Solution", "check",
+           "draw", "load", "loads", "to_toml"]

@@ -1,0 +1,55 @@
+"""Resource limits: refuse work whose memory would exceed a budget, before doing it.
+
+The budget is ``MECHPLAN_MEMORY_BUDGET`` (e.g. ``"4 GB"``, ``"512 MB"``, or bytes), default 2 GB.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+
+from .errors import MechplanError
+
+DEFAULT_BUDGET = 2 * 1024**3
+#: bytes per step and position: a (N, 2) float64 value, its gap or sine, and evaluation temporaries
+BYTES_PER_STEP = 48
+_UNITS = {"": 1, "b": 1, "kb": 1024, "k": 1024, "mb": 1024**2, "m": 1024**2, "gb": 1024**3,
+          "g": 1024**3, "tb": 1024**4, "t": 1024**4}
+
+
+class LimitError(MechplanError):
+    """The work asked for would exceed a resource limit."""
+
+
+def memory_budget() -> int:
+    """Return the memory budget in bytes (``MECHPLAN_MEMORY_BUDGET`` or 2 GB)."""
+    text = os.environ.get("MECHPLAN_MEMORY_BUDGET", "").strip()
+    if not text:
+        return DEFAULT_BUDGET
+    m = re.fullmatch(r"(\d+(?:\.\d+)?)\s*([kKmMgGtT]?[bB]?)", text)
+    if not m:
+        raise LimitError(f"MECHPLAN_MEMORY_BUDGET must be a size such as '4 GB' (got {text!r})")
+    return int(float(m.group(1)) * _UNITS[m.group(2).lower()])
+
+
+def _size(n: float) -> str:
+    for unit, factor in (("GB", 1024**3), ("MB", 1024**2), ("kB", 1024)):
+        if n >= factor:
+            return f"{n / factor:.1f} {unit}"
+    return f"{n:.0f} B"
+
+
+def ensure_within_budget(positions: int, steps: int, *, file: str | None = None,
+                         key: str | None = None) -> int:
+    """Return the estimated bytes of evaluating ``steps`` steps at ``positions`` positions.
+
+    Raise :class:`LimitError` with the estimate when it exceeds :func:`memory_budget`.
+    """
+    estimate = positions * steps * BYTES_PER_STEP
+    budget = memory_budget()
+    if estimate > budget:
+        raise LimitError(
+            f"{positions} positions × {steps} construction steps need about {_size(estimate)} "
+            f"of memory, more than the budget of {_size(budget)}; ask for fewer positions "
+            "(e.g. count = 3600) or raise MECHPLAN_MEMORY_BUDGET", file=file, key=key)
+    return estimate

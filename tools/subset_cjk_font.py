@@ -1,0 +1,79 @@
+#!/usr/bin/env python
+"""Make the bundled CJK font: Noto Sans CJK SC cut to the characters mechplan's sheets need.
+
+The glyphs kept: ASCII and Latin-1, Greek, Cyrillic, general punctuation, arrows, mathematical
+operators, CJK symbols and punctuation, full-width forms, every Chinese character of GB 2312
+(levels 1 and 2: 6,763 characters, the common simplified set), and every character of the
+catalogues and sources under ``src/mechplan``. Run after the Chinese catalogue gains characters::
+
+    python tools/subset_cjk_font.py [/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc]
+
+Writes ``src/mechplan/fonts/NotoSansCJKsc-Regular.otf`` (SIL Open Font License 1.1, see
+``src/mechplan/fonts/OFL-NotoSansCJK.txt``).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+from fontTools import subset
+from fontTools.ttLib import TTFont
+
+ROOT = Path(__file__).resolve().parents[1]
+PACKAGE = ROOT / "src" / "mechplan"
+OUT = PACKAGE / "fonts" / "NotoSansCJKsc-Regular.otf"
+SOURCE = Path("/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc")
+SC_INDEX = 2          # "Noto Sans CJK SC" in the Debian collection
+RANGES = [(0x20, 0x7E), (0xA0, 0xFF), (0x370, 0x3FF), (0x400, 0x4FF), (0x2000, 0x206F),
+          (0x2070, 0x209F), (0x2100, 0x214F), (0x2190, 0x21FF), (0x2200, 0x22FF),
+          (0x2460, 0x24FF), (0x25A0, 0x25FF), (0x3000, 0x303F), (0xFF00, 0xFFEF)]
+
+
+def gb2312() -> set[int]:
+    """Code points of the GB 2312 Chinese characters (rows 16–87)."""
+    out = set()
+    for hi in range(0xB0, 0xF8):
+        for lo in range(0xA1, 0xFF):
+            try:
+                out.add(ord(bytes([hi, lo]).decode("gb2312")))
+            except UnicodeDecodeError:
+                pass
+    return out
+
+
+def project_characters() -> set[int]:
+    """Every character of the catalogues and sources."""
+    chars: set[int] = set()
+    for pattern in ("locale/*/*.po", "**/*.py", "templates/*.toml"):
+        for path in PACKAGE.glob(pattern):
+            chars.update(ord(c) for c in path.read_text(encoding="utf-8"))
+    return chars
+
+
+def main() -> int:
+    source = Path(sys.argv[1]) if len(sys.argv) > 1 else SOURCE
+    font = TTFont(source, fontNumber=SC_INDEX)
+    cmap = font.getBestCmap()
+    wanted = gb2312() | project_characters()
+    for a, b in RANGES:
+        wanted.update(range(a, b + 1))
+    unicodes = sorted(cp for cp in wanted if cp in cmap)
+    options = subset.Options()
+    options.layout_features = ["*"]
+    options.name_IDs = ["*"]
+    options.name_languages = ["*"]
+    options.notdef_outline = True
+    options.hinting = False
+    options.desubroutinize = False
+    sub = subset.Subsetter(options)
+    sub.populate(unicodes=unicodes)
+    sub.subset(font)
+    OUT.parent.mkdir(parents=True, exist_ok=True)
+    font.save(OUT)
+    print(f"{OUT}: {len(unicodes)} characters, {OUT.stat().st_size / 1e6:.2f} MB")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
