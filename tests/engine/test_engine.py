@@ -113,7 +113,7 @@ def test_four_cylinder_inline_phases_and_identity():
     assert math.isclose(st.checks.work_torque, 4 * st.checks.work_diagram, rel_tol=1e-9)
     # ΣM is the sum of cylinder 1's curve shifted by the phases (independent shift by index)
     one = solve_text(moto(engine_extra="grid = 720"), "m.toml").dense.M_total[:-1]
-    total = sum(np.roll(one, int(round(math.degrees(st.model.phases[i])))) for i in (1, 2, 3, 4))
+    total = sum(np.roll(one, round(math.degrees(st.model.phases[i]))) for i in (1, 2, 3, 4))
     assert np.allclose(st.dense.M_total[:-1], total, rtol=1e-9, atol=1e-9)
     # the inertia torques of the first order cancel: the mean is the gas torque's
     assert abs(st.dense.M_inertia.mean()) < 1e-6 * np.abs(st.dense.M_inertia).max()

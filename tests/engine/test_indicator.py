@@ -83,8 +83,10 @@ def test_angle_table_work_by_quadrature():
 
     total = 0.0
     for a, b, pa, pb in zip(phi_n, phi_n[1:], p_n, p_n[1:]):
-        total += quad(lambda f: (pa + (pb - pa) * (f - a) / (b - a)) * dV(f), a, b,
-                      epsabs=0, epsrel=1e-13)[0]
+        def integrand(f, a=a, b=b, pa=pa, pb=pb):
+            return (pa + (pb - pa) * (f - a) / (b - a)) * dV(f)
+
+        total += quad(integrand, a, b, epsabs=0, epsrel=1e-13)[0]
     assert math.isclose(dia.work(), total, rel_tol=1e-9)
 
 

@@ -37,7 +37,7 @@ def test_series_differs_from_exact_by_046_percent_of_a_max():
     """Worked example §3: max |a − a_series| ≈ 0.46 % of a_max (references from mpmath)."""
     mpmath.mp.dps = 20
     lam = R / L
-    phis = [mpmath.radians(d / 2) for d in range(0, 721)]
+    phis = [mpmath.radians(d / 2) for d in range(721)]
     a_exact = [float(mpmath.diff(_x_mp, p, 2)) * OMEGA ** 2 for p in phis]
     a_ser = [R * OMEGA ** 2 * (math.cos(float(p)) + lam * math.cos(2 * float(p))) for p in phis]
     ratio = max(abs(x - y) for x, y in zip(a_exact, a_ser)) / max(abs(x) for x in a_exact)

@@ -13,8 +13,17 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import SceneError
-from ..model.engine import (ArticulatedSpec, CylinderSpec, EngineSpec, IndicatorKind, IndicatorSpec,
-                            Layout, MassSpec, RodMasses, ThermalSpec)
+from ..model.engine import (
+    ArticulatedSpec,
+    CylinderSpec,
+    EngineSpec,
+    IndicatorKind,
+    IndicatorSpec,
+    Layout,
+    MassSpec,
+    RodMasses,
+    ThermalSpec,
+)
 from ..units import registry
 from .document import parse_toml
 from .reader import Table
@@ -36,7 +45,7 @@ class EngineScene:
 
 def parse_engine_scene(text: str, file: str = "<scene>") -> EngineScene:
     """Parse the text of an engine scene."""
-    from .loader import _drawing  # noqa: PLC0415 - the mechanism loader's [drawing] reader
+    from .loader import _drawing
 
     top = Table(parse_toml(text, file), "", file)
     top.check_keys(TOP_KEYS)
@@ -207,7 +216,7 @@ def _firing_order(e: Table, n: int) -> tuple[int, ...]:
 
 def _check_firing(e: Table, cylinders: tuple[CylinderSpec, ...], order: tuple[int, ...],
                   strokes: int) -> None:
-    from ..model.engine import firing_phases  # noqa: PLC0415
+    from ..model.engine import firing_phases
 
     try:
         firing_phases(cylinders, order, strokes)
@@ -343,7 +352,7 @@ def articulated_linkage(spec: EngineSpec, file: str) -> Scene:
     Cylinder 1 (master) lies along +x, cylinder 2 at the bank angle counter-clockwise; φ is
     measured from the master cylinder's axis, so the scene's crank angle is the engine's.
     """
-    from .loader import parse_scene  # noqa: PLC0415
+    from .loader import parse_scene
 
     art = spec.articulated
     assert art is not None

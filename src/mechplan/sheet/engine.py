@@ -4,24 +4,68 @@ diagrams of the crank pin, the per-angle table — every diagram with its scale 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 import numpy as np
 
-from ..i18n import message
-from .diagram import Axis, Curve, Diagram, Marker, TEXT_H, diagram_panel, mu_text
+from ..dynamics.engine.analysis import Checks, EngineResult
+from ..dynamics.engine.model import EngineModel
+from ..i18n import message, number
+from ..scene.engine import EngineScene
+from .diagram import TEXT_H, Axis, Curve, Diagram, Marker, diagram_panel, mu_text
 from .layout import framed_sheets
 from .panels import Panel
 from .primitives import Arc, Circle, HAlign, Line, Polyline, Role, Sheet, Table, Text, VAlign
 
-if TYPE_CHECKING:
-    from ..studies.engine import EngineStudy
+
+class EngineData(Protocol):
+    """What the sheets need of a solved engine (``mechplan.studies.engine.EngineStudy``)."""
+
+    scene: EngineScene
+    model: EngineModel
+
+    @property
+    def dense(self) -> EngineResult: ...
+
+    @property
+    def table(self) -> EngineResult: ...
+
+    @property
+    def checks(self) -> Checks: ...
+
+    @property
+    def wear(self) -> tuple[np.ndarray, np.ndarray]: ...
+
+
+#: per-cylinder columns of the table: (attribute, CSV name, scale to the printed unit)
+COLUMNS = (("p", "p_MPa", 1e-6), ("Pk", "Pk_kN", 1e-3), ("Pj", "Pj_kN", 1e-3), ("P", "P_kN", 1e-3),
+           ("beta", "beta_deg", 180.0 / math.pi), ("N", "N_kN", 1e-3), ("S", "S_kN", 1e-3),
+           ("T", "T_kN", 1e-3), ("Z", "Z_kN", 1e-3), ("M", "M_Nm", 1.0))
+
+
+def table_cells(t: EngineResult, language: str, number_of: int = 1) -> list[list[str]]:
+    """Heading and rows of the per-angle table of one cylinder (with ΣM and |Q| of pin 1)."""
+    f = t.cylinders[number_of]
+    head = [message("engine.col.phi", language)] + [
+        message(f"engine.col.{a}", language) for a, _, _ in COLUMNS] + [
+        message("engine.col.M_total", language), message("engine.col.Q", language)]
+    digits = {"p": 3, "beta": 2, "M": 2}
+    rows = [head]
+    Q = t.pins[1].Q
+    for k, phi in enumerate(t.phi):
+        row = [number(math.degrees(phi), 0, language)]
+        for a, _, scale in COLUMNS:
+            v = float(getattr(f, a)[k]) * scale
+            row.append("—" if not math.isfinite(v) else number(v, digits.get(a, 3), language))
+        row += [number(float(t.M_total[k]), 2, language), number(float(Q[k]) * 1e-3, 3, language)]
+        rows.append(row)
+    return rows
 
 W = 150.0        # mm, diagram width
 H = 80.0         # mm, diagram height
 
 
-def engine_sheets(study: EngineStudy, size: str, standard: str, language: str,
+def engine_sheets(study: EngineData, size: str, standard: str, language: str,
                   name: str) -> list[Sheet]:
     """All panels of an engine study laid out on framed sheets."""
     lang = language
@@ -39,12 +83,12 @@ def _deg(phi: np.ndarray) -> np.ndarray:
     return np.degrees(phi)
 
 
-def _phi_axis(study: EngineStudy) -> Axis:
+def _phi_axis(study: EngineData) -> Axis:
     cycle = math.degrees(study.scene.engine.cycle)
     return Axis("φ", "°", W, mu=cycle / 144.0, mu_symbol="μφ")
 
 
-def indicator_panel(study: EngineStudy, lang: str) -> Panel:
+def indicator_panel(study: EngineData, lang: str) -> Panel:
     """p–V diagram with Brix's semicircle (pole O′ shifted by Rλ/2 towards BDC) under it."""
     m, spec = study.model, study.scene.engine
     V, p = m.diagram.loop()
@@ -80,11 +124,10 @@ def indicator_panel(study: EngineStudy, lang: str) -> Panel:
 
 
 def _num(x: float, lang: str, k: int = 2) -> str:
-    from ..i18n import number
     return number(x, k, lang)
 
 
-def forces_panel(study: EngineStudy, lang: str) -> Panel:
+def forces_panel(study: EngineData, lang: str) -> Panel:
     """Pk, Pj and P of cylinder 1 against φ."""
     d = study.dense
     f = d.cylinders[1]
@@ -95,7 +138,7 @@ def forces_panel(study: EngineStudy, lang: str) -> Panel:
                          _phi_axis(study), Axis("P", "kN", H), lang).panel
 
 
-def tz_panel(study: EngineStudy, lang: str) -> Panel:
+def tz_panel(study: EngineData, lang: str) -> Panel:
     """T and Z of cylinder 1 (for the articulated pair: T and Z on the shared pin)."""
     d = study.dense
     q = d.pins[1]
@@ -105,7 +148,7 @@ def tz_panel(study: EngineStudy, lang: str) -> Panel:
                          Axis("T, Z", "kN", H), lang).panel
 
 
-def torque_panel(study: EngineStudy, lang: str) -> Panel:
+def torque_panel(study: EngineData, lang: str) -> Panel:
     """ΣM of the engine (cylinders thin) with its mean."""
     d = study.dense
     x = _deg(d.phi)
@@ -119,7 +162,7 @@ def torque_panel(study: EngineStudy, lang: str) -> Panel:
                          hlines=[(mean, message("engine.label.mean", lang))]).panel
 
 
-def polar_panel(study: EngineStudy, lang: str) -> Panel:
+def polar_panel(study: EngineData, lang: str) -> Panel:
     """Polar diagram of the load on crank pin 1: ends of (T, Z); Q is drawn from the pole O_p."""
     d, t = study.dense, study.table
     q = d.pins[1]
@@ -151,7 +194,7 @@ def polar_panel(study: EngineStudy, lang: str) -> Panel:
     return dia.panel
 
 
-def developed_panel(study: EngineStudy, lang: str) -> Panel:
+def developed_panel(study: EngineData, lang: str) -> Panel:
     """|Q|(φ) of crank pin 1 with Q_mean."""
     d = study.dense
     Q = d.pins[1].Q * 1e-3
@@ -162,7 +205,7 @@ def developed_panel(study: EngineStudy, lang: str) -> Panel:
                          hlines=[(mean, message("engine.label.Q_mean", lang))]).panel
 
 
-def wear_panel(study: EngineStudy, lang: str) -> Panel:
+def wear_panel(study: EngineData, lang: str) -> Panel:
     """Wear diagram of crank pin 1: the circle, 24 rays, the summed loads drawn inwards."""
     rays, sums = study.wear
     radius = 40.0
@@ -190,11 +233,11 @@ def wear_panel(study: EngineStudy, lang: str) -> Panel:
     return Panel("wear", prims)
 
 
-def table_panels(study: EngineStudy, lang: str) -> list[Panel]:
+def table_panels(study: EngineData, lang: str) -> list[Panel]:
     """The per-angle table of every cylinder."""
     out = []
     for c in study.scene.engine.cylinders:
-        cells = study.table_cells(lang, c.number)
+        cells = table_cells(study.table, lang, c.number)
         widths = tuple(max(14.0, 2.0 + 1.6 * max(len(r[j]) for r in cells))
                        for j in range(len(cells[0])))
         title = message("engine.diagram.table", lang, number=c.number)

@@ -13,20 +13,21 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .. import __version__
-from ..dynamics.engine.analysis import (Checks, EngineResult, analyse, consistency_checks, grids,
-                                        wear)
+from ..dynamics.engine.analysis import (
+    Checks,
+    EngineResult,
+    analyse,
+    consistency_checks,
+    grids,
+    wear,
+)
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene, parse_engine_scene
+from ..sheet.engine import COLUMNS, table_cells
 
 if TYPE_CHECKING:
     from ..sheet.primitives import Sheet
-
-#: per-cylinder columns of the table: (attribute, CSV name, scale to the printed unit)
-COLUMNS = (("p", "p_MPa", 1e-6), ("Pk", "Pk_kN", 1e-3), ("Pj", "Pj_kN", 1e-3), ("P", "P_kN", 1e-3),
-           ("beta", "beta_deg", 180.0 / math.pi), ("N", "N_kN", 1e-3), ("S", "S_kN", 1e-3),
-           ("T", "T_kN", 1e-3), ("Z", "Z_kN", 1e-3), ("M", "M_Nm", 1.0))
-
 
 def solve_engine_text(text: str, file: str) -> EngineStudy:
     """Parse and solve an engine scene; write its CSV if the scene's [output] asks for one."""
@@ -137,31 +138,12 @@ class EngineStudy:
             lines.append(message("engine.check.pair", lang, error=f"{ch.pair_torque_error:.1e}"))
         return "\n".join(lines) + "\n"
 
-    def table_cells(self, language: str, number_of: int = 1) -> list[list[str]]:
-        """Heading and rows of the per-angle table of one cylinder (with ΣM and |Q| of pin 1)."""
-        t = self.table
-        f = t.cylinders[number_of]
-        head = [message("engine.col.phi", language)] + [
-            message(f"engine.col.{a}", language) for a, _, _ in COLUMNS] + [
-            message("engine.col.M_total", language), message("engine.col.Q", language)]
-        digits = {"p": 3, "beta": 2, "M": 2}
-        rows = [head]
-        Q = t.pins[1].Q
-        for k, phi in enumerate(t.phi):
-            row = [number(math.degrees(phi), 0, language)]
-            for a, _, scale in COLUMNS:
-                v = float(getattr(f, a)[k]) * scale
-                row.append("—" if not math.isfinite(v) else number(v, digits.get(a, 3), language))
-            row += [number(float(t.M_total[k]), 2, language), number(float(Q[k]) * 1e-3, 3, language)]
-            rows.append(row)
-        return rows
-
     def _table_text(self, lang: str) -> list[str]:
         out = []
         for c in self.scene.engine.cylinders:
             if len(self.scene.engine.cylinders) > 1:
                 out.append(message("engine.report.table_cylinder", lang, number=c.number))
-            rows = self.table_cells(lang, c.number)
+            rows = table_cells(self.table, lang, c.number)
             widths = [max(len(r[j]) for r in rows) for j in range(len(rows[0]))]
             out += ["  ".join(s.rjust(w) for s, w in zip(r, widths)) for r in rows]
         return out

@@ -134,7 +134,7 @@ def grids(model: EngineModel) -> tuple[Array, Array]:
     """The dense grid and the table's angles over one cycle (both with the end point)."""
     spec = model.spec
     dense = np.linspace(0.0, spec.cycle, spec.grid + 1)
-    n = int(round(spec.cycle / spec.table_step))
+    n = round(spec.cycle / spec.table_step)
     return dense, np.linspace(0.0, spec.cycle, n + 1)
 
 

@@ -7,6 +7,7 @@ compared with the exact kinematics; a rod whose J_S is given gets its two-mass e
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -58,14 +59,14 @@ def _pieces(model: EngineModel, number: int) -> list[tuple[float, float]]:
             for xi in dia.knots_xi(k)[1:-1]:
                 cuts.append(pair.phi_of_travel_E(float(xi) * pair.stroke_E, lo + d, hi + d) - d)
             c = sorted(cuts)
-            out += list(zip(c, c[1:]))
+            out += list(itertools.pairwise(c))
         return out
     for k in range(spec.strokes):
         lo, hi = k * math.pi, (k + 1) * math.pi
         xs = dia.knots_xi(k)[1:-1] * 2.0 * spec.R
         knots = model.kin.phi_of_x(xs, k % 2 == 1) + 2.0 * math.pi * (k // 2)
         c = sorted([lo, hi, *knots.tolist()])
-        out += list(zip(c, c[1:]))
+        out += list(itertools.pairwise(c))
     return out
 
 

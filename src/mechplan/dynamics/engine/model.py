@@ -9,8 +9,7 @@ import numpy as np
 
 from ...model.engine import EngineSpec, IndicatorKind, Layout, firing_phases
 from ...scene.spec import Scene
-from ..indicator import (IndicatorDiagram, angle_table_diagram, thermal_diagram,
-                         volume_table_diagram)
+from ..indicator import IndicatorDiagram, angle_table_diagram, thermal_diagram, volume_table_diagram
 from .articulated import ArticulatedPair
 from .cylinder import CylinderForces, slider_forces
 from .kinematics import SliderCrank
