@@ -103,3 +103,45 @@ def test_volume_table_not_closed_names_the_key():
 def test_pressure_below_vacuum_is_refused():
     with pytest.raises(SceneError, match=r"indicator\.p_a.*above vacuum"):
         solve_text(moto().replace('p_a = "85 kPa"', 'p_a = "-5 kPa"'), "n.toml")
+
+
+def _sampled(step_deg):
+    base = solve_text(moto(), "m.toml")
+    kin, dia = base.model.kin, base.model.diagram
+    phi = np.radians(np.arange(0, 720 + step_deg, step_deg))
+    V = dia.V_c + F_P * kin.x(phi)
+    p = dia.at_phi(phi, kin.x(phi) / (2 * R))
+    p[-1] = p[0]
+    return phi, V, p
+
+
+def test_volume_table_from_a_csv_file(tmp_path):
+    phi, V, p = _sampled(5.0)
+    (tmp_path / "pv.csv").write_text("V_cm3,p_MPa\n" + "\n".join(
+        f"{float(a) * 1e6!r},{float(b) * 1e-6!r}" for a, b in zip(V, p)), encoding="utf-8")
+    text = moto().split("[indicator]")[0] + (
+        '[indicator]\nsource = "volume"\nunits = ["cm^3", "MPa"]\nfile = "pv.csv"\n')
+    st = solve_text(text, str(tmp_path / "s.toml"))
+    shoelace = 0.5 * np.sum(V[:-1] * p[1:] - V[1:] * p[:-1])
+    assert math.isclose(st.checks.work_diagram, -shoelace, rel_tol=1e-9)
+    assert st.checks.work_error < 1e-9
+
+
+def test_angle_table_in_a_scene_closes_its_work():
+    phi, _, p = _sampled(10.0)
+    rows = ", ".join(f"[{math.degrees(float(f))!r}, {float(b) * 1e-6!r}]" for f, b in zip(phi, p))
+    text = moto().split("[indicator]")[0] + (
+        f'[indicator]\nsource = "crank_angle"\nepsilon = 9\ntable = [{rows}]\n')
+    st = solve_text(text, "a.toml")
+    assert st.checks.work_error < 1e-9
+    # at the table's nodes p(φ) is the table itself
+    f = st.model.cylinder(1, phi[:-1])
+    assert np.allclose(f.p, p[:-1], rtol=1e-7)   # the dead centres invert through a square root
+
+
+def test_negative_table_pressure_is_refused():
+    text = moto().split("[indicator]")[0] + (
+        '[indicator]\nsource = "crank_angle"\nepsilon = 9\n'
+        'table = [[0, 0.1], [180, 0.1], [360, -0.2], [540, 0.1], [720, 0.1]]\n')
+    with pytest.raises(SceneError, match=r"indicator\.table.*below vacuum"):
+        solve_text(text, "a.toml")

@@ -260,8 +260,9 @@ def thermal_diagram(spec: ThermalSpec, strokes: int, kin: SliderCrank, F_p: floa
     p_b = float(expa(np.asarray(V_a)))
     p_b2 = (p_b + spec.p_r) / 2.0
     if not spec.rounding:
-        comp_parts = [(V_c, V_a, comp)]
-        exp_parts = [(V_c, V_z, Constant(spec.p_z)), (V_z, V_a, expa)]
+        comp_parts: list[tuple[float, float, Piece]] = [(V_c, V_a, comp)]
+        exp_parts: list[tuple[float, float, Piece]] = [(V_c, V_z, Constant(spec.p_z)),
+                                                       (V_z, V_a, expa)]
         exh_parts: list[tuple[float, float, Piece]] = [(V_c, V_a, Constant(spec.p_r))]
     else:
         V_ign = V(spec.ignition_advance)
@@ -284,6 +285,7 @@ def thermal_diagram(spec: ThermalSpec, strokes: int, kin: SliderCrank, F_p: floa
         V_e = V(math.pi / 3.0)
         exh_parts = [(V_c, V_e, Constant(spec.p_r)),
                      (V_e, V_a, Hermite(V_e, spec.p_r, 0.0, V_a, p_b2, 0.0))]
+    branches: tuple[Branch, ...]
     if strokes == 4:
         branches = (_branch([(V_c, V_a, Constant(spec.p_a))], True),
                     _branch(comp_parts, False), _branch(exp_parts, True), _branch(exh_parts, False))

@@ -11,6 +11,7 @@ import csv
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 from ..errors import SceneError
 from ..model.engine import (
@@ -228,6 +229,7 @@ def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str], file: str) ->
     ureg = registry()
 
     def conv(value: object, unit: str, target: str, where: str) -> float:
+        q: Any
         try:
             if isinstance(value, str):
                 q = ureg.Quantity(value.replace(",", "."))

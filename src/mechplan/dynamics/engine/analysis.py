@@ -76,8 +76,8 @@ def pin_loads(model: EngineModel, phi: Array, cyl: dict[int, CylinderForces]) ->
         if spec.layout is Layout.ARTICULATED:
             T, Z = model.pair_pin_force(phi, cyl[1].P, cyl[2].P)
         else:
-            T = sum(cyl[c].T for c in members)
-            Z = sum(cyl[c].Z for c in members)
+            T = np.sum([cyl[c].T for c in members], axis=0)
+            Z = np.sum([cyl[c].Z for c in members], axis=0)
         out[pin] = PinLoad(np.asarray(T), np.asarray(Z), K_r)
     return out
 

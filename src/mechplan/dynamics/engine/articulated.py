@@ -48,8 +48,8 @@ class ArticulatedPair:
         self.u_C = np.array([math.cos(guides["Ax"].angle), math.sin(guides["Ax"].angle)])
         self.u_E = np.array([math.cos(guides["Ay"].angle), math.sin(guides["Ay"].angle)])
         s, _ = self._travel_E(np.linspace(0.0, 2.0 * math.pi, 721)[:-1])
-        self.phi_tdc_E = self._dead_centre(s, np.argmax(s))
-        self.phi_bdc_E = self._dead_centre(s, np.argmin(s))
+        self.phi_tdc_E = self._dead_centre(s, int(np.argmax(s)))
+        self.phi_bdc_E = self._dead_centre(s, int(np.argmin(s)))
         s_ext, _ = self._travel_E(np.array([self.phi_tdc_E, self.phi_bdc_E]))
         self.s_tdc_E, self.s_bdc_E = float(s_ext[0]), float(s_ext[1])
 

@@ -66,7 +66,7 @@ class EngineModel:
             m_rot[1] += m2a * (1.0 - share)
             m_j[2] = art.piston + art.rod.m1
             m_rot[2] = 0.0
-            pins = {1: (1, 2)}
+            pins: dict[int, tuple[int, ...]] = {1: (1, 2)}
         elif spec.layout is Layout.V:
             n = len(spec.cylinders)
             pins = {k + 1: tuple(c for c in (2 * k + 1, 2 * k + 2) if c <= n)
