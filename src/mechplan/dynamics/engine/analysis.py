@@ -10,7 +10,7 @@ import numpy as np
 
 from ...model.engine import Layout
 from .checks import Checks, consistency_checks
-from .cylinder import CylinderForces
+from .cylinder import CylinderForces, rows_of, slider_forces
 from .model import EngineModel
 
 Array = np.ndarray
@@ -123,9 +123,16 @@ def wear(load: PinLoad, step: int = 1) -> tuple[Array, Array]:
 def analyse(model: EngineModel, phi: Array) -> EngineResult:
     """All quantities at engine crank angles φ."""
     phi = np.asarray(phi, float)
-    cyl = {c.number: model.cylinder(c.number, phi) for c in model.spec.cylinders}
-    M = np.sum([f.M for f in cyl.values()], axis=0)
-    Mj = np.sum([f.M_j for f in cyl.values()], axis=0)
+    spec = model.spec
+    plain = [c.number for c in spec.cylinders if not (model.pair is not None and c.number == 2)]
+    psi = np.stack([model.local(n, phi) for n in plain])
+    m_j = np.array([model.m_j[n] for n in plain])[:, None]
+    together = slider_forces(model.kin, model.omega, model.diagram, psi, spec.F_p, spec.p0, m_j)
+    cyl = {n: rows_of(together, i) for i, n in enumerate(plain)}
+    if model.pair is not None:
+        cyl[2] = model.cylinder(2, phi)
+    M = together.M.sum(axis=0) + (cyl[2].M if model.pair is not None else 0.0)
+    Mj = together.M_j.sum(axis=0) + (cyl[2].M_j if model.pair is not None else 0.0)
     pins = pin_loads(model, phi, cyl)
     return EngineResult(model, phi, cyl, M, Mj, pins, journal_loads(model, phi, pins))
 

@@ -7,7 +7,7 @@ angle (sin β = λ sin φ), positive on the side the crank pin moves to from TDC
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 
 import numpy as np
 
@@ -48,22 +48,37 @@ class CylinderForces:
 
 
 def slider_forces(kin: SliderCrank, omega: float, diagram: IndicatorDiagram, phi: Array,
-                  F_p: float, p0: float, m_j: float) -> CylinderForces:
-    """Everything along one cylinder of a central slider-crank at local cycle angles ``phi``."""
+                  F_p: float, p0: float, m_j: float | Array) -> CylinderForces:
+    """Everything along one cylinder of a central slider-crank at local cycle angles ``phi``.
+
+    ``phi`` may be 2-D (cylinders × angles) with ``m_j`` of shape (cylinders, 1): one pass for all.
+    """
     phi = np.asarray(phi, float)
-    S = 2.0 * kin.R
-    x = kin.x(phi)
-    beta = kin.beta(phi)
-    cb = np.cos(beta)
-    a = kin.a(phi, omega)
-    a_s = kin.a_series(phi, omega)
-    p = diagram.at_phi(phi, x / S)
-    p_brix = diagram.at_phi(phi, kin.x_brix(phi) / S)
+    R, lam = kin.R, kin.lam
+    S = 2.0 * R
+    sf, cf = np.sin(phi), np.cos(phi)
+    s = lam * sf                                  # sin β
+    cb = np.sqrt(1.0 - s * s)                     # cos β
+    beta = np.arcsin(s)
+    spb = sf * cb + cf * s                        # sin(φ + β)
+    cpb = cf * cb - sf * s                        # cos(φ + β)
+    x = R * (1.0 - cf) + kin.L * (1.0 - cb)
+    rw2 = R * omega * omega
+    a = rw2 * (cpb / cb + lam * cf * cf / (cb * cb * cb))
+    a_s = rw2 * (cf + lam * (2.0 * cf * cf - 1.0))
+    x_brix = R * (1.0 - cf * np.sqrt(1.0 - s * s / 4.0) + lam / 2.0 * sf * sf)
+    stroke = diagram.stroke_of(phi)
+    p = diagram.pressure_xi(x / S, stroke)
+    p_brix = diagram.pressure_xi(x_brix / S, stroke)
     Pk = (p - p0) * F_p
     Pj = -m_j * a
     P = Pk + Pj
-    arm = np.sin(phi + beta) / cb
+    arm = spb / cb
     T = P * arm
-    return CylinderForces(phi, x, kin.v(phi, omega), a, a_s, beta, p, p_brix, Pk, Pj, -m_j * a_s, P,
-                          P * np.tan(beta), P / cb, T, P * np.cos(phi + beta) / cb, T * kin.R,
-                          Pj * arm * kin.R)
+    return CylinderForces(phi, x, omega * R * arm, a, a_s, beta, p, p_brix, Pk, Pj, -m_j * a_s, P,
+                          P * s / cb, P / cb, T, P * cpb / cb, T * R, Pj * arm * R)
+
+
+def rows_of(forces: CylinderForces, i: int) -> CylinderForces:
+    """Row i of forces computed for several cylinders at once."""
+    return CylinderForces(*(getattr(forces, f.name)[i] for f in fields(forces)))
