@@ -18,8 +18,8 @@ import numpy as np
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent / "src"))
 
-from mechplan.dynamics.engine.analysis import analyse  # noqa: E402
-from mechplan.studies import solve_text  # noqa: E402
+from mechplan.dynamics.engine.analysis import analyse
+from mechplan.studies import solve_text
 
 OUT = HERE / "ENGINE_RESULTS.md"
 
