@@ -178,3 +178,82 @@ def test_firing_order_must_list_every_cylinder_once():
     with pytest.raises(SceneError, match=r"engine\.firing_order.*does not fit"):
         solve_text(moto(engine_extra='cylinders = 2\nthrows = ["0 deg", "0 deg"]\n'
                         'firing_order = [1, 2]\nstrokes = 2').replace("strokes = 4\n", ""), "e.toml")
+
+
+def test_articulated_pair_torque_equals_kinetostatic_balancing_moment():
+    """The whole master/articulated linkage through mechplan's force plans: −M_b = M1 + M2."""
+    from mechplan.studies import solve_file
+    st = solve_file("templates/v_engine_dynamics.toml")
+    m = st.model
+    degs = np.arange(0.0, 720.0, 20.0)
+    phi = np.radians(degs)
+    c1, c2 = m.cylinder(1, phi), m.cylinder(2, phi)
+    text = _linkage_text(st)
+    for turn in (0, 1):
+        sel = (degs >= 360 * turn) & (degs < 360 * (turn + 1))
+        d = degs[sel] - 360 * turn
+
+        def table(values, d=d):
+            return ", ".join(f'["{float(a)!r} deg", "{float(v)!r} N"]' for a, v in zip(d, values))
+
+        scene = text + f"""
+[[loads]]
+type = "table"
+point = "C"
+towards = "A"
+table = [{table(c1.Pk[sel])}]
+[[loads]]
+type = "table"
+point = "E"
+towards = "A"
+table = [{table(c2.Pk[sel])}]
+"""
+        sol = solve(parse_scene(scene, "pair.toml"), at_deg=list(d),
+                    plans=("position", "velocity", "acceleration", "force"))
+        M_b = sol.extras["forces"].balancing_moment
+        total = c1.M[sel] + c2.M[sel]
+        assert np.allclose(-M_b, total, rtol=1e-8, atol=1e-8 * np.abs(total).max())
+
+
+def _linkage_text(st):
+    """The generated linkage scene with the reciprocating masses on the pistons (rods massless)."""
+    spec, m = st.scene.engine, st.model
+    art = spec.articulated
+    CD = math.sqrt(spec.L ** 2 + art.lug_radius ** 2
+                   - 2 * spec.L * art.lug_radius * math.cos(art.lug_angle))
+    bank = math.degrees(spec.cylinders[1].bank)
+    side = "left" if math.sin(math.radians(bank)) > 0 else "right"
+    return f"""
+[ground]
+A = ["0 mm", "0 mm"]
+guides.Ax = {{ through = "A", angle = "0 deg" }}
+guides.Ay = {{ through = "A", angle = "{bank!r} deg" }}
+[links.1]
+lengths = {{ AB = "80 mm" }}
+[links.2]
+lengths = {{ BC = "248 mm", BD = "62 mm", CD = "{CD * 1e3!r} mm" }}
+side = {{ D = "{side} of B->C" }}
+[links.3]
+slides = {{ point = "C", on = "Ax" }}
+mass = "{m.m_j[1]!r} kg"
+[links.4]
+lengths = {{ DE = "218 mm" }}
+[links.5]
+slides = {{ point = "E", on = "Ay" }}
+mass = "{m.m_j[2]!r} kg"
+[drive]
+link = "1"
+speed = "800 rpm"
+sense = "ccw"
+from = "Ax"
+[assembly]
+C = "+"
+E = "+"
+"""
+
+
+def test_two_stroke_closes_its_work():
+    st = solve_text(moto(engine_extra="strokes = 2").replace("strokes = 4\n", ""), "t.toml")
+    assert st.scene.engine.cycle == pytest.approx(2 * math.pi)
+    assert st.checks.work_error < 1e-9
+    assert len(st.table.phi) == 25
