@@ -116,7 +116,7 @@ def _sampled(step_deg):
 
 
 def test_volume_table_from_a_csv_file(tmp_path):
-    phi, V, p = _sampled(5.0)
+    _, V, p = _sampled(5.0)
     (tmp_path / "pv.csv").write_text("V_cm3,p_MPa\n" + "\n".join(
         f"{float(a) * 1e6!r},{float(b) * 1e-6!r}" for a, b in zip(V, p)), encoding="utf-8")
     text = moto().split("[indicator]")[0] + (
