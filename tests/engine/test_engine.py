@@ -257,3 +257,39 @@ def test_two_stroke_closes_its_work():
     assert st.scene.engine.cycle == pytest.approx(2 * math.pi)
     assert st.checks.work_error < 1e-9
     assert len(st.table.phi) == 25
+
+
+def test_output_csv_key_writes_the_table(tmp_path):
+    text = moto() + '\n[output]\ncsv = "out.csv"\n'
+    st = solve_text(text, str(tmp_path / "s.toml"))
+    written = (tmp_path / "out.csv").read_text(encoding="utf-8")
+    assert written == st.to_csv()
+    assert written.splitlines()[0].startswith("phi_deg,p_MPa_1,Pk_kN_1")
+
+
+def test_wear_spreads_each_load_over_plus_minus_60_degrees():
+    from mechplan.dynamics.engine.analysis import PinLoad, wear
+    n = 10
+    load = PinLoad(np.zeros(n), np.full(n, 2.0), 0.0)    # Q towards the axis: presses the outer side
+    rays, sums = wear(load)
+    deg = np.round(np.degrees(rays)).astype(int)
+    inside = (deg <= 60) | (deg >= 300)
+    assert np.all(sums[inside] == 2.0 * n) and np.all(sums[~inside] == 0.0)
+    # a load across the crank in the sense of rotation presses the pin at 270° (opposite side)
+    rays, sums = wear(PinLoad(np.full(n, 1.0), np.zeros(n), 0.0))
+    assert math.degrees(rays[np.argmax(sums)]) in (210.0, 270.0)
+    assert sums[np.round(np.degrees(rays)) == 270.0][0] == n and sums[np.round(np.degrees(rays)) == 90.0][0] == 0
+
+
+def test_journals_share_the_throw_load():
+    st = solve_text(moto().replace('rotating_extra = "20 g"', 'rotating_extra = "20 g"\ncrank = "300 g"'),
+                    "m.toml")
+    t = st.table
+    q = t.pins[1]
+    theta = t.phi
+    r = np.stack([np.cos(theta), np.sin(theta)], axis=1)
+    tt = np.stack([-np.sin(theta), np.cos(theta)], axis=1)
+    W = q.T[:, None] * tt + (-(q.Z + q.K_r) + 0.3 * R * OMEGA ** 2)[:, None] * r
+    assert t.journals.shape == (2, len(theta), 2)
+    assert np.allclose(t.journals[0] + t.journals[1], W)
+    assert np.allclose(t.journals[0], t.journals[1])
