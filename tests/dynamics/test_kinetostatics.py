@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+import tomllib
 from pathlib import Path
 
 import numpy as np
@@ -23,7 +24,8 @@ from .dyad_scenes import CYCLE, PINNED_SLIDERS, SCOTCH_YOKE
 from .newton_euler import Kinematics, applied_loads, rich_loading, solve_global
 
 ROOT = Path(__file__).resolve().parents[2]
-TEMPLATES = sorted(p.stem for p in (ROOT / "templates").glob("*.toml"))
+TEMPLATES = sorted(p.stem for p in (ROOT / "templates").glob("*.toml")      # linkages only
+                   if tomllib.loads(p.read_text(encoding="utf-8")).get("kind", "mechanism") == "mechanism")
 ALL_PLANS = ("position", "velocity", "acceleration", "force")
 TOL = 1e-9
 

@@ -1,0 +1,396 @@
+"""Parse an engine scene (``kind = "engine"``) into an :class:`EngineScene`.
+
+For a master/articulated V pair the linkage (crank, master rod with its lug, articulated rod,
+two pistons) is written as a mechanism scene and parsed here, so the exact mechanism solver
+computes the articulated cylinder.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from ..errors import SceneError
+from ..model.engine import (
+    ArticulatedSpec,
+    CylinderSpec,
+    EngineSpec,
+    IndicatorKind,
+    IndicatorSpec,
+    Layout,
+    MassSpec,
+    RodMasses,
+    ThermalSpec,
+)
+from ..units import registry
+from .document import parse_toml
+from .reader import Table
+from .spec import DrawingSpec, Scene
+
+TOP_KEYS = ("kind", "title", "language", "engine", "masses", "indicator", "articulated", "drawing",
+            "title_block", "output")
+
+
+@dataclass(frozen=True)
+class EngineScene:
+    """An engine scene: the engine, its sheets and (master/articulated V) the linkage."""
+
+    engine: EngineSpec
+    drawing: DrawingSpec
+    path: str
+    linkage: Scene | None = None
+
+
+def parse_engine_scene(text: str, file: str = "<scene>") -> EngineScene:
+    """Parse the text of an engine scene."""
+    from .loader import _drawing
+
+    top = Table(parse_toml(text, file), "", file)
+    top.check_keys(TOP_KEYS)
+    language = top.string("language", "en", choices=("en", "ru", "vi", "zh")) or "en"
+    title = top.string("title", "") or ""
+    e = top.table("engine", required=True)
+    assert e is not None
+    e.check_keys(("strokes", "speed", "bore", "crank_radius", "rod_length", "lambda", "p0", "layout",
+                  "cylinders", "firing_order", "throws", "banks", "grid", "table_step"))
+    strokes = e.raw("strokes", 4)
+    if strokes not in (2, 4):
+        raise e.error("strokes", f"must be 2 or 4 (got {strokes!r})")
+    omega = e.quantity("speed", "angular_velocity", required=True, positive=True)
+    bore = e.quantity("bore", "length", required=True, positive=True)
+    R = e.quantity("crank_radius", "length", required=True, positive=True)
+    assert omega is not None and bore is not None and R is not None
+    L = _rod_length(e, R)
+    p0 = e.quantity("p0", "pressure", 101325.0, nonnegative=True)
+    assert p0 is not None
+    layout = Layout(e.string("layout", "inline", choices=tuple(x.value for x in Layout)))
+    masses = _masses(top.table("masses", required=True), L)  # type: ignore[arg-type]
+    articulated = None
+    if layout is Layout.ARTICULATED:
+        a = top.table("articulated", required=True)
+        assert a is not None
+        articulated, bank = _articulated(a)
+        n_cyl = 2
+        throws, banks = [0.0, 0.0], [0.0, bank]
+    else:
+        if top.has("articulated"):
+            raise top.error("articulated", 'is only for layout = "v_articulated"')
+        n_cyl = e.raw("cylinders", 1)
+        if not isinstance(n_cyl, int) or isinstance(n_cyl, bool) or not 1 <= n_cyl <= 24:
+            raise e.error("cylinders", f"must be a whole number from 1 to 24 (got {n_cyl!r})")
+        throws, banks = [], []
+    order = _firing_order(e, n_cyl)
+    cycle = 180.0 * strokes
+    if not throws:
+        throws = _angles(e, "throws", n_cyl)
+        banks = _angles(e, "banks", n_cyl) if e.has("banks") else [0.0] * n_cyl
+        if not e.has("throws"):
+            if layout is Layout.V:
+                raise e.error("throws", "a V engine needs the throw of every cylinder, e.g. "
+                              'throws = ["0 deg", "0 deg"] for two cylinders on one pin')
+            interval = cycle / n_cyl
+            throws = [0.0] * n_cyl
+            for k, number in enumerate(order):
+                throws[number - 1] = math.radians((k * interval) % 360.0)
+    cylinders = tuple(CylinderSpec(i + 1, throws[i], banks[i], layout is Layout.ARTICULATED and i == 1)
+                      for i in range(n_cyl))
+    _check_firing(e, cylinders, order, strokes)
+    grid = e.raw("grid", 720 if strokes == 4 else 360)
+    if not isinstance(grid, int) or isinstance(grid, bool) or grid < 36:
+        raise e.error("grid", f"must be a whole number of points per cycle ≥ 36 (got {grid!r})")
+    step = e.quantity("table_step", "angle", math.radians(15.0), positive=True)
+    assert step is not None
+    if abs(math.radians(cycle) / step - round(math.radians(cycle) / step)) > 1e-6:
+        raise e.error("table_step", f"must divide the cycle of {cycle:g}° (got "
+                      f"{math.degrees(step):g}°)")
+    ind = _indicator(top.table("indicator", required=True), strokes, file)  # type: ignore[arg-type]
+    out = top.table("output")
+    csv_path = None
+    if out is not None:
+        out.check_keys(("csv",))
+        name = out.string("csv")
+        if name:
+            csv_path = str(Path(file).parent / name) if not Path(name).is_absolute() else name
+    spec = EngineSpec(title=title, strokes=int(strokes), speed=omega, bore=bore, R=R, L=L, p0=p0,
+                      layout=layout, cylinders=cylinders, firing_order=order, masses=masses,
+                      indicator=ind, articulated=articulated, grid=grid, table_step=step,
+                      language=language, csv=csv_path)
+    linkage = articulated_linkage(spec, file) if articulated is not None else None
+    return EngineScene(spec, _drawing(top, 1), file, linkage)
+
+
+def _rod_length(e: Table, R: float) -> float:
+    if e.has("rod_length") and e.has("lambda"):
+        raise e.error("lambda", "give either rod_length or lambda, not both")
+    if e.has("lambda"):
+        lam = e.quantity("lambda", "dimensionless", required=True)
+        assert lam is not None
+        if not 0.0 < lam < 1.0:
+            raise e.error("lambda", f"λ = R/L must be between 0 and 1 (got {lam:g}); a rod shorter "
+                          "than the crank cannot turn it")
+        return R / lam
+    L = e.quantity("rod_length", "length", required=True, positive=True)
+    assert L is not None
+    if not R / L < 1.0:
+        raise e.error("rod_length", f"λ = R/L must be less than 1 (got λ = {R / L:g}); the rod must "
+                      "be longer than the crank radius")
+    return L
+
+
+def _rod(t: Table, L: float, prefix: str = "rod") -> RodMasses:
+    m = t.quantity(prefix, "mass", required=True, nonnegative=True)
+    assert m is not None
+    small = f"{prefix}_small_end"
+    centre = f"{prefix}_centre"
+    J = t.quantity(f"{prefix}_J", "inertia", nonnegative=True)
+    if t.has(small) and t.has(centre):
+        raise t.error(centre, f"give either {small} (the mass at the piston pin) or {centre} (the "
+                      "centre of mass's distance from the big end), not both")
+    if t.has(small):
+        m1 = t.quantity(small, "mass", required=True, nonnegative=True)
+        assert m1 is not None
+        if m1 > m:
+            raise t.error(small, f"the rod's mass cannot be split: the small-end share must not "
+                          f"exceed the rod's mass {m:g} kg (got {m1:g} kg)")
+        return RodMasses(m1, m - m1, J)
+    if t.has(centre):
+        l2 = t.quantity(centre, "length", required=True, nonnegative=True)
+        assert l2 is not None
+        if l2 > L:
+            raise t.error(centre, f"the rod's mass cannot be split: its centre of mass must lie "
+                          f"between the pins, 0 … {L * 1e3:g} mm from the big end "
+                          f"(got {l2 * 1e3:g} mm)")
+        return RodMasses(m * l2 / L, m * (L - l2) / L, J, L - l2, l2)
+    raise t.error(small, f"the rod's mass cannot be split: give {small} or {centre}")
+
+
+def _masses(t: Table, L: float) -> MassSpec:
+    t.check_keys(("piston", "rod", "rod_small_end", "rod_centre", "rod_J", "rotating_extra", "crank",
+                  "counterweight"))
+    piston = t.quantity("piston", "mass", required=True, nonnegative=True)
+    assert piston is not None
+    return MassSpec(piston, _rod(t, L), t.quantity("rotating_extra", "mass", 0.0, nonnegative=True)
+                    or 0.0, t.quantity("crank", "mass", 0.0, nonnegative=True) or 0.0,
+                    t.quantity("counterweight", "mass", 0.0, nonnegative=True) or 0.0)
+
+
+def _articulated(a: Table) -> tuple[ArticulatedSpec, float]:
+    a.check_keys(("bank_angle", "lug_radius", "lug_angle", "rod_length", "piston", "rod",
+                  "rod_small_end", "rod_centre", "rod_J"))
+    bank = a.quantity("bank_angle", "angle", required=True)
+    r = a.quantity("lug_radius", "length", required=True, positive=True)
+    ang = a.quantity("lug_angle", "angle", required=True)
+    L = a.quantity("rod_length", "length", required=True, positive=True)
+    piston = a.quantity("piston", "mass", required=True, nonnegative=True)
+    assert bank is not None and r is not None and ang is not None and L is not None
+    assert piston is not None
+    b = math.remainder(bank, 2 * math.pi)
+    if abs(b) < math.radians(10.0) or abs(b) > math.radians(170.0):
+        raise a.error("bank_angle", f"the V angle must be between 10° and 170° either way (got "
+                      f"{math.degrees(bank):g}°)")
+    if not 0.0 < ang < math.pi:
+        raise a.error("lug_angle", f"must lie between 0° and 180° (got {math.degrees(ang):g}°)")
+    return ArticulatedSpec(r, ang, L, piston, _rod(a, L)), b % (2 * math.pi)
+
+
+def _angles(e: Table, name: str, n: int) -> list[float]:
+    raw = e.raw(name)
+    if raw is None:
+        return [0.0] * n
+    if not isinstance(raw, list) or len(raw) != n:
+        raise e.error(name, f"expected one angle per cylinder ({n}), e.g. [\"0 deg\", …] (got {raw!r})")
+    return [e.value_quantity(v, f"{name}[{i}]", "angle") % (2 * math.pi) for i, v in enumerate(raw)]
+
+
+def _firing_order(e: Table, n: int) -> tuple[int, ...]:
+    raw = e.raw("firing_order", list(range(1, n + 1)) if n <= 2 else None)
+    if raw is None:
+        raise e.error("firing_order", f"is missing; list every cylinder 1…{n} once in firing order")
+    if (not isinstance(raw, list) or sorted(raw) != list(range(1, n + 1))
+            or not all(isinstance(v, int) and not isinstance(v, bool) for v in raw)):
+        raise e.error("firing_order", f"must list every cylinder 1…{n} exactly once (got {raw!r})")
+    return tuple(raw)
+
+
+def _check_firing(e: Table, cylinders: tuple[CylinderSpec, ...], order: tuple[int, ...],
+                  strokes: int) -> None:
+    from ..model.engine import firing_phases
+
+    try:
+        firing_phases(cylinders, order, strokes)
+    except ValueError as exc:
+        raise e.error("firing_order", str(exc)) from None
+
+
+def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str], file: str) -> list[tuple[float, float]]:
+    ureg = registry()
+
+    def conv(value: object, unit: str, target: str, where: str) -> float:
+        q: Any
+        try:
+            if isinstance(value, str):
+                q = ureg.Quantity(value.replace(",", "."))
+                q = q * ureg(unit) if q.dimensionless and unit else q
+            else:
+                q = float(value) * ureg(unit)  # type: ignore[arg-type]
+            return float(q.to(target).magnitude)
+        except Exception:  # noqa: BLE001 - pint raises many kinds
+            raise t.error(where, f"expected a number in {unit} (got {value!r})") from None
+
+    targets = tuple("m**3" if d == "volume" else ("rad" if d == "angle" else "Pa") for d in dims)
+    if t.has("file"):
+        name = t.string("file")
+        assert name is not None
+        path = Path(file).parent / name
+        try:
+            with path.open(encoding="utf-8", newline="") as fh:
+                raw = [r for r in csv.reader(fh) if r and not r[0].lstrip().startswith("#")]
+        except OSError as exc:
+            raise t.error("file", f"cannot read {path} ({exc.strerror})") from None
+        if raw and not _numeric(raw[0][0]):
+            raw = raw[1:]                                # a header row
+        where = "file"
+    else:
+        raw = t.raw("table", required=True)
+        where = "table"
+        if not isinstance(raw, list):
+            raise t.error("table", "expected rows [x, p]")
+    rows = []
+    for j, row in enumerate(raw):
+        if not isinstance(row, list) or len(row) < 2:
+            raise t.error(f"{where}[{j}]", f"expected a row [x, p] (got {row!r})")
+        rows.append((conv(row[0], units[0], targets[0], f"{where}[{j}]"),
+                     conv(row[1], units[1], targets[1], f"{where}[{j}]")))
+    if len(rows) < 5:
+        raise t.error(where, f"expected at least 5 rows around the cycle (got {len(rows)})")
+    bad = [r for r in rows if r[1] < 0.0]
+    if bad:
+        raise t.error(where, f"absolute pressures must not be below vacuum (got {bad[0][1]:g} Pa); "
+                      "give absolute, not gauge, pressures")
+    return rows
+
+
+def _numeric(s: str) -> bool:
+    try:
+        float(s.replace(",", "."))
+        return True
+    except ValueError:
+        return False
+
+
+def _indicator(t: Table, strokes: int, file: str) -> IndicatorSpec:
+    source = t.string("source", "thermal", choices=tuple(k.value for k in IndicatorKind))
+    kind = IndicatorKind(source)
+    if kind is not IndicatorKind.THERMAL:
+        t.check_keys(("source", "units", "table", "file", "epsilon"))
+        units = t.raw("units", ["cm^3" if kind is IndicatorKind.VOLUME else "deg", "MPa"])
+        if not isinstance(units, list) or len(units) != 2 or not all(isinstance(u, str) for u in units):
+            raise t.error("units", 'expected two unit names, e.g. ["cm^3", "MPa"]')
+        dims = ("volume" if kind is IndicatorKind.VOLUME else "angle", "pressure")
+        rows = _rows(t, (units[0], units[1]), dims, file)
+        eps = t.quantity("epsilon", "dimensionless")
+        if kind is IndicatorKind.CRANK_ANGLE and eps is None:
+            raise t.error("epsilon", "a p(φ) table needs the compression ratio for the p–V diagram")
+        if eps is not None and not eps > 1.0:
+            raise t.error("epsilon", f"the compression ratio must exceed 1 (got {eps:g})")
+        return IndicatorSpec(kind, rows=tuple(rows), epsilon=eps)
+    t.check_keys(("source", "epsilon", "p_a", "p_r", "n1", "n2", "p_z", "rho", "ignition_advance",
+                  "peak_angle", "peak_fraction", "tdc_fraction", "exhaust_opening", "rounding"))
+    eps = t.quantity("epsilon", "dimensionless", required=True)
+    assert eps is not None
+    if not eps > 1.0:
+        raise t.error("epsilon", f"the compression ratio must exceed 1 (got {eps:g})")
+    vals = {}
+    for name in ("p_a", "p_r", "p_z"):
+        v = t.quantity(name, "pressure", required=True)
+        assert v is not None
+        if not v > 0.0:
+            raise t.error(name, f"an absolute pressure must be above vacuum (got {t.raw(name)!r}); "
+                          "give absolute, not gauge, pressures")
+        vals[name] = v
+    n1 = t.quantity("n1", "dimensionless", required=True, positive=True)
+    n2 = t.quantity("n2", "dimensionless", required=True, positive=True)
+    rho = t.quantity("rho", "dimensionless", 1.0)
+    assert n1 is not None and n2 is not None and rho is not None
+    if not 1.0 <= rho < eps:
+        raise t.error("rho", f"the pre-expansion ratio must lie in [1, ε) (got {rho:g})")
+    p_c = vals["p_a"] * eps ** n1
+    if vals["p_z"] < p_c:
+        raise t.error("p_z", f"the peak pressure must not be below the end of compression p_c = "
+                      f"p_a·ε^n1 = {p_c / 1e6:.3f} MPa (got {vals['p_z'] / 1e6:g} MPa)")
+    rounding = t.raw("rounding", True)
+    if not isinstance(rounding, bool):
+        raise t.error("rounding", f"expected true or false (got {rounding!r})")
+
+    def angle(name: str, default: float, hi: float) -> float:
+        v = t.quantity(name, "angle", math.radians(default))
+        assert v is not None
+        if not 0.0 < v < math.radians(hi):
+            raise t.error(name, f"must lie between 0° and {hi:g}° (got {math.degrees(v):g}°)")
+        return v
+
+    frac = t.quantity("peak_fraction", "dimensionless", 0.85, positive=True)
+    tdc = t.quantity("tdc_fraction", "dimensionless", 1.2, positive=True)
+    assert frac is not None and tdc is not None
+    if frac > 1.0:
+        raise t.error("peak_fraction", f"must not exceed 1 (got {frac:g})")
+    peak = angle("peak_angle", 12.0, 40.0)
+    thermal = ThermalSpec(eps, vals["p_a"], vals["p_r"], n1, n2, vals["p_z"], rho,
+                          angle("ignition_advance", 15.0, 60.0), peak, frac, tdc,
+                          angle("exhaust_opening", 50.0, 90.0), rounding)
+    if rounding and tdc * p_c > frac * vals["p_z"]:
+        raise t.error("tdc_fraction", f"the pressure at TDC tdc_fraction·p_c = {tdc * p_c / 1e6:.3f} "
+                      f"MPa must not exceed the real peak peak_fraction·p_z = "
+                      f"{frac * vals['p_z'] / 1e6:.3f} MPa")
+    return IndicatorSpec(IndicatorKind.THERMAL, thermal=thermal, epsilon=eps)
+
+
+def articulated_linkage(spec: EngineSpec, file: str) -> Scene:
+    """The master/articulated pair as a mechanism scene (crank turning counter-clockwise).
+
+    Cylinder 1 (master) lies along +x, cylinder 2 at the bank angle counter-clockwise; φ is
+    measured from the master cylinder's axis, so the scene's crank angle is the engine's.
+    """
+    from .loader import parse_scene
+
+    art = spec.articulated
+    assert art is not None
+    bank = spec.cylinders[1].bank
+    CD = math.sqrt(spec.L ** 2 + art.lug_radius ** 2
+                   - 2.0 * spec.L * art.lug_radius * math.cos(art.lug_angle))
+    side = "left" if math.sin(bank) > 0 else "right"
+    mm = 1e3
+    text = f"""
+title = "articulated pair"
+[ground]
+A = ["0 mm", "0 mm"]
+guides.Ax = {{ through = "A", angle = "0 deg" }}
+guides.Ay = {{ through = "A", angle = "{math.degrees(bank)!r} deg" }}
+[links.1]
+lengths = {{ AB = "{spec.R * mm!r} mm" }}
+[links.2]
+lengths = {{ BC = "{spec.L * mm!r} mm", BD = "{art.lug_radius * mm!r} mm", CD = "{CD * mm!r} mm" }}
+side = {{ D = "{side} of B->C" }}
+[links.3]
+slides = {{ point = "C", on = "Ax" }}
+[links.4]
+lengths = {{ DE = "{art.rod_length * mm!r} mm" }}
+[links.5]
+slides = {{ point = "E", on = "Ay" }}
+[drive]
+link = "1"
+speed = "{spec.speed!r} rad/s"
+sense = "ccw"
+from = "Ax"
+[assembly]
+C = "+"
+E = "+"
+"""
+    try:
+        return parse_scene(text, file)
+    except SceneError as exc:
+        raise SceneError(f"the master/articulated linkage cannot be built: {exc.detail}", file=file,
+                         key="articulated") from None

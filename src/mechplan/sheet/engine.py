@@ -1,0 +1,250 @@
+"""The engine-dynamics sheets: indicator diagram with Brix's circle, forces, torque, polar and wear
+diagrams of the crank pin, the per-angle table — every diagram with its scale factors."""
+
+from __future__ import annotations
+
+import math
+from typing import Protocol
+
+import numpy as np
+
+from ..dynamics.engine.analysis import Checks, EngineResult
+from ..dynamics.engine.model import EngineModel
+from ..i18n import message, number
+from ..scene.engine import EngineScene
+from .diagram import TEXT_H, Axis, Curve, Diagram, Marker, diagram_panel, mu_text
+from .layout import framed_sheets
+from .panels import Panel
+from .primitives import Arc, Circle, HAlign, Line, Polyline, Role, Sheet, Table, Text, VAlign
+
+
+class EngineData(Protocol):
+    """What the sheets need of a solved engine (``mechplan.studies.engine.EngineStudy``)."""
+
+    scene: EngineScene
+    model: EngineModel
+
+    @property
+    def dense(self) -> EngineResult: ...
+
+    @property
+    def table(self) -> EngineResult: ...
+
+    @property
+    def checks(self) -> Checks: ...
+
+    @property
+    def wear(self) -> tuple[np.ndarray, np.ndarray]: ...
+
+
+#: per-cylinder columns of the table: (attribute, CSV name, scale to the printed unit)
+COLUMNS = (("p", "p_MPa", 1e-6), ("Pk", "Pk_kN", 1e-3), ("Pj", "Pj_kN", 1e-3), ("P", "P_kN", 1e-3),
+           ("beta", "beta_deg", 180.0 / math.pi), ("N", "N_kN", 1e-3), ("S", "S_kN", 1e-3),
+           ("T", "T_kN", 1e-3), ("Z", "Z_kN", 1e-3), ("M", "M_Nm", 1.0))
+
+
+def table_cells(t: EngineResult, language: str, number_of: int = 1) -> list[list[str]]:
+    """Heading and rows of the per-angle table of one cylinder (with ΣM and |Q| of pin 1)."""
+    f = t.cylinders[number_of]
+    head = [message("engine.col.phi", language)] + [
+        message(f"engine.col.{a}", language) for a, _, _ in COLUMNS] + [
+        message("engine.col.M_total", language), message("engine.col.Q", language)]
+    digits = {"p": 3, "beta": 2, "M": 2}
+    rows = [head]
+    Q = t.pins[1].Q
+    for k, phi in enumerate(t.phi):
+        row = [number(math.degrees(phi), 0, language)]
+        for a, _, scale in COLUMNS:
+            v = float(getattr(f, a)[k]) * scale
+            row.append("—" if not math.isfinite(v) else number(v, digits.get(a, 3), language))
+        row += [number(float(t.M_total[k]), 2, language), number(float(Q[k]) * 1e-3, 3, language)]
+        rows.append(row)
+    return rows
+
+W = 150.0        # mm, diagram width
+H = 80.0         # mm, diagram height
+
+
+def engine_sheets(study: EngineData, size: str, standard: str, language: str,
+                  name: str) -> list[Sheet]:
+    """All panels of an engine study laid out on framed sheets."""
+    lang = language
+    panels = [indicator_panel(study, lang), forces_panel(study, lang), tz_panel(study, lang),
+              torque_panel(study, lang), polar_panel(study, lang), developed_panel(study, lang),
+              wear_panel(study, lang)]
+    panels += table_panels(study, lang)
+    fields = {"title": study.scene.engine.title or message("engine.sheet.title", lang)}
+    fields.update({k: v for k, v in study.scene.drawing.title_block.items() if v})
+    return framed_sheets(panels, size=size, standard=standard, language=lang, name=name,
+                         fields=fields)
+
+
+def _deg(phi: np.ndarray) -> np.ndarray:
+    return np.degrees(phi)
+
+
+def _phi_axis(study: EngineData) -> Axis:
+    cycle = math.degrees(study.scene.engine.cycle)
+    return Axis("φ", "°", W, mu=cycle / 144.0, mu_symbol="μφ")
+
+
+def indicator_panel(study: EngineData, lang: str) -> Panel:
+    """p–V diagram with Brix's semicircle (pole O′ shifted by Rλ/2 towards BDC) under it."""
+    m, spec = study.model, study.scene.engine
+    V, p = m.diagram.loop()
+    cm3 = 1e6
+    dia = diagram_panel("indicator", message("engine.diagram.indicator", lang),
+                        [Curve(V * cm3, p * 1e-6, closed=True)],
+                        Axis("V", "cm³", 150.0), Axis("p", "MPa", 130.0), lang)
+    prims = dia.panel.primitives
+    Vc, Vh = m.diagram.V_c * cm3, m.diagram.V_h * cm3
+    r_mm = Vh / 2.0 / dia.mu_x
+    cx = (Vc + Vh / 2.0) / dia.mu_x
+    cy = -16.0 - r_mm
+    shift = spec.F_p * spec.R * spec.lam / 2.0 * cm3 / dia.mu_x
+    prims.append(Arc((cx, cy), r_mm, 180.0, 360.0, Role.THIN))
+    prims.append(Line((cx - r_mm, cy), (cx + r_mm, cy), Role.THIN))
+    ox = cx + shift
+    prims.append(Circle((cx, cy), 0.5, Role.OUTLINE))
+    prims.append(Circle((ox, cy), 0.5, Role.OUTLINE))
+    prims.append(Text((cx - 1.0, cy + 1.0), "O", TEXT_H, halign=HAlign.RIGHT))
+    prims.append(Text((ox + 1.0, cy + 1.0), "O′", TEXT_H))
+    lam = spec.lam
+    for k in range(1, 6):
+        phi = math.radians(30.0 * k)
+        t = (r_mm / 2.0) * (lam * math.cos(phi) + math.sqrt(4.0 - lam * lam * math.sin(phi) ** 2))
+        px, py = ox - t * math.cos(phi), cy - t * math.sin(phi)
+        prims.append(Line((ox, cy), (px, py), Role.THIN))
+        prims.append(Line((px, py), (px, 0.0), Role.DASHED))
+        prims.append(Text((px, py - 1.0), f"{30 * k}°", 1.8, halign=HAlign.CENTER, valign=VAlign.TOP))
+    prims.append(Text((cx - r_mm, cy - r_mm - 4.0),
+                      message("engine.label.brix", lang, shift=_num(spec.R * lam / 2.0 * 1e3, lang)),
+                      TEXT_H, valign=VAlign.TOP))
+    return dia.panel
+
+
+def _num(x: float, lang: str, k: int = 2) -> str:
+    return number(x, k, lang)
+
+
+def forces_panel(study: EngineData, lang: str) -> Panel:
+    """Pk, Pj and P of cylinder 1 against φ."""
+    d = study.dense
+    f = d.cylinders[1]
+    x = _deg(d.phi)
+    curves = [Curve(x, f.Pk * 1e-3, Role.THIN, "Pk"), Curve(x, f.Pj * 1e-3, Role.DASHED, "Pj"),
+              Curve(x, f.P * 1e-3, Role.OUTLINE, "P")]
+    return diagram_panel("forces", message("engine.diagram.forces", lang), curves,
+                         _phi_axis(study), Axis("P", "kN", H), lang).panel
+
+
+def tz_panel(study: EngineData, lang: str) -> Panel:
+    """T and Z of cylinder 1 (for the articulated pair: T and Z on the shared pin)."""
+    d = study.dense
+    q = d.pins[1]
+    x = _deg(d.phi)
+    curves = [Curve(x, q.T * 1e-3, Role.OUTLINE, "T"), Curve(x, q.Z * 1e-3, Role.DASHED, "Z")]
+    return diagram_panel("tz", message("engine.diagram.tz", lang), curves, _phi_axis(study),
+                         Axis("T, Z", "kN", H), lang).panel
+
+
+def torque_panel(study: EngineData, lang: str) -> Panel:
+    """ΣM of the engine (cylinders thin) with its mean."""
+    d = study.dense
+    x = _deg(d.phi)
+    curves = []
+    if len(d.cylinders) > 1:
+        curves += [Curve(x, f.M, Role.THIN) for f in d.cylinders.values()]
+    curves.append(Curve(x, d.M_total, Role.OUTLINE, "ΣM"))
+    mean = study.checks.work_torque / study.scene.engine.cycle
+    return diagram_panel("torque", message("engine.diagram.torque", lang), curves, _phi_axis(study),
+                         Axis("M", "N·m", H), lang,
+                         hlines=[(mean, message("engine.label.mean", lang))]).panel
+
+
+def polar_panel(study: EngineData, lang: str) -> Panel:
+    """Polar diagram of the load on crank pin 1: ends of (T, Z); Q is drawn from the pole O_p."""
+    d, t = study.dense, study.table
+    q = d.pins[1]
+    qt = t.pins[1]
+    pole = -q.K_r * 1e-3
+    dia = diagram_panel("polar", message("engine.diagram.polar", lang),
+                        [Curve(q.T * 1e-3, q.Z * 1e-3, Role.OUTLINE, closed=True)],
+                        Axis("T", "kN", 150.0), Axis("Z", "kN", 150.0), lang,
+                        markers=[Marker(0.0, pole, "Oₚ")])
+    mu_x, mu_y = dia.mu_x, dia.mu_y
+    if abs(mu_x - mu_y) > 1e-12 * mu_x:              # a polar diagram needs one scale
+        mu = max(mu_x, mu_y)
+        dia = diagram_panel("polar", message("engine.diagram.polar", lang),
+                            [Curve(q.T * 1e-3, q.Z * 1e-3, Role.OUTLINE, closed=True)],
+                            Axis("T", "kN", 110.0, mu=mu), Axis("Z", "kN", 110.0, mu=mu), lang,
+                            markers=[Marker(0.0, pole, "Oₚ")])
+    prims = dia.panel.primitives
+    px, py = dia.to_mm(0.0, pole)
+    prims.append(Circle((px, py), 0.8, Role.OUTLINE))
+    step = max(1, (len(t.phi) - 1) // 24)
+    for k in range(0, len(t.phi) - 1, step):
+        x, y = dia.to_mm(float(qt.T[k]) * 1e-3, float(qt.Z[k]) * 1e-3)
+        prims.append(Circle((x, y), 0.4, Role.THIN))
+        prims.append(Text((x + 0.8, y + 0.8), f"{math.degrees(float(t.phi[k])):.0f}", 1.8))
+    kmax = int(np.argmax(q.Q))
+    x, y = dia.to_mm(float(q.T[kmax]) * 1e-3, float(q.Z[kmax]) * 1e-3)
+    prims.append(Line((px, py), (x, y), Role.DASHED))
+    prims.append(Text((x + 1.0, y - 3.0), "Qmax", TEXT_H))
+    return dia.panel
+
+
+def developed_panel(study: EngineData, lang: str) -> Panel:
+    """|Q|(φ) of crank pin 1 with Q_mean."""
+    d = study.dense
+    Q = d.pins[1].Q * 1e-3
+    mean = float(np.trapezoid(Q, d.phi) / study.scene.engine.cycle)
+    return diagram_panel("developed", message("engine.diagram.developed", lang),
+                         [Curve(_deg(d.phi), Q, Role.OUTLINE, "Q")], _phi_axis(study),
+                         Axis("Q", "kN", H), lang,
+                         hlines=[(mean, message("engine.label.Q_mean", lang))]).panel
+
+
+def wear_panel(study: EngineData, lang: str) -> Panel:
+    """Wear diagram of crank pin 1: the circle, 24 rays, the summed loads drawn inwards."""
+    rays, sums = study.wear
+    radius = 40.0
+    from .diagram import scale_for
+    mu = scale_for(sums * 1e-3, radius * 0.8)
+    prims: list = [Circle((0.0, 0.0), radius, Role.THIN)]
+    ends = []
+    for psi, s in zip(rays, sums * 1e-3):
+        ux, uy = -math.sin(psi), math.cos(psi)      # crank outward = up, sense of rotation = left
+        prims.append(Line((0.0, 0.0), (radius * ux, radius * uy), Role.THIN))
+        prims.append(Text((radius * 1.08 * ux, radius * 1.08 * uy), f"{math.degrees(psi):.0f}°",
+                          1.8, halign=HAlign.CENTER, valign=VAlign.MIDDLE))
+        r_in = radius - s / mu
+        ends.append((r_in * ux, r_in * uy))
+    prims.append(Polyline(tuple(ends), Role.OUTLINE, closed=True))
+    best = int(np.argmin(sums))
+    ux, uy = -math.sin(rays[best]), math.cos(rays[best])
+    prims.append(Line((radius * ux, radius * uy), (radius * 1.25 * ux, radius * 1.25 * uy),
+                      Role.OUTLINE))
+    prims.append(Text((-radius, -radius - 6.0), mu_text("μw", mu, "kN", lang), TEXT_H,
+                      valign=VAlign.TOP))
+    prims.append(Text((-radius, -radius - 11.0), message("engine.label.oil_hole", lang,
+                      angle=f"{math.degrees(float(rays[best])):.0f}"), TEXT_H, valign=VAlign.TOP))
+    prims.append(Text((-radius, radius + 14.0), message("engine.diagram.wear", lang), 3.5))
+    return Panel("wear", prims)
+
+
+def table_panels(study: EngineData, lang: str) -> list[Panel]:
+    """The per-angle table of every cylinder."""
+    out = []
+    for c in study.scene.engine.cylinders:
+        cells = table_cells(study.table, lang, c.number)
+        widths = tuple(max(14.0, 2.0 + 1.6 * max(len(r[j]) for r in cells))
+                       for j in range(len(cells[0])))
+        title = message("engine.diagram.table", lang, number=c.number)
+        table = Table((0.0, 0.0), widths, (6.0,) + (4.0,) * (len(cells) - 1),
+                      tuple(tuple(r) for r in cells), text_height_mm=1.8)
+        out.append(Panel(f"table{c.number}", [Text((0.0, 4.0), title, 3.5), table]))
+    return out
+
+
+__all__ = ["Diagram", "engine_sheets"]

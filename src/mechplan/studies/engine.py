@@ -1,0 +1,233 @@
+"""An engine scene solved: report, JSON, CSV of the per-angle table and the sheets."""
+
+from __future__ import annotations
+
+import csv
+import io
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from .. import __version__
+from ..dynamics.engine.analysis import (
+    Checks,
+    EngineResult,
+    analyse,
+    consistency_checks,
+    grids,
+    wear,
+)
+from ..dynamics.engine.model import EngineModel
+from ..i18n import message, number
+from ..scene.engine import EngineScene, parse_engine_scene
+from ..sheet.engine import COLUMNS, table_cells
+
+if TYPE_CHECKING:
+    from ..sheet.primitives import Sheet
+
+def solve_engine_text(text: str, file: str) -> EngineStudy:
+    """Parse and solve an engine scene; write its CSV if the scene's [output] asks for one."""
+    study = EngineStudy(parse_engine_scene(text, file))
+    if study.scene.engine.csv:
+        study.write_csv(study.scene.engine.csv)
+    return study
+
+
+@dataclass
+class EngineStudy:
+    """An engine's dynamic calculation over its cycle."""
+
+    scene: EngineScene
+    model: EngineModel = field(init=False)
+
+    def __post_init__(self) -> None:
+        s = self.scene
+        self.model = EngineModel.build(s.engine, s.path, s.linkage)
+
+    @cached_property
+    def dense(self) -> EngineResult:
+        """All quantities on the dense grid."""
+        return analyse(self.model, grids(self.model)[0])
+
+    @cached_property
+    def table(self) -> EngineResult:
+        """All quantities at the table's angles."""
+        return analyse(self.model, grids(self.model)[1])
+
+    @cached_property
+    def checks(self) -> Checks:
+        """Consistency checks."""
+        return consistency_checks(self.model, grids(self.model)[0])
+
+    @cached_property
+    def wear(self) -> tuple[np.ndarray, np.ndarray]:
+        """Wear diagram of pin 1 at the table's angles (the last angle repeats the first)."""
+        t = self.table.pins[1]
+        return wear(type(t)(t.T[:-1], t.Z[:-1], t.K_r))
+
+    # -- text ---------------------------------------------------------------------------------
+    def report(self, language: str | None = None) -> str:
+        lang = language or self.scene.engine.language
+        spec, m, d, ch = self.scene.engine, self.model, self.dense, self.checks
+
+        def n(x: float, k: int = 3) -> str:
+            return number(x, k, lang)
+
+        lines = [message("engine.report.title", lang, title=spec.title), ""]
+        lines.append(message("engine.report.geometry", lang, strokes=spec.strokes,
+                             cylinders=len(spec.cylinders), n=n(spec.speed * 30 / math.pi, 0),
+                             D=n(spec.bore * 1e3, 1), R=n(spec.R * 1e3, 2), L=n(spec.L * 1e3, 2),
+                             lam=n(spec.lam, 4)))
+        lines.append(message("engine.report.volumes", lang, F_p=n(spec.F_p * 1e4, 3),
+                             V_h=n(spec.V_h * 1e6, 2), V_c=n(m.diagram.V_c * 1e6, 2),
+                             p0=n(spec.p0 * 1e-3, 1)))
+        lines.append(message("engine.report.layout." + spec.layout.value, lang))
+        lines.append(message("engine.report.firing", lang,
+                             order="–".join(str(k) for k in spec.firing_order)))
+        for c in spec.cylinders:
+            lines.append(message("engine.report.cylinder", lang, number=c.number,
+                                 throw=n(math.degrees(c.throw), 1), bank=n(math.degrees(c.bank), 1),
+                                 phase=n(math.degrees(m.phases[c.number]), 1),
+                                 m_j=n(m.m_j[c.number], 4), m_r=n(m.m_rot[c.number], 4)))
+        if m.pair is not None:
+            lines.append(message("engine.report.articulated", lang,
+                                 stroke=n(m.pair.stroke_E * 1e3, 3),
+                                 tdc=n(math.degrees(m.pair.phi_tdc_E), 3),
+                                 bdc=n(math.degrees(m.pair.phi_bdc_E), 3),
+                                 share=n(m.lug_share_C, 4)))
+        lines += ["", message("engine.report.indicator", lang, W=n(ch.work_diagram, 2),
+                              p_i=n(ch.work_diagram / spec.V_h * 1e-6, 4),
+                              p_max=n(ch.p_max * 1e-6, 3))]
+        lines += ["", message("engine.report.table", lang, step=n(math.degrees(spec.table_step), 0))]
+        lines += self._table_text(lang)
+        Mt = d.M_total
+        lines += ["", message("engine.report.torque", lang, mean=n(ch.work_torque / spec.cycle, 3),
+                              max=n(float(Mt.max()), 2), min=n(float(Mt.min()), 2),
+                              mu=n(d.non_uniformity, 3))]
+        for pin, q in d.pins.items():
+            Q = q.Q
+            lines.append(message("engine.report.pin", lang, pin=pin, K_r=n(q.K_r * 1e-3, 4),
+                                 mean=n(float(np.trapezoid(Q, d.phi) / spec.cycle) * 1e-3, 4),
+                                 max=n(float(Q.max()) * 1e-3, 4), min=n(float(Q.min()) * 1e-3, 4)))
+        for j, J in enumerate(d.journals):
+            mag = np.hypot(J[:, 0], J[:, 1])
+            lines.append(message("engine.report.journal", lang, journal=j + 1,
+                                 mean=n(float(np.trapezoid(mag, d.phi) / spec.cycle) * 1e-3, 4),
+                                 max=n(float(mag.max()) * 1e-3, 4)))
+        rays, sums = self.wear
+        lines.append(message("engine.report.wear", lang,
+                             angle=n(math.degrees(float(rays[np.argmin(sums)])), 0)))
+        lines += ["", message("engine.report.checks", lang)]
+        lines.append(message("engine.check.work", lang, torque=n(ch.work_torque, 6),
+                             work=n(ch.work_expected, 6), error=f"{ch.work_error:.1e}"))
+        lines.append(message("engine.check.inertia", lang, mean=f"{ch.inertia_mean:.1e}",
+                             peak=n(ch.inertia_peak, 2)))
+        lines.append(message("engine.check.brix", lang, dp=n(ch.brix_dp_max * 1e-3, 2),
+                             percent=n(ch.brix_dp_max / ch.p_max * 100, 3)))
+        lines.append(message("engine.check.series", lang, da=n(ch.da_max, 2),
+                             percent=n(ch.da_max / ch.a_max * 100, 3), dPj=n(ch.dPj_max, 2)))
+        if ch.two_mass_dM_max is not None:
+            lines.append(message("engine.check.two_mass", lang, dM=n(ch.two_mass_dM_max, 4)))
+        else:
+            lines.append(message("engine.check.two_mass_exact", lang))
+        if ch.pair_torque_error is not None:
+            lines.append(message("engine.check.pair", lang, error=f"{ch.pair_torque_error:.1e}"))
+        return "\n".join(lines) + "\n"
+
+    def _table_text(self, lang: str) -> list[str]:
+        out = []
+        for c in self.scene.engine.cylinders:
+            if len(self.scene.engine.cylinders) > 1:
+                out.append(message("engine.report.table_cylinder", lang, number=c.number))
+            rows = table_cells(self.table, lang, c.number)
+            widths = [max(len(r[j]) for r in rows) for j in range(len(rows[0]))]
+            out += ["  ".join(s.rjust(w) for s, w in zip(r, widths)) for r in rows]
+        return out
+
+    # -- data ---------------------------------------------------------------------------------
+    def to_json(self) -> dict[str, Any]:
+        spec, m, t, ch = self.scene.engine, self.model, self.table, self.checks
+        d = self.dense
+        angles = []
+        for k, phi in enumerate(t.phi):
+            angles.append({
+                "phi_deg": round(math.degrees(float(phi)), 9),
+                "cylinders": {str(c): _clean(f.json_row(k)) for c, f in t.cylinders.items()},
+                "M_total": float(t.M_total[k]),
+                "pins": {str(p): {"T": float(q.T[k]), "Z": float(q.Z[k]), "Q_T": float(q.Q_T[k]),
+                                  "Q_Z": float(q.Q_Z[k]), "Q": float(q.Q[k])}
+                         for p, q in t.pins.items()},
+                "journals": [[float(J[k, 0]), float(J[k, 1])] for J in t.journals]})
+        rays, sums = self.wear
+        return {
+            "mechplan": __version__, "kind": "engine", "title": spec.title,
+            "engine": {"strokes": spec.strokes, "omega": spec.speed, "bore": spec.bore, "R": spec.R,
+                       "L": spec.L, "lambda": spec.lam, "F_p": spec.F_p, "V_h": spec.V_h,
+                       "V_c": m.diagram.V_c, "p0": spec.p0, "layout": spec.layout.value,
+                       "firing_order": list(spec.firing_order)},
+            "cylinders": [{"number": c.number, "throw_deg": math.degrees(c.throw),
+                           "bank_deg": math.degrees(c.bank),
+                           "phase_deg": math.degrees(m.phases[c.number]),
+                           "m_j": m.m_j[c.number], "m_r": m.m_rot[c.number]}
+                          for c in spec.cylinders],
+            "angles": angles,
+            "torque": {"mean": ch.work_torque / spec.cycle, "max": float(d.M_total.max()),
+                       "min": float(d.M_total.min()), "non_uniformity": d.non_uniformity},
+            "pins": {str(p): {"K_r": q.K_r, "Q_max": float(q.Q.max()), "Q_min": float(q.Q.min()),
+                              "Q_mean": float(np.trapezoid(q.Q, d.phi) / spec.cycle)}
+                     for p, q in d.pins.items()},
+            "wear": {"ray_deg": [math.degrees(float(r)) for r in rays],
+                     "load": [float(s) for s in sums]},
+            "checks": {"work_diagram": ch.work_diagram, "work_expected": ch.work_expected,
+                       "work_torque": ch.work_torque, "work_error": ch.work_error,
+                       "inertia_torque_mean": ch.inertia_mean, "brix_dp_max": ch.brix_dp_max,
+                       "p_max": ch.p_max, "series_da_max": ch.da_max, "a_max": ch.a_max,
+                       "series_dPj_max": ch.dPj_max, "two_mass_dM_max": ch.two_mass_dM_max,
+                       "pair_torque_error": ch.pair_torque_error}}
+
+    def to_csv(self, dense: bool = False) -> str:
+        """The per-angle table as CSV (comma-separated, decimal point, units in the headings)."""
+        r = self.dense if dense else self.table
+        buf = io.StringIO()
+        w = csv.writer(buf, lineterminator="\n")
+        head = ["phi_deg"]
+        for c in r.cylinders:
+            head += [f"{name}_{c}" for _, name, _ in COLUMNS]
+        head += ["M_total_Nm"]
+        for p in r.pins:
+            head += [f"Q_T_kN_pin{p}", f"Q_Z_kN_pin{p}", f"Q_kN_pin{p}"]
+        w.writerow(head)
+        for k, phi in enumerate(r.phi):
+            row = [f"{math.degrees(float(phi)):.6g}"]
+            for f in r.cylinders.values():
+                row += [_g(float(getattr(f, a)[k]) * s) for a, _, s in COLUMNS]
+            row.append(_g(float(r.M_total[k])))
+            for q in r.pins.values():
+                row += [_g(float(q.Q_T[k]) * 1e-3), _g(float(q.Q_Z[k]) * 1e-3),
+                        _g(float(q.Q[k]) * 1e-3)]
+            w.writerow(row)
+        return buf.getvalue()
+
+    def write_csv(self, path: str | Path, dense: bool = False) -> None:
+        """Write :meth:`to_csv` to a file."""
+        Path(path).write_text(self.to_csv(dense), encoding="utf-8")
+
+    def sheets(self, size: str | None, standard: str | None, language: str | None,
+               name: str) -> list[Sheet]:
+        from ..sheet.engine import engine_sheets
+
+        return engine_sheets(self, size or self.scene.drawing.sheet,
+                             standard or self.scene.drawing.standard,
+                             language or self.scene.engine.language, name)
+
+
+def _g(v: float) -> str:
+    return f"{v:.9g}" if math.isfinite(v) else ""
+
+
+def _clean(d: dict[str, float]) -> dict[str, float | None]:
+    return {k: (v if math.isfinite(v) else None) for k, v in d.items()}
