@@ -1,0 +1,188 @@
+"""Error estimates: how far each evaluated step may be from the exact value, at every position.
+
+Every step gets an absolute error bound (in the step's own units) propagated to first order from
+its inputs' bounds and its own rounding: a meet of two loci divides the error of the loci by the
+sine of their crossing angle (its condition number), a direction taken from two points divides the
+points' error by their distance, a similarity image by the length of the side it is built on, a
+division by a length by that length. Near a toggle the position plan's error grows like 1/sin, the
+velocity plan's — built on directions taken from the position plan and met at the same angle —
+like 1/sin², the acceleration plan's like 1/sin³, which is how the true errors grow.
+
+The relative error of a quantity is its bound divided by the quantity's scale: the size of its plan
+(the largest vector drawn on it over the positions evaluated; for a link's ω or ε that size over the
+mechanism's length), so a vector that passes through zero (v_C at a dead centre) keeps a finite,
+meaningful relative error.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..geom.vec import Array
+from .graph import Construction, Evaluation
+from .step import Kind, Op, Plan, Step
+
+#: relative error above which a quantity is flagged (settable per call)
+DEFAULT_TOLERANCE = 1e-6
+#: rounding of one operation, in units of the float type's epsilon (a few roundings per step)
+ROUNDINGS_PER_STEP = 2.0
+
+
+@dataclass
+class ErrorEstimate:
+    """Relative error bounds per step id (float32, NaN/inf where no bound exists) and their scales."""
+
+    relative_of: dict[str, Array] = field(default_factory=dict)
+    scale: dict[str, float] = field(default_factory=dict)
+
+    def __contains__(self, step_id: str) -> bool:
+        return step_id in self.relative_of
+
+    def relative(self, step_id: str) -> Array:
+        """Estimated relative error of a step at every position (inf where it cannot be bounded)."""
+        rel = self.relative_of[step_id].astype(float)
+        return np.where(np.isnan(rel), np.inf, rel)
+
+    def absolute(self, step_id: str) -> Array:
+        """Estimated absolute error of a step in its own units (m, m/s, rad/s, N …)."""
+        return self.relative(step_id) * self.scale[step_id]
+
+
+class _Propagator:
+    """Walk the evaluated steps in construction order and bound each one's relative error."""
+
+    def __init__(self, c: Construction, ev: Evaluation, dtype: type = np.float32) -> None:
+        self.c, self.ev = c, ev
+        self.u = float(np.finfo(ev.dtype).eps) * ROUNDINGS_PER_STEP
+        self.dtype = dtype
+        self.rel: dict[str, Array] = {}
+        self.plan_size = self._plan_sizes()
+        self.length = self.plan_size.get(Plan.POSITION, 0.0) or 1.0
+        self._distances: dict[tuple[str, str], Array] = {}
+
+    def _plan_sizes(self) -> dict[Plan, float]:
+        """Sizes of the plans that do not depend on how close a position is to a singular one.
+
+        The position plan: the largest coordinate drawn; the velocity and acceleration plans:
+        ω1·L and (ω1² + |ε1|)·L of the driving link; the force plan: the median over the
+        positions of its largest vector (forces have no intrinsic scale).
+        """
+        sizes: dict[Plan, float] = {}
+        force_max: list[Array] = []
+        omega = epsilon = 0.0
+        for sid, value in self.ev.values.items():
+            step = self.c[sid]
+            if step.op is Op.DRIVE_ACCELERATION:
+                omega = abs(float(step.param("omega")))
+                epsilon = abs(float(step.param("epsilon", 0.0)))
+            elif step.op is Op.DRIVE_VELOCITY:
+                omega = abs(float(step.param("omega")))
+            if step.kind is not Kind.POINT or not value.size:
+                continue
+            if step.plan is Plan.POSITION:
+                with np.errstate(invalid="ignore"):
+                    m = float(np.nanmax(np.abs(value)))
+                if np.isfinite(m):
+                    sizes[Plan.POSITION] = max(sizes.get(Plan.POSITION, 0.0), m)
+            elif step.plan is Plan.FORCE:
+                force_max.append(np.abs(value).max(axis=-1))
+        length = sizes.get(Plan.POSITION, 0.0) or 1.0
+        sizes[Plan.VELOCITY] = omega * length
+        sizes[Plan.ACCELERATION] = (omega * omega + epsilon) * length
+        if force_max:
+            with np.errstate(invalid="ignore"):
+                per_position = np.nanmax(np.stack(force_max), axis=0)
+            finite = per_position[np.isfinite(per_position)]
+            sizes[Plan.FORCE] = float(np.median(finite)) if finite.size else 0.0
+        return sizes
+
+    def scale_of(self, step: Step) -> float:
+        """The size a step's error is measured against."""
+        size = self.plan_size.get(step.plan, 0.0)
+        if step.kind is Kind.POINT or step.kind is Kind.LINE:
+            return size
+        if step.plan is Plan.POSITION:
+            return 1.0                                   # angles (rad)
+        if step.op in (Op.GUIDE_OFFSET, Op.INERTIA_OFFSET):
+            return self.length
+        if step.op in (Op.MOMENT_INERTIA, Op.MOMENT_SUM, Op.MOMENT_CLOSE, Op.BALANCING_MOMENT,
+                       Op.ZHUKOVSKY):
+            return size * self.length                    # moments: force × length
+        return size / self.length                        # ω, ε: a plan's size over a length
+
+    def distance(self, a: str, b: str) -> Array:
+        """|b − a| of two point steps, relative to the mechanism's length (memoised per pair)."""
+        key = (a, b) if a < b else (b, a)
+        if key not in self._distances:
+            d = self.ev.values[b] - self.ev.values[a]
+            d2 = np.einsum("ij,ij->i", d, d) if d.ndim == 2 else np.sum(d * d, axis=-1)
+            self._distances[key] = (np.sqrt(d2) / self.length).astype(self.dtype)
+        return self._distances[key]
+
+    def run(self, ids: Iterable[str]) -> ErrorEstimate:
+        out = ErrorEstimate()
+        n, u = self.ev.n, self.dtype(self.u)
+        for sid in ids:
+            if sid not in self.ev.values:
+                continue
+            step = self.c[sid]
+            if not step.inputs:
+                rel = np.full(n, u, self.dtype)
+            else:
+                rel = self.rel[step.inputs[0]] + u
+                for i in step.inputs[1:]:
+                    np.maximum(rel, self.rel[i] + u, out=rel)
+                amplify = _AMPLIFY.get(step.op)
+                with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                    if amplify is not None:
+                        np.divide(rel, amplify(self, step), out=rel)
+                    sine = self.ev.sines.get(sid)
+                    if sine is not None:
+                        np.divide(rel, sine, out=rel, casting="same_kind")
+            self.rel[sid] = rel
+            out.relative_of[sid] = rel
+            out.scale[sid] = self.scale_of(step)
+        return out
+
+
+# -- amplification: what a step divides its inputs' errors by (besides a meet's sine) -----------
+Amplify = Callable[[_Propagator, Step], Array]
+
+
+def _first_two(p: _Propagator, s: Step) -> Array:
+    return p.distance(s.inputs[0], s.inputs[1])
+
+
+def _last_two(p: _Propagator, s: Step) -> Array:
+    return p.distance(s.inputs[-2], s.inputs[-1])
+
+
+def _similar_side(p: _Propagator, s: Step) -> Array:
+    _a, _b, pa, pb, _px = s.inputs
+    return p.distance(pa, pb)
+
+
+def _force_line(p: _Propagator, s: Step) -> Array:
+    if len(s.inputs) == 3:
+        return p.distance(s.inputs[1], s.inputs[2])
+    return np.ones(p.ev.n, p.dtype)
+
+
+_AMPLIFY: dict[Op, Amplify] = {
+    Op.ANGLE_OF: _first_two,            # a direction from two points
+    Op.CARRIER_ANGLE: _first_two,       # the guide through a point seen from its pivot
+    Op.LINE_PERP: _last_two,            # ⊥ a link given by two points
+    Op.OMEGA: _first_two,               # v_rel / l
+    Op.EPSILON: _first_two,             # a^t / l
+    Op.SIMILAR_IMAGE: _similar_side,    # a triangle built on a side of the link
+    Op.FORCE_LINE: _force_line,
+}
+
+
+def estimate_errors(c: Construction, ev: Evaluation, targets: Iterable[str] | None = None) -> ErrorEstimate:
+    """Bound the error of every evaluated step (or of ``targets`` and their ancestors)."""
+    ids = c.ancestors(targets) if targets is not None else [s for s in c.steps if s in ev.values]
+    return _Propagator(c, ev).run(ids)
