@@ -169,3 +169,43 @@ def test_regular_positions_of_every_template_have_tiny_estimates(path):
     worst = max(float(np.max(est.relative(sid))) for sid in targets)
     assert worst < 1e-12, worst
 
+
+
+def test_a_sweep_never_dies_for_one_singular_position(tmp_path, capsys):
+    """--positions 360 through the pivot: 359 positions returned, the singular one listed, exit 3."""
+    from mechplan.cli import main
+
+    scene = tmp_path / "pivot.toml"
+    scene.write_text(SLOTTED_THROUGH_PIVOT, encoding="utf-8")
+    assert main(["solve", str(scene), "--positions", "360", "--json"]) == 3
+    out, err = capsys.readouterr()
+    import json
+
+    doc = json.loads(out)
+    assert len(doc["positions"]) == 360
+    failed = doc["accuracy"]["failures"]
+    assert [f["phi_deg"] for f in failed] == [270.0]
+    assert "singular" in failed[0]["reason"]
+    assert "φ = 270°" in err
+    # the other positions are exact: ω3 = ω1/2 wherever the estimate is within tolerance
+    flagged = {(f["position"], f["subject"]) for f in doc["accuracy"]["flags"]}
+    for k, pos in enumerate(doc["positions"]):
+        if k != 270 and (k, "3") not in flagged:
+            assert abs(pos["links"]["3"]["omega"] - 5.0) <= 1e-9
+            assert pos["error_estimate"]["links"]["3"]["omega"] <= DEFAULT_TOLERANCE
+    # an individually requested singular position is refused with exit code 2
+    assert main(["solve", str(scene), "--at", "270"]) == 2
+    assert "cannot be computed at φ = 270°" in capsys.readouterr().err
+
+
+def test_estimates_in_the_json_of_a_regular_template(capsys):
+    from mechplan.cli import main
+
+    assert main(["solve", str(TEMPLATES[0]), "--json"]) == 0
+    import json
+
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["accuracy"]["flags"] == [] and doc["accuracy"]["failures"] == []
+    est = doc["positions"][0]["error_estimate"]
+    values = [v for p in est["points"].values() for v in p.values()]
+    assert values and all(v is not None and v < 1e-12 for v in values)

@@ -83,9 +83,9 @@ class _Propagator:
             if step.kind is not Kind.POINT or not value.size:
                 continue
             if step.plan is Plan.POSITION:
-                with np.errstate(invalid="ignore"):
-                    m = float(np.nanmax(np.abs(value)))
-                if np.isfinite(m):
+                finite = np.abs(value[np.isfinite(value)])
+                m = float(finite.max()) if finite.size else 0.0
+                if m > 0.0:
                     sizes[Plan.POSITION] = max(sizes.get(Plan.POSITION, 0.0), m)
             elif step.plan is Plan.FORCE:
                 force_max.append(np.abs(value).max(axis=-1))

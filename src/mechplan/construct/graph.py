@@ -99,6 +99,16 @@ class Construction:
         """Tell whether a result (``"v"``, ``"a"``, ``"angle"``, ``"omega"``, ``"epsilon"``) exists."""
         return f"{quantity}_{subject}" in self.results
 
+    def quantity_of(self, step_id: str) -> tuple[str, str] | None:
+        """Return (quantity, subject) of a result step — ("v", "C"), ("omega", "2"), ("r", "C") …"""
+        if step_id.startswith("pos.") and step_id.count(".") == 1:
+            return ("r", step_id[4:])
+        for key, sid in self.results.items():
+            if sid == step_id:
+                quantity, _, subject = key.partition("_")
+                return (quantity, subject)
+        return None
+
     def _result(self, quantity: str, subject: str) -> str:
         try:
             return self.results[f"{quantity}_{subject}"]
