@@ -209,3 +209,17 @@ def test_estimates_in_the_json_of_a_regular_template(capsys):
     est = doc["positions"][0]["error_estimate"]
     values = [v for p in est["points"].values() for v in p.values()]
     assert values and all(v is not None and v < 1e-12 for v in values)
+
+
+def test_a_plan_drawn_at_a_poor_position_is_marked_on_the_sheet():
+    from mechplan.sheet.compose import compose
+    from mechplan.sheet.primitives import Text
+    from mechplan.solve import solve
+
+    def marks(at):
+        sol = solve(parse_scene(SLOTTED_THROUGH_PIVOT, "pivot.toml"), at_deg=[at])
+        return [p.string for s in compose(sol).sheets for p in s.flat()
+                if isinstance(p, Text) and p.string.startswith("⚠")]
+
+    assert len(marks(270.001)) == 2          # velocity and acceleration plans both marked
+    assert marks(200.0) == []
