@@ -27,6 +27,9 @@ from .step import Kind, Op, Plan, Step
 
 #: relative error above which a quantity is flagged (settable per call)
 DEFAULT_TOLERANCE = 1e-6
+#: an estimate at or above this (100 % of the plan's scale, or no bound at all) means the value
+#: carries no information: the position cannot be computed
+UNBOUNDED = 1.0
 #: rounding of one operation, in units of the float type's epsilon (a few roundings per step)
 ROUNDINGS_PER_STEP = 2.0
 
@@ -37,18 +40,93 @@ class ErrorEstimate:
 
     relative_of: dict[str, Array] = field(default_factory=dict)
     scale: dict[str, float] = field(default_factory=dict)
+    #: max(1, |value| / scale) of the results: a result larger than its plan (a slider running
+    #: far out, an acceleration blowing up near a toggle) is measured against its own size
+    divisor: dict[str, Array] = field(default_factory=dict)
 
     def __contains__(self, step_id: str) -> bool:
         return step_id in self.relative_of
 
     def relative(self, step_id: str) -> Array:
-        """Estimated relative error of a step at every position (inf where it cannot be bounded)."""
+        """Estimated relative error at every position (inf where it cannot be bounded).
+
+        Relative to the larger of the plan's scale and the result's own size.
+        """
         rel = self.relative_of[step_id].astype(float)
+        if step_id in self.divisor:
+            rel = rel / self.divisor[step_id]
         return np.where(np.isnan(rel), np.inf, rel)
 
     def absolute(self, step_id: str) -> Array:
         """Estimated absolute error of a step in its own units (m, m/s, rad/s, N …)."""
-        return self.relative(step_id) * self.scale[step_id]
+        rel = self.relative_of[step_id].astype(float)
+        return np.where(np.isnan(rel), np.inf, rel) * self.scale[step_id]
+
+
+def length_scale(c: Construction, samples: int = 72) -> float:
+    """The size of the mechanism: its position plan's largest coordinate, median over a turn (m).
+
+    A property of the mechanism, not of the positions evaluated, so an estimate at a position does
+    not depend on which other positions are evaluated with it. Computed once per construction.
+    """
+    if "length" not in c.derived:
+        points = [s.id for s in c if s.plan is Plan.POSITION and s.kind is Kind.POINT]
+        ev = c.evaluate(np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False))
+        ev.evaluate_all(points)
+        per_sample = np.zeros(samples)
+        for sid in points:
+            with np.errstate(invalid="ignore"):
+                per_sample = np.fmax(per_sample, np.abs(ev.values[sid]).max(axis=-1))
+        # the median over a turn: a slider running out to infinity near a singular sample does
+        # not make the whole mechanism large
+        finite = per_sample[np.isfinite(per_sample) & (per_sample > 0.0)]
+        c.derived["length"] = float(np.median(finite)) if finite.size else 1.0
+    return c.derived["length"]
+
+
+def plan_sizes(c: Construction, ev: Evaluation | None = None) -> dict[Plan, float]:
+    """Sizes of the plans that do not depend on how close a position is to a singular one.
+
+    The position plan: the mechanism's length scale (:func:`length_scale`); the velocity and
+    acceleration plans: ω1·L and (ω1² + |ε1|)·L of the driving link; the force plan (given an
+    evaluation): the median over the positions of its largest vector (forces have no intrinsic
+    scale).
+    """
+    length = length_scale(c)
+    omega = epsilon = 0.0
+    for step in c:
+        if step.op is Op.DRIVE_ACCELERATION:
+            omega = abs(float(step.param("omega")))
+            epsilon = abs(float(step.param("epsilon", 0.0)))
+        elif step.op is Op.DRIVE_VELOCITY:
+            omega = abs(float(step.param("omega")))
+    sizes = {Plan.POSITION: length, Plan.VELOCITY: omega * length,
+             Plan.ACCELERATION: (omega * omega + epsilon) * length}
+    if ev is not None:
+        force_max = [np.abs(v).max(axis=-1) for sid, v in ev.values.items()
+                     if c[sid].plan is Plan.FORCE and c[sid].kind is Kind.POINT and v.size]
+        if force_max:
+            with np.errstate(invalid="ignore"):
+                per_position = np.nanmax(np.stack(force_max), axis=0)
+            finite = per_position[np.isfinite(per_position)]
+            sizes[Plan.FORCE] = float(np.median(finite)) if finite.size else 0.0
+    return sizes
+
+
+def scale_of(step: Step, sizes: dict[Plan, float]) -> float:
+    """The size a step's error is measured against (its plan's size, or that over a length)."""
+    size = sizes.get(step.plan, 0.0)
+    length = sizes[Plan.POSITION]
+    if step.kind is Kind.POINT or step.kind is Kind.LINE:
+        return size
+    if step.plan is Plan.POSITION:
+        return 1.0                                   # angles (rad)
+    if step.op in (Op.GUIDE_OFFSET, Op.INERTIA_OFFSET):
+        return length
+    if step.op in (Op.MOMENT_INERTIA, Op.MOMENT_SUM, Op.MOMENT_CLOSE, Op.BALANCING_MOMENT,
+                   Op.ZHUKOVSKY):
+        return size * length                         # moments: force × length
+    return size / length                             # ω, ε: a plan's size over a length
 
 
 class _Propagator:
@@ -59,59 +137,13 @@ class _Propagator:
         self.u = float(np.finfo(ev.dtype).eps) * ROUNDINGS_PER_STEP
         self.dtype = dtype
         self.rel: dict[str, Array] = {}
-        self.plan_size = self._plan_sizes()
-        self.length = self.plan_size.get(Plan.POSITION, 0.0) or 1.0
+        self.plan_size = plan_sizes(c, ev)
+        self.length = self.plan_size[Plan.POSITION]
         self._distances: dict[tuple[str, str], Array] = {}
-
-    def _plan_sizes(self) -> dict[Plan, float]:
-        """Sizes of the plans that do not depend on how close a position is to a singular one.
-
-        The position plan: the largest coordinate drawn; the velocity and acceleration plans:
-        ω1·L and (ω1² + |ε1|)·L of the driving link; the force plan: the median over the
-        positions of its largest vector (forces have no intrinsic scale).
-        """
-        sizes: dict[Plan, float] = {}
-        force_max: list[Array] = []
-        omega = epsilon = 0.0
-        for sid, value in self.ev.values.items():
-            step = self.c[sid]
-            if step.op is Op.DRIVE_ACCELERATION:
-                omega = abs(float(step.param("omega")))
-                epsilon = abs(float(step.param("epsilon", 0.0)))
-            elif step.op is Op.DRIVE_VELOCITY:
-                omega = abs(float(step.param("omega")))
-            if step.kind is not Kind.POINT or not value.size:
-                continue
-            if step.plan is Plan.POSITION:
-                finite = np.abs(value[np.isfinite(value)])
-                m = float(finite.max()) if finite.size else 0.0
-                if m > 0.0:
-                    sizes[Plan.POSITION] = max(sizes.get(Plan.POSITION, 0.0), m)
-            elif step.plan is Plan.FORCE:
-                force_max.append(np.abs(value).max(axis=-1))
-        length = sizes.get(Plan.POSITION, 0.0) or 1.0
-        sizes[Plan.VELOCITY] = omega * length
-        sizes[Plan.ACCELERATION] = (omega * omega + epsilon) * length
-        if force_max:
-            with np.errstate(invalid="ignore"):
-                per_position = np.nanmax(np.stack(force_max), axis=0)
-            finite = per_position[np.isfinite(per_position)]
-            sizes[Plan.FORCE] = float(np.median(finite)) if finite.size else 0.0
-        return sizes
 
     def scale_of(self, step: Step) -> float:
         """The size a step's error is measured against."""
-        size = self.plan_size.get(step.plan, 0.0)
-        if step.kind is Kind.POINT or step.kind is Kind.LINE:
-            return size
-        if step.plan is Plan.POSITION:
-            return 1.0                                   # angles (rad)
-        if step.op in (Op.GUIDE_OFFSET, Op.INERTIA_OFFSET):
-            return self.length
-        if step.op in (Op.MOMENT_INERTIA, Op.MOMENT_SUM, Op.MOMENT_CLOSE, Op.BALANCING_MOMENT,
-                       Op.ZHUKOVSKY):
-            return size * self.length                    # moments: force × length
-        return size / self.length                        # ω, ε: a plan's size over a length
+        return scale_of(step, self.plan_size)
 
     def distance(self, a: str, b: str) -> Array:
         """|b − a| of two point steps, relative to the mechanism's length (memoised per pair)."""
@@ -122,7 +154,7 @@ class _Propagator:
             self._distances[key] = (np.sqrt(d2) / self.length).astype(self.dtype)
         return self._distances[key]
 
-    def run(self, ids: Iterable[str]) -> ErrorEstimate:
+    def run(self, ids: Iterable[str], targets: frozenset[str]) -> ErrorEstimate:
         out = ErrorEstimate()
         n, u = self.ev.n, self.dtype(self.u)
         for sid in ids:
@@ -143,8 +175,11 @@ class _Propagator:
                     if sine is not None:
                         np.divide(rel, sine, out=rel, casting="same_kind")
             self.rel[sid] = rel
+            scale = self.scale_of(step)
             out.relative_of[sid] = rel
-            out.scale[sid] = self.scale_of(step)
+            out.scale[sid] = scale
+            if sid in targets and scale > 0.0:
+                out.divisor[sid] = _magnitude_divisor(self.ev.values[sid], scale, self.dtype)
         return out
 
 
@@ -182,7 +217,24 @@ _AMPLIFY: dict[Op, Amplify] = {
 }
 
 
-def estimate_errors(c: Construction, ev: Evaluation, targets: Iterable[str] | None = None) -> ErrorEstimate:
-    """Bound the error of every evaluated step (or of ``targets`` and their ancestors)."""
-    ids = c.ancestors(targets) if targets is not None else [s for s in c.steps if s in ev.values]
-    return _Propagator(c, ev).run(ids)
+def _magnitude_divisor(value: Array, scale: float, dtype: type) -> Array:
+    if value.ndim == 2:
+        size = np.sqrt(np.einsum("ij,ij->i", value, value))
+    else:
+        size = np.abs(value)
+    with np.errstate(invalid="ignore"):
+        return np.maximum(size / scale, 1.0).astype(dtype)
+
+
+def estimate_errors(c: Construction, ev: Evaluation,
+                    targets: Iterable[str] | None = None) -> ErrorEstimate:
+    """Bound the error of every evaluated step (or of ``targets`` and their ancestors).
+
+    The results (``targets``, or every evaluated step) are measured against the larger of their
+    plan's scale and their own size.
+    """
+    if targets is None:
+        wanted = [s for s in c.steps if s in ev.values]
+        return _Propagator(c, ev).run(wanted, frozenset(wanted))
+    targets = list(targets)
+    return _Propagator(c, ev).run(c.ancestors(targets), frozenset(targets))

@@ -41,6 +41,8 @@ class Construction:
         default_factory=dict)
     #: named results: quantity key ("v_C", "omega_2", "r_C") → step id
     results: dict[str, str] = field(default_factory=dict)
+    #: constants derived once from the whole construction (e.g. its length scale)
+    derived: dict[str, float] = field(default_factory=dict)
 
     def add(self, step: Step) -> str:
         """Add a step whose inputs are already present; return its id."""

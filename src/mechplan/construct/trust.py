@@ -17,8 +17,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import MechplanError, SingularError
-from .estimate import ErrorEstimate, estimate_errors
+from .estimate import UNBOUNDED, ErrorEstimate, estimate_errors
 from .graph import Construction, Evaluation
+from .step import Op
 from .validity import MAX_CONDITION, ensure_valid
 
 
@@ -44,6 +45,14 @@ class Failure:
     reason: str
 
 
+#: results legitimately undefined where their force vanishes (the line of action of a zero force)
+_UNDEFINED_AT_ZERO = frozenset({Op.GUIDE_OFFSET, Op.INERTIA_OFFSET, Op.LINE_OF_ACTION})
+
+
+def _checked(c: Construction, targets: Sequence[str]) -> list[str]:
+    return [sid for sid in targets if c[sid].op not in _UNDEFINED_AT_ZERO]
+
+
 def _subjects(c: Construction, targets: Sequence[str]) -> dict[str, tuple[str, str]]:
     out = {}
     for sid in targets:
@@ -52,38 +61,42 @@ def _subjects(c: Construction, targets: Sequence[str]) -> dict[str, tuple[str, s
     return out
 
 
-def unbounded_positions(est: ErrorEstimate, targets: Sequence[str], n: int) -> np.ndarray:
-    """Positions where some target has no finite error bound (exactly singular)."""
+def unbounded_positions(est: ErrorEstimate, targets: Sequence[str], n: int,
+                        undefined: frozenset[str] = frozenset()) -> np.ndarray:
+    """Positions where some target's error bound is 100 % of its scale or more (or unbounded)."""
     bad = np.zeros(n, dtype=bool)
     for sid in targets:
-        if sid in est:
-            bad |= ~np.isfinite(est.relative(sid))
+        if sid in est and sid not in undefined:
+            bad |= ~(est.relative(sid) < UNBOUNDED)
     return bad
 
 
 def refuse_unbounded(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],
                      file: str | None = None) -> None:
     """Raise :class:`SingularError` for the first target that cannot be bounded at a position."""
-    for sid in c.ancestors(targets):
+    for sid in _checked(c, targets):
         if sid not in est:
             continue
         rel = est.relative(sid)
-        bad = ~np.isfinite(rel)
+        bad = ~(rel < UNBOUNDED)
         if np.any(bad):
             step = c[sid]
             k = int(np.argmax(bad))
             phi_deg = math.degrees(float(ev.phi[k]))
+            bound = f"{rel[k]:.1e}" if math.isfinite(rel[k]) else "no bound"
             raise SingularError(
                 f"{step.plan.value} plan, group {step.group or 'I'}: {step.label} cannot be "
-                f"computed at φ = {phi_deg:g}° (a direction from coincident points or a division "
-                "by a zero length: the position is singular); choose another position",
+                f"computed at φ = {phi_deg:g}° (estimated relative error {bound} ≥ 1: a direction "
+                "from nearly coincident points or a meet of nearly parallel loci, the position is "
+                "singular or too close to it); choose another position",
                 step=step.label, phi_deg=phi_deg, condition=math.inf, file=file)
 
 
 def failures(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],
              file: str | None = None, max_condition: float = MAX_CONDITION) -> list[Failure]:
     """Positions of a sweep that cannot be built, each with the message a single solve would give."""
-    bad = unbounded_positions(est, targets, ev.n)
+    undefined = frozenset(targets) - frozenset(_checked(c, targets))
+    bad = unbounded_positions(est, targets, ev.n, undefined)
     for gap in ev.gaps.values():
         bad |= gap > 0
     for sine in ev.sines.values():
@@ -117,6 +130,8 @@ def flags(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence
         if sid not in est:
             continue
         rel = est.relative(sid)
+        if c[sid].op in _UNDEFINED_AT_ZERO:
+            rel = np.where(np.isfinite(ev[sid]), rel, 0.0)
         for k in np.flatnonzero((rel > tolerance) & ~skip_mask):
             quantity, subject = names[sid]
             step = c[sid]
