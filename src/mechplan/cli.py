@@ -11,6 +11,9 @@ from pathlib import Path
 from . import __version__
 from .errors import MechplanError
 
+#: exit code of a run that completed but flagged results or left positions out (see README)
+FLAGGED = 3
+
 LANGUAGE_CHOICES = ("en", "ru", "vi", "zh")
 SHEETS = ("A0", "A1", "A2", "A3", "A4")
 STANDARDS = ("iso", "gost", "tcvn")
@@ -35,11 +38,14 @@ def _solve(args: argparse.Namespace) -> int:
         print(json.dumps(study.to_json(), ensure_ascii=False, indent=1))
     else:
         print(study.report(args.lang))
+    warnings = study.warnings(args.lang) if isinstance(study, MechanismStudy) else []
+    for line in warnings:
+        print(line, file=sys.stderr)
     if args.stats and isinstance(study, MechanismStudy):
         sol = study.solution
         print(f"steps: {len(sol.construction.steps)} in the construction, "
               f"{sol.ev.evaluated} evaluated for {sol.positions} position(s)", file=sys.stderr)
-    return 0
+    return FLAGGED if warnings else 0
 
 
 def _draw(args: argparse.Namespace) -> int:

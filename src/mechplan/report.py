@@ -6,10 +6,19 @@ import math
 
 import numpy as np
 
-from .construct.protocol import (MM, PLAN_TITLE, SENSE, localize_direction, pole_label, protocol,
-                                 vector_text)
+from .construct.protocol import (
+    MM,
+    PLAN_TITLE,
+    SENSE,
+    localize_direction,
+    pole_label,
+    protocol,
+    vector_text,
+)
 from .construct.step import Plan
+from .i18n import message
 from .solve import Solution, segment_table
+from .trust_report import summary_lines
 from .units import format_number
 
 WORDS = {
@@ -47,10 +56,14 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         out.append(f"  {g.name}: {g.kind}")
     plans = tuple(PLANS[p] for p in sol.plans if p in PLANS)
     theta = sol.construction.drive.absolute(sol.phi)
+    failed = {f.k: f for f in sol.failures}
     for k in range(sol.positions):
         phi_txt = format_number(math.degrees(sol.phi[k]), 2, lang)
         th_txt = format_number(math.degrees(math.remainder(theta[k], 2 * math.pi)), 2, lang)
         out += ["", f"## {w['position']} {k}: φ = {phi_txt}° ({w['crank']} {th_txt}° {w['fromx']})"]
+        if k in failed:
+            out.append(message("estimate.not_built", lang, reason=failed[k].reason))
+            continue
         steps = protocol(sol.construction, sol.ev, k, lang, sol.scales, plans)
         for plan in plans:
             mu = sol.scales.get(plan, 1.0)
@@ -77,6 +90,7 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         out += _results(sol, k, lang)
         if "forces" in sol.extras:
             out += [""] + _forces(sol, k, lang)
+    out += summary_lines(sol, lang)
     return "\n".join(out)
 
 

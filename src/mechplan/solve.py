@@ -10,11 +10,13 @@ import numpy as np
 
 from . import __version__
 from .construct.builder import build_construction
+from .construct.estimate import DEFAULT_TOLERANCE, ErrorEstimate, estimate_errors
 from .construct.extremes import extreme_positions
 from .construct.graph import Construction, Evaluation
 from .construct.scale import SCALE_KEYS, choose_scale
 from .construct.segments import SegmentKind
 from .construct.step import Plan
+from .construct.trust import Failure, Flag, failures, flags, refuse_unbounded
 from .construct.validity import MAX_CONDITION, ensure_valid
 from .errors import SceneError
 from .limits import ensure_within_budget
@@ -38,6 +40,12 @@ class Solution:
     targets: list[str]
     scales: dict[Plan, float] = field(default_factory=dict)
     extras: dict[str, Any] = field(default_factory=dict)
+    #: relative error estimate of every evaluated step at every position
+    estimate: ErrorEstimate = field(default_factory=ErrorEstimate)
+    #: results whose estimate exceeds the tolerance, and sweep positions that could not be built
+    flags: list[Flag] = field(default_factory=list)
+    failures: list[Failure] = field(default_factory=list)
+    tolerance: float = DEFAULT_TOLERANCE
 
     @property
     def positions(self) -> int:
@@ -117,11 +125,15 @@ def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[st
 
 def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = None,
           plans: tuple[str, ...] | None = None, loading: Any = None,
-          max_condition: float = MAX_CONDITION, *,
+          max_condition: float = MAX_CONDITION, tolerance: float = DEFAULT_TOLERANCE, *,
           built: tuple[Structure, Construction] | None = None,
           scales: bool = True) -> Solution:
-    """Solve a scene at the positions it (or the caller) asks for; raise on unbuildable ones.
+    """Solve a scene at the positions it (or the caller) asks for.
 
+    Positions asked for by their angle (``at_deg``, or the scene's list of angles) must be
+    computable: an unreachable or singular one raises. A sweep (``count`` positions, or the scene's
+    count) returns every position it can build and lists the others in ``Solution.failures``.
+    Results whose estimated relative error exceeds ``tolerance`` are listed in ``Solution.flags``.
     ``built`` reuses a structure and construction from :func:`build` (same scene, plans and
     loading); ``scales=False`` chooses no drawing scale factors (nothing will be drawn).
     """
@@ -131,14 +143,23 @@ def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = N
         phi = np.radians(np.asarray(at_deg, dtype=float))
     else:
         phi = crank_positions(scene, c, count)
+    individually = bool(at_deg) or (count is None and bool(scene.positions.angles))
     targets = targets_for(scene, c, plans)
     ensure_within_budget(int(phi.shape[0]), len(c.ancestors(targets)), file=scene.path,
                          key=None if at_deg or count else "positions.count")
     ev = c.evaluate(phi)
     ev.evaluate_all(targets)
-    ensure_valid(c, ev, scene.path, max_condition)
+    estimate = estimate_errors(c, ev, targets)
+    failed: list[Failure] = []
+    if individually:
+        ensure_valid(c, ev, scene.path, max_condition)
+        refuse_unbounded(c, ev, estimate, targets, scene.path)
+    else:
+        failed = failures(c, ev, estimate, targets, scene.path, max_condition)
     sol = Solution(scene, structure, c, phi, ev, plans, targets,
-                   choose_scales(scene, c, ev, plans) if scales else {})
+                   choose_scales(scene, c, ev, plans) if scales else {},
+                   estimate=estimate, tolerance=tolerance, failures=failed,
+                   flags=flags(c, ev, estimate, targets, tolerance, [f.k for f in failed]))
     if "force" in plans:
         from .dynamics.kinetostatics import analyse_forces
         from .dynamics.loading import Loading
@@ -153,6 +174,8 @@ def _vec(a: np.ndarray) -> list[float]:
 
 def to_json(sol: Solution) -> dict[str, Any]:
     """The JSON document of ``mechplan solve --json`` (SI units, ω/ε counter-clockwise +)."""
+    from .trust_report import position_json, trust_json
+
     scene, c, ev = sol.scene, sol.construction, sol.ev
     points = scene.points_of_interest or tuple(
         p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points)
@@ -185,11 +208,12 @@ def to_json(sol: Solution) -> dict[str, Any]:
             "points": pts, "links": links}
         if "forces" in sol.extras:
             entry_k.update(sol.extras["forces"].json(k))
+        entry_k["error_estimate"] = position_json(sol, k)
         positions.append(entry_k)
     return {"mechplan": __version__, "title": scene.title, "dof": sol.structure.dof,
             "structure": sol.structure.formula,
             "groups": [{"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups],
-            "positions": positions,
+            "positions": positions, "accuracy": trust_json(sol),
             "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated}}
 
 

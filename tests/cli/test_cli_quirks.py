@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 import shutil
 import subprocess
 from pathlib import Path
@@ -51,8 +50,8 @@ def test_new_list_and_help_name_every_template(capsys) -> None:
 
 
 @pytest.mark.parametrize("name", ["quick_return", "quick_return.toml"])
-def test_new_with_or_without_suffix(tmp_path: Path, capsys, name: str) -> None:
-    os.chdir(tmp_path)
+def test_new_with_or_without_suffix(tmp_path: Path, capsys, name: str, monkeypatch) -> None:
+    monkeypatch.chdir(tmp_path)
     code, out, _ = run(["new", name], capsys)
     assert code == 0 and out.strip() == "quick_return.toml"
     assert (tmp_path / "quick_return.toml").read_text(encoding="utf-8") == \

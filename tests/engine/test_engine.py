@@ -6,6 +6,7 @@ from __future__ import annotations
 import csv
 import io
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -14,6 +15,8 @@ from helpers import moto
 from mechplan.dynamics.engine.checks import two_mass_torque_error
 from mechplan.errors import SceneError
 from mechplan.scene import parse_scene
+
+TEMPLATES = Path(__file__).resolve().parents[2] / "templates"
 from mechplan.solve import solve
 from mechplan.studies import solve_text
 from mechplan.studies.engine import EngineStudy
@@ -132,7 +135,7 @@ def test_v_engine_side_by_side_shares_a_pin():
 
 def test_articulated_pair_is_exact_and_closes_its_work():
     from mechplan.studies import solve_file
-    st = solve_file("templates/v_engine_dynamics.toml")
+    st = solve_file(TEMPLATES / "v_engine_dynamics.toml")
     assert isinstance(st, EngineStudy)
     ch = st.checks
     assert ch.work_error < 1e-9
@@ -183,7 +186,7 @@ def test_firing_order_must_list_every_cylinder_once():
 def test_articulated_pair_torque_equals_kinetostatic_balancing_moment():
     """The whole master/articulated linkage through mechplan's force plans: −M_b = M1 + M2."""
     from mechplan.studies import solve_file
-    st = solve_file("templates/v_engine_dynamics.toml")
+    st = solve_file(TEMPLATES / "v_engine_dynamics.toml")
     m = st.model
     degs = np.arange(0.0, 720.0, 20.0)
     phi = np.radians(degs)

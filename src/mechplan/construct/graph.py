@@ -41,6 +41,8 @@ class Construction:
         default_factory=dict)
     #: named results: quantity key ("v_C", "omega_2", "r_C") → step id
     results: dict[str, str] = field(default_factory=dict)
+    #: constants derived once from the whole construction (e.g. its length scale)
+    derived: dict[str, float] = field(default_factory=dict)
 
     def add(self, step: Step) -> str:
         """Add a step whose inputs are already present; return its id."""
@@ -98,6 +100,16 @@ class Construction:
     def has_result(self, quantity: str, subject: str) -> bool:
         """Tell whether a result (``"v"``, ``"a"``, ``"angle"``, ``"omega"``, ``"epsilon"``) exists."""
         return f"{quantity}_{subject}" in self.results
+
+    def quantity_of(self, step_id: str) -> tuple[str, str] | None:
+        """Return (quantity, subject) of a result step — ("v", "C"), ("omega", "2"), ("r", "C") …"""
+        if step_id.startswith("pos.") and step_id.count(".") == 1:
+            return ("r", step_id[4:])
+        for key, sid in self.results.items():
+            if sid == step_id:
+                quantity, _, subject = key.partition("_")
+                return (quantity, subject)
+        return None
 
     def _result(self, quantity: str, subject: str) -> str:
         try:

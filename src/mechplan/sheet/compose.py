@@ -13,6 +13,7 @@ from ..construct.extremes import extreme_positions
 from ..construct.scale import round_scale
 from ..construct.step import Plan
 from ..errors import DrawingError, MechplanError
+from ..i18n import message
 from ..model.mechanism import GROUND, PairKind
 from ..solve import Solution
 from .frame import make_frame
@@ -90,8 +91,9 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
         phi_deg = math.degrees(float(sol.phi[k]))
         for plan in (Plan.VELOCITY, Plan.ACCELERATION):
             if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
-                panels.append(vector_plan(c, ev_all, k, plan, mu[plan], lang,
-                                          plan_title(plan, lang, k, phi_deg)))
+                panels.append(_marked(vector_plan(c, ev_all, k, plan, mu[plan], lang,
+                                                  plan_title(plan, lang, k, phi_deg)),
+                                      sol, k, plan, lang))
         if "force" in sol.plans:
             groups = list(dict.fromkeys(s.group for s in c.segments if s.plan is Plan.FORCE))
             for group in groups:
@@ -102,6 +104,20 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
             if lever is not None:
                 panels.append(lever)
     return panels
+
+
+def _marked(panel: Panel, sol: Solution, k: int, plan: Plan, lang: str) -> Panel:
+    """Add a warning under a plan drawn at a position whose results have a poor error estimate."""
+    worst = 0.0
+    for sid in sol.targets:
+        if sid in sol.estimate and sol.construction[sid].plan is plan:
+            worst = max(worst, float(sol.estimate.relative(sid)[k]))
+    if worst > sol.tolerance:
+        x0, y0, _, _ = panel.bounds()
+        estimate = f"{worst:.1e}" if math.isfinite(worst) else "∞"
+        panel.primitives.append(Text((x0, y0 - 6.0), message("estimate.sheet_mark", lang,
+                                                             estimate=estimate), 3.5))
+    return panel
 
 
 def packing_area(frame):

@@ -21,6 +21,12 @@ class MechanismStudy:
 
         return text_report(self.solution, language)
 
+    def warnings(self, language: str | None = None) -> list[str]:
+        """Warnings for positions not built and results whose error estimate is poor."""
+        from ..trust_report import warning_lines
+
+        return warning_lines(self.solution, language)
+
     def to_json(self) -> dict[str, Any]:
         from ..solve import to_json
 

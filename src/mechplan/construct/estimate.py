@@ -1,0 +1,240 @@
+"""Error estimates: how far each evaluated step may be from the exact value, at every position.
+
+Every step gets an absolute error bound (in the step's own units) propagated to first order from
+its inputs' bounds and its own rounding: a meet of two loci divides the error of the loci by the
+sine of their crossing angle (its condition number), a direction taken from two points divides the
+points' error by their distance, a similarity image by the length of the side it is built on, a
+division by a length by that length. Near a toggle the position plan's error grows like 1/sin, the
+velocity plan's — built on directions taken from the position plan and met at the same angle —
+like 1/sin², the acceleration plan's like 1/sin³, which is how the true errors grow.
+
+The relative error of a quantity is its bound divided by the quantity's scale: the size of its plan
+(the largest vector drawn on it over the positions evaluated; for a link's ω or ε that size over the
+mechanism's length), so a vector that passes through zero (v_C at a dead centre) keeps a finite,
+meaningful relative error.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..geom.vec import Array
+from .graph import Construction, Evaluation
+from .step import Kind, Op, Plan, Step
+
+#: relative error above which a quantity is flagged (settable per call)
+DEFAULT_TOLERANCE = 1e-6
+#: an estimate at or above this (100 % of the plan's scale, or no bound at all) means the value
+#: carries no information: the position cannot be computed
+UNBOUNDED = 1.0
+#: rounding of one operation, in units of the float type's epsilon (a few roundings per step)
+ROUNDINGS_PER_STEP = 2.0
+
+
+@dataclass
+class ErrorEstimate:
+    """Relative error bounds per step id (float32, NaN/inf where no bound exists) and their scales."""
+
+    relative_of: dict[str, Array] = field(default_factory=dict)
+    scale: dict[str, float] = field(default_factory=dict)
+    #: max(1, |value| / scale) of the results: a result larger than its plan (a slider running
+    #: far out, an acceleration blowing up near a toggle) is measured against its own size
+    divisor: dict[str, Array] = field(default_factory=dict)
+
+    def __contains__(self, step_id: str) -> bool:
+        return step_id in self.relative_of
+
+    def relative(self, step_id: str) -> Array:
+        """Estimated relative error at every position (inf where it cannot be bounded).
+
+        Relative to the larger of the plan's scale and the result's own size.
+        """
+        rel = self.relative_of[step_id].astype(float)
+        if step_id in self.divisor:
+            rel = rel / self.divisor[step_id]
+        return np.where(np.isnan(rel), np.inf, rel)
+
+    def absolute(self, step_id: str) -> Array:
+        """Estimated absolute error of a step in its own units (m, m/s, rad/s, N …)."""
+        rel = self.relative_of[step_id].astype(float)
+        return np.where(np.isnan(rel), np.inf, rel) * self.scale[step_id]
+
+
+def length_scale(c: Construction, samples: int = 72) -> float:
+    """The size of the mechanism: its position plan's largest coordinate, median over a turn (m).
+
+    A property of the mechanism, not of the positions evaluated, so an estimate at a position does
+    not depend on which other positions are evaluated with it. Computed once per construction.
+    """
+    if "length" not in c.derived:
+        points = [s.id for s in c if s.plan is Plan.POSITION and s.kind is Kind.POINT]
+        ev = c.evaluate(np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False))
+        ev.evaluate_all(points)
+        per_sample = np.zeros(samples)
+        for sid in points:
+            with np.errstate(invalid="ignore"):
+                per_sample = np.fmax(per_sample, np.abs(ev.values[sid]).max(axis=-1))
+        # the median over a turn: a slider running out to infinity near a singular sample does
+        # not make the whole mechanism large
+        finite = per_sample[np.isfinite(per_sample) & (per_sample > 0.0)]
+        c.derived["length"] = float(np.median(finite)) if finite.size else 1.0
+    return c.derived["length"]
+
+
+def plan_sizes(c: Construction, ev: Evaluation | None = None) -> dict[Plan, float]:
+    """Sizes of the plans that do not depend on how close a position is to a singular one.
+
+    The position plan: the mechanism's length scale (:func:`length_scale`); the velocity and
+    acceleration plans: ω1·L and (ω1² + |ε1|)·L of the driving link; the force plan (given an
+    evaluation): the median over the positions of its largest vector (forces have no intrinsic
+    scale).
+    """
+    length = length_scale(c)
+    omega = epsilon = 0.0
+    for step in c:
+        if step.op is Op.DRIVE_ACCELERATION:
+            omega = abs(float(step.param("omega")))
+            epsilon = abs(float(step.param("epsilon", 0.0)))
+        elif step.op is Op.DRIVE_VELOCITY:
+            omega = abs(float(step.param("omega")))
+    sizes = {Plan.POSITION: length, Plan.VELOCITY: omega * length,
+             Plan.ACCELERATION: (omega * omega + epsilon) * length}
+    if ev is not None:
+        force_max = [np.abs(v).max(axis=-1) for sid, v in ev.values.items()
+                     if c[sid].plan is Plan.FORCE and c[sid].kind is Kind.POINT and v.size]
+        if force_max:
+            with np.errstate(invalid="ignore"):
+                per_position = np.nanmax(np.stack(force_max), axis=0)
+            finite = per_position[np.isfinite(per_position)]
+            sizes[Plan.FORCE] = float(np.median(finite)) if finite.size else 0.0
+    return sizes
+
+
+def scale_of(step: Step, sizes: dict[Plan, float]) -> float:
+    """The size a step's error is measured against (its plan's size, or that over a length)."""
+    size = sizes.get(step.plan, 0.0)
+    length = sizes[Plan.POSITION]
+    if step.kind is Kind.POINT or step.kind is Kind.LINE:
+        return size
+    if step.plan is Plan.POSITION:
+        return 1.0                                   # angles (rad)
+    if step.op in (Op.GUIDE_OFFSET, Op.INERTIA_OFFSET):
+        return length
+    if step.op in (Op.MOMENT_INERTIA, Op.MOMENT_SUM, Op.MOMENT_CLOSE, Op.BALANCING_MOMENT,
+                   Op.ZHUKOVSKY):
+        return size * length                         # moments: force × length
+    return size / length                             # ω, ε: a plan's size over a length
+
+
+class _Propagator:
+    """Walk the evaluated steps in construction order and bound each one's relative error."""
+
+    def __init__(self, c: Construction, ev: Evaluation, dtype: type = np.float32) -> None:
+        self.c, self.ev = c, ev
+        self.u = float(np.finfo(ev.dtype).eps) * ROUNDINGS_PER_STEP
+        self.dtype = dtype
+        self.rel: dict[str, Array] = {}
+        self.plan_size = plan_sizes(c, ev)
+        self.length = self.plan_size[Plan.POSITION]
+        self._distances: dict[tuple[str, str], Array] = {}
+
+    def scale_of(self, step: Step) -> float:
+        """The size a step's error is measured against."""
+        return scale_of(step, self.plan_size)
+
+    def distance(self, a: str, b: str) -> Array:
+        """|b − a| of two point steps, relative to the mechanism's length (memoised per pair)."""
+        key = (a, b) if a < b else (b, a)
+        if key not in self._distances:
+            d = self.ev.values[b] - self.ev.values[a]
+            d2 = np.einsum("ij,ij->i", d, d) if d.ndim == 2 else np.sum(d * d, axis=-1)
+            self._distances[key] = (np.sqrt(d2) / self.length).astype(self.dtype)
+        return self._distances[key]
+
+    def run(self, ids: Iterable[str], targets: frozenset[str]) -> ErrorEstimate:
+        out = ErrorEstimate()
+        n, u = self.ev.n, self.dtype(self.u)
+        for sid in ids:
+            if sid not in self.ev.values:
+                continue
+            step = self.c[sid]
+            if not step.inputs:
+                rel = np.full(n, u, self.dtype)
+            else:
+                rel = self.rel[step.inputs[0]] + u
+                for i in step.inputs[1:]:
+                    np.maximum(rel, self.rel[i] + u, out=rel)
+                amplify = _AMPLIFY.get(step.op)
+                with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                    if amplify is not None:
+                        np.divide(rel, amplify(self, step), out=rel)
+                    sine = self.ev.sines.get(sid)
+                    if sine is not None:
+                        np.divide(rel, sine, out=rel, casting="same_kind")
+            self.rel[sid] = rel
+            scale = self.scale_of(step)
+            out.relative_of[sid] = rel
+            out.scale[sid] = scale
+            if sid in targets and scale > 0.0:
+                out.divisor[sid] = _magnitude_divisor(self.ev.values[sid], scale, self.dtype)
+        return out
+
+
+# -- amplification: what a step divides its inputs' errors by (besides a meet's sine) -----------
+Amplify = Callable[[_Propagator, Step], Array]
+
+
+def _first_two(p: _Propagator, s: Step) -> Array:
+    return p.distance(s.inputs[0], s.inputs[1])
+
+
+def _last_two(p: _Propagator, s: Step) -> Array:
+    return p.distance(s.inputs[-2], s.inputs[-1])
+
+
+def _similar_side(p: _Propagator, s: Step) -> Array:
+    _a, _b, pa, pb, _px = s.inputs
+    return p.distance(pa, pb)
+
+
+def _force_line(p: _Propagator, s: Step) -> Array:
+    if len(s.inputs) == 3:
+        return p.distance(s.inputs[1], s.inputs[2])
+    return np.ones(p.ev.n, p.dtype)
+
+
+_AMPLIFY: dict[Op, Amplify] = {
+    Op.ANGLE_OF: _first_two,            # a direction from two points
+    Op.CARRIER_ANGLE: _first_two,       # the guide through a point seen from its pivot
+    Op.LINE_PERP: _last_two,            # ⊥ a link given by two points
+    Op.OMEGA: _first_two,               # v_rel / l
+    Op.EPSILON: _first_two,             # a^t / l
+    Op.SIMILAR_IMAGE: _similar_side,    # a triangle built on a side of the link
+    Op.FORCE_LINE: _force_line,
+}
+
+
+def _magnitude_divisor(value: Array, scale: float, dtype: type) -> Array:
+    if value.ndim == 2:
+        size = np.sqrt(np.einsum("ij,ij->i", value, value))
+    else:
+        size = np.abs(value)
+    with np.errstate(invalid="ignore"):
+        return np.maximum(size / scale, 1.0).astype(dtype)
+
+
+def estimate_errors(c: Construction, ev: Evaluation,
+                    targets: Iterable[str] | None = None) -> ErrorEstimate:
+    """Bound the error of every evaluated step (or of ``targets`` and their ancestors).
+
+    The results (``targets``, or every evaluated step) are measured against the larger of their
+    plan's scale and their own size.
+    """
+    if targets is None:
+        wanted = [s for s in c.steps if s in ev.values]
+        return _Propagator(c, ev).run(wanted, frozenset(wanted))
+    targets = list(targets)
+    return _Propagator(c, ev).run(c.ancestors(targets), frozenset(targets))

@@ -1,0 +1,460 @@
+"""The compiled construction: one straight-line function per requested output set.
+
+From the ordered steps that the requested outputs need (and nothing else), generate the source of
+one function that evaluates them for one position in scalar arithmetic — the same formulas, in the
+same order of operations, as the vectorised evaluators — looped over the positions, together with
+each output's error estimate and a mask of positions that cannot be built. With numba installed
+(``pip install mechplan[fast]``) the function is JIT-compiled and cached on disk across processes;
+without it the numpy path is used (:func:`compile_kernel` raises :class:`KernelUnavailable`, and
+:func:`evaluate_fast` falls back).
+
+Only the kinematic operations have scalar forms; a construction whose outputs need a force step is
+evaluated by the numpy path.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import importlib.util
+import math
+import os
+import sys
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .estimate import ROUNDINGS_PER_STEP, length_scale, plan_sizes, scale_of
+from .graph import Construction
+from .step import Kind, Op, Step
+from .validity import MAX_CONDITION
+
+
+class KernelUnavailable(RuntimeError):
+    """The construction (or this installation) has no compiled kernel; use the numpy path."""
+
+
+def _f(x: Any) -> str:
+    """A float literal that reads back to the same binary value."""
+    x = float(x)
+    if math.isnan(x):
+        return "NAN"
+    if math.isinf(x):
+        return "INF" if x > 0 else "(-INF)"
+    return repr(x)
+
+
+class _Gen:
+    """Source lines of the loop body, step by step."""
+
+    def __init__(self, c: Construction, length: float) -> None:
+        self.c = c
+        self.idx: dict[str, int] = {}
+        self.lines: list[str] = []
+        self.length = length
+
+    def name(self, sid: str) -> str:
+        return f"v{self.idx[sid]}"
+
+    def pt(self, sid: str) -> tuple[str, str]:
+        n = self.name(sid)
+        return f"{n}x", f"{n}y"
+
+    def line(self, sid: str) -> tuple[str, str, str, str]:
+        n = self.name(sid)
+        return f"{n}px", f"{n}py", f"{n}ux", f"{n}uy"
+
+    def err(self, sid: str) -> str:
+        return f"e{self.idx[sid]}"
+
+    def emit(self, *lines: str) -> None:
+        self.lines.extend(lines)
+
+    def step(self, s: Step) -> None:
+        self.idx[s.id] = len(self.idx)
+        gen = _OPS.get(s.op)
+        if gen is None:
+            raise KernelUnavailable(f"no scalar form for the operation {s.op.value}")
+        n = self.name(s.id)
+        sine = gen(self, s, n)
+        e = self.err(s.id)
+        if not s.inputs:
+            self.emit(f"{e} = U")
+        else:
+            self.emit(f"{e} = {self.err(s.inputs[0])} + U")
+            for i in s.inputs[1:]:
+                self.emit(f"{e} = max({e}, {self.err(i)} + U)")
+            amplify = _AMPLIFY.get(s.op)
+            if amplify is not None:
+                a, b = amplify(s)
+                (ax, ay), (bx, by) = self.pt(a), self.pt(b)
+                self.emit(f"{e} = _div({e}, _hyp({bx} - {ax}, {by} - {ay}) / {_f(self.length)})")
+            if sine is not None:
+                self.emit(f"{e} = _div({e}, {sine})")
+
+
+# -- scalar forms: each mirrors the vectorised evaluator in construct/ops.py ------------------
+Gen = Callable[[_Gen, Step, str], str | None]
+
+
+def _crank(g: _Gen, s: Step, n: str) -> None:
+    g.emit(f"{n} = REF + SENSE * phi[i]")
+
+
+def _fixed(g: _Gen, s: Step, n: str) -> None:
+    x, y = s.param("xy")
+    g.emit(f"{n}x = {_f(x)}", f"{n}y = {_f(y)}")
+
+
+def _constant(g: _Gen, s: Step, n: str) -> None:
+    g.emit(f"{n} = {_f(s.param('value'))}")
+
+
+def _pole(g: _Gen, s: Step, n: str) -> None:
+    g.emit(f"{n}x = 0.0", f"{n}y = 0.0")
+
+
+def _polar(g: _Gen, s: Step, n: str) -> None:
+    (cx, cy), a = g.pt(s.inputs[0]), g.name(s.inputs[1])
+    length, offset = _f(s.param("length")), _f(s.param("offset", 0.0))
+    g.emit(f"_a = {a} + {offset}", f"{n}x = {cx} + {length} * math.cos(_a)",
+           f"{n}y = {cy} + {length} * math.sin(_a)")
+
+
+def _angle_of(g: _Gen, s: Step, n: str) -> None:
+    (px, py), (qx, qy) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    g.emit(f"{n} = math.atan2({qy} - {py}, {qx} - {px}) - {_f(s.param('minus', 0.0))}")
+
+
+def _angle_plus(g: _Gen, s: Step, n: str) -> None:
+    g.emit(f"{n} = {g.name(s.inputs[0])} + {_f(s.param('delta'))}")
+
+
+def _circle_circle(g: _Gen, s: Step, n: str) -> str:
+    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    r1, r2, sigma = _f(s.param("r1")), _f(s.param("r2")), _f(s.param("sigma"))
+    g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", "_d = _hyp(_dx, _dy)",
+           f"_gap = max(_d - ({r1} + {r2}), abs({r1} - {r2}) - _d)",
+           f"_a = _div({r1} * {r1} - {r2} * {r2} + _d * _d, 2.0 * _d)",
+           f"_h2 = _div((({r1} + {r2}) ** 2 - _d * _d) * (_d * _d - ({r1} - {r2}) ** 2), 4.0 * _d * _d)",
+           "_h = math.sqrt(_h2) if _h2 >= 0.0 else NAN",
+           "_h = 0.0 if (_h2 < 0.0 and _gap <= 0.0) else _h",
+           "_ux = _div(_dx, _d)", "_uy = _div(_dy, _d)", f"_sh = {sigma} * _h",
+           f"{n}x = {ax} + _a * _ux - _sh * _uy", f"{n}y = {ay} + _a * _uy + _sh * _ux",
+           f"sn{n} = abs(_div(_h * _d, {r1} * {r2}))",
+           f"if _gap > 0.0 or not (_gap <= 0.0) or sn{n} < MIN_SINE:", "    bad_i = True")
+    return f"sn{n}"
+
+
+def _circle_line_core(g: _Gen, n: str, cx: str, cy: str, r: str, px: str, py: str, ux: str,
+                      uy: str, sigma: str) -> None:
+    g.emit(f"_w = {ux} * ({cy} - {py}) - {uy} * ({cx} - {px})",
+           f"_along = ({cx} - {px}) * {ux} + ({cy} - {py}) * {uy}",
+           f"_gap = abs(_w) - {r}", f"_h2 = ({r} - _w) * ({r} + _w)",
+           "_h = math.sqrt(_h2) if _h2 >= 0.0 else NAN",
+           "_h = 0.0 if (_h2 < 0.0 and _gap <= 0.0) else _h", f"_sh = {sigma} * _h",
+           f"_fx = {px} + _along * {ux}", f"_fy = {py} + _along * {uy}",
+           f"{n}x = _fx + _sh * {ux}", f"{n}y = _fy + _sh * {uy}",
+           f"sn{n} = abs(_div(_h, {r}))",
+           f"if _gap > 0.0 or not (_gap <= 0.0) or sn{n} < MIN_SINE:", "    bad_i = True")
+
+
+def _circle_line(g: _Gen, s: Step, n: str) -> str:
+    (cx, cy), (px, py, ux, uy) = g.pt(s.inputs[0]), g.line(s.inputs[1])
+    _circle_line_core(g, n, cx, cy, _f(s.param("r")), px, py, ux, uy, _f(s.param("sigma")))
+    return f"sn{n}"
+
+
+def _line_line(g: _Gen, s: Step, n: str) -> str:
+    (ax, ay, au, av), (bx, by, bu, bv) = g.line(s.inputs[0]), g.line(s.inputs[1])
+    g.emit(f"_s = {au} * {bv} - {av} * {bu}",
+           f"_t = NAN if _s == 0.0 else _div(({bx} - {ax}) * {bv} - ({by} - {ay}) * {bu}, _s)",
+           f"{n}x = {ax} + _t * {au}", f"{n}y = {ay} + _t * {av}", f"sn{n} = abs(_s)",
+           f"if not (sn{n} >= MIN_SINE):", "    bad_i = True")
+    return f"sn{n}"
+
+
+def _locus_line(g: _Gen, s: Step, n: str) -> None:
+    (bx, by) = g.pt(s.inputs[0])
+    ox, oy = (_f(v) for v in s.param("offset"))
+    dir_angle = float(s.param("dir_angle"))
+    if len(s.inputs) == 1:
+        # rotate(offset, 0) and direction(0 + dir_angle), as the vectorised path computes them
+        g.emit(f"{n}px = {bx} + (1.0 * {ox} - 0.0 * {oy})", f"{n}py = {by} + (0.0 * {ox} + 1.0 * {oy})",
+               f"{n}ux = math.cos(0.0 + {_f(dir_angle)})", f"{n}uy = math.sin(0.0 + {_f(dir_angle)})")
+        return
+    th = g.name(s.inputs[1])
+    g.emit(f"_c = math.cos({th})", f"_s = math.sin({th})",
+           f"{n}px = {bx} + (_c * {ox} - _s * {oy})", f"{n}py = {by} + (_s * {ox} + _c * {oy})")
+    if dir_angle == 0.0:
+        g.emit(f"{n}ux = _c", f"{n}uy = _s")
+    else:
+        g.emit(f"{n}ux = math.cos({th} + {_f(dir_angle)})", f"{n}uy = math.sin({th} + {_f(dir_angle)})")
+
+
+def _carrier_angle(g: _Gen, s: Step, n: str) -> str:
+    (cx, cy), (px, py) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    qx, qy = (_f(v) for v in s.param("q0"))
+    g.emit(f"_rx = {px} - {cx}", f"_ry = {py} - {cy}", "_rad = _hyp(_rx, _ry)",
+           f"_dux = math.cos({_f(s.param('dir_angle'))})", f"_duy = math.sin({_f(s.param('dir_angle'))})")
+    _circle_line_core(g, f"_hit{n}", "0.0", "0.0", "_rad", qx, qy, "_dux", "_duy", _f(s.param("sigma")))
+    g.emit(f"{n} = math.atan2(_ry, _rx) - math.atan2(_hit{n}y, _hit{n}x)", f"sn{n} = sn_hit{n}")
+    return f"sn{n}"
+
+
+def _place(g: _Gen, s: Step, n: str) -> None:
+    (ox, oy), a = g.pt(s.inputs[0]), g.name(s.inputs[1])
+    vx, vy = (_f(v) for v in s.param("offset"))
+    g.emit(f"_c = math.cos({a})", f"_s = math.sin({a})",
+           f"{n}x = {ox} + (_c * {vx} - _s * {vy})", f"{n}y = {oy} + (_s * {vx} + _c * {vy})")
+
+
+def _similar_position(g: _Gen, s: Step, n: str) -> None:
+    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    z = complex(s.param("z"))
+    g.emit(f"_z = complex({ax}, {ay}) + (complex({bx}, {by}) - complex({ax}, {ay})) * "
+           f"complex({_f(z.real)}, {_f(z.imag)})", f"{n}x = _z.real", f"{n}y = _z.imag")
+
+
+def _similar_image(g: _Gen, s: Step, n: str) -> None:
+    (ax, ay), (bx, by), (pax, pay), (pbx, pby), (pxx, pxy) = (g.pt(i) for i in s.inputs)
+    g.emit(f"_q = complex({pbx}, {pby}) - complex({pax}, {pay})",
+           f"_ratio = _cdiv(complex({pxx}, {pxy}) - complex({pax}, {pay}), _q)",
+           f"_z = complex({ax}, {ay}) + (complex({bx}, {by}) - complex({ax}, {ay})) * _ratio",
+           f"{n}x = _z.real", f"{n}y = _z.imag")
+
+
+def _rigid_velocity(g: _Gen, s: Step, n: str) -> None:
+    (ox, oy), w, (pox, poy), (pxx, pxy) = (g.pt(s.inputs[0]), g.name(s.inputs[1]),
+                                           g.pt(s.inputs[2]), g.pt(s.inputs[3]))
+    g.emit(f"{n}x = {ox} + {w} * (-({pxy} - {poy}))", f"{n}y = {oy} + {w} * ({pxx} - {pox})")
+
+
+def _rigid_acceleration(g: _Gen, s: Step, n: str) -> None:
+    (ox, oy), w, e, (pox, poy), (pxx, pxy) = (g.pt(s.inputs[0]), g.name(s.inputs[1]),
+                                              g.name(s.inputs[2]), g.pt(s.inputs[3]),
+                                              g.pt(s.inputs[4]))
+    g.emit(f"_rx = {pxx} - {pox}", f"_ry = {pxy} - {poy}", f"_w2 = {w} * {w}",
+           f"{n}x = {ox} + {e} * (-_ry) - _w2 * _rx", f"{n}y = {oy} + {e} * _rx - _w2 * _ry")
+
+
+def _drive_velocity(g: _Gen, s: Step, n: str) -> None:
+    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    w = _f(s.param("omega"))
+    g.emit(f"{n}x = {w} * (-({by} - {ay}))", f"{n}y = {w} * ({bx} - {ax})")
+
+
+def _drive_acceleration(g: _Gen, s: Step, n: str) -> None:
+    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    w, e = _f(s.param("omega")), _f(s.param("epsilon", 0.0))
+    g.emit(f"_rx = {bx} - {ax}", f"_ry = {by} - {ay}",
+           f"{n}x = {e} * (-_ry) - {w} * {w} * _rx", f"{n}y = {e} * _rx - {w} * {w} * _ry")
+
+
+def _line_perp(g: _Gen, s: Step, n: str) -> None:
+    (tx, ty), (px, py), (qx, qy) = (g.pt(i) for i in s.inputs)
+    g.emit(f"_vx = -({qy} - {py})", f"_vy = {qx} - {px}", "_nn = _hyp(_vx, _vy)",
+           f"{n}px = {tx}", f"{n}py = {ty}", f"{n}ux = _div(_vx, _nn)", f"{n}uy = _div(_vy, _nn)")
+
+
+def _line_parallel(g: _Gen, s: Step, n: str) -> None:
+    (tx, ty), (_, _, ux, uy) = g.pt(s.inputs[0]), g.line(s.inputs[1])
+    g.emit(f"{n}px = {tx}", f"{n}py = {ty}", f"{n}ux = {ux}", f"{n}uy = {uy}")
+
+
+def _omega(g: _Gen, s: Step, n: str) -> None:
+    (px, py), (qx, qy), (ax, ay), (bx, by) = (g.pt(i) for i in s.inputs)
+    g.emit(f"_rx = {qx} - {px}", f"_ry = {qy} - {py}", f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}",
+           f"{n} = _div(_rx * _dy - _ry * _dx, _rx * _rx + _ry * _ry)")
+
+
+_epsilon = _omega      # ε = (r × (a_q − n)) / r·r has the form of ω = (r × (v_q − v_p)) / r·r
+
+
+def _normal(g: _Gen, s: Step, n: str) -> None:
+    (ax, ay), w, (px, py), (qx, qy) = (g.pt(s.inputs[0]), g.name(s.inputs[1]), g.pt(s.inputs[2]),
+                                       g.pt(s.inputs[3]))
+    g.emit(f"_w2 = {w} * {w}", f"{n}x = {ax} - _w2 * ({qx} - {px})",
+           f"{n}y = {ay} - _w2 * ({qy} - {py})")
+
+
+def _coriolis(g: _Gen, s: Step, n: str) -> None:
+    (sx, sy), w, (fx, fy), (tx, ty) = (g.pt(s.inputs[0]), g.name(s.inputs[1]), g.pt(s.inputs[2]),
+                                       g.pt(s.inputs[3]))
+    g.emit(f"_k = 2.0 * {w}", f"{n}x = {sx} + _k * (-({ty} - {fy}))",
+           f"{n}y = {sy} + _k * ({tx} - {fx})")
+
+
+def _copy(g: _Gen, s: Step, n: str) -> None:
+    src = s.inputs[0]
+    kind = s.kind
+    if kind is Kind.POINT:
+        x, y = g.pt(src)
+        g.emit(f"{n}x = {x}", f"{n}y = {y}")
+    else:
+        g.emit(f"{n} = {g.name(src)}")
+
+
+def _difference(g: _Gen, s: Step, n: str) -> None:
+    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    g.emit(f"{n}x = {bx} - {ax}", f"{n}y = {by} - {ay}")
+
+
+_OPS: dict[Op, Gen] = {
+    Op.CRANK_ANGLE: _crank, Op.FIXED_POINT: _fixed, Op.CONSTANT: _constant, Op.POLE: _pole,
+    Op.POLAR_POINT: _polar, Op.ANGLE_OF: _angle_of, Op.ANGLE_PLUS: _angle_plus,
+    Op.CIRCLE_CIRCLE: _circle_circle, Op.CIRCLE_LINE: _circle_line, Op.LINE_LINE: _line_line,
+    Op.LOCUS_LINE: _locus_line, Op.CARRIER_ANGLE: _carrier_angle, Op.PLACE: _place,
+    Op.SIMILAR_POSITION: _similar_position, Op.SIMILAR_IMAGE: _similar_image,
+    Op.RIGID_VELOCITY: _rigid_velocity, Op.RIGID_ACCELERATION: _rigid_acceleration,
+    Op.DRIVE_VELOCITY: _drive_velocity, Op.DRIVE_ACCELERATION: _drive_acceleration,
+    Op.LINE_PERP: _line_perp, Op.LINE_PARALLEL: _line_parallel, Op.OMEGA: _omega,
+    Op.EPSILON: _epsilon, Op.NORMAL: _normal, Op.CORIOLIS: _coriolis, Op.COPY: _copy,
+    Op.DIFFERENCE: _difference,
+}
+
+
+def _pair(first: int, second: int) -> Callable[[Step], tuple[str, str]]:
+    return lambda s: (s.inputs[first], s.inputs[second])
+
+
+#: the two points whose distance a step's error is divided by (mirrors estimate._AMPLIFY)
+_AMPLIFY: dict[Op, Callable[[Step], tuple[str, str]]] = {
+    Op.ANGLE_OF: _pair(0, 1), Op.CARRIER_ANGLE: _pair(0, 1), Op.LINE_PERP: _pair(-2, -1),
+    Op.OMEGA: _pair(0, 1), Op.EPSILON: _pair(0, 1), Op.SIMILAR_IMAGE: _pair(2, 3),
+}
+
+_HELPERS = '''
+import math
+NAN = math.nan
+INF = math.inf
+
+
+def _div(a, b):
+    if b == 0.0:
+        if a != a or a == 0.0:
+            return NAN
+        return INF if (a > 0.0) == (math.copysign(1.0, b) > 0.0) else -INF
+    return a / b
+
+
+def _cdiv(a, b):
+    if b == 0.0:
+        return complex(NAN, NAN)
+    return a / b
+
+
+def _hyp(x, y):
+    return math.hypot(x, y)
+
+'''
+
+
+@dataclass(frozen=True)
+class Kernel:
+    """A compiled construction: ``kernel(phi)`` → values and relative error estimates of the outputs."""
+
+    targets: tuple[str, ...]
+    kinds: tuple[Kind, ...]
+    source: str
+    function: Callable[..., None]
+    compiled: bool
+
+    def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
+                                                   np.ndarray]:
+        """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build mask)."""
+        phi = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
+        n = phi.shape[0]
+        outs = [np.empty((n, 2)) if k is Kind.POINT else np.empty(n) for k in self.kinds]
+        rel = np.empty((n, len(self.targets)))
+        bad = np.zeros(n, dtype=np.bool_)
+        self.function(phi, rel, bad, *outs)
+        values = {}
+        for sid, out in zip(self.targets, outs):
+            out.flags.writeable = False
+            values[sid] = out
+        estimates = {sid: rel[:, j] for j, sid in enumerate(self.targets)}
+        return values, estimates, bad
+
+
+def kernel_source(c: Construction, targets: Sequence[str]) -> str:
+    """Generate the source of the kernel that evaluates ``targets`` (and only their ancestors)."""
+    for sid in targets:
+        if c[sid].kind is Kind.LINE:
+            raise KernelUnavailable(f"step {sid} is a line; kernels return points and scalars")
+    g = _Gen(c, length_scale(c))
+    for sid in c.ancestors(targets):
+        g.step(c[sid])
+    outs = ", ".join(f"out{j}" for j in range(len(targets)))
+    body = ["def kernel(phi, rel, bad, " + outs + "):", "    for i in range(phi.shape[0]):",
+            "        bad_i = False"]
+    body += ["        " + line for line in g.lines]
+    sizes = plan_sizes(c)
+    for j, sid in enumerate(targets):
+        scale = scale_of(c[sid], sizes)
+        if c[sid].kind is Kind.POINT:
+            x, y = g.pt(sid)
+            body += [f"        out{j}[i, 0] = {x}", f"        out{j}[i, 1] = {y}"]
+            size = f"_hyp({x}, {y})"
+        else:
+            body.append(f"        out{j}[i] = {g.name(sid)}")
+            size = f"abs({g.name(sid)})"
+        if scale > 0.0:
+            # measured against the larger of the plan's scale and the result's own size
+            body.append(f"        rel[i, {j}] = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
+        else:
+            body.append(f"        rel[i, {j}] = {g.err(sid)}")
+    body.append("        bad[i] = bad_i")
+    drive = c.drive
+    head = (_HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\n"
+            f"U = {_f(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)}\n"
+            f"MIN_SINE = {_f(1.0 / MAX_CONDITION)}\n\n")
+    return head + "\n".join(body) + "\n"
+
+
+def _cache_dir() -> Path:
+    base = os.environ.get("MECHPLAN_CACHE") or os.path.join(
+        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"),
+        "mechplan")
+    path = Path(base) / "kernels"
+    path.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+def _load(source: str, jit: bool) -> tuple[Callable[..., None], bool]:
+    digest = hashlib.sha256(source.encode()).hexdigest()[:24]
+    name = f"mechplan_kernel_{digest}"
+    if not jit:
+        namespace: dict[str, Any] = {}
+        exec(compile(source, name, "exec"), namespace)   # noqa: S102 - our own generated code
+        return namespace["kernel"], False
+    if importlib.util.find_spec("numba") is None:
+        raise KernelUnavailable("numba is not installed (pip install mechplan[fast])") from None
+    path = _cache_dir() / f"{name}.py"
+    if not path.exists():
+        tmp = path.with_suffix(f".{os.getpid()}.tmp")
+        tmp.write_text(source.replace("def _div", "@numba.njit(cache=True, error_model='numpy')\n"
+                                      "def _div").replace(
+            "def _cdiv", "@numba.njit(cache=True, error_model='numpy')\ndef _cdiv").replace(
+            "def _hyp", "@numba.njit(cache=True, error_model='numpy')\ndef _hyp").replace(
+            "def kernel", "@numba.njit(cache=True, error_model='numpy')\ndef kernel").replace(
+            "import math\n", "import math\nimport numba\n", 1), encoding="utf-8")
+        os.replace(tmp, path)
+    spec = importlib.util.spec_from_file_location(name, path)
+    if spec is None or spec.loader is None:
+        raise KernelUnavailable(f"cannot load the kernel module {path}")
+    module = sys.modules.get(name) or importlib.util.module_from_spec(spec)
+    if name not in sys.modules:
+        spec.loader.exec_module(module)
+        sys.modules[name] = module
+    return module.kernel, True
+
+
+def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) -> Kernel:
+    """Compile the kernel of ``targets``; ``jit=False`` runs the generated code as plain Python."""
+    targets = tuple(targets)
+    source = kernel_source(c, targets)
+    function, compiled = _load(source, jit)
+    return Kernel(targets, tuple(c[sid].kind for sid in targets), source, function, compiled)

@@ -1,0 +1,141 @@
+"""Which results can be trusted: flags for poor estimates, failures a sweep survives.
+
+Policy:
+- a position the user asked for by its angle must be computable: an unreachable or singular one
+  raises (:func:`validity.ensure_valid`, :func:`refuse_unbounded`);
+- a sweep (N positions) never dies for one position: those that cannot be built are listed as
+  :class:`Failure` and left NaN, the others are returned;
+- any result whose estimated relative error exceeds the tolerance is listed as a :class:`Flag`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import MechplanError, SingularError
+from .estimate import UNBOUNDED, ErrorEstimate, estimate_errors
+from .graph import Construction, Evaluation
+from .step import Op
+from .validity import MAX_CONDITION, ensure_valid
+
+
+@dataclass(frozen=True, slots=True)
+class Flag:
+    """A result whose estimated relative error exceeds the tolerance at one position."""
+
+    k: int                  # position index
+    phi_deg: float          # crank angle φ (scene convention)
+    quantity: str           # "r", "v", "a", "angle", "omega", "epsilon", "R", "M" …
+    subject: str            # point or link ("C", "2", "12")
+    label: str              # the step's label on its plan
+    group: str
+    estimate: float         # relative error estimate (inf: no bound)
+
+
+@dataclass(frozen=True, slots=True)
+class Failure:
+    """A position of a sweep that could not be built, with the reason a user reads."""
+
+    k: int
+    phi_deg: float
+    reason: str
+
+
+#: results legitimately undefined where their force vanishes (the line of action of a zero force)
+_UNDEFINED_AT_ZERO = frozenset({Op.GUIDE_OFFSET, Op.INERTIA_OFFSET, Op.LINE_OF_ACTION})
+
+
+def _checked(c: Construction, targets: Sequence[str]) -> list[str]:
+    return [sid for sid in targets if c[sid].op not in _UNDEFINED_AT_ZERO]
+
+
+def _subjects(c: Construction, targets: Sequence[str]) -> dict[str, tuple[str, str]]:
+    out = {}
+    for sid in targets:
+        q = c.quantity_of(sid)
+        out[sid] = q if q is not None else ("", c[sid].label)
+    return out
+
+
+def unbounded_positions(est: ErrorEstimate, targets: Sequence[str], n: int,
+                        undefined: frozenset[str] = frozenset()) -> np.ndarray:
+    """Positions where some target's error bound is 100 % of its scale or more (or unbounded)."""
+    bad = np.zeros(n, dtype=bool)
+    for sid in targets:
+        if sid in est and sid not in undefined:
+            bad |= ~(est.relative(sid) < UNBOUNDED)
+    return bad
+
+
+def refuse_unbounded(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],
+                     file: str | None = None) -> None:
+    """Raise :class:`SingularError` for the first target that cannot be bounded at a position."""
+    for sid in _checked(c, targets):
+        if sid not in est:
+            continue
+        rel = est.relative(sid)
+        bad = ~(rel < UNBOUNDED)
+        if np.any(bad):
+            step = c[sid]
+            k = int(np.argmax(bad))
+            phi_deg = math.degrees(float(ev.phi[k]))
+            bound = f"{rel[k]:.1e}" if math.isfinite(rel[k]) else "no bound"
+            raise SingularError(
+                f"{step.plan.value} plan, group {step.group or 'I'}: {step.label} cannot be "
+                f"computed at φ = {phi_deg:g}° (estimated relative error {bound} ≥ 1: a direction "
+                "from nearly coincident points or a meet of nearly parallel loci, the position is "
+                "singular or too close to it); choose another position",
+                step=step.label, phi_deg=phi_deg, condition=math.inf, file=file)
+
+
+def failures(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],
+             file: str | None = None, max_condition: float = MAX_CONDITION) -> list[Failure]:
+    """Positions of a sweep that cannot be built, each with the message a single solve would give."""
+    undefined = frozenset(targets) - frozenset(_checked(c, targets))
+    bad = unbounded_positions(est, targets, ev.n, undefined)
+    for gap in ev.gaps.values():
+        bad |= gap > 0
+    for sine in ev.sines.values():
+        with np.errstate(divide="ignore"):
+            bad |= 1.0 / sine > max_condition
+    out: list[Failure] = []
+    reasons: dict[str, str] = {}
+    for k in np.flatnonzero(bad):
+        one = c.evaluate(ev.phi[k:k + 1])
+        one.evaluate_all(targets)
+        phi_deg = math.degrees(float(ev.phi[k]))
+        try:
+            ensure_valid(c, one, file, max_condition)
+            refuse_unbounded(c, one, estimate_errors(c, one, targets), targets, file)
+            reason = "not computable"
+        except MechplanError as exc:
+            key = type(exc).__name__ + str(getattr(exc, "step", "") or getattr(exc, "group", ""))
+            reason = reasons.setdefault(key, exc.detail)
+        out.append(Failure(int(k), phi_deg, reason))
+    return out
+
+
+def flags(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],
+          tolerance: float, skip: Sequence[int] = ()) -> list[Flag]:
+    """Every (position, result) whose estimated relative error exceeds ``tolerance``."""
+    names = _subjects(c, targets)
+    skip_mask = np.zeros(ev.n, dtype=bool)
+    skip_mask[list(skip)] = True
+    out: list[Flag] = []
+    for sid in targets:
+        if sid not in est:
+            continue
+        rel = est.relative(sid)
+        if c[sid].op in _UNDEFINED_AT_ZERO:
+            rel = np.where(np.isfinite(ev[sid]), rel, 0.0)
+        for k in np.flatnonzero((rel > tolerance) & ~skip_mask):
+            quantity, subject = names[sid]
+            step = c[sid]
+            out.append(Flag(int(k), math.degrees(float(ev.phi[k])), quantity, subject, step.label,
+                            step.group, float(rel[k])))
+    out.sort(key=lambda f: (f.k, f.quantity, f.subject))
+    return out

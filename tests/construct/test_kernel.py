@@ -1,0 +1,87 @@
+"""The fused kernel gives the numpy path's values (≤ 1e-15 of each plan's scale), estimates and flags.
+
+The generated code runs as plain Python for every template (the same source numba compiles), and
+JIT-compiled with numba for two templates.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scenes import TEMPLATES
+
+from construct.test_error_estimates import SLOTTED_THROUGH_PIVOT
+from mechplan.construct.estimate import estimate_errors
+from mechplan.construct.kernel import KernelUnavailable, compile_kernel
+from mechplan.construct.trust import failures
+from mechplan.scene import load_scene, parse_scene
+from mechplan.solve import build, targets_for
+
+KINEMATIC = ("position", "velocity", "acceleration")
+PHI = np.radians(np.arange(0.0, 360.0, 1.0))
+
+
+def _both(scene, phi, jit):
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    ev = c.evaluate(phi)
+    ev.evaluate_all(targets)
+    est = estimate_errors(c, ev, targets)
+    kernel = compile_kernel(c, targets, jit=jit)
+    return c, targets, ev, est, kernel(phi)
+
+
+def _assert_same(targets, ev, est, values, rel):
+    for sid in targets:
+        scale = est.scale[sid] or 1.0
+        diff = np.abs(values[sid] - ev[sid]) / scale
+        assert np.nanmax(diff) <= 1e-15, (sid, np.nanmax(diff))
+        assert np.array_equal(np.isnan(values[sid]), np.isnan(ev[sid])), sid
+        assert np.allclose(rel[sid], est.relative(sid), rtol=1e-5, atol=0), sid
+
+
+@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+def test_generated_code_equals_the_numpy_path(path):
+    c, targets, ev, est, (values, rel, bad) = _both(load_scene(path), PHI, jit=False)
+    _assert_same(targets, ev, est, values, rel)
+    assert not bad.any()
+
+
+def test_cannot_build_mask_and_estimates_agree_at_a_singular_position():
+    scene = parse_scene(SLOTTED_THROUGH_PIVOT, "pivot.toml")
+    phi = np.radians([200.0, 269.0, 270.0, 270.001, 271.0])
+    c, targets, ev, est, (values, rel, bad) = _both(scene, phi, jit=False)
+    expected = {f.k for f in failures(c, ev, est, targets)}
+    # the position through the pivot cannot be computed on either path
+    kernel_failed = {k for k in range(phi.size)
+                     if bad[k] or any(not rel[sid][k] < 1.0 for sid in targets)}
+    assert 2 in expected and kernel_failed == expected
+    regular = [k for k in range(phi.size) if k not in expected]
+    for sid in targets:
+        scale = est.scale[sid] or 1.0
+        ok = np.isfinite(ev[sid][regular]).all(axis=-1) if ev[sid].ndim == 2 else \
+            np.isfinite(ev[sid][regular])
+        idx = np.asarray(regular)[ok]
+        assert np.allclose(rel[sid][idx], est.relative(sid)[idx], rtol=1e-5), sid
+        # the two paths differ by no more than the error both are estimated to carry
+        diff = np.abs(values[sid][idx] - ev[sid][idx]) / scale
+        bound = 10.0 * est.relative(sid)[idx]
+        assert np.all(diff.reshape(len(idx), -1).max(axis=-1) <= np.maximum(bound, 1e-15)), sid
+        assert np.allclose(rel[sid][idx], est.relative(sid)[idx], rtol=1e-5), sid
+
+
+@pytest.mark.parametrize("name", ["four_bar", "v_engine"])
+def test_numba_kernel_equals_the_numpy_path(name, tmp_path, monkeypatch):
+    pytest.importorskip("numba", reason="the fast extra (numba) is optional")
+    monkeypatch.setenv("MECHPLAN_CACHE", str(tmp_path))
+    path = next(p for p in TEMPLATES if p.stem == name)
+    c, targets, ev, est, (values, rel, bad) = _both(load_scene(path), PHI, jit=True)
+    _assert_same(targets, ev, est, values, rel)
+    assert any(tmp_path.rglob("*.py"))                 # the kernel is cached on disk
+
+
+def test_force_steps_have_no_kernel():
+    scene = load_scene(next(p for p in TEMPLATES if p.stem == "v_engine"))
+    _, c = build(scene, (*KINEMATIC, "force"))
+    with pytest.raises(KernelUnavailable):
+        compile_kernel(c, [c.results["M_b"]], jit=False)
