@@ -39,6 +39,10 @@ def _draw(args: argparse.Namespace) -> int:
         for sheet in sheets:
             for written in write(sheet, out, formats):
                 print(written)
+        extra = getattr(study, "write_files", None)     # e.g. a cam's profile DXF
+        if extra is not None and "dxf" in formats:
+            for written in extra(out, Path(path).stem):
+                print(written)
     return 0
 
 

@@ -138,3 +138,17 @@ def polar(points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Radius vector ρ = √(x² + y²) and polar angle θ ∈ [0, 2π) of cam-frame points."""
     return np.hypot(points[:, 0], points[:, 1]), np.mod(np.arctan2(points[:, 1], points[:, 0]),
                                                         2 * math.pi)
+
+
+def follower_positions(g: Geometry, smp: Sample, length: float) -> tuple[np.ndarray, np.ndarray]:
+    """The follower's successive positions in the inverted motion (cam frame): segment ends.
+
+    Translating: from the roller centre along the follower's axis, ``length`` long. Oscillating: the
+    arm from the pivot (turned by −φ about O) to the roller centre.
+    """
+    sigma = 1.0 if g.sense > 0 else -1.0
+    if g.motion is Motion.TRANSLATING:
+        d = _rot(smp.direction, -sigma * smp.phi)
+        return smp.pitch, smp.pitch + length * d
+    pivot = np.tile([sigma * g.pivot, 0.0], (smp.phi.size, 1))
+    return _rot(pivot, -sigma * smp.phi), smp.pitch
