@@ -33,6 +33,7 @@ class Units:
     """How s, s′, s″, v, a are written: factor from SI and unit text."""
 
     f0: float
+    f1: float                  # factor of s′ and s″
     u0: str
     u1: str
     u2: str
@@ -45,8 +46,8 @@ def units_of(d: CamDesign, lang: str) -> Units:
     def u(name: str) -> str:
         return message(f"cam.unit.{name}", lang)
     if d.spec.follower.motion is Motion.TRANSLATING:
-        return Units(1e3, u("mm"), u("mm"), u("mm"), u("m_s"), u("m_s2"))
-    return Units(180.0 / math.pi, u("deg"), u("rad_rad"), u("per_rad"), u("rad_s"), u("rad_s2"))
+        return Units(1e3, 1e3, u("mm"), u("mm"), u("mm"), u("m_s"), u("m_s2"))
+    return Units(180.0 / math.pi, 1.0, u("deg"), u("rad_rad"), u("per_rad"), u("rad_s"), u("rad_s2"))
 
 
 def table_rows(d: CamDesign, lang: str) -> tuple[list[str], list[list[str]]]:
@@ -61,7 +62,7 @@ def table_rows(d: CamDesign, lang: str) -> tuple[list[str], list[list[str]]]:
     rows = []
     for r in profile_table(d.table):
         rows.append([number(math.degrees(r["phi"]), 1, lang), number(r["s"] * u.f0, 3, lang),
-                     number(r["s1"] * u.f0, 3, lang), number(r["s2"] * u.f0, 3, lang),
+                     number(r["s1"] * u.f1, 3, lang), number(r["s2"] * u.f1, 3, lang),
                      number(math.degrees(r["alpha"]), 2, lang), number(r["rho"] * 1e3, 3, lang),
                      number(math.degrees(r["theta"]), 2, lang), number(r["x"] * 1e3, 3, lang),
                      number(r["y"] * 1e3, 3, lang)])
@@ -74,19 +75,19 @@ def _motion_diagrams(d: CamDesign, lang: str) -> list[Panel]:
     u = units_of(d, lang)
     phi_deg = np.degrees(d.dense.phi[::STEP])
     phi_deg = np.append(phi_deg, 360.0)
-    def closed(v: np.ndarray) -> np.ndarray:
-        return np.append(v[::STEP], v[0]) * u.f0
+    def closed(v: np.ndarray, f: float) -> np.ndarray:
+        return np.append(v[::STEP], v[0]) * f
     x_axis = Axis("φ", "°", DIAGRAM_W, mu=2.0)
     panels = []
     mus = []
-    for name, values, unit in (("s", d.dense.s, u.u0), ("s1", d.dense.s1, u.u1),
-                               ("s2", d.dense.s2, u.u2)):
-        y = closed(values)
+    for name, values, unit, f in (("s", d.dense.s, u.u0, u.f0), ("s1", d.dense.s1, u.u1, u.f1),
+                                  ("s2", d.dense.s2, u.u2, u.f1)):
+        y = closed(values, f)
         symbol = {"s": "s", "s1": "s′", "s2": "s″"}[name]
         dg = diagram_panel(f"cam-{name}", message(f"cam.sheet.{name}", lang),
                            [Curve(phi_deg, y)], x_axis, Axis(symbol, unit, DIAGRAM_H), lang)
         panels.append(dg)
-        mus.append(dg.mu_y)
+        mus.append(dg.mu_y / f)             # SI per mm
     mu_phi = math.radians(2.0)
     out = []
     for i, dg in enumerate(panels):

@@ -81,7 +81,7 @@ class CamStudy:
             s1 = float(np.max(np.abs(d.dense.s1[m])))
             s2 = float(np.max(np.abs(d.dense.s2[m])))
             lines.append(message("cam.report.peaks", lang, kind=message(f"cam.phase.{p.kind.value}", lang),
-                                 s1=number(s1 * u.f0, 3, lang), u1=u.u1, s2=number(s2 * u.f0, 3, lang),
+                                 s1=number(s1 * u.f1, 3, lang), u1=u.u1, s2=number(s2 * u.f1, 3, lang),
                                  u2=u.u2, v=number(s1 * w, 4, lang),
                                  uv=u.uv, a=number(s2 * w * w, 2, lang), ua=u.ua))
         lines.append("")
@@ -89,8 +89,8 @@ class CamStudy:
         for c in d.comparisons:
             lines.append("  " + message(
                 "cam.report.graphical", lang, kind=message(f"cam.phase.{c.kind.value}", lang),
-                d1=number(c.d_s1_chords * u.f0, 4, lang), d2=number(c.d_s2_chords * u.f0, 4, lang),
-                d3=number(c.d_s1_integral * u.f0, 4, lang), d4=number(c.d_s_integral * u.f0, 4, lang),
+                d1=number(c.d_s1_chords * u.f1, 4, lang), d2=number(c.d_s2_chords * u.f1, 4, lang),
+                d3=number(c.d_s1_integral * u.f1, 4, lang), d4=number(c.d_s_integral * u.f0, 4, lang),
                 u0=u.u0, u1=u.u1, u2=u.u2))
         lines.append("")
         lim = spec.limits
