@@ -106,7 +106,7 @@ def test_table_of_s_reproduces_a_smooth_law():
     n = 41
     xs = np.linspace(0, 1, n)
     table = tuple(CLOSED[Law.POLY345](xs))
-    y, y1, y2 = normalised(Law.TABLE_S, X, table=table)
+    y, y1, _y2 = normalised(Law.TABLE_S, X, table=table)
     assert np.max(np.abs(y - CLOSED[Law.POLY345](X))) < 2e-5
     assert abs(y1[0]) < 1e-12 and abs(y1[-1]) < 1e-12          # clamped ends: no velocity jump
     dx = X[1] - X[0]
@@ -115,6 +115,6 @@ def test_table_of_s_reproduces_a_smooth_law():
 
 def test_table_of_a_integrates_to_the_cycloidal_law():
     xs = np.linspace(0, 1, 201)
-    y, y1, y2 = normalised(Law.TABLE_A, X, table=tuple(np.sin(2 * np.pi * xs)))
+    y, y1, _y2 = normalised(Law.TABLE_A, X, table=tuple(np.sin(2 * np.pi * xs)))
     assert np.max(np.abs(y - CLOSED[Law.CYCLOIDAL](X))) < 1e-4
     assert y[-1] == pytest.approx(1.0) and abs(y1[-1]) < 1e-9

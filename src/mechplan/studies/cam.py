@@ -64,9 +64,9 @@ class CamStudy:
         starts = d.phase_starts
         w = spec.omega
         for i, p in enumerate(spec.phases):
-            common = dict(n=i + 1, kind=message(f"cam.phase.{p.kind.value}", lang),
-                          start=number(deg(starts[i]), 1, lang), end=number(deg(starts[i + 1]), 1, lang),
-                          angle=number(deg(p.angle), 1, lang))
+            common = {"n": i + 1, "kind": message(f"cam.phase.{p.kind.value}", lang),
+                          "start": number(deg(starts[i]), 1, lang), "end": number(deg(starts[i + 1]), 1, lang),
+                          "angle": number(deg(p.angle), 1, lang)}
             if p.law is None:
                 lines.append("  " + message("cam.report.dwell", lang, **common))
             else:

@@ -126,14 +126,26 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
         return given, e, zone.r0, zone
     g0 = _geometry(spec, f.arm, 0.0)
     coarse = phi[::10]
-    r_min = oscillating_r0(g0, coarse, limit[::10])
-    if r_min is None:
+    r_osc = oscillating_r0(g0, coarse, limit[::10])
+    if r_osc is None:
         raise SceneError("cannot be met by any base radius with this pivot distance and arm; "
                          "lengthen the arm or move the pivot", file=spec.path,
                          key="limits.pressure_angle_rise")
-    # refine on the dense grid: step up until every dense angle meets the limit
-    while max_ratio(_geometry(spec, r_min, 0.0), phi, limit) > 1.0 + 1e-9:
-        r_min *= 1.0 + 1e-6
+
+    def fails(r: float) -> bool:
+        return max_ratio(_geometry(spec, r, 0.0), phi, limit) > 1.0 + 1e-12
+
+    # refine on the dense grid: bracket, then bisect
+    if fails(r_osc):
+        lo, step = r_osc, 1e-7 * r_osc
+        while fails(lo + step):
+            lo, step = lo + step, 2 * step
+        hi = lo + step
+        for _ in range(40):
+            mid = 0.5 * (lo + hi)
+            lo, hi = (mid, hi) if fails(mid) else (lo, mid)
+        r_osc = hi
+    r_min = r_osc
     if given is None:
         return r_min, 0.0, r_min, None
     if not abs(f.pivot_distance - f.arm) < given < f.pivot_distance + f.arm:
