@@ -14,7 +14,6 @@ Writes ``benchmarks/CAM_RESULTS.md``::
 
 from __future__ import annotations
 
-import math
 import platform
 import statistics
 import sys
@@ -28,8 +27,8 @@ ROOT = HERE.parent
 if str(ROOT / "src") not in sys.path:
     sys.path.insert(0, str(ROOT / "src"))
 
-from mechplan.studies import solve_file  # noqa: E402
-from mechplan.synthesis.cam import design, sample  # noqa: E402
+from mechplan.studies import solve_file
+from mechplan.synthesis.cam import design, sample
 
 
 def plain_numpy(phi: np.ndarray, h: float, beta_r: float, far: float, beta_d: float, r0: float,
