@@ -160,6 +160,8 @@ def _inversion(d: CamDesign, lang: str) -> tuple[Panel, float]:
         prims.append(Line((0.0, 0.0), (float(p[0]), float(p[1])), Role.THIN))
         if d.spec.follower.contact is Contact.FLAT:
             lo, hi = d.face or (-0.01, 0.01)
+            if g.sense < 0:                  # the s′ side is mirrored with the cam
+                lo, hi = -hi, -lo
             t = np.array([rays.normal[i, 1], -rays.normal[i, 0]])
             base = rays.pitch[i] - rays.s1[i] * t * (1 if g.sense > 0 else -1)
             prims.append(Line(tuple(((base + lo * t) / mu).tolist()),
