@@ -133,7 +133,7 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
                          key="limits.pressure_angle_rise")
 
     def fails(r: float) -> bool:
-        return max_ratio(_geometry(spec, r, 0.0), phi, limit) > 1.0 + 1e-12
+        return max_ratio(_geometry(spec, r, 0.0), phi, limit, m) > 1.0 + 1e-12
 
     # refine on the dense grid: bracket, then bisect
     if fails(r_osc):
@@ -141,7 +141,7 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
         while fails(lo + step):
             lo, step = lo + step, 2 * step
         hi = lo + step
-        for _ in range(40):
+        while hi - lo > 1e-10 * hi:
             mid = 0.5 * (lo + hi)
             lo, hi = (mid, hi) if fails(mid) else (lo, mid)
         r_osc = hi
@@ -151,7 +151,7 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
     if not abs(f.pivot_distance - f.arm) < given < f.pivot_distance + f.arm:
         raise SceneError(f"must lie between |a − l| and a + l (got {given * 1e3:g} mm)",
                          file=spec.path, key="limits.base_radius")
-    if max_ratio(_geometry(spec, given, 0.0), phi, limit) > 1.0 + 1e-9:
+    if max_ratio(_geometry(spec, given, 0.0), phi, limit, m) > 1.0 + 1e-9:
         raise SceneError(f"cannot meet the allowable pressure angles: it must be at least "
                          f"{r_min * 1e3:.3f} mm (got {given * 1e3:g} mm)", file=spec.path,
                          key="limits.base_radius")

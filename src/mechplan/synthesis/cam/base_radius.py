@@ -18,9 +18,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...model.cam import Contact, Motion, Phase, PhaseKind
-from .motion import phase_of
-from .profile import Geometry, sample
+from ...model.cam import Phase, PhaseKind
+from .motion import Motion as MotionValues
+from .motion import motion, phase_of
+from .profile import Geometry, pressure_angle
 
 
 @dataclass(frozen=True)
@@ -103,10 +104,11 @@ def translating_zone(s: np.ndarray, s1: np.ndarray, limit: np.ndarray,
     return Zone(planes, (x, y), math.hypot(x, y), x)
 
 
-def max_ratio(g: Geometry, phi: np.ndarray, limit: np.ndarray) -> float:
-    """max |α|/L over the cam angles (≤ 1 meets every limit)."""
-    smp = sample(g, phi)
-    return float(np.max(np.abs(smp.alpha) / limit))
+def max_ratio(g: Geometry, phi: np.ndarray, limit: np.ndarray,
+              m: MotionValues | None = None) -> float:
+    """max |α|/L over the cam angles (≤ 1 meets every limit); ``m`` is the motion at ``phi``."""
+    m = m if m is not None else motion(g.phases, g.stroke, phi)
+    return float(np.max(np.abs(pressure_angle(g, m.s, m.s1, m.s2)) / limit))
 
 
 def oscillating_r0(g: Geometry, phi: np.ndarray, limit: np.ndarray) -> float | None:
@@ -115,12 +117,13 @@ def oscillating_r0(g: Geometry, phi: np.ndarray, limit: np.ndarray) -> float | N
     lo = abs(a - l) * (1 + 1e-9) + 1e-9
     hi = (a + l) * (1 - 1e-9)
     ok_gamma = g.stroke
+    m = motion(g.phases, g.stroke, phi)
 
     def good(r0: float) -> bool:
         trial = _with_r0(g, r0)
         if trial.gamma0 + ok_gamma >= math.pi:
             return False
-        return max_ratio(trial, phi, limit) <= 1.0
+        return max_ratio(trial, phi, limit, m) <= 1.0
 
     grid = np.linspace(lo, hi, 80)
     first = next((r for r in grid if good(float(r))), None)
@@ -130,7 +133,7 @@ def oscillating_r0(g: Geometry, phi: np.ndarray, limit: np.ndarray) -> float | N
     hi_r = float(first)
     if good(lo_r):
         return lo_r
-    for _ in range(60):
+    while hi_r - lo_r > 1e-10 * hi_r:
         mid = 0.5 * (lo_r + hi_r)
         lo_r, hi_r = (lo_r, mid) if good(mid) else (mid, hi_r)
     return hi_r
@@ -146,5 +149,5 @@ def flat_r0(s: np.ndarray, s2: np.ndarray, rho_min: float) -> float:
     return float(np.max(rho_min - s - s2))
 
 
-__all__ = ["Contact", "HalfPlane", "Motion", "Zone", "flat_r0", "half_planes", "limit_per_angle",
+__all__ = ["HalfPlane", "Zone", "flat_r0", "half_planes", "limit_per_angle",
            "max_ratio", "nearest", "oscillating_r0", "translating_zone"]

@@ -93,6 +93,14 @@ def fixed_frame(g: Geometry, s: np.ndarray, s1: np.ndarray, s2: np.ndarray):
     return p, p1, p2, d1 / g.arm
 
 
+def pressure_angle(g: Geometry, s: np.ndarray, s1: np.ndarray, s2: np.ndarray) -> np.ndarray:
+    """Signed pressure angle (rad) of a knife or roller follower, σ = +1 frame."""
+    p, p1, _, u = fixed_frame(g, s, s1, s2)
+    t_fixed = p1 - _J(p)
+    n = _J(t_fixed)
+    return np.arctan2(_cross(u, n), np.einsum("ij,ij->i", u, n))
+
+
 def sample(g: Geometry, phi: np.ndarray | float) -> Sample:
     """Evaluate the pitch curve, profile, pressure angle and curvature at cam angles ``phi``."""
     m = motion(g.phases, g.stroke, phi)
