@@ -83,9 +83,15 @@ def _motion_diagrams(d: CamDesign, lang: str) -> list[Panel]:
     for name, values, unit, f in (("s", d.dense.s, u.u0, u.f0), ("s1", d.dense.s1, u.u1, u.f1),
                                   ("s2", d.dense.s2, u.u2, u.f1)):
         y = closed(values, f)
+        curves = [Curve(phi_deg, y)]
+        for c in d.comparisons:        # the graphical differentiation (chords), dashed
+            if name == "s1":
+                curves.append(Curve(np.degrees(c.mids), c.s1_by_chords * f, Role.DASHED))
+            elif name == "s2" and c.inner_nodes.size > 1:
+                curves.append(Curve(np.degrees(c.inner_nodes), c.s2_by_chords * f, Role.DASHED))
         symbol = {"s": "s", "s1": "s′", "s2": "s″"}[name]
         dg = diagram_panel(f"cam-{name}", message(f"cam.sheet.{name}", lang),
-                           [Curve(phi_deg, y)], x_axis, Axis(symbol, unit, DIAGRAM_H), lang)
+                           curves, x_axis, Axis(symbol, unit, DIAGRAM_H), lang)
         panels.append(dg)
         mus.append(dg.mu_y / f)             # SI per mm
     mu_phi = math.radians(2.0)

@@ -10,7 +10,7 @@ the trapezoid under the integrated s′ (the chord of the integral curve).
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -31,6 +31,10 @@ class PhaseComparison:
     s1_max: float
     s2_max: float
     stroke: float
+    mids: np.ndarray = field(repr=False, default_factory=lambda: np.zeros(0))       # rad
+    s1_by_chords: np.ndarray = field(repr=False, default_factory=lambda: np.zeros(0))
+    inner_nodes: np.ndarray = field(repr=False, default_factory=lambda: np.zeros(0))  # rad
+    s2_by_chords: np.ndarray = field(repr=False, default_factory=lambda: np.zeros(0))
 
 
 def compare(phases: tuple[Phase, ...], stroke: float, divisions: int = 12) -> list[PhaseComparison]:
@@ -57,5 +61,6 @@ def compare(phases: tuple[Phase, ...], stroke: float, divisions: int = 12) -> li
             float(np.max(np.abs(s2_ch - ex_n.s2[1:-1]))) if divisions > 1 else 0.0,
             float(np.max(np.abs(s1_int - ex_n.s1))),
             float(np.max(np.abs(s_int - ex_n.s))),
-            float(np.max(np.abs(ex_n.s1))), float(np.max(np.abs(ex_n.s2))), stroke))
+            float(np.max(np.abs(ex_n.s1))), float(np.max(np.abs(ex_n.s2))), stroke,
+            mids, s1_ch, nodes[1:-1], s2_ch))
     return out
