@@ -77,3 +77,16 @@ def test_clockwise_cam_is_the_mirror_image():
     cw = solve_text(cam_text(offset="4 mm", sense="cw"), "b.toml").design
     assert cw.geometry.r0 == pytest.approx(ccw.geometry.r0)
     assert np.allclose(cw.table.profile * [-1, 1], ccw.table.profile)
+
+
+def test_table_laws_in_a_scene_follow_the_law_they_tabulate():
+    xs = np.linspace(0, 1, 61)
+    s_mm = 20 * (xs - np.sin(2 * np.pi * xs) / (2 * np.pi))
+    table = ", ".join(f'"{float(v)!r} mm"' for v in s_mm)
+    shape = ", ".join(repr(float(v)) for v in np.sin(2 * np.pi * np.linspace(0, 1, 121)))
+    text = cam_text().replace('law = "cycloidal" }', f'law = "table", s = [{table}] }}', 1)
+    text = text.replace('law = "cycloidal" }', f'law = "table", a = [{shape}] }}', 1)
+    exact = solve_text(cam_text(), "a.toml").design
+    tab = solve_text(text, "t.toml").design
+    assert tab.r0_min == pytest.approx(exact.r0_min, rel=2e-4)
+    assert np.max(np.abs(tab.dense.s - exact.dense.s)) < 2e-6          # m
