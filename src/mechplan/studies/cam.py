@@ -105,8 +105,11 @@ class CamStudy:
                 text += " — " + message("cam.report.r0_best", lang)
             lines.append(text)
         g = d.geometry
-        lines.append(message("cam.report.r0_used", lang, r0=number(g.r0 * 1e3, 3, lang),
-                             rw=number((g.r0 - g.roller) * 1e3, 3, lang)))
+        if spec.follower.contact is Contact.FLAT:
+            lines.append(message("cam.report.r0_flat", lang, r0=number(g.r0 * 1e3, 3, lang)))
+        else:
+            lines.append(message("cam.report.r0_used", lang, r0=number(g.r0 * 1e3, 3, lang),
+                                 rw=number((g.r0 - g.roller) * 1e3, 3, lang)))
         if spec.follower.contact is not Contact.FLAT:
             lines.append(message("cam.report.alpha", lang, ar=number(deg(d.alpha_rise.value), 2, lang),
                                  pr=number(deg(d.alpha_rise.phi), 2, lang),
