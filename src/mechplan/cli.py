@@ -70,6 +70,10 @@ def _draw(args: argparse.Namespace) -> int:
             for sheet in study.sheets(args.sheet, args.standard, args.lang, Path(path).stem):
                 for written in write(sheet, out, formats):
                     print(written)
+            extra = getattr(study, "write_files", None)     # e.g. a cam's profile DXF
+            if extra is not None and "dxf" in formats:
+                for written in extra(out, Path(path).stem):
+                    print(written)
         except MechplanError as exc:
             failed += 1
             print(f"mechplan: error: {exc}", file=sys.stderr)

@@ -49,6 +49,10 @@ def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
         from .engine import solve_engine_text
 
         return solve_engine_text(text, file)
+    if kind == "cam":
+        from .cam import solve_cam
+
+        return solve_cam(text, file)
     raise SceneError(f"scenes of kind {kind!r} are not supported by this build", file=file,
                      key="kind")
 

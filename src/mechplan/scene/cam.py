@@ -1,0 +1,221 @@
+"""Parse a cam scene (``kind = "cam"``) into a :class:`~mechplan.model.cam.CamSpec`."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from ..errors import SceneError
+from ..model.cam import (
+    CamDrawing,
+    CamSpec,
+    Contact,
+    Follower,
+    Law,
+    Limits,
+    Motion,
+    Phase,
+    PhaseKind,
+)
+from .document import parse_toml
+from .reader import Table
+from .spec import LANGUAGES, TITLE_BLOCK_FIELDS
+
+TOP_KEYS = ("kind", "title", "language", "description", "follower", "motion", "limits", "drawing",
+            "title_block")
+LAWS = tuple(law.value for law in Law if law not in (Law.TABLE_S, Law.TABLE_A)) + ("table",)
+KINDS = tuple(k.value for k in PhaseKind)
+FULL_TURN_TOL = math.radians(1e-6)
+
+
+def parse_cam(text: str, file: str = "<scene>") -> CamSpec:
+    """Parse the text of a cam scene; every error names the file and the key."""
+    top = Table(parse_toml(text, file), "", file)
+    top.check_keys(TOP_KEYS)
+    follower = _follower(top)
+    stroke, omega, sense, phases = _motion(top, follower)
+    limits = _limits(top, follower)
+    return CamSpec(title=top.string("title", Path(file).stem) or "",
+                   language=top.string("language", "en", choices=LANGUAGES) or "en",
+                   follower=follower, phases=phases, stroke=stroke, omega=omega, sense=sense,
+                   limits=limits, drawing=_drawing(top), path=file)
+
+
+def _required(top: Table, name: str) -> Table:
+    t = top.table(name)
+    if t is None:
+        raise top.error(name, "table is missing")
+    return t
+
+
+def _follower(top: Table) -> Follower:
+    f = _required(top, "follower")
+    f.check_keys(("motion", "contact", "offset", "roller_radius", "arm", "pivot_distance",
+                  "face_margin"))
+    motion = Motion(f.string("motion", "translating", choices=tuple(m.value for m in Motion)))
+    contact = Contact(f.string("contact", "roller", choices=tuple(c.value for c in Contact)))
+    roller = 0.0
+    if contact is Contact.ROLLER:
+        roller = f.quantity("roller_radius", "length", required=True, positive=True) or 0.0
+    elif f.has("roller_radius"):
+        raise f.error("roller_radius", f"is only for a roller follower (the contact is "
+                      f"{contact.value!r})")
+    arm = pivot = 0.0
+    offset: float | None = 0.0
+    if motion is Motion.OSCILLATING:
+        if contact is Contact.FLAT:
+            raise f.error("contact", "must be knife or roller for an oscillating follower (got "
+                          "'flat'); a flat-faced oscillating follower is not supported")
+        arm = f.quantity("arm", "length", required=True, positive=True) or 0.0
+        pivot = f.quantity("pivot_distance", "length", required=True, positive=True) or 0.0
+        if f.has("offset"):
+            raise f.error("offset", "is only for a translating follower")
+    else:
+        for k in ("arm", "pivot_distance"):
+            if f.has(k):
+                raise f.error(k, "is only for an oscillating follower")
+        raw = f.raw("offset", "0 mm")
+        if raw == "best":
+            offset = None
+        else:
+            offset = f.value_quantity(raw, "offset", "length")
+        if contact is Contact.FLAT and offset is None:
+            raise f.error("offset", "must be a length for a flat-faced follower (got 'best'); "
+                          "the offset does not change a flat-faced follower's profile")
+    margin = f.quantity("face_margin", "length", 0.005, nonnegative=True) or 0.0
+    return Follower(motion, contact, offset, roller, arm, pivot, margin)
+
+
+def _motion(top: Table, follower: Follower) -> tuple[float, float, int, tuple[Phase, ...]]:
+    m = _required(top, "motion")
+    m.check_keys(("stroke", "swing", "speed", "sense", "phases"))
+    if follower.motion is Motion.OSCILLATING:
+        if m.has("stroke"):
+            raise m.error("stroke", "is for a translating follower; give the swing of an "
+                          "oscillating follower as swing = \"20 deg\"")
+        stroke = m.quantity("swing", "angle", required=True) or 0.0
+        if not 0 < stroke < math.pi / 2:
+            raise m.error("swing", f"must be between 0° and 90° (got {m.raw('swing')!r})")
+        unit = "angle"
+    else:
+        if m.has("swing"):
+            raise m.error("swing", "is for an oscillating follower; give stroke = \"20 mm\"")
+        stroke = m.quantity("stroke", "length", required=True) or 0.0
+        if not stroke > 0:
+            raise m.error("stroke", f"must be positive (got {m.raw('stroke')!r})")
+        unit = "length"
+    omega = m.quantity("speed", "angular_velocity", required=True) or 0.0
+    if not omega > 0:
+        raise m.error("speed", f"must be positive; give the sense with sense = \"cw\" "
+                      f"(got {m.raw('speed')!r})")
+    sense = 1 if m.string("sense", "ccw", choices=("ccw", "cw")) == "ccw" else -1
+    raw = m.raw("phases", required=True)
+    if not isinstance(raw, list) or not raw:
+        raise m.error("phases", "expected a list of phase tables ([[motion.phases]])")
+    phases = tuple(_phase(Table(p, f"{m.key('phases')}[{i}]", m.file), stroke, unit)
+                   for i, p in enumerate(raw))
+    total = sum(p.angle for p in phases)
+    if abs(total - 2 * math.pi) > FULL_TURN_TOL:
+        raise m.error("phases", f"angles must sum to 360° (got {math.degrees(total):.6g}°)")
+    level = 0
+    needs = {PhaseKind.RISE: 0, PhaseKind.FAR_DWELL: 1, PhaseKind.RETURN: 1, PhaseKind.NEAR_DWELL: 0}
+    for p in phases:
+        if needs[p.kind] != level:
+            where = "the far position (after a rise)" if needs[p.kind] else \
+                "the near position (after a return or at the start)"
+            raise SceneError(f"a {p.kind.value} must start from {where}; order the phases "
+                             "rise, far_dwell, return, near_dwell", file=m.file, key=p.key + ".kind")
+        level = {PhaseKind.RISE: 1, PhaseKind.RETURN: 0}.get(p.kind, level)
+    if level != 0:
+        raise m.error("phases", "must end at the near position: add a return")
+    return stroke, omega, sense, phases
+
+
+def _phase(t: Table, stroke: float, unit: str) -> Phase:
+    t.check_keys(("kind", "angle", "law", "blend", "s", "a"))
+    kind = PhaseKind(t.string("kind", required=True, choices=KINDS))
+    angle = t.quantity("angle", "angle", required=True) or 0.0
+    if not angle > 0:
+        raise t.error("angle", f"must be positive (got {t.raw('angle')!r})")
+    moving = kind in (PhaseKind.RISE, PhaseKind.RETURN)
+    if not moving:
+        for k in ("law", "blend", "s", "a"):
+            if t.has(k):
+                raise t.error(k, f"is not used by a {kind.value}")
+        return Phase(kind, angle, key=t.path)
+    name = t.string("law", required=True, choices=LAWS)
+    blend = 0.1
+    if name == "uniform":
+        blend = t.quantity("blend", "dimensionless", 0.1) or 0.0
+        if not 0 < blend < 0.5:
+            raise t.error("blend", f"must be between 0 and 0.5 (got {t.raw('blend')!r})")
+    elif t.has("blend"):
+        raise t.error("blend", "is only for the uniform law")
+    if name != "table":
+        for k in ("s", "a"):
+            if t.has(k):
+                raise t.error(k, "is only for law = \"table\"")
+        return Phase(kind, angle, Law(name), blend, key=t.path)
+    if t.has("s") == t.has("a"):
+        raise t.error("law", "a table law needs exactly one of s (displacements) or a "
+                      "(acceleration shape), equally spaced over the phase")
+    if t.has("s"):
+        values = _values(t, "s", unit, 4)
+        start, end = (0.0, stroke) if kind is PhaseKind.RISE else (stroke, 0.0)
+        if abs(values[0] - start) > 1e-9 * stroke or abs(values[-1] - end) > 1e-9 * stroke:
+            raise t.error("s", f"must run from {start:g} to {end:g} (SI) over a {kind.value} "
+                          f"(got {values[0]:g} … {values[-1]:g})")
+        return Phase(kind, angle, Law.TABLE_S, table=tuple(values), key=t.path)
+    values = _values(t, "a", "dimensionless", 3)
+    return Phase(kind, angle, Law.TABLE_A, table=tuple(values), key=t.path + ".a")
+
+
+def _values(t: Table, name: str, dimension: str, least: int) -> list[float]:
+    raw = t.raw(name)
+    if not isinstance(raw, list) or len(raw) < least:
+        raise t.error(name, f"expected a list of at least {least} values (got {raw!r})")
+    return [t.value_quantity(v, f"{name}[{i}]", dimension) for i, v in enumerate(raw)]
+
+
+def _limits(top: Table, follower: Follower) -> Limits:
+    t = top.table("limits") or Table({}, "limits", top.file)
+    t.check_keys(("pressure_angle_rise", "pressure_angle_return", "base_radius",
+                  "min_curvature_radius"))
+    default = math.radians(45.0 if follower.motion is Motion.OSCILLATING else 30.0)
+    rise = t.quantity("pressure_angle_rise", "angle", default)
+    ret = t.quantity("pressure_angle_return", "angle", math.radians(70.0))
+    for k, v in (("pressure_angle_rise", rise), ("pressure_angle_return", ret)):
+        if v is None or not 0 < v < math.pi / 2:
+            raise t.error(k, f"must be between 0° and 90° (got {t.raw(k)!r})")
+    base = t.quantity("base_radius", "length", positive=True)
+    rho = t.quantity("min_curvature_radius", "length", 0.0, nonnegative=True) or 0.0
+    return Limits(rise or 0.0, ret or 0.0, base, rho)
+
+
+def _drawing(top: Table) -> CamDrawing:
+    fields: dict[str, str] = {}
+    tb = top.table("title_block")
+    if tb is not None:
+        tb.check_keys(TITLE_BLOCK_FIELDS)
+        for k, v in tb.data.items():
+            if isinstance(v, (dict, list)) or "\n" in str(v):
+                raise tb.error(k, f"expected one line of text (got {v!r})")
+            fields[k] = str(v)
+    t = top.table("drawing")
+    if t is None:
+        return CamDrawing(title_block=fields)
+    t.check_keys(("sheet", "standard", "ray_step", "table_step", "chord_error"))
+    d = CamDrawing()
+    steps = {}
+    for k, default in (("ray_step", d.ray_step), ("table_step", d.table_step)):
+        v = t.quantity(k, "angle", default) or default
+        if not math.radians(0.5) <= v <= math.radians(90):
+            raise t.error(k, f"must be between 0.5° and 90° (got {t.raw(k)!r})")
+        steps[k] = v
+    chord = t.quantity("chord_error", "length", d.chord_error, positive=True) or d.chord_error
+    if not 1e-8 <= chord <= 1e-3:
+        raise t.error("chord_error", f"must be between 0.01 µm and 1 mm (got {t.raw('chord_error')!r})")
+    return CamDrawing(sheet=t.string("sheet", "A1", choices=("A0", "A1", "A2", "A3", "A4")) or "A1",
+                      standard=t.string("standard", "iso", choices=("iso", "gost", "tcvn")) or "iso",
+                      ray_step=steps["ray_step"], table_step=steps["table_step"],
+                      chord_error=chord, title_block=fields)

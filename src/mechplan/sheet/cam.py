@@ -1,0 +1,226 @@
+"""The cam sheet: s, s′, s″ diagrams, the s′–s diagram with its admissible zone, the construction of
+the profile by inversion, the results and the profile table, on framed sheets."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..construct.scale import round_scale
+from ..i18n import message, number
+from ..model.cam import Contact, Motion
+from ..synthesis.cam.profile import follower_positions
+from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
+from .layout import framed_sheets
+from .panels import Panel
+from .primitives import Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
+
+if TYPE_CHECKING:
+    from ..synthesis.cam import CamDesign
+    from .primitives import Sheet
+
+DIAGRAM_W = 180.0      # mm, the φ axis of a full turn
+DIAGRAM_H = 45.0       # mm
+CAM_R = 110.0          # mm, largest radius of the inversion drawing
+STEP = 10              # every 10th dense sample on the curves (0.1°)
+
+
+@dataclass(frozen=True)
+class Units:
+    """How s, s′, s″, v, a are written: factor from SI and unit text."""
+
+    f0: float
+    f1: float                  # factor of s′ and s″
+    u0: str
+    u1: str
+    u2: str
+    uv: str
+    ua: str
+
+
+def units_of(d: CamDesign, lang: str) -> Units:
+    """Millimetres for a translating follower, degrees and radians for an oscillating one."""
+    def u(name: str) -> str:
+        return message(f"cam.unit.{name}", lang)
+    if d.spec.follower.motion is Motion.TRANSLATING:
+        return Units(1e3, 1e3, u("mm"), u("mm"), u("mm"), u("m_s"), u("m_s2"))
+    return Units(180.0 / math.pi, 1.0, u("deg"), u("rad_rad"), u("per_rad"), u("rad_s"), u("rad_s2"))
+
+
+def table_rows(d: CamDesign, lang: str) -> tuple[list[str], list[list[str]]]:
+    """Heading and rows of the profile table, formatted for ``lang``."""
+    from ..synthesis.cam import profile_table
+
+    u = units_of(d, lang)
+    head = [message("cam.col.phi", lang), message("cam.col.s", lang, u=u.u0),
+            message("cam.col.s1", lang, u=u.u1), message("cam.col.s2", lang, u=u.u2),
+            message("cam.col.alpha", lang), message("cam.col.rho", lang),
+            message("cam.col.theta", lang), message("cam.col.x", lang), message("cam.col.y", lang)]
+    rows = []
+    for r in profile_table(d.table):
+        rows.append([number(math.degrees(r["phi"]), 1, lang), number(r["s"] * u.f0, 3, lang),
+                     number(r["s1"] * u.f1, 3, lang), number(r["s2"] * u.f1, 3, lang),
+                     number(math.degrees(r["alpha"]), 2, lang), number(r["rho"] * 1e3, 3, lang),
+                     number(math.degrees(r["theta"]), 2, lang), number(r["x"] * 1e3, 3, lang),
+                     number(r["y"] * 1e3, 3, lang)])
+    return head, rows
+
+
+
+
+def _motion_diagrams(d: CamDesign, lang: str) -> list[Panel]:
+    u = units_of(d, lang)
+    phi_deg = np.degrees(d.dense.phi[::STEP])
+    phi_deg = np.append(phi_deg, 360.0)
+    def closed(v: np.ndarray, f: float) -> np.ndarray:
+        return np.append(v[::STEP], v[0]) * f
+    x_axis = Axis("φ", "°", DIAGRAM_W, mu=2.0)
+    panels = []
+    mus = []
+    for name, values, unit, f in (("s", d.dense.s, u.u0, u.f0), ("s1", d.dense.s1, u.u1, u.f1),
+                                  ("s2", d.dense.s2, u.u2, u.f1)):
+        y = closed(values, f)
+        curves = [Curve(phi_deg, y)]
+        for c in d.comparisons:        # the graphical differentiation (chords), dashed
+            if name == "s1":
+                curves.append(Curve(np.degrees(c.mids), c.s1_by_chords * f, Role.DASHED))
+            elif name == "s2" and c.inner_nodes.size > 1:
+                curves.append(Curve(np.degrees(c.inner_nodes), c.s2_by_chords * f, Role.DASHED))
+        symbol = {"s": "s", "s1": "s′", "s2": "s″"}[name]
+        dg = diagram_panel(f"cam-{name}", message(f"cam.sheet.{name}", lang),
+                           curves, x_axis, Axis(symbol, unit, DIAGRAM_H), lang)
+        panels.append(dg)
+        mus.append(dg.mu_y / f)             # SI per mm
+    mu_phi = math.radians(2.0)
+    out = []
+    for i, dg in enumerate(panels):
+        if i > 0:
+            # pole distance of the graphical differentiation from the diagram above
+            H = mus[i - 1] / (mus[i] * mu_phi)
+            x0, y0, _, _ = dg.panel.bounds()
+            dg.panel.primitives.append(Text((x0, y0 - 4.0), message("cam.sheet.pole", lang,
+                                                                    H=number(H, 1, lang)), 2.5,
+                                            valign=VAlign.TOP))
+        out.append(dg.panel)
+    return out
+
+
+def _ss1_diagram(d: CamDesign, lang: str) -> Panel | None:
+    if d.zone is None:
+        return None
+    k = 1e3
+    s1, s = d.dense.s1[::STEP] * k, d.dense.s[::STEP] * k
+    cx, cy = d.zone.centre[0] * k, d.zone.centre[1] * k
+    low = cy * 1.25 - 2.0
+    curves = [Curve(np.append(s1, s1[0]), np.append(s, s[0]), Role.OUTLINE)]
+    for h in d.zone.planes:
+        ax, ay = h.at[0] * k, h.at[1] * k
+        dx, dy = -h.n[1], h.n[0]          # along the boundary line
+        if dy > 0:
+            dx, dy = -dx, -dy
+        t = (low - ay) / dy
+        curves.append(Curve(np.array([ax, ax + t * dx]), np.array([ay, low]), Role.THIN))
+    curves.append(Curve(np.array([cx, 0.0]), np.array([cy, 0.0]), Role.DASHED,
+                        label=f"r0 = {number(d.zone.r0 * k, 2, lang)}"))
+    span = max(float(np.ptp(np.append(s1, cx))), float(np.ptp(np.append(s, low))))
+    mu = round_scale(span / 110.0)
+    dg = diagram_panel("cam-ss1", message("cam.sheet.ss1", lang), curves,
+                       Axis("s′", message("cam.unit.mm", lang), 110.0, mu=mu),
+                       Axis("s", message("cam.unit.mm", lang), 110.0, mu=mu), lang,
+                       markers=[Marker(cx, cy, "O")])
+    zx, zy = dg.to_mm(cx, cy * 1.1 - 1.0)
+    dg.panel.primitives.append(Text((zx, zy), message("cam.sheet.zone", lang), 2.5,
+                                    halign=HAlign.CENTER, valign=VAlign.TOP))
+    return dg.panel
+
+
+def _inversion(d: CamDesign, lang: str) -> tuple[Panel, float]:
+    g = d.geometry
+    reach = float(np.max(np.hypot(*d.dense.pitch.T)))
+    if g.motion is Motion.OSCILLATING:
+        reach = max(reach, g.pivot + 0.1 * g.arm)
+    length = 0.35 * g.r0
+    mu = round_scale((reach + length + g.roller) / CAM_R)   # m per mm
+    def mm(p: np.ndarray) -> list[tuple[float, float]]:
+        return [(float(x) / mu, float(y) / mu) for x, y in p]
+    prims: list[Primitive | Table] = []
+    prims.append(Line((-4.0, 0.0), (4.0, 0.0), Role.THIN))
+    prims.append(Line((0.0, -4.0), (0.0, 4.0), Role.THIN))
+    prims.append(Text((1.5, -1.5), "O", 3.5, valign=VAlign.TOP))
+    prims.append(Circle((0.0, 0.0), g.r0 / mu, Role.CHAIN))
+    if g.motion is Motion.TRANSLATING and abs(g.e) > 1e-9:
+        prims.append(Circle((0.0, 0.0), abs(g.e) / mu, Role.DASHED))
+    if g.motion is Motion.OSCILLATING:
+        prims.append(Circle((0.0, 0.0), g.pivot / mu, Role.CHAIN))
+    pitch = d.dense.pitch[::STEP]
+    if d.spec.follower.contact is not Contact.FLAT:
+        prims.append(Polyline(tuple(mm(pitch)), Role.DASHED, closed=True))
+    prims.append(Polyline(tuple(mm(d.profile_points)), Role.OUTLINE, closed=True))
+    rays = d.rays
+    a, b = follower_positions(g, rays, length)
+    for i in range(rays.phi.size):
+        p = rays.pitch[i] / mu
+        prims.append(Line((0.0, 0.0), (float(p[0]), float(p[1])), Role.THIN))
+        if d.spec.follower.contact is Contact.FLAT:
+            lo, hi = d.face or (-0.01, 0.01)
+            if g.sense < 0:                  # the s′ side is mirrored with the cam
+                lo, hi = -hi, -lo
+            t = np.array([rays.normal[i, 1], -rays.normal[i, 0]])
+            base = rays.pitch[i] - rays.s1[i] * t * (1 if g.sense > 0 else -1)
+            prims.append(Line(tuple(((base + lo * t) / mu).tolist()),
+                              tuple(((base + hi * t) / mu).tolist()), Role.THIN))
+        else:
+            prims.append(Line(tuple((a[i] / mu).tolist()), tuple((b[i] / mu).tolist()), Role.THIN))
+        if g.roller > 0:
+            prims.append(Circle((float(p[0]), float(p[1])), g.roller / mu, Role.THIN))
+        r = math.hypot(*p)
+        lbl = p * (1 + 6.0 / r) if r > 0 else p
+        prims.append(Text((float(lbl[0]), float(lbl[1])), str(i), 2.5, halign=HAlign.CENTER,
+                          valign=VAlign.MIDDLE))
+    top = max(y for p in prims if isinstance(p, Circle) for y in (p.center[1] + p.radius,))
+    left = -CAM_R
+    prims.append(Text((left, top + 14.0), message("cam.sheet.inversion", lang), 3.5))
+    prims.append(Text((left, top + 8.0), message("cam.sheet.scale", lang, mu=number(mu, 4, lang)) +
+                      ";  " + message("cam.sheet.base", lang, r0=number(g.r0 * 1e3, 2, lang)), 2.5))
+    prims.append(Text((left, top + 3.0), "— " + message("cam.sheet.working", lang) + ";  - - " +
+                      message("cam.sheet.pitch", lang), 2.5))
+    return Panel("cam-inversion", list(prims)), mu
+
+
+def _results(keep: list[str], lang: str) -> Panel:
+    prims: list[Primitive | Table] = [Text((0.0, 0.0), message("cam.sheet.results", lang), 3.5)]
+    for i, ln in enumerate(keep):
+        prims.append(Text((0.0, -6.0 - 4.5 * i), ln, 2.5))
+    return Panel("cam-results", prims)
+
+
+def _table(head: list[str], rows: list[list[str]], lang: str) -> Panel:
+    widths = (12.0, 14.0, 14.0, 16.0, 13.0, 15.0, 14.0, 15.0, 15.0)
+    cells = (tuple(head),) + tuple(tuple(r) for r in rows)
+    table = Table((0.0, 0.0), widths, (6.0,) + (4.5,) * len(rows), cells, text_height_mm=1.8)
+    return Panel("cam-table", [Text((0.0, 3.0), message("cam.sheet.table", lang), 3.5), table])
+
+
+def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[list[str]]],
+               size: str | None, standard: str | None, lang: str, name: str) -> list[Sheet]:
+    """Lay the cam's panels out on framed sheets; ``summary`` are the report's result sentences."""
+    spec = d.spec
+    inversion, mu = _inversion(d, lang)
+    panels = [inversion, *_motion_diagrams(d, lang)]
+    ss1 = _ss1_diagram(d, lang)
+    if ss1 is not None:
+        panels.append(ss1)
+    panels += [_table(*table, lang), _results(summary, lang)]
+    r = mu * 1000.0
+    scale = f"1:{r:g}" if r >= 1 else f"{1 / r:g}:1"
+    fields = {"title": spec.title, "scale": scale}
+    fields.update({k: v for k, v in spec.drawing.title_block.items() if v})
+    return framed_sheets(panels, size=size or spec.drawing.sheet,
+                         standard=standard or spec.drawing.standard, language=lang, name=name,
+                         fields=fields)
+
+
+__all__ = ["Units", "cam_sheets", "mu_text", "scale_for", "table_rows", "units_of"]

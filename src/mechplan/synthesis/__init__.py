@@ -1,0 +1,1 @@
+"""Synthesis: cams (laws, base radius, inversion profile) and gears."""
