@@ -1,0 +1,1 @@
+"""Synthesis: cams and gears."""
