@@ -45,6 +45,10 @@ def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
         from .mechanism import MechanismStudy
 
         return MechanismStudy(solve(parse_scene(text, file), at_deg=at_deg, count=count))
+    if kind == "gears":
+        from .gears import solve_gear_text
+
+        return solve_gear_text(text, file)
     raise SceneError(f"scenes of kind {kind!r} are not supported by this build", file=file,
                      key="kind")
 
