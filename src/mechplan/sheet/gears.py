@@ -37,13 +37,13 @@ def condition_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, bool
     mm = message("gears.unit.mm", lang)
     names = s.scheme.gear_names
     rows = [(message("gears.cond.ratio", lang),
-             f"i_{names[0]}{names[-1]}^h = {n(res.willis_i, 4)};  u_{s.input}{s.output} = "
+             (f"i_{names[0]}{names[-1]}^h = {n(res.willis_i, 4)};  u_{s.input}{s.output} = "
              f"{n(c.ratio, 4)};  u* = {n(s.ratio, 4)} ± {n(s.deviation * 100, 1)} %;  "
-             f"Δu = {n(c.ratio_error * 100, 2)} %", c.ratio_ok)]
+             f"Δu = {n(c.ratio_error * 100, 2)} %"), c.ratio_ok)]
     second = f"{names[-2]}–{names[-1]}"
     rows.append((message("gears.cond.coaxial", lang),
-                 f"a_w({names[0]}–{names[1]}) = {_mm(c.a_w[0], lang)} mm;  a_w({second}) = "
-                 f"{_mm(c.a_w[1], lang)} mm", c.coaxial))
+                 (f"a_w({names[0]}–{names[1]}) = {_mm(c.a_w[0], lang)} mm;  a_w({second}) = "
+                 f"{_mm(c.a_w[1], lang)} mm"), c.coaxial))
     k = s.planets
     if c.assembly_p is not None:
         total = c.assembly_value * (1 + k * c.assembly_p)
@@ -53,8 +53,8 @@ def condition_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, bool
         text = f"z{names[0]}·u/k = {n(c.assembly_value, 4)};  p: —"
     rows.append((message("gears.cond.assembly", lang), text, c.assembly_p is not None))
     rows.append((message("gears.cond.neighbour", lang),
-                 f"2a_w·sin(π/{k}) = {_mm(c.neighbour_span, lang)} {mm} > d_a = "
-                 f"{_mm(c.planet_tip, lang)} {mm}", c.neighbour_ok))
+                 (f"2a_w·sin(π/{k}) = {_mm(c.neighbour_span, lang)} {mm} > d_a = "
+                 f"{_mm(c.planet_tip, lang)} {mm}"), c.neighbour_ok))
     rows.append((message("gears.cond.undercut", lang), f"min z = {c.z_smallest} ≥ {s.z_min}",
                  c.undercut_ok))
     if c.ring_difference is not None:

@@ -115,11 +115,11 @@ def _layout(p: PairSpec, x1: float, x2: float) -> Pair:
         r_a = r + m * (ha + x - dy)
         s = m * (math.pi / 2 + 2 * x * math.tan(al))
         a_a = math.acos(min(1.0, r_b / r_a))
-        raw.append(dict(z=z, x=x, r=r, r_b=r_b, r_w=r_b / math.cos(aw), r_a=r_a,
-                        r_f=r - m * (ha + c - x), s=s,
-                        s_w=2 * (r_b / math.cos(aw)) * (s / (2 * r) + float(inv(al)) - inv_w),
-                        s_a=2 * r_a * (s / (2 * r) + float(inv(al)) - float(inv(a_a))),
-                        rho_l=r * math.sin(al) - (ha - x) * m / math.sin(al)))
+        raw.append({"z": z, "x": x, "r": r, "r_b": r_b, "r_w": r_b / math.cos(aw), "r_a": r_a,
+                        "r_f": r - m * (ha + c - x), "s": s,
+                        "s_w": 2 * (r_b / math.cos(aw)) * (s / (2 * r) + float(inv(al)) - inv_w),
+                        "s_a": 2 * r_a * (s / (2 * r) + float(inv(al)) - float(inv(a_a))),
+                        "rho_l": r * math.sin(al) - (ha - x) * m / math.sin(al)})
     tip = [math.sqrt(max(q["r_a"] ** 2 - q["r_b"] ** 2, 0.0)) for q in raw]
     rho_p = (g - tip[1], g - tip[0])        # lowest contact on gear 1 (B1), on gear 2 (B2)
     gears = []
