@@ -36,7 +36,7 @@ shift_rule = "no_undercut"
 
 
 def scene(**kw) -> str:
-    values = dict(scheme="two_row_ext_int", ratio=4, k=4, module="2 mm")
+    values = {"scheme": "two_row_ext_int", "ratio": 4, "k": 4, "module": "2 mm"}
     values.update(kw)
     return SCENE.format(**values)
 

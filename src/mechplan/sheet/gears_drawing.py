@@ -127,10 +127,10 @@ def _place(pts: np.ndarray, c: tuple[float, float], angle: float, s: float) -> l
 
 
 def mesh_scale(pair: Pair) -> float:
-    """Drawing scale (paper mm per mm): the largest of 1, 2, 2.5, 4, 5, 10 fitting 3 pitches in 170 mm."""
+    """Drawing scale (paper mm per mm): the largest of 10, 5, 4, 2.5, 2, 1 … fitting 5 pitches in 280 mm."""
     m_mm = pair.spec.module * 1000
     for s in (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.25):
-        if 5.0 * math.pi * m_mm * s <= 170.0:
+        if 5.0 * math.pi * m_mm * s <= 280.0:
             return s
     return 0.1
 
@@ -172,12 +172,13 @@ def mesh_panel(pair: Pair, lang: str) -> Panel:
     B1 = N2 + d * math.sqrt(g2.r_a ** 2 - g2.r_b ** 2) * S
     prims.append(Line(tuple(N1 + d * 8.0), tuple(N2 - d * 8.0), Role.THIN))
     prims.append(Line(tuple(B1), tuple(B2), Role.OUTLINE))
-    prims.append(Line(O1, O2, Role.CHAIN))
+    reach = 1.6 * math.pi * sp.module * S + 20.0         # the centre line within the drawing
+    prims.append(Line((0.0, max(O1[1], -reach)), (0.0, min(O2[1], reach)), Role.CHAIN))
     for label, q in (("N1", N1), ("N2", N2), ("B1", B1), ("B2", B2), ("P", (0.0, 0.0))):
         prims.append(Circle((float(q[0]), float(q[1])), 0.5, Role.OUTLINE))
         prims.append(Text((float(q[0]) + 1.2, float(q[1]) + 1.2), label, TEXT_H))
     for label, c, g in (("O1", O1, g1), ("O2", O2, g2)):
-        if abs(c[1]) < 300.0:
+        if abs(c[1]) <= reach:
             prims.append(Circle(c, 0.8, Role.OUTLINE))
             prims.append(Text((c[0] + 1.5, c[1]), label, TEXT_H))
     top = max(p for q in prims if isinstance(q, Polyline) for _, p in q.points)
