@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from scenes import TEMPLATES as LINKAGE_TEMPLATES
 
 from mechplan.construct.builder import build_construction
 from mechplan.construct.plans.force import pair_key
@@ -23,7 +24,7 @@ from .dyad_scenes import CYCLE, PINNED_SLIDERS, SCOTCH_YOKE
 from .newton_euler import Kinematics, applied_loads, rich_loading, solve_global
 
 ROOT = Path(__file__).resolve().parents[2]
-TEMPLATES = sorted(p.stem for p in (ROOT / "templates").glob("*.toml"))
+TEMPLATES = sorted(p.stem for p in LINKAGE_TEMPLATES)           # linkages only (kind = "mechanism")
 ALL_PLANS = ("position", "velocity", "acceleration", "force")
 TOL = 1e-9
 

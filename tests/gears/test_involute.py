@@ -21,8 +21,8 @@ def _inv(a):
 
 @pytest.mark.parametrize("value", [1e-9, 1e-4, 0.0149044, 0.02, 0.05, 0.3])
 def test_inv_inverse_against_mpmath(value):
-    mpmath.mp.dps = 30
-    ref = mpmath.findroot(lambda a: mpmath.tan(a) - a - value, (3 * value) ** (1 / 3))
+    with mpmath.workdps(30):             # local precision: never touch mpmath's global state
+        ref = mpmath.findroot(lambda a: mpmath.tan(a) - a - value, (3 * value) ** (1 / 3))
     assert inv_inverse(value) == pytest.approx(float(ref), rel=1e-13)
 
 
@@ -31,9 +31,9 @@ def test_inv_inverse_against_mpmath(value):
 def test_pair_closed_forms(z1, z2, x1, x2):
     m, ha, c = 0.004, 1.0, 0.25
     p = pair_layout(PairSpec(m, z1, z2, shifts=(x1, x2)))
-    mpmath.mp.dps = 30
     inv_w = 2 * (x1 + x2) * math.tan(ALPHA) / (z1 + z2) + _inv(ALPHA)
-    aw = float(mpmath.findroot(lambda a: mpmath.tan(a) - a - inv_w, 0.4))
+    with mpmath.workdps(30):
+        aw = float(mpmath.findroot(lambda a: mpmath.tan(a) - a - inv_w, 0.4))
     assert p.alpha_w == pytest.approx(aw, rel=1e-12)
     a = m * (z1 + z2) / 2
     a_w = a * math.cos(ALPHA) / math.cos(aw)
