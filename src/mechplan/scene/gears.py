@@ -83,7 +83,8 @@ def _planetary(t: Table) -> PlanetarySpec:
     if not speed != 0:
         raise t.error("input_speed", "must not be zero")
     return PlanetarySpec(scheme=scheme, fixed=fixed, input=inp, output=out, ratio=ratio,
-                         deviation=deviation, planets=planets, modules=modules, z_range=teeth,
+                         deviation=deviation, planets=planets, modules=modules,
+                         z_range=(teeth[0], teeth[1]),
                          z_min=_int(t, "z_min", 17, lo=1) or 17,
                          ring_difference=_int(t, "ring_difference", 8, lo=1) or 8,
                          addendum=t.quantity("addendum", "dimensionless", 1.0, positive=True) or 1.0,

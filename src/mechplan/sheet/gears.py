@@ -5,6 +5,7 @@ text report (conditions with their numbers, angular velocities, the pair's dimen
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 from ..i18n import message, number
 from ..synthesis.gears.involute import TIP_MIN, Pair
@@ -13,7 +14,7 @@ from ..synthesis.gears.train import Conditions
 from .fonts import text_width_mm
 from .layout import framed_sheets
 from .panels import Panel
-from .primitives import HAlign, Sheet, Table, Text
+from .primitives import HAlign, Primitive, Sheet, Table, Text
 
 TEXT_H = 2.5
 TITLE_H = 3.5
@@ -107,13 +108,13 @@ def pair_lines(pair: Pair, lang: str) -> list[str]:
     return out
 
 
-def table_panel(name: str, title: str, head: tuple[str, ...], rows: list[tuple[str, ...]],
+def table_panel(name: str, title: str, head: tuple[str, ...], rows: Sequence[tuple[str, ...]],
                 notes: tuple[str, ...] = ()) -> Panel:
     """A titled table whose columns fit their texts."""
     cells = [head, *rows]
     widths = tuple(max(text_width_mm(r[c], TEXT_H) for r in cells) + 4.0
                    for c in range(len(head)))
-    prims: list = [Text((0.0, 4.0), title, TITLE_H)]
+    prims: list[Primitive | Table] = [Text((0.0, 4.0), title, TITLE_H)]
     prims.append(Table((0.0, 0.0), widths, (ROW,) * len(cells), tuple(cells), TEXT_H,
                        halign=HAlign.LEFT))
     y = -ROW * len(cells) - 5.0

@@ -13,7 +13,7 @@ from ..synthesis.gears.involute import Pair, flank, tooth_outline
 from ..synthesis.gears.solve import PlanetaryResult
 from .diagram import Axis, Curve, diagram_panel
 from .panels import Panel
-from .primitives import Circle, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
+from .primitives import Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
 
 TEXT_H = 2.5
 TITLE_H = 3.5
@@ -90,7 +90,7 @@ def plan_panels(res: PlanetaryResult, lang: str) -> list[Panel]:
     w_max = max(abs(v) for v in w.values()) or 1.0
     H = max(5.0, math.floor(PLAN_MM * mu_v / (mu_l * w_max) / 5.0) * 5.0)
     mu_w = mu_v / (mu_l * H)
-    prims: list[Primitive] = []
+    prims: list[Primitive | Table] = []
     xs = {n: v / mu_w for n, v in w.items()}
     lo, hi = min(0.0, *xs.values()), max(0.0, *xs.values())
     prims.append(Line((lo - 10.0, 0.0), (hi + 10.0, 0.0), Role.THIN))
@@ -141,7 +141,7 @@ def mesh_panel(pair: Pair, lang: str) -> Panel:
     S = mesh_scale(pair) * 1000.0                     # paper mm per metre
     g1, g2 = pair.gears
     O1, O2 = (0.0, -g1.r_w * S), (0.0, g2.r_w * S)
-    prims: list[Primitive] = []
+    prims: list[Primitive | Table] = []
     for g, c, axis, off in ((g1, O1, math.pi / 2, 0.0), (g2, O2, -math.pi / 2, 0.5)):
         tau = 2 * math.pi / g.z
         half = 2.6 * tau
@@ -154,11 +154,11 @@ def mesh_panel(pair: Pair, lang: str) -> Panel:
             pts += _place(outline, c, axis + (j + off) * tau, S)
         prims.append(Polyline(tuple(pts), Role.OUTLINE))
         # working profiles: the flanks of the tooth next to P from the lowest contact to the tip
-        r, th = flank(g, sp.alpha)
+        rr, th = flank(g, sp.alpha)
         r_low = math.hypot(g.r_b, max(g.rho_p, 0.0))
-        keep = r >= r_low
+        keep = rr >= r_low
         if keep.sum() > 1:
-            fl = np.column_stack([r[keep] * np.cos(th[keep]), r[keep] * np.sin(th[keep])])
+            fl = np.column_stack([rr[keep] * np.cos(th[keep]), rr[keep] * np.sin(th[keep])])
             mirror = fl * np.array([1.0, -1.0])
             for j in ((0,) if off == 0.0 else (-1, 0)):
                 for part in (fl, mirror):

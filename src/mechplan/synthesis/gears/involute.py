@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from scipy.optimize import brentq
@@ -108,7 +109,7 @@ def _layout(p: PairSpec, x1: float, x2: float) -> Pair:
     y = (a_w - a) / m
     dy = x1 + x2 - y
     g = a_w * math.sin(aw)
-    raw = []
+    raw: list[dict[str, Any]] = []
     for z, x in ((z1, x1), (z2, x2)):
         r = m * z / 2
         r_b = r * math.cos(al)
@@ -171,7 +172,7 @@ def flank(gear: Gear, alpha: float, n: int = 40) -> tuple[np.ndarray, np.ndarray
     r0 = max(gear.r_b, gear.r_f, math.hypot(gear.r_b, max(gear.rho_l, 0.0)))
     r = np.linspace(r0, gear.r_a, n)
     a_r = np.arccos(np.clip(gear.r_b / r, -1.0, 1.0))
-    theta = -(gear.s / (2 * gear.r) + float(inv(alpha)) - inv(a_r))
+    theta = np.asarray(-(gear.s / (2 * gear.r) + float(inv(alpha)) - inv(a_r)), dtype=float)
     return r, theta
 
 
