@@ -106,3 +106,32 @@ def test_angular_plan_reads_the_ratio():
     texts = [p.string for s in sheets for p in s.primitives if isinstance(p, Text)]
     read = [t for t in texts if t.startswith("u_1h = ")]
     assert read and read[0].endswith("= 4.0000")
+
+
+def test_given_set_is_checked_and_its_failures_shown():
+    text = scene(k=3).replace("teeth = [17, 60]", "teeth = [17, 60]\ngiven = [17, 17, 17, 51]")
+    study = solve_text(text, "s.toml")
+    chosen = study.to_json()["planetary"]["chosen"]
+    assert chosen["z"] == [17, 17, 17, 51] and not chosen["valid"]
+    assert chosen["assembly_p"] is None and chosen["neighbour_ok"]    # 68/3 never an integer
+    report = study.report("en")
+    assert "assembly" in report and "— fails" in report
+
+
+def test_output_shaft_drives_the_ordinary_pair():
+    doc = solve_file(TEMPLATES / "planetary_two_row.toml").to_json()
+    w_h = doc["planetary"]["omega_rad_s"]["h"]
+    assert doc["ordinary"]["omega_rad_s"]["5"] == pytest.approx(w_h)
+    assert doc["ordinary"]["omega_rad_s"]["6"] == pytest.approx(-w_h * 17 / 34)
+
+
+def test_cli_solve_json_and_error_exit(capsys, tmp_path):
+    from mechplan.cli import main
+
+    assert main(["solve", str(TEMPLATES / "planetary_single_row.toml"), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["kind"] == "gears" and doc["planetary"]["chosen"]["valid"]
+    bad = tmp_path / "bad.toml"
+    bad.write_text(scene(module="0 mm"), encoding="utf-8")
+    assert main(["solve", str(bad)]) == 2
+    assert "planetary.module" in capsys.readouterr().err

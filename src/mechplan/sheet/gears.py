@@ -64,11 +64,13 @@ def condition_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, bool
     return rows
 
 
-def omega_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, str]]:
-    """(link, ω, ω − ω_h) of every gear and the carrier."""
+def omega_rows(res: PlanetaryResult, lang: str,
+               ordinary: dict[str, float] | None = None) -> list[tuple[str, str, str]]:
+    """(link, ω, ω − ω_h) of every gear and the carrier, then the ordinary pair (ω only)."""
     p = res.plan
-    return [(name, number(p.omega[name], 3, lang), number(p.relative[name], 3, lang))
+    rows = [(name, number(p.omega[name], 3, lang), number(p.relative[name], 3, lang))
             for name in p.names]
+    return rows + [(name, number(w, 3, lang), "—") for name, w in (ordinary or {}).items()]
 
 
 def set_text(z: tuple[int, ...]) -> str:
@@ -154,7 +156,7 @@ def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, langu
         panels.append(table_panel("omega", message("gears.report.omega", lang),
                                   (message("gears.col.link", lang), f"ω, {per_s}",
                                    f"ω − ω_h, {per_s}"),
-                                  omega_rows(res, lang)))
+                                  omega_rows(res, lang, sol.ordinary_omega)))
     if sol.pair is not None:
         panels.append(mesh_panel(sol.pair, lang))
         panels.append(table_panel("pair", message("gears.sheet.pair", lang),

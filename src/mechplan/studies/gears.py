@@ -63,6 +63,8 @@ class GearStudy:
             per_s = message("gears.unit.per_s", lang)
             for link, w, rel in omega_rows(res, lang):
                 out.append(f"  {link}:  ω = {w} {per_s};  ω − ω_h = {rel} {per_s}")
+            for link, w5 in sol.ordinary_omega.items():
+                out.append(f"  {link}:  ω = {number(w5, 3, lang)} {per_s}")
             out.append(message("gears.report.plan_ratio", lang, plan=n(res.plan.ratio, 6),
                                willis=n(res.chosen.ratio, 6)))
         o = sol.ordinary
@@ -96,7 +98,7 @@ class GearStudy:
         if sol.ordinary is not None:
             o = sol.ordinary
             doc["ordinary"] = {"z5": o.z5, "z6": o.z6, "ratio": o.ratio,
-                               "total_ratio": sol.total_ratio}
+                               "total_ratio": sol.total_ratio, "omega_rad_s": sol.ordinary_omega}
         if sol.pair is not None:
             p = sol.pair
             doc["pair"] = {

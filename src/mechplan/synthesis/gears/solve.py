@@ -56,6 +56,14 @@ class GearSolution:
             return None
         return self.planetary.chosen.ratio * self.ordinary.ratio
 
+    @property
+    def ordinary_omega(self) -> dict[str, float]:
+        """ω5 (on the planetary output shaft) and ω6 = ω5/u56, rad/s (empty without both stages)."""
+        if self.planetary is None or self.ordinary is None:
+            return {}
+        w5 = self.planetary.plan.omega[self.planetary.spec.output]
+        return {"5": w5, "6": w5 / self.ordinary.ratio}
+
 
 def solve_planetary(spec: PlanetarySpec) -> PlanetaryResult:
     """Search the sets (or check the given one) and draw up the plan of the chosen set."""
