@@ -96,7 +96,7 @@ def plan_panels(res: PlanetaryResult, lang: str) -> list[Panel]:
     prims.append(Line((lo - 10.0, 0.0), (hi + 10.0, 0.0), Role.THIN))
     prims.append(Circle((0.0, -H), 0.6, Role.OUTLINE))
     prims.append(Text((1.5, -H - 1.5), "P", TEXT_H, valign=VAlign.TOP))
-    prims.append(Text((0.0, 1.5), "0", TEXT_H, halign=HAlign.CENTER))
+    prims.append(Text((-1.0, -1.0), "0", TEXT_H, halign=HAlign.RIGHT, valign=VAlign.TOP))
     shown: dict[float, list[str]] = {}
     for n, x in xs.items():
         shown.setdefault(round(x, 3), []).append(n)
@@ -107,8 +107,8 @@ def plan_panels(res: PlanetaryResult, lang: str) -> list[Panel]:
     x_in, x_out = xs[res.spec.input], xs[res.spec.output]
     read = x_in / x_out if x_out else math.inf
     prims.append(Text((lo - 10.0, -H - 8.0),
-                      f"u_{res.spec.input}{res.spec.output} = {number(x_in, 1, lang)} / "
-                      f"{number(x_out, 1, lang)} = {number(read, 4, lang)}", TEXT_H))
+                      f"u_{res.spec.input}{res.spec.output} = {number(x_in, 2, lang)} / "
+                      f"{number(x_out, 2, lang)} = {number(read, 4, lang)}", TEXT_H))
     prims.append(Text((lo - 10.0, 14.0), message("gears.sheet.angular", lang,
                                                  H=number(H, 0, lang),
                                                  mu=number(mu_w, 4, lang)), TITLE_H))
