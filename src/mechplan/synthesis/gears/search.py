@@ -68,7 +68,7 @@ def ratio_mask(spec: PlanetarySpec, z: np.ndarray) -> np.ndarray:
     u = train.ratio_from_i(train.willis_i(spec.scheme, z), spec.scheme, spec.fixed, spec.input,
                            spec.output)
     with np.errstate(invalid="ignore"):
-        return np.abs(u - spec.ratio) <= spec.deviation * abs(spec.ratio) * (1 + 1e-12)
+        return np.abs(u - spec.ratio) <= (spec.deviation + 1e-12) * abs(spec.ratio)
 
 
 def candidate_sets(spec: PlanetarySpec) -> np.ndarray:
