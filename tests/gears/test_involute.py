@@ -10,7 +10,13 @@ import pytest
 from shapely.geometry import Polygon
 
 from mechplan.model.gears import PairSpec, ShiftRule
-from mechplan.synthesis.gears.involute import flank, inv_inverse, pair_layout, tooth_outline
+from mechplan.synthesis.gears.involute import (
+    flank,
+    inv_inverse,
+    pair_layout,
+    tooth_outline,
+    trochoid_fillet,
+)
 
 ALPHA = math.radians(20)
 
@@ -116,3 +122,40 @@ def test_meshed_teeth_touch_without_overlap():
     assert overlap < 1e-6 * tooth_area
     gap = min(a.distance(b) for a in one for b in two)
     assert gap < 1e-6                    # they touch (no backlash) up to the chords, < 1 µm
+
+
+@pytest.mark.parametrize(("z", "x"), [(34, 0.0), (30, 0.3), (60, 0.0), (20, 0.5)])
+def test_generated_fillet_runs_from_the_root_circle_into_the_involute(z, x):
+    """The rack's tip rounding, rolled on the pitch circle, ends where the rack's straight flank
+    starts generating: exactly at the start of the involute computed from inv α (a second method)."""
+    p = pair_layout(PairSpec(0.004, z, 50, shifts=(x, 0.0)))
+    g = p.gears[0]
+    f = trochoid_fillet(g, ALPHA, 0.004, 1.0, 0.25, n=60)
+    r, th = flank(g, ALPHA)
+    assert math.hypot(*f[0]) == pytest.approx(g.r_f, abs=1e-12)
+    assert math.hypot(*f[-1]) == pytest.approx(r[0], abs=1e-12)
+    assert math.atan2(f[-1][1], f[-1][0]) == pytest.approx(th[0], abs=1e-12)
+    # the start radius is the lower limit of the generated involute: ρ_l = r sin α − (h_a* − x)m/sin α
+    rho_l = g.r * math.sin(ALPHA) - (1.0 - x) * 0.004 / math.sin(ALPHA)
+    assert r[0] == pytest.approx(math.hypot(g.r_b, rho_l), rel=1e-12)
+    radii = np.hypot(f[:, 0], f[:, 1])
+    assert np.all(np.diff(radii) >= -1e-15)            # climbs from the root to the involute
+
+
+@pytest.mark.parametrize(("z", "x"), [(8, 0.0), (10, 0.0), (13, 0.0), (17, 0.0), (20, -0.5)])
+def test_undercut_outline_is_a_simple_polygon_thinner_at_the_base(z, x):
+    p = pair_layout(PairSpec(0.004, z, 50, shifts=(x, 0.0)))
+    g = p.gears[0]
+    assert g.rho_l < 0
+    o = tooth_outline(g, ALPHA, 0.004, 0.25)
+    assert Polygon([*map(tuple, o), (0.0, 0.0)]).is_valid
+    # the undercut removes material: where the outline crosses the base circle the tooth is no
+    # wider than the involute there (half-angle ψ_b = s/(2r) + inv α)
+    ang = np.arctan2(o[:, 1], o[:, 0])
+    d = np.hypot(o[:, 0], o[:, 1]) - g.r_b
+    psi_b = g.s / (2 * g.r) + _inv(ALPHA)
+    crossings = [ang[i] + (ang[i + 1] - ang[i]) * d[i] / (d[i] - d[i + 1])
+                 for i in range(len(o) - 1) if d[i] * d[i + 1] <= 0 and d[i] != d[i + 1]
+                 and ang[i] < 0]
+    assert crossings
+    assert all(-c <= psi_b + 1e-9 for c in crossings)

@@ -94,7 +94,7 @@ def test_sheet_has_every_part():
     sheets = study.sheets("A1", "iso", "en", "planetary_two_row")
     texts = " ".join(p.string for s in sheets for p in s.primitives if isinstance(p, Text))
     for words in ("Kinematic diagram", "Velocity plan", "Angular velocity plan",
-                  "Synthesis of the planetary train", "Meshing of the involute pair", "circular arcs",
+                  "Synthesis of the planetary train", "Meshing of the involute pair", "trochoids",
                   "μv", "μl", "μω", "N1", "B2"):
         assert words in texts, words
     assert sum(isinstance(p, Polyline) for s in sheets for p in s.primitives) > 20

@@ -148,7 +148,7 @@ def mesh_panel(pair: Pair, lang: str) -> Panel:
         for r, role in ((g.r_b, Role.THIN), (g.r, Role.CHAIN), (g.r_w, Role.DASHED),
                         (g.r_a, Role.THIN), (g.r_f, Role.THIN)):
             prims.append(Polyline(tuple(_arc(c, r * S, axis - half, axis + half)), role))
-        outline = tooth_outline(g, sp.alpha, sp.module, sp.clearance)
+        outline = tooth_outline(g, sp.alpha, sp.module, sp.clearance, addendum=sp.addendum)
         pts: list[tuple[float, float]] = []
         for j in ((-1, 0, 1) if off == 0.0 else (-2, -1, 0)):
             pts += _place(outline, c, axis + (j + off) * tau, S)
