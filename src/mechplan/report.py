@@ -6,15 +6,8 @@ import math
 
 import numpy as np
 
-from .construct.protocol import (
-    MM,
-    PLAN_TITLE,
-    SENSE,
-    localize_direction,
-    pole_label,
-    protocol,
-    vector_text,
-)
+from .construct.protocol import (MM, PLAN_TITLE, SENSE, localize_direction, pole_label, protocol,
+                                 vector_text)
 from .construct.step import Plan
 from .solve import Solution, segment_table
 from .units import format_number
