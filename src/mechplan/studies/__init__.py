@@ -53,6 +53,10 @@ def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
         from .cam import solve_cam
 
         return solve_cam(text, file)
+    if kind == "gears":
+        from .gears import solve_gear_text
+
+        return solve_gear_text(text, file)
     raise SceneError(f"scenes of kind {kind!r} are not supported by this build", file=file,
                      key="kind")
 

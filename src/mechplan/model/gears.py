@@ -1,0 +1,107 @@
+"""Specs of a gear scene: a planetary train (scheme, links, target ratio), an ordinary stage after it
+and an involute pair. Frozen dataclasses, SI floats (module in metres, angles in radians)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+
+class Scheme(Enum):
+    """Planetary schemes. Gears: 1 and the last are central, the others are planets on the carrier h.
+
+    ``SINGLE_ROW``: sun 1 – planet 2 – ring 3. Two-row (planet block 2–3 on one shaft, central 1, 4):
+    ``EXT_INT`` 1–2 external, 3–4 internal (the worked example); ``EXT_EXT`` both external;
+    ``INT_INT`` both internal (1 and 4 are rings).
+    """
+
+    SINGLE_ROW = "single_row"
+    EXT_INT = "two_row_ext_int"
+    EXT_EXT = "two_row_ext_ext"
+    INT_INT = "two_row_int_int"
+
+    @property
+    def two_row(self) -> bool:
+        """True for the schemes with a planet block of two gears."""
+        return self is not Scheme.SINGLE_ROW
+
+    @property
+    def internal(self) -> tuple[bool, bool]:
+        """Whether the first mesh (1–2) and the second mesh (planet–last central) are internal."""
+        return {Scheme.SINGLE_ROW: (False, True), Scheme.EXT_INT: (False, True),
+                Scheme.EXT_EXT: (False, False), Scheme.INT_INT: (True, True)}[self]
+
+    @property
+    def gear_names(self) -> tuple[str, ...]:
+        """Names of the gears: central a, planet(s), central b."""
+        return ("1", "2", "3") if self is Scheme.SINGLE_ROW else ("1", "2", "3", "4")
+
+    @property
+    def links(self) -> tuple[str, str, str]:
+        """The three basic links that can be fixed, input or output: central a, central b, carrier."""
+        names = self.gear_names
+        return (names[0], names[-1], "h")
+
+
+class ShiftRule(Enum):
+    """How the profile shifts x1, x2 of the involute pair are chosen."""
+
+    GIVEN = "given"                  # x1, x2 as written in the scene (default 0, 0)
+    NO_UNDERCUT = "no_undercut"      # x = h_a*(z_min − z)/z_min when z < z_min, else 0
+    BALANCED = "balanced_sliding"    # x2 = −x1, maximum specific slidings of both gears equal
+
+
+@dataclass(frozen=True)
+class PlanetarySpec:
+    """What the planetary stage must do and the rules its tooth numbers obey."""
+
+    scheme: Scheme
+    fixed: str
+    input: str
+    output: str
+    ratio: float                     # target u_in,out (signed: + same sense of rotation)
+    deviation: float                 # allowed relative deviation of the ratio, e.g. 0.02
+    planets: int                     # k, equally spaced
+    modules: tuple[float, float]     # m of mesh 1–2 and of the second mesh, m
+    z_range: tuple[int, int]         # every tooth number within
+    z_min: int = 17                  # no-undercut rule for standard teeth
+    ring_difference: int = 8         # z_ring − z_planet at least (internal-mesh interference)
+    addendum: float = 1.0            # h_a*
+    given: tuple[int, ...] | None = None   # check this set (z1, z2[, z3, z4]) instead of the best
+    input_speed: float = 1.0         # ω of the input link, rad/s
+
+
+@dataclass(frozen=True)
+class OrdinarySpec:
+    """An external pair after the planetary stage: given teeth, or a ratio to meet."""
+
+    module: float
+    teeth: tuple[int, int] | None = None
+    ratio: float | None = None       # |u| wanted when teeth are not given
+
+
+@dataclass(frozen=True)
+class PairSpec:
+    """An involute pair to lay out and draw."""
+
+    module: float
+    z1: int
+    z2: int
+    alpha: float = 0.3490658503988659    # 20°
+    addendum: float = 1.0                # h_a*
+    clearance: float = 0.25              # c*
+    shifts: tuple[float, float] = (0.0, 0.0)
+    rule: ShiftRule = ShiftRule.GIVEN
+    z_min: int = 17
+
+
+@dataclass(frozen=True)
+class GearScene:
+    """A parsed gear scene."""
+
+    title: str
+    language: str
+    planetary: PlanetarySpec | None
+    ordinary: OrdinarySpec | None
+    pair: PairSpec | None
+    file: str = "<scene>"

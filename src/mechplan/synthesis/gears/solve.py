@@ -1,0 +1,122 @@
+"""Solve a gear scene: the planetary set (best or given), its velocity plan, the ordinary stage and
+the involute pair."""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import SceneError
+from ...model.gears import GearScene, OrdinarySpec, PlanetarySpec
+from . import search, train
+from .involute import Pair, pair_layout
+from .plan import TrainPlan, velocity_plan
+
+LISTED = 12          # other sets listed after the chosen one
+
+
+@dataclass(frozen=True)
+class PlanetaryResult:
+    """The chosen set with its conditions, the others found, and the velocity plan."""
+
+    spec: PlanetarySpec
+    chosen: train.Conditions
+    others: tuple[train.Conditions, ...]
+    found: int
+    counts: dict[str, int]
+    plan: TrainPlan
+    willis_i: float
+
+
+@dataclass(frozen=True)
+class OrdinaryResult:
+    """The external pair after the planetary stage."""
+
+    spec: OrdinarySpec
+    z5: int
+    z6: int
+    ratio: float          # u56 = ω5/ω6 = −z6/z5
+
+
+@dataclass(frozen=True)
+class GearSolution:
+    """Everything a gear scene asks for."""
+
+    scene: GearScene
+    planetary: PlanetaryResult | None
+    ordinary: OrdinaryResult | None
+    pair: Pair | None
+
+    @property
+    def total_ratio(self) -> float | None:
+        """u of the planetary stage times u56 (signed), or None without both stages."""
+        if self.planetary is None or self.ordinary is None:
+            return None
+        return self.planetary.chosen.ratio * self.ordinary.ratio
+
+    @property
+    def ordinary_omega(self) -> dict[str, float]:
+        """ω5 (on the planetary output shaft) and ω6 = ω5/u56, rad/s (empty without both stages)."""
+        if self.planetary is None or self.ordinary is None:
+            return {}
+        w5 = self.planetary.plan.omega[self.planetary.spec.output]
+        return {"5": w5, "6": w5 / self.ordinary.ratio}
+
+
+def solve_planetary(spec: PlanetarySpec) -> PlanetaryResult:
+    """Search the sets (or check the given one) and draw up the plan of the chosen set."""
+    train.check_links(spec)
+    if spec.given is not None:
+        chosen = train.conditions(spec, spec.given)
+        result = search.search(spec)
+    else:
+        result = search.best_or_error(spec)
+        chosen = train.conditions(spec, tuple(int(v) for v in result.sets[0]))
+    others = tuple(train.conditions(spec, tuple(int(v) for v in z))
+                   for z in result.sets[:LISTED + 1] if tuple(int(v) for v in z) != chosen.z)
+    i = float(train.willis_i(spec.scheme, np.asarray([chosen.z]))[0])
+    return PlanetaryResult(spec, chosen, others[:LISTED], int(result.sets.shape[0]),
+                           result.counts, velocity_plan(spec, chosen.z), i)
+
+
+def solve_ordinary(spec: OrdinarySpec, z_min: int = 17, deviation: float = 0.02) -> OrdinaryResult:
+    """Given teeth, or the smallest z5 ≥ z_min with z6 = round(u·z5) within the deviation."""
+    if spec.teeth is not None:
+        z5, z6 = spec.teeth
+    else:
+        u = float(spec.ratio or 1.0)
+        z5s = np.arange(z_min, 201)
+        z6s = np.rint(u * z5s)
+        err = np.abs(z6s / z5s - u) / u
+        ok = np.flatnonzero(err <= deviation)
+        if ok.size == 0:
+            j = int(np.argmin(err))
+            raise SceneError(f"no pair with z5 from {z_min} to 200 gives |u| = {u:g} ± "
+                             f"{deviation * 100:g} %; the nearest is {int(z6s[j])}/{int(z5s[j])}",
+                             key="ordinary.ratio")
+        z5, z6 = int(z5s[ok[0]]), int(z6s[ok[0]])
+    return OrdinaryResult(spec, z5, z6, -z6 / z5)
+
+
+def solve_gears(scene: GearScene) -> GearSolution:
+    """Solve every part of a gear scene; errors name the file and key."""
+    try:
+        planetary = solve_planetary(scene.planetary) if scene.planetary else None
+        ordinary = None
+        if scene.ordinary:
+            p = scene.planetary
+            ordinary = solve_ordinary(scene.ordinary, p.z_min if p else 17,
+                                      p.deviation if p else 0.02)
+        pair = None
+        if scene.pair:
+            spec = scene.pair
+            if spec.z1 == 0 and ordinary is not None:
+                spec = dataclasses.replace(spec, z1=ordinary.z5, z2=ordinary.z6)
+            pair = pair_layout(spec)
+    except SceneError as exc:
+        if exc.file:
+            raise
+        raise SceneError(exc.detail, file=scene.file, key=exc.key) from None
+    return GearSolution(scene, planetary, ordinary, pair)

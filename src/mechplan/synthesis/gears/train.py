@@ -1,0 +1,205 @@
+"""Planetary trains: Willis ratios, coaxiality and the assembly, neighbour, undercut and
+internal-mesh conditions, all vectorised over arrays of tooth numbers.
+
+Tooth sets are arrays ``z`` of shape (n, g) in the order of ``Scheme.gear_names`` (single row: z1, z2,
+z3 = ring; two-row: z1, z2, z3, z4 with the planet block 2–3). Willis: with the carrier h held,
+i_ab^h = (ω_a − ω_h)/(ω_b − ω_h) = ∏(∓ z_driven/z_driver), minus for an external mesh.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import SceneError
+from ...model.gears import PlanetarySpec, Scheme
+
+
+def willis_sign(scheme: Scheme) -> int:
+    """(−1)^(number of external meshes) of the train with the carrier held."""
+    return -1 if sum(not m for m in scheme.internal) % 2 else 1
+
+
+def willis_i(scheme: Scheme, z: np.ndarray) -> np.ndarray:
+    """i_ab^h of each set (a = gear 1, b = the last central gear)."""
+    z = np.asarray(z, dtype=float)
+    s = willis_sign(scheme)
+    if scheme is Scheme.SINGLE_ROW:
+        return s * z[..., 2] / z[..., 0]
+    return s * (z[..., 1] * z[..., 3]) / (z[..., 0] * z[..., 2])
+
+
+def ratio_from_i(i: np.ndarray | float, scheme: Scheme, fixed: str, inp: str,
+                 out: str) -> np.ndarray:
+    """u_in,out = ω_in/ω_out with ``fixed`` held, from Willis' i_ab^h."""
+    i = np.asarray(i, dtype=float)
+    a, b, h = scheme.links
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if fixed == h:
+            return i if (inp, out) == (a, b) else 1.0 / i
+        i_xy = i if fixed == b else 1.0 / i          # x = the moving central gear, y = fixed
+        return 1.0 - i_xy if out == h else 1.0 / (1.0 - i_xy)
+
+
+def i_from_ratio(u: float, scheme: Scheme, fixed: str, inp: str, out: str) -> float:
+    """The inverse of :func:`ratio_from_i` (nan at a pole)."""
+    a, b, h = scheme.links
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if fixed == h:
+            return float(u if (inp, out) == (a, b) else 1.0 / u)
+        i_xy = 1.0 - u if out == h else 1.0 - 1.0 / u
+        return float(i_xy if fixed == b else 1.0 / i_xy)
+
+
+def check_links(spec: PlanetarySpec) -> None:
+    """Fixed, input and output must be the three different basic links of the scheme."""
+    links = spec.scheme.links
+    for key, name in (("fixed", spec.fixed), ("input", spec.input), ("output", spec.output)):
+        if name not in links:
+            raise SceneError(f"must be one of {', '.join(links)} for the scheme "
+                             f"{spec.scheme.value} (got {name!r})", key=f"planetary.{key}")
+    if len({spec.fixed, spec.input, spec.output}) != 3:
+        raise SceneError(f"fixed, input and output must be three different links of {links} (got "
+                         f"{spec.fixed!r}, {spec.input!r}, {spec.output!r})", key="planetary.output")
+
+
+def module_ratio(spec: PlanetarySpec) -> float:
+    """q = m(1–2)/m(second mesh)."""
+    return spec.modules[0] / spec.modules[1]
+
+
+def centre_distance(spec: PlanetarySpec, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """a_w of the first mesh and of the second mesh (equal when the set is coaxial), m."""
+    z = np.asarray(z, dtype=float)
+    m1, m2 = spec.modules
+    int1, int2 = spec.scheme.internal
+    a12 = m1 * (z[..., 0] - z[..., 1] if int1 else z[..., 0] + z[..., 1]) / 2
+    zp, zb = z[..., -2], z[..., -1]
+    if spec.scheme is Scheme.SINGLE_ROW:
+        zp = z[..., 1]
+        m2 = m1
+    a34 = m2 * (zb - zp if int2 else zb + zp) / 2
+    return a12, a34
+
+
+def assembly_terms(spec: PlanetarySpec, z: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """z1·u_1h^(b) = A/B as integers: the sun's turn, in teeth, while the carrier turns once."""
+    z = np.asarray(z, dtype=np.int64)
+    if spec.scheme is Scheme.SINGLE_ROW:
+        return z[..., 0] + z[..., 2], np.ones_like(z[..., 0])
+    s = willis_sign(spec.scheme)
+    return z[..., 0] * z[..., 2] - s * z[..., 1] * z[..., 3], z[..., 2]
+
+
+def assembles(spec: PlanetarySpec, z: np.ndarray, k: int | None = None) -> np.ndarray:
+    """Assembly with k equally spaced planets: (z1·u_1h/k)(1 + k·p) is an integer for some p.
+
+    With z1·u_1h = A/B and D = kB/gcd(A, kB), an integer p exists iff gcd(k, D) = 1.
+    """
+    k = spec.planets if k is None else k
+    A, B = assembly_terms(spec, z)
+    d = k * B
+    D = d // np.gcd(np.abs(A), d)
+    return np.gcd(k, D) == 1
+
+
+def assembly_p(spec: PlanetarySpec, z: tuple[int, ...]) -> int | None:
+    """The smallest p ≥ 0 that makes (z1·u_1h/k)(1 + k·p) an integer (None: none)."""
+    A, B = (int(v) for v in assembly_terms(spec, np.asarray(z)))
+    k = spec.planets
+    D = k * B // math.gcd(abs(A), k * B)
+    if math.gcd(k, D) != 1:
+        return None
+    return 0 if D == 1 else (-pow(k, -1, D)) % D
+
+
+def planet_tip_diameter(spec: PlanetarySpec, z: np.ndarray) -> np.ndarray:
+    """The larger tip diameter of the planet(s), m (standard teeth)."""
+    z = np.asarray(z, dtype=float)
+    m1, m2 = spec.modules
+    d2 = m1 * (z[..., 1] + 2 * spec.addendum)
+    if spec.scheme is Scheme.SINGLE_ROW:
+        return d2
+    return np.maximum(d2, m2 * (z[..., 2] + 2 * spec.addendum))
+
+
+def neighbour_gap(spec: PlanetarySpec, z: np.ndarray, k: int | None = None) -> np.ndarray:
+    """2·a_w·sin(π/k) − d_a,planet: positive when the tips of adjacent planets do not touch, m."""
+    k = spec.planets if k is None else k
+    a12, _ = centre_distance(spec, z)
+    return 2 * a12 * math.sin(math.pi / k) - planet_tip_diameter(spec, z)
+
+
+def ring_differences(spec: PlanetarySpec, z: np.ndarray) -> np.ndarray:
+    """z_ring − z_planet of each internal mesh, shape (n, meshes) (inf where the mesh is external)."""
+    z = np.asarray(z, dtype=np.int64)
+    int1, int2 = spec.scheme.internal
+    first = z[..., 0] - z[..., 1] if int1 else np.full(z.shape[:-1], np.iinfo(np.int64).max)
+    second = z[..., -1] - (z[..., 1] if spec.scheme is Scheme.SINGLE_ROW else z[..., 2])
+    if not int2:
+        second = np.full(z.shape[:-1], np.iinfo(np.int64).max)
+    return np.stack([first, second], axis=-1)
+
+
+def envelope_diameter(spec: PlanetarySpec, z: np.ndarray) -> np.ndarray:
+    """Overall size: the diameter enclosing every pitch circle of the train, m."""
+    z = np.asarray(z, dtype=float)
+    m1, m2 = spec.modules
+    a12, _ = centre_distance(spec, z)
+    planet = m1 * z[..., 1] if spec.scheme is Scheme.SINGLE_ROW else np.maximum(
+        m1 * z[..., 1], m2 * z[..., 2])
+    d_b = (m1 if spec.scheme is Scheme.SINGLE_ROW else m2) * z[..., -1]
+    return np.maximum.reduce([m1 * z[..., 0], d_b, 2 * a12 + planet])
+
+
+@dataclass(frozen=True)
+class Conditions:
+    """Every condition of a set, with its numbers (SI)."""
+
+    z: tuple[int, ...]
+    ratio: float
+    ratio_error: float          # (u − u_target)/u_target
+    ratio_ok: bool
+    a_w: tuple[float, float]
+    coaxial: bool
+    assembly_value: float       # z1·u_1h/k
+    assembly_p: int | None
+    z_smallest: int
+    undercut_ok: bool
+    ring_difference: int | None
+    ring_ok: bool
+    neighbour_span: float       # 2 a_w sin(π/k), m
+    planet_tip: float           # d_a of the larger planet, m
+    neighbour_ok: bool
+    size: float
+
+    @property
+    def valid(self) -> bool:
+        """True when every condition holds."""
+        return (self.ratio_ok and self.coaxial and self.assembly_p is not None and self.undercut_ok
+                and self.ring_ok and self.neighbour_ok)
+
+
+def conditions(spec: PlanetarySpec, z: tuple[int, ...]) -> Conditions:
+    """Evaluate every condition of one set, keeping the numbers for the report."""
+    arr = np.asarray([z], dtype=np.int64)
+    u = float(ratio_from_i(willis_i(spec.scheme, arr), spec.scheme, spec.fixed, spec.input,
+                           spec.output)[0])
+    err = (u - spec.ratio) / spec.ratio
+    a12, a34 = (float(v[0]) for v in centre_distance(spec, arr))
+    A, B = (int(v[0]) for v in assembly_terms(spec, arr))
+    diffs = [int(d) for d in ring_differences(spec, arr)[0] if d < np.iinfo(np.int64).max]
+    tip = float(planet_tip_diameter(spec, arr)[0])
+    span = tip + float(neighbour_gap(spec, arr)[0])
+    return Conditions(
+        z=tuple(int(v) for v in z), ratio=u, ratio_error=err,
+        ratio_ok=abs(err) <= spec.deviation + 1e-12, a_w=(a12, a34),
+        coaxial=math.isclose(a12, a34, rel_tol=1e-9, abs_tol=1e-12),
+        assembly_value=A / B / spec.planets, assembly_p=assembly_p(spec, z),
+        z_smallest=min(z), undercut_ok=min(z) >= spec.z_min,
+        ring_difference=min(diffs) if diffs else None,
+        ring_ok=all(d >= spec.ring_difference for d in diffs),
+        neighbour_span=span, planet_tip=tip, neighbour_ok=span > tip,
+        size=float(envelope_diameter(spec, arr)[0]))
