@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from typing import Any
 
-from ..errors import SceneError
 from ..model.dynamics import (
     FOUR_STROKE,
     TWO_STROKE,
@@ -13,7 +13,6 @@ from ..model.dynamics import (
     FlywheelShape,
     FlywheelSpec,
     IndicatorSpec,
-    Stroke,
     Unknown,
 )
 from ..model.mechanism import GROUND, Mechanism
@@ -40,7 +39,9 @@ def parse_dynamics(data: dict[str, Any], file: str, mech: Mechanism) -> Dynamics
                       f"(got {t.raw('delta')!r}); e.g. delta = \"1/80\"")
     it = t.table("indicator")
     indicator = _indicator(it, mech) if it is not None else None
-    default_cycle = 4 * math.pi if indicator and len(indicator.strokes) == 4 else 2 * math.pi
+    four = indicator is not None and (len(indicator.strokes) == 4 or bool(
+        indicator.table and indicator.table[-1][0] > 2 * math.pi + 1e-6))
+    default_cycle = 4 * math.pi if four else 2 * math.pi
     cycle = t.quantity("cycle", "angle", default_cycle)
     assert cycle is not None
     turns = cycle / (2 * math.pi)
@@ -99,7 +100,7 @@ def _indicator(t: Table, mech: Mechanism) -> IndicatorSpec:
     if t.has("table"):
         table = _rows(t, "table", "angle", "pressure")
         xs = [x for x, _ in table]
-        if any(b <= a for a, b in zip(xs, xs[1:])):
+        if any(b <= a for a, b in itertools.pairwise(xs)):
             raise t.error("table", "the crank angles must increase strictly")
         return IndicatorSpec(str(point), owners[-1], str(towards), float(bore or 0.0),
                              float(ambient or 0.0), table=table)
@@ -132,4 +133,4 @@ def _flywheel(t: Table) -> FlywheelSpec:
                         t.quantity("section_ratio", "dimensionless", 1.0, positive=True) or 1.0)
 
 
-__all__ = ["SceneError", "parse_dynamics"]
+__all__ = ["parse_dynamics"]

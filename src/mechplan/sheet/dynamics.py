@@ -12,7 +12,7 @@ from ..i18n import message, number
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
 from .layout import framed_sheets
 from .panels import Panel
-from .primitives import HAlign, Line, Role, Table, Text, VAlign
+from .primitives import HAlign, Role, Table, Text, VAlign
 
 if TYPE_CHECKING:
     from ..dynamics.machine import MachineDynamics
