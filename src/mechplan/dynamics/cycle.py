@@ -34,6 +34,7 @@ class CycleState:
 
     theta: Array          # rad, from the cycle's start
     M_given: Array        # N·m, positive where the given loads drive
+    M_lever: Array        # N·m, the same from Zhukovsky's lever (moments about the pole)
     J_red: Array          # kg·m², of the mechanism's links
     dJ_red: Array         # kg·m²/rad
     J_crank: float        # kg·m², the driving link's own (constant) part of J_red
@@ -174,20 +175,27 @@ class MachineCycle:
         c, mech, n = self.c, self.scene.mechanism, theta.shape[0]
         ev = c.evaluate(phi)
         power = np.zeros(n)
+        lever = np.zeros(n)
         for link, ms in self.loading.masses.items():
             if f"G_{link}" in c.results:
-                power += dot(ev[c.results[f"G_{link}"]], self._velocity(ev, ms.centre, n))
+                G, v = ev[c.results[f"G_{link}"]], self._velocity(ev, ms.centre, n)
+                power += dot(G, v)
+                lever += _lever(G, v)
         factors = {t.index: np.interp(t.xs[0] + np.mod(phi - t.xs[0], t.period), t.xs, t.fs)
                    for t in self.tabled}
         if self.indicator_index is not None:
             factors[self.indicator_index] = self.indicator_force(theta)
         for j, load in enumerate(self.loading.loads):
             value = ev[c.results[f"load_{j}"]]
+            factor = factors.get(j, 1.0)
             if load.point is None:
                 p = value * ev[c.omega(load.link)]
+                lever += p * factor          # a couple's moment times ω_i/ω1 on the lever
             else:
-                p = dot(value, self._velocity(ev, load.point, n))
-            power += p * factors.get(j, 1.0)
+                v = self._velocity(ev, load.point, n)
+                p = dot(value, v)
+                lever += _lever(value, v) * factor
+            power += p * factor
         w1 = mech.drive.omega
         energy = np.zeros(n)
         d_energy = np.zeros(n)
@@ -201,5 +209,11 @@ class MachineCycle:
             d_energy += ms.mass * dot(v, a) + ms.inertia * w * e
             if link == mech.drive.link:
                 crank = float(np.mean(ms.mass * dot(v, v) + ms.inertia * w * w)) / w1 ** 2
-        return CycleState(theta, power / self.omega1, energy / w1 ** 2,
+        return CycleState(theta, power / self.omega1, lever / self.omega1, energy / w1 ** 2,
                           2.0 * d_energy / (w1 ** 2 * self.omega1), crank)
+
+
+def _lever(force: Array, v: Array) -> Array:
+    """Moment about the pole of ``force`` applied at the velocity image turned 90° clockwise."""
+    r = np.stack([v[:, 1], -v[:, 0]], axis=-1)
+    return r[:, 0] * force[:, 1] - r[:, 1] * force[:, 0]

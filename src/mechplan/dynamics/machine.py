@@ -52,6 +52,8 @@ class MachineDynamics:
     M_const: float            # the constant moment (found or given)
     net_work: float           # A_d(Φ) − A_c(Φ)
     A_d_drawn: Array          # trapezoids over the drawn positions
+    M_lever: Array            # the given loads' reduced moment at the drawn positions by the lever
+    M_given: Array            # … and by the equality of powers
     A_c_drawn: Array
     witt: Wittenbauer
     merk: Merkalov
@@ -142,7 +144,8 @@ def machine_dynamics(scene: Scene, spec: DynamicsSpec, phi0: float, per_turn: in
     return MachineDynamics(
         spec=spec, omega_m=omega_m, phi0=phi0, theta=theta, drawn=drawn, M_d=M_d, M_c=M_c,
         A_d=A_d, A_c=A_c, dT=dT, J_red=J_red, dJ_red=st.dJ_red, J_present=J_present,
-        M_const=M_const, net_work=net, A_d_drawn=A_d_drawn, A_c_drawn=A_c_drawn, witt=witt,
+        M_const=M_const, net_work=net, A_d_drawn=A_d_drawn, M_lever=st.M_lever[drawn],
+        M_given=st.M_given[drawn], A_c_drawn=A_c_drawn, witt=witt,
         merk=merk, J_exact=J_exact,
         delta_witt=delta_of(theta, J_red + witt.J_flywheel, dT, omega_m)[0],
         delta_merk=delta_of(theta, J_red + merk.J_flywheel, dT, omega_m)[0],

@@ -53,6 +53,8 @@ def dynamics_report(d: MachineDynamics, lang: str) -> str:
     lines.append(message("dynamics.report.works", lang, exact=_f(d.A_d[-1], 3, lang),
                          dense=str(d.theta.shape[0] - 1), drawn=_f(d.A_d_drawn[-1], 3, lang),
                          n=str(d.drawn.shape[0] - 1)))
+    lines.append(message("dynamics.report.lever", lang, n=str(d.drawn.shape[0] - 1),
+                         diff=f"{float(np.abs(d.M_lever - d.M_given).max()):.2e}"))
     lines.append(message("dynamics.report.flywheel", lang))
     for method, J, delta in (("wittenbauer", d.witt.J_flywheel, d.delta_witt),
                              ("merkalov", d.merk.J_flywheel, d.delta_merk),
@@ -90,6 +92,7 @@ def dynamics_json(d: MachineDynamics) -> dict[str, Any]:
         positions.append({
             "number": j, "phi_deg": round(math.degrees(float(d.theta[i])), 10),
             "M_d": float(d.M_d[i]), "M_c": float(d.M_c[i]),
+            "M_given_lever": float(d.M_lever[j]),
             "A_d": float(d.A_d_drawn[j]), "A_c": float(d.A_c_drawn[j]),
             "A_d_exact": float(d.A_d[i]), "A_c_exact": float(d.A_c[i]),
             "dT": float(d.dT_drawn[j]), "dT_exact": float(d.dT[i]),
