@@ -116,3 +116,22 @@ def test_crank_angle_indicator_must_cover_the_cycle_and_be_periodic():
     with pytest.raises(SceneError, match="periodic"):
         solve_text(jump.replace('unknown = "resisting"', 'unknown = "resisting"\ncycle = "720 deg"'),
                    "bad.toml")
+
+
+def test_both_sides_given_reports_the_net_work():
+    text = ENGINE.replace('unknown = "resisting"', 'unknown = "resisting"\nconstant_moment = "80 N*m"')
+    d = solve_text(text, "both.toml").to_json()["dynamics"]
+    assert not d["constant_moment_found"] and d["constant_moment"] == pytest.approx(80.0)
+    # independent: the net work is the driving work minus 80 N·m over 4π
+    assert d["net_work"] == pytest.approx(d["work_driving"] - 80.0 * 4 * math.pi, rel=1e-12)
+
+
+def test_resisting_table_must_cover_a_turn_and_be_periodic():
+    short = SHAPER.replace('["350 deg", "2000 N"], ["360 deg", "2000 N"]]', '["350 deg", "2000 N"]]')
+    with pytest.raises(SceneError, match="cover the cycle") as err:
+        solve_text(short, "bad.toml")
+    assert "'loads[0].table'" in str(err.value)
+    jump = SHAPER.replace('["360 deg", "2000 N"]]', '["360 deg", "0 N"]]')
+    with pytest.raises(SceneError, match="periodic") as err:
+        solve_text(jump, "bad.toml")
+    assert "'loads[0].table'" in str(err.value)

@@ -60,7 +60,8 @@ def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
     deg = np.degrees(d.theta)
     k = d.drawn
     phi_axis = Axis("φ", "°", PHI_MM, mu=math.degrees(sc.mu_phi), mu_symbol="μφ")
-    marks = [Marker(float(deg[i]), float(d.M_d[i]), str(j)) for j, i in enumerate(k[:-1])]
+    given = d.M_d if d.spec.unknown.value == "resisting" else d.M_c     # the variable side
+    marks = [Marker(float(deg[i]), float(given[i]), str(j)) for j, i in enumerate(k[:-1])]
     moments = diagram_panel("dynamics.moments", message("dynamics.diagram.moments", lang),
                             [Curve(deg, d.M_d, label="M_d"), Curve(deg, d.M_c, Role.DASHED,
                                                                     label="M_c")],
@@ -107,7 +108,7 @@ def table_rows(d: MachineDynamics, lang: str) -> list[tuple[str, ...]]:
     """Heading and rows of values at the drawn positions (the last row closes the cycle)."""
     head = (message("dynamics.col.no", lang), "φ, °", "M_d, N·m", "M_c, N·m", "A_d, J", "A_c, J",
             "ΔT, J", "ΔT*, J", "J_red, kg·m²", "dJ/dφ, kg·m²", "ω, rad/s", "ε, rad/s²")
-    rows = [head]
+    rows: list[tuple[str, ...]] = [head]
     for j, i in enumerate(d.drawn):
         rows.append((str(j), number(math.degrees(d.theta[i]), 0, lang),
                      number(d.M_d[i], 1, lang), number(d.M_c[i], 1, lang),
