@@ -135,3 +135,38 @@ def test_resisting_table_must_cover_a_turn_and_be_periodic():
     with pytest.raises(SceneError, match="periodic") as err:
         solve_text(jump, "bad.toml")
     assert "'loads[0].table'" in str(err.value)
+
+
+def test_epsilon_is_omega_times_its_derivative():
+    scene, spec, phi = _setup(SHAPER)
+    d = machine_dynamics(scene, spec, float(phi[0]), len(phi))
+    fd = d.omega * np.gradient(d.omega, d.theta)            # ε = dω/dt = ω·dω/dφ
+    scale = float(np.abs(d.epsilon).max())
+    # away from the cutting table's corners, where M (and ε) jump
+    corners = np.radians([185.0, 190.0, 345.0, 350.0]) - d.phi0
+    near = np.min(np.abs(np.angle(np.exp(1j * (d.theta[:, None] - corners[None, :])))), axis=1)
+    keep = (near > np.radians(0.6)) & (np.arange(d.theta.size) > 2) & \
+        (np.arange(d.theta.size) < d.theta.size - 3)
+    assert keep.mean() > 0.98
+    np.testing.assert_allclose(d.epsilon[keep], fd[keep], atol=2e-3 * scale)
+
+
+def test_a_720_degree_load_table_equals_the_same_indicator():
+    """The gas force given as a [[loads]] table over 720° gives the indicator's dynamics."""
+    rows = [(0, 0.1), (180, 0.1), (360, 1.2), (370, 3.0), (540, 0.3), (720, 0.1)]
+    head = ENGINE[:ENGINE.index("[dynamics.indicator]")]
+    area = math.pi * 0.12 ** 2 / 4
+    indicator = head + ('[dynamics.indicator]\npoint = "B"\ntowards = "O"\nbore = "120 mm"\n'
+                        'ambient = "0.1 MPa"\ntable = [' + ", ".join(
+                            f'["{a} deg", "{p} MPa"]' for a, p in rows) + "]\n")
+    table = ENGINE[:ENGINE.index("[dynamics]")] + (
+        '[[loads]]\ntype = "table"\npoint = "B"\ntowards = "O"\nagainst = "crank_angle"\ntable = ['
+        + ", ".join(f'["{a} deg", "{(p - 0.1) * 1e6 * area} N"]' for a, p in rows) + "]\n\n"
+        + head[head.index("[dynamics]"):].replace('unknown = "resisting"',
+                                                  'unknown = "resisting"\ncycle = "720 deg"'))
+    a = solve_text(indicator, "a.toml").to_json()["dynamics"]
+    b = solve_text(table, "b.toml").to_json()["dynamics"]
+    assert a["work_driving"] == pytest.approx(b["work_driving"], rel=1e-9)
+    assert a["flywheel"]["exact"]["J"] == pytest.approx(b["flywheel"]["exact"]["J"], rel=1e-7)
+    for pa, pb in zip(a["positions"], b["positions"], strict=True):
+        assert pa["M_d"] == pytest.approx(pb["M_d"], rel=1e-9, abs=1e-9)

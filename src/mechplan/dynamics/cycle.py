@@ -17,10 +17,12 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..construct.builder import build_construction
 from ..errors import SceneError
 from ..geom.vec import Array, dot
 from ..model.dynamics import DynamicsSpec, IndicatorSpec
 from ..model.mechanism import GROUND
+from ..model.structure import analyse
 from ..scene.spec import LoadKind, LoadSpec, Scene
 from .loading import Loading
 
@@ -54,8 +56,6 @@ class MachineCycle:
     """Evaluate a mechanism scene's dynamics inputs at any cycle angles (vectorised)."""
 
     def __init__(self, scene: Scene, spec: DynamicsSpec, phi0: float) -> None:
-        from ..solve import build
-
         mech = scene.mechanism
         if mech.drive.epsilon != 0.0:
             raise SceneError("the drive's angular acceleration must be 0 for the machine's "
@@ -79,7 +79,8 @@ class MachineCycle:
                                   against="crank_angle", table=_UNIT_TABLE, key=ind.key))
         self.loading = Loading(base.masses, tuple(loads), base.gravity, scene.path)
         self.loading.check(mech)
-        _, self.c = build(scene, PLANS, self.loading)
+        self.c = build_construction(mech, analyse(mech), PLANS, scene.assembly_phi, scene.path,
+                                    self.loading)
         self._indicator_table: tuple[Array, Array] | None = None
         if spec.indicator is not None:
             self._indicator_table = self._indicator(spec.indicator)
