@@ -122,35 +122,41 @@ class MachineCycle:
                                  f"{ps[0]:g} Pa and {ps[-1]:g} Pa)", file=self.scene.path,
                                  key=f"{ind.key}.table")
             return xs, (ps - ind.ambient) * area
-        # per stroke: pressure against the piston's displacement from the starting dead centre
-        n = 2000
-        out_x: list[Array] = []
-        out_f: list[Array] = []
+        # per stroke: pressure against the piston's displacement from the starting dead centre,
+        # evaluated exactly at each θ (see _stroke_force); here only checked
         probe = self.c.evaluate(self.phi0 + np.linspace(0.0, 2 * math.pi, 73))
         speeds = np.hypot(*self._velocity(probe, ind.point, 73).T)
-        r0 = probe[self.c.position(ind.point)][0]
+        self._r0 = probe[self.c.position(ind.point)][0]
         if speeds[0] > 1e-6 * speeds.max():
             raise SceneError(f"an indicator diagram by strokes starts at a dead centre: the first "
                              f"position must be one (the piston {ind.point} moves at "
                              f"{speeds[0]:.3g} m/s there); set positions.start = {{ extreme = "
                              f"\"{ind.point}\", which = \"max\" }}", file=self.scene.path,
                              key="positions.start")
-        for k, (stroke, rows) in enumerate(ind.strokes):
-            theta = k * math.pi + np.linspace(0.0, math.pi, n + 1)
-            ev = self.c.evaluate(self.phi0 + theta)
-            s = np.hypot(*(ev[self.c.position(ind.point)] - r0).T)
+        travel = float(np.hypot(*(probe[self.c.position(ind.point)] - self._r0).T).max())
+        self._strokes: list[tuple[Array, Array]] = []
+        for stroke, rows in ind.strokes:
             xs = np.array([x for x, _ in rows])
             order = np.argsort(xs)
             xs, ps = xs[order], np.array([p for _, p in rows])[order]
-            if xs[0] > 1e-3 * s.max() or xs[-1] < s.max() * (1 - 1e-3):
+            if xs[0] > 1e-3 * travel or xs[-1] < travel * (1 - 1e-3):
                 raise SceneError(f"the {stroke.value} stroke's table must cover the piston's "
-                                 f"travel 0 … {s.max() * 1000:.1f} mm (got {xs[0] * 1000:g} … "
+                                 f"travel 0 … {travel * 1000:.1f} mm (got {xs[0] * 1000:g} … "
                                  f"{xs[-1] * 1000:g} mm)", file=self.scene.path,
                                  key=f"{ind.key}.strokes.{stroke.value}")
-            out_x.append(theta[:-1] if k < len(ind.strokes) - 1 else theta)
-            f = (np.interp(s, xs, ps) - ind.ambient) * area
-            out_f.append(f[:-1] if k < len(ind.strokes) - 1 else f)
-        return np.concatenate(out_x), np.concatenate(out_f)
+            self._strokes.append((xs, (ps - ind.ambient) * area))
+        return np.zeros(0), np.zeros(0)
+
+    def _stroke_force(self, theta: Array, r_point: Array) -> Array:
+        """Gas force by strokes: stroke k covers θ in [kπ, (k+1)π), p from s = |r − r_TDC|."""
+        s = np.hypot(*(r_point - self._r0).T)
+        k = np.minimum(np.floor(np.mod(theta, self.spec.cycle) / math.pi).astype(int),
+                       len(self._strokes) - 1)
+        out = np.zeros_like(s)
+        for j, (xs, fs) in enumerate(self._strokes):
+            sel = k == j
+            out[sel] = np.interp(s[sel], xs, fs)
+        return out
 
     def _velocity(self, ev: object, point: str, n: int) -> Array:
         if point in self.scene.mechanism.links[GROUND].points:
@@ -162,10 +168,12 @@ class MachineCycle:
             return np.zeros((n, 2))
         return ev[self.c.acceleration_image(point)]  # type: ignore[index]
 
-    def indicator_force(self, theta: Array) -> Array:
-        """Gas force (N, positive towards ``towards``) at cycle angles θ."""
-        if self._indicator_table is None:
+    def indicator_force(self, theta: Array, r_point: Array) -> Array:
+        """Gas force (N, positive towards ``towards``) at cycle angles θ, piston at ``r_point``."""
+        if self.spec.indicator is None or self._indicator_table is None:
             return np.zeros_like(theta)
+        if self.spec.indicator.strokes:
+            return self._stroke_force(theta, r_point)
         xs, fs = self._indicator_table
         return np.interp(np.mod(theta, self.spec.cycle), xs, fs)
 
@@ -185,7 +193,9 @@ class MachineCycle:
         factors = {t.index: np.interp(t.xs[0] + np.mod(phi - t.xs[0], t.period), t.xs, t.fs)
                    for t in self.tabled}
         if self.indicator_index is not None:
-            factors[self.indicator_index] = self.indicator_force(theta)
+            point = self.loading.loads[self.indicator_index].point
+            assert point is not None
+            factors[self.indicator_index] = self.indicator_force(theta, ev[c.position(point)])
         for j, load in enumerate(self.loading.loads):
             value = ev[c.results[f"load_{j}"]]
             factor = factors.get(j, 1.0)

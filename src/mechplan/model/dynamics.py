@@ -78,6 +78,6 @@ class DynamicsSpec:
     inertia_const: float = 0.0            # kg·m², rotating parts beyond the mechanism, reduced
     indicator: IndicatorSpec | None = None
     flywheel: FlywheelSpec | None = None
-    dense: int = 1440                     # dense (exact) points per crank turn
+    dense: int = 5760                     # dense (exact) points per crank turn
     pole_distance_mm: float = 40.0        # H of the graphical integration
     balance_tolerance: float = 0.02       # |A_d − A_c| / max(A_d, A_c) allowed when both are given

@@ -52,7 +52,7 @@ def parse_dynamics(data: dict[str, Any], file: str, mech: Mechanism) -> Dynamics
     if indicator and indicator.strokes and abs(len(indicator.strokes) * math.pi - cycle) > 1e-9:
         raise t.error("cycle", f"{len(indicator.strokes)} strokes make a cycle of "
                       f"{len(indicator.strokes) * 180}° (got {math.degrees(cycle):g}°)")
-    dense = t.raw("dense", 1440)
+    dense = t.raw("dense", 5760)
     if not isinstance(dense, int) or isinstance(dense, bool) or not 36 <= dense <= 100_000:
         raise t.error("dense", f"the number of exact points per turn must be an integer in "
                       f"36…100000 (got {dense!r})")
