@@ -170,3 +170,13 @@ def test_a_720_degree_load_table_equals_the_same_indicator():
     assert a["flywheel"]["exact"]["J"] == pytest.approx(b["flywheel"]["exact"]["J"], rel=1e-7)
     for pa, pb in zip(a["positions"], b["positions"], strict=True):
         assert pa["M_d"] == pytest.approx(pb["M_d"], rel=1e-9, abs=1e-9)
+
+
+def test_default_pole_distance_keeps_the_work_diagram_within_60_mm():
+    from mechplan.sheet.dynamics import dynamics_scales
+
+    text = ENGINE.replace('pole_distance = "10 mm"', "")
+    study = solve_text(text, "h.toml")
+    sc = dynamics_scales(study.dynamics)
+    tallest = float(np.abs(study.dynamics.A_d_drawn).max()) / sc.mu_A
+    assert 30.0 < tallest <= 60.0 and sc.mu_A == pytest.approx(sc.mu_M * sc.mu_phi * sc.H_mm)

@@ -79,5 +79,5 @@ class DynamicsSpec:
     indicator: IndicatorSpec | None = None
     flywheel: FlywheelSpec | None = None
     dense: int = 5760                     # dense (exact) points per crank turn
-    pole_distance_mm: float = 40.0        # H of the graphical integration
+    pole_distance_mm: float | None = None  # H of the graphical integration; None: chosen
     balance_tolerance: float = 0.02       # |A_d − A_c| / max(A_d, A_c) allowed when both are given

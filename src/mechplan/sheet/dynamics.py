@@ -44,9 +44,19 @@ def dynamics_scales(d: MachineDynamics) -> DynamicsScales:
     """Round scale factors for the diagrams of ``d``."""
     mu_phi = d.spec.cycle / PHI_MM
     mu_M = scale_for(np.concatenate([d.M_d, d.M_c]), 60.0)
-    H = d.spec.pole_distance_mm
+    H = d.spec.pole_distance_mm or pole_distance(d, mu_M, mu_phi)
     return DynamicsScales(mu_phi, mu_M, H, mu_M * mu_phi * H, scale_for(d.dT, 50.0),
                           scale_for(d.J_red, 60.0))
+
+
+def pole_distance(d: MachineDynamics, mu_M: float, mu_phi: float, height_mm: float = 60.0) -> float:
+    """A round pole distance H (mm) for which the work diagram is at most ``height_mm`` tall."""
+    largest = float(max(np.abs(d.A_d_drawn).max(), np.abs(d.A_c_drawn).max()))
+    H = largest / (mu_M * mu_phi * height_mm)
+    for step in (10.0, 5.0, 1.0):
+        if H >= 2 * step:
+            return step * math.ceil(H / step)
+    return max(1.0, math.ceil(H * 10) / 10)
 
 
 def _note(panel: Panel, text: str) -> None:
