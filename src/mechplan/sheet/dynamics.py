@@ -67,14 +67,17 @@ def _note(panel: Panel, text: str) -> None:
 def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
     """The panels of the dynamics sheet, in reading order."""
     sc = dynamics_scales(d)
+    # the curves at ≤ 4 points per mm of the φ axis (the dense grid is finer than the pen)
+    q = np.unique(np.concatenate([np.arange(0, d.theta.size, max(1, d.theta.size // 720)),
+                                  d.drawn, [d.theta.size - 1]]))
     deg = np.degrees(d.theta)
     k = d.drawn
     phi_axis = Axis("φ", "°", PHI_MM, mu=math.degrees(sc.mu_phi), mu_symbol="μφ")
     given = d.M_d if d.spec.unknown.value == "resisting" else d.M_c     # the variable side
     marks = [Marker(float(deg[i]), float(given[i]), str(j)) for j, i in enumerate(k[:-1])]
     moments = diagram_panel("dynamics.moments", message("dynamics.diagram.moments", lang),
-                            [Curve(deg, d.M_d, label="M_d"), Curve(deg, d.M_c, Role.DASHED,
-                                                                    label="M_c")],
+                            [Curve(deg[q], d.M_d[q], label="M_d"),
+                             Curve(deg[q], d.M_c[q], Role.DASHED, label="M_c")],
                             phi_axis, Axis("M", "N·m", 60.0, mu=sc.mu_M, mu_symbol="μM"), lang,
                             markers=marks)
     works = diagram_panel("dynamics.works", message("dynamics.diagram.works", lang),
@@ -84,10 +87,10 @@ def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
     _note(works.panel, message("dynamics.sheet.pole", lang, H=number(sc.H_mm, 0, lang),
                                muA=number(sc.mu_A, 4, lang)))
     energy = diagram_panel("dynamics.energy", message("dynamics.diagram.energy", lang),
-                           [Curve(deg, d.dT), Curve(deg[k], d.dT_drawn, Role.THIN)], phi_axis,
+                           [Curve(deg[q], d.dT[q]), Curve(deg[k], d.dT_drawn, Role.THIN)], phi_axis,
                            Axis("ΔT", "J", 50.0, mu=sc.mu_T, mu_symbol="μT"), lang)
     inertia = diagram_panel("dynamics.inertia", message("dynamics.diagram.inertia", lang),
-                            [Curve(deg, d.J_red)], phi_axis,
+                            [Curve(deg[q], d.J_red[q])], phi_axis,
                             Axis("J", "kg·m²", 60.0, mu=sc.mu_J, mu_symbol="μJ"), lang)
     w = d.witt
     j_hi = float(d.J_red.max()) * 1.1
@@ -96,7 +99,7 @@ def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
                 Curve(np.array([0.0, j_hi]), np.array([w.b_min, w.b_min + w.k_min * j_hi]),
                       Role.THIN, label="ψ_min")]
     witt = diagram_panel("dynamics.wittenbauer", message("dynamics.diagram.wittenbauer", lang),
-                         [Curve(d.J_red, d.dT), *tangents],
+                         [Curve(d.J_red[q], d.dT[q]), *tangents],
                          Axis("J", "kg·m²", 60.0, mu=sc.mu_J, mu_symbol="μJ"),
                          Axis("ΔT", "J", 50.0, mu=sc.mu_T, mu_symbol="μT"), lang,
                          markers=[Marker(0.0, w.b_max, "k"), Marker(0.0, w.b_min, "l")])
@@ -104,7 +107,7 @@ def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
                               kl=number((w.b_max - w.b_min) / sc.mu_T, 1, lang),
                               J=number(w.J_flywheel, 4, lang)))
     omega = diagram_panel("dynamics.omega", message("dynamics.diagram.omega", lang),
-                          [Curve(deg, d.omega)], phi_axis, Axis("ω", "rad/s", 50.0), lang,
+                          [Curve(deg[q], d.omega[q])], phi_axis, Axis("ω", "rad/s", 50.0), lang,
                           hlines=[(d.omega_m, "ω_m")], y_zero=False)
     _note(omega.panel, message(
         "dynamics.sheet.flywheels", lang, witt=number(w.J_flywheel, 4, lang),
