@@ -26,6 +26,7 @@ DIMENSIONS: dict[str, tuple[str, str]] = {
     "pressure": ("[mass]/[length]/[time]**2", "Pa"),
     "area": ("[length]**2", "m**2"),
     "dimensionless": ("", ""),
+    "density": ("[mass]/[length]**3", "kg/m**3"),
     # scale factors: physical unit per mm of paper
     "mu_length": ("", "m/mm"),
     "mu_velocity": ("1/[time]", "m/s/mm"),
@@ -48,6 +49,7 @@ _EXAMPLES = {
     "pressure": '"1 MPa" or "85 kPa"',
     "area": '"78.5 cm^2"',
     "dimensionless": '"0.35"',
+    "density": '"7800 kg/m^3"',
     "mu_length": '"0.0025 m/mm"',
     "mu_velocity": '"0.1 (m/s)/mm"',
     "mu_acceleration": '"2 (m/s^2)/mm"',

@@ -62,7 +62,7 @@ def test_check_rejects_what_does_not_fit_the_mechanism():
         (Loading(loads=(LoadSpec(LoadKind.FORCE, "3", "B", magnitude=5.0, towards="B"),)),
          "cannot point towards B"),
         (Loading(loads=(LoadSpec(LoadKind.TABLE, "3", "B", towards="O", against="crank_angle",
-                                 table=((0.0, 1.0), (3 * math.pi, 2.0))),)), "one turn at most"),
+                                 table=((0.0, 1.0), (5 * math.pi, 2.0))),)), "two turns at most"),
     ]
     for loading, words in cases:
         with pytest.raises(SceneError, match=words):

@@ -124,9 +124,9 @@ def test_load_towards_its_own_point_and_table_longer_than_a_turn():
     base = GOOD.replace('[links.3]\nslides', '[links.3]\nmass = "2 kg"\nslides')
     err = error_of(base + '\n[[loads]]\ntype = "force"\npoint = "B"\nmagnitude = "5 N"\ntowards = "B"\n')
     assert "key 'loads[0].towards'" in str(err) and "towards B itself" in str(err)
-    table = '[["0 deg", "0 N"], ["400 deg", "10 N"]]'
+    table = '[["0 deg", "0 N"], ["800 deg", "10 N"]]'
     err = error_of(base + f'\n[[loads]]\ntype = "table"\npoint = "B"\ntowards = "O"\ntable = {table}\n')
-    assert "key 'loads[0].table'" in str(err) and "one crank turn" in str(err)
+    assert "key 'loads[0].table'" in str(err) and "two crank turns" in str(err)
 
 
 def test_title_block_fields_are_checked():

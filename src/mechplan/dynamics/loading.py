@@ -122,6 +122,6 @@ class Loading:
         xs = [x for x, _ in spec.table]
         if len(xs) < 2 or any(b <= a for a, b in itertools.pairwise(xs)):
             raise fail("a table needs at least two rows with a strictly increasing first column")
-        if spec.against == "crank_angle" and xs[-1] - xs[0] > 2 * math.pi * (1 + 1e-12):
-            raise fail(f"a table against the crank angle spans one turn at most (it spans "
+        if spec.against == "crank_angle" and xs[-1] - xs[0] > 4 * math.pi * (1 + 1e-12):
+            raise fail(f"a table against the crank angle spans two turns at most (it spans "
                        f"{math.degrees(xs[-1] - xs[0]):g}°)")

@@ -27,7 +27,7 @@ from .spec import (
 )
 
 TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions", "analysis",
-            "gravity", "loads", "drawing", "title_block", "description")
+            "gravity", "loads", "drawing", "title_block", "description", "dynamics")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 SHEETS = ("A0", "A1", "A2", "A3", "A4")
@@ -547,10 +547,9 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     xs = [r[0] for r in parsed]
     if any(b <= a for a, b in itertools.pairwise(xs)):
         raise t.error("table", "the first column must increase strictly")
-    if against == "crank_angle" and xs[-1] - xs[0] > 2 * math.pi + 1e-9:
-        raise t.error("table", "a table against crank angle spans at most one crank turn "
-                      f"(360°; got {math.degrees(xs[-1] - xs[0]):g}°); a four-stroke cycle of 720° "
-                      "needs two crank turns, which a one-turn analysis cannot represent")
+    if against == "crank_angle" and xs[-1] - xs[0] > 4 * math.pi + 1e-9:
+        raise t.error("table", "a table against crank angle spans at most two crank turns "
+                      f"(720°, a four-stroke cycle; got {math.degrees(xs[-1] - xs[0]):g}°)")
     return LoadSpec(kind, owner, point, towards=towards, against=against, table=tuple(parsed),
                     key=t.path)
 

@@ -38,13 +38,22 @@ class Study(Protocol):
 def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
                count: int | None = None) -> Study:
     """Solve a scene given as text; ``at_deg``/``count`` choose crank positions of a mechanism."""
-    kind = scene_kind(parse_toml(text, file), file)
+    data = parse_toml(text, file)
+    kind = scene_kind(data, file)
     if kind == "mechanism":
         from ..scene import parse_scene
+        from ..scene.dynamics import parse_dynamics
         from ..solve import solve
         from .mechanism import MechanismStudy
 
-        return MechanismStudy(solve(parse_scene(text, file), at_deg=at_deg, count=count))
+        scene = parse_scene(text, file)
+        spec = parse_dynamics(data, file, scene.mechanism)
+        solution = solve(scene, at_deg=at_deg, count=count)
+        if spec is None:
+            return MechanismStudy(solution)
+        from .machine import solve_dynamics
+
+        return MechanismStudy(solution, solve_dynamics(solution, spec))
     if kind == "engine":
         from .engine import solve_engine_text
 

@@ -6,20 +6,31 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from ..dynamics.machine import MachineDynamics
     from ..sheet.primitives import Sheet
     from ..solve import Solution
 
 
 @dataclass(frozen=True)
 class MechanismStudy:
-    """A linkage solved at its positions (plans, forces and what its sections ask for)."""
+    """A linkage solved at its positions (plans, forces and what its sections ask for).
+
+    ``dynamics``: the machine's dynamics over its cycle when the scene has ``[dynamics]``.
+    """
 
     solution: Solution
+    dynamics: MachineDynamics | None = None
 
     def report(self, language: str | None = None) -> str:
         from ..report import text_report
 
-        return text_report(self.solution, language)
+        text = text_report(self.solution, language)
+        if self.dynamics is not None:
+            from .machine import dynamics_report
+
+            lang = language or self.solution.scene.language
+            text = text.rstrip("\n") + "\n\n" + dynamics_report(self.dynamics, lang) + "\n"
+        return text
 
     def warnings(self, language: str | None = None) -> list[str]:
         """Warnings for positions not built and results whose error estimate is poor."""
@@ -30,10 +41,23 @@ class MechanismStudy:
     def to_json(self) -> dict[str, Any]:
         from ..solve import to_json
 
-        return to_json(self.solution)
+        doc = to_json(self.solution)
+        if self.dynamics is not None:
+            from .machine import dynamics_json
+
+            doc["dynamics"] = dynamics_json(self.dynamics)
+        return doc
 
     def sheets(self, size: str | None, standard: str | None, language: str | None,
                name: str) -> list[Sheet]:
         from ..sheet.compose import compose_sheets
 
-        return compose_sheets(self.solution, size, standard, language, name=name)
+        sheets = compose_sheets(self.solution, size, standard, language, name=name)
+        if self.dynamics is not None:
+            from ..sheet.dynamics import dynamics_sheets
+
+            scene = self.solution.scene
+            sheets += dynamics_sheets(self.dynamics, scene, size or scene.drawing.sheet,
+                                      standard or scene.drawing.standard,
+                                      language or scene.language, f"{name}-dynamics")
+        return sheets

@@ -1,0 +1,151 @@
+"""The dynamics sheet: M_red, works, ΔT, J_red, the energy–mass diagram, ω(φ) and a table."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from ..i18n import message, number
+from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
+from .layout import framed_sheets
+from .panels import Panel
+from .primitives import HAlign, Role, Table, Text, VAlign
+
+if TYPE_CHECKING:
+    from ..dynamics.machine import MachineDynamics
+    from ..scene.spec import Scene
+    from .primitives import Sheet
+
+PHI_MM = 180.0        # length of the φ axis for the whole cycle
+ROW_H = 5.0
+
+
+@dataclass(frozen=True)
+class DynamicsScales:
+    """Scale factors of the dynamics sheet: μφ (rad/mm), μM, μA = μM·μφ·H, μT, μJ, H (mm)."""
+
+    mu_phi: float
+    mu_M: float
+    H_mm: float
+    mu_A: float
+    mu_T: float
+    mu_J: float
+
+    def tangent_tans(self, d: MachineDynamics) -> tuple[float, float]:
+        """tan ψ_max, tan ψ_min of Wittenbauer's tangents on paper: μJ/(2μT)·ω_m²(1 ± δ)."""
+        k = self.mu_J / (2 * self.mu_T) * d.omega_m ** 2
+        return k * (1 + d.spec.delta), k * (1 - d.spec.delta)
+
+
+def dynamics_scales(d: MachineDynamics) -> DynamicsScales:
+    """Round scale factors for the diagrams of ``d``."""
+    mu_phi = d.spec.cycle / PHI_MM
+    mu_M = scale_for(np.concatenate([d.M_d, d.M_c]), 60.0)
+    H = d.spec.pole_distance_mm or pole_distance(d, mu_M, mu_phi)
+    return DynamicsScales(mu_phi, mu_M, H, mu_M * mu_phi * H, scale_for(d.dT, 50.0),
+                          scale_for(d.J_red, 60.0))
+
+
+def pole_distance(d: MachineDynamics, mu_M: float, mu_phi: float, height_mm: float = 60.0) -> float:
+    """A round pole distance H (mm) for which the work diagram is at most ``height_mm`` tall."""
+    largest = float(max(np.abs(d.A_d_drawn).max(), np.abs(d.A_c_drawn).max()))
+    H = largest / (mu_M * mu_phi * height_mm)
+    for step in (10.0, 5.0, 1.0):
+        if H >= 2 * step:
+            return step * math.ceil(H / step)
+    return max(1.0, math.ceil(H * 10) / 10)
+
+
+def _note(panel: Panel, text: str) -> None:
+    x0, y0, _, _ = panel.bounds()
+    panel.primitives.append(Text((x0, y0 - 2.0), text, 2.5, valign=VAlign.TOP))
+
+
+def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
+    """The panels of the dynamics sheet, in reading order."""
+    sc = dynamics_scales(d)
+    # the curves at ≤ 4 points per mm of the φ axis (the dense grid is finer than the pen)
+    q = np.unique(np.concatenate([np.arange(0, d.theta.size, max(1, d.theta.size // 720)),
+                                  d.drawn, [d.theta.size - 1]]))
+    deg = np.degrees(d.theta)
+    k = d.drawn
+    phi_axis = Axis("φ", "°", PHI_MM, mu=math.degrees(sc.mu_phi), mu_symbol="μφ")
+    given = d.M_d if d.spec.unknown.value == "resisting" else d.M_c     # the variable side
+    marks = [Marker(float(deg[i]), float(given[i]), str(j)) for j, i in enumerate(k[:-1])]
+    moments = diagram_panel("dynamics.moments", message("dynamics.diagram.moments", lang),
+                            [Curve(deg[q], d.M_d[q], label="M_d"),
+                             Curve(deg[q], d.M_c[q], Role.DASHED, label="M_c")],
+                            phi_axis, Axis("M", "N·m", 60.0, mu=sc.mu_M, mu_symbol="μM"), lang,
+                            markers=marks)
+    works = diagram_panel("dynamics.works", message("dynamics.diagram.works", lang),
+                          [Curve(deg[k], d.A_d_drawn, label="A_d"),
+                           Curve(deg[k], d.A_c_drawn, Role.DASHED, label="A_c")],
+                          phi_axis, Axis("A", "J", 60.0, mu=sc.mu_A, mu_symbol="μA"), lang)
+    _note(works.panel, message("dynamics.sheet.pole", lang, H=number(sc.H_mm, 0, lang),
+                               muA=number(sc.mu_A, 4, lang)))
+    energy = diagram_panel("dynamics.energy", message("dynamics.diagram.energy", lang),
+                           [Curve(deg[q], d.dT[q]), Curve(deg[k], d.dT_drawn, Role.THIN)], phi_axis,
+                           Axis("ΔT", "J", 50.0, mu=sc.mu_T, mu_symbol="μT"), lang)
+    inertia = diagram_panel("dynamics.inertia", message("dynamics.diagram.inertia", lang),
+                            [Curve(deg[q], d.J_red[q])], phi_axis,
+                            Axis("J", "kg·m²", 60.0, mu=sc.mu_J, mu_symbol="μJ"), lang)
+    w = d.witt
+    j_hi = float(d.J_red.max()) * 1.1
+    tangents = [Curve(np.array([0.0, j_hi]), np.array([w.b_max, w.b_max + w.k_max * j_hi]),
+                      Role.THIN, label="ψ_max"),
+                Curve(np.array([0.0, j_hi]), np.array([w.b_min, w.b_min + w.k_min * j_hi]),
+                      Role.THIN, label="ψ_min")]
+    witt = diagram_panel("dynamics.wittenbauer", message("dynamics.diagram.wittenbauer", lang),
+                         [Curve(d.J_red[q], d.dT[q]), *tangents],
+                         Axis("J", "kg·m²", 60.0, mu=sc.mu_J, mu_symbol="μJ"),
+                         Axis("ΔT", "J", 50.0, mu=sc.mu_T, mu_symbol="μT"), lang,
+                         markers=[Marker(0.0, w.b_max, "k"), Marker(0.0, w.b_min, "l")])
+    _note(witt.panel, message("dynamics.sheet.kl", lang,
+                              kl=number((w.b_max - w.b_min) / sc.mu_T, 1, lang),
+                              J=number(w.J_flywheel, 4, lang)))
+    omega = diagram_panel("dynamics.omega", message("dynamics.diagram.omega", lang),
+                          [Curve(deg[q], d.omega[q])], phi_axis, Axis("ω", "rad/s", 50.0), lang,
+                          hlines=[(d.omega_m, "ω_m")], y_zero=False)
+    _note(omega.panel, message(
+        "dynamics.sheet.flywheels", lang, witt=number(w.J_flywheel, 4, lang),
+        merk=number(d.merk.J_flywheel, 4, lang), exact=number(d.J_exact, 4, lang),
+        wmax=number(d.ext.omega_max, 3, lang), wmin=number(d.ext.omega_min, 3, lang)))
+    return [moments.panel, works.panel, energy.panel, inertia.panel, witt.panel, omega.panel,
+            _table(d, lang)]
+
+
+def table_rows(d: MachineDynamics, lang: str) -> list[tuple[str, ...]]:
+    """Heading and rows of values at the drawn positions (the last row closes the cycle)."""
+    head = (message("dynamics.col.no", lang), "φ, °", "M_d, N·m", "M_c, N·m", "A_d, J", "A_c, J",
+            "ΔT, J", "ΔT*, J", "J_red, kg·m²", "dJ/dφ, kg·m²", "ω, rad/s", "ε, rad/s²")
+    rows: list[tuple[str, ...]] = [head]
+    for j, i in enumerate(d.drawn):
+        rows.append((str(j), number(math.degrees(d.theta[i]), 0, lang),
+                     number(d.M_d[i], 1, lang), number(d.M_c[i], 1, lang),
+                     number(d.A_d_drawn[j], 1, lang), number(d.A_c_drawn[j], 1, lang),
+                     number(d.dT_drawn[j], 1, lang), number(d.dT[i], 1, lang),
+                     number(d.J_red[i], 4, lang), number(d.dJ_red[i], 4, lang),
+                     number(d.omega[i], 3, lang), number(d.epsilon[i], 1, lang)))
+    return rows
+
+
+def _table(d: MachineDynamics, lang: str) -> Panel:
+    rows = table_rows(d, lang)
+    widths = (10.0, 12.0, 18.0, 18.0, 16.0, 16.0, 16.0, 16.0, 22.0, 22.0, 18.0, 18.0)
+    t = Table((0.0, 0.0), widths, tuple(ROW_H for _ in rows), tuple(rows), 2.5)
+    panel = Panel("dynamics.table", [t])
+    panel.primitives.append(Text((0.0, 2.0), mu_text("μM", dynamics_scales(d).mu_M, "N·m", lang),
+                                 2.5, halign=HAlign.LEFT, valign=VAlign.BOTTOM))
+    return panel
+
+
+def dynamics_sheets(d: MachineDynamics, scene: Scene, size: str, standard: str, lang: str,
+                    name: str) -> list[Sheet]:
+    """The dynamics sheet(s) ``name`` (``name-2`` … when the panels need more)."""
+    fields = {"title": scene.title, "document_type": message("dynamics.sheet.title", lang)}
+    fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
+    return framed_sheets(dynamics_panels(d, lang), size=size, standard=standard, language=lang,
+                         name=name, fields=fields)
