@@ -28,7 +28,7 @@ from .labels import (
 )
 from .points import LAYER_HINTS, units_ascii
 from .submission import Entry, Note
-from .texts import MESSAGES, T, join, plan_title
+from .texts import T, has, join, plan_title
 
 _NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?")
 
@@ -373,7 +373,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         if vtext is None:
             return
         if _is_length_text(vtext) and "mm" in vtext.lower() and q.dimension != "length":
-            noun = (T(f"dim.{q.dimension}") if f"dim.{q.dimension}" in MESSAGES else
+            noun = (T(f"dim.{q.dimension}") if has(f"dim.{q.dimension}") else
                     f"{'an' if q.dimension[0] in 'aeiou' else 'a'} {q.dimension.replace('_', ' ')}")
             notes.append(Note("error", T("note.length_not_value", name=e.name, text=vtext,
                                          display=q.display, dim=noun), e.where))

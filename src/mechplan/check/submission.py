@@ -21,7 +21,7 @@ from typing import Any
 
 from ..errors import CheckError
 from .labels import clean_text
-from .texts import MESSAGES, T
+from .texts import T, has
 
 Point = tuple[float, float]
 
@@ -249,7 +249,7 @@ class _Collect(logging.Handler):
 
 def unit_name(code: int) -> str:
     """The name of a $INSUNITS code ("millimetres"), or the code itself when it has none."""
-    return T(f"unit.{code}") if f"unit.{code}" in MESSAGES else str(code)
+    return T(f"unit.{code}") if has(f"unit.{code}") else str(code)
 
 
 def _where(e: Any, extra: str = "") -> str:
