@@ -18,7 +18,6 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction, Evaluation
-from ..construct.ops import EVALUATORS, SOURCES
 from ..construct.segments import Segment
 from ..construct.step import Kind, Op, Plan
 from ..errors import CheckError, MechplanError
@@ -70,50 +69,30 @@ class Options:
         return self.tolerance.get(plan) or self.tolerance.get(None) or Tolerance()
 
 
-# -- the student's own values: re-evaluating steps from submitted points -----------------------
+# -- the student's own values: the construction re-evaluated from submitted points -------------
 class Rederive:
-    """Values of steps computed from the submitted points instead of the exact ones."""
+    """Values of steps derived by the engine from the submitted points instead of the exact ones."""
 
     def __init__(self, c: Construction, ev: Evaluation, k: int,
                  overrides: dict[str, np.ndarray]) -> None:
         self.c, self.ev, self.k = c, ev, k
+        self.phi = ev.phi[k:k + 1]
         self.over = {s: np.asarray(v, dtype=float).reshape(1, 2) for s, v in overrides.items()}
-        self._anc: dict[str, set[str]] = {}
+        self._all = c.evaluate(self.phi, overrides=self.over)
+        self._but: dict[str, Evaluation] = {}
 
     def exact(self, sid: str) -> np.ndarray:
         """The exact value of a step (leading axis 1)."""
         return np.asarray(self.ev[sid][self.k:self.k + 1])
 
-    def _touched(self, sid: str) -> bool:
-        anc = self._anc.get(sid)
-        if anc is None:
-            anc = set(self.c.ancestors([sid])) - {sid}
-            self._anc[sid] = anc
-        return bool(anc & self.over.keys())
-
     def own(self, sid: str) -> np.ndarray:
         """The value the step gets from the submitted points (never its own submitted value)."""
-        memo: dict[str, np.ndarray] = {}
-
-        def get(x: str, top: bool = False) -> np.ndarray:
-            if not top and x in self.over:
-                return self.over[x]
-            if x in memo:
-                return memo[x]
-            st = self.c[x]
-            if st.op is Op.CRANK_ANGLE or st.op in SOURCES or not self._touched(x):
-                v = self.exact(x)
-            else:
-                fn = EVALUATORS.get(st.op)
-                if fn is None:
-                    v = self.exact(x)
-                else:
-                    with np.errstate(all="ignore"):
-                        v = np.asarray(fn(st, *[get(i) for i in st.inputs])[0])
-            memo[x] = v
-            return v
-
-        return get(sid, top=True)
+        ev = self._all
+        if sid in self.over:
+            ev = self._but.get(sid) or self._but.setdefault(sid, self.c.evaluate(
+                self.phi, overrides={s: v for s, v in self.over.items() if s != sid}))
+        with np.errstate(all="ignore"):
+            return np.asarray(ev[sid])
 
 
 # -- public entry point -------------------------------------------------------------------------
@@ -232,22 +211,15 @@ def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]
 
     plans = tuple(dict.fromkeys(("position", "velocity", "acceleration", *scene.plans)))
     if "force" in plans or _wants_force(sub):
-        try:
-            from ..dynamics import Loading
+        from ..dynamics import Loading
 
-            loading = Loading.from_scene(scene)
-            if not loading.is_empty:
-                sol = solve(scene, at_deg=at_deg, plans=tuple(dict.fromkeys((*plans, "force"))),
-                            loading=loading)
-                sol.extras["loading"] = loading
-                return sol
-            notes.append(Note("info", T("note.no_loads"), scene.path or ""))
-        except MechplanError:
-            raise
-        except Exception as exc:  # noqa: BLE001 - the force plan is optional for a check
-            notes.append(Note("warning", T("note.no_force_plan",
-                                           error=f"{exc.__class__.__name__}: {exc}"),
-                              scene.path or ""))
+        loading = Loading.from_scene(scene)
+        if not loading.is_empty:
+            sol = solve(scene, at_deg=at_deg, plans=tuple(dict.fromkeys((*plans, "force"))),
+                        loading=loading)
+            sol.extras["loading"] = loading
+            return sol
+        notes.append(Note("info", T("note.no_loads"), scene.path or ""))
     plans = tuple(p for p in plans if p != "force")
     return solve(scene, at_deg=at_deg, plans=plans)
 
@@ -937,9 +909,9 @@ def _value_exact(ctx: _Ctx, q: Any, k: int, notes: list[Note], where: str) -> fl
             loading = Loading.from_scene(ctx.scene)
             m_red, j_red = reduced_of(ctx.c, ctx.ev, ctx.scene.mechanism, loading)
             return float((j_red if q.extra == "J_red" else m_red)[k])
-        except Exception as exc:  # noqa: BLE001 - the dynamics module is optional here
+        except MechplanError as exc:
             notes.append(Note("warning", T("note.not_computable", extra=q.extra,
-                                           error=f"{exc.__class__.__name__}: {exc}"), where))
+                                           error=exc.detail), where))
             return None
     return None
 

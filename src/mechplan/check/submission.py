@@ -19,6 +19,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from ezdxf import DXFError
+
 from ..errors import CheckError
 from .labels import clean_text
 from .texts import T, has
@@ -138,6 +140,11 @@ def read_submission(path: str | Path) -> Submission:
 
 
 # -- DXF ---------------------------------------------------------------------------------------
+#: what ezdxf raises on damaged values besides its own DXFError family
+DAMAGE = (OSError, UnicodeDecodeError, ValueError, TypeError, EOFError, IndexError,
+          ArithmeticError)
+
+
 def read_dxf(path: Path) -> Submission:
     """Read lines, polylines, point markers and texts of a DXF's model space (recovering damage)."""
     import ezdxf
@@ -159,10 +166,7 @@ def read_dxf(path: Path) -> Submission:
     except ezdxf.DXFStructureError as exc:
         raise CheckError(f"cannot read the file as DXF ({exc}); expected a DXF drawing saved by "
                          "a CAD program (ASCII or binary)", file=str(path)) from None
-    except (OSError, UnicodeDecodeError, ValueError, EOFError) as exc:
-        raise CheckError(f"cannot read the file as DXF ({exc.__class__.__name__}: {exc})",
-                         file=str(path)) from None
-    except Exception as exc:  # noqa: BLE001 - ezdxf raises assorted errors on damaged files
+    except (ezdxf.DXFError, *DAMAGE) as exc:
         raise CheckError(f"cannot read the file as DXF; it looks damaged "
                          f"({exc.__class__.__name__}: {exc})", file=str(path)) from None
     finally:
@@ -318,7 +322,7 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
                          via=T("where.block", name=name, handle=e.dxf.handle))
                 for attrib in getattr(e, "attribs", []):
                     _add_text(sub, _text_box(attrib, scale), attrib, via)
-        except Exception as exc:  # noqa: BLE001 - one bad entity must not lose the sheet
+        except (DXFError, *DAMAGE) as exc:      # one damaged entity must not lose the sheet
             sub.notes.append(Note("warning", T("note.unreadable_entity", kind=kind,
                                                error=f"{exc.__class__.__name__}: {exc}"),
                                   _where(e, via)))
