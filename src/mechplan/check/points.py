@@ -16,6 +16,11 @@ import statistics
 from dataclasses import dataclass, field
 
 import numpy as np
+import shapely
+from scipy.optimize import linear_sum_assignment
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from shapely import STRtree
 
 from ..construct.step import Plan
 from .labels import (
@@ -96,40 +101,23 @@ class DrawnSheet:
 
 
 # -- nodes -----------------------------------------------------------------------------------
-class _UnionFind:
-    def __init__(self, n: int) -> None:
-        self.parent = list(range(n))
-
-    def find(self, i: int) -> int:
-        while self.parent[i] != i:
-            self.parent[i] = self.parent[self.parent[i]]
-            i = self.parent[i]
-        return i
-
-    def union(self, a: int, b: int) -> None:
-        ra, rb = self.find(a), self.find(b)
-        if ra != rb:
-            self.parent[max(ra, rb)] = min(ra, rb)
-
-
-def _cluster(points: np.ndarray, snap: float) -> list[int]:
+def _cluster(points: np.ndarray, snap: float) -> np.ndarray:
     """Cluster index of each point: points closer than ``snap`` (transitively) are one cluster."""
-    n = len(points)
-    uf = _UnionFind(n)
-    if n:
-        cells: dict[tuple[int, int], list[int]] = {}
-        size = max(snap, 1e-9)
-        keys = np.floor(points / size).astype(np.int64)
-        for i, (cx, cy) in enumerate(keys):
-            for dx in (-1, 0, 1):
-                for dy in (-1, 0, 1):
-                    for j in cells.get((int(cx) + dx, int(cy) + dy), ()):
-                        if np.hypot(*(points[i] - points[j])) <= snap:
-                            uf.union(i, j)
-            cells.setdefault((int(cx), int(cy)), []).append(i)
-    roots = [uf.find(i) for i in range(n)]
-    index: dict[int, int] = {}
-    return [index.setdefault(r, len(index)) for r in roots]
+    if not len(points):
+        return np.zeros(0, dtype=np.int64)
+    geoms = shapely.points(points)
+    a, b = STRtree(geoms).query(geoms, predicate="dwithin", distance=snap)
+    return _components(len(points), a, b)
+
+
+def _components(n: int, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Connected component of each of ``n`` nodes joined by the edges ``a[i]``–``b[i]``."""
+    edges = coo_matrix((np.ones(len(a)), (np.asarray(a), np.asarray(b))), shape=(n, n))
+    _, labels = connected_components(edges, directed=False)
+    # number the components in order of first appearance (stable numbering of drawings)
+    _, first = np.unique(labels, return_index=True)
+    order = np.argsort(np.argsort(first))
+    return np.asarray(order[labels], dtype=np.int64)
 
 
 @dataclass
@@ -145,7 +133,7 @@ class _Graph:
 def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float) -> _Graph:
     pts = [p for ln in lines for p in (ln.start, ln.end)] + [m[0] for m in markers]
     arr = np.asarray(pts, dtype=float).reshape(-1, 2)
-    cl = _cluster(arr, snap)
+    cl = [int(x) for x in _cluster(arr, snap)]
     m = max(cl) + 1 if cl else 0
     nodes = np.zeros((m, 2))
     counts = np.zeros(m)
@@ -180,12 +168,8 @@ def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float
             if deg == 1 and end not in marker_nodes and _overshoot(nodes, end, other, at_node,
                                                                    snap):
                 decoration.add(end)
-    uf = _UnionFind(m)
-    for a, b in line_nodes:
-        uf.union(a, b)
-    roots = [uf.find(i) for i in range(m)]
-    index: dict[int, int] = {}
-    component = [index.setdefault(r, len(index)) for r in roots]
+    ends = np.asarray(line_nodes, dtype=np.int64).reshape(-1, 2)
+    component = [int(x) for x in _components(m, ends[:, 0], ends[:, 1])]
     degree = [len(at_node.get(i, ())) for i in range(m)]
     return _Graph(nodes, line_nodes, marker_nodes, decoration, component, degree)
 
@@ -333,49 +317,6 @@ def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
                       "next to the points or raise --label-distance", file=sub.path)
 
 
-def _assign(cost: list[list[float]]) -> list[int]:
-    """Minimum-cost assignment of rows to distinct columns (rows ≤ columns); column per row."""
-    n, m = len(cost), len(cost[0]) if cost else 0
-    inf = math.inf
-    u, v = [0.0] * (n + 1), [0.0] * (m + 1)
-    p, way = [0] * (m + 1), [0] * (m + 1)
-    for i in range(1, n + 1):
-        p[0] = i
-        j0 = 0
-        minv = [inf] * (m + 1)
-        used = [False] * (m + 1)
-        while True:
-            used[j0] = True
-            i0, delta, j1 = p[j0], inf, 0
-            for j in range(1, m + 1):
-                if not used[j]:
-                    cur = cost[i0 - 1][j - 1] - u[i0] - v[j]
-                    if cur < minv[j]:
-                        minv[j], way[j] = cur, j0
-                    if minv[j] < delta:
-                        delta, j1 = minv[j], j
-            for j in range(m + 1):
-                if used[j]:
-                    u[p[j]] += delta
-                    v[j] -= delta
-                else:
-                    minv[j] -= delta
-            j0 = j1
-            if p[j0] == 0:
-                break
-        while True:
-            j1 = way[j0]
-            p[j0] = p[j1]
-            j0 = j1
-            if not j0:
-                break
-    out = [-1] * n
-    for j in range(1, m + 1):
-        if p[j]:
-            out[p[j] - 1] = j - 1
-    return out
-
-
 def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: float,
             notes: list[Note]) -> None:
     """Give each label a point: line ends nearest to its text box, one label per point where
@@ -412,9 +353,10 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
             row[len(columns) + r] = (near[0][0] + 0.5 * tol) if near else big
             row = [x + tol for x in row]       # keep costs positive (marker bonus)
             cost.append(row)
-        pick = _assign(cost)
+        rows, cols = linear_sum_assignment(np.asarray(cost))
+        pick = dict(zip(rows.tolist(), cols.tolist()))
         for r, lb in enumerate(labels):
-            j = pick[r]
+            j = pick.get(r, -1)
             if j < 0 or cost[r][j] >= big:
                 continue
             node = columns[j] if j < len(columns) else options[r][0][1]
