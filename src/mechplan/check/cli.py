@@ -158,6 +158,6 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _write(path: Path, data: bytes) -> None:
-    from .overlay import _write_atomic
+    from .overlay import write_bytes
 
-    _write_atomic(path, data)
+    write_bytes(path, data)
