@@ -190,7 +190,8 @@ def _angles(scene: Scene, sub: Submission, options: Options,
 
 
 def _wants_force(sub: Submission) -> bool:
-    from .labels import dimension_of, mu_plan, quantity_key
+    from .labels import mu_plan
+    from .notation import dimension
     from .points import _layer_plan
 
     for e in sub.entries:
@@ -199,7 +200,7 @@ def _wants_force(sub: Submission) -> bool:
             if plan is Plan.FORCE:
                 return True
             continue
-        if dimension_of(quantity_key(e.name)) in ("force", "moment") or (
+        if dimension(e.name) in ("force", "moment") or (
                 e.section and "force" in e.section.lower()):
             return True
     return any(_layer_plan(t.layer) is Plan.FORCE for t in sub.texts) or any(
