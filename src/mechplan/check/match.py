@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 from ..construct.graph import Construction
 from ..construct.segments import Segment
-from ..construct.step import Kind, Op, Plan
+from ..construct.step import Kind, Plan
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
 from ..units import parse_quantity
@@ -120,7 +120,6 @@ class QuantityIndex:
             if rev:
                 self._put(rev, q)
         self.has_force = any(st.plan is Plan.FORCE for st in c)
-        self.absolute = {s.end: s for s in reversed(c.segments) if c[s.start].op is Op.POLE}
         if with_dynamics:
             self._put("J_red", Quantity("J_red", "inertia", None, extra="J_red"))
             self._put("M_red", Quantity("M_red", "moment", None, extra="M_red"))
@@ -138,10 +137,6 @@ class QuantityIndex:
             return next((self.by_key[k] for p in link.points
                          if (k := notation.key(f"F_{p}")) in self.by_key), None)
         return self.by_key.get(notation.key(reading.canonical))
-
-    def segment_of(self, q: Quantity) -> Segment | None:
-        """The plan segment that shows a quantity (its own, or the pole's segment to a point)."""
-        return q.segment or (self.absolute.get(q.step) if q.step else None)
 
     def names(self) -> list[str]:
         """Display names of all quantities, for messages."""
@@ -349,11 +344,9 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
     found = None
     if length_text is not None:
         # a name of plan points ("pb", "ab", "πc'") is a segment; a quantity's name ("aC2",
-        # "as2", "VC2B2") is the segment that shows that quantity and never another one
+        # "as2", "VC2B2") is never read as a segment (its length in mm is reported below)
         if notation.read(e.name, qi.mech) is None or _plain(e.name):
             found = si.find(e.name, sec[0] if sec else None, prefer)
-        if found is None and named is not None and (seg := qi.segment_of(named)) is not None:
-            found = (seg, si.key_of(seg), False)
     if found is not None and length_text is not None:
         seg, key, rev = found
         number, half = _number_and_half(length_text)
