@@ -11,6 +11,7 @@ A written value that differs from the student's own segment × μ is an arithmet
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -825,14 +826,14 @@ def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _
         # what the student's own drawing or lengths give
         own, own_text, arith = _own_value(ctx, gv, seg, q, k, red, first, table_len, mu)
         row.own = own
-        if abs(sub_cmp - exact_cmp) <= tol_abs:
-            row.verdict = OK
-        elif own is not None and abs(sub_cmp - (own if signed else abs(own))) > arith:
+        if own is not None and abs(sub_cmp - (own if signed else abs(own))) > arith:
             row.verdict = SLIP
             row.cause = NEW
             row.hint = T("hint.slip", own=own_text, written=gv.written, text=gv.text)
             report.findings.append(Finding("arithmetic slip", plan_word(plan.value) if plan else "",
                                            gv.written, row.hint, q.step or ""))
+        elif abs(sub_cmp - exact_cmp) <= tol_abs:
+            row.verdict = OK
         else:
             row.verdict = WRONG
             roots = []
@@ -964,4 +965,30 @@ def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, r
             return own, T("own.omega", seg=relseg.name,  # type: ignore[union-attr]
                           len=ts.length_mm, mu=m, l=l, own=own, unit=unit), max(
                 0.01 * abs(gv.value), gv.half_unit)
+        rel = _written(ctx, lambda w: relseg is not None and w.quantity.segment is relseg)
+        if rel is not None and l:
+            own = abs(rel.value) / l
+            return own, T("own.ratio", a=rel.written, text=rel.text, l=l, own=own, unit=unit), \
+                max(0.005 * abs(gv.value), gv.half_unit, rel.half_unit / l)
+    link = _inertia_link(q)
+    spec = ctx.scene.masses.get(link) if link else None
+    if spec is not None and spec.mass > 0:
+        acc = f"a_{spec.centre}"
+        a_gv = _written(ctx, lambda w: w.quantity.name == acc)
+        if a_gv is not None:
+            own = spec.mass * abs(a_gv.value)
+            return own, T("own.product", m=spec.mass, a=a_gv.written, text=a_gv.text, own=own,
+                          unit=unit), max(0.005 * abs(gv.value), gv.half_unit,
+                                          spec.mass * a_gv.half_unit)
     return None, "", 0.0
+
+
+def _written(ctx: _Ctx, which: Any) -> GivenValue | None:
+    """The first value the student wrote for a quantity (``which(value) → bool``)."""
+    return next((w for w in ctx.interp.values if which(w)), None)
+
+
+def _inertia_link(q: Any) -> str | None:
+    """The link of an inertia force Q_k (a result "Q_2" or a force-plan segment "Q2")."""
+    m = re.fullmatch(r"Q_?(\w+)", q.name)
+    return m.group(1) if m else None
