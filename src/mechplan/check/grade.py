@@ -129,7 +129,7 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
         raise CheckError("nothing in the table can be checked"
                          + (f": {problems}" if problems else ""), file=sub.path)
-    ctx = _Ctx(scene, sub, sol.construction, ev, book, qi, sheet, interp, options)
+    ctx = _Ctx(scene, sub, sol.construction, ev, book, qi, sheet, interp, options, sol.scales)
     reports = [_grade(ctx, k) for k in range(len(candidates))]
     if len(reports) == 1:
         best = 0
@@ -238,6 +238,7 @@ class _Ctx:
     sheet: DrawnSheet | None
     interp: Interpretation
     options: Options
+    scales: dict[Plan, float]          # the scene's own scale factors (paper tolerance fallback)
 
 
 @dataclass
@@ -813,10 +814,13 @@ def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _
         mu = mu_all.get(plan) if plan else None
         seg = q.segment or _absolute_segment(c, q.step)
         tol_abs = tol.pct / 100 * abs(exact_cmp)
-        if seg is not None and mu:
-            tol_abs = max(tol_abs, tol.mm * mu)
+        # a value is right within the paper tolerance of its segment, at the student's μ or
+        # (when they gave none) at the scene's: a short segment is not held to ±2 %
+        paper = mu or (ctx.scales.get(plan) if plan else None)
+        if seg is not None and paper:
+            tol_abs = max(tol_abs, tol.mm * paper)
         elif q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON) and plan is not None:
-            mu_p = mu_all.get(plan)
+            mu_p = mu_all.get(plan) or ctx.scales.get(plan)
             l = _link_length(ctx, q.step, k)
             if mu_p and l:
                 tol_abs = max(tol_abs, tol.mm * mu_p / l)
