@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import pytest
 
+from mechplan.check import notation
 from mechplan.check.labels import (
     LabelBook,
     clean_text,
@@ -11,7 +12,6 @@ from mechplan.check.labels import (
     label_key,
     mu_plan,
 )
-from mechplan.check import notation
 from mechplan.construct.step import Plan
 from mechplan.scene import load_scene
 

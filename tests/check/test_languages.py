@@ -16,8 +16,8 @@ from mechplan.check.cli import add_parser
 from mechplan.check.overlay import marks
 from mechplan.check.report import CARRIED, NEW, SLIP, WRONG
 from mechplan.check.texts import LANGUAGES, T, num, tr
-from mechplan.i18n import catalogue
 from mechplan.construct.step import Plan
+from mechplan.i18n import catalogue
 
 from .sheets import TEMPLATES, PlanSpec, exact_sheet, move, solved, write_dxf
 

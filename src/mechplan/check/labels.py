@@ -31,6 +31,7 @@ _MTEXT_STACK = re.compile(r"\\S([^;^/#]*)[\^/#]([^;]*);")
 _MTEXT_CODE = re.compile(r"\\[fFcCHhWwQqTtAap][^;]*;|\\[LlOoKkNX~]")
 _TEXT_CODE = re.compile(r"%%([dDpPcCuUoOkK%]|\d{3})")
 _TEXT_SPECIAL = {"d": "°", "p": "±", "c": "Ø", "%": "%"}
+_UNICODE_CODE = re.compile(r"\\U\+([0-9A-Fa-f]{4})")
 
 
 def clean_text(raw: str, mtext: bool = False) -> str:
@@ -51,6 +52,7 @@ def clean_text(raw: str, mtext: bool = False) -> str:
         return _TEXT_SPECIAL.get(code.lower(), "")
 
     text = _TEXT_CODE.sub(special, text)
+    text = _UNICODE_CODE.sub(lambda m: chr(int(m.group(1), 16)), text)
     text = unicodedata.normalize("NFC", text)
     return "\n".join(line.strip() for line in text.splitlines()).strip()
 

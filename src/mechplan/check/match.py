@@ -13,6 +13,7 @@ from ..construct.step import Kind, Plan
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
 from ..units import parse_quantity
+from . import notation
 from .labels import (
     MU_DIMENSION,
     LabelBook,
@@ -23,7 +24,6 @@ from .labels import (
     mu_plan,
     plan_key,
 )
-from . import notation
 from .points import LAYER_HINTS, units_ascii
 from .submission import Entry, Note
 from .texts import T, has, join, plan_title

@@ -184,3 +184,36 @@ def closest(name: str, candidates: Iterable[str], n: int = 4) -> list[str]:
     pool = {compact(c): c for c in candidates}
     hits = difflib.get_close_matches(compact(name), list(pool), n=n, cutoff=0.4)
     return [pool[h] for h in hits]
+
+
+# -- legacy Vietnamese encodings ------------------------------------------------------------------
+_VIETNAMESE = re.compile(r"[\u1ea0-\u1ef9ơưđăƠƯĐĂ]")
+
+
+@functools.cache
+def _tcvn3() -> tuple[dict[str, str], frozenset[str]]:
+    table = catalogue()["tcvn3"]
+    pairs = {tok[0]: tok[1:] for tok in table["map"].split()}
+    pairs["\u00ad"] = "ư"                           # soft hyphen: invisible in the data file
+    return pairs, frozenset(table["weak"])
+
+
+def decode_legacy(text: str, font: str = "") -> tuple[str, str | None]:
+    """Decode a text written in a legacy Vietnamese font encoding.
+
+    Return the text and the encoding found: ``"tcvn3"`` (decoded), ``"vni"`` (recognised, not
+    decoded) or None (the text is left as it is). The style's font decides when it is known
+    (".VnTime" → TCVN3, "VNI-Times" → VNI); otherwise two or more TCVN3-only characters in a text
+    without Unicode Vietnamese letters do.
+    """
+    data = catalogue()
+    low = font.lower()
+    table, weak = _tcvn3()
+    if any(f in low for f in data["vni"]["fonts"]):
+        return text, "vni"
+    by_font = any(low.startswith(f) or f"/{f}" in low for f in data["tcvn3"]["fonts"])
+    strong = sum(1 for ch in text if ch in table and ch not in weak)
+    if not by_font and (strong < 2 or _VIETNAMESE.search(text)):
+        return text, None
+    decoded = "".join(table.get(ch, ch) for ch in text)
+    return (decoded, "tcvn3") if decoded != text else (text, None)

@@ -15,14 +15,16 @@ import math
 import re
 import tomllib
 from collections.abc import Iterable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 from ezdxf import DXFError
 
 from ..errors import CheckError
+from ..sheet.fonts import text_width_mm
 from .labels import clean_text
+from .notation import decode_legacy
 from .texts import T, has
 
 Point = tuple[float, float]
@@ -114,6 +116,7 @@ class Submission:
     entries: list[Entry] = field(default_factory=list)
     notes: list[Note] = field(default_factory=list)
     units: str = ""
+    dimensions: list[tuple[float, SheetText]] = field(default_factory=list)  # measured, its text
     skipped: int = 0        # dash-dot lines and lines of frames and tables, not read
 
 
@@ -211,6 +214,8 @@ def read_dxf(path: Path) -> Submission:
                                            m=extent * scale / 1000, mm=extent), str(path)))
         sub.units = T("units.header", unit=unit_name(code))
         scale = 1.0
+    for measured, t in sub.dimensions:       # "pb = <>": the measured length, in mm
+        sub.texts.append(replace(t, text=f"{t.text} = {measured * scale:.3f}"))
     if scale != 1.0:
         _rescale(sub, scale)
     if not sub.lines and not sub.texts:
@@ -316,6 +321,8 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
                 _add_text(sub, _text_box(e, scale), e, via)
             elif kind == "MTEXT":
                 _add_text(sub, _mtext_box(e, scale), e, via)
+            elif kind == "DIMENSION":
+                _add_dimension(sub, e, scale, via)
             elif kind == "INSERT" and depth < 8:
                 name = e.dxf.name
                 _collect(sub, e.virtual_entities(), scale, depth + 1,
@@ -384,7 +391,7 @@ def _text_box(e: Any, scale: float) -> Box:
     h = float(e.dxf.get("height", 2.5)) or 2.5
     wf = float(e.dxf.get("width", 1.0)) or 1.0
     rot = math.radians(float(e.dxf.get("rotation", 0.0)))
-    w = 0.6 * h * wf * max(1, len(plain))
+    w = text_width_mm(plain or " ", h) * wf
     align = e.get_align_enum()
     name = align.name
     ocs = e.ocs()
@@ -418,7 +425,7 @@ def _mtext_box(e: Any, scale: float) -> Box:
     plain = clean_text(e.text, mtext=True)
     h = float(e.dxf.get("char_height", 2.5)) or 2.5
     lines = plain.splitlines() or [""]
-    w = 0.6 * h * max(1, max(len(s) for s in lines))
+    w = max(text_width_mm(s or " ", h) for s in lines)
     total = h * (1 + 1.67 * (len(lines) - 1))
     att = int(e.dxf.get("attachment_point", 1))
     hx = {0: 0.5, 1: 0.0, 2: -0.5}[(att - 1) % 3]
@@ -434,9 +441,41 @@ def _mtext_box(e: Any, scale: float) -> Box:
 
 def _add_text(sub: Submission, box: Box, e: Any, via: str) -> None:
     plain, centre, h, anchor, half, rot = box
-    if plain and _finite(*centre):
-        sub.texts.append(SheetText(plain, centre, h, _where(e, via), e.dxf.get("layer", ""),
-                                   anchor, half, rot))
+    if not plain or not _finite(*centre):
+        return
+    where = _where(e, via)
+    decoded, legacy = decode_legacy(plain, _font_of(e))
+    if legacy == "tcvn3":
+        sub.notes.append(Note("info", T("note.tcvn3", raw=plain, text=decoded), where))
+    elif legacy == "vni":
+        sub.notes.append(Note("warning", T("note.vni", raw=plain), where))
+    sub.texts.append(SheetText(decoded, centre, h, where, e.dxf.get("layer", ""), anchor, half,
+                               rot))
+
+
+def _font_of(e: Any) -> str:
+    """The font file or family of a text's style ("" when unknown)."""
+    doc, name = e.doc, e.dxf.get("style", "Standard")
+    if doc is None or name not in doc.styles:
+        return ""
+    style = doc.styles.get(name)
+    return str(style.dxf.get("font", "") or "") + " " + str(style.dxf.get("name", ""))
+
+
+def _add_dimension(sub: Submission, e: Any, scale: float, via: str) -> None:
+    """A dimension whose text names a segment ("pb = <>", "pb <>"): its measured length."""
+    raw = clean_text(e.dxf.get("text", "") or "", mtext=True)
+    if "<>" not in raw or not re.search(r"[^\W\d_]", raw.replace("<>", "")):
+        return
+    mid = e.dxf.get("text_midpoint") or e.dxf.get("defpoint")
+    measured = float(e.get_measurement())
+    name = re.sub(r"\s*[=:]?\s*<>.*$", "", raw).strip()
+    if not name or mid is None or not _finite(measured, mid.x, mid.y):
+        return
+    h = float(e.get_dim_style().get("dimtxt", 2.5) or 2.5)
+    sub.dimensions.append((measured, SheetText(
+        name, (mid.x * scale, mid.y * scale), h * scale, _where(e, via), e.dxf.get("layer", ""),
+        (mid.x * scale, mid.y * scale), (text_width_mm(name, h) / 2 * scale, h / 2 * scale))))
 
 
 # -- "name = value" texts ------------------------------------------------------------------------

@@ -25,6 +25,7 @@ from typing import Any, Self
 from ..i18n import LANGUAGES, catalogue, has_message
 from ..units import format_number
 
+
 def _template(key: str, lang: str) -> str:
     return catalogue(lang)[_ID_PREFIX + key.replace(" ", "_")]
 
