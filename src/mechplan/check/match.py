@@ -342,11 +342,10 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         prefer = qq.plan if qq is not None else None
     named = qi.find(e.name)
     found = None
-    if length_text is not None:
-        # a name of plan points ("pb", "ab", "πc'") is a segment; a quantity's name ("aC2",
-        # "as2", "VC2B2") is never read as a segment (its length in mm is reported below)
-        if notation.read(e.name, qi.mech) is None or _plain(e.name):
-            found = si.find(e.name, sec[0] if sec else None, prefer)
+    # a name of plan points ("pb", "ab", "πc'") is a segment; a quantity's name ("aC2", "as2",
+    # "VC2B2") is never read as a segment (its length in mm is reported below)
+    if length_text is not None and (notation.read(e.name, qi.mech) is None or _plain(e.name)):
+        found = si.find(e.name, sec[0] if sec else None, prefer)
     if found is not None and length_text is not None:
         seg, key, rev = found
         number, half = _number_and_half(length_text)
