@@ -28,7 +28,9 @@ def add_parser(subparsers: Any) -> None:
         "and labels of the plans, or a TOML/CSV table of measured lengths and values. Exit "
         "code 0: everything checked is right; 1: something is wrong; 2: unusable input.")
     p.add_argument("scene", help="the scene (TOML) the submission solves")
-    p.add_argument("submission", help="a .dxf drawing, or a .toml / .csv table")
+    p.add_argument("submission", help="a .dxf drawing, or a .toml / .csv table; or a folder of "
+                   "them (a class: then SCENE may be a folder of variants, a submission is "
+                   "matched to the variant named in its file name, -o is the output folder)")
     p.add_argument("--at", type=float, metavar="DEG",
                    help="crank angle φ of the submission in degrees (default: written on the "
                    "submission, the scene's only position, or the best fit of its positions)")
@@ -50,6 +52,8 @@ def add_parser(subparsers: Any) -> None:
                    help="write the report: .json, .txt, or an overlay sheet .svg / .dxf / .pdf "
                    "(may be repeated)")
     p.add_argument("--json", action="store_true", help="print the report as JSON")
+    p.add_argument("--jobs", type=int, default=1, metavar="N",
+                   help="a class: check N submissions at once (joblib; -1: every core)")
     p.add_argument("--lang", choices=LANGUAGES, default=None,
                    help="language of the report, its hints and the overlay's notes: en, ru, vi "
                    "or zh (default: the scene's language); ru and vi write a decimal comma")
@@ -131,6 +135,8 @@ def run(args: argparse.Namespace) -> int:
         raise CheckError(f"--snap must not be negative (got {args.snap})")
     options = Options(at_deg=args.at, tolerance=parse_tolerances(args.tolerance),
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
+    if Path(args.submission).is_dir():
+        return _run_class(args, options)
     from ..scene import load_scene
 
     scene = load_scene(args.scene)
@@ -155,6 +161,25 @@ def run(args: argparse.Namespace) -> int:
     for o in outputs:
         print(T("cli.wrote", path=str(o)).tr(lang), file=sys.stderr)
     return 0 if report.passed else 1
+
+
+def _run_class(args: argparse.Namespace, options: Any) -> int:
+    """Check a folder of submissions; one report per student and summary.csv."""
+    from .klass import check_class
+
+    folder = Path(args.submission)
+    out = Path(args.output[0]) if args.output else folder / "checked"
+    lang = args.lang or "en"
+    rows = check_class(Path(args.scene), folder, out, options, lang, args.jobs)
+    for r in rows:
+        if r.get("error"):
+            print(T("class.unusable", student=r["student"], error=r["error"]).tr(lang))
+        else:
+            print(T("class.row", student=r["student"], scene=r["scene"],
+                    verdict=T("report.passed" if r["passed"] else "report.failed"),
+                    wrong=r["wrong"], slip=r["slip"]).tr(lang))
+    print(T("cli.wrote", path=str(out / "summary.csv")).tr(lang), file=sys.stderr)
+    return 0 if all(r.get("passed") for r in rows) else 1
 
 
 def _write(path: Path, data: bytes) -> None:

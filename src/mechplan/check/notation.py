@@ -181,8 +181,11 @@ def points(sub: str, mech: Mechanism) -> list[str] | None:
 
 def closest(name: str, candidates: Iterable[str], n: int = 4) -> list[str]:
     """The candidate names closest to a written name (for "not understood" notes)."""
-    pool = {compact(c): c for c in candidates}
-    hits = difflib.get_close_matches(compact(name), list(pool), n=n, cutoff=0.4)
+    everything = list(candidates)
+    dim = dimension(name)         # an acceleration name gets accelerations first
+    same = [c for c in everything if dim is not None and dimension(c) == dim]
+    pool = {compact(c): c for c in same or everything}
+    hits = difflib.get_close_matches(compact(name), list(pool), n=n, cutoff=0.3)
     return [pool[h] for h in hits]
 
 
