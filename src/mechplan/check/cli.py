@@ -125,7 +125,7 @@ def run(args: argparse.Namespace) -> int:
     from .overlay import write_overlay
 
     outputs = [Path(o) for o in args.output]
-    for o in outputs:
+    for o in outputs if not Path(args.submission).is_dir() else ():
         if o.suffix.lower() not in (".json", ".svg", ".dxf", ".pdf", *TEXT_SUFFIXES):
             raise CheckError(f"-o {o}: the report is written as .json, .txt, or an overlay "
                              ".svg / .dxf / .pdf")

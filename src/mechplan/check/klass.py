@@ -36,8 +36,8 @@ def variant_of(submission: Path, scenes: list[Path]) -> Path | None:
     "v07.toml"; the longest wins); the only scene when there is one."""
     if len(scenes) == 1:
         return scenes[0]
-    words = {w.lower() for w in re.split(r"[\W_]+", submission.stem) if w}
-    named = [s for s in scenes if s.stem.lower() in words]
+    named = [s for s in scenes if re.search(rf"(?:^|[\W_]){re.escape(s.stem)}(?:$|[\W_])",
+                                            submission.stem, re.IGNORECASE)]
     return max(named, key=lambda s: len(s.stem)) if named else None
 
 

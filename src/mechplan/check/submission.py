@@ -472,7 +472,7 @@ def _add_dimension(sub: Submission, e: Any, scale: float, via: str) -> None:
     name = re.sub(r"\s*[=:]?\s*<>.*$", "", raw).strip()
     if not name or mid is None or not _finite(measured, mid.x, mid.y):
         return
-    h = float(e.get_dim_style().get("dimtxt", 2.5) or 2.5)
+    h = float(e.get_dim_style().dxf.get("dimtxt", 2.5) or 2.5)
     sub.dimensions.append((measured, SheetText(
         name, (mid.x * scale, mid.y * scale), h * scale, _where(e, via), e.dxf.get("layer", ""),
         (mid.x * scale, mid.y * scale), (text_width_mm(name, h) / 2 * scale, h / 2 * scale))))
