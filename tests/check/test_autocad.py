@@ -137,7 +137,7 @@ def test_not_a_dxf_or_truncated(tmp_path: Path, content: bytes, message: str, fo
 
 
 def test_a_class_at_once(tmp_path: Path, four_bar) -> None:
-    scene, sol = four_bar
+    _scene, sol = four_bar
     folder = tmp_path / "class"
     folder.mkdir()
     good = exact_sheet(sol, SPEC)
