@@ -182,3 +182,12 @@ def test_class_on_the_command_line(tmp_path: Path, four_bar, capsys) -> None:
     said = capsys.readouterr().out
     assert "an (four_bar.toml): ЗАЧТЕНО" in said and "binh (four_bar.toml): НЕ ЗАЧТЕНО" in said
     assert (out / "summary.csv").exists() and (out / "an.json").exists()
+
+
+def test_errors_are_said_in_the_report_language(tmp_path: Path, capsys) -> None:
+    from .test_cli_overlay import main
+
+    path = tmp_path / "empty.dxf"
+    path.write_bytes(b"")
+    assert main(["check", str(TEMPLATES / "four_bar.toml"), str(path), "--lang", "ru"]) == 2
+    assert "файл пуст; ожидается чертёж DXF" in capsys.readouterr().out

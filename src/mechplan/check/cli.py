@@ -12,7 +12,7 @@ from typing import Any
 from ..construct.step import Plan
 from ..errors import CheckError, SceneError
 from .report import Tolerance
-from .texts import LANGUAGES, T
+from .texts import LANGUAGES, T, Text
 
 PLAN_NAMES = {"position": Plan.POSITION, "velocity": Plan.VELOCITY,
               "acceleration": Plan.ACCELERATION, "force": Plan.FORCE, "l": Plan.POSITION,
@@ -70,20 +70,17 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
         if m:
             name = m.group(1).lower()
             if name not in PLAN_NAMES:
-                raise CheckError(f"--tolerance {spec!r}: unknown plan {m.group(1)!r}; plans are "
-                                 "position, velocity, acceleration, force")
+                raise CheckError(T("error.tolerance_plan", spec=spec, plan=m.group(1)))
             plan, body = PLAN_NAMES[name], m.group(2)
         base = out.get(plan) or out.get(None) or Tolerance()
         mm, pct, deg = base.mm, base.pct, base.deg
         parts = [x for x in re.split(r"[,\s;]+", body.strip()) if x]
         if not parts:
-            raise CheckError(f"--tolerance {spec!r}: expected '1mm', '2%', '1.5deg' or a list "
-                             "of them")
+            raise CheckError(T("error.tolerance_empty", spec=spec))
         for part in parts:
             pm = re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(mm|%|deg|°)", part.lower())
             if not pm:
-                raise CheckError(f"--tolerance {spec!r}: cannot read {part!r}; write it like "
-                                 "'1mm', '2%' or '1.5deg'")
+                raise CheckError(T("error.tolerance_part", spec=spec, part=part))
             value = float(pm.group(1).replace(",", "."))
             unit = pm.group(2)
             if unit == "mm":
@@ -111,28 +108,39 @@ def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
         try:
             value = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
         except SceneError as exc:
-            raise CheckError(f"--mu-{key.upper() if key == 'f' else key} {text!r}: "
-                             f"{exc.detail}") from None
+            raise CheckError(T("error.mu_option", option=f"--mu-{key.upper() if key == 'f' else key}",
+                               text=text, detail=exc.detail)) from None
         if not value > 0:
-            raise CheckError(f"--mu-{key} must be positive (got {text!r})")
+            raise CheckError(T("error.positive", option=f"--mu-{key}", value=text))
         out[plan] = value
     return out
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run a check; print the report; write the requested files. 0 passed, 1 errors found."""
+    """Run a check; print the report; write the requested files. 0 passed, 1 errors found.
+
+    A :class:`CheckError` is said in the report's language (``--lang`` or the scene's)."""
+    said = {"lang": args.lang or "en"}
+    try:
+        return _run(args, said)
+    except CheckError as exc:
+        if isinstance(exc.detail, Text) and said["lang"] != "en":
+            raise CheckError(exc.detail.tr(said["lang"]), file=exc.file, key=exc.key) from None
+        raise
+
+
+def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
     from .grade import Options, check
     from .overlay import write_overlay
 
     outputs = [Path(o) for o in args.output]
     for o in outputs if not Path(args.submission).is_dir() else ():
         if o.suffix.lower() not in (".json", ".svg", ".dxf", ".pdf", *TEXT_SUFFIXES):
-            raise CheckError(f"-o {o}: the report is written as .json, .txt, or an overlay "
-                             ".svg / .dxf / .pdf")
+            raise CheckError(T("error.output_kind", path=str(o)))
     if args.label_distance is not None and not args.label_distance > 0:
-        raise CheckError(f"--label-distance must be positive (got {args.label_distance})")
+        raise CheckError(T("error.positive", option="--label-distance", value=args.label_distance))
     if not args.snap >= 0:
-        raise CheckError(f"--snap must not be negative (got {args.snap})")
+        raise CheckError(T("error.not_negative", option="--snap", value=args.snap))
     options = Options(at_deg=args.at, tolerance=parse_tolerances(args.tolerance),
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
     if Path(args.submission).is_dir():
@@ -143,6 +151,7 @@ def run(args: argparse.Namespace) -> int:
     lang = getattr(args, "lang", None) or scene.language or "en"
     if lang not in LANGUAGES:
         lang = "en"
+    said["lang"] = lang
     report = check(scene, args.submission, options)
     doc = report.to_json(lang)
     text = report.text(lang)

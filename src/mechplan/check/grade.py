@@ -123,12 +123,12 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
     notes.extend(interp.notes)
     if sheet is not None and not sheet.plans and not interp.values:
         why = "; ".join(str(n) for n in notes if n.level != "info")[:600]
-        raise CheckError("no plan could be found on the sheet: "
-                         + (why or "no labelled points next to its lines"), file=sub.path)
+        raise CheckError(T("error.no_plan", why=why or T("error.no_labelled_points")),
+                         file=sub.path)
     if sub.kind == "table" and not interp.segments and not interp.values:
         problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
-        raise CheckError("nothing in the table can be checked"
-                         + (f": {problems}" if problems else ""), file=sub.path)
+        raise CheckError(T("error.nothing_to_check", problems=f": {problems}" if problems else ""),
+                         file=sub.path)
     ctx = _Ctx(scene, sub, sol.construction, ev, book, qi, sheet, interp, options, sol.scales)
     reports = [_grade(ctx, k) for k in range(len(candidates))]
     if len(reports) == 1:

@@ -45,11 +45,11 @@ def students(scene: Path, folder: Path) -> list[Student]:
     """The submissions of a folder with their variants (``scene`` is a file or a folder)."""
     scenes = sorted(scene.glob("*.toml")) if scene.is_dir() else [scene]
     if not scenes:
-        raise CheckError("the folder of variants holds no scene (.toml) files", file=str(scene))
+        raise CheckError(T("error.no_variants"), file=str(scene))
     subs = sorted(p for p in folder.iterdir() if p.is_file() and p.suffix.lower() in SUFFIXES
                   and p.resolve() not in {s.resolve() for s in scenes})
     if not subs:
-        raise CheckError("the folder holds no submissions (.dxf, .toml, .csv)", file=str(folder))
+        raise CheckError(T("error.no_submissions"), file=str(folder))
     return [Student(p.stem, p, variant_of(p, scenes)) for p in subs]
 
 

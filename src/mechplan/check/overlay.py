@@ -62,8 +62,7 @@ def marks(report: CheckReport, lang: str = "en") -> list[Mark]:
                  if plan.mu else tr(plan.name, lang))
         out.append(Mark("NOTES", (min(xs), max(ys) + 6.0), None, title, 3.5))
     if not out:
-        raise CheckError("an overlay needs a drawn submission (a DXF with labelled plans); "
-                         "a table of values has no drawing", file=report.submission)
+        raise CheckError(T("error.overlay_table"), file=report.submission)
     xs = [p[0] for m in out for p in (m.start, m.end) if p is not None]
     ys = [p[1] for m in out for p in (m.start, m.end) if p is not None]
     legend = (min(xs), min(ys) - 8.0)
@@ -118,15 +117,14 @@ def write_overlay(report: CheckReport, path: str | Path, lang: str = "en") -> Pa
     p = Path(path)
     suffix = p.suffix.lower().lstrip(".")
     if suffix not in ("svg", "dxf", "pdf"):
-        raise CheckError(f"an overlay is written as .svg, .dxf or .pdf (got {suffix or 'no suffix'})",
-                         file=str(p))
+        raise CheckError(T("error.overlay_kind", suffix=suffix or "—"), file=str(p))
     sheet = overlay_sheet(report, lang, p.stem or "overlay")
     try:
         return write(sheet, p, (suffix,))[0]
     except DrawingError as exc:
         raise CheckError(exc.detail, file=str(p)) from None
     except OSError as exc:
-        raise CheckError(f"cannot write the file ({exc.strerror or exc})", file=str(p)) from None
+        raise CheckError(T("error.write", reason=exc.strerror or str(exc)), file=str(p)) from None
 
 
 def write_bytes(path: Path, data: bytes) -> Path:
@@ -136,4 +134,5 @@ def write_bytes(path: Path, data: bytes) -> Path:
     except DrawingError as exc:
         raise CheckError(exc.detail, file=str(path)) from None
     except OSError as exc:
-        raise CheckError(f"cannot write the file ({exc.strerror or exc})", file=str(path)) from None
+        raise CheckError(T("error.write", reason=exc.strerror or str(exc)),
+                         file=str(path)) from None

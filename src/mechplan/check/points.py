@@ -303,9 +303,8 @@ def _no_labels(sub: Submission, book: LabelBook) -> Exception:
     texts = [t.text for t in sub.texts][:6]
     found = (f"; the texts found ({', '.join(repr(t) for t in texts)}) are not point labels"
              if texts else "")
-    return CheckError(f"found {len(sub.lines)} line(s) but no point labels{found}; label the "
-                      f"points of each plan with TEXT or MTEXT next to the line ends "
-                      f"(labels of this mechanism: {sample})", file=sub.path)
+    return CheckError(T("error.no_labels", n=len(sub.lines), found=found, sample=sample),
+                      file=sub.path)
 
 
 def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
@@ -313,8 +312,7 @@ def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
 
     worst = ", ".join(f"'{lb.written}' ({lb.text.where}, {lb.distance:.1f} mm)"
                       for lb in labels[:5])
-    return CheckError(f"no label is within {tol:.1f} mm of a line end: {worst}; move the labels "
-                      "next to the points or raise --label-distance", file=sub.path)
+    return CheckError(T("error.labels_far", tol=tol, worst=worst), file=sub.path)
 
 
 def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: float,

@@ -124,10 +124,9 @@ def read_submission(path: str | Path) -> Submission:
     """Read a DXF, TOML or CSV submission; raise :class:`CheckError` if it cannot be read at all."""
     p = Path(path)
     if not p.exists():
-        raise CheckError("the submission file does not exist", file=str(p))
+        raise CheckError(T("error.no_file"), file=str(p))
     if p.is_dir():
-        raise CheckError("the submission must be a file (a DXF, TOML or CSV), not a directory",
-                         file=str(p))
+        raise CheckError(T("error.is_dir"), file=str(p))
     suffix = p.suffix.lower()
     if suffix == ".dxf":
         return read_dxf(p)
@@ -138,8 +137,7 @@ def read_submission(path: str | Path) -> Submission:
     head = p.read_bytes()[:256]
     if re.match(rb"\s*0\s*\r?\n\s*SECTION", head) or head.startswith(b"AutoCAD Binary DXF"):
         return read_dxf(p)
-    raise CheckError(f"cannot tell what kind of submission {p.suffix or 'a file without suffix'} "
-                     "is; expected a .dxf drawing, a .toml or a .csv table", file=str(p))
+    raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))
 
 
 # -- DXF ---------------------------------------------------------------------------------------
@@ -156,7 +154,7 @@ def read_dxf(path: Path) -> Submission:
     sub = Submission(str(path), "dxf")
     raw = path.read_bytes()
     if not raw.strip():
-        raise CheckError("the file is empty; expected a DXF drawing", file=str(path))
+        raise CheckError(T("error.empty"), file=str(path))
     truncated = not raw.startswith(b"AutoCAD Binary DXF") and \
         raw.rstrip()[-3:].upper() != b"EOF"
     if truncated:
@@ -167,11 +165,10 @@ def read_dxf(path: Path) -> Submission:
     try:
         doc, auditor = recover.readfile(str(path))
     except ezdxf.DXFStructureError as exc:
-        raise CheckError(f"cannot read the file as DXF ({exc}); expected a DXF drawing saved by "
-                         "a CAD program (ASCII or binary)", file=str(path)) from None
+        raise CheckError(T("error.not_dxf", detail=str(exc)), file=str(path)) from None
     except (ezdxf.DXFError, *DAMAGE) as exc:
-        raise CheckError(f"cannot read the file as DXF; it looks damaged "
-                         f"({exc.__class__.__name__}: {exc})", file=str(path)) from None
+        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {exc}"),
+                         file=str(path)) from None
     finally:
         log.removeHandler(repairs)
     if repairs.messages:
@@ -219,10 +216,8 @@ def read_dxf(path: Path) -> Submission:
     if scale != 1.0:
         _rescale(sub, scale)
     if not sub.lines and not sub.texts:
-        raise CheckError("the DXF holds no lines and no texts in model space"
-                         + (" (the file ends early: it may be truncated)" if truncated else "")
-                         + "; expected the lines of a plan (LINE, LWPOLYLINE, POLYLINE) with "
-                         "TEXT/MTEXT labels", file=str(path))
+        raise CheckError(T("error.dxf_empty", truncated=T("error.truncated") if truncated else ""),
+                         file=str(path))
     for text in sub.texts:
         for i, line in enumerate(text.text.splitlines(), start=1):
             where = T("where.text_line", where=text.where, n=i) if "\n" in text.text \
@@ -520,9 +515,7 @@ def read_toml(path: Path) -> Submission:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise CheckError(f"not a valid TOML table ({exc}); expected entries like "
-                         "'pb = 67.0' under [velocity] or 'v_S2 = \"2.95 m/s\"' under [values]",
-                         file=str(path)) from None
+        raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
     lines = text.splitlines()
 
     def line_of(key: str) -> str:
@@ -557,9 +550,7 @@ def read_toml(path: Path) -> Submission:
 
     walk(data, None, "")
     if not sub.entries:
-        raise CheckError("the table holds no values; expected lengths in mm under a plan section "
-                         "([velocity] pb = 67.0) or physical values ([values] v_B = \"6.7 m/s\")",
-                         file=str(path))
+        raise CheckError(T("error.toml_empty"), file=str(path))
     return sub
 
 
@@ -617,7 +608,7 @@ def read_csv(path: Path) -> Submission:
     sub = Submission(str(path), "table")
     text = _read_text(path)
     if "\x00" in text:
-        raise CheckError("the file is binary, not a CSV table", file=str(path))
+        raise CheckError(T("error.binary"), file=str(path))
     sample = "\n".join(text.splitlines()[:20])
     try:
         dialect: Any = csv.Sniffer().sniff(sample, delimiters=",;\t|")
@@ -626,7 +617,7 @@ def read_csv(path: Path) -> Submission:
     try:
         rows = list(csv.reader(io.StringIO(text), dialect))
     except csv.Error as exc:
-        raise CheckError(f"not a readable CSV table ({exc})", file=str(path)) from None
+        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
     header: dict[str, int] | None = None
     for lineno, row in enumerate(rows, start=1):
         cells = [c.strip() for c in row]
@@ -637,8 +628,8 @@ def read_csv(path: Path) -> Submission:
             header = _header(cells)
             if header is not None:
                 if "name" not in header:
-                    raise CheckError("the header has no name column; expected one of "
-                                     "'segment', 'name'", file=str(path), key=f"line {lineno}")
+                    raise CheckError(T("error.csv_header"), file=str(path),
+                                     key=f"line {lineno}")
                 continue
         if header is not None:
             def get(k: str, cells: list[str] = cells, header: dict[str, int] = header
@@ -675,9 +666,7 @@ def read_csv(path: Path) -> Submission:
         else:
             sub.entries.append(Entry(name=cells[0], where=where, text=cells[1]))
     if not sub.entries:
-        raise CheckError("the CSV holds no rows; expected 'name, value' rows such as "
-                         "'pb, 67.0' or 'v_S2, 2.95 m/s', or a header 'segment, mm, mu, quantity, "
-                         "value'", file=str(path))
+        raise CheckError(T("error.csv_empty"), file=str(path))
     return sub
 
 
