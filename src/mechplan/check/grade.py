@@ -769,7 +769,7 @@ def _table_hint(ctx: _Ctx, seg: Segment) -> str:
 
     st = ctx.c[seg.end]
     texts = TEXT.get(st.op)
-    base = T("hint.step", op=st.op.value.replace('_', ' '), label=st.label)
+    base = T("hint.step", op=T(f"op.{st.op.value}"), label=st.label)
     if texts and st.op in (Op.LINE_LINE,):
         base = T("hint.meet", label=st.label, a=ctx.c[st.inputs[0]].label,
                  b=ctx.c[st.inputs[1]].label)
@@ -880,7 +880,7 @@ def _value_hint(ctx: _Ctx, q: Any) -> str:
             p, qq, n, aq = st.inputs
             return T("hint.epsilon", label=st.label, p=c[p].label, q=c[qq].label,
                      n=c[n].label, a=c[aq].label)
-        return T("hint.value_step", display=q.display, op=st.op.value.replace('_', ' '),
+        return T("hint.value_step", display=q.display, op=T(f"op.{st.op.value}"),
                  label=st.label)
     if q.segment is not None:
         return T("hint.value_segment", display=q.display, seg=q.segment.name)
