@@ -16,13 +16,10 @@ import statistics
 from dataclasses import dataclass, field
 
 import numpy as np
-import shapely
 from scipy.optimize import linear_sum_assignment
-from scipy.sparse import coo_matrix
-from scipy.sparse.csgraph import connected_components
-from shapely import STRtree
 
 from ..construct.step import Plan
+from ..geom.sketch import crossings
 from .labels import (
     Candidate,
     LabelBook,
@@ -31,6 +28,7 @@ from .labels import (
     label_key,
     mu_plan,
 )
+from .sketch import Graph, drawn_graph
 from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .texts import T, Text, join, plan_title, with_case
 
@@ -41,7 +39,6 @@ LAYER_HINTS: tuple[tuple[Plan, tuple[str, ...]], ...] = (
     (Plan.FORCE, ("force", "сил", "lực", "luc", "力")),
     (Plan.POSITION, ("pos", "mech", "полож", "vị trí", "vi tri", "位置", "机构")),
 )
-BARB_MAX_MM = 8.0
 #: extra cost (× the label distance) of giving a label to a point where only 1 or 2 line ends
 #: meet: points of a plan are where vectors meet; a construction line drawn past its point ends
 #: loose, and the label is often nearer to that end
@@ -100,130 +97,6 @@ class DrawnSheet:
     other_entries: list[Entry]
 
 
-# -- nodes -----------------------------------------------------------------------------------
-def _cluster(points: np.ndarray, snap: float) -> np.ndarray:
-    """Cluster index of each point: points closer than ``snap`` (transitively) are one cluster."""
-    if not len(points):
-        return np.zeros(0, dtype=np.int64)
-    geoms = shapely.points(points)
-    a, b = STRtree(geoms).query(geoms, predicate="dwithin", distance=snap)
-    return _components(len(points), a, b)
-
-
-def _components(n: int, a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """Connected component of each of ``n`` nodes joined by the edges ``a[i]``–``b[i]``."""
-    edges = coo_matrix((np.ones(len(a)), (np.asarray(a), np.asarray(b))), shape=(n, n))
-    _, labels = connected_components(edges, directed=False)
-    # number the components in order of first appearance (stable numbering of drawings)
-    _, first = np.unique(labels, return_index=True)
-    order = np.argsort(np.argsort(first))
-    return np.asarray(order[labels], dtype=np.int64)
-
-
-@dataclass
-class _Graph:
-    nodes: np.ndarray                  # (M, 2)
-    line_nodes: list[tuple[int, int]]  # per line
-    markers: dict[int, str]            # node → marker entity
-    decoration: set[int]               # arrowhead corners: labels go elsewhere first
-    component: list[int]               # node → drawing
-    degree: list[int]                  # line ends at each node
-
-
-def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float) -> _Graph:
-    pts = [p for ln in lines for p in (ln.start, ln.end)] + [m[0] for m in markers]
-    arr = np.asarray(pts, dtype=float).reshape(-1, 2)
-    cl = [int(x) for x in _cluster(arr, snap)]
-    m = max(cl) + 1 if cl else 0
-    nodes = np.zeros((m, 2))
-    counts = np.zeros(m)
-    for i, c in enumerate(cl):
-        nodes[c] += arr[i]
-        counts[c] += 1
-    if m:
-        nodes /= counts[:, None]
-    line_nodes = [(cl[2 * i], cl[2 * i + 1]) for i in range(len(lines))]
-    marker_nodes = {cl[2 * len(lines) + j]: markers[j][1] for j in range(len(markers))}
-    at_node: dict[int, list[int]] = {}
-    for i, (a, b) in enumerate(line_nodes):
-        at_node.setdefault(a, []).append(i)
-        at_node.setdefault(b, []).append(i)
-    length = [ln.length for ln in lines]
-    decoration: set[int] = set()
-    for n, idx in at_node.items():
-        if n in marker_nodes or any(length[i] > BARB_MAX_MM for i in idx):
-            continue
-        for i in idx:
-            other = line_nodes[i][1] if line_nodes[i][0] == n else line_nodes[i][0]
-            if any(length[j] >= 2.5 * length[i] for j in at_node.get(other, ())):
-                decoration.add(n)
-                break
-    degree_of = {n: len(idx) for n, idx in at_node.items()}
-    for i, (a, b) in enumerate(line_nodes):
-        da, db = degree_of.get(a, 0), degree_of.get(b, 0)
-        if length[i] <= BARB_MAX_MM and da == 1 and db == 1 and a not in marker_nodes \
-                and b not in marker_nodes:
-            decoration |= {a, b}           # hatching of a support, a loose short stroke
-        for end, other, deg in ((a, b, da), (b, a, db)):
-            if deg == 1 and end not in marker_nodes and _overshoot(nodes, end, other, at_node,
-                                                                   snap):
-                decoration.add(end)
-    ends = np.asarray(line_nodes, dtype=np.int64).reshape(-1, 2)
-    component = [int(x) for x in _components(m, ends[:, 0], ends[:, 1])]
-    degree = [len(at_node.get(i, ())) for i in range(m)]
-    return _Graph(nodes, line_nodes, marker_nodes, decoration, component, degree)
-
-
-def _overshoot(nodes: np.ndarray, end: int, other: int, at_node: dict[int, list[int]],
-               snap: float, reach: float = 15.0) -> bool:
-    """True if the line from ``other`` to the loose ``end`` passes through a point where other
-    lines meet, within ``reach`` mm of the end: a construction line drawn on past its point."""
-    e, o = nodes[end], nodes[other]
-    d = o - e
-    length = float(np.hypot(*d))
-    if length < 1e-9:
-        return False
-    u = d / length
-    rel = nodes - e
-    along = rel @ u
-    across = np.abs(rel[:, 0] * u[1] - rel[:, 1] * u[0])
-    hits = np.nonzero((along > snap) & (along < min(reach, length - snap)) & (across <= snap))[0]
-    return any(len(at_node.get(int(k), ())) >= 2 for k in hits)
-
-
-def _crossings(lines: list[DrawnLine], near: Point, radius: float) -> list[Point]:
-    """Crossings of drawn lines (within their extents) closer than ``radius`` to ``near``."""
-    cand = []
-    x, y = near
-    for ln in lines:
-        (x1, y1), (x2, y2) = ln.start, ln.end
-        if (min(x1, x2) - radius <= x <= max(x1, x2) + radius
-                and min(y1, y2) - radius <= y <= max(y1, y2) + radius):
-            cand.append(ln)
-    out = []
-    for i, a in enumerate(cand):
-        for b in cand[i + 1:]:
-            p = _intersect(a, b)
-            if p is not None and math.hypot(p[0] - x, p[1] - y) <= radius:
-                out.append(p)
-    return out
-
-
-def _intersect(a: DrawnLine, b: DrawnLine) -> Point | None:
-    (x1, y1), (x2, y2) = a.start, a.end
-    (x3, y3), (x4, y4) = b.start, b.end
-    d = (x2 - x1) * (y4 - y3) - (y2 - y1) * (x4 - x3)
-    la, lb = a.length, b.length
-    if abs(d) < 1e-9 * la * lb or abs(d) < math.sin(math.radians(5.0)) * la * lb:
-        return None        # nearly parallel lines do not define a point
-    t = ((x3 - x1) * (y4 - y3) - (y3 - y1) * (x4 - x3)) / d
-    u = ((x3 - x1) * (y2 - y1) - (y3 - y1) * (x2 - x1)) / d
-    eps = 1e-6
-    if -eps <= t <= 1 + eps and -eps <= u <= 1 + eps:
-        return (x1 + t * (x2 - x1), y1 + t * (y2 - y1))
-    return None
-
-
 # -- labels ----------------------------------------------------------------------------------
 @dataclass
 class _Label:
@@ -254,7 +127,7 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     """Find the labelled points of a sheet and group them into plans."""
     notes: list[Note] = []
     mu_given = mu_given or {}
-    graph = _graph(sub.lines, sub.markers, snap)
+    graph = drawn_graph(sub.lines, sub.markers, snap)
     # scale-factor texts and other "name = value" texts
     scale_entries: list[tuple[Plan, Entry]] = []
     other: list[Entry] = []
@@ -301,8 +174,7 @@ def _no_labels(sub: Submission, book: LabelBook) -> Exception:
     known = sorted({lbl for steps in book.plans.values() for lbl in steps.values()})
     sample = ", ".join(known[:14]) + (" …" if len(known) > 14 else "")
     texts = [t.text for t in sub.texts][:6]
-    found = (f"; the texts found ({', '.join(repr(t) for t in texts)}) are not point labels"
-             if texts else "")
+    found = T("error.texts_not_labels", texts=", ".join(repr(t) for t in texts)) if texts else ""
     return CheckError(T("error.no_labels", n=len(sub.lines), found=found, sample=sample),
                       file=sub.path)
 
@@ -315,7 +187,7 @@ def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
     return CheckError(T("error.labels_far", tol=tol, worst=worst), file=sub.path)
 
 
-def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: float,
+def _attach(labels: list[_Label], graph: Graph, lines: list[DrawnLine], tol: float,
             notes: list[Note]) -> None:
     """Give each label a point: line ends nearest to its text box, one label per point where
     possible (a minimum-cost assignment), arrowhead corners only when nothing else is near."""
@@ -365,10 +237,11 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
     for lb in labels:
         if lb.at is not None:
             continue
-        crossings = _crossings(lines, lb.text.centre, tol + max(lb.text.half))
-        crossings = [p for p in crossings if lb.text.distance(p) <= tol]
-        if crossings:
-            p = min(crossings, key=lb.text.distance)
+        near = crossings(np.asarray([(ln.start, ln.end) for ln in lines]).reshape(-1, 2, 2),
+                         lb.text.centre, tol + max(lb.text.half))
+        found = [(float(x), float(y)) for x, y in near if lb.text.distance((x, y)) <= tol]
+        if found:
+            p = min(found, key=lb.text.distance)
             lb.at, lb.how, lb.distance = p, T("how.crossing"), lb.text.distance(p)
             continue
         notes.append(Note("warning", T("note.label_far", written=lb.written, d=lb.distance,
@@ -383,7 +256,7 @@ def _layer_plan(layer: str) -> Plan | None:
     return None
 
 
-def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook,
+def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
            scale_entries: list[tuple[Plan, Entry]], notes: list[Note]) -> list[DrawnPlan]:
     comp_of = lambda lb: graph.component[lb.node] if lb.node >= 0 else _nearest_component(
         lb.at, graph)
@@ -474,7 +347,7 @@ def _gap(a: list[_Label], b: list[_Label]) -> float:
     return math.hypot(dx, dy)
 
 
-def _nearest_component(at: Point | None, graph: _Graph, among: set[int] | None = None) -> int:
+def _nearest_component(at: Point | None, graph: Graph, among: set[int] | None = None) -> int:
     if at is None or not len(graph.nodes):
         return -1
     d = np.hypot(*(graph.nodes - np.asarray(at)).T)
@@ -485,7 +358,7 @@ def _nearest_component(at: Point | None, graph: _Graph, among: set[int] | None =
     return graph.component[int(np.argmin(d))]
 
 
-def _hint_of(comp: int, members: list[_Label], graph: _Graph, lines: list[DrawnLine],
+def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLine],
              scale_entries: list[tuple[Plan, Entry]], labelled: set[int]) -> set[Plan]:
     hints: set[Plan] = set()
     layers = [_layer_plan(ln.layer) for ln in lines] + [_layer_plan(lb.text.layer)
@@ -567,7 +440,7 @@ def _xy(p: Point | None) -> str:
     return "(?)" if p is None else T("xy", x=p[0], y=p[1])
 
 
-def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
+def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
           notes: list[Note]) -> None:
     pole = book.poles.get(dp.key)
     if pole is None or pole in dp.points or len(dp.points) < 2:
@@ -598,7 +471,7 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
 
 
 def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],
-              graph: _Graph, notes: list[Note]) -> None:
+              graph: Graph, notes: list[Note]) -> None:
     from ..errors import SceneError
     from ..units import parse_quantity
     from .labels import MU_DIMENSION
