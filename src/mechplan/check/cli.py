@@ -97,7 +97,7 @@ def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
     """Scale factors given on the command line."""
     from ..units import parse_quantity
     from .labels import MU_DIMENSION
-    from .points import units_ascii
+    from .notation import units_ascii
 
     out: dict[Plan, float] = {}
     for key, plan in (("l", Plan.POSITION), ("v", Plan.VELOCITY), ("a", Plan.ACCELERATION),

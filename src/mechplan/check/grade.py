@@ -128,7 +128,7 @@ def _score(r: CheckReport) -> tuple[float, float]:
 def _angles(scene: Scene, sub: Submission, options: Options,
             notes: list[Note]) -> tuple[list[float], str]:
     from ..units import parse_quantity
-    from .points import units_ascii
+    from .notation import units_ascii
 
     if options.at_deg is not None:
         return [float(options.at_deg)], T("phi.at")

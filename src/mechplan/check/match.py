@@ -24,7 +24,8 @@ from .labels import (
     mu_plan,
     plan_key,
 )
-from .points import LAYER_HINTS, units_ascii
+from .notation import units_ascii
+from .points import LAYER_HINTS
 from .submission import Entry, Note
 from .texts import T, has, join, plan_title
 

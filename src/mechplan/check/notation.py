@@ -220,3 +220,10 @@ def decode_legacy(text: str, font: str = "") -> tuple[str, str | None]:
         return text, None
     decoded = "".join(table.get(ch, ch) for ch in text)
     return (decoded, "tcvn3") if decoded != text else (text, None)
+
+
+def units_ascii(text: str) -> str:
+    """Units as the unit parser reads them: "м/с/мм" → "m/s/mm", "(m/s²)/mm", "кН" → "kN"."""
+    for written, read_as in catalogue()["units"].items():
+        text = text.replace(written, read_as)
+    return text

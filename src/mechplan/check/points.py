@@ -28,6 +28,7 @@ from .labels import (
     label_key,
     mu_plan,
 )
+from .notation import units_ascii
 from .sketch import Graph, drawn_graph
 from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .texts import T, Text, join, plan_title, with_case
@@ -487,7 +488,7 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
     for e in mine:
         text = e.text or e.value or e.length or ""
         try:
-            dp.mu = parse_quantity(_units_ascii(text), MU_DIMENSION[plan])
+            dp.mu = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
         except SceneError as exc:
             notes.append(Note("warning", T("note.mu_unusable", name=e.name, text=text,
                                            detail=exc.detail), e.where))
@@ -499,20 +500,3 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
             continue
         dp.mu_source = T("mu.text", name=e.name, text=text, where=e.where)
         return
-
-
-_CYRILLIC_UNITS = (("мм", "mm"), ("м", "m"), ("с", "s"), ("кН", "kN"), ("Н", "N"), ("рад", "rad"),
-                   ("кг", "kg"), ("об/мин", "rpm"), ("град", "deg"))
-
-
-def _units_ascii(text: str) -> str:
-    """Units as pint reads them: Cyrillic unit names, "м/с/мм", "(m/s^2)/mm" → Latin."""
-    out = text.replace("µ", "μ")
-    for cyr, lat in _CYRILLIC_UNITS:
-        out = out.replace(cyr, lat)
-    out = out.replace("−", "-").replace("⋅", "*").replace("×", "*")
-    out = out.replace("⁻¹", "^-1").replace("⁻²", "^-2").replace("³", "^3")
-    return out
-
-
-units_ascii = _units_ascii
