@@ -238,9 +238,9 @@ def _attach(labels: list[_Label], graph: Graph, lines: list[DrawnLine], tol: flo
     for lb in labels:
         if lb.at is not None:
             continue
-        near = crossings(np.asarray([(ln.start, ln.end) for ln in lines]).reshape(-1, 2, 2),
+        meets = crossings(np.asarray([(ln.start, ln.end) for ln in lines]).reshape(-1, 2, 2),
                          lb.text.centre, tol + max(lb.text.half))
-        found = [(float(x), float(y)) for x, y in near if lb.text.distance((x, y)) <= tol]
+        found = [(float(x), float(y)) for x, y in meets if lb.text.distance((x, y)) <= tol]
         if found:
             p = min(found, key=lb.text.distance)
             lb.at, lb.how, lb.distance = p, T("how.crossing"), lb.text.distance(p)

@@ -323,11 +323,12 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return own, T("own.omega", seg=relseg.name,  # type: ignore[union-attr]
                           len=ts.length_mm, mu=m, l=l, own=own, unit=unit), max(
                 0.01 * abs(gv.value), gv.half_unit)
-        rel = _written(ctx, lambda w: relseg is not None and w.quantity.segment is relseg)
-        if rel is not None and l:
-            own = abs(rel.value) / l
-            return own, T("own.ratio", a=rel.written, text=rel.text, l=l, own=own, unit=unit), \
-                max(0.005 * abs(gv.value), gv.half_unit, rel.half_unit / l)
+        written_rel = _written(ctx, lambda w: relseg is not None and w.quantity.segment is relseg)
+        if written_rel is not None and l:
+            own = abs(written_rel.value) / l
+            return own, T("own.ratio", a=written_rel.written, text=written_rel.text, l=l, own=own,
+                          unit=unit), \
+                max(0.005 * abs(gv.value), gv.half_unit, written_rel.half_unit / l)
     link = _inertia_link(q)
     spec = ctx.scene.masses.get(link) if link else None
     if spec is not None and spec.mass > 0:

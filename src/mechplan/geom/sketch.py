@@ -62,4 +62,4 @@ def crossings(segments: NDArray[np.float64], near: tuple[float, float],
     ok &= (t >= -eps) & (t <= 1 + eps) & (v >= -eps) & (v <= 1 + eps)
     pts = p + t[:, None] * r
     ok &= np.hypot(pts[:, 0] - x, pts[:, 1] - y) <= radius
-    return pts[ok]
+    return np.asarray(pts[ok], dtype=np.float64)
