@@ -190,3 +190,29 @@ def test_english_csv_and_names_not_understood(tmp_path: Path, engine) -> None:
     # never graded as another quantity
     notes = " | ".join(n.message for n in report.notes)
     assert "'a_Z9' is not understood" in notes and "closest: a_" in notes
+
+
+def test_fair_tolerances_on_short_segments(tmp_path: Path, engine) -> None:
+    """A 0.3 mm error on a 3.5 mm segment (9 %) is a good drawing, and so are the values that
+    follow from it; an error is carried only from an upstream item that is itself wrong."""
+    scene, x = engine
+    bc = x["mm_bc"] * MU_V              # bc at μv = 1 (m/s)/mm: about 3.5 mm long
+    pc, pd = x["mm_pc"] * MU_V, x["mm_pd"] * MU_V
+    text = f'''at = "60 deg"
+[velocity]
+mu_v = "1 m/s/mm"
+bc = {bc + 0.3:.2f}
+pc = {pc + 0.8:.2f}
+pd = {pd + 1.6:.2f}
+[values]
+v_CB = "{bc + 0.3:.2f} m/s"
+"ω2" = "{(bc + 0.3) / L_BC:.2f} rad/s"
+'''
+    path = tmp_path / "short.toml"
+    path.write_text(text, encoding="utf-8")
+    report = check(scene, path, Options(at_deg=60))
+    rows = _rows(report)
+    assert 0.05 < 0.3 / bc < 0.1                      # the short segment is 5–10 % off ...
+    assert rows["bc"] == (OK, "") and rows["v_CB"] == (OK, "") and rows["ω2"] == (OK, "")
+    assert rows["pc"] == (OK, "")                     # 0.8 mm: within ±1 mm
+    assert rows["pd"] == (WRONG, NEW)                 # not carried from a right pc

@@ -193,10 +193,6 @@ class LabelBook:
         out.sort(key=lambda cnd: -cnd.weight)
         return out
 
-    def is_label(self, text: str) -> bool:
-        """True if the text reads as some point of some plan."""
-        return bool(self.candidates(text))
-
     def label_of(self, key: PlanKey, sid: str) -> str:
         """The construction's label of a step."""
         return self.plans[key][sid]
@@ -205,11 +201,6 @@ class LabelBook:
 def plan_key(plan: Plan, group: str = "") -> PlanKey:
     """The key of a plan drawn on its own (force polygons per group)."""
     return (plan, group if plan is Plan.FORCE else "")
-
-
-def plan_name(key: PlanKey) -> str:
-    """"velocity", "force II(2,3)"."""
-    return f"{key[0].value} {key[1]}".strip()
 
 
 def feature_votes(text: str) -> dict[Plan, int]:

@@ -171,12 +171,10 @@ class SegmentIndex:
     def __init__(self, c: Construction, book: LabelBook) -> None:
         self.by_key: dict[str, list[tuple[Segment, PlanKey, bool, int]]] = {}
         self.exact_case: dict[str, Segment] = {}
-        self._keys: dict[int, PlanKey] = {}
         for seg in c.segments:
             key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
             if key not in book.aliases:
                 key = plan_key(seg.plan, c[seg.end].group)
-            self._keys[id(seg)] = key
             table = book.aliases.get(key, {})
             starts = [(a, cand.weight) for a, cs in table.items() for cand in cs
                       if cand.step == seg.start]
@@ -188,10 +186,6 @@ class SegmentIndex:
                 for b, wb in ends:
                     self._put(a + b, seg, key, False, min(wa, wb))
                     self._put(b + a, seg, key, True, min(wa, wb) - 1)
-
-    def key_of(self, seg: Segment) -> PlanKey:
-        """The plan a segment is drawn on."""
-        return self._keys[id(seg)]
 
     def names(self) -> list[str]:
         """The construction's segment names, for messages."""
