@@ -1,4 +1,4 @@
-"""geom.sketch: clusters of line ends, joined drawings, crossings (closed forms by hand)."""
+"""geom.sketch (clusters, components, crossings) and legacy Vietnamese text, by hand-made cases."""
 
 from __future__ import annotations
 
@@ -26,3 +26,17 @@ def test_crossings() -> None:
     assert got.shape == (1, 2) and got[0] == pytest.approx([5.0, 5.0])
     # nearly parallel lines (< 5°) do not define a point
     assert len(crossings(np.array([[[0, 0], [10, 0]], [[0, -0.2], [10, 0.2]]]), (5, 0), 1)) == 0
+
+
+@pytest.mark.parametrize("text, font, expected", [
+    ("H\xe4a \xae\xe5 v\xcbn t\xe8c", "", ("Họa đồ vận tốc", "tcvn3")),
+    ("gia t\xe8c", ".VnTime.ttf", ("gia tốc", "tcvn3")),          # the font decides
+    ("accélération", "", ("accélération", None)),                  # French stays French
+    ("μv = 0,01 m/s/mm; N·m; 5 µm", "", ("μv = 0,01 m/s/mm; N·m; 5 µm", None)),
+    ("Họa đồ vận tốc", "", ("Họa đồ vận tốc", None)),              # already Unicode
+    ("Hoïa ñoà vaän toác", "VNI-Times", ("Hoïa ñoà vaän toác", "vni")),
+])
+def test_legacy_vietnamese(text: str, font: str, expected: tuple[str, str | None]) -> None:
+    from mechplan.check.notation import decode_legacy
+
+    assert decode_legacy(text, font) == expected

@@ -206,8 +206,8 @@ def decode_legacy(text: str, font: str = "") -> tuple[str, str | None]:
 
     Return the text and the encoding found: ``"tcvn3"`` (decoded), ``"vni"`` (recognised, not
     decoded) or None (the text is left as it is). The style's font decides when it is known
-    (".VnTime" → TCVN3, "VNI-Times" → VNI); otherwise two or more TCVN3-only characters in a text
-    without Unicode Vietnamese letters do.
+    (".VnTime" → TCVN3, "VNI-Times" → VNI); otherwise two or more TCVN3 characters, one of them a
+    Latin-1 symbol (®, «, ¬ …), in a text without Unicode Vietnamese letters do.
     """
     data = catalogue()
     low = font.lower()
@@ -216,7 +216,11 @@ def decode_legacy(text: str, font: str = "") -> tuple[str, str | None]:
         return text, "vni"
     by_font = any(low.startswith(f) or f"/{f}" in low for f in data["tcvn3"]["fonts"])
     strong = sum(1 for ch in text if ch in table and ch not in weak)
-    if not by_font and (strong < 2 or _VIETNAMESE.search(text)):
+    # TCVN3 text shows Latin-1 symbols (® for đ, « for ô, ¬ for ơ …), not only accented letters:
+    # French or German text ("accélération") is never taken for it
+    symbols = any(ch in table and ch not in weak and not unicodedata.category(ch).startswith("L")
+                  for ch in text)
+    if not by_font and (strong < 2 or not symbols or _VIETNAMESE.search(text)):
         return text, None
     decoded = "".join(table.get(ch, ch) for ch in text)
     return (decoded, "tcvn3") if decoded != text else (text, None)
