@@ -2,8 +2,9 @@
 block attributes, DIMENSION entities, any layers, R12 and R2018, a TCVN3 label; a class at once.
 
 The four-bar's velocity plan at φ = 60° is written with plain ezdxf entities (not our renderer)
-with planted mistakes: point c moved 3, −4 mm (a new error: pc and bc wrong) and a value written
-as the exact one although the student's own pc × μv says otherwise (a slip).
+with planted mistakes: point c moved 3, −4 mm (a new error: pc and bc wrong), e built right from
+that wrong c (carried: pe wrong) and a value written as the exact one although the student's own
+pc × μv says otherwise (a slip).
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import pytest
 
 from mechplan.check import Options, check, read_submission
 from mechplan.check.klass import check_class, variant_of
-from mechplan.check.report import NEW, OK, REFERENCE, SLIP, WRONG
+from mechplan.check.report import CARRIED, NEW, OK, REFERENCE, SLIP, WRONG
 from mechplan.construct.step import Plan
 from mechplan.errors import CheckError
 
@@ -33,15 +34,22 @@ def four_bar():
     return solved("four_bar", 60)
 
 
-def _student(sol):
+def _student(sol, carry: bool = False):
     st = exact_sheet(sol, SPEC)
     move(st, V, "c", (3.0, -4.0))
+    if carry:
+        # e built right from the student's own wrong c: bce similar to BCE (complex ratio)
+        c, ev = sol.construction, sol.ev
+        B, C, E = (complex(*ev[c.position(n)][0]) for n in "BCE")
+        b, cc = (complex(*st.points[(V, n)]) for n in "bc")
+        e = b + (cc - b) * (E - B) / (C - B)
+        st.points[(V, "e")] = np.array([e.real, e.imag])
     return st
 
 
 def _write(path: Path, sol, version: str) -> tuple[Path, float]:
-    """The student's velocity plan as AutoCAD writes it; returns the path and the exact v_C."""
-    st = _student(sol)
+    """The student's velocity plan as AutoCAD writes it; returns the path and the drawn pc."""
+    st = _student(sol, carry=True)
     doc = ezdxf.new(version)
     doc.header["$INSUNITS"] = 4
     doc.layers.add("Vantoc")                 # any layer name
@@ -101,7 +109,8 @@ def test_autocad_sheet_with_planted_mistakes(tmp_path: Path, four_bar, version: 
     rows = {s.name: (s.verdict, s.cause) for p in report.plans for s in p.segments}
     rows |= {v.name: (v.verdict, v.cause) for v in report.values}
     v_c = "v_C" if version == "R12" else "vC"          # the MTEXT's stacked C reads "vC"
-    planted = {"pc": (WRONG, NEW), "bc": (WRONG, NEW), v_c: (SLIP, NEW)}
+    planted = {"pc": (WRONG, NEW), "bc": (WRONG, NEW), "pe": (WRONG, CARRIED),
+               v_c: (SLIP, NEW)}
     for name, got in rows.items():
         if name in planted:
             assert got == planted[name], (name, got, report.text())
@@ -109,6 +118,8 @@ def test_autocad_sheet_with_planted_mistakes(tmp_path: Path, four_bar, version: 
             assert got[0] in (OK, REFERENCE), (name, got, report.text())
     assert set(planted) <= set(rows)
     assert [f.subject for f in report.findings if f.kind == "wrong point"] == ["c"]
+    points = {p.label: (p.verdict, p.cause) for pl in report.plans for p in pl.points}
+    assert points == {"p": (OK, ""), "b": (OK, ""), "c": (WRONG, NEW), "e": (WRONG, CARRIED)}
     assert any("TCVN3" in n.message for n in report.notes)
 
 
