@@ -81,8 +81,11 @@ def test_outputs_and_overlays(sheets, tmp_path: Path, capsys) -> None:
     # SVG: three groups of lines, the wrong segments marked with their error
     root = ET.parse(outs["svg"]).getroot()
     ns = {"s": "http://www.w3.org/2000/svg"}
-    groups = {g.get("id"): g for g in root.iter("{http://www.w3.org/2000/svg}g")}
-    assert {"submission", "exact", "errors", "notes"} <= set(groups)
+    # the overlay is a Sheet drawn by the render backend: one group per role
+    groups = {g.get("class", "").removeprefix("role-"): g
+              for g in root.iter("{http://www.w3.org/2000/svg}g")}
+    assert {"submission", "exact", "errors", "text"} <= set(groups)
+    assert groups["errors"].get("stroke") == "#d62020"
     assert len(groups["submission"].findall("s:line", ns)) == 11
     assert len(groups["exact"].findall("s:line", ns)) == 11
     assert len(groups["errors"].findall("s:line", ns)) == 2

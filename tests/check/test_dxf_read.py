@@ -10,6 +10,7 @@ from mechplan.check import Options, check, read_submission
 from mechplan.check.report import OK, REFERENCE
 from mechplan.construct.step import Plan
 from mechplan.errors import CheckError
+from mechplan.sheet.fonts import text_width_mm
 
 from .sheets import PlanSpec, exact_sheet, solved, write_dxf
 
@@ -42,8 +43,10 @@ def test_texts_are_read_with_their_boxes(tmp_path) -> None:
     sub = read_submission(path)
     texts = {t.text: t for t in sub.texts}
     assert set(texts) == {"b", "c′", "nCB"}
-    # rotated 90°: the box extends up from the insertion point
-    assert texts["b"].centre == pytest.approx((10 - 1.0, 10 + 0.6), abs=1e-6)
+    # rotated 90°: the box extends up from the insertion point, as wide as the sheet font's "b"
+    half = text_width_mm("b", 2.0) / 2
+    assert 0.3 < half < 1.0
+    assert texts["b"].centre == pytest.approx((10 - 1.0, 10 + half), abs=1e-6)
     assert texts["c′"].centre == pytest.approx((20, 20), abs=1e-6)
     assert texts["nCB"].centre == pytest.approx((30, 30), abs=1e-6)
     assert texts["b"].distance((10 - 0.5, 10 + 0.5)) == 0.0

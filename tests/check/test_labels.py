@@ -4,17 +4,20 @@ from __future__ import annotations
 
 import pytest
 
+from mechplan.check import notation
 from mechplan.check.labels import (
     LabelBook,
     clean_text,
     is_angle_name,
     label_key,
     mu_plan,
-    quantity_key,
 )
 from mechplan.construct.step import Plan
+from mechplan.scene import load_scene
 
-from .sheets import solved
+from .sheets import TEMPLATES, solved
+
+V_ENGINE = TEMPLATES / "v_engine.toml"
 
 
 @pytest.mark.parametrize("written, key", [
@@ -44,7 +47,10 @@ def test_clean_text(raw: str, mtext: bool, plain: str) -> None:
     ("J_red", "jred"), ("J_пр", "jred"), ("M_ур", "mb"), ("ω₂", "omega2"),
 ])
 def test_quantity_key(name: str, key: str) -> None:
-    assert quantity_key(name) == key
+    # quantity names are read through the notation catalogue (check/notation.toml)
+    mech = load_scene(V_ENGINE).mechanism
+    reading = notation.read(name, mech)
+    assert reading is not None and notation.key(reading.canonical) == key
 
 
 @pytest.mark.parametrize("name, plan", [

@@ -15,8 +15,9 @@ from mechplan.check import Options, check
 from mechplan.check.cli import add_parser
 from mechplan.check.overlay import marks
 from mechplan.check.report import CARRIED, NEW, SLIP, WRONG
-from mechplan.check.texts import LANGUAGES, MESSAGES, T, num, tr
+from mechplan.check.texts import LANGUAGES, T, num, tr
 from mechplan.construct.step import Plan
+from mechplan.i18n import catalogue
 
 from .sheets import TEMPLATES, PlanSpec, exact_sheet, move, solved, write_dxf
 
@@ -225,12 +226,15 @@ def test_drawn_sheet_hints_and_overlay(tmp_path: Path, lang: str) -> None:
 
 def test_catalogue_is_complete() -> None:
     fields = string.Formatter()
-    for key, entry in MESSAGES.items():
-        assert set(entry) == set(LANGUAGES), key
-        names = {lang: {f for _, f, _, _ in fields.parse(t) if f} for lang, t in entry.items()}
-        assert all(n == names["en"] for n in names.values()), (key, names)
+    ids = {lang: {k: t for k, t in catalogue(lang).items() if k.startswith("check.")}
+           for lang in LANGUAGES}
+    assert len(ids["en"]) > 200
+    for key, text in ids["en"].items():
+        names = {f for _, f, _, _ in fields.parse(text) if f}
         for lang in LANGUAGES:
-            assert entry[lang].strip(), (key, lang)
+            assert key in ids[lang], (key, lang)
+            assert {f for _, f, _, _ in fields.parse(ids[lang][key]) if f} == names, (key, lang)
+            assert ids[lang][key].strip(), (key, lang)
 
 
 def test_numbers_and_texts() -> None:

@@ -151,7 +151,7 @@ Q_9 = "1 N"
     assert v == {"R12": OK, "R_{03}": WRONG, "M_b": OK, "J_red": OK}
     errors = _notes(report, "error")
     assert "'5 N' is not a moment" in errors
-    assert "unknown quantity or segment 'Q_9'" in errors
+    assert "'Q_9' is not understood" in errors and "closest: Q_3, Q_2" in errors
 
 
 def test_units_that_do_not_fit_and_unknown_names(tmp_path: Path, four_bar) -> None:
@@ -163,7 +163,7 @@ def test_units_that_do_not_fit_and_unknown_names(tmp_path: Path, four_bar) -> No
     errors = _notes(report, "error")
     assert "'0.8 rad/s' is not a velocity" in errors
     assert "'1.35 m/s' is not an angular velocity" in errors
-    assert "unknown quantity or segment 'v_Z'" in errors
+    assert "'v_Z' is not understood" in errors and "closest: v_" in errors
     assert "'v_C = 55 mm' is a length on the paper" in errors
     assert [r.name for r in report.values] == []
     assert [s.name for p in report.plans for s in p.segments] == ["pc"]

@@ -12,7 +12,7 @@ from typing import Any
 from ..construct.step import Plan
 from ..errors import CheckError, SceneError
 from .report import Tolerance
-from .texts import LANGUAGES, T
+from .texts import LANGUAGES, T, Text
 
 PLAN_NAMES = {"position": Plan.POSITION, "velocity": Plan.VELOCITY,
               "acceleration": Plan.ACCELERATION, "force": Plan.FORCE, "l": Plan.POSITION,
@@ -28,7 +28,9 @@ def add_parser(subparsers: Any) -> None:
         "and labels of the plans, or a TOML/CSV table of measured lengths and values. Exit "
         "code 0: everything checked is right; 1: something is wrong; 2: unusable input.")
     p.add_argument("scene", help="the scene (TOML) the submission solves")
-    p.add_argument("submission", help="a .dxf drawing, or a .toml / .csv table")
+    p.add_argument("submission", help="a .dxf drawing, or a .toml / .csv table; or a folder of "
+                   "them (a class: then SCENE may be a folder of variants, a submission is "
+                   "matched to the variant named in its file name, -o is the output folder)")
     p.add_argument("--at", type=float, metavar="DEG",
                    help="crank angle φ of the submission in degrees (default: written on the "
                    "submission, the scene's only position, or the best fit of its positions)")
@@ -50,6 +52,8 @@ def add_parser(subparsers: Any) -> None:
                    help="write the report: .json, .txt, or an overlay sheet .svg / .dxf / .pdf "
                    "(may be repeated)")
     p.add_argument("--json", action="store_true", help="print the report as JSON")
+    p.add_argument("--jobs", type=int, default=1, metavar="N",
+                   help="a class: check N submissions at once (joblib; -1: every core)")
     p.add_argument("--lang", choices=LANGUAGES, default=None,
                    help="language of the report, its hints and the overlay's notes: en, ru, vi "
                    "or zh (default: the scene's language); ru and vi write a decimal comma")
@@ -66,20 +70,17 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
         if m:
             name = m.group(1).lower()
             if name not in PLAN_NAMES:
-                raise CheckError(f"--tolerance {spec!r}: unknown plan {m.group(1)!r}; plans are "
-                                 "position, velocity, acceleration, force")
+                raise CheckError(T("error.tolerance_plan", spec=spec, plan=m.group(1)))
             plan, body = PLAN_NAMES[name], m.group(2)
         base = out.get(plan) or out.get(None) or Tolerance()
         mm, pct, deg = base.mm, base.pct, base.deg
         parts = [x for x in re.split(r"[,\s;]+", body.strip()) if x]
         if not parts:
-            raise CheckError(f"--tolerance {spec!r}: expected '1mm', '2%', '1.5deg' or a list "
-                             "of them")
+            raise CheckError(T("error.tolerance_empty", spec=spec))
         for part in parts:
             pm = re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(mm|%|deg|°)", part.lower())
             if not pm:
-                raise CheckError(f"--tolerance {spec!r}: cannot read {part!r}; write it like "
-                                 "'1mm', '2%' or '1.5deg'")
+                raise CheckError(T("error.tolerance_part", spec=spec, part=part))
             value = float(pm.group(1).replace(",", "."))
             unit = pm.group(2)
             if unit == "mm":
@@ -96,7 +97,7 @@ def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
     """Scale factors given on the command line."""
     from ..units import parse_quantity
     from .labels import MU_DIMENSION
-    from .points import units_ascii
+    from .notation import units_ascii
 
     out: dict[Plan, float] = {}
     for key, plan in (("l", Plan.POSITION), ("v", Plan.VELOCITY), ("a", Plan.ACCELERATION),
@@ -107,36 +108,50 @@ def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
         try:
             value = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
         except SceneError as exc:
-            raise CheckError(f"--mu-{key.upper() if key == 'f' else key} {text!r}: "
-                             f"{exc.detail}") from None
+            raise CheckError(T("error.mu_option", option=f"--mu-{key.upper() if key == 'f' else key}",
+                               text=text, detail=exc.detail)) from None
         if not value > 0:
-            raise CheckError(f"--mu-{key} must be positive (got {text!r})")
+            raise CheckError(T("error.positive", option=f"--mu-{key}", value=text))
         out[plan] = value
     return out
 
 
 def run(args: argparse.Namespace) -> int:
-    """Run a check; print the report; write the requested files. 0 passed, 1 errors found."""
+    """Run a check; print the report; write the requested files. 0 passed, 1 errors found.
+
+    A :class:`CheckError` is said in the report's language (``--lang`` or the scene's)."""
+    said = {"lang": args.lang or "en"}
+    try:
+        return _run(args, said)
+    except CheckError as exc:
+        if isinstance(exc.detail, Text) and said["lang"] != "en":
+            raise CheckError(exc.detail.tr(said["lang"]), file=exc.file, key=exc.key) from None
+        raise
+
+
+def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
     from .grade import Options, check
     from .overlay import write_overlay
 
     outputs = [Path(o) for o in args.output]
-    for o in outputs:
+    for o in outputs if not Path(args.submission).is_dir() else ():
         if o.suffix.lower() not in (".json", ".svg", ".dxf", ".pdf", *TEXT_SUFFIXES):
-            raise CheckError(f"-o {o}: the report is written as .json, .txt, or an overlay "
-                             ".svg / .dxf / .pdf")
+            raise CheckError(T("error.output_kind", path=str(o)))
     if args.label_distance is not None and not args.label_distance > 0:
-        raise CheckError(f"--label-distance must be positive (got {args.label_distance})")
+        raise CheckError(T("error.positive", option="--label-distance", value=args.label_distance))
     if not args.snap >= 0:
-        raise CheckError(f"--snap must not be negative (got {args.snap})")
+        raise CheckError(T("error.not_negative", option="--snap", value=args.snap))
     options = Options(at_deg=args.at, tolerance=parse_tolerances(args.tolerance),
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
+    if Path(args.submission).is_dir():
+        return _run_class(args, options)
     from ..scene import load_scene
 
     scene = load_scene(args.scene)
     lang = getattr(args, "lang", None) or scene.language or "en"
     if lang not in LANGUAGES:
         lang = "en"
+    said["lang"] = lang
     report = check(scene, args.submission, options)
     doc = report.to_json(lang)
     text = report.text(lang)
@@ -157,7 +172,26 @@ def run(args: argparse.Namespace) -> int:
     return 0 if report.passed else 1
 
 
-def _write(path: Path, data: bytes) -> None:
-    from .overlay import _write_atomic
+def _run_class(args: argparse.Namespace, options: Any) -> int:
+    """Check a folder of submissions; one report per student and summary.csv."""
+    from .klass import check_class
 
-    _write_atomic(path, data)
+    folder = Path(args.submission)
+    out = Path(args.output[0]) if args.output else folder / "checked"
+    lang = args.lang or "en"
+    rows = check_class(Path(args.scene), folder, out, options, lang, args.jobs)
+    for r in rows:
+        if r.get("error"):
+            print(T("class.unusable", student=r["student"], error=r["error"]).tr(lang))
+        else:
+            print(T("class.row", student=r["student"], scene=r["scene"],
+                    verdict=T("report.passed" if r["passed"] else "report.failed"),
+                    wrong=r["wrong"], slip=r["slip"]).tr(lang))
+    print(T("cli.wrote", path=str(out / "summary.csv")).tr(lang), file=sys.stderr)
+    return 0 if all(r.get("passed") for r in rows) else 1
+
+
+def _write(path: Path, data: bytes) -> None:
+    from .overlay import write_bytes
+
+    write_bytes(path, data)

@@ -11,21 +11,30 @@ A written value that differs from the student's own segment × μ is an arithmet
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from ..construct.graph import Construction, Evaluation
-from ..construct.ops import EVALUATORS, SOURCES
-from ..construct.segments import Segment
-from ..construct.step import Kind, Op, Plan
+from ..construct.step import Op, Plan
 from ..errors import CheckError, MechplanError
 from ..scene.spec import Scene
+from .context import (
+    Ctx,
+    Drawn,
+    Options,
+    Rederive,
+    exact_at,
+    labels_fn,
+    roots_of,
+    row_brief,
+    row_error,
+    segments_of,
+)
+from .drawn import classify_points, find_swaps, overrides_of, prepare
 from .hints import HintContext, depends_on, rule
-from .labels import LabelBook, PlanKey, is_angle_name, plan_key
-from .match import GivenValue, Interpretation, QuantityIndex, SegmentIndex, TableSegment, interpret
+from .labels import LabelBook, PlanKey, is_angle_name
+from .match import QuantityIndex, SegmentIndex, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
 from .report import (
     ACCUMULATED,
@@ -44,76 +53,10 @@ from .report import (
     PointRow,
     SegmentRow,
     Tolerance,
-    ValueRow,
 )
 from .submission import Note, Submission, read_submission
-from .texts import T, join, plan_title, plan_word, with_case
-
-SI_UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
-           "angular_acceleration": "rad/s²", "force": "N", "moment": "N·m", "inertia": "kg·m²",
-           "length": "m", "angle": "rad", "mass": "kg", "dimensionless": ""}
-PLAN_UNIT = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
-
-
-@dataclass
-class Options:
-    """How to check: crank angle, tolerances and scale factors per plan, label search."""
-
-    at_deg: float | None = None
-    tolerance: dict[Plan | None, Tolerance] = field(default_factory=dict)
-    mu: dict[Plan, float] = field(default_factory=dict)
-    label_distance: float | None = None
-    snap: float = 0.2
-
-    def tol(self, plan: Plan | None) -> Tolerance:
-        """The tolerance of a plan (or the default one)."""
-        return self.tolerance.get(plan) or self.tolerance.get(None) or Tolerance()
-
-
-# -- the student's own values: re-evaluating steps from submitted points -----------------------
-class Rederive:
-    """Values of steps computed from the submitted points instead of the exact ones."""
-
-    def __init__(self, c: Construction, ev: Evaluation, k: int,
-                 overrides: dict[str, np.ndarray]) -> None:
-        self.c, self.ev, self.k = c, ev, k
-        self.over = {s: np.asarray(v, dtype=float).reshape(1, 2) for s, v in overrides.items()}
-        self._anc: dict[str, set[str]] = {}
-
-    def exact(self, sid: str) -> np.ndarray:
-        """The exact value of a step (leading axis 1)."""
-        return np.asarray(self.ev[sid][self.k:self.k + 1])
-
-    def _touched(self, sid: str) -> bool:
-        anc = self._anc.get(sid)
-        if anc is None:
-            anc = set(self.c.ancestors([sid])) - {sid}
-            self._anc[sid] = anc
-        return bool(anc & self.over.keys())
-
-    def own(self, sid: str) -> np.ndarray:
-        """The value the step gets from the submitted points (never its own submitted value)."""
-        memo: dict[str, np.ndarray] = {}
-
-        def get(x: str, top: bool = False) -> np.ndarray:
-            if not top and x in self.over:
-                return self.over[x]
-            if x in memo:
-                return memo[x]
-            st = self.c[x]
-            if st.op is Op.CRANK_ANGLE or st.op in SOURCES or not self._touched(x):
-                v = self.exact(x)
-            else:
-                fn = EVALUATORS.get(st.op)
-                if fn is None:
-                    v = self.exact(x)
-                else:
-                    with np.errstate(all="ignore"):
-                        v = np.asarray(fn(st, *[get(i) for i in st.inputs])[0])
-            memo[x] = v
-            return v
-
-        return get(sid, top=True)
+from .texts import T, join, plan_title
+from .values import grade_table_segments, grade_values
 
 
 # -- public entry point -------------------------------------------------------------------------
@@ -143,13 +86,13 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
     notes.extend(interp.notes)
     if sheet is not None and not sheet.plans and not interp.values:
         why = "; ".join(str(n) for n in notes if n.level != "info")[:600]
-        raise CheckError("no plan could be found on the sheet: "
-                         + (why or "no labelled points next to its lines"), file=sub.path)
+        raise CheckError(T("error.no_plan", why=why or T("error.no_labelled_points")),
+                         file=sub.path)
     if sub.kind == "table" and not interp.segments and not interp.values:
         problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
-        raise CheckError("nothing in the table can be checked"
-                         + (f": {problems}" if problems else ""), file=sub.path)
-    ctx = _Ctx(scene, sub, sol.construction, ev, book, qi, sheet, interp, options)
+        raise CheckError(T("error.nothing_to_check", problems=f": {problems}" if problems else ""),
+                         file=sub.path)
+    ctx = Ctx(scene, sub, sol.construction, ev, book, qi, sheet, interp, options, sol.scales)
     reports = [_grade(ctx, k) for k in range(len(candidates))]
     if len(reports) == 1:
         best = 0
@@ -185,7 +128,7 @@ def _score(r: CheckReport) -> tuple[float, float]:
 def _angles(scene: Scene, sub: Submission, options: Options,
             notes: list[Note]) -> tuple[list[float], str]:
     from ..units import parse_quantity
-    from .points import units_ascii
+    from .notation import units_ascii
 
     if options.at_deg is not None:
         return [float(options.at_deg)], T("phi.at")
@@ -211,7 +154,8 @@ def _angles(scene: Scene, sub: Submission, options: Options,
 
 
 def _wants_force(sub: Submission) -> bool:
-    from .labels import dimension_of, mu_plan, quantity_key
+    from .labels import mu_plan
+    from .notation import dimension
     from .points import _layer_plan
 
     for e in sub.entries:
@@ -220,7 +164,7 @@ def _wants_force(sub: Submission) -> bool:
             if plan is Plan.FORCE:
                 return True
             continue
-        if dimension_of(quantity_key(e.name)) in ("force", "moment") or (
+        if dimension(e.name) in ("force", "moment") or (
                 e.section and "force" in e.section.lower()):
             return True
     return any(_layer_plan(t.layer) is Plan.FORCE for t in sub.texts) or any(
@@ -232,81 +176,31 @@ def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]
 
     plans = tuple(dict.fromkeys(("position", "velocity", "acceleration", *scene.plans)))
     if "force" in plans or _wants_force(sub):
-        try:
-            from ..dynamics import Loading
+        from ..dynamics import Loading
 
-            loading = Loading.from_scene(scene)
-            if not loading.is_empty:
-                sol = solve(scene, at_deg=at_deg, plans=tuple(dict.fromkeys((*plans, "force"))),
-                            loading=loading)
-                sol.extras["loading"] = loading
-                return sol
-            notes.append(Note("info", T("note.no_loads"), scene.path or ""))
-        except MechplanError:
-            raise
-        except Exception as exc:  # noqa: BLE001 - the force plan is optional for a check
-            notes.append(Note("warning", T("note.no_force_plan",
-                                           error=f"{exc.__class__.__name__}: {exc}"),
-                              scene.path or ""))
+        loading = Loading.from_scene(scene)
+        if not loading.is_empty:
+            sol = solve(scene, at_deg=at_deg, plans=tuple(dict.fromkeys((*plans, "force"))),
+                        loading=loading)
+            sol.extras["loading"] = loading
+            return sol
+        notes.append(Note("info", T("note.no_loads"), scene.path or ""))
     plans = tuple(p for p in plans if p != "force")
     return solve(scene, at_deg=at_deg, plans=plans)
 
 
-# -- grading at one crank position ------------------------------------------------------------
-@dataclass
-class _Ctx:
-    scene: Scene
-    sub: Submission
-    c: Construction
-    ev: Evaluation
-    book: LabelBook
-    qi: QuantityIndex
-    sheet: DrawnSheet | None
-    interp: Interpretation
-    options: Options
-
-
-@dataclass
-class _Drawn:
-    dp: DrawnPlan
-    mu: float | None
-    mu_source: str
-    anchor: str | None
-    si: dict[str, np.ndarray]          # step → submitted value (SI, exact frame)
-    reference: Segment | None = None
-    status: dict[str, str] = field(default_factory=dict)      # step → cause of a wrong point
-    errors: dict[str, float] = field(default_factory=dict)    # step → total error (mm)
-    own_err: dict[str, float] = field(default_factory=dict)
-    tol: dict[str, float] = field(default_factory=dict)
-    swapped: dict[str, str] = field(default_factory=dict)
-
-
-def _exact(ctx: _Ctx, sid: str, k: int) -> np.ndarray:
-    return np.asarray(ctx.ev[sid][k], dtype=float)
-
-
-def _segments_of(c: Construction, key: PlanKey) -> list[Segment]:
-    out = []
-    for s in c.segments:
-        group = c[s.start].group if s.plan is Plan.FORCE else ""
-        if plan_key(s.plan, group) == key or (s.plan is Plan.FORCE
-                                                and plan_key(s.plan, c[s.end].group) == key):
-            out.append(s)
-    return out
-
-
-def _grade(ctx: _Ctx, k: int) -> CheckReport:
+def _grade(ctx: Ctx, k: int) -> CheckReport:
     phi = math.degrees(float(ctx.ev.phi[k]))
     report = CheckReport(str(ctx.scene.path or ""), ctx.sub.path, ctx.sub.kind, round(phi, 10),
                          "")
-    drawn = [_prepare(ctx, dp, k, report.notes) for dp in (ctx.sheet.plans if ctx.sheet else [])]
-    first: dict[PlanKey, _Drawn] = {}
+    drawn = [prepare(ctx, dp, k, report.notes) for dp in (ctx.sheet.plans if ctx.sheet else [])]
+    first: dict[PlanKey, Drawn] = {}
     for d in drawn:
         first.setdefault(d.dp.key, d)
     # swapped labels first: the geometry is right, so later steps use the corrected points
     for d in drawn:
-        _find_swaps(ctx, d, k)
-    overrides = _overrides(list(first.values()))
+        find_swaps(ctx, d, k)
+    overrides = overrides_of(list(first.values()))
     mu_all = {d.dp.plan: d.mu for d in first.values() if d.mu}
     for plan, (mu, _) in ctx.interp.scales.items():
         mu_all.setdefault(plan, mu)
@@ -315,183 +209,34 @@ def _grade(ctx: _Ctx, k: int) -> CheckReport:
     reds = []
     for d in drawn:
         over = dict(overrides)
-        over.update(_overrides([d]))
+        over.update(overrides_of([d]))
         red = Rederive(ctx.c, ctx.ev, k, over)
         reds.append(red)
-        _classify_points(ctx, d, red)
+        classify_points(ctx, d, red)
     status: dict[str, str] = {}
     for d in reversed(drawn):           # the first drawing of a plan wins
         status.update(d.status)
     for d in drawn:
         for sid, cause in list(d.status.items()):
-            if cause == CARRIED and not _roots(ctx, status, sid):
+            if cause == CARRIED and not roots_of(ctx, status, sid):
                 d.status[sid] = ACCUMULATED
                 status[sid] = ACCUMULATED if status.get(sid) == CARRIED else status[sid]
     for d, red in zip(drawn, reds):
         report.plans.append(_grade_drawn(ctx, d, k, red, mu_all, report.findings, status))
     global_red = Rederive(ctx.c, ctx.ev, k, overrides)
-    table_reports = _grade_table_segments(ctx, k, mu_all, report)
+    table_reports = grade_table_segments(ctx, k, mu_all, report)
     report.plans.extend(table_reports)
-    _grade_values(ctx, k, drawn, first, global_red, mu_all, report)
+    grade_values(ctx, k, drawn, first, global_red, mu_all, report)
     return report
 
 
-def _anchor_of(ctx: _Ctx, dp: DrawnPlan) -> str | None:
-    """The point a drawn plan is placed by: its pole, else the drive pivot or the first point."""
-    c = ctx.c
-    pole = ctx.book.poles.get(dp.key)
-    if pole in dp.points:
-        return pole
-    if not dp.points:
-        return None
-    order = list(c.steps)
-    anchor = min(dp.points, key=order.index)
-    if dp.plan is Plan.POSITION:
-        segs = _segments_of(c, dp.key)
-        fixed = [s for s in dp.points if c[s].op is Op.FIXED_POINT]
-        pivot = segs[0].start if segs else None
-        anchor = pivot if pivot in dp.points else (fixed[0] if fixed else anchor)
-    return anchor
-
-
-def _turned(ctx: _Ctx, dp: DrawnPlan, k: int, anchor: str | None) -> float:
-    """±90 when a velocity plan is drawn turned by a right angle (Zhukovsky's lever), else 0."""
-    if dp.plan is not Plan.VELOCITY or anchor is None:
-        return 0.0
-    a_at = np.asarray(dp.points[anchor].at)
-    base = _exact(ctx, anchor, k)
-    diffs = []
-    for sid, p in dp.points.items():
-        v, e = np.asarray(p.at) - a_at, _exact(ctx, sid, k) - base
-        if sid != anchor and np.hypot(*v) > 1e-6 and np.hypot(*e) > 0:
-            diffs.append(math.degrees(math.remainder(
-                math.atan2(v[1], v[0]) - math.atan2(e[1], e[0]), 2 * math.pi)))
-    if len(diffs) < 2:
-        return 0.0
-    for turn in (90.0, -90.0):
-        if sum(abs(d - turn) < 3.0 for d in diffs) > len(diffs) / 2:
-            return turn
-    return 0.0
-
-
-def _turn_back(dp: DrawnPlan, anchor: str, turn: float) -> DrawnPlan:
-    from dataclasses import replace
-
-    a = math.radians(-turn)
-    ox, oy = dp.points[anchor].at
-
-    def q(p: tuple[float, float]) -> tuple[float, float]:
-        x, y = p[0] - ox, p[1] - oy
-        return (ox + x * math.cos(a) - y * math.sin(a), oy + x * math.sin(a) + y * math.cos(a))
-
-    out = DrawnPlan(dp.key, {s: replace(p, at=q(p.at)) for s, p in dp.points.items()},
-                    [replace(ln, start=q(ln.start), end=q(ln.end)) for ln in dp.lines],
-                    dp.number, dp.mu, dp.mu_source, dp.convention)
-    note = T("convention.turned", turn=turn, label=dp.points[anchor].label)
-    out.convention = T("pair", a=dp.convention, b=note) if dp.convention else note
-    return out
-
-
-def _prepare(ctx: _Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> _Drawn:
-    c = ctx.c
-    plan = dp.plan
-    anchor = _anchor_of(ctx, dp)
-    turn = _turned(ctx, dp, k, anchor)
-    if turn and anchor is not None:
-        dp = _turn_back(dp, anchor, turn)
-    mu, source = dp.mu, dp.mu_source
-    if mu is None and plan in ctx.interp.scales:
-        mu, source = ctx.interp.scales[plan]
-    segs = _segments_of(c, dp.key)
-    reference = next((s for s in segs if s.start in dp.points and s.end in dp.points), None)
-    if mu is None:
-        if reference is not None:
-            exact = float(np.hypot(*(_exact(ctx, reference.end, k) - _exact(ctx, reference.start, k))))
-            drawn = math.dist(dp.points[reference.end].at, dp.points[reference.start].at)
-            if drawn > 1e-9 and exact > 0:
-                mu = exact / drawn
-                source = T("mu.inferred_drawn", ref=reference.name, q=reference.quantity,
-                           drawn=drawn, exact=exact, unit=PLAN_UNIT[plan],
-                           plan=plan_title(plan.value, case="gen"))
-        if mu is None:
-            notes.append(Note("error", T("note.no_mu", plan=with_case(dp.name, "gen"),
-                                         v=plan.value[0]), ctx.sub.path))
-    else:
-        reference = None
-    si: dict[str, np.ndarray] = {}
-    if mu is not None and anchor is not None:
-        base = _exact(ctx, anchor, k)
-        a_at = np.asarray(dp.points[anchor].at)
-        for sid, p in dp.points.items():
-            si[sid] = base + (np.asarray(p.at) - a_at) * mu
-    return _Drawn(dp, mu, source, anchor, si, reference)
-
-
-def _overrides(drawn: list[_Drawn]) -> dict[str, np.ndarray]:
-    out: dict[str, np.ndarray] = {}
-    for d in drawn:
-        for sid, v in d.si.items():
-            other = d.swapped.get(sid)
-            out[sid] = d.si[other] if other else v
-    return out
-
-
-def _point_tol(ctx: _Ctx, d: _Drawn, sid: str, k: int) -> float:
-    tol = ctx.options.tol(d.dp.plan)
-    if d.anchor is None or d.mu is None:
-        return tol.mm
-    dist = float(np.hypot(*(_exact(ctx, sid, k) - _exact(ctx, d.anchor, k)))) / d.mu
-    return tol.allowed_mm(dist)
-
-
-def _find_swaps(ctx: _Ctx, d: _Drawn, k: int) -> None:
-    if d.mu is None:
-        return
-    wrong = []
-    for sid, v in d.si.items():
-        d.tol[sid] = _point_tol(ctx, d, sid, k)
-        d.errors[sid] = float(np.hypot(*(v - _exact(ctx, sid, k)))) / d.mu
-        if d.errors[sid] > d.tol[sid]:
-            wrong.append(sid)
-    for i, a in enumerate(wrong):
-        for b in wrong[i + 1:]:
-            if a in d.swapped or b in d.swapped:
-                continue
-            ab = float(np.hypot(*(d.si[a] - _exact(ctx, b, k)))) / d.mu
-            ba = float(np.hypot(*(d.si[b] - _exact(ctx, a, k)))) / d.mu
-            if ab <= d.tol[b] and ba <= d.tol[a]:
-                d.swapped[a], d.swapped[b] = b, a
-
-
-def _labels_fn(ctx: _Ctx) -> Any:
-    def label(sid: str) -> str:
-        return ctx.c[sid].label
-    return label
-
-
-def _classify_points(ctx: _Ctx, d: _Drawn, red: Rederive) -> None:
-    """Total error of each point, and for wrong ones whether the error is new or carried."""
-    for sid in d.dp.points:
-        err = d.errors.get(sid)
-        if err is None or err <= d.tol[sid]:
-            continue
-        if sid in d.swapped:
-            d.status[sid] = SWAPPED
-            continue
-        own = np.asarray(red.own(sid)).reshape(-1)[:2]
-        own_err = (float(np.hypot(*(d.si[sid] - own))) / d.mu if d.mu and
-                   np.all(np.isfinite(own)) else math.inf)
-        d.own_err[sid] = own_err
-        d.status[sid] = CARRIED if own_err <= d.tol[sid] else NEW
-
-
-def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan, float],
+def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, float],
                  findings: list[Finding], status: dict[str, str]) -> PlanReport:
     c, dp = ctx.c, d.dp
     tol = ctx.options.tol(dp.plan)
     pr = PlanReport(dp.name, dp.plan.value, dp.key[1], d.mu, d.mu_source, tol,
                     anchor=c[d.anchor].label if d.anchor else "", convention=dp.convention)
-    labels = _labels_fn(ctx)
+    labels = labels_fn(ctx)
     mu_map = {p: m for p, m in mu_all.items() if m}
     if d.mu:
         mu_map[dp.plan] = d.mu
@@ -504,7 +249,7 @@ def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan,
                                   d.status.get(sid, ""), d.own_err.get(sid), p.how, p.distance,
                                   p.where))
     # segments of the construction, then drawn lines between labelled points
-    segs = _segments_of(c, dp.key)
+    segs = segments_of(c, dp.key)
     pairs = {(s.start, s.end) for s in segs} | {(s.end, s.start) for s in segs}
     rows: list[SegmentRow] = []
     for s in segs:
@@ -529,10 +274,10 @@ def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan,
     pr.drawn_lines = [(ln.start, ln.end) for ln in dp.lines]
     if d.mu and d.anchor is not None:
         a_at = np.asarray(dp.points[d.anchor].at)
-        base = _exact(ctx, d.anchor, k)
+        base = exact_at(ctx, d.anchor, k)
         place = {}
         for sid in ctx.book.plans.get(dp.key, {}):
-            v = a_at + (_exact(ctx, sid, k) - base) / d.mu
+            v = a_at + (exact_at(ctx, sid, k) - base) / d.mu
             if np.all(np.isfinite(v)):
                 place[sid] = (float(v[0]), float(v[1]))
                 pr.exact_mm[labels(sid)] = place[sid]
@@ -554,7 +299,7 @@ def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan,
                         abs(r.direction_deg) > r.tolerance_deg:
                     kinds.add("direction")
             error = " and ".join(x for x in ("length", "direction") if x in kinds)
-            segtxt = join((_row_brief(r) for r in mine), "; ")
+            segtxt = join((row_brief(r) for r in mine), "; ")
             findings.append(Finding(
                 "wrong point", pr.name, labels(sid),
                 T("finding.wrong_point", label=labels(sid), err=d.errors[sid],
@@ -571,39 +316,11 @@ def _grade_drawn(ctx: _Ctx, d: _Drawn, k: int, red: Rederive, mu_all: dict[Plan,
         if r.verdict == WRONG and r.cause == NEW and r.step not in d.status and \
                 not any(f.step == r.step for f in findings):
             findings.append(Finding("wrong segment", pr.name, r.name,
-                                    T("colon", a=_row_brief(r), b=r.hint), r.step, _row_error(r)))
+                                    T("colon", a=row_brief(r), b=r.hint), r.step, row_error(r)))
     return pr
 
 
-def _row_error(r: SegmentRow) -> str:
-    kinds = []
-    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
-        kinds.append("length")
-    if r.direction_deg is not None and r.tolerance_deg is not None and \
-            abs(r.direction_deg) > r.tolerance_deg:
-        kinds.append("direction")
-    return " and ".join(kinds)
-
-
-def _row_brief(r: SegmentRow) -> str:
-    parts = []
-    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
-        parts.append(T("brief.long" if r.error_mm > 0 else "brief.short", name=r.name,
-                       err=abs(r.error_mm)))
-    if r.direction_deg is not None and r.tolerance_deg is not None and \
-            abs(r.direction_deg) > r.tolerance_deg:
-        parts.append(T("brief.turned", name=r.name, dir=r.direction_deg))
-    return join(parts) if parts else T("brief.off", name=r.name)
-
-
-def _roots(ctx: _Ctx, status: dict[str, str], sid: str) -> list[str]:
-    """Wrong points with a new error (or swapped labels) that a step is built from."""
-    anc = set(ctx.c.ancestors([sid])) - {sid}
-    order = list(ctx.c.steps)
-    return sorted((s for s in anc if status.get(s) in (NEW, SWAPPED)), key=order.index)
-
-
-def _where_label(ctx: _Ctx, sid: str, d: _Drawn) -> str:
+def _where_label(ctx: Ctx, sid: str, d: Drawn) -> str:
     """A step's label, with its plan when it is on another plan than ``d``."""
     st = ctx.c[sid]
     return st.label if st.plan is d.dp.plan else T("where_label", label=st.label,
@@ -631,11 +348,11 @@ def _is_drawn(dp: DrawnPlan, row: SegmentRow, snap: float) -> bool:
     return False
 
 
-def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, quantity: str,
+def _segment_row(ctx: Ctx, d: Drawn, k: int, start: str, end: str, name: str, quantity: str,
                  kind: str, tol: Tolerance, hctx: HintContext, present: set[str],
                  is_reference: bool, red: Rederive, status: dict[str, str]) -> SegmentRow:
     c, dp = ctx.c, d.dp
-    exact_vec = _exact(ctx, end, k) - _exact(ctx, start, k)
+    exact_vec = exact_at(ctx, end, k) - exact_at(ctx, start, k)
     exact_mm = float(np.hypot(*exact_vec)) / d.mu if d.mu else None
     row = SegmentRow(name, quantity, kind, end, None, exact_mm,
                      exact_value=float(np.hypot(*exact_vec)), start=start, end=end)
@@ -694,7 +411,7 @@ def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, 
     own_vec = (own_end - d.si[start]) / d.mu if d.mu else vec
     explained = bool(np.all(np.isfinite(own_vec))) and \
         float(np.hypot(*(vec - own_vec))) <= row.tolerance_mm
-    roots = _roots(ctx, status, end)
+    roots = roots_of(ctx, status, end)
     if start in status and status[start] in (NEW, SWAPPED):
         roots = [start, *roots]
     roots = list(dict.fromkeys(roots))
@@ -711,284 +428,3 @@ def _segment_row(ctx: _Ctx, d: _Drawn, k: int, start: str, end: str, name: str, 
         row.cause = NEW
         row.hint = rule(hctx, c[end], d.si[end], d.tol.get(end, tol.mm))
     return row
-
-
-# -- tables of lengths -------------------------------------------------------------------------
-def _grade_table_segments(ctx: _Ctx, k: int, mu_all: dict[Plan, float],
-                          report: CheckReport) -> list[PlanReport]:
-    c = ctx.c
-    by_key: dict[PlanKey, list[TableSegment]] = {}
-    for ts in ctx.interp.segments:
-        if ctx.sheet is not None:
-            continue     # lengths written on a drawn sheet are checked against the drawing below
-        by_key.setdefault(ts.key, []).append(ts)
-    out = []
-    order = {id(s): i for i, s in enumerate(c.segments)}
-    for key, items in by_key.items():
-        plan = key[0]
-        tol = ctx.options.tol(plan)
-        items.sort(key=lambda t: order.get(id(t.segment), 0))
-        mu, source = None, ""
-        if plan in ctx.options.mu:
-            mu, source = ctx.options.mu[plan], T("mu.cli")
-        elif plan in ctx.interp.scales:
-            mu, source = ctx.interp.scales[plan]
-        elif any(t.mu for t in items):
-            t0 = next(t for t in items if t.mu)
-            mu, source = t0.mu, T("mu.row", written=t0.written, where=t0.where)
-        reference = None
-        if mu is None and items:
-            reference = items[0]
-            exact = _seg_exact(ctx, reference.segment, k)
-            if reference.length_mm > 0:
-                mu = exact / reference.length_mm
-                source = T("mu.inferred_table", written=reference.written,
-                           q=reference.segment.quantity, plan=plan_title(plan.value, case="gen"))
-        pr = PlanReport(plan_title(plan.value, key[1], table=True), plan.value, key[1], mu,
-                        source, tol)
-        wrong_ends: dict[str, str] = {}
-        for ts in items:
-            seg = ts.segment
-            row_mu = ts.mu or mu
-            exact_val = _seg_exact(ctx, seg, k)
-            exact_mm = exact_val / row_mu if row_mu else None
-            row = SegmentRow(seg.name, seg.quantity, seg.kind.value, seg.end, ts.length_mm,
-                             exact_mm, exact_value=exact_val, where=ts.where, start=seg.start,
-                             end=seg.end)
-            row.submitted_value = ts.length_mm * row_mu if row_mu else None
-            if exact_mm is None:
-                row.verdict = UNCHECKED
-                row.hint = T("hint.no_mu")
-            else:
-                row.tolerance_mm = tol.allowed_mm(exact_mm)
-                row.error_mm = ts.length_mm - exact_mm
-                row.error_pct = 100 * row.error_mm / exact_mm if exact_mm else None
-                if ts is reference:
-                    row.verdict = REFERENCE
-                    row.hint = T("hint.reference")
-                else:
-                    row.verdict = OK if abs(row.error_mm) <= row.tolerance_mm else WRONG
-            present = {t.segment.end for t in items} | {t.segment.start for t in items}
-            row.depends_on = depends_on(c, seg.end, present, _labels_fn(ctx))
-            if row.verdict == WRONG:
-                anc = set(c.ancestors([seg.end])) - {seg.end}
-                earlier = [name for sid, name in wrong_ends.items() if sid in anc]
-                if earlier:
-                    row.cause = CARRIED
-                    row.carried_from = earlier
-                    row.hint = T("hint.may_carried_segment", earlier=join(earlier))
-                else:
-                    row.cause = NEW
-                    row.hint = _table_hint(ctx, seg)
-                    report.findings.append(Finding("wrong segment", pr.name, seg.name,
-                                                   T("colon", a=_row_brief(row), b=row.hint),
-                                                   seg.end, "length"))
-                wrong_ends[seg.end] = seg.name
-            pr.segments.append(row)
-        out.append(pr)
-    return out
-
-
-def _table_hint(ctx: _Ctx, seg: Segment) -> str:
-    from ..construct.protocol import TEXT
-
-    st = ctx.c[seg.end]
-    texts = TEXT.get(st.op)
-    base = T("hint.step", op=st.op.value.replace('_', ' '), label=st.label)
-    if texts and st.op in (Op.LINE_LINE,):
-        base = T("hint.meet", label=st.label, a=ctx.c[st.inputs[0]].label,
-                 b=ctx.c[st.inputs[1]].label)
-    elif st.op is Op.NORMAL:
-        base = T("hint.normal", label=st.label)
-    elif st.op is Op.SIMILAR_IMAGE:
-        base = T("hint.similar", label=st.label)
-    elif st.op in (Op.DRIVE_VELOCITY, Op.DRIVE_ACCELERATION):
-        base = T("hint.drive", label=st.label)
-    return base
-
-
-def _seg_exact(ctx: _Ctx, seg: Segment, k: int) -> float:
-    return float(np.hypot(*(_exact(ctx, seg.end, k) - _exact(ctx, seg.start, k))))
-
-
-# -- named values -------------------------------------------------------------------------------
-def _grade_values(ctx: _Ctx, k: int, drawn: list[_Drawn], first: dict[PlanKey, _Drawn],
-                  red: Rederive, mu_all: dict[Plan, float], report: CheckReport) -> None:
-    c = ctx.c
-    status: dict[str, str] = {}
-    for d in first.values():
-        for sid, cause in d.status.items():
-            status[sid] = cause
-    table_len: dict[int, TableSegment] = {id(t.segment): t for t in ctx.interp.segments}
-    for gv in ctx.interp.values:
-        q = gv.quantity
-        row = ValueRow(gv.written, q.display, SI_UNIT.get(q.dimension, ""), gv.value, None,
-                       where=gv.where)
-        exact = _value_exact(ctx, q, k, report.notes, gv.where)
-        if exact is None:
-            row.verdict = UNCHECKED
-            report.values.append(row)
-            continue
-        scalar = q.step is not None and ctx.c[q.step].kind is Kind.SCALAR
-        signed = scalar and gv.value < 0
-        exact_cmp = exact if signed else abs(exact)
-        sub_cmp = gv.value if signed else abs(gv.value)
-        row.exact = exact_cmp
-        plan = q.plan
-        tol = ctx.options.tol(plan)
-        mu = mu_all.get(plan) if plan else None
-        seg = q.segment or _absolute_segment(c, q.step)
-        tol_abs = tol.pct / 100 * abs(exact_cmp)
-        if seg is not None and mu:
-            tol_abs = max(tol_abs, tol.mm * mu)
-        elif q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON) and plan is not None:
-            mu_p = mu_all.get(plan)
-            l = _link_length(ctx, q.step, k)
-            if mu_p and l:
-                tol_abs = max(tol_abs, tol.mm * mu_p / l)
-        tol_abs = max(tol_abs, gv.half_unit)      # "0.00" is right for anything below 0.005
-        row.tolerance = tol_abs
-        row.error_pct = 100 * (sub_cmp - exact_cmp) / exact_cmp if exact_cmp else None
-        # what the student's own drawing or lengths give
-        own, own_text, arith = _own_value(ctx, gv, seg, q, k, red, first, table_len, mu)
-        row.own = own
-        if abs(sub_cmp - exact_cmp) <= tol_abs:
-            row.verdict = OK
-        elif own is not None and abs(sub_cmp - (own if signed else abs(own))) > arith:
-            row.verdict = SLIP
-            row.cause = NEW
-            row.hint = T("hint.slip", own=own_text, written=gv.written, text=gv.text)
-            report.findings.append(Finding("arithmetic slip", plan_word(plan.value) if plan else "",
-                                           gv.written, row.hint, q.step or ""))
-        else:
-            row.verdict = WRONG
-            roots = []
-            if seg is not None:
-                roots = [c[s].label for s in _roots(ctx, status, seg.end)]
-                if status.get(seg.end) in (NEW, SWAPPED):
-                    roots.insert(0, c[seg.end].label)
-            elif q.step is not None:
-                roots = [c[s].label for s in _roots(ctx, status, q.step)]
-            if own is not None:
-                row.cause = CARRIED
-                row.hint = (T("hint.own_carried", own=own_text, roots=join(dict.fromkeys(roots)))
-                            if roots else T("hint.own", own=own_text))
-            elif roots:
-                row.cause = CARRIED
-                row.hint = T("hint.may_carried", roots=join(dict.fromkeys(roots)))
-            else:
-                row.cause = NEW
-                row.hint = _value_hint(ctx, q)
-                report.findings.append(Finding("wrong value",
-                                               plan_word(plan.value) if plan else "",
-                                               gv.written, T("finding.wrong_value",
-                                                             written=gv.written, text=gv.text,
-                                                             exact=exact_cmp, unit=row.unit,
-                                                             pct=row.error_pct, hint=row.hint)
-                                               if row.error_pct is not None else row.hint,
-                                               q.step or ""))
-        report.values.append(row)
-
-
-def _value_hint(ctx: _Ctx, q: Any) -> str:
-    c = ctx.c
-    if q.step is not None:
-        st = c[q.step]
-        if st.op is Op.OMEGA:
-            p, qq, vp, vq = st.inputs
-            return T("hint.omega", label=st.label, p=c[p].label, q=c[qq].label,
-                     a=c[vp].label, b=c[vq].label)
-        if st.op is Op.EPSILON:
-            p, qq, n, aq = st.inputs
-            return T("hint.epsilon", label=st.label, p=c[p].label, q=c[qq].label,
-                     n=c[n].label, a=c[aq].label)
-        return T("hint.value_step", display=q.display, op=st.op.value.replace('_', ' '),
-                 label=st.label)
-    if q.segment is not None:
-        return T("hint.value_segment", display=q.display, seg=q.segment.name)
-    return T("hint.value_dynamics", display=q.display)
-
-
-def _absolute_segment(c: Construction, step: str | None) -> Segment | None:
-    if step is None:
-        return None
-    return next((s for s in c.segments if s.end == step and c[s.start].op is Op.POLE), None)
-
-
-def _link_length(ctx: _Ctx, sid: str, k: int) -> float | None:
-    st = ctx.c[sid]
-    if st.op not in (Op.OMEGA, Op.EPSILON):
-        return None
-    p, q = st.inputs[0], st.inputs[1]
-    return float(np.hypot(*(_exact(ctx, q, k) - _exact(ctx, p, k))))
-
-
-def _value_exact(ctx: _Ctx, q: Any, k: int, notes: list[Note], where: str) -> float | None:
-    if q.step is not None:
-        v = _exact(ctx, q.step, k)
-        return float(np.hypot(*v)) if v.ndim == 1 and v.shape[0] == 2 else float(v)
-    if q.segment is not None:
-        return _seg_exact(ctx, q.segment, k)
-    if q.extra in ("J_red", "M_red"):
-        try:
-            from ..dynamics import Loading
-            from ..dynamics.reduced import reduced_of
-
-            loading = Loading.from_scene(ctx.scene)
-            m_red, j_red = reduced_of(ctx.c, ctx.ev, ctx.scene.mechanism, loading)
-            return float((j_red if q.extra == "J_red" else m_red)[k])
-        except Exception as exc:  # noqa: BLE001 - the dynamics module is optional here
-            notes.append(Note("warning", T("note.not_computable", extra=q.extra,
-                                           error=f"{exc.__class__.__name__}: {exc}"), where))
-            return None
-    return None
-
-
-def _own_value(ctx: _Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, red: Rederive,
-               first: dict[PlanKey, _Drawn], table_len: dict[int, TableSegment],
-               mu: float | None) -> tuple[float | None, str, float]:
-    """The student's own value of a quantity, its derivation and the arithmetic tolerance."""
-    c = ctx.c
-    rel = 0.005 * abs(gv.value)
-    unit = SI_UNIT.get(q.dimension, "")
-    if gv.length_mm is not None:
-        m = gv.mu or mu
-        if m:
-            own = gv.length_mm * m
-            return own, T("own.length", len=gv.length_mm, mu=m, own=own, unit=unit), max(
-                rel, gv.half_unit, gv.length_half_unit * m)
-    if seg is not None:
-        key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
-        d = first.get(key)
-        if d is not None and d.mu and seg.start in d.dp.points and seg.end in d.dp.points:
-            length = math.dist(d.dp.points[seg.start].at, d.dp.points[seg.end].at)
-            own = length * d.mu
-            return own, T("own.drawn", seg=seg.name, len=length, mu=d.mu, own=own,
-                          unit=unit), max(
-                rel, gv.half_unit, 0.5 * d.mu)
-        ts = table_len.get(id(seg))
-        m = (ts.mu if ts else None) or mu
-        if ts is not None and m:
-            own = ts.length_mm * m
-            return own, T("own.table", seg=seg.name, len=ts.length_mm, mu=m, own=own,
-                          unit=unit), max(
-                rel, gv.half_unit, ts.length_half_unit * m)
-    if q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON):
-        st = c[q.step]
-        plan_points = [first.get(plan_key(st.plan))]
-        if plan_points[0] is not None and plan_points[0].si:
-            own = float(np.asarray(red.own(q.step)).reshape(-1)[0])
-            return abs(own), T("own.plan", label=st.label, own=abs(own), unit=unit), max(
-                0.01 * abs(gv.value), gv.half_unit)
-        # from a table: the relative segment's length × μ / l
-        _p, _qq, a, b = st.inputs
-        relseg = next((s for s in c.segments if {s.start, s.end} == {a, b}), None)
-        ts = table_len.get(id(relseg)) if relseg is not None else None
-        m = (ts.mu if ts else None) or mu
-        l = _link_length(ctx, q.step, k)
-        if ts is not None and m and l:
-            own = ts.length_mm * m / l
-            return own, T("own.omega", seg=relseg.name,  # type: ignore[union-attr]
-                          len=ts.length_mm, mu=m, l=l, own=own, unit=unit), max(
-                0.01 * abs(gv.value), gv.half_unit)
-    return None, "", 0.0

@@ -146,7 +146,7 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> Text:
         return tail(T("rule.position", label=label))
     if op is Op.POLE:
         return T("rule.pole", label=label)
-    return tail(T("rule.op", label=label, op=op.value.replace('_', ' ')))
+    return tail(T("rule.op", label=label, op=T(f"op.{op.value}")))
 
 
 def depends_on(c: Construction, sid: str, present: set[str], labels: Callable[[str], str]

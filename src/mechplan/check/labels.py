@@ -17,6 +17,7 @@ from dataclasses import dataclass, field
 from ..construct.graph import Construction
 from ..construct.step import Kind, Op, Plan
 from ..model.mechanism import GROUND, Mechanism
+from . import notation
 
 #: a plan drawn on its own: force polygons are one per group, the other plans one each
 PlanKey = tuple[Plan, str]
@@ -24,14 +25,13 @@ PlanKey = tuple[Plan, str]
 PRIMES = "′'’`´ʹ‘‛＇"
 _SUB = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _SUP = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹ⁿᵗᵏʳ", "0123456789ntkr")
-_GREEK = {"π": "π", "Π": "π", "ω": "omega", "Ω": "omega", "ε": "epsilon", "ϵ": "epsilon",
-          "μ": "mu", "µ": "mu", "φ": "phi", "ϕ": "phi", "τ": "t", "Δ": "delta"}
 
 # -- MTEXT and TEXT formatting -----------------------------------------------------------------
 _MTEXT_STACK = re.compile(r"\\S([^;^/#]*)[\^/#]([^;]*);")
 _MTEXT_CODE = re.compile(r"\\[fFcCHhWwQqTtAap][^;]*;|\\[LlOoKkNX~]")
 _TEXT_CODE = re.compile(r"%%([dDpPcCuUoOkK%]|\d{3})")
 _TEXT_SPECIAL = {"d": "°", "p": "±", "c": "Ø", "%": "%"}
+_UNICODE_CODE = re.compile(r"\\U\+([0-9A-Fa-f]{4})")
 
 
 def clean_text(raw: str, mtext: bool = False) -> str:
@@ -52,6 +52,7 @@ def clean_text(raw: str, mtext: bool = False) -> str:
         return _TEXT_SPECIAL.get(code.lower(), "")
 
     text = _TEXT_CODE.sub(special, text)
+    text = _UNICODE_CODE.sub(lambda m: chr(int(m.group(1), 16)), text)
     text = unicodedata.normalize("NFC", text)
     return "\n".join(line.strip() for line in text.splitlines()).strip()
 
@@ -168,7 +169,7 @@ class LabelBook:
             for i, (sid, step) in enumerate(found, start=1):
                 label = steps[sid]
                 sub = label_key(label)[1:]
-                names = split_names(sub, mech)
+                names = notation.points(sub, mech) if mech is not None else None
                 if names and len(names) == 2:
                     self._add(key, letter + label_key(names[1] + names[0]), sid, label, 2)
                 link_no = _link_of_omega(step.inputs[1]) if len(step.inputs) > 1 else None
@@ -192,10 +193,6 @@ class LabelBook:
         out.sort(key=lambda cnd: -cnd.weight)
         return out
 
-    def is_label(self, text: str) -> bool:
-        """True if the text reads as some point of some plan."""
-        return bool(self.candidates(text))
-
     def label_of(self, key: PlanKey, sid: str) -> str:
         """The construction's label of a step."""
         return self.plans[key][sid]
@@ -204,11 +201,6 @@ class LabelBook:
 def plan_key(plan: Plan, group: str = "") -> PlanKey:
     """The key of a plan drawn on its own (force polygons per group)."""
     return (plan, group if plan is Plan.FORCE else "")
-
-
-def plan_name(key: PlanKey) -> str:
-    """"velocity", "force II(2,3)"."""
-    return f"{key[0].value} {key[1]}".strip()
 
 
 def feature_votes(text: str) -> dict[Plan, int]:
@@ -232,68 +224,6 @@ def feature_votes(text: str) -> dict[Plan, int]:
 def _link_of_omega(step_id: str) -> str | None:
     m = re.fullmatch(r"vel\.omega\.(\w+)", step_id)
     return m.group(1) if m else None
-
-
-def split_names(sub: str, mech: Mechanism | None) -> list[str] | None:
-    """Split "a3o3" into point names ["a3", "o3"] using the mechanism's points and links."""
-    if mech is None:
-        return None
-    names = {label_key(p) for link in mech.links.values() for p in link.points}
-    names |= {label_key(p) + lk for lk, link in mech.links.items() for p in link.points}
-    for i in range(1, len(sub)):
-        if sub[:i] in names and sub[i:] in names:
-            return [sub[:i], sub[i:]]
-    return None
-
-
-# -- quantity names ----------------------------------------------------------------------------
-#: key prefix → dimension name of :data:`mechplan.units.DIMENSIONS`
-DIMENSION_OF_PREFIX: tuple[tuple[str, str], ...] = (
-    ("omega", "angular_velocity"), ("epsilon", "angular_acceleration"), ("angle", "angle"),
-    ("jred", "inertia"), ("mred", "moment"), ("mq", "moment"), ("mb", "moment"),
-    ("load", "force"), ("v", "velocity"), ("a", "acceleration"), ("r", "force"), ("q", "force"),
-    ("g", "force"), ("f", "force"), ("p", "force"), ("l", "length"), ("h", "length"),
-    ("d", "length"), ("m", "moment"), ("j", "inertia"),
-)
-
-_QTY_SYNONYMS = (
-    (re.compile(r"^(j)_?(пр|прив|red|r|e|eq|п)$"), r"jred"),
-    (re.compile(r"^(m)_?(пр|прив|red|e|eq|п)$"), r"mred"),
-    (re.compile(r"^(m)_?(ур|b|bal|y|урав)$"), r"mb"),
-)
-
-
-def quantity_key(name: str) -> str:
-    """Return the comparison key of a quantity name.
-
-    ``"ω2"``, ``"omega_2"``, ``"w2"`` → ``"omega2"``; ``"a^n_CB"``, ``"aⁿ_CB"``, ``"a_CB^n"`` →
-    ``"ancb"``; ``"v_{S2}"`` → ``"vs2"``; ``"J_red"``, ``"J_пр"`` → ``"jred"``; ``"R12"`` →
-    ``"r12"``.
-    """
-    t = name.strip().translate(_SUB)
-    for g, rep in _GREEK.items():
-        t = t.replace(g, rep)
-    m = re.fullmatch(r"([A-Za-z]+)_?\{?([A-Za-z0-9]+)\}?\^\{?([ntkrτ])\}?", t)
-    if m:                              # a_CB^n → a^n_CB
-        t = f"{m.group(1)}{m.group(3)}{m.group(2)}"
-    t = t.translate(_SUP)
-    t = re.sub(r"[\s_{}^()\[\]$\\·.,]", "", t).lower()
-    t = re.sub(r"^w(?=\d)", "omega", t)
-    t = re.sub(r"^eps(?=\d)", "epsilon", t)
-    t = re.sub(r"^e(?=\d)", "epsilon", t)
-    t = re.sub(r"^a(τ)", "at", t)
-    t = t.replace("кор", "k").replace("ρ", "r")
-    for pattern, rep in _QTY_SYNONYMS:
-        t = pattern.sub(rep, t)
-    return t
-
-
-def dimension_of(key: str) -> str | None:
-    """Dimension of a quantity from its key ("vb" → velocity, "omega2" → angular_velocity)."""
-    for prefix, dim in DIMENSION_OF_PREFIX:
-        if key.startswith(prefix):
-            return dim
-    return None
 
 
 MU_NAMES: dict[str, Plan] = {

@@ -13,22 +13,21 @@ from ..construct.step import Kind, Plan
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
 from ..units import parse_quantity
+from . import notation
 from .labels import (
     MU_DIMENSION,
     LabelBook,
     PlanKey,
-    dimension_of,
     feature_votes,
     is_angle_name,
     label_key,
     mu_plan,
     plan_key,
-    quantity_key,
-    split_names,
 )
-from .points import LAYER_HINTS, units_ascii
+from .notation import units_ascii
+from .points import LAYER_HINTS
 from .submission import Entry, Note
-from .texts import MESSAGES, T, join, plan_title
+from .texts import T, has, join, plan_title
 
 _NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?")
 
@@ -96,9 +95,10 @@ class Interpretation:
 
 # -- quantities --------------------------------------------------------------------------------
 class QuantityIndex:
-    """Quantities of a construction by the ways their names are written."""
+    """Quantities of a construction, found by the names students write (``notation.toml``)."""
 
     def __init__(self, c: Construction, mech: Mechanism | None, with_dynamics: bool) -> None:
+        self.mech = mech
         self.by_key: dict[str, Quantity] = {}
         for name, sid in c.results.items():
             step = c[sid]
@@ -106,42 +106,38 @@ class QuantityIndex:
                 continue
             if name.startswith("K_"):
                 continue                  # a point of a line of action, not a value
-            dim = self._dimension(name, step.kind, step.plan)
-            if dim is None:
-                continue
-            self._put(quantity_key(name), Quantity(name, dim, step.plan, step=sid))
+            dim = ("moment" if step.kind is Kind.SCALAR else "force") if name.startswith(
+                "load_") else "force" if step.plan is Plan.FORCE and step.kind is Kind.POINT \
+                else notation.dimension(name)
+            if dim is not None:
+                self._put(name, Quantity(name, dim, step.plan, step=sid))
         for seg in c.segments:
-            dim = dimension_of(quantity_key(seg.quantity)) or {
+            dim = "force" if seg.plan is Plan.FORCE else notation.dimension(seg.quantity) or {
                 Plan.POSITION: "length", Plan.VELOCITY: "velocity",
-                Plan.ACCELERATION: "acceleration", Plan.FORCE: "force"}[seg.plan]
-            if seg.plan is Plan.FORCE:
-                dim = "force"
+                Plan.ACCELERATION: "acceleration"}[seg.plan]
             q = Quantity(seg.quantity, dim, seg.plan, segment=seg)
-            key = quantity_key(seg.quantity)
-            self._put(key, q)
+            self._put(seg.quantity, q)
             rev = _reversed_quantity(seg, mech)
             if rev:
-                self._put(quantity_key(rev), q)
+                self._put(rev, q)
         self.has_force = any(st.plan is Plan.FORCE for st in c)
         if with_dynamics:
-            self._put("jred", Quantity("J_red", "inertia", None, extra="J_red"))
-            self._put("mred", Quantity("M_red", "moment", None, extra="M_red"))
+            self._put("J_red", Quantity("J_red", "inertia", None, extra="J_red"))
+            self._put("M_red", Quantity("M_red", "moment", None, extra="M_red"))
 
-    @staticmethod
-    def _dimension(name: str, kind: Kind, plan: Plan) -> str | None:
-        key = quantity_key(name)
-        if name.startswith("load_"):
-            return "moment" if kind is Kind.SCALAR else "force"
-        if plan is Plan.FORCE and kind is Kind.POINT:
-            return "force"
-        return dimension_of(key)
-
-    def _put(self, key: str, q: Quantity) -> None:
-        self.by_key.setdefault(key, q)
+    def _put(self, name: str, q: Quantity) -> None:
+        self.by_key.setdefault(notation.key(name), q)
 
     def find(self, name: str) -> Quantity | None:
         """The quantity a written name stands for, or None."""
-        return self.by_key.get(quantity_key(name))
+        reading = notation.read(name, self.mech)
+        if reading is None:
+            return None
+        if reading.canonical.startswith("F@") and self.mech is not None:
+            link = self.mech.links[reading.canonical[2:]]
+            return next((self.by_key[k] for p in link.points
+                         if (k := notation.key(f"F_{p}")) in self.by_key), None)
+        return self.by_key.get(notation.key(reading.canonical))
 
     def names(self) -> list[str]:
         """Display names of all quantities, for messages."""
@@ -151,12 +147,12 @@ class QuantityIndex:
 def _reversed_quantity(seg: Segment, mech: Mechanism | None) -> str | None:
     """v_CB ≡ v_BC, a^n_CB ≡ a^n_BC: the same magnitude named from the other end."""
     m = re.fullmatch(r"(v|a\^n|a\^t|a\^k|a\^r|a)_(\w+)", seg.quantity)
-    if not m:
+    if not m or mech is None:
         return None
-    names = split_names(label_key(m.group(2)), mech)
+    names = notation.points(m.group(2).lower(), mech)
     if not names or len(names) != 2:
         return None
-    return f"{m.group(1)}_{names[1].upper()}{names[0].upper()}"
+    return f"{m.group(1)}_{names[1]}{names[0]}"
 
 
 # -- segments ----------------------------------------------------------------------------------
@@ -190,6 +186,10 @@ class SegmentIndex:
                 for b, wb in ends:
                     self._put(a + b, seg, key, False, min(wa, wb))
                     self._put(b + a, seg, key, True, min(wa, wb) - 1)
+
+    def names(self) -> list[str]:
+        """The construction's segment names, for messages."""
+        return sorted({seg.name for seg in self.exact_case.values()})
 
     def _put(self, k: str, seg: Segment, key: PlanKey, rev: bool, weight: int) -> None:
         entries = self.by_key.setdefault(k, [])
@@ -335,8 +335,12 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
     if e.quantity:
         qq = qi.find(e.quantity)
         prefer = qq.plan if qq is not None else None
-    found = (si.find(e.name, sec[0] if sec else None, prefer) if length_text is not None
-             else None)
+    named = qi.find(e.name)
+    found = None
+    # a name of plan points ("pb", "ab", "πc'") is a segment; a quantity's name ("aC2", "as2",
+    # "VC2B2") is never read as a segment (its length in mm is reported below)
+    if length_text is not None and (notation.read(e.name, qi.mech) is None or _plain(e.name)):
+        found = si.find(e.name, sec[0] if sec else None, prefer)
     if found is not None and length_text is not None:
         seg, key, rev = found
         number, half = _number_and_half(length_text)
@@ -365,7 +369,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
                 notes.append(Note("warning", T("note.unknown_quantity", name=qname), e.where))
         out.segments.append(ts)
         return
-    q = qi.find(e.name)
+    q = named
     if q is None and e.quantity:
         q = qi.find(e.quantity)
     if q is not None:
@@ -373,7 +377,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         if vtext is None:
             return
         if _is_length_text(vtext) and "mm" in vtext.lower() and q.dimension != "length":
-            noun = (T(f"dim.{q.dimension}") if f"dim.{q.dimension}" in MESSAGES else
+            noun = (T(f"dim.{q.dimension}") if has(f"dim.{q.dimension}") else
                     f"{'an' if q.dimension[0] in 'aeiou' else 'a'} {q.dimension.replace('_', ' ')}")
             notes.append(Note("error", T("note.length_not_value", name=e.name, text=vtext,
                                          display=q.display, dim=noun), e.where))
@@ -390,10 +394,15 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
     level = "info" if from_sheet else "error"
     if from_sheet and not re.match(r"^[A-Za-zα-ωΑ-Ω]", e.name):
         return
-    dim = dimension_of(quantity_key(e.name))
+    dim = notation.dimension(e.name)
     if dim in ("force", "moment") and not qi.has_force:
         notes.append(Note(level, T("note.force_without_plan", name=e.name), e.where))
         return
-    known_q = join(qi.names()[:24])
+    near = notation.closest(e.name, [*qi.names(), *si.names()])
     notes.append(Note(level, T("note.unknown_name", name=e.name) if from_sheet else
-                      T("note.unknown_name_known", name=e.name, known=known_q), e.where))
+                      T("note.unknown_name_known", name=e.name, known=join(near)), e.where))
+
+
+def _plain(name: str) -> bool:
+    """A name of plan points only: lower-case labels and primes ("ab", "pb", "πc'")."""
+    return bool(re.fullmatch(r"[a-zπ'′’]+", name.strip()))

@@ -16,8 +16,10 @@ import statistics
 from dataclasses import dataclass, field
 
 import numpy as np
+from scipy.optimize import linear_sum_assignment
 
 from ..construct.step import Plan
+from ..geom.sketch import crossings
 from .labels import (
     Candidate,
     LabelBook,
@@ -26,6 +28,8 @@ from .labels import (
     label_key,
     mu_plan,
 )
+from .notation import units_ascii
+from .sketch import Graph, drawn_graph
 from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .texts import T, Text, join, plan_title, with_case
 
@@ -36,7 +40,6 @@ LAYER_HINTS: tuple[tuple[Plan, tuple[str, ...]], ...] = (
     (Plan.FORCE, ("force", "сил", "lực", "luc", "力")),
     (Plan.POSITION, ("pos", "mech", "полож", "vị trí", "vi tri", "位置", "机构")),
 )
-BARB_MAX_MM = 8.0
 #: extra cost (× the label distance) of giving a label to a point where only 1 or 2 line ends
 #: meet: points of a plan are where vectors meet; a construction line drawn past its point ends
 #: loose, and the label is often nearer to that end
@@ -95,151 +98,6 @@ class DrawnSheet:
     other_entries: list[Entry]
 
 
-# -- nodes -----------------------------------------------------------------------------------
-class _UnionFind:
-    def __init__(self, n: int) -> None:
-        self.parent = list(range(n))
-
-    def find(self, i: int) -> int:
-        while self.parent[i] != i:
-            self.parent[i] = self.parent[self.parent[i]]
-            i = self.parent[i]
-        return i
-
-    def union(self, a: int, b: int) -> None:
-        ra, rb = self.find(a), self.find(b)
-        if ra != rb:
-            self.parent[max(ra, rb)] = min(ra, rb)
-
-
-def _cluster(points: np.ndarray, snap: float) -> list[int]:
-    """Cluster index of each point: points closer than ``snap`` (transitively) are one cluster."""
-    n = len(points)
-    uf = _UnionFind(n)
-    if n:
-        cells: dict[tuple[int, int], list[int]] = {}
-        size = max(snap, 1e-9)
-        keys = np.floor(points / size).astype(np.int64)
-        for i, (cx, cy) in enumerate(keys):
-            for dx in (-1, 0, 1):
-                for dy in (-1, 0, 1):
-                    for j in cells.get((int(cx) + dx, int(cy) + dy), ()):
-                        if np.hypot(*(points[i] - points[j])) <= snap:
-                            uf.union(i, j)
-            cells.setdefault((int(cx), int(cy)), []).append(i)
-    roots = [uf.find(i) for i in range(n)]
-    index: dict[int, int] = {}
-    return [index.setdefault(r, len(index)) for r in roots]
-
-
-@dataclass
-class _Graph:
-    nodes: np.ndarray                  # (M, 2)
-    line_nodes: list[tuple[int, int]]  # per line
-    markers: dict[int, str]            # node → marker entity
-    decoration: set[int]               # arrowhead corners: labels go elsewhere first
-    component: list[int]               # node → drawing
-    degree: list[int]                  # line ends at each node
-
-
-def _graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float) -> _Graph:
-    pts = [p for ln in lines for p in (ln.start, ln.end)] + [m[0] for m in markers]
-    arr = np.asarray(pts, dtype=float).reshape(-1, 2)
-    cl = _cluster(arr, snap)
-    m = max(cl) + 1 if cl else 0
-    nodes = np.zeros((m, 2))
-    counts = np.zeros(m)
-    for i, c in enumerate(cl):
-        nodes[c] += arr[i]
-        counts[c] += 1
-    if m:
-        nodes /= counts[:, None]
-    line_nodes = [(cl[2 * i], cl[2 * i + 1]) for i in range(len(lines))]
-    marker_nodes = {cl[2 * len(lines) + j]: markers[j][1] for j in range(len(markers))}
-    at_node: dict[int, list[int]] = {}
-    for i, (a, b) in enumerate(line_nodes):
-        at_node.setdefault(a, []).append(i)
-        at_node.setdefault(b, []).append(i)
-    length = [ln.length for ln in lines]
-    decoration: set[int] = set()
-    for n, idx in at_node.items():
-        if n in marker_nodes or any(length[i] > BARB_MAX_MM for i in idx):
-            continue
-        for i in idx:
-            other = line_nodes[i][1] if line_nodes[i][0] == n else line_nodes[i][0]
-            if any(length[j] >= 2.5 * length[i] for j in at_node.get(other, ())):
-                decoration.add(n)
-                break
-    degree_of = {n: len(idx) for n, idx in at_node.items()}
-    for i, (a, b) in enumerate(line_nodes):
-        da, db = degree_of.get(a, 0), degree_of.get(b, 0)
-        if length[i] <= BARB_MAX_MM and da == 1 and db == 1 and a not in marker_nodes \
-                and b not in marker_nodes:
-            decoration |= {a, b}           # hatching of a support, a loose short stroke
-        for end, other, deg in ((a, b, da), (b, a, db)):
-            if deg == 1 and end not in marker_nodes and _overshoot(nodes, end, other, at_node,
-                                                                   snap):
-                decoration.add(end)
-    uf = _UnionFind(m)
-    for a, b in line_nodes:
-        uf.union(a, b)
-    roots = [uf.find(i) for i in range(m)]
-    index: dict[int, int] = {}
-    component = [index.setdefault(r, len(index)) for r in roots]
-    degree = [len(at_node.get(i, ())) for i in range(m)]
-    return _Graph(nodes, line_nodes, marker_nodes, decoration, component, degree)
-
-
-def _overshoot(nodes: np.ndarray, end: int, other: int, at_node: dict[int, list[int]],
-               snap: float, reach: float = 15.0) -> bool:
-    """True if the line from ``other`` to the loose ``end`` passes through a point where other
-    lines meet, within ``reach`` mm of the end: a construction line drawn on past its point."""
-    e, o = nodes[end], nodes[other]
-    d = o - e
-    length = float(np.hypot(*d))
-    if length < 1e-9:
-        return False
-    u = d / length
-    rel = nodes - e
-    along = rel @ u
-    across = np.abs(rel[:, 0] * u[1] - rel[:, 1] * u[0])
-    hits = np.nonzero((along > snap) & (along < min(reach, length - snap)) & (across <= snap))[0]
-    return any(len(at_node.get(int(k), ())) >= 2 for k in hits)
-
-
-def _crossings(lines: list[DrawnLine], near: Point, radius: float) -> list[Point]:
-    """Crossings of drawn lines (within their extents) closer than ``radius`` to ``near``."""
-    cand = []
-    x, y = near
-    for ln in lines:
-        (x1, y1), (x2, y2) = ln.start, ln.end
-        if (min(x1, x2) - radius <= x <= max(x1, x2) + radius
-                and min(y1, y2) - radius <= y <= max(y1, y2) + radius):
-            cand.append(ln)
-    out = []
-    for i, a in enumerate(cand):
-        for b in cand[i + 1:]:
-            p = _intersect(a, b)
-            if p is not None and math.hypot(p[0] - x, p[1] - y) <= radius:
-                out.append(p)
-    return out
-
-
-def _intersect(a: DrawnLine, b: DrawnLine) -> Point | None:
-    (x1, y1), (x2, y2) = a.start, a.end
-    (x3, y3), (x4, y4) = b.start, b.end
-    d = (x2 - x1) * (y4 - y3) - (y2 - y1) * (x4 - x3)
-    la, lb = a.length, b.length
-    if abs(d) < 1e-9 * la * lb or abs(d) < math.sin(math.radians(5.0)) * la * lb:
-        return None        # nearly parallel lines do not define a point
-    t = ((x3 - x1) * (y4 - y3) - (y3 - y1) * (x4 - x3)) / d
-    u = ((x3 - x1) * (y2 - y1) - (y3 - y1) * (x2 - x1)) / d
-    eps = 1e-6
-    if -eps <= t <= 1 + eps and -eps <= u <= 1 + eps:
-        return (x1 + t * (x2 - x1), y1 + t * (y2 - y1))
-    return None
-
-
 # -- labels ----------------------------------------------------------------------------------
 @dataclass
 class _Label:
@@ -270,7 +128,7 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     """Find the labelled points of a sheet and group them into plans."""
     notes: list[Note] = []
     mu_given = mu_given or {}
-    graph = _graph(sub.lines, sub.markers, snap)
+    graph = drawn_graph(sub.lines, sub.markers, snap)
     # scale-factor texts and other "name = value" texts
     scale_entries: list[tuple[Plan, Entry]] = []
     other: list[Entry] = []
@@ -317,11 +175,9 @@ def _no_labels(sub: Submission, book: LabelBook) -> Exception:
     known = sorted({lbl for steps in book.plans.values() for lbl in steps.values()})
     sample = ", ".join(known[:14]) + (" …" if len(known) > 14 else "")
     texts = [t.text for t in sub.texts][:6]
-    found = (f"; the texts found ({', '.join(repr(t) for t in texts)}) are not point labels"
-             if texts else "")
-    return CheckError(f"found {len(sub.lines)} line(s) but no point labels{found}; label the "
-                      f"points of each plan with TEXT or MTEXT next to the line ends "
-                      f"(labels of this mechanism: {sample})", file=sub.path)
+    found = T("error.texts_not_labels", texts=", ".join(repr(t) for t in texts)) if texts else ""
+    return CheckError(T("error.no_labels", n=len(sub.lines), found=found, sample=sample),
+                      file=sub.path)
 
 
 def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
@@ -329,54 +185,10 @@ def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
 
     worst = ", ".join(f"'{lb.written}' ({lb.text.where}, {lb.distance:.1f} mm)"
                       for lb in labels[:5])
-    return CheckError(f"no label is within {tol:.1f} mm of a line end: {worst}; move the labels "
-                      "next to the points or raise --label-distance", file=sub.path)
+    return CheckError(T("error.labels_far", tol=tol, worst=worst), file=sub.path)
 
 
-def _assign(cost: list[list[float]]) -> list[int]:
-    """Minimum-cost assignment of rows to distinct columns (rows ≤ columns); column per row."""
-    n, m = len(cost), len(cost[0]) if cost else 0
-    inf = math.inf
-    u, v = [0.0] * (n + 1), [0.0] * (m + 1)
-    p, way = [0] * (m + 1), [0] * (m + 1)
-    for i in range(1, n + 1):
-        p[0] = i
-        j0 = 0
-        minv = [inf] * (m + 1)
-        used = [False] * (m + 1)
-        while True:
-            used[j0] = True
-            i0, delta, j1 = p[j0], inf, 0
-            for j in range(1, m + 1):
-                if not used[j]:
-                    cur = cost[i0 - 1][j - 1] - u[i0] - v[j]
-                    if cur < minv[j]:
-                        minv[j], way[j] = cur, j0
-                    if minv[j] < delta:
-                        delta, j1 = minv[j], j
-            for j in range(m + 1):
-                if used[j]:
-                    u[p[j]] += delta
-                    v[j] -= delta
-                else:
-                    minv[j] -= delta
-            j0 = j1
-            if p[j0] == 0:
-                break
-        while True:
-            j1 = way[j0]
-            p[j0] = p[j1]
-            j0 = j1
-            if not j0:
-                break
-    out = [-1] * n
-    for j in range(1, m + 1):
-        if p[j]:
-            out[p[j] - 1] = j - 1
-    return out
-
-
-def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: float,
+def _attach(labels: list[_Label], graph: Graph, lines: list[DrawnLine], tol: float,
             notes: list[Note]) -> None:
     """Give each label a point: line ends nearest to its text box, one label per point where
     possible (a minimum-cost assignment), arrowhead corners only when nothing else is near."""
@@ -412,9 +224,10 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
             row[len(columns) + r] = (near[0][0] + 0.5 * tol) if near else big
             row = [x + tol for x in row]       # keep costs positive (marker bonus)
             cost.append(row)
-        pick = _assign(cost)
+        rows, cols = linear_sum_assignment(np.asarray(cost))
+        pick = dict(zip(rows.tolist(), cols.tolist()))
         for r, lb in enumerate(labels):
-            j = pick[r]
+            j = pick.get(r, -1)
             if j < 0 or cost[r][j] >= big:
                 continue
             node = columns[j] if j < len(columns) else options[r][0][1]
@@ -425,10 +238,11 @@ def _attach(labels: list[_Label], graph: _Graph, lines: list[DrawnLine], tol: fl
     for lb in labels:
         if lb.at is not None:
             continue
-        crossings = _crossings(lines, lb.text.centre, tol + max(lb.text.half))
-        crossings = [p for p in crossings if lb.text.distance(p) <= tol]
-        if crossings:
-            p = min(crossings, key=lb.text.distance)
+        meets = crossings(np.asarray([(ln.start, ln.end) for ln in lines]).reshape(-1, 2, 2),
+                         lb.text.centre, tol + max(lb.text.half))
+        found = [(float(x), float(y)) for x, y in meets if lb.text.distance((x, y)) <= tol]
+        if found:
+            p = min(found, key=lb.text.distance)
             lb.at, lb.how, lb.distance = p, T("how.crossing"), lb.text.distance(p)
             continue
         notes.append(Note("warning", T("note.label_far", written=lb.written, d=lb.distance,
@@ -443,7 +257,7 @@ def _layer_plan(layer: str) -> Plan | None:
     return None
 
 
-def _group(labels: list[_Label], graph: _Graph, sub: Submission, book: LabelBook,
+def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
            scale_entries: list[tuple[Plan, Entry]], notes: list[Note]) -> list[DrawnPlan]:
     comp_of = lambda lb: graph.component[lb.node] if lb.node >= 0 else _nearest_component(
         lb.at, graph)
@@ -534,7 +348,7 @@ def _gap(a: list[_Label], b: list[_Label]) -> float:
     return math.hypot(dx, dy)
 
 
-def _nearest_component(at: Point | None, graph: _Graph, among: set[int] | None = None) -> int:
+def _nearest_component(at: Point | None, graph: Graph, among: set[int] | None = None) -> int:
     if at is None or not len(graph.nodes):
         return -1
     d = np.hypot(*(graph.nodes - np.asarray(at)).T)
@@ -545,7 +359,7 @@ def _nearest_component(at: Point | None, graph: _Graph, among: set[int] | None =
     return graph.component[int(np.argmin(d))]
 
 
-def _hint_of(comp: int, members: list[_Label], graph: _Graph, lines: list[DrawnLine],
+def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLine],
              scale_entries: list[tuple[Plan, Entry]], labelled: set[int]) -> set[Plan]:
     hints: set[Plan] = set()
     layers = [_layer_plan(ln.layer) for ln in lines] + [_layer_plan(lb.text.layer)
@@ -627,7 +441,7 @@ def _xy(p: Point | None) -> str:
     return "(?)" if p is None else T("xy", x=p[0], y=p[1])
 
 
-def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
+def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
           notes: list[Note]) -> None:
     pole = book.poles.get(dp.key)
     if pole is None or pole in dp.points or len(dp.points) < 2:
@@ -658,7 +472,7 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: _Graph, sub: Submission,
 
 
 def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],
-              graph: _Graph, notes: list[Note]) -> None:
+              graph: Graph, notes: list[Note]) -> None:
     from ..errors import SceneError
     from ..units import parse_quantity
     from .labels import MU_DIMENSION
@@ -674,7 +488,7 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
     for e in mine:
         text = e.text or e.value or e.length or ""
         try:
-            dp.mu = parse_quantity(_units_ascii(text), MU_DIMENSION[plan])
+            dp.mu = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
         except SceneError as exc:
             notes.append(Note("warning", T("note.mu_unusable", name=e.name, text=text,
                                            detail=exc.detail), e.where))
@@ -686,20 +500,3 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
             continue
         dp.mu_source = T("mu.text", name=e.name, text=text, where=e.where)
         return
-
-
-_CYRILLIC_UNITS = (("мм", "mm"), ("м", "m"), ("с", "s"), ("кН", "kN"), ("Н", "N"), ("рад", "rad"),
-                   ("кг", "kg"), ("об/мин", "rpm"), ("град", "deg"))
-
-
-def _units_ascii(text: str) -> str:
-    """Units as pint reads them: Cyrillic unit names, "м/с/мм", "(m/s^2)/mm" → Latin."""
-    out = text.replace("µ", "μ")
-    for cyr, lat in _CYRILLIC_UNITS:
-        out = out.replace(cyr, lat)
-    out = out.replace("−", "-").replace("⋅", "*").replace("×", "*")
-    out = out.replace("⁻¹", "^-1").replace("⁻²", "^-2").replace("³", "^3")
-    return out
-
-
-units_ascii = _units_ascii

@@ -9,28 +9,19 @@ from __future__ import annotations
 
 import csv
 import io
-import itertools
-import logging
 import math
 import re
 import tomllib
-from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
-from .labels import clean_text
-from .texts import MESSAGES, T
+from .texts import T
 
 Point = tuple[float, float]
 
 #: $INSUNITS → millimetres per drawing unit (0 = unitless, read as millimetres)
-INSUNITS_MM = {0: 1.0, 1: 25.4, 2: 304.8, 4: 1.0, 5: 10.0, 6: 1000.0, 14: 100.0}
-INSUNITS_NAME = {0: "unitless", 1: "inches", 2: "feet", 4: "millimetres", 5: "centimetres",
-                 6: "metres", 14: "decimetres"}
-
-
 @dataclass(frozen=True, slots=True)
 class Note:
     """A message about the submission: what could not be used, and where it is."""
@@ -112,6 +103,7 @@ class Submission:
     entries: list[Entry] = field(default_factory=list)
     notes: list[Note] = field(default_factory=list)
     units: str = ""
+    dimensions: list[tuple[float, SheetText]] = field(default_factory=list)  # measured, its text
     skipped: int = 0        # dash-dot lines and lines of frames and tables, not read
 
 
@@ -119,12 +111,13 @@ def read_submission(path: str | Path) -> Submission:
     """Read a DXF, TOML or CSV submission; raise :class:`CheckError` if it cannot be read at all."""
     p = Path(path)
     if not p.exists():
-        raise CheckError("the submission file does not exist", file=str(p))
+        raise CheckError(T("error.no_file"), file=str(p))
     if p.is_dir():
-        raise CheckError("the submission must be a file (a DXF, TOML or CSV), not a directory",
-                         file=str(p))
+        raise CheckError(T("error.is_dir"), file=str(p))
     suffix = p.suffix.lower()
     if suffix == ".dxf":
+        from .dxf import read_dxf
+
         return read_dxf(p)
     if suffix == ".toml":
         return read_toml(p)
@@ -132,307 +125,10 @@ def read_submission(path: str | Path) -> Submission:
         return read_csv(p)
     head = p.read_bytes()[:256]
     if re.match(rb"\s*0\s*\r?\n\s*SECTION", head) or head.startswith(b"AutoCAD Binary DXF"):
+        from .dxf import read_dxf
+
         return read_dxf(p)
-    raise CheckError(f"cannot tell what kind of submission {p.suffix or 'a file without suffix'} "
-                     "is; expected a .dxf drawing, a .toml or a .csv table", file=str(p))
-
-
-# -- DXF ---------------------------------------------------------------------------------------
-def read_dxf(path: Path) -> Submission:
-    """Read lines, polylines, point markers and texts of a DXF's model space (recovering damage)."""
-    import ezdxf
-    from ezdxf import recover
-
-    sub = Submission(str(path), "dxf")
-    raw = path.read_bytes()
-    if not raw.strip():
-        raise CheckError("the file is empty; expected a DXF drawing", file=str(path))
-    truncated = not raw.startswith(b"AutoCAD Binary DXF") and \
-        raw.rstrip()[-3:].upper() != b"EOF"
-    if truncated:
-        sub.notes.append(Note("warning", T("note.truncated"), str(path)))
-    repairs = _Collect()
-    log = logging.getLogger("ezdxf")
-    log.addHandler(repairs)   # the repair messages become notes, not lines on stderr
-    try:
-        doc, auditor = recover.readfile(str(path))
-    except ezdxf.DXFStructureError as exc:
-        raise CheckError(f"cannot read the file as DXF ({exc}); expected a DXF drawing saved by "
-                         "a CAD program (ASCII or binary)", file=str(path)) from None
-    except (OSError, UnicodeDecodeError, ValueError, EOFError) as exc:
-        raise CheckError(f"cannot read the file as DXF ({exc.__class__.__name__}: {exc})",
-                         file=str(path)) from None
-    except Exception as exc:  # noqa: BLE001 - ezdxf raises assorted errors on damaged files
-        raise CheckError(f"cannot read the file as DXF; it looks damaged "
-                         f"({exc.__class__.__name__}: {exc})", file=str(path)) from None
-    finally:
-        log.removeHandler(repairs)
-    if repairs.messages:
-        sub.notes.append(Note("warning", T("note.repaired_values", n=len(repairs.messages),
-                                           example=repairs.messages[0]), str(path)))
-    if auditor.has_errors:
-        sub.notes.append(Note("warning", T("note.repaired_dxf", n=len(auditor.errors),
-                                           example=auditor.errors[0].message), str(path)))
-    try:
-        code = int(doc.header.get("$INSUNITS", 0))
-    except (TypeError, ValueError):
-        code = 0
-    scale = INSUNITS_MM.get(code)
-    if scale is None:
-        sub.notes.append(Note("warning", T("note.insunits", code=code), str(path)))
-        scale = 1.0
-        sub.units = T("units.insunits", code=code)
-    elif code == 0:
-        sub.units = T("units.unitless")
-    else:
-        sub.units = (unit_name(code) if code == 4 else
-                     T("units.scaled", unit=unit_name(code), scale=scale))
-    msp = doc.modelspace()
-    _collect(sub, msp, 1.0, depth=0)
-    if not sub.lines:
-        for layout in doc.layouts:
-            if layout.name.lower() == "model":
-                continue
-            _collect(sub, layout, 1.0, depth=0)
-            if sub.lines:
-                sub.notes.append(Note("info", T("note.layout", name=layout.name), str(path)))
-                break
-    if sub.skipped:
-        sub.notes.append(Note("info", T("note.skipped", n=sub.skipped), str(path)))
-    xs = [v for ln in sub.lines for v in (ln.start[0], ln.end[0])]
-    ys = [v for ln in sub.lines for v in (ln.start[1], ln.end[1])]
-    extent = max(max(xs) - min(xs), max(ys) - min(ys)) if xs else 0.0
-    if scale != 1.0 and extent * scale > SHEET_MAX_MM and extent <= SHEET_MAX_MM:
-        sub.notes.append(Note("warning", T("note.units_too_big", unit=unit_name(code),
-                                           m=extent * scale / 1000, mm=extent), str(path)))
-        sub.units = T("units.header", unit=unit_name(code))
-        scale = 1.0
-    if scale != 1.0:
-        _rescale(sub, scale)
-    if not sub.lines and not sub.texts:
-        raise CheckError("the DXF holds no lines and no texts in model space"
-                         + (" (the file ends early: it may be truncated)" if truncated else "")
-                         + "; expected the lines of a plan (LINE, LWPOLYLINE, POLYLINE) with "
-                         "TEXT/MTEXT labels", file=str(path))
-    for text in sub.texts:
-        for i, line in enumerate(text.text.splitlines(), start=1):
-            where = T("where.text_line", where=text.where, n=i) if "\n" in text.text \
-                else text.where
-            sub.entries.extend(parse_assignments(line, where, at=text.centre))
-    return sub
-
-
-#: a plan drawn on paper is smaller than an A0 sheet's long side with margin
-SHEET_MAX_MM = 2000.0
-
-
-def _rescale(sub: Submission, f: float) -> None:
-    def q(p: Point) -> Point:
-        return (p[0] * f, p[1] * f)
-
-    sub.lines = [DrawnLine(q(ln.start), q(ln.end), ln.where, ln.layer) for ln in sub.lines]
-    sub.markers = [(q(p), w) for p, w in sub.markers]
-    sub.texts = [SheetText(t.text, q(t.centre), t.height * f, t.where, t.layer, q(t.anchor),
-                           (t.half[0] * f, t.half[1] * f), t.rotation) for t in sub.texts]
-
-
-class _Collect(logging.Handler):
-    """Keep the log messages of a DXF read (repairs of damaged values)."""
-
-    def __init__(self) -> None:
-        super().__init__(logging.WARNING)
-        self.messages: list[str] = []
-
-    def emit(self, record: logging.LogRecord) -> None:
-        self.messages.append(record.getMessage())
-
-
-def unit_name(code: int) -> str:
-    """The name of a $INSUNITS code ("millimetres"), or the code itself when it has none."""
-    return T(f"unit.{code}") if f"unit.{code}" in MESSAGES else str(code)
-
-
-def _where(e: Any, extra: str = "") -> str:
-    handle = getattr(e.dxf, "handle", None) or "?"
-    layer = getattr(e.dxf, "layer", "") or ""
-    if layer not in ("", "0"):
-        return T("where.entity_layer", type=e.dxftype(), handle=handle, layer=layer, extra=extra)
-    return T("where.entity", type=e.dxftype(), handle=handle, extra=extra)
-
-
-_SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|border",
-                            re.IGNORECASE)
-_SKIP_LAYER = re.compile(r"^(frame|table|title|border|рамка|штамп|таблиц)", re.IGNORECASE)
-
-
-def _skipped(e: Any) -> bool:
-    """Axes and trajectories (dash-dot lines) and sheet frames and tables are not plan lines."""
-    layer_name = e.dxf.get("layer", "0") or "0"
-    if _SKIP_LAYER.match(layer_name):
-        return True
-    linetype = e.dxf.get("linetype", "BYLAYER") or "BYLAYER"
-    if linetype.upper() == "BYLAYER" and e.doc is not None:
-        layer = e.doc.layers.get(layer_name) if layer_name in e.doc.layers else None
-        linetype = layer.dxf.get("linetype", "CONTINUOUS") if layer is not None else "CONTINUOUS"
-    return bool(_SKIP_LINETYPE.search(linetype))
-
-
-def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
-             via: str = "") -> None:
-    for e in space:
-        kind = e.dxftype()
-        try:
-            if kind in ("LINE", "LWPOLYLINE", "POLYLINE") and _skipped(e):
-                sub.skipped += 1
-                continue
-            if kind == "LINE":
-                a, b = e.dxf.start, e.dxf.end
-                _add_line(sub, (a.x, a.y), (b.x, b.y), scale, _where(e, via), e.dxf.layer)
-            elif kind == "LWPOLYLINE":
-                pts = [(v.x, v.y) for v in e.vertices_in_wcs()]
-                _add_polyline(sub, pts, bool(e.closed), scale, _where(e, via), e.dxf.layer,
-                              any(b for *_, b in e.get_points("xyb")))
-            elif kind == "POLYLINE":
-                if e.is_polygon_mesh or e.is_poly_face_mesh:
-                    continue
-                pts = [(v.x, v.y) for v in e.points_in_wcs()]
-                _add_polyline(sub, pts, bool(e.is_closed), scale, _where(e, via), e.dxf.layer,
-                              any(v.dxf.bulge for v in e.vertices))
-            elif kind in ("SOLID", "TRACE"):
-                _add_arrowhead(sub, e, scale, _where(e, via))
-            elif kind == "POINT":
-                p = e.dxf.location
-                sub.markers.append(((p.x * scale, p.y * scale), _where(e, via)))
-            elif kind == "CIRCLE" and e.dxf.radius * scale <= 2.0:
-                p = e.dxf.center
-                if e.dxf.extrusion.z < 0:
-                    p = e.ocs().to_wcs(p)
-                sub.markers.append(((p.x * scale, p.y * scale), _where(e, via)))
-            elif kind in ("TEXT", "ATTRIB"):
-                _add_text(sub, _text_box(e, scale), e, via)
-            elif kind == "MTEXT":
-                _add_text(sub, _mtext_box(e, scale), e, via)
-            elif kind == "INSERT" and depth < 8:
-                name = e.dxf.name
-                _collect(sub, e.virtual_entities(), scale, depth + 1,
-                         via=T("where.block", name=name, handle=e.dxf.handle))
-                for attrib in getattr(e, "attribs", []):
-                    _add_text(sub, _text_box(attrib, scale), attrib, via)
-        except Exception as exc:  # noqa: BLE001 - one bad entity must not lose the sheet
-            sub.notes.append(Note("warning", T("note.unreadable_entity", kind=kind,
-                                               error=f"{exc.__class__.__name__}: {exc}"),
-                                  _where(e, via)))
-
-
-def _add_arrowhead(sub: Submission, e: Any, scale: float, where: str) -> None:
-    """A filled triangle (an arrowhead): its tip is a point of the plan, joined to the middle of
-    its base, where the vector's shaft ends."""
-    ocs = e.ocs()
-    pts = [ocs.to_wcs(e.dxf.get(f"vtx{i}")) for i in range(4) if e.dxf.hasattr(f"vtx{i}")]
-    corners: list[Point] = []
-    for p in pts:
-        q = (p.x, p.y)
-        if all(math.dist(q, r) > 1e-9 for r in corners):
-            corners.append(q)
-    if len(corners) != 3:
-        return
-    sides = [math.dist(corners[(i + 1) % 3], corners[(i + 2) % 3]) for i in range(3)]
-    tip = corners[sides.index(min(sides))]
-    b1, b2 = (corners[i] for i in range(3) if corners[i] != tip)
-    base = ((b1[0] + b2[0]) / 2, (b1[1] + b2[1]) / 2)
-    _add_line(sub, tip, base, scale, where, e.dxf.get("layer", ""))
-    sub.markers.append(((tip[0] * scale, tip[1] * scale), where))
-
-
-def _finite(*values: float) -> bool:
-    return all(math.isfinite(v) for v in values)
-
-
-def _add_line(sub: Submission, a: Point, b: Point, scale: float, where: str, layer: str) -> None:
-    if not _finite(*a, *b):
-        sub.notes.append(Note("warning", T("note.nonfinite_line"), where))
-        return
-    sa, sb = (a[0] * scale, a[1] * scale), (b[0] * scale, b[1] * scale)
-    if math.hypot(sb[0] - sa[0], sb[1] - sa[1]) < 1e-9:
-        return
-    sub.lines.append(DrawnLine(sa, sb, where, layer))
-
-
-def _add_polyline(sub: Submission, pts: list[Point], closed: bool, scale: float, where: str,
-                  layer: str, bulges: bool) -> None:
-    if closed and len(pts) > 2:
-        pts = pts + [pts[0]]
-    for i, (a, b) in enumerate(itertools.pairwise(pts), start=1):
-        _add_line(sub, a, b, scale, T("where.segment", where=where, n=i), layer)
-    if bulges:
-        sub.notes.append(Note("info", T("note.arc_chords"), where))
-
-
-_H_FRAC = {"LEFT": 0.0, "CENTER": -0.5, "RIGHT": -1.0, "MIDDLE": -0.5}
-_V_FRAC = {"BASELINE": 0.0, "BOTTOM": 0.0, "MIDDLE": -0.5, "TOP": -1.0}
-
-
-Box = tuple[str, Point, float, Point, tuple[float, float], float]
-
-
-def _text_box(e: Any, scale: float) -> Box:
-    plain = clean_text(e.dxf.text, mtext=False)
-    h = float(e.dxf.get("height", 2.5)) or 2.5
-    wf = float(e.dxf.get("width", 1.0)) or 1.0
-    rot = math.radians(float(e.dxf.get("rotation", 0.0)))
-    w = 0.6 * h * wf * max(1, len(plain))
-    align = e.get_align_enum()
-    name = align.name
-    ocs = e.ocs()
-    insert = ocs.to_wcs(e.dxf.insert)
-    if name in ("ALIGNED", "FIT") and e.dxf.hasattr("align_point"):
-        end = ocs.to_wcs(e.dxf.align_point)
-        ux, uy = end.x - insert.x, end.y - insert.y
-        n = math.hypot(ux, uy) or 1.0
-        cx = (insert.x + end.x) / 2 - uy / n * h / 2
-        cy = (insert.y + end.y) / 2 + ux / n * h / 2
-        return (plain, (cx * scale, cy * scale), h * scale, (insert.x * scale, insert.y * scale),
-                (n / 2 * scale, h / 2 * scale), math.degrees(math.atan2(uy, ux)))
-    anchor = insert
-    if name != "LEFT" and e.dxf.hasattr("align_point"):
-        anchor = ocs.to_wcs(e.dxf.align_point)
-    if name in ("LEFT", "CENTER", "RIGHT", "ALIGNED", "FIT"):
-        hx, vy = _H_FRAC.get(name, 0.0), 0.0
-    elif name == "MIDDLE":
-        hx, vy = -0.5, -0.5
-    else:
-        v, hname = name.split("_", 1)
-        hx, vy = _H_FRAC[hname], _V_FRAC[v]
-    lx, ly = (hx + 0.5) * w, (vy + 0.5) * h
-    cx = anchor.x + lx * math.cos(rot) - ly * math.sin(rot)
-    cy = anchor.y + lx * math.sin(rot) + ly * math.cos(rot)
-    return (plain, (cx * scale, cy * scale), h * scale, (anchor.x * scale, anchor.y * scale),
-            (w / 2 * scale, h / 2 * scale), math.degrees(rot))
-
-
-def _mtext_box(e: Any, scale: float) -> Box:
-    plain = clean_text(e.text, mtext=True)
-    h = float(e.dxf.get("char_height", 2.5)) or 2.5
-    lines = plain.splitlines() or [""]
-    w = 0.6 * h * max(1, max(len(s) for s in lines))
-    total = h * (1 + 1.67 * (len(lines) - 1))
-    att = int(e.dxf.get("attachment_point", 1))
-    hx = {0: 0.5, 1: 0.0, 2: -0.5}[(att - 1) % 3]
-    vy = {0: -0.5, 1: 0.0, 2: 0.5}[(att - 1) // 3]
-    rot = math.radians(e.get_rotation())
-    lx, ly = hx * w, vy * total
-    ins = e.dxf.insert
-    cx = ins.x + lx * math.cos(rot) - ly * math.sin(rot)
-    cy = ins.y + lx * math.sin(rot) + ly * math.cos(rot)
-    return (plain, (cx * scale, cy * scale), h * scale, (ins.x * scale, ins.y * scale),
-            (w / 2 * scale, total / 2 * scale), math.degrees(rot))
-
-
-def _add_text(sub: Submission, box: Box, e: Any, via: str) -> None:
-    plain, centre, h, anchor, half, rot = box
-    if plain and _finite(*centre):
-        sub.texts.append(SheetText(plain, centre, h, _where(e, via), e.dxf.get("layer", ""),
-                                   anchor, half, rot))
+    raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))
 
 
 # -- "name = value" texts ------------------------------------------------------------------------
@@ -477,9 +173,7 @@ def read_toml(path: Path) -> Submission:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise CheckError(f"not a valid TOML table ({exc}); expected entries like "
-                         "'pb = 67.0' under [velocity] or 'v_S2 = \"2.95 m/s\"' under [values]",
-                         file=str(path)) from None
+        raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
     lines = text.splitlines()
 
     def line_of(key: str) -> str:
@@ -514,9 +208,7 @@ def read_toml(path: Path) -> Submission:
 
     walk(data, None, "")
     if not sub.entries:
-        raise CheckError("the table holds no values; expected lengths in mm under a plan section "
-                         "([velocity] pb = 67.0) or physical values ([values] v_B = \"6.7 m/s\")",
-                         file=str(path))
+        raise CheckError(T("error.toml_empty"), file=str(path))
     return sub
 
 
@@ -574,7 +266,7 @@ def read_csv(path: Path) -> Submission:
     sub = Submission(str(path), "table")
     text = _read_text(path)
     if "\x00" in text:
-        raise CheckError("the file is binary, not a CSV table", file=str(path))
+        raise CheckError(T("error.binary"), file=str(path))
     sample = "\n".join(text.splitlines()[:20])
     try:
         dialect: Any = csv.Sniffer().sniff(sample, delimiters=",;\t|")
@@ -583,7 +275,7 @@ def read_csv(path: Path) -> Submission:
     try:
         rows = list(csv.reader(io.StringIO(text), dialect))
     except csv.Error as exc:
-        raise CheckError(f"not a readable CSV table ({exc})", file=str(path)) from None
+        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
     header: dict[str, int] | None = None
     for lineno, row in enumerate(rows, start=1):
         cells = [c.strip() for c in row]
@@ -594,8 +286,8 @@ def read_csv(path: Path) -> Submission:
             header = _header(cells)
             if header is not None:
                 if "name" not in header:
-                    raise CheckError("the header has no name column; expected one of "
-                                     "'segment', 'name'", file=str(path), key=f"line {lineno}")
+                    raise CheckError(T("error.csv_header"), file=str(path),
+                                     key=f"line {lineno}")
                 continue
         if header is not None:
             def get(k: str, cells: list[str] = cells, header: dict[str, int] = header
@@ -632,9 +324,7 @@ def read_csv(path: Path) -> Submission:
         else:
             sub.entries.append(Entry(name=cells[0], where=where, text=cells[1]))
     if not sub.entries:
-        raise CheckError("the CSV holds no rows; expected 'name, value' rows such as "
-                         "'pb, 67.0' or 'v_S2, 2.95 m/s', or a header 'segment, mm, mu, quantity, "
-                         "value'", file=str(path))
+        raise CheckError(T("error.csv_empty"), file=str(path))
     return sub
 
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -133,16 +133,23 @@ class Construction:
         """Return the steps of one plan in order."""
         return [s for s in self.steps.values() if s.plan is plan]
 
-    def evaluate(self, phi: Array | float, dtype: type = np.float64) -> Evaluation:
-        """Start a lazy evaluation at crank angles φ (radians, scene convention)."""
-        return Evaluation(self, np.atleast_1d(np.asarray(phi, dtype=float)), dtype)
+    def evaluate(self, phi: Array | float, dtype: type = np.float64,
+                 overrides: Mapping[str, Array] | None = None) -> Evaluation:
+        """Start a lazy evaluation at crank angles φ (radians, scene convention).
+
+        ``overrides`` gives some steps their values (leading axis N, like every value) instead of
+        their rule: the steps built on them are re-derived from those values (a student's points).
+        """
+        return Evaluation(self, np.atleast_1d(np.asarray(phi, dtype=float)), dtype, overrides)
 
 
 class Evaluation:
     """Values of a construction at N positions, computed on demand and memoised by step id."""
 
-    def __init__(self, construction: Construction, phi: Array, dtype: type = np.float64) -> None:
+    def __init__(self, construction: Construction, phi: Array, dtype: type = np.float64,
+                 overrides: Mapping[str, Array] | None = None) -> None:
         self.construction = construction
+        self.overrides = dict(overrides or {})
         self.dtype = dtype
         self.phi = phi
         self.n = phi.shape[0]
@@ -175,7 +182,12 @@ class Evaluation:
 
     def _compute(self, step: Step) -> None:
         value: Array
-        if step.op is Op.CRANK_ANGLE:
+        if step.id in self.overrides:
+            value, gap, sine = np.asarray(self.overrides[step.id], dtype=self.dtype), None, None
+            if value.shape[:1] != (self.n,):
+                raise ValueError(f"override of {step.id!r} must have {self.n} positions "
+                                 f"(got shape {value.shape})")
+        elif step.op is Op.CRANK_ANGLE:
             theta = self.construction.drive.absolute(self.phi)
             value, gap, sine = theta.astype(self.dtype), None, None
         elif step.op in SOURCES:

@@ -60,7 +60,7 @@ def _style(role: Role) -> dict[str, Any]:
     pattern = DASH_PATTERNS_MM[st.linetype]
     linestyle: Any = (0, tuple(v * PT_PER_MM for v in pattern)) if pattern else "solid"
     return {"linewidth": st.lineweight_mm * PT_PER_MM, "linestyle": linestyle,
-            "capstyle": "butt", "joinstyle": "miter", "color": INK}
+            "capstyle": "butt", "joinstyle": "miter", "color": st.ink}
 
 
 def _draw(ax: Any, sheet: Sheet) -> None:
@@ -97,7 +97,7 @@ def _draw(ax: Any, sheet: Sheet) -> None:
     for role, segs in paths.items():
         st = _style(role)
         ax.add_collection(LineCollection(segs, linewidths=st["linewidth"],
-                                         linestyles=[st["linestyle"]], colors=INK,
+                                         linestyles=[st["linestyle"]], colors=st["color"],
                                          capstyle="butt", joinstyle="miter"))
 
 
@@ -111,7 +111,7 @@ def _text(ax: Any, t: Text) -> None:
     if t.width_factor == 1.0:
         ax.text(x, y, t.string, fontsize=size_mm * PT_PER_MM, fontfamily=families,
                 rotation=t.rotation_deg, rotation_mode="anchor", ha=ha, va="baseline",
-                color=INK, transform=ax.transData)
+                color=t.role.style.ink, transform=ax.transData)
         return
     # Condensed text has no font-level equivalent: draw the glyph outlines, scaled.
     path = TextPath((0, 0), t.string, size=1.0, prop=FontProperties(family=families))

@@ -34,7 +34,8 @@ from mechplan.sheet.primitives import (
 
 #: Paint order of the role groups (text on top, thick lines over thin ones).
 ROLE_ORDER: tuple[Role, ...] = (Role.FILL, Role.THIN, Role.DASHED, Role.CHAIN, Role.DIMENSION,
-                                Role.TABLE, Role.OUTLINE, Role.FRAME, Role.TEXT)
+                                Role.TABLE, Role.OUTLINE, Role.FRAME, Role.TEXT, Role.EXACT,
+                                Role.SUBMISSION, Role.ERRORS)
 _ANCHOR = {HAlign.LEFT: "start", HAlign.CENTER: "middle", HAlign.RIGHT: "end"}
 INK = "black"
 
@@ -64,9 +65,9 @@ class _Writer:
         st = role.style
         attrs: dict[str, Any] = {"class_": f"role-{role.value.lower()}"}
         if role is Role.TEXT:
-            attrs.update(fill=INK, stroke="none")
+            attrs.update(fill=st.ink, stroke="none")
         else:
-            attrs.update(fill="none", stroke=INK, stroke_width=st.lineweight_mm,
+            attrs.update(fill="none", stroke=st.ink, stroke_width=st.lineweight_mm,
                          stroke_linecap="butt", stroke_linejoin="miter")
             pattern = DASH_PATTERNS_MM[st.linetype]
             if pattern:
@@ -143,6 +144,8 @@ class _Writer:
             "font_family": font_family_css(t.string),
             "text_anchor": _ANCHOR[t.halign],
         }
+        if t.role is not Role.TEXT:
+            attrs.update(fill=t.role.style.ink, stroke="none")
         if t.tag:
             attrs["data-tag"] = t.tag
         g.add(self.dwg.text(t.string, **attrs))

@@ -49,6 +49,7 @@ class RoleStyle:
     lineweight_mm: float
     linetype: LineType
     aci: int
+    ink: str = "black"  # colour in SVG and PDF (CSS name or #rrggbb)
 
 
 class Role(Enum):
@@ -64,6 +65,9 @@ class Role(Enum):
     DIMENSION = "DIMENSION"  # dimension and leader lines
     TABLE = "TABLE"  # thin grid lines of tables and the title block
     FILL = "FILL"  # solid fills (filled polygons)
+    SUBMISSION = "SUBMISSION"  # a checked student's drawing, blue
+    EXACT = "EXACT"  # the exact construction beside it, green dashed
+    ERRORS = "ERRORS"  # wrong segments and their errors, red
 
     @property
     def style(self) -> RoleStyle:
@@ -87,6 +91,9 @@ ROLE_STYLES: Mapping[Role, RoleStyle] = MappingProxyType(
         Role.DIMENSION: RoleStyle(0.25, LineType.CONTINUOUS, 3),
         Role.TABLE: RoleStyle(0.25, LineType.CONTINUOUS, 7),
         Role.FILL: RoleStyle(0.25, LineType.CONTINUOUS, 7),
+        Role.SUBMISSION: RoleStyle(0.35, LineType.CONTINUOUS, 5, "#1f4fd6"),
+        Role.EXACT: RoleStyle(0.25, LineType.DASHED, 3, "#13a03c"),
+        Role.ERRORS: RoleStyle(0.70, LineType.CONTINUOUS, 1, "#d62020"),
     }
 )
 

@@ -1,0 +1,155 @@
+"""What grading works with: options, the exact and re-derived values, drawn plans, row words."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..construct.graph import Construction, Evaluation
+from ..construct.segments import Segment
+from ..construct.step import Plan
+from ..scene.spec import Scene
+from .labels import LabelBook, PlanKey, plan_key
+from .match import Interpretation, QuantityIndex
+from .points import DrawnPlan, DrawnSheet
+from .report import (
+    NEW,
+    SWAPPED,
+    SegmentRow,
+    Tolerance,
+)
+from .submission import Submission
+from .texts import T, join
+
+SI_UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
+           "angular_acceleration": "rad/s²", "force": "N", "moment": "N·m", "inertia": "kg·m²",
+           "length": "m", "angle": "rad", "mass": "kg", "dimensionless": ""}
+PLAN_UNIT = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
+
+
+@dataclass
+class Options:
+    """How to check: crank angle, tolerances and scale factors per plan, label search."""
+
+    at_deg: float | None = None
+    tolerance: dict[Plan | None, Tolerance] = field(default_factory=dict)
+    mu: dict[Plan, float] = field(default_factory=dict)
+    label_distance: float | None = None
+    snap: float = 0.2
+
+    def tol(self, plan: Plan | None) -> Tolerance:
+        """The tolerance of a plan (or the default one)."""
+        return self.tolerance.get(plan) or self.tolerance.get(None) or Tolerance()
+
+
+# -- the student's own values: the construction re-evaluated from submitted points -------------
+class Rederive:
+    """Values of steps derived by the engine from the submitted points instead of the exact ones."""
+
+    def __init__(self, c: Construction, ev: Evaluation, k: int,
+                 overrides: dict[str, np.ndarray]) -> None:
+        self.c, self.ev, self.k = c, ev, k
+        self.phi = ev.phi[k:k + 1]
+        self.over = {s: np.asarray(v, dtype=float).reshape(1, 2) for s, v in overrides.items()}
+        self._all = c.evaluate(self.phi, overrides=self.over)
+        self._but: dict[str, Evaluation] = {}
+
+    def exact(self, sid: str) -> np.ndarray:
+        """The exact value of a step (leading axis 1)."""
+        return np.asarray(self.ev[sid][self.k:self.k + 1])
+
+    def own(self, sid: str) -> np.ndarray:
+        """The value the step gets from the submitted points (never its own submitted value)."""
+        ev = self._all
+        if sid in self.over:
+            ev = self._but.get(sid) or self._but.setdefault(sid, self.c.evaluate(
+                self.phi, overrides={s: v for s, v in self.over.items() if s != sid}))
+        with np.errstate(all="ignore"):
+            return np.asarray(ev[sid])
+
+
+# -- grading at one crank position ------------------------------------------------------------
+@dataclass
+class Ctx:
+    scene: Scene
+    sub: Submission
+    c: Construction
+    ev: Evaluation
+    book: LabelBook
+    qi: QuantityIndex
+    sheet: DrawnSheet | None
+    interp: Interpretation
+    options: Options
+    scales: dict[Plan, float]          # the scene's own scale factors (paper tolerance fallback)
+
+
+@dataclass
+class Drawn:
+    dp: DrawnPlan
+    mu: float | None
+    mu_source: str
+    anchor: str | None
+    si: dict[str, np.ndarray]          # step → submitted value (SI, exact frame)
+    reference: Segment | None = None
+    status: dict[str, str] = field(default_factory=dict)      # step → cause of a wrong point
+    errors: dict[str, float] = field(default_factory=dict)    # step → total error (mm)
+    own_err: dict[str, float] = field(default_factory=dict)
+    tol: dict[str, float] = field(default_factory=dict)
+    swapped: dict[str, str] = field(default_factory=dict)
+
+
+def exact_at(ctx: Ctx, sid: str, k: int) -> np.ndarray:
+    return np.asarray(ctx.ev[sid][k], dtype=float)
+
+
+def segments_of(c: Construction, key: PlanKey) -> list[Segment]:
+    out = []
+    for s in c.segments:
+        group = c[s.start].group if s.plan is Plan.FORCE else ""
+        if plan_key(s.plan, group) == key or (s.plan is Plan.FORCE
+                                                and plan_key(s.plan, c[s.end].group) == key):
+            out.append(s)
+    return out
+
+
+def row_error(r: SegmentRow) -> str:
+    kinds = []
+    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
+        kinds.append("length")
+    if r.direction_deg is not None and r.tolerance_deg is not None and \
+            abs(r.direction_deg) > r.tolerance_deg:
+        kinds.append("direction")
+    return " and ".join(kinds)
+
+
+def row_brief(r: SegmentRow) -> str:
+    parts = []
+    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
+        parts.append(T("brief.long" if r.error_mm > 0 else "brief.short", name=r.name,
+                       err=abs(r.error_mm)))
+    if r.direction_deg is not None and r.tolerance_deg is not None and \
+            abs(r.direction_deg) > r.tolerance_deg:
+        parts.append(T("brief.turned", name=r.name, dir=r.direction_deg))
+    return join(parts) if parts else T("brief.off", name=r.name)
+
+
+def roots_of(ctx: Ctx, status: dict[str, str], sid: str) -> list[str]:
+    """Wrong points with a new error (or swapped labels) that a step is built from."""
+    anc = set(ctx.c.ancestors([sid])) - {sid}
+    order = list(ctx.c.steps)
+    return sorted((s for s in anc if status.get(s) in (NEW, SWAPPED)), key=order.index)
+
+
+
+def labels_fn(ctx: Ctx) -> Any:
+    def label(sid: str) -> str:
+        return ctx.c[sid].label
+    return label
+
+
+
+
+def seg_exact(ctx: Ctx, seg: Segment, k: int) -> float:
+    return float(np.hypot(*(exact_at(ctx, seg.end, k) - exact_at(ctx, seg.start, k))))

@@ -1,0 +1,85 @@
+"""A drawing as a graph: line ends that are one point, arrowhead corners and loose ends, the
+separate drawings (components) of a sheet."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..geom.sketch import cluster, components
+from .submission import DrawnLine, Point
+
+#: strokes shorter than this (mm) may be arrowhead barbs, hatching or ticks
+BARB_MAX_MM = 8.0
+
+
+@dataclass
+class Graph:
+    nodes: np.ndarray                  # (M, 2)
+    line_nodes: list[tuple[int, int]]  # per line
+    markers: dict[int, str]            # node → marker entity
+    decoration: set[int]               # arrowhead corners: labels go elsewhere first
+    component: list[int]               # node → drawing
+    degree: list[int]                  # line ends at each node
+
+
+def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float) -> Graph:
+    pts = [p for ln in lines for p in (ln.start, ln.end)] + [m[0] for m in markers]
+    arr = np.asarray(pts, dtype=float).reshape(-1, 2)
+    cl = [int(x) for x in cluster(arr, snap)]
+    m = max(cl) + 1 if cl else 0
+    nodes = np.zeros((m, 2))
+    counts = np.zeros(m)
+    for i, c in enumerate(cl):
+        nodes[c] += arr[i]
+        counts[c] += 1
+    if m:
+        nodes /= counts[:, None]
+    line_nodes = [(cl[2 * i], cl[2 * i + 1]) for i in range(len(lines))]
+    marker_nodes = {cl[2 * len(lines) + j]: markers[j][1] for j in range(len(markers))}
+    at_node: dict[int, list[int]] = {}
+    for i, (a, b) in enumerate(line_nodes):
+        at_node.setdefault(a, []).append(i)
+        at_node.setdefault(b, []).append(i)
+    length = [ln.length for ln in lines]
+    decoration: set[int] = set()
+    for n, idx in at_node.items():
+        if n in marker_nodes or any(length[i] > BARB_MAX_MM for i in idx):
+            continue
+        for i in idx:
+            other = line_nodes[i][1] if line_nodes[i][0] == n else line_nodes[i][0]
+            if any(length[j] >= 2.5 * length[i] for j in at_node.get(other, ())):
+                decoration.add(n)
+                break
+    degree_of = {n: len(idx) for n, idx in at_node.items()}
+    for i, (a, b) in enumerate(line_nodes):
+        da, db = degree_of.get(a, 0), degree_of.get(b, 0)
+        if length[i] <= BARB_MAX_MM and da == 1 and db == 1 and a not in marker_nodes \
+                and b not in marker_nodes:
+            decoration |= {a, b}           # hatching of a support, a loose short stroke
+        for end, other, deg in ((a, b, da), (b, a, db)):
+            if deg == 1 and end not in marker_nodes and _overshoot(nodes, end, other, at_node,
+                                                                   snap):
+                decoration.add(end)
+    ends = np.asarray(line_nodes, dtype=np.int64).reshape(-1, 2)
+    component = [int(x) for x in components(m, ends[:, 0], ends[:, 1])]
+    degree = [len(at_node.get(i, ())) for i in range(m)]
+    return Graph(nodes, line_nodes, marker_nodes, decoration, component, degree)
+
+
+def _overshoot(nodes: np.ndarray, end: int, other: int, at_node: dict[int, list[int]],
+               snap: float, reach: float = 15.0) -> bool:
+    """True if the line from ``other`` to the loose ``end`` passes through a point where other
+    lines meet, within ``reach`` mm of the end: a construction line drawn on past its point."""
+    e, o = nodes[end], nodes[other]
+    d = o - e
+    length = float(np.hypot(*d))
+    if length < 1e-9:
+        return False
+    u = d / length
+    rel = nodes - e
+    along = rel @ u
+    across = np.abs(rel[:, 0] * u[1] - rel[:, 1] * u[0])
+    hits = np.nonzero((along > snap) & (along < min(reach, length - snap)) & (across <= snap))[0]
+    return any(len(at_node.get(int(k), ())) >= 2 for k in hits)

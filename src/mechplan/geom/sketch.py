@@ -1,0 +1,65 @@
+"""Geometry of hand-drawn sketches: points that are one point, joined drawings, line crossings.
+
+Vectorised over all points or segments of a drawing (numpy, shapely's STRtree, scipy's sparse
+graphs); used to read a student's drawing.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import shapely
+from numpy.typing import NDArray
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from shapely import STRtree
+
+#: lines crossing at less than this angle do not define a point
+MIN_CROSSING_DEG = 5.0
+
+
+def cluster(points: NDArray[np.float64], snap: float) -> NDArray[np.int64]:
+    """Cluster index of each point (M, 2): points closer than ``snap`` (transitively) are one
+    cluster; clusters are numbered in order of their first point."""
+    if not len(points):
+        return np.zeros(0, dtype=np.int64)
+    geoms = shapely.points(points)
+    a, b = STRtree(geoms).query(geoms, predicate="dwithin", distance=snap)
+    return components(len(points), a, b)
+
+
+def components(n: int, a: NDArray[np.int64], b: NDArray[np.int64]) -> NDArray[np.int64]:
+    """Connected component of each of ``n`` nodes joined by the edges ``a[i]``–``b[i]``,
+    numbered in order of their first node."""
+    edges = coo_matrix((np.ones(len(a)), (np.asarray(a), np.asarray(b))), shape=(n, n))
+    _, labels = connected_components(edges, directed=False)
+    _, first = np.unique(labels, return_index=True)
+    order = np.argsort(np.argsort(first))
+    return np.asarray(order[labels], dtype=np.int64)
+
+
+def crossings(segments: NDArray[np.float64], near: tuple[float, float],
+              radius: float) -> NDArray[np.float64]:
+    """Points (K, 2) where two of the segments (M, 2, 2) cross within their extents, closer than
+    ``radius`` to ``near``; nearly parallel pairs (< 5°) cross nowhere."""
+    s = np.asarray(segments, dtype=float).reshape(-1, 2, 2)
+    x, y = near
+    lo, hi = s.min(axis=1), s.max(axis=1)
+    s = s[(lo[:, 0] - radius <= x) & (x <= hi[:, 0] + radius)
+          & (lo[:, 1] - radius <= y) & (y <= hi[:, 1] + radius)]
+    i, j = np.triu_indices(len(s), k=1)
+    p, r = s[i, 0], s[i, 1] - s[i, 0]
+    q, u = s[j, 0], s[j, 1] - s[j, 0]
+    d = r[:, 0] * u[:, 1] - r[:, 1] * u[:, 0]
+    la, lb = np.hypot(*r.T), np.hypot(*u.T)
+    ok = np.abs(d) >= math.sin(math.radians(MIN_CROSSING_DEG)) * la * lb
+    d = np.where(ok, d, 1.0)
+    w = q - p
+    t = (w[:, 0] * u[:, 1] - w[:, 1] * u[:, 0]) / d
+    v = (w[:, 0] * r[:, 1] - w[:, 1] * r[:, 0]) / d
+    eps = 1e-6
+    ok &= (t >= -eps) & (t <= 1 + eps) & (v >= -eps) & (v <= 1 + eps)
+    pts = p + t[:, None] * r
+    ok &= np.hypot(pts[:, 0] - x, pts[:, 1] - y) <= radius
+    return np.asarray(pts[ok], dtype=np.float64)

@@ -1,0 +1,42 @@
+"""geom.sketch (clusters, components, crossings) and legacy Vietnamese text, by hand-made cases."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from mechplan.geom.sketch import cluster, components, crossings
+
+
+def test_cluster_is_transitive_and_numbered_by_first_point() -> None:
+    pts = np.array([[5.0, 5.0], [0.0, 0.0], [0.15, 0.0], [0.3, 0.0], [5.1, 5.0], [9.0, 9.0]])
+    assert cluster(pts, 0.2).tolist() == [0, 1, 1, 1, 0, 2]       # 0–0.15–0.3 chain
+    assert cluster(np.zeros((0, 2)), 0.2).tolist() == []
+
+
+def test_components_of_edges() -> None:
+    assert components(5, np.array([0, 3]), np.array([1, 4])).tolist() == [0, 0, 1, 2, 2]
+
+
+def test_crossings() -> None:
+    segs = np.array([[[0, 0], [10, 10]], [[0, 10], [10, 0]],       # cross at (5, 5)
+                     [[0, 1], [10, 1.5]],                           # 2.9° to ... and far
+                     [[20, 0], [30, 0]]])                           # elsewhere
+    got = crossings(segs, (5.0, 5.0), 1.0)
+    assert got.shape == (1, 2) and got[0] == pytest.approx([5.0, 5.0])
+    # nearly parallel lines (< 5°) do not define a point
+    assert len(crossings(np.array([[[0, 0], [10, 0]], [[0, -0.2], [10, 0.2]]]), (5, 0), 1)) == 0
+
+
+@pytest.mark.parametrize("text, font, expected", [
+    ("H\xe4a \xae\xe5 v\xcbn t\xe8c", "", ("Họa đồ vận tốc", "tcvn3")),
+    ("gia t\xe8c", ".VnTime.ttf", ("gia tốc", "tcvn3")),          # the font decides
+    ("accélération", "", ("accélération", None)),                  # French stays French
+    ("μv = 0,01 m/s/mm; N·m; 5 µm", "", ("μv = 0,01 m/s/mm; N·m; 5 µm", None)),
+    ("Họa đồ vận tốc", "", ("Họa đồ vận tốc", None)),              # already Unicode
+    ("Hoïa ñoà vaän toác", "VNI-Times", ("Hoïa ñoà vaän toác", "vni")),
+])
+def test_legacy_vietnamese(text: str, font: str, expected: tuple[str, str | None]) -> None:
+    from mechplan.check.notation import decode_legacy
+
+    assert decode_legacy(text, font) == expected
