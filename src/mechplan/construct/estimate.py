@@ -54,7 +54,8 @@ class ErrorEstimate:
         """
         rel = self.relative_of[step_id].astype(float)
         if step_id in self.divisor:
-            rel = rel / self.divisor[step_id]
+            with np.errstate(invalid="ignore", divide="ignore"):
+                rel = rel / self.divisor[step_id]
         return np.where(np.isnan(rel), np.inf, rel)
 
     def absolute(self, step_id: str) -> Array:
@@ -70,7 +71,11 @@ def length_scale(c: Construction, samples: int = 72) -> float:
     not depend on which other positions are evaluated with it. Computed once per construction.
     """
     if "length" not in c.derived:
-        points = [s.id for s in c if s.plan is Plan.POSITION and s.kind is Kind.POINT]
+        # moving points only: a frame point placed far away (to give a load its direction) does
+        # not make the mechanism larger
+        points = [s.id for s in c if s.plan is Plan.POSITION and s.kind is Kind.POINT
+                  and s.op is not Op.FIXED_POINT] or [
+            s.id for s in c if s.plan is Plan.POSITION and s.kind is Kind.POINT]
         ev = c.evaluate(np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False))
         ev.evaluate_all(points)
         per_sample = np.zeros(samples)
@@ -222,7 +227,7 @@ def _magnitude_divisor(value: Array, scale: float, dtype: type) -> Array:
         size = np.sqrt(np.einsum("ij,ij->i", value, value))
     else:
         size = np.abs(value)
-    with np.errstate(invalid="ignore"):
+    with np.errstate(invalid="ignore", over="ignore"):
         return np.maximum(size / scale, 1.0).astype(dtype)
 
 
