@@ -137,6 +137,8 @@ class Solution:
         (keys ``"1"``, ``"2"`` …), shape (N,), counter-clockwise positive.
     forces : Forces or None
         Kinetostatics when the force plan was asked for (a scene with masses or loads).
+    flags : tuple of (position, quantity, subject, estimate)
+        Results whose estimated relative error exceeds the tolerance (see docs/estimates.md).
     """
 
     phi_deg: np.ndarray
@@ -147,6 +149,7 @@ class Solution:
     omega: Mapping[str, np.ndarray]
     epsilon: Mapping[str, np.ndarray]
     forces: Forces | None
+    flags: tuple[tuple[int, str, str, float], ...] = ()
 
     @property
     def positions(self) -> int:
@@ -165,8 +168,11 @@ class Mechanism:
     """
 
     def __init__(self, scene: Scene) -> None:
+        from .fast import FastPath
+
         self.scene = scene
         self._built: dict[tuple[str, ...], tuple[Structure, Construction]] = {}
+        self._fast = FastPath(scene)
 
     def __repr__(self) -> str:
         return f"<mechplan.Mechanism {self.scene.title!r} from {self.scene.path}>"
@@ -211,7 +217,8 @@ class Mechanism:
         return self._built[plans]
 
     def solve(self, phi_deg: float | Sequence[float] | np.ndarray | None = None, *,
-              positions: int | None = None, plans: Sequence[str] | None = None) -> Solution:
+              positions: int | None = None, plans: Sequence[str] | None = None,
+              fast: bool | None = None) -> Solution:
         """Solve the mechanism at crank angles.
 
         Parameters
@@ -223,6 +230,10 @@ class Mechanism:
         plans : sequence of str, optional
             Any of ``"position"``, ``"velocity"``, ``"acceleration"``, ``"force"`` (default:
             the scene's ``[analysis] plans``, with ``"force"`` when it has masses or loads).
+        fast : bool, optional
+            Use the fused kernel (JIT-compiled with numba, built once per set of plans) for
+            kinematic plans. Default: when numba is installed. Same values (to 1e-15 of each
+            plan's scale), estimates and flags as the numpy path.
 
         Returns
         -------
@@ -251,10 +262,45 @@ class Mechanism:
                                     f"(got {phi_deg!r})")
             at = [float(x) for x in arr]
         chosen = self._plans(plans)
+        if fast is not False and "force" not in chosen:
+            quick = self._solve_fast(chosen, at, positions)
+            if quick is not None:
+                return quick
+        elif fast and "force" in chosen:
+            raise MechplanError("fast=True computes kinematics only; the force plan runs on the "
+                                "numpy path (leave fast unset)")
         scene = dataclasses.replace(self.scene, points_of_interest=())
         solved = solve(scene, at_deg=at, count=int(positions) if positions else None,
                        plans=chosen, built=self._build(chosen), scales=False)
         return _solution(solved)
+
+
+    def _solve_fast(self, chosen: tuple[str, ...], at: list[float] | None,
+                    positions: int | None) -> Solution | None:
+        c = self._build(chosen)[1]
+        if at is not None:
+            phi = np.radians(np.asarray(at, dtype=float))
+        else:
+            from .solve import crank_positions
+
+            phi = crank_positions(self.scene, c, int(positions) if positions else None)
+        if phi.shape[0] > 1000:
+            from .limits import ensure_within_budget
+
+            ensure_within_budget(int(phi.shape[0]), len(c.steps), file=self.scene.path)
+        result = self._fast.evaluate(c, chosen, phi)
+        if result is None:
+            return None
+        by_q: dict[str, dict[str, np.ndarray]] = {q: {} for q in
+                                                   ("r", "v", "a", "angle", "omega", "epsilon")}
+        for (q, subject), value in result.values.items():
+            by_q[q][subject] = value
+        phi_deg = np.degrees(phi)
+        phi_deg.flags.writeable = False
+        return Solution(phi_deg, ByName(by_q["r"], "position"),
+                        ByName(by_q["v"], "velocity"), ByName(by_q["a"], "acceleration"),
+                        ByName(by_q["angle"], "angle"), ByName(by_q["omega"], "omega"),
+                        ByName(by_q["epsilon"], "epsilon"), None, result.flagged)
 
 
 def _solution(s: _Solved) -> Solution:
@@ -282,9 +328,10 @@ def _solution(s: _Solved) -> Solution:
             if plan in s.plans and c.has_result(quantity, link):
                 out[link] = _frozen(ev.get(accessor(link)))
     forces = _forces(s.extras["forces"]) if "forces" in s.extras else None
+    flags = tuple((f.k, f.quantity, f.subject, f.estimate) for f in s.flags)
     return Solution(_frozen(np.degrees(s.phi)), ByName(r, "position"), ByName(v, "velocity"),
                     ByName(a, "acceleration"), ByName(angle, "angle"), ByName(omega, "omega"),
-                    ByName(epsilon, "epsilon"), forces)
+                    ByName(epsilon, "epsilon"), forces, flags)
 
 
 def _take(out: dict[str, np.ndarray], point: str, ev: Evaluation, accessor: Any) -> None:

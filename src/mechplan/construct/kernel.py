@@ -362,15 +362,21 @@ class Kernel:
     function: Callable[..., None]
     compiled: bool
 
-    def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
-                                                   np.ndarray]:
-        """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build mask)."""
+    def run(self, phi: np.ndarray) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
+        """Evaluate at φ (rad): the outputs in target order, the (N, targets) relative estimates
+        and the cannot-build mask."""
         phi = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
         n = phi.shape[0]
         outs = [np.empty((n, 2)) if k is Kind.POINT else np.empty(n) for k in self.kinds]
         rel = np.empty((n, len(self.targets)))
         bad = np.zeros(n, dtype=np.bool_)
         self.function(phi, rel, bad, *outs)
+        return outs, rel, bad
+
+    def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
+                                                   np.ndarray]:
+        """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build mask)."""
+        outs, rel, bad = self.run(phi)
         values = {}
         for sid, out in zip(self.targets, outs):
             out.flags.writeable = False
