@@ -11,6 +11,7 @@ from ..geom.vec import Array
 from .ops import EVALUATORS, SOURCES
 from .segments import Segment
 from .step import Op, Plan, Step
+from .terms import Row
 
 
 @dataclass(frozen=True, slots=True)
@@ -37,7 +38,7 @@ class Construction:
     steps: dict[str, Step] = field(default_factory=dict)
     segments: list[Segment] = field(default_factory=list)
     #: vector equations per (plan, group): the equation and rows of (term, direction, magnitude)
-    equations: dict[tuple[Plan, str], tuple[str, list[tuple[str, str, str]]]] = field(
+    equations: dict[tuple[Plan, str], tuple[str, list[Row]]] = field(
         default_factory=dict)
     #: named results: quantity key ("v_C", "omega_2", "r_C") → step id
     results: dict[str, str] = field(default_factory=dict)

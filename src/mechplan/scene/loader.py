@@ -8,12 +8,12 @@ import tomllib
 from pathlib import Path
 
 from ..errors import SceneError, TopologyError
+from ..i18n import LANGUAGES
 from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
 from ..model.structure import analyse
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
 from .reader import Table
 from .spec import (
-    LANGUAGES,
     PLANS,
     TITLE_BLOCK_FIELDS,
     DrawingSpec,

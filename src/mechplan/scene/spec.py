@@ -7,7 +7,6 @@ from dataclasses import dataclass, field
 
 from ..model.mechanism import Mechanism
 
-LANGUAGES = ("en", "ru", "vi", "zh")
 PLANS = ("position", "velocity", "acceleration", "force")
 #: fields of a sheet's title block that a scene may fill ([title_block])
 TITLE_BLOCK_FIELDS = (

@@ -10,13 +10,14 @@ from shapely import box
 from shapely.prepared import prep
 
 from ..construct.extremes import extreme_positions
+from ..construct.protocol import plan_title as plan_name
 from ..construct.scale import round_scale
 from ..construct.step import Plan
 from ..errors import DrawingError, MechplanError
 from ..model.mechanism import GROUND, PairKind
 from ..solve import Solution
 from .frame import make_frame
-from .panels import LEVER_TITLE, Panel, plan_title, position_plan, vector_plan, zhukovsky_lever
+from .panels import Panel, lever_title, plan_title, position_plan, vector_plan, zhukovsky_lever
 from .primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 
 GAP = 8.0          # mm between panels
@@ -82,8 +83,7 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
         ev_all.get(f"pos.{p}")
     highlight = plan_positions(sol)
     numbers = [str(k) for k in range(sol.positions)]
-    title = {"en": "Position plan", "ru": "План положений", "vi": "Họa đồ vị trí",
-             "zh": "机构位置图"}[lang]
+    title = plan_name(Plan.POSITION, lang)
     panels = [position_plan(c, ev_all, ev_traj, scene.mechanism, highlight, extremes, ev_ext,
                             mu[Plan.POSITION], lang, title, numbers)]
     for k in highlight:
@@ -98,7 +98,7 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
                 panels.append(vector_plan(c, ev_all, k, Plan.FORCE, mu[Plan.FORCE], lang,
                                           plan_title(Plan.FORCE, lang, k, phi_deg, group), group))
             lever = zhukovsky_lever(c, ev_all, k, mu[Plan.VELOCITY], lang,
-                                    f"{LEVER_TITLE[lang]} — φ = {phi_deg:.1f}°")
+                                    lever_title(lang, phi_deg))
             if lever is not None:
                 panels.append(lever)
     return panels

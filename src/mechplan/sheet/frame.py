@@ -14,6 +14,7 @@ from types import MappingProxyType
 from shapely.geometry import Polygon, box
 
 from mechplan.errors import DrawingError
+from mechplan.i18n import message
 from mechplan.scene.spec import TITLE_BLOCK_FIELDS
 from mechplan.sheet.fonts import text_width_mm
 from mechplan.sheet.primitives import (
@@ -117,23 +118,13 @@ class FrameLayout:
 # Labels
 # ---------------------------------------------------------------------------------------------
 
-_ISO_LABELS: Mapping[str, Mapping[str, str]] = MappingProxyType({
-    "en": {"school": "Legal owner", "department": "Responsible dept.",
-           "document_type": "Document type", "author": "Created by", "instructor": "Approved by",
-           "group": "Group", "date": "Date of issue", "scale": "Scale", "language": "Lang.",
-           "title": "Title", "designation": "Identification number", "sheet": "Sheet"},
-    "ru": {"school": "Организация", "department": "Кафедра", "document_type": "Тип документа",
-           "author": "Разработал", "instructor": "Проверил", "group": "Группа",
-           "date": "Дата выпуска", "scale": "Масштаб", "language": "Язык",
-           "title": "Наименование", "designation": "Обозначение", "sheet": "Лист"},
-    "vi": {"school": "Trường", "department": "Khoa", "document_type": "Loại tài liệu",
-           "author": "Người vẽ", "instructor": "Người kiểm tra", "group": "Lớp", "date": "Ngày",
-           "scale": "Tỉ lệ", "language": "Ngôn ngữ", "title": "Tên bản vẽ",
-           "designation": "Ký hiệu", "sheet": "Tờ số"},
-    "zh": {"school": "单位", "department": "系", "document_type": "图样类型", "author": "设计",
-           "instructor": "审核", "group": "班级", "date": "日期", "scale": "比例",
-           "language": "语言", "title": "图名", "designation": "图号", "sheet": "张次"},
-})
+#: keys of the labelled fields of a title block (texts: ``drafting.title_block.<key>``)
+_LABEL_KEYS = ("school", "department", "document_type", "author", "instructor", "group", "date",
+               "scale", "language", "title", "designation", "sheet")
+
+
+def _labels(language: str) -> dict[str, str]:
+    return {key: message(f"drafting.title_block.{key}", language) for key in _LABEL_KEYS}
 
 
 # ---------------------------------------------------------------------------------------------
@@ -236,7 +227,7 @@ def _sheet_of(f: Mapping[str, str]) -> str:
 
 
 def _iso_block(b: _Builder, f: Mapping[str, str], language: str) -> None:
-    lab = _ISO_LABELS[language]
+    lab = _labels(language)
     b.rect(0, 0, 180, 40)
     for y in (10, 20, 30):
         b.line(0, y, 70, y)

@@ -13,10 +13,12 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..construct.graph import Construction, Evaluation
-from ..construct.protocol import MM, PLAN_TITLE, localize_direction, pole_label
+from ..construct.protocol import mm, plan_title as plan_name
 from ..construct.segments import SegmentKind
 from ..construct.step import Kind, Op, Plan
-from ..units import format_number
+from ..construct.terms import pole_label
+from ..i18n import message
+from ..i18n import number as format_number
 from .fonts import text_width_mm
 from .labels import LabelPlacer
 from .primitives import Arrow, Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
@@ -26,16 +28,6 @@ TITLE_H = 5.0
 TABLE_H = 2.5
 ROW = 5.0
 
-SCALE_UNIT = {Plan.POSITION: ("μl", "m/mm"), Plan.VELOCITY: ("μv", "(m/s)/mm"),
-              Plan.ACCELERATION: ("μa", "(m/s²)/mm"), Plan.FORCE: ("μF", "N/mm")}
-UNIT = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
-HEAD = {
-    "en": ("segment", "on paper", "μ", "quantity", "value", "term", "direction", "magnitude"),
-    "ru": ("отрезок", "на чертеже", "μ", "величина", "значение", "вектор", "направление", "модуль"),
-    "vi": ("đoạn", "trên bản vẽ", "μ", "đại lượng", "giá trị", "véc tơ", "phương chiều", "giá trị"),
-    "zh": ("线段", "图上长度", "μ", "物理量", "数值", "矢量", "方向", "大小"),
-}
-POSITION_WORD = {"en": "position", "ru": "положение", "vi": "vị trí", "zh": "位置"}
 
 
 @dataclass
@@ -79,7 +71,7 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
 
 def mu_text(plan: Plan, mu: float, lang: str) -> str:
     """"μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
-    sym, unit = SCALE_UNIT[plan]
+    sym, unit = plan.scale_symbol, plan.scale_unit
     digits = max(0, -math.floor(math.log10(mu)) + 3) if mu > 0 else 3
     num = format_number(mu, digits, lang).rstrip("0").rstrip(",.")
     return f"{sym} = {num} {unit}"
@@ -173,8 +165,11 @@ def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, pla
     prims = panel.primitives
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(plan, mu, lang), LABEL_H))
-    head = HEAD[lang]
-    rows: list[tuple[str, ...]] = [(head[0], f"{head[1]}, {MM[lang]}", head[3], f"{head[4]}, {UNIT[plan]}")]
+    def head(key: str) -> str:
+        return message(f"sheet.head.{key}", lang)
+
+    rows: list[tuple[str, ...]] = [(head("segment"), f"{head('on_paper')}, {mm(lang)}",
+                                    head("quantity"), f"{head('value')}, {plan.unit}")]
     for seg in segments:
         if seg.start not in ev.values or seg.end not in ev.values:
             continue
@@ -193,8 +188,8 @@ def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, pla
             continue
         prims.append(Text((x0, y - TABLE_H), f"{g}:  {eq}", TABLE_H))
         y -= TABLE_H + 2.5
-        t2 = table([(head[5], head[6], head[7])] +
-                   [(term, localize_direction(d, lang), m) for term, d, m in terms], (x0, y))
+        t2 = table([(head("term"), head("direction"), head("magnitude"))] +
+                   [(term, d.text(lang), m) for term, d, m in terms], (x0, y))
         prims.append(t2)
         y -= sum(t2.row_heights_mm) + 4.0
 
@@ -319,12 +314,14 @@ def _pivot(p: tuple[float, float]) -> list[Primitive]:
 
 def plan_title(plan: Plan, lang: str, k: int, phi_deg: float, group: str | None = None) -> str:
     """"Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
-    head = PLAN_TITLE[plan][lang] + (f" {group}" if group else "")
-    return f"{head} — {POSITION_WORD[lang]} {k}, φ = {format_number(phi_deg, 1, lang)}°"
+    head = plan_name(plan, lang) + (f" {group}" if group else "")
+    position = message("sheet.position", lang)
+    return f"{head} — {position} {k}, φ = {format_number(phi_deg, 1, lang)}°"
 
 
-LEVER_TITLE = {"en": "Zhukovsky's lever", "ru": "Рычаг Жуковского", "vi": "Đòn Giucôpxki",
-               "zh": "儒可夫斯基杠杆"}
+def lever_title(lang: str, phi_deg: float) -> str:
+    """"Zhukovsky's lever — φ = 30.0°" (the angle always with a decimal point, as drawn before)."""
+    return f"{message('sheet.lever.title', lang)} — φ = {phi_deg:.1f}°"
 
 
 def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: str,

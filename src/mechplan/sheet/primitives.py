@@ -14,13 +14,12 @@ from types import MappingProxyType
 from typing import Any
 
 from mechplan.errors import DrawingError
+from mechplan.i18n import LANGUAGES
 
 Point = tuple[float, float]
 
 #: Lettering heights of ISO 3098-0 (capital height in mm).
 ISO_3098_HEIGHTS_MM: tuple[float, ...] = (1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)
-#: Sheet languages the labels are available in.
-LANGUAGES: tuple[str, ...] = ("en", "ru", "vi", "zh")
 
 
 class LineType(Enum):

@@ -7,6 +7,7 @@ from ...model.structure import Group
 from ..builder import Builder, alabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
+from ..terms import GIVEN, from_to, parallel, perp
 from .images import (
     absolute,
     coincident,
@@ -33,9 +34,9 @@ def emit_drive(b: Builder) -> None:
     b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
                        Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
                        omega=drive.omega, epsilon=drive.epsilon)
-    rows = [(f"a^n_{tip}", f"{tip} → {drive.pivot}", f"ω{drive.link}²·l_{drive.pivot}{tip}")]
+    rows = [(f"a^n_{tip}", from_to(tip, drive.pivot), f"ω{drive.link}²·l_{drive.pivot}{tip}")]
     if drive.epsilon:
-        rows.append((f"a^t_{tip}", f"⊥ {drive.pivot}{tip}", f"ε{drive.link}·l_{drive.pivot}{tip}"))
+        rows.append((f"a^t_{tip}", perp(f"{drive.pivot}{tip}"), f"ε{drive.link}·l_{drive.pivot}{tip}"))
     b.c.equations[(A, group)] = (f"a_{tip} = a^n_{tip} + a^t_{tip}", rows)
     absolute(b, tip, A, group)
     complete(b, drive.link, A, group)
@@ -101,9 +102,9 @@ def _rrr(b: Builder, g: Group) -> None:
     absolute(b, k, A, g.name)
     b.c.equations[(A, g.name)] = (
         f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{p2} + a^n_{k}{p2} + a^t_{k}{p2}", [
-            (f"a_{p1}", "✓", "✓"), (f"a^n_{k}{p1}", f"{k} → {p1}", f"ω{l1}²·l_{p1}{k}"),
-            (f"a^t_{k}{p1}", f"⊥ {p1}{k}", "?"), (f"a_{p2}", "✓", "✓"),
-            (f"a^n_{k}{p2}", f"{k} → {p2}", f"ω{l2}²·l_{p2}{k}"), (f"a^t_{k}{p2}", f"⊥ {p2}{k}", "?")])
+            (f"a_{p1}", GIVEN, "✓"), (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
+            (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?"), (f"a_{p2}", GIVEN, "✓"),
+            (f"a^n_{k}{p2}", from_to(k, p2), f"ω{l2}²·l_{p2}{k}"), (f"a^t_{k}{p2}", perp(f"{p2}{k}"), "?")])
 
 
 def _rrp(b: Builder, g: Group) -> None:
@@ -126,16 +127,16 @@ def _rrp(b: Builder, g: Group) -> None:
         b.segment(A, kk, meet, f"{b.c[kk].label} {b.c[meet].label}", f"a^r_{k}{l2}{k}{m}",
                   SegmentKind.SLIDING, g.name)
     absolute(b, k, A, g.name)
-    rows = [(f"a_{p1}", "✓", "✓"), (f"a^n_{k}{p1}", f"{k} → {p1}", f"ω{l1}²·l_{p1}{k}"),
-            (f"a^t_{k}{p1}", f"⊥ {p1}{k}", "?")]
+    rows = [(f"a_{p1}", GIVEN, "✓"), (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
+            (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?")]
     if m == GROUND:
         eq = f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1}"
-        rows.append((f"a_{k}", f"∥ {guide}", "?"))
+        rows.append((f"a_{k}", parallel(f"{guide}"), "?"))
     else:
         eq = (f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{k}{m} + a^k_{k}{l2}{k}{m} + "
               f"a^r_{k}{l2}{k}{m}")
-        rows += [(f"a_{k}{m}", "✓", "✓"), (f"a^k_{k}{l2}{k}{m}", f"⊥ {guide}", f"2ω{m}·v_{k}{l2}{k}{m}"),
-                 (f"a^r_{k}{l2}{k}{m}", f"∥ {guide}", "?")]
+        rows += [(f"a_{k}{m}", GIVEN, "✓"), (f"a^k_{k}{l2}{k}{m}", perp(f"{guide}"), f"2ω{m}·v_{k}{l2}{k}{m}"),
+                 (f"a^r_{k}{l2}{k}{m}", parallel(f"{guide}"), "?")]
     b.c.equations[(A, g.name)] = (eq, rows)
 
 
@@ -163,10 +164,10 @@ def _rpr(b: Builder, g: Group) -> None:
     b.c.equations[(A, g.name)] = (
         (f"a_{ps}{c} = a_{ps}{s} + a^k_{ps}{c}{ps}{s} + a^r_{ps}{c}{ps}{s} = a_{pc} + a^n_{ps}{c}{pc} + "
         f"a^t_{ps}{c}{pc}"), [
-            (f"a_{ps}{s}", "✓", "✓"), (f"a^k_{ps}{c}{ps}{s}", f"⊥ {guide.name}", f"2ω{c}·v_{ps}{c}{ps}{s}"),
-            (f"a^r_{ps}{c}{ps}{s}", f"∥ {guide.name}", "?"), (f"a_{pc}", "✓", "✓"),
-            (f"a^n_{ps}{c}{pc}", f"{ps} → {pc}", f"ω{c}²·l_{pc}{ps}"),
-            (f"a^t_{ps}{c}{pc}", f"⊥ {pc}{ps}", "?")])
+            (f"a_{ps}{s}", GIVEN, "✓"), (f"a^k_{ps}{c}{ps}{s}", perp(f"{guide.name}"), f"2ω{c}·v_{ps}{c}{ps}{s}"),
+            (f"a^r_{ps}{c}{ps}{s}", parallel(f"{guide.name}"), "?"), (f"a_{pc}", GIVEN, "✓"),
+            (f"a^n_{ps}{c}{pc}", from_to(ps, pc), f"ω{c}²·l_{pc}{ps}"),
+            (f"a^t_{ps}{c}{pc}", perp(f"{pc}{ps}"), "?")])
 
 
 def _prp(b: Builder, g: Group) -> None:
@@ -187,9 +188,9 @@ def _prp(b: Builder, g: Group) -> None:
     b.c.equations[(A, g.name)] = (
         (f"a_{k} = a_{k}{m1} + a^k_{k}{l1}{k}{m1} + a^r_{k}{l1}{k}{m1} = a_{k}{m2} + a^k_{k}{l2}{k}{m2} + "
         f"a^r_{k}{l2}{k}{m2}"), [
-            (f"a_{k}{m1}", "✓", "✓"), (f"a^k_{k}{l1}{k}{m1}", "⊥", f"2ω{m1}·v_{k}{l1}{k}{m1}"),
-            (f"a^r_{k}{l1}{k}{m1}", "∥", "?"), (f"a_{k}{m2}", "✓", "✓"),
-            (f"a^k_{k}{l2}{k}{m2}", "⊥", f"2ω{m2}·v_{k}{l2}{k}{m2}"), (f"a^r_{k}{l2}{k}{m2}", "∥", "?")])
+            (f"a_{k}{m1}", GIVEN, "✓"), (f"a^k_{k}{l1}{k}{m1}", perp(), f"2ω{m1}·v_{k}{l1}{k}{m1}"),
+            (f"a^r_{k}{l1}{k}{m1}", parallel(), "?"), (f"a_{k}{m2}", GIVEN, "✓"),
+            (f"a^k_{k}{l2}{k}{m2}", perp(), f"2ω{m2}·v_{k}{l2}{k}{m2}"), (f"a^r_{k}{l2}{k}{m2}", parallel(), "?")])
 
 
 def _rpp(b: Builder, g: Group) -> None:
@@ -210,5 +211,5 @@ def _rpp(b: Builder, g: Group) -> None:
     absolute(b, x, A, g.name)
     b.c.equations[(A, g.name)] = (
         f"a_{x} = a_{x}{m} + a^k + a^r_{x}{l2}{x}{m} = a_{x}{l1} + a^k + a^r_{x}{l2}{x}{l1}", [
-            (f"a_{x}{m}", "✓", "✓"), (f"a^r_{x}{l2}{x}{m}", "∥", "?"),
-            (f"a_{x}{l1}", "✓", "✓"), (f"a^r_{x}{l2}{x}{l1}", "∥", "?")])
+            (f"a_{x}{m}", GIVEN, "✓"), (f"a^r_{x}{l2}{x}{m}", parallel(), "?"),
+            (f"a_{x}{l1}", GIVEN, "✓"), (f"a^r_{x}{l2}{x}{l1}", parallel(), "?")])

@@ -37,6 +37,9 @@ from .. import ops
 from ..builder import Builder, alabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
+from ..terms import GIVEN, UNKNOWN, Direction, Relation, Row, from_to
+from ..terms import parallel as parallel_to
+from ..terms import perp as perp_to
 
 F = Plan.FORCE
 
@@ -202,7 +205,7 @@ class Term:
     force: str | None = None
     point: str | None = None      # position step of the point of application
     couple: str | None = None
-    direction: str = "✓"
+    direction: Direction = GIVEN
     magnitude: str = "✓"
     where: str = ""               # name of the point of application (for its velocity image)
 
@@ -264,7 +267,7 @@ def _inertia_and_weights(st: _State) -> None:
             q = st.add(f"force.Q.{link}", Op.FORCE_INERTIA, (b.acc[ms.centre],), Kind.POINT,
                        Role.RESULT, f"Q{link}", group, subject=(ms.centre, link), mass=ms.mass)
             b.result(f"Q_{link}", q)
-            _load(st, link, Term(f"Q{link}", q, s_pos, direction=f"opposite to π{alabel(ms.centre)}",
+            _load(st, link, Term(f"Q{link}", q, s_pos, direction=Direction(Relation.OPPOSITE, f"π{alabel(ms.centre)}"),
                                  magnitude=f"m{link}·a_{ms.centre}", where=ms.centre))
         if ms.inertia > 0:
             eps = b.bodies[link].epsilon
@@ -272,7 +275,7 @@ def _inertia_and_weights(st: _State) -> None:
             mq = st.add(f"force.Mq.{link}", Op.MOMENT_INERTIA, (eps,), Kind.SCALAR, Role.RESULT,
                         f"M_q{link}", group, subject=(link,), inertia=ms.inertia)
             b.result(f"M_q{link}", mq)
-            _load(st, link, Term(f"M_q{link}", couple=mq, direction=f"against ε{link}",
+            _load(st, link, Term(f"M_q{link}", couple=mq, direction=Direction(Relation.AGAINST, f"ε{link}"),
                                  magnitude=f"J_{ms.centre}·ε{link}"))
         if q is not None and mq is not None:
             h = st.add(f"force.h.{link}", Op.INERTIA_OFFSET, (q, mq), Kind.SCALAR,
@@ -289,7 +292,9 @@ def _inertia_and_weights(st: _State) -> None:
                        f"G{link}", group, subject=(ms.centre, link), mode="vector", vector=vec)
             b.result(f"G_{link}", w)
             arrow = {(0.0, -1.0): "↓", (0.0, 1.0): "↑", (1.0, 0.0): "→", (-1.0, 0.0): "←"}
-            _load(st, link, Term(f"G{link}", w, s_pos, direction=arrow.get((gx, gy), "∥ g"),
+            gdir = (Direction(Relation.SYMBOL, arrow[(gx, gy)]) if (gx, gy) in arrow
+                    else parallel_to("g"))
+            _load(st, link, Term(f"G{link}", w, s_pos, direction=gdir,
                                  magnitude=f"m{link}·g", where=ms.centre))
 
 
@@ -312,7 +317,7 @@ def _external_loads(st: _State) -> None:
         seen[point] = n + 1
         label = f"F_{point}" + "′" * n
         p = b.pos[point]
-        direction_text, magnitude_text = "✓", "✓"
+        direction_text, magnitude_text = GIVEN, "✓"
         if kind == "force":
             if spec.vector is not None:
                 f = st.add(sid, Op.FORCE_LOAD, (p,), Kind.POINT, Role.GIVEN, label, group,
@@ -321,7 +326,7 @@ def _external_loads(st: _State) -> None:
                 f = st.add(sid, Op.FORCE_LOAD, (p, b.pos[spec.towards]), Kind.POINT, Role.GIVEN,
                            label, group, subject=(point, spec.towards), mode="towards",
                            magnitude=float(spec.magnitude))
-                direction_text = f"{point} → {spec.towards}"
+                direction_text = from_to(point, spec.towards)
             else:
                 vec = (spec.magnitude * math.cos(spec.angle), spec.magnitude * math.sin(spec.angle))
                 f = st.add(sid, Op.FORCE_LOAD, (p,), Kind.POINT, Role.GIVEN, label, group,
@@ -332,7 +337,8 @@ def _external_loads(st: _State) -> None:
             assert slides_on is not None and theta is not None    # Loading.check made sure
             guide = b.mech.guides[slides_on]
             towards = b.pos[spec.towards]
-            direction_text = f"∥ {guide.name}, towards {spec.towards}"
+            direction_text = Direction(Relation.PARALLEL, guide.name,
+                                       then=Direction(Relation.TOWARDS, spec.towards))
             if kind == "pressure":
                 area = math.pi * spec.bore ** 2 / 4.0
                 f = st.add(sid, Op.FORCE_LOAD, (p, towards, theta), Kind.POINT, Role.GIVEN,
@@ -484,11 +490,11 @@ def _tangential(st: _State, group: str, link: str, partner: str, about: str, at:
                   f"R^t_{pair_key(partner, link)}", group, subject=(at, about, st.label(total)))
 
 
-def _rows(terms: list[Term]) -> list[tuple[str, str, str]]:
+def _rows(terms: list[Term]) -> list[Row]:
     return [(t.label, t.direction, t.magnitude) for t in terms if t.force is not None]
 
 
-def _equation(st: _State, group: str, rows: list[tuple[str, str, str]]) -> None:
+def _equation(st: _State, group: str, rows: list[Row]) -> None:
     st.b.c.equations[(F, group)] = (" + ".join(r[0] for r in rows) + " = 0", rows)
 
 
@@ -515,10 +521,10 @@ def _rrr(st: _State, g: Group) -> None:
     _reaction(st, gn, g.outer1, m1, l1, r1)
     _reaction(st, gn, g.outer2, m2, l2, r2)
     _reaction(st, gn, g.inner, l2, l1, r21)
-    _equation(st, gn, [(st.label(t1), f"⊥ {p1}{k}", "✓"), *_rows(st.terms[l1]),
-                       *_rows(st.terms[l2]), (st.label(t2), f"⊥ {p2}{k}", "✓"),
-                       (f"R^n_{pair_key(m2, l2)}", f"∥ {p2}{k}", "?"),
-                       (f"R^n_{pair_key(m1, l1)}", f"∥ {p1}{k}", "?")])
+    _equation(st, gn, [(st.label(t1), perp_to(f"{p1}{k}"), "✓"), *_rows(st.terms[l1]),
+                       *_rows(st.terms[l2]), (st.label(t2), perp_to(f"{p2}{k}"), "✓"),
+                       (f"R^n_{pair_key(m2, l2)}", parallel_to(f"{p2}{k}"), "?"),
+                       (f"R^n_{pair_key(m1, l1)}", parallel_to(f"{p1}{k}"), "?")])
 
 
 def _rrp(st: _State, g: Group) -> None:
@@ -544,9 +550,9 @@ def _rrp(st: _State, g: Group) -> None:
                            [*st.terms[l2], Term(f"R_{pair_key(l1, l2)}", r12, b.pos[k])],
                            f"M_{pair_key(m2, l2)}")
     _reaction(st, gn, g.outer2, m2, l2, r2, couple)
-    _equation(st, gn, [(st.label(t1), f"⊥ {p1}{k}", "✓"), *_rows(st.terms[l1]),
-                       *_rows(st.terms[l2]), (f"R_{pair_key(m2, l2)}", f"⊥ {guide}", "?"),
-                       (f"R^n_{pair_key(m1, l1)}", f"∥ {p1}{k}", "?")])
+    _equation(st, gn, [(st.label(t1), perp_to(f"{p1}{k}"), "✓"), *_rows(st.terms[l1]),
+                       *_rows(st.terms[l2]), (f"R_{pair_key(m2, l2)}", perp_to(f"{guide}"), "?"),
+                       (f"R^n_{pair_key(m1, l1)}", parallel_to(f"{p1}{k}"), "?")])
 
 
 def _rpr(st: _State, g: Group) -> None:
@@ -578,8 +584,8 @@ def _rpr(st: _State, g: Group) -> None:
     r_c = _between(st, gn, z, y, f"R_{pair_key(mc, c)}", "Rc")
     _reaction(st, gn, outer[s], ms, s, r_s)
     _reaction(st, gn, outer[c], mc, c, r_c)
-    _equation(st, gn, [*_rows(st.terms[s]), (f"R_{pair_key(c, s)}", f"⊥ {guide}", "✓"),
-                       (f"R_{pair_key(ms, s)}", "?", "?")])
+    _equation(st, gn, [*_rows(st.terms[s]), (f"R_{pair_key(c, s)}", perp_to(f"{guide}"), "✓"),
+                       (f"R_{pair_key(ms, s)}", UNKNOWN, "?")])
 
 
 def _prp(st: _State, g: Group) -> None:
@@ -606,8 +612,8 @@ def _prp(st: _State, g: Group) -> None:
     _reaction(st, gn, g.outer1, m1, l1, r1, c1)
     _reaction(st, gn, g.outer2, m2, l2, r2, c2)
     _equation(st, gn, [*_rows(st.terms[l1]), *_rows(st.terms[l2]),
-                       (f"R_{pair_key(m2, l2)}", f"⊥ {g2}", "?"),
-                       (f"R_{pair_key(m1, l1)}", f"⊥ {g1}", "?")])
+                       (f"R_{pair_key(m2, l2)}", perp_to(f"{g2}"), "?"),
+                       (f"R_{pair_key(m1, l1)}", perp_to(f"{g1}"), "?")])
 
 
 def _rpp(st: _State, g: Group) -> None:
@@ -639,8 +645,8 @@ def _rpp(st: _State, g: Group) -> None:
     _reaction(st, gn, g.inner, l1, l2, r12, c12)
     _reaction(st, gn, g.outer1, m1, l1, r1)
     _reaction(st, gn, g.outer2, m2, l2, r2, c2)
-    _equation(st, gn, [*_rows(st.terms[l2]), (f"R_{pair_key(m2, l2)}", f"⊥ {go}", "?"),
-                       (f"R_{pair_key(l1, l2)}", f"⊥ {gi}", "?")])
+    _equation(st, gn, [*_rows(st.terms[l2]), (f"R_{pair_key(m2, l2)}", perp_to(f"{go}"), "?"),
+                       (f"R_{pair_key(l1, l2)}", perp_to(f"{gi}"), "?")])
 
 
 # -- the driving link and Zhukovsky's lever --------------------------------------------------
@@ -660,7 +666,7 @@ def _driving_link(st: _State) -> None:
     pair = next(p for p in b.mech.pairs_of(link)
                 if p.other(link) == GROUND and p.kind is PairKind.REVOLUTE)
     _reaction(st, gn, pair, GROUND, link, r01)
-    _equation(st, gn, [*_rows(terms), (f"R_{pair_key(GROUND, link)}", "?", "?")])
+    _equation(st, gn, [*_rows(terms), (f"R_{pair_key(GROUND, link)}", UNKNOWN, "?")])
 
 
 def _lever(st: _State) -> None:

@@ -7,6 +7,7 @@ from ...model.structure import Group
 from ..builder import Builder, Image, vlabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
+from ..terms import GIVEN, parallel, perp
 from .images import (
     absolute,
     coincident,
@@ -34,7 +35,7 @@ def emit_drive(b: Builder) -> None:
                        Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
                        omega=drive.omega)
     b.c.equations[(V, group)] = (f"v_{tip} = ω{drive.link} × l_{drive.pivot}{tip}",
-                                 [(f"v_{tip}", f"⊥ {drive.pivot}{tip}", f"ω{drive.link}·l_{drive.pivot}{tip}")])
+                                 [(f"v_{tip}", perp(f"{drive.pivot}{tip}"), f"ω{drive.link}·l_{drive.pivot}{tip}")])
     absolute(b, tip, V, group)
     complete(b, drive.link, V, group)
 
@@ -72,8 +73,8 @@ def _rrr(b: Builder, g: Group) -> None:
     _relative(b, b.vel[p2], meet, f"v_{k}{p2}", SegmentKind.RELATIVE, g.name)
     absolute(b, k, V, g.name)
     b.c.equations[(V, g.name)] = (f"v_{k} = v_{p1} + v_{k}{p1} = v_{p2} + v_{k}{p2}", [
-        (f"v_{p1}", "✓", "✓"), (f"v_{k}{p1}", f"⊥ {p1}{k}", "?"),
-        (f"v_{p2}", "✓", "✓"), (f"v_{k}{p2}", f"⊥ {p2}{k}", "?")])
+        (f"v_{p1}", GIVEN, "✓"), (f"v_{k}{p1}", perp(f"{p1}{k}"), "?"),
+        (f"v_{p2}", GIVEN, "✓"), (f"v_{k}{p2}", perp(f"{p2}{k}"), "?")])
 
 
 def _rrp(b: Builder, g: Group) -> None:
@@ -96,9 +97,9 @@ def _rrp(b: Builder, g: Group) -> None:
     b.c.equations[(V, g.name)] = (
         f"v_{k} = v_{p1} + v_{k}{p1} = v_{km_name} + v_{k}{l2}{km_name}" if m != GROUND
         else f"v_{k} = v_{p1} + v_{k}{p1}", [
-            (f"v_{p1}", "✓", "✓"), (f"v_{k}{p1}", f"⊥ {p1}{k}", "?"),
-            *([(f"v_{km_name}", "✓", "✓")] if m != GROUND else []),
-            (f"v_{k}{l2}{km_name}" if m != GROUND else f"v_{k}", f"∥ {guide}", "?")])
+            (f"v_{p1}", GIVEN, "✓"), (f"v_{k}{p1}", perp(f"{p1}{k}"), "?"),
+            *([(f"v_{km_name}", GIVEN, "✓")] if m != GROUND else []),
+            (f"v_{k}{l2}{km_name}" if m != GROUND else f"v_{k}", parallel(f"{guide}"), "?")])
 
 
 def _rpr(b: Builder, g: Group) -> None:
@@ -120,8 +121,8 @@ def _rpr(b: Builder, g: Group) -> None:
     b.result(f"v_{ps}{c}", meet)
     b.result(f"v_rel_{s}{c}", meet)
     b.c.equations[(V, g.name)] = (f"v_{ps}{c} = v_{ps}{s} + v_{ps}{c}{ps}{s} = v_{pc} + v_{ps}{c}{pc}", [
-        (f"v_{ps}{s}", "✓", "✓"), (f"v_{ps}{c}{ps}{s}", f"∥ {guide.name}", "?"),
-        (f"v_{pc}", "✓", "✓"), (f"v_{ps}{c}{pc}", f"⊥ {pc}{ps}", "?")])
+        (f"v_{ps}{s}", GIVEN, "✓"), (f"v_{ps}{c}{ps}{s}", parallel(f"{guide.name}"), "?"),
+        (f"v_{pc}", GIVEN, "✓"), (f"v_{ps}{c}{pc}", perp(f"{pc}{ps}"), "?")])
 
 
 def _prp(b: Builder, g: Group) -> None:
@@ -139,8 +140,8 @@ def _prp(b: Builder, g: Group) -> None:
     _relative(b, k2, meet, f"v_{k}{l2}{k}{m2}", SegmentKind.SLIDING, g.name)
     absolute(b, k, V, g.name)
     b.c.equations[(V, g.name)] = (f"v_{k} = v_{k}{m1} + v_{k}{l1}{k}{m1} = v_{k}{m2} + v_{k}{l2}{k}{m2}", [
-        (f"v_{k}{m1}", "✓", "✓"), (f"v_{k}{l1}{k}{m1}", f"∥ {b.c[loc1].label}", "?"),
-        (f"v_{k}{m2}", "✓", "✓"), (f"v_{k}{l2}{k}{m2}", f"∥ {b.c[loc2].label}", "?")])
+        (f"v_{k}{m1}", GIVEN, "✓"), (f"v_{k}{l1}{k}{m1}", parallel(f"{b.c[loc1].label}"), "?"),
+        (f"v_{k}{m2}", GIVEN, "✓"), (f"v_{k}{l2}{k}{m2}", parallel(f"{b.c[loc2].label}"), "?")])
 
 
 def _rpp(b: Builder, g: Group) -> None:
@@ -160,5 +161,5 @@ def _rpp(b: Builder, g: Group) -> None:
         _relative(b, xm, meet, f"v_{x}{l2}{x}{m}", SegmentKind.SLIDING, g.name)
     absolute(b, x, V, g.name)
     b.c.equations[(V, g.name)] = (f"v_{x} = v_{x}{m} + v_{x}{l2}{x}{m} = v_{x}{l1} + v_{x}{l2}{x}{l1}", [
-        (f"v_{x}{m}", "✓", "✓"), (f"v_{x}{l2}{x}{m}", f"∥ {b.c[loc_ext].label}", "?"),
-        (f"v_{x}{l1}", "✓", "✓"), (f"v_{x}{l2}{x}{l1}", f"∥ {b.c[loc_in].label}", "?")])
+        (f"v_{x}{m}", GIVEN, "✓"), (f"v_{x}{l2}{x}{m}", parallel(f"{b.c[loc_ext].label}"), "?"),
+        (f"v_{x}{l1}", GIVEN, "✓"), (f"v_{x}{l2}{x}{l1}", parallel(f"{b.c[loc_in].label}"), "?")])
