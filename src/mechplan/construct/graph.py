@@ -8,9 +8,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geom.vec import Array
-from .ops import EVALUATORS, SOURCES
+from .ops import Source, spec
 from .segments import Segment
-from .step import Op, Plan, Step
+from .step import Plan, Step
 from .terms import Row
 
 
@@ -164,15 +164,18 @@ class Evaluation:
 
     def _compute(self, step: Step) -> None:
         value: Array
-        if step.op is Op.CRANK_ANGLE:
+        op = spec(step.op)
+        if op.source is Source.DRIVE:
             theta = self.construction.drive.absolute(self.phi)
             value, gap, sine = theta.astype(self.dtype), None, None
-        elif step.op in SOURCES:
-            value, gap, sine = SOURCES[step.op](step, self.n)
+        elif op.source is Source.POSITIONS:
+            assert op.evaluate is not None
+            value, gap, sine = op.evaluate(step, self.n)
             value = value.astype(self.dtype)
         else:
+            assert op.evaluate is not None
             args = [self.values[i] for i in step.inputs]
-            value, gap, sine = EVALUATORS[step.op](step, *args)
+            value, gap, sine = op.evaluate(step, *args)
         stored: Array = np.asarray(value)
         stored.flags.writeable = False
         self.values[step.id] = stored

@@ -12,27 +12,21 @@ import math
 
 import numpy as np
 
-from ..i18n import has_message, message, number
+from ..i18n import message, number
 from .graph import Construction, Evaluation
+from .ops import SPECS, spec
 from .segments import Segment
 from .step import Op, Plan, Step
 from .terms import pole_label
 
-#: force-plan steps that say nothing a reader needs (drawn, not written)
-SILENT = {Op.LINE_OF_ACTION}
 _OFFSETS = {Op.GUIDE_OFFSET, Op.INERTIA_OFFSET}
 _ANGLES = {Op.CRANK_ANGLE, Op.ANGLE_OF, Op.ANGLE_PLUS, Op.CARRIER_ANGLE}
 #: steps whose measured segments follow a colon
 _COLON = {Op.LINE_LINE, Op.SIMILAR_IMAGE, Op.RIGID_VELOCITY, Op.RIGID_ACCELERATION, Op.FORCE_CLOSE}
 
 
-def op_message(op: Op) -> str:
-    """Message id of an operation's protocol sentence."""
-    return f"protocol.op.{op.value}"
-
-
 #: operation → message id of its sentence (kept for ``check/``, which asks whether one exists)
-TEXT: dict[Op, str] = {op: op_message(op) for op in Op if op not in SILENT}
+TEXT: dict[Op, str] = {op: s.message for op, s in SPECS.items() if s.message}
 
 
 def plan_title(plan: Plan, lang: str) -> str:
@@ -97,15 +91,15 @@ def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
     else:
         v = ""
     label = pole_label(step.label, lang)
-    msgid = op_message(step.op)
-    if not has_message(msgid, lang):
+    msgid = spec(step.op).message
+    if msgid is None:
         return f"{label} = {v or m}"
     fields = {"label": label, "m": (": " + m) if m and step.op in _COLON else m, "v": v,
               "pole": "p" if step.plan is Plan.VELOCITY else pole_label("π", lang), "a": "", "b": "",
               "s0": subject[0], "s1": subject[1], "s2": subject[2]}
     if step.op is Op.SIMILAR_IMAGE:
-        a_lbl, b_lbl = (pole_label(c[i].label, lang) for i in step.inputs[:2])
-        fields.update(a=a_lbl, b=b_lbl)
+        fields.update(a=pole_label(c[step.input("a")].label, lang),
+                      b=pole_label(c[step.input("b")].label, lang))
     return message(msgid, lang, **fields)
 
 
@@ -114,7 +108,6 @@ def protocol(c: Construction, ev: Evaluation, k: int, lang: str, mu: dict[Plan, 
     """(plan, label, sentence) for every evaluated step of the given plans at position k."""
     out = []
     for step in c:
-        if step.plan in plans and step.id in ev.values and step.op is not Op.FIXED_POINT \
-                and step.op not in SILENT:
+        if step.plan in plans and step.id in ev.values and spec(step.op).message is not None:
             out.append((step.plan, pole_label(step.label, lang), sentence(c, step, ev, k, lang, mu)))
     return out

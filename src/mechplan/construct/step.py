@@ -124,6 +124,18 @@ class Step:
     params: tuple[tuple[str, Any], ...] = field(default_factory=tuple)
     subject: tuple[str, ...] = field(default_factory=tuple)
 
+    def input(self, name: str) -> str:
+        """Return the id of the named input (names: ``construct.ops.spec(op).inputs``)."""
+        from .ops import spec        # the registry is built above this module
+
+        return self.inputs[spec(self.op).index(name)]
+
+    def rest(self) -> tuple[str, ...]:
+        """Return the ids of the variable tail of inputs (after the named ones)."""
+        from .ops import spec
+
+        return self.inputs[len(spec(self.op).inputs):]
+
     def param(self, name: str, default: Any = None) -> Any:
         """Return a parameter by name."""
         for key, value in self.params:

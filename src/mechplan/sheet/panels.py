@@ -15,7 +15,10 @@ import numpy as np
 from ..construct.graph import Construction, Evaluation
 from ..construct.protocol import mm, plan_title as plan_name
 from ..construct.segments import SegmentKind
-from ..construct.step import Kind, Op, Plan
+from ..construct.ops import Drawn, spec
+from ..construct.ops.force import lever_terms
+from ..construct.ops import Line as LineStyle
+from ..construct.step import Kind, Plan
 from ..construct.terms import pole_label
 from ..i18n import message
 from ..i18n import number as format_number
@@ -23,6 +26,8 @@ from .fonts import text_width_mm
 from .labels import LabelPlacer
 from .primitives import Arrow, Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
 
+#: line style of an operation's drawing rule → layer role
+ROLES = {LineStyle.DASHED: Role.DASHED, LineStyle.THIN: Role.THIN, LineStyle.OUTLINE: Role.OUTLINE}
 LABEL_H = 3.5
 TITLE_H = 5.0
 TABLE_H = 2.5
@@ -102,10 +107,9 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
     prims = panel.primitives
     steps = [s for s in c.of_plan(plan) if s.id in ev.values and (group is None or s.group == group)]
     segments = [g for g in c.segments if g.plan is plan and (group is None or g.group == group)]
-    vertex_ops = {Op.POLE, getattr(Op, "FORCE_SUM", Op.POLE), getattr(Op, "FORCE_CLOSE", Op.POLE)}
     if plan is Plan.FORCE:       # force vectors and lines of action are not polygon vertices
-        steps = [s for s in steps if s.kind is not Kind.POINT or s.op in vertex_ops]
-    meet_ops = {Op.LINE_LINE, getattr(Op, "FORCE_CLOSE", Op.LINE_LINE)}
+        steps = [s for s in steps
+                 if s.kind is not Kind.POINT or spec(s.op).draw in (Drawn.VERTEX, Drawn.MEET)]
     pts: dict[str, tuple[float, float]] = {}
     for s in steps:
         if s.kind is Kind.POINT:
@@ -114,25 +118,27 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
                 pts[s.id] = p
     # auxiliary construction lines: from the point they pass through to (and past) their meet
     for s in steps:
-        if s.kind is not Kind.LINE:
+        if spec(s.op).draw is not Drawn.CONSTRUCTION_LINE:
             continue
         line = ev[s.id][k]
         through = _mm(line[0], mu)
         u = (float(line[1][0]), float(line[1][1]))
-        meet = next((m for m in steps if m.op in meet_ops and s.id in m.inputs and m.id in pts), None)
+        meet = next((m for m in steps if spec(m.op).draw is Drawn.MEET and s.id in m.inputs
+                     and m.id in pts), None)
         if meet is None or not _finite(through):
             continue
         end = pts[meet.id]
         t_end = (end[0] - through[0]) * u[0] + (end[1] - through[1]) * u[1]
         t0, t1 = min(0.0, t_end) - 8.0, max(0.0, t_end) + 8.0
         prims.append(Line((through[0] + t0 * u[0], through[1] + t0 * u[1]),
-                          (through[0] + t1 * u[0], through[1] + t1 * u[1]), Role.DASHED))
+                          (through[0] + t1 * u[0], through[1] + t1 * u[1]),
+                          ROLES[spec(s.op).line]))
     # similarity images: the image triangle of a link
     for s in steps:
-        if s.op is Op.SIMILAR_IMAGE and s.id in pts:
-            for src in s.inputs[:2]:
+        if spec(s.op).draw is Drawn.IMAGE_TRIANGLE and s.id in pts:
+            for src in (s.input("a"), s.input("b")):
                 if src in pts and math.dist(pts[src], pts[s.id]) > 1e-6:
-                    prims.append(Line(pts[src], pts[s.id], Role.THIN))
+                    prims.append(Line(pts[src], pts[s.id], ROLES[spec(s.op).line]))
     # vectors: absolute ones thick, components and relative ones thin
     for seg in segments:
         if seg.start not in pts or seg.end not in pts:
@@ -327,7 +333,7 @@ def lever_title(lang: str, phi_deg: float) -> str:
 def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: str,
                     title: str) -> Panel | None:
     """The velocity plan turned by 90° with every load at the image of its point."""
-    lever = next((s for s in c.of_plan(Plan.FORCE) if s.op is getattr(Op, "ZHUKOVSKY", None)), None)
+    lever = next((s for s in c.of_plan(Plan.FORCE) if spec(s.op).draw is Drawn.LEVER), None)
     if lever is None or lever.id not in ev.values:
         return None
     panel = Panel(f"force-{k}-lever")
@@ -342,19 +348,14 @@ def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: 
             a, b = turned(ev[seg.start][k]), turned(ev[seg.end][k])
             if _finite(a, b) and math.dist(a, b) > 0.5:
                 prims.append(Line(a, b, Role.THIN))
-    layout = lever.param("layout", "")
-    inputs = list(lever.inputs[1:])
     forces: list[tuple[tuple[float, float], np.ndarray, str]] = []
     couples: list[str] = []
-    for kind in layout:
-        if kind == "F":
-            img, force = inputs[0], inputs[1]
-            inputs = inputs[2:]
-            forces.append((turned(ev[img][k]), ev[force][k], c[force].label))
+    for term in lever_terms(lever):
+        if term.kind == "F":
+            forces.append((turned(ev[term.first][k]), ev[term.second][k], c[term.second].label))
         else:
-            couple, _omega = inputs[0], inputs[1]
-            inputs = inputs[2:]
-            couples.append(f"{c[couple].label} = {format_number(float(ev[couple][k]), 2, lang)} N·m")
+            couples.append(f"{c[term.first].label} = "
+                           f"{format_number(float(ev[term.first][k]), 2, lang)} N·m")
     largest = max((float(np.hypot(*f)) for _, f, _ in forces), default=0.0)
     if largest > 0:
         from ..construct.scale import choose_scale

@@ -27,13 +27,9 @@ from dataclasses import dataclass, field
 from string import ascii_lowercase
 from typing import Any, Protocol
 
-import numpy as np
 
-from ...geom import meet
-from ...geom.vec import Array, cross, direction, dot, norm, perp, unit
 from ...model.mechanism import GROUND, Pair, PairKind
 from ...model.structure import Group
-from .. import ops
 from ..builder import Builder, alabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
@@ -58,139 +54,6 @@ class LoadingLike(Protocol):
 def pair_key(i: str, j: str) -> str:
     """Key of the reaction of link i on link j: ``"12"``, or ``"10,12"`` for longer link ids."""
     return f"{i}{j}" if len(i) == 1 and len(j) == 1 else f"{i},{j}"
-
-
-# -- evaluators ------------------------------------------------------------------------------
-Result = ops.Result
-
-
-def _ev_force_inertia(step: Any, a: Array) -> Result:
-    return -float(step.param("mass")) * a, None, None
-
-
-def _ev_moment_inertia(step: Any, eps: Array) -> Result:
-    return -float(step.param("inertia")) * eps, None, None
-
-
-def _ev_force_load(step: Any, *args: Array) -> Result:
-    mode = step.param("mode")
-    if mode == "vector":
-        vec = np.asarray(step.param("vector"), dtype=float)
-        return np.broadcast_to(vec, args[0].shape).copy(), None, None
-    if mode == "towards":
-        p, q = args
-        return float(step.param("magnitude")) * unit(q - p), None, None
-    if mode == "guide":
-        p, q, theta = args
-        value = np.full(p.shape[:-1], float(step.param("value")))
-    elif mode == "table_phi":
-        theta1, p, q, theta = args
-        xs, fs = np.asarray(step.param("xs")), np.asarray(step.param("fs"))
-        phi = step.param("sense") * (theta1 - step.param("ref"))
-        phi = xs[0] + np.mod(phi - xs[0], 2.0 * math.pi)
-        value = np.interp(phi, xs, fs)
-    elif mode == "table_s":
-        p, o, q, theta = args
-        xs, fs = np.asarray(step.param("xs")), np.asarray(step.param("fs"))
-        value = np.interp(dot(p - o, direction(theta)), xs, fs)
-    else:  # pragma: no cover - emitted only by this module
-        raise ValueError(f"unknown force load mode {mode!r}")
-    u = direction(theta)
-    sense = np.sign(dot(q - p, u))
-    return (value * sense)[..., None] * u, None, None
-
-
-def _ev_moment_sum(step: Any, centre: Array, *args: Array) -> Result:
-    total = np.zeros(centre.shape[:-1])
-    i = 0
-    for kind in step.param("layout"):
-        if kind == "F":
-            total = total + cross(args[i] - centre, args[i + 1])
-            i += 2
-        else:
-            total = total + args[i]
-            i += 1
-    return total, None, None
-
-
-def _ev_moment_arm_tangential(step: Any, centre: Array, at: Array, total: Array,
-                           *angle: Array) -> Result:
-    """Force at ``at`` ⊥ (at − centre), or ⊥ a guide, whose moment about centre is −total."""
-    r = at - centre
-    d = perp(direction(angle[0])) if angle else unit(perp(r))
-    arm = cross(r, d)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        lam = -total / arm
-        sine = np.abs(arm) / norm(r) if angle else None
-    return lam[..., None] * d, None, sine
-
-
-def _ev_force_sum(step: Any, prev: Array, force: Array) -> Result:
-    return prev + force, None, None
-
-
-def _ev_force_line(step: Any, through: Array, *args: Array) -> Result:
-    u = unit(args[1] - args[0]) if len(args) == 2 else direction(args[0])
-    if step.param("turn") == 90:
-        u = perp(u)
-    return np.stack((through, u), axis=-2), None, None
-
-
-def _ev_force_close(step: Any, l1: Array, l2: Array) -> Result:
-    return meet.line_line(l1[..., 0, :], l1[..., 1, :], l2[..., 0, :], l2[..., 1, :])
-
-
-def _ev_negate(step: Any, x: Array) -> Result:
-    return -x, None, None
-
-
-def _ev_guide_offset(step: Any, o: Array, at: Array, couple: Array, force: Array,
-                  theta: Array) -> Result:
-    u = direction(theta)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return dot(at - o, u) + couple / cross(u, force), None, None
-
-
-def _ev_line_of_action(step: Any, at: Array, force: Array, couple: Array) -> Result:
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return at - (couple / dot(force, force))[..., None] * perp(force), None, None
-
-
-def _ev_inertia_offset(step: Any, q: Array, m: Array) -> Result:
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return m / norm(q), None, None
-
-
-def _ev_zhukovsky(step: Any, omega1: Array, *args: Array) -> Result:
-    """Moments about the pole of forces at velocity images turned by +90°, couples as M·ω."""
-    lever = np.zeros(omega1.shape)
-    i = 0
-    for kind in step.param("layout"):
-        if kind == "F":
-            lever = lever + cross(perp(args[i]), args[i + 1])
-        else:
-            lever = lever - args[i] * args[i + 1]
-        i += 2
-    return lever / omega1, None, None
-
-
-ops.EVALUATORS.update({
-    Op.FORCE_INERTIA: _ev_force_inertia,
-    Op.MOMENT_INERTIA: _ev_moment_inertia,
-    Op.FORCE_LOAD: _ev_force_load,
-    Op.MOMENT_SUM: _ev_moment_sum,
-    Op.MOMENT_ARM_TANGENTIAL: _ev_moment_arm_tangential,
-    Op.FORCE_SUM: _ev_force_sum,
-    Op.FORCE_LINE: _ev_force_line,
-    Op.FORCE_CLOSE: _ev_force_close,
-    Op.FORCE_REVERSE: _ev_negate,
-    Op.MOMENT_CLOSE: _ev_negate,
-    Op.BALANCING_MOMENT: _ev_negate,
-    Op.GUIDE_OFFSET: _ev_guide_offset,
-    Op.LINE_OF_ACTION: _ev_line_of_action,
-    Op.INERTIA_OFFSET: _ev_inertia_offset,
-    Op.ZHUKOVSKY: _ev_zhukovsky,
-})
 
 
 # -- emitting --------------------------------------------------------------------------------
