@@ -74,11 +74,11 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
         p for lk in sol.scene.mechanism.links.values() if lk.id != "0" for p in lk.points)
     for p in dict.fromkeys(pts):
         parts = [f"{p:<4}"]
-        if f"pos.{p}" in ev.values:
-            x, y = ev[f"pos.{p}"][k] * 1000
+        if c.has_position(p) and c.position(p) in ev.values:
+            x, y = ev[c.position(p)][k] * 1000
             parts.append(f"r = ({format_number(x, 2, lang)}; {format_number(y, 2, lang)}) mm")
-        for sym, unit in (("v", "m/s"), ("a", "m/s²")):
-            sid = c.results.get(f"{sym}_{p}")
+        for sym, unit, image in (("v", "m/s", c.velocity_image), ("a", "m/s²", c.acceleration_image)):
+            sid = image(p) if c.has_result(sym, p) else None
             if sid in ev.values:
                 vec = ev[sid][k]
                 mag = float(np.hypot(*vec))
@@ -89,8 +89,9 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
         lines.append("  " + "   ".join(parts))
     for lid in sol.scene.mechanism.moving:
         parts = []
-        for key, sym, unit in (("omega", "ω", "rad/s"), ("epsilon", "ε", "rad/s²")):
-            sid = c.results.get(f"{key}_{lid}")
+        for key, sym, unit, of in (("omega", "ω", "rad/s", c.omega),
+                                   ("epsilon", "ε", "rad/s²", c.epsilon)):
+            sid = of(lid) if c.has_result(key, lid) else None
             if sid in ev.values:
                 parts.append(f"{sym}{lid} = {format_number(float(ev[sid][k]), 4, lang)} {unit}")
         if parts:

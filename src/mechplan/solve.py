@@ -81,18 +81,15 @@ def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[s
     out: list[str] = []
     for p in points:
         if "position" in plans:
-            out.append(f"pos.{p}")
-        for sym, plan in (("v", "velocity"), ("a", "acceleration")):
-            if plan in plans and f"{sym}_{p}" in c.results:
-                out.append(c.results[f"{sym}_{p}"])
+            out.append(c.position(p))
+        if "velocity" in plans and c.has_result("v", p):
+            out.append(c.velocity_image(p))
+        if "acceleration" in plans and c.has_result("a", p):
+            out.append(c.acceleration_image(p))
     if not scene.points_of_interest:
-        for key, sid in c.results.items():
-            plan = c[sid].plan.value
-            if plan in plans and key.split("_")[0] in ("angle", "omega", "epsilon"):
-                out.append(sid)
+        out += [sid for sid in c.link_results() if c[sid].plan.value in plans]
     if "force" in plans:
-        out += [sid for key, sid in c.results.items()
-                if key in ("M_b", "M_b_zhukovsky") or key.startswith(("R_", "d_"))]
+        out += c.force_results()
     return list(dict.fromkeys(out))
 
 
@@ -152,18 +149,19 @@ def to_json(sol: Solution) -> dict[str, Any]:
         pts: dict[str, Any] = {}
         for p in points:
             entry_p: dict[str, Any] = {}
-            if f"pos.{p}" in ev.values:
-                entry_p["r"] = _vec(ev[f"pos.{p}"][k])
-            for sym in ("v", "a"):
-                sid = c.results.get(f"{sym}_{p}")
+            if c.has_position(p) and c.position(p) in ev.values:
+                entry_p["r"] = _vec(ev[c.position(p)][k])
+            for sym, image in (("v", c.velocity_image), ("a", c.acceleration_image)):
+                sid = image(p) if c.has_result(sym, p) else None
                 if sid is not None and sid in ev.values:
                     entry_p[sym] = _vec(ev[sid][k])
             pts[p] = entry_p
         links: dict[str, Any] = {}
         for lid in scene.mechanism.moving:
             entry: dict[str, Any] = {}
-            for key, name in (("angle", "angle_deg"), ("omega", "omega"), ("epsilon", "epsilon")):
-                sid = c.results.get(f"{key}_{lid}")
+            for key, name, of in (("angle", "angle_deg", c.link_angle), ("omega", "omega", c.omega),
+                                  ("epsilon", "epsilon", c.epsilon)):
+                sid = of(lid) if c.has_result(key, lid) else None
                 if sid is not None and sid in ev.values:
                     val = float(ev[sid][k])
                     entry[name] = math.degrees(math.remainder(val, 2 * math.pi)) if key == "angle" else val

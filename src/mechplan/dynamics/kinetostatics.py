@@ -14,13 +14,11 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction, Evaluation
-from ..construct.plans.force import pair_key
+from ..construct.graph import reaction_key
 from ..geom.vec import Array, cross, norm, perp
 from ..model.mechanism import Mechanism, PairKind
 from .reduced import link_omega, reduced_of
 
-#: ids of the force plan's load steps (inertia, weights, external loads)
-LOAD_PREFIXES = ("force.Q.", "force.Mq.", "force.h.", "force.Kq.", "force.G.", "force.load.")
 
 
 @dataclass(frozen=True, slots=True)
@@ -108,27 +106,28 @@ def analyse_forces(c: Construction, ev: Evaluation, mech: Mechanism, loading: An
     zero_v, zero_s = np.zeros((ev.n, 2)), np.zeros(ev.n)
     for link, ms in loading.masses.items():
         if ms.mass > 0 or ms.inertia > 0:
-            q = ev[c.results[f"Q_{link}"]] if f"Q_{link}" in c.results else zero_v
-            m = ev[c.results[f"M_q{link}"]] if f"M_q{link}" in c.results else zero_s
+            q_id, m_id = c.inertia_force(link), c.inertia_couple(link)
+            q = ev[q_id] if q_id is not None else zero_v
+            m = ev[m_id] if m_id is not None else zero_s
             inertia[link] = (q, m)
     reactions: dict[str, Reaction] = {}
     guides: dict[str, Reaction] = {}
     for pair in mech.pairs:
         i, j = sorted((pair.a, pair.b), key=order.__getitem__)
-        key = pair_key(i, j)
-        force = ev[c.results[f"R_{key}"]]
+        key = reaction_key(i, j)
+        force = ev[c.reaction(i, j)]
         if pair.kind is PairKind.REVOLUTE:
             reactions[key] = Reaction(key, i, j, pair.point, force)
         else:
             guides[key] = Reaction(key, i, j, pair.point, force, pair.guide,
-                                   ev[c.results[f"d_{key}"]])
+                                   ev[c.guide_offset(i, j)])
     reactions = dict(sorted(reactions.items(), key=lambda kv: (order[kv[1].i], order[kv[1].j])))
     guides = dict(sorted(guides.items(), key=lambda kv: (order[kv[1].i], order[kv[1].j])))
     m_red, j_red = reduced_of(c, ev, mech, loading)
     return ForceAnalysis(
         phi=ev.phi, omega1=link_omega(c, ev, mech.drive.link), inertia=inertia,
         reactions=reactions, guide_reactions=guides,
-        balancing_moment=ev[c.results["M_b"]], zhukovsky_moment=ev[c.results["M_b_zhukovsky"]],
+        balancing_moment=ev[c.balancing_moment()], zhukovsky_moment=ev[c.zhukovsky_moment()],
         reduced_moment=m_red, reduced_inertia=j_red)
 
 
@@ -144,13 +143,13 @@ def balancing_force(c: Construction, ev: Evaluation, mech: Mechanism, point: str
     if point not in mech.links[drive.link].points or point == drive.pivot:
         raise ValueError(f"point {point!r} is not a point of the driving link {drive.link} other "
                          f"than its pivot {drive.pivot}")
-    r = ev[f"pos.{point}"] - ev[f"pos.{drive.pivot}"]
+    r = ev[c.position(point)] - ev[c.position(drive.pivot)]
     if angle is None:
         d = perp(r) / norm(r)[:, None]
     else:
         d = np.broadcast_to(np.array([math.cos(angle), math.sin(angle)]), r.shape)
     with np.errstate(invalid="ignore", divide="ignore"):
-        magnitude = ev[c.results["M_b"]] / cross(r, d)
+        magnitude = ev[c.balancing_moment()] / cross(r, d)
     return magnitude[:, None] * d
 
 

@@ -77,10 +77,10 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
     ev_ext = c.evaluate(np.asarray(extremes)) if extremes else None
     if ev_ext is not None:
         for p in (q for lk in scene.mechanism.links.values() for q in lk.points):
-            ev_ext.get(f"pos.{p}")
+            ev_ext.get(c.position(p))
     for p in (q for lk in scene.mechanism.links.values() for q in lk.points):
-        ev_traj.get(f"pos.{p}")
-        ev_all.get(f"pos.{p}")
+        ev_traj.get(c.position(p))
+        ev_all.get(c.position(p))
     highlight = plan_positions(sol)
     numbers = [str(k) for k in range(sol.positions)]
     title = plan_name(Plan.POSITION, lang)
@@ -154,7 +154,7 @@ def _largest(sol: Solution, plan: Plan, positions: list[int]) -> float:
 
 
 def _plan_of(panel: Panel) -> Plan:
-    return Plan(panel.name.split("-")[0])
+    return panel.plan
 
 
 def _area(panel: Panel) -> float:

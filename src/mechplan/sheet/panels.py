@@ -40,6 +40,7 @@ class Panel:
     """Primitives in panel millimetres with the box they occupy."""
 
     name: str
+    plan: Plan
     primitives: list[Primitive | Table] = field(default_factory=list)
 
     def bounds(self) -> tuple[float, float, float, float]:
@@ -93,6 +94,16 @@ def _mm(v: np.ndarray, mu: float) -> tuple[float, float]:
     return (float(v[0]) / mu, float(v[1]) / mu)
 
 
+def _pos(ev: Evaluation, point: str) -> str:
+    return ev.construction.position(point)
+
+
+def _has(ev: Evaluation, point: str) -> bool:
+    """Tell whether a point's position was evaluated."""
+    c = ev.construction
+    return c.has_position(point) and c.position(point) in ev.values
+
+
 def _finite(*pts: tuple[float, float]) -> bool:
     return all(math.isfinite(x) and math.isfinite(y) for x, y in pts)
 
@@ -103,7 +114,7 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
 
     ``group`` keeps one group's steps only (each force polygon has a pole of its own).
     """
-    panel = Panel(f"{plan.value}-{k}" + (f"-{group}" if group else ""))
+    panel = Panel(f"{plan.value}-{k}" + (f"-{group}" if group else ""), plan)
     prims = panel.primitives
     steps = [s for s in c.of_plan(plan) if s.id in ev.values and (group is None or s.group == group)]
     segments = [g for g in c.segments if g.plan is plan and (group is None or g.group == group)]
@@ -204,7 +215,7 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
                   extremes: list[float], ev_ext: Evaluation | None, mu: float, lang: str,
                   title: str, numbers: list[str]) -> Panel:
     """Positions overlaid (highlighted ones thick), trajectories, extreme positions, guides."""
-    panel = Panel("position")
+    panel = Panel("position", Plan.POSITION)
     prims = panel.primitives
     links = [lk for lk in mech.links.values() if lk.id != "0"]
     joints = {lk.id: [p for p in lk.points if any(pr.point == p for pr in mech.pairs_of(lk.id))]
@@ -212,7 +223,7 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
 
     def draw_links(ev: Evaluation, k: int, role: Role) -> None:
         for lk in links:
-            pts = [_mm(ev[f"pos.{p}"][k], mu) for p in joints[lk.id] if f"pos.{p}" in ev.values]
+            pts = [_mm(ev[_pos(ev, p)][k], mu) for p in joints[lk.id] if _has(ev, p)]
             pts = [p for p in pts if _finite(p)]
             if len(pts) == 2 and math.dist(*pts) > 1e-6:
                 prims.append(Line(pts[0], pts[1], role))
@@ -225,21 +236,21 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
         if lk.id == crank or lk.slides_on:
             continue
         for p in lk.points:
-            if p in mech.links["0"].points or f"pos.{p}" not in ev_traj.values:
+            if p in mech.links["0"].points or not _has(ev_traj, p):
                 continue
             if any(p in other.points for other in links if other.slides_on):
                 continue
-            path = [_mm(v, mu) for v in ev_traj[f"pos.{p}"]]
+            path = [_mm(v, mu) for v in ev_traj[_pos(ev_traj, p)]]
             path = [q for q in path if _finite(q)]
             if len(path) > 2:
                 prims.append(Polyline(tuple(path), Role.CHAIN))
     tip = next(p for p in mech.links[crank].points if p != mech.drive.pivot)
-    centre = _mm(ev_all[f"pos.{mech.drive.pivot}"][0], mu)
-    radius = math.dist(centre, _mm(ev_all[f"pos.{tip}"][0], mu))
+    centre = _mm(ev_all[_pos(ev_all, mech.drive.pivot)][0], mu)
+    radius = math.dist(centre, _mm(ev_all[_pos(ev_all, tip)][0], mu))
     prims.append(Circle(centre, radius, Role.CHAIN))
     for k in range(ev_all.n):
         draw_links(ev_all, k, Role.OUTLINE if k in highlight else Role.THIN)
-        tip_mm = _mm(ev_all[f"pos.{tip}"][k], mu)
+        tip_mm = _mm(ev_all[_pos(ev_all, tip)][k], mu)
         if _finite(tip_mm):
             d = (tip_mm[0] - centre[0], tip_mm[1] - centre[1])
             n = math.hypot(*d) or 1.0
@@ -256,7 +267,7 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
         if g.link != "0":
             continue
         p = next(iter(lk.points))
-        travel = np.asarray(ev_traj[f"pos.{p}"])
+        travel = np.asarray(ev_traj[_pos(ev_traj, p)])
         travel = travel[np.isfinite(travel).all(axis=1)]
         if travel.size == 0:
             continue
@@ -271,29 +282,29 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
         for lk in links:
             if lk.slides_on:
                 g = mech.guides[lk.slides_on]
-                p = _mm(ev_all[f"pos.{next(iter(lk.points))}"][k], mu)
-                ang = g.angle if g.link == "0" else float(ev_all[c.results[f"angle_{lk.id}"]][k])
+                p = _mm(ev_all[_pos(ev_all, next(iter(lk.points)))][k], mu)
+                ang = g.angle if g.link == "0" else float(ev_all[c.link_angle(lk.id)][k])
                 if _finite(p):
                     prims.append(_slider(p, ang))
         for p in dict.fromkeys(q for js in joints.values() for q in js):
-            if f"pos.{p}" in ev_all.values:
-                q = _mm(ev_all[f"pos.{p}"][k], mu)
+            if _has(ev_all, p):
+                q = _mm(ev_all[_pos(ev_all, p)][k], mu)
                 if _finite(q):
                     prims.append(Circle(q, 1.0, Role.OUTLINE))
     for name in mech.links["0"].points:
         if any(name in js for js in joints.values()):
-            prims.extend(_pivot(_mm(ev_all[f"pos.{name}"][0], mu)))
+            prims.extend(_pivot(_mm(ev_all[_pos(ev_all, name)][0], mu)))
     k0 = highlight[0] if highlight else 0
     names = list(dict.fromkeys(p for lk in links for p in lk.points))
     for p in names:                      # points that are not joints get a small marker too
-        if not any(p in js for js in joints.values()) and f"pos.{p}" in ev_all.values:
-            q = _mm(ev_all[f"pos.{p}"][k0], mu)
+        if not any(p in js for js in joints.values()) and _has(ev_all, p):
+            q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
                 prims.append(Circle(q, 0.8, Role.OUTLINE))
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H)
     for p in names:
-        if f"pos.{p}" in ev_all.values:
-            q = _mm(ev_all[f"pos.{p}"][k0], mu)
+        if _has(ev_all, p):
+            q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
                 prims.append(placer.place(q, p))
     x0, _y0, _x1, y1 = panel.bounds()
@@ -336,7 +347,7 @@ def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: 
     lever = next((s for s in c.of_plan(Plan.FORCE) if spec(s.op).draw is Drawn.LEVER), None)
     if lever is None or lever.id not in ev.values:
         return None
-    panel = Panel(f"force-{k}-lever")
+    panel = Panel(f"force-{k}-lever", Plan.FORCE)
     prims = panel.primitives
 
     def turned(v: np.ndarray) -> tuple[float, float]:

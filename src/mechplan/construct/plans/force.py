@@ -31,6 +31,7 @@ from typing import Any, Protocol
 from ...model.mechanism import GROUND, Pair, PairKind
 from ...model.structure import Group
 from ..builder import Builder, alabel
+from ..graph import reaction_key
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
 from ..terms import GIVEN, UNKNOWN, Direction, Relation, Row, from_to
@@ -51,9 +52,8 @@ class LoadingLike(Protocol):
         """Raise SceneError if the loading does not fit the mechanism."""
 
 
-def pair_key(i: str, j: str) -> str:
-    """Key of the reaction of link i on link j: ``"12"``, or ``"10,12"`` for longer link ids."""
-    return f"{i}{j}" if len(i) == 1 and len(j) == 1 else f"{i},{j}"
+#: key of the reaction of link i on link j (``"12"``, ``"10,12"``)
+pair_key = reaction_key
 
 
 # -- emitting --------------------------------------------------------------------------------
