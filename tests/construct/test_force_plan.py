@@ -16,7 +16,7 @@ from mechplan.construct.step import Kind, Op, Plan
 from mechplan.dynamics import Loading
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
-from mechplan.scene.spec import LoadKind, LoadSpec
+from mechplan.model.loads import LoadKind, LoadSpec
 
 ROOT = Path(__file__).resolve().parents[2]
 PLANS = ("position", "velocity", "acceleration", "force")

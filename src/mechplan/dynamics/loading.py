@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from ..errors import SceneError
 from ..model.mechanism import GROUND, Mechanism
-from ..scene.spec import Gravity, LoadKind, LoadSpec, MassSpec
+from ..model.loads import Gravity, LoadKind, LoadSpec, MassSpec
 
 if TYPE_CHECKING:
     from ..scene.spec import Scene

@@ -9,6 +9,7 @@ from pathlib import Path
 
 from ..errors import SceneError, TopologyError
 from ..i18n import LANGUAGES
+from ..model.loads import Gravity, LoadKind, LoadSpec, MassSpec
 from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
 from ..model.structure import analyse
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
@@ -18,10 +19,6 @@ from .spec import (
     TITLE_BLOCK_FIELDS,
     DrawingSpec,
     Extreme,
-    Gravity,
-    LoadKind,
-    LoadSpec,
-    MassSpec,
     Positions,
     Scene,
 )

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ...model.mechanism import GROUND
-from ...model.structure import Group
+from ...model.structure import Group, GroupKind
 from ..builder import Builder, alabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
@@ -44,7 +44,8 @@ def emit_drive(b: Builder) -> None:
 
 def emit_group(b: Builder, g: Group) -> None:
     """Acceleration construction of one group, then images of all its points."""
-    {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}[g.kind](b, g)
+    {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
+     GroupKind.RPP: _rpp}[g.kind](b, g)
     for link in g.links:
         complete(b, link, A, g.name)
 

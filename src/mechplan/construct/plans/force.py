@@ -29,7 +29,7 @@ from typing import Any, Protocol
 
 
 from ...model.mechanism import GROUND, Pair, PairKind
-from ...model.structure import Group
+from ...model.structure import Group, GroupKind
 from ..builder import Builder, alabel
 from ..graph import reaction_key
 from ..segments import SegmentKind
@@ -103,7 +103,8 @@ def emit(b: Builder) -> None:
     _inertia_and_weights(st)
     _external_loads(st)
     for g in reversed(b.structure.groups):
-        {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}[g.kind](st, g)
+        {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
+         GroupKind.RPP: _rpp}[g.kind](st, g)
     _driving_link(st)
     _lever(st)
 
