@@ -126,7 +126,7 @@ class Step:
 
     def input(self, name: str) -> str:
         """Return the id of the named input (names: ``construct.ops.spec(op).inputs``)."""
-        from .ops import spec        # the registry is built above this module
+        from .ops import spec  # the registry is built above this module
 
         return self.inputs[spec(self.op).index(name)]
 

@@ -13,12 +13,10 @@ from typing import Any
 
 import numpy as np
 
-from ..construct.graph import Construction, Evaluation
-from ..construct.graph import reaction_key
+from ..construct.graph import Construction, Evaluation, reaction_key
 from ..geom.vec import Array, cross, norm, perp
 from ..model.mechanism import Mechanism, PairKind
 from .reduced import link_omega, reduced_of
-
 
 
 @dataclass(frozen=True, slots=True)

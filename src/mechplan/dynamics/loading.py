@@ -8,8 +8,8 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ..errors import SceneError
-from ..model.mechanism import GROUND, Mechanism
 from ..model.loads import Gravity, LoadKind, LoadSpec, MassSpec
+from ..model.mechanism import GROUND, Mechanism
 
 if TYPE_CHECKING:
     from ..scene.spec import Scene

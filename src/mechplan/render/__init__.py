@@ -9,9 +9,9 @@ import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
+from mechplan.drafting.primitives import Sheet
 from mechplan.errors import DrawingError
 from mechplan.render.atomic import atomic_open, write_atomic
-from mechplan.sheet.primitives import Sheet
 
 FORMATS: tuple[str, ...] = ("dxf", "svg", "pdf", "png")
 

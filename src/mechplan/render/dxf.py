@@ -22,10 +22,8 @@ from ezdxf.enums import TextEntityAlignment
 from ezdxf.layouts.base import BaseLayout
 from ezdxf.layouts.blocklayout import BlockLayout
 
-from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
-from mechplan.sheet.fonts import SheetFont, font_for
-from mechplan.sheet.primitives import (
+from mechplan.drafting.fonts import SheetFont, font_for
+from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
     Arrow,
@@ -41,6 +39,8 @@ from mechplan.sheet.primitives import (
     Text,
     VAlign,
 )
+from mechplan.errors import DrawingError
+from mechplan.render.atomic import write_atomic
 
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
 ENCODINGS = {"en": "cp1252", "ru": "cp1251", "vi": "cp1258", "zh": "gbk"}

@@ -24,10 +24,8 @@ from matplotlib.patches import Polygon as PolygonPatch
 from matplotlib.textpath import TextPath
 from matplotlib.transforms import Affine2D
 
-from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
-from mechplan.sheet.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_path
-from mechplan.sheet.primitives import (
+from mechplan.drafting.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_path
+from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
     Arrow,
@@ -39,6 +37,8 @@ from mechplan.sheet.primitives import (
     Sheet,
     Text,
 )
+from mechplan.errors import DrawingError
+from mechplan.render.atomic import write_atomic
 
 PT_PER_MM = 72.0 / 25.4
 INK = "black"

@@ -14,10 +14,8 @@ from typing import Any
 import svgwrite
 from svgwrite.container import Group
 
-from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
-from mechplan.sheet.fonts import baseline_point, em_size_mm, families_for
-from mechplan.sheet.primitives import (
+from mechplan.drafting.fonts import baseline_point, em_size_mm, families_for
+from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
     Arrow,
@@ -31,6 +29,8 @@ from mechplan.sheet.primitives import (
     Sheet,
     Text,
 )
+from mechplan.errors import DrawingError
+from mechplan.render.atomic import write_atomic
 
 #: Paint order of the role groups (text on top, thick lines over thin ones).
 ROLE_ORDER: tuple[Role, ...] = (Role.FILL, Role.THIN, Role.DASHED, Role.CHAIN, Role.DIMENSION,

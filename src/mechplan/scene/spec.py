@@ -8,11 +8,6 @@ from ..model.loads import Gravity, LoadSpec, MassSpec
 from ..model.mechanism import Mechanism
 
 PLANS = ("position", "velocity", "acceleration", "force")
-#: fields of a sheet's title block that a scene may fill ([title_block])
-TITLE_BLOCK_FIELDS = (
-    "title", "author", "group", "instructor", "school", "department", "date", "scale",
-    "sheet_number", "sheets_total", "designation", "document_type", "material", "litera",
-)
 
 
 @dataclass(frozen=True, slots=True)

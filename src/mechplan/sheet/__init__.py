@@ -1,6 +1,6 @@
 """Sheets: drawing primitives with layer roles, frames and title blocks (ISO, ГОСТ, TCVN)."""
 
-from mechplan.sheet.frame import (
+from mechplan.drafting.frame import (
     PAPER_SIZES_MM,
     TITLE_FIELDS,
     FrameLayout,
@@ -10,7 +10,7 @@ from mechplan.sheet.frame import (
     make_frame,
     paper_size,
 )
-from mechplan.sheet.primitives import (
+from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     ISO_3098_HEIGHTS_MM,
     LANGUAGES,

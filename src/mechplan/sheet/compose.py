@@ -13,12 +13,12 @@ from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
 from ..construct.scale import round_scale
 from ..construct.step import Plan
+from ..drafting.frame import make_frame
+from ..drafting.primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 from ..errors import DrawingError, MechplanError
 from ..model.mechanism import GROUND, PairKind
 from ..solve import Solution
-from .frame import make_frame
 from .panels import Panel, lever_title, plan_title, position_plan, vector_plan, zhukovsky_lever
-from .primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 
 GAP = 8.0          # mm between panels
 MAX_PLAN_POSITIONS = 2

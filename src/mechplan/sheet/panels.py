@@ -13,18 +13,30 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..construct.graph import Construction, Evaluation
-from ..construct.protocol import mm, plan_title as plan_name
-from ..construct.segments import SegmentKind
 from ..construct.ops import Drawn, spec
-from ..construct.ops.force import lever_terms
 from ..construct.ops import Line as LineStyle
+from ..construct.ops.force import lever_terms
+from ..construct.protocol import mm
+from ..construct.protocol import plan_title as plan_name
+from ..construct.segments import SegmentKind
 from ..construct.step import Kind, Plan
 from ..construct.terms import pole_label
+from ..drafting.fonts import text_width_mm
+from ..drafting.labels import LabelPlacer
+from ..drafting.primitives import (
+    Arrow,
+    Circle,
+    HAlign,
+    Line,
+    Polyline,
+    Primitive,
+    Role,
+    Table,
+    Text,
+    VAlign,
+)
 from ..i18n import message
 from ..i18n import number as format_number
-from .fonts import text_width_mm
-from .labels import LabelPlacer
-from .primitives import Arrow, Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
 
 #: line style of an operation's drawing rule → layer role
 ROLES = {LineStyle.DASHED: Role.DASHED, LineStyle.THIN: Role.THIN, LineStyle.OUTLINE: Role.OUTLINE}

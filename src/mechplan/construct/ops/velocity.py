@@ -6,7 +6,19 @@ import numpy as np
 
 from ...geom.vec import Array, cross, dot, perp
 from ..step import Op, Step
-from .spec import Drawn, Grade, Line, OpSpec, Result, Source, line, scaled, to_complex, to_real, unit
+from .spec import (
+    Drawn,
+    Grade,
+    Line,
+    OpSpec,
+    Result,
+    Source,
+    line,
+    scaled,
+    to_complex,
+    to_real,
+    unit,
+)
 
 
 def pole(step: Step, n: int) -> Result:
