@@ -17,18 +17,27 @@ from .solve import Solution, segment_table
 def _w(key: str, lang: str) -> str:
     return message(f"report.{key}", lang)
 
+
 _KEYS = ("dof", "structure", "cls", "position", "equation", "segments", "results", "crank", "fromx")
-PLANS = {"position": Plan.POSITION, "velocity": Plan.VELOCITY, "acceleration": Plan.ACCELERATION,
-         "force": Plan.FORCE}
+PLANS = {
+    "position": Plan.POSITION,
+    "velocity": Plan.VELOCITY,
+    "acceleration": Plan.ACCELERATION,
+    "force": Plan.FORCE,
+}
+
 
 def text_report(sol: Solution, lang: str | None = None) -> str:
     """The full report: structure, then per position the plans' protocols, tables and results."""
     lang = lang or sol.scene.language
     w = {key: _w(key, lang) for key in _KEYS}
     st = sol.structure
-    out = [sol.scene.title, "=" * len(sol.scene.title),
-           f"{w['dof']}: W = 3·{st.moving_links} − 2·{st.lower_pairs} = {st.dof}",
-           f"{w['structure']}: {st.formula}  ({w['cls']} {st.mechanism_class})"]
+    out = [
+        sol.scene.title,
+        "=" * len(sol.scene.title),
+        f"{w['dof']}: W = 3·{st.moving_links} − 2·{st.lower_pairs} = {st.dof}",
+        f"{w['structure']}: {st.formula}  ({w['cls']} {st.mechanism_class})",
+    ]
     for g in st.groups:
         out.append(f"  {g.name}: {g.kind}")
     plans = tuple(PLANS[p] for p in sol.plans if p in PLANS)
@@ -41,14 +50,13 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         for plan in plans:
             mu = sol.scales.get(plan, 1.0)
             unit = plan.scale_unit
-            num = format_number(mu, 6, lang).rstrip('0').rstrip(',.')
+            num = format_number(mu, 6, lang).rstrip("0").rstrip(",.")
             out += ["", f"### {plan_title(plan, lang)} (μ = {num} {unit})"]
             for (p, group), (eq, rows) in sol.construction.equations.items():
                 if p is plan:
                     out.append(f"{w['equation']} {group}: {eq}")
                     for term, direction, magnitude in rows:
-                        out.append(f"    {term:<16} {direction.text(lang):<12} "
-                                   f"{magnitude}")
+                        out.append(f"    {term:<16} {direction.text(lang):<12} {magnitude}")
             n = 0
             for p, label, text in steps:
                 if p is plan:
@@ -58,8 +66,11 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
             if measured:
                 out.append(f"  {w['segments']}:")
                 for name, mm_, _mu, quantity, value in measured:
-                    out.append(f"    {pole_label(name, lang):<14} {format_number(mm_, 1, lang):>8} {mm(lang)}"
-                               f"   {quantity:<14} {format_number(value, 4, lang)}")
+                    out.append(
+                        f"    {pole_label(name, lang):<14} "
+                        f"{format_number(mm_, 1, lang):>8} {mm(lang)}"
+                        f"   {quantity:<14} {format_number(value, 4, lang)}"
+                    )
         out += ["", f"### {w['results']}"]
         out += _results(sol, k, lang)
         if "forces" in sol.extras:
@@ -71,26 +82,34 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
     c, ev = sol.construction, sol.ev
     lines = []
     pts = sol.scene.points_of_interest or tuple(
-        p for lk in sol.scene.mechanism.links.values() if lk.id != "0" for p in lk.points)
+        p for lk in sol.scene.mechanism.links.values() if lk.id != "0" for p in lk.points
+    )
     for p in dict.fromkeys(pts):
         parts = [f"{p:<4}"]
         if c.has_position(p) and c.position(p) in ev.values:
             x, y = ev[c.position(p)][k] * 1000
             parts.append(f"r = ({format_number(x, 2, lang)}; {format_number(y, 2, lang)}) mm")
-        for sym, unit, image in (("v", "m/s", c.velocity_image), ("a", "m/s²", c.acceleration_image)):
+        for sym, unit, image in (
+            ("v", "m/s", c.velocity_image),
+            ("a", "m/s²", c.acceleration_image),
+        ):
             sid = image(p) if c.has_result(sym, p) else None
             if sid in ev.values:
                 vec = ev[sid][k]
                 mag = float(np.hypot(*vec))
                 text = f"{sym} = {format_number(mag, 4, lang)} {unit}"
                 if float(f"{mag:.4f}") != 0:
-                    text += f" ∠ {format_number(math.degrees(math.atan2(vec[1], vec[0])), 1, lang)}°"
+                    text += (
+                        f" ∠ {format_number(math.degrees(math.atan2(vec[1], vec[0])), 1, lang)}°"
+                    )
                 parts.append(text)
         lines.append("  " + "   ".join(parts))
     for lid in sol.scene.mechanism.moving:
         parts = []
-        for key, sym, unit, of in (("omega", "ω", "rad/s", c.omega),
-                                   ("epsilon", "ε", "rad/s²", c.epsilon)):
+        for key, sym, unit, of in (
+            ("omega", "ω", "rad/s", c.omega),
+            ("epsilon", "ε", "rad/s²", c.epsilon),
+        ):
             sid = of(lid) if c.has_result(key, lid) else None
             if sid in ev.values:
                 parts.append(f"{sym}{lid} = {format_number(float(ev[sid][k]), 4, lang)} {unit}")
@@ -99,8 +118,19 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
     return lines
 
 
-_FORCE_KEYS = ("reactions", "guide_reactions", "balancing", "driving", "resisting", "lever",
-               "difference", "reduced_moment", "reduced_inertia", "at", "pure_couple")
+_FORCE_KEYS = (
+    "reactions",
+    "guide_reactions",
+    "balancing",
+    "driving",
+    "resisting",
+    "lever",
+    "difference",
+    "reduced_moment",
+    "reduced_inertia",
+    "at",
+    "pure_couple",
+)
 
 
 def _forces(sol: Solution, k: int, lang: str) -> list[str]:
@@ -114,15 +144,19 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
         out.append(f"### {w[1]} {', '.join(r.point for r in fa.guide_reactions.values())}")
     for r in fa.guide_reactions.values():
         d = float(r.offset[k]) if r.offset is not None else math.nan
-        where = f"d = {format_number(d * 1000, 2, lang)} mm ({r.guide})" if math.isfinite(d) else w[10]
+        where = (
+            f"d = {format_number(d * 1000, 2, lang)} mm ({r.guide})" if math.isfinite(d) else w[10]
+        )
         out.append(f"  R_{r.key} = {vector_text(r.force[k], lang, 2)};  {where}")
     mb, mz = float(fa.balancing_moment[k]), float(fa.zhukovsky_moment[k])
     role = w[3] if fa.driving(k) else w[4]
     link = sol.scene.mechanism.drive.link
     sense = sense_text(mb, lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} N·m ({sense}; {role})")
-    out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} N·m; {w[6]} "
-               f"{float(fa.difference_percent[k]):.2e} %")
+    out.append(
+        f"  {w[5]}: M_b = {format_number(mz, 3, lang)} N·m; {w[6]} "
+        f"{float(fa.difference_percent[k]):.2e} %"
+    )
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} N·m")
     out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} kg·m²")
     return out

@@ -44,16 +44,22 @@ class Solution:
         return int(self.phi.shape[0])
 
 
-def build(scene: Scene, plans: tuple[str, ...] | None = None, loading: Any = None) -> tuple[Structure, Construction]:
+def build(
+    scene: Scene, plans: tuple[str, ...] | None = None, loading: Any = None
+) -> tuple[Structure, Construction]:
     """Structure and construction of a scene."""
     structure = analyse(scene.mechanism)
     plans = plans or scene.plans
     if "force" in plans and loading is None:
         from .dynamics.loading import Loading
+
         loading = Loading.from_scene(scene)
-    build_plans = tuple(p for p in (*KINEMATIC, "force") if p in plans or p in ("position", "velocity"))
-    c = build_construction(scene.mechanism, structure, build_plans, scene.assembly_phi, scene.path,
-                           loading)
+    build_plans = tuple(
+        p for p in (*KINEMATIC, "force") if p in plans or p in ("position", "velocity")
+    )
+    c = build_construction(
+        scene.mechanism, structure, build_plans, scene.assembly_phi, scene.path, loading
+    )
     return structure, c
 
 
@@ -65,11 +71,18 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
     n = count or pos.count or 12
     start = pos.start_angle
     if pos.start_extreme is not None:
-        ex = [e for e in extreme_positions(c, scene.mechanism, pos.start_extreme.subject)
-              if e.which == pos.start_extreme.which]
+        ex = [
+            e
+            for e in extreme_positions(c, scene.mechanism, pos.start_extreme.subject)
+            if e.which == pos.start_extreme.which
+        ]
         if not ex:
-            raise SceneError(f"{pos.start_extreme.subject} has no {pos.start_extreme.which} extreme "
-                             "position over the cycle", file=scene.path, key="positions.start")
+            raise SceneError(
+                f"{pos.start_extreme.subject} has no {pos.start_extreme.which} extreme "
+                "position over the cycle",
+                file=scene.path,
+                key="positions.start",
+            )
         start = ex[0].phi
     return np.mod(start + np.arange(n) * 2.0 * math.pi / n, 2.0 * math.pi)
 
@@ -77,7 +90,8 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
 def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[str]:
     """Step ids of the results a scene asks for (their ancestors are all that is evaluated)."""
     points = scene.points_of_interest or tuple(
-        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points)
+        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points
+    )
     out: list[str] = []
     for p in points:
         if "position" in plans:
@@ -93,7 +107,9 @@ def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[s
     return list(dict.fromkeys(out))
 
 
-def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]) -> dict[Plan, float]:
+def choose_scales(
+    scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]
+) -> dict[Plan, float]:
     """Scale factors: fixed by the scene or round values so each plan's largest segment ≤ 120 mm."""
     out: dict[Plan, float] = {}
     for plan in (Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION, Plan.FORCE):
@@ -107,13 +123,20 @@ def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[st
                 d = np.hypot(*(ev[s.end] - ev[s.start]).T)
                 if np.isfinite(d).any():
                     largest = max(largest, float(np.nanmax(d)))
-        out[plan] = choose_scale(largest, 150.0 if plan is Plan.POSITION else 120.0) if largest else 1.0
+        out[plan] = (
+            choose_scale(largest, 150.0 if plan is Plan.POSITION else 120.0) if largest else 1.0
+        )
     return out
 
 
-def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = None,
-          plans: tuple[str, ...] | None = None, loading: Any = None,
-          max_condition: float = MAX_CONDITION) -> Solution:
+def solve(
+    scene: Scene,
+    at_deg: list[float] | None = None,
+    count: int | None = None,
+    plans: tuple[str, ...] | None = None,
+    loading: Any = None,
+    max_condition: float = MAX_CONDITION,
+) -> Solution:
     """Solve a scene at the positions it (or the caller) asks for; raise on unbuildable ones."""
     plans = plans or scene.plans
     structure, c = build(scene, plans, loading)
@@ -129,6 +152,7 @@ def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = N
     if "force" in plans:
         from .dynamics.kinetostatics import analyse_forces
         from .dynamics.loading import Loading
+
         sol.extras["loading"] = loading or Loading.from_scene(scene)
         sol.extras["forces"] = analyse_forces(c, ev, scene.mechanism, sol.extras["loading"])
     return sol
@@ -142,7 +166,8 @@ def to_json(sol: Solution) -> dict[str, Any]:
     """The JSON document of ``mechplan solve --json`` (SI units, ω/ε counter-clockwise +)."""
     scene, c, ev = sol.scene, sol.construction, sol.ev
     points = scene.points_of_interest or tuple(
-        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points)
+        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points
+    )
     theta = c.drive.absolute(sol.phi)
     positions = []
     for k in range(sol.positions):
@@ -159,26 +184,41 @@ def to_json(sol: Solution) -> dict[str, Any]:
         links: dict[str, Any] = {}
         for lid in scene.mechanism.moving:
             entry: dict[str, Any] = {}
-            for key, name, of in (("angle", "angle_deg", c.link_angle), ("omega", "omega", c.omega),
-                                  ("epsilon", "epsilon", c.epsilon)):
+            for key, name, of in (
+                ("angle", "angle_deg", c.link_angle),
+                ("omega", "omega", c.omega),
+                ("epsilon", "epsilon", c.epsilon),
+            ):
                 sid = of(lid) if c.has_result(key, lid) else None
                 if sid is not None and sid in ev.values:
                     val = float(ev[sid][k])
-                    entry[name] = math.degrees(math.remainder(val, 2 * math.pi)) if key == "angle" else val
+                    entry[name] = (
+                        math.degrees(math.remainder(val, 2 * math.pi)) if key == "angle" else val
+                    )
             if entry:
                 links[lid] = entry
         entry_k: dict[str, Any] = {
             "phi_deg": round(math.degrees(float(sol.phi[k])), 10),
-            "crank_angle_deg": round(math.degrees(math.remainder(float(theta[k]), 2 * math.pi)), 10),
-            "points": pts, "links": links}
+            "crank_angle_deg": round(
+                math.degrees(math.remainder(float(theta[k]), 2 * math.pi)), 10
+            ),
+            "points": pts,
+            "links": links,
+        }
         if "forces" in sol.extras:
             entry_k.update(sol.extras["forces"].json(k))
         positions.append(entry_k)
-    return {"mechplan": __version__, "title": scene.title, "dof": sol.structure.dof,
-            "structure": sol.structure.formula,
-            "groups": [{"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups],
-            "positions": positions,
-            "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated}}
+    return {
+        "mechplan": __version__,
+        "title": scene.title,
+        "dof": sol.structure.dof,
+        "structure": sol.structure.formula,
+        "groups": [
+            {"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups
+        ],
+        "positions": positions,
+        "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated},
+    }
 
 
 def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, float, str, float]]:

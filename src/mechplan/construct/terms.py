@@ -1,7 +1,8 @@
 """Structured terms of a construction: directions of vector-equation terms.
 
 The construction stores what a direction *is* (⊥ a link, ∥ a guide, towards a point, opposite to an
-image); the words are chosen by the reader's language from the catalogues (``protocol.direction.*``).
+image); the words are chosen by the reader's language from the catalogues
+(``protocol.direction.*``).
 """
 
 from __future__ import annotations
@@ -15,15 +16,15 @@ from ..i18n import message
 class Relation(enum.Enum):
     """How the direction of a vector-equation term is known."""
 
-    GIVEN = "given"          # ✓: known from an earlier plan
-    UNKNOWN = "unknown"      # ?: found by the construction
-    PERP = "perp"            # ⊥ ref
-    PARALLEL = "parallel"    # ∥ ref
-    FROM_TO = "from_to"      # start → ref
-    TOWARDS = "towards"      # towards the point ref
-    OPPOSITE = "opposite"    # opposite to the vector ref
-    AGAINST = "against"      # against the sense of ref (a couple)
-    SYMBOL = "symbol"        # a drawn symbol: ↓, ↑, →, ←, or a formula
+    GIVEN = "given"  # ✓: known from an earlier plan
+    UNKNOWN = "unknown"  # ?: found by the construction
+    PERP = "perp"  # ⊥ ref
+    PARALLEL = "parallel"  # ∥ ref
+    FROM_TO = "from_to"  # start → ref
+    TOWARDS = "towards"  # towards the point ref
+    OPPOSITE = "opposite"  # opposite to the vector ref
+    AGAINST = "against"  # against the sense of ref (a couple)
+    SYMBOL = "symbol"  # a drawn symbol: ↓, ↑, →, ←, or a formula
 
 
 _WORDS = (Relation.TOWARDS, Relation.OPPOSITE, Relation.AGAINST)
@@ -35,8 +36,8 @@ class Direction:
 
     relation: Relation
     ref: str = ""
-    start: str = ""                      # FROM_TO: where the arrow starts
-    then: Direction | None = None        # a second clause: "∥ Ax, towards A"
+    start: str = ""  # FROM_TO: where the arrow starts
+    then: Direction | None = None  # a second clause: "∥ Ax, towards A"
 
     def text(self, language: str) -> str:
         """The direction as written in ``language`` (pole π written p′ in Chinese)."""

@@ -1,8 +1,8 @@
 """Sheet fonts: where the files are, which font a string needs, how wide a string is.
 
-osifont (ISO 3098 lettering; Latin, Vietnamese, Cyrillic, Greek) is the default; a CJK font (Noto Sans
-CJK SC) is used for strings it cannot show. Heights are ISO 3098 capital heights, so backends that size
-text by the em (SVG, matplotlib) scale by the font's capital-height ratio.
+osifont (ISO 3098 lettering; Latin, Vietnamese, Cyrillic, Greek) is the default; a CJK font (Noto
+Sans CJK SC) is used for strings it cannot show. Heights are ISO 3098 capital heights, so backends
+that size text by the em (SVG, matplotlib) scale by the font's capital-height ratio.
 """
 
 from __future__ import annotations
@@ -126,8 +126,11 @@ def _metrics(font: SheetFont) -> _Metrics | None:
         # only osifont has placeholder boxes (Ё ё Э э); expanding every glyph of the other fonts
         # would cost half a second per drawing
         glyf = tt.get("glyf") if font is SheetFont.ISO else None
-        advances = {cp: int(hmtx[name][0]) for cp, name in cmap.items()
-                    if glyf is None or not _is_placeholder(glyf[name], upem)}
+        advances = {
+            cp: int(hmtx[name][0])
+            for cp, name in cmap.items()
+            if glyf is None or not _is_placeholder(glyf[name], upem)
+        }
         tt.close()
     except (OSError, KeyError, ValueError, TTLibError) as exc:  # a broken font stops no drawing
         log.warning("cannot read font %s (%s); text metrics are estimated", path, exc)
@@ -201,9 +204,12 @@ def text_width_mm(text: str, height_mm: float, font: SheetFont | None = None) ->
     em_mm = height_mm / cap_ratio(font)
     if m is None:
         return sum(1.0 if _is_cjk(ord(c)) else font.value.advance_em for c in text) * em_mm
-    fallback = {SheetFont.ISO: 0.6, SheetFont.SYMBOL: 0.6, SheetFont.CJK: 1.0}[font] * m.units_per_em
-    units = sum(m.advances.get(ord(c), 1.0 * m.units_per_em if _is_cjk(ord(c)) else fallback)
-                for c in text)
+    fallback = {SheetFont.ISO: 0.6, SheetFont.SYMBOL: 0.6, SheetFont.CJK: 1.0}[
+        font
+    ] * m.units_per_em
+    units = sum(
+        m.advances.get(ord(c), 1.0 * m.units_per_em if _is_cjk(ord(c)) else fallback) for c in text
+    )
     return units / m.units_per_em * em_mm
 
 

@@ -1,7 +1,8 @@
-"""Sheet frames and title blocks: ISO 5457 + ISO 7200, ГОСТ 2.301/2.104 form 1, TCVN 7285 school form.
+"""Sheet frames and title blocks: ISO 5457 + ISO 7200, ГОСТ 2.301/2.104 form 1, TCVN 7285 form.
 
-`make_frame` returns the frame lines, the title block as a `Block` whose field values are tagged texts
-(DXF ATTRIBs), and the free drawing area (frame interior minus title block) as a shapely polygon.
+`make_frame` returns the frame lines, the title block as a `Block` whose field values are tagged
+texts (DXF ATTRIBs), and the free drawing area (frame interior minus title block) as a shapely
+polygon.
 """
 
 from __future__ import annotations
@@ -47,7 +48,7 @@ class Orientation(Enum):
     PORTRAIT = "portrait"
 
 
-#: ISO 5457 trimmed sheet sizes (short side, long side) in mm; identical in TCVN 7285 and ГОСТ 2.301.
+#: ISO 5457 trimmed sheet sizes (short side, long side) in mm; the same in TCVN 7285, ГОСТ 2.301.
 PAPER_SIZES_MM: Mapping[str, tuple[float, float]] = MappingProxyType(
     {"A0": (841.0, 1189.0), "A1": (594.0, 841.0), "A2": (420.0, 594.0),
      "A3": (297.0, 420.0), "A4": (210.0, 297.0)}
@@ -360,7 +361,7 @@ def _clean_fields(fields: Mapping[str, object] | None) -> dict[str, str]:
 
 
 def paper_size(size: str, orientation: Orientation | str | None = None) -> tuple[float, float]:
-    """Return (width, height) in mm of ISO sheet `size`; A4 defaults to portrait, others landscape."""
+    """Return (width, height) in mm of ISO sheet `size`; A4 is portrait, others landscape."""
     key = str(size).upper()
     if key not in PAPER_SIZES_MM:
         raise DrawingError(f"sheet size must be one of {', '.join(PAPER_SIZES_MM)} (got {size!r})")

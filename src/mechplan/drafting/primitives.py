@@ -1,4 +1,5 @@
-"""Drawing primitives in sheet millimetres (origin bottom-left, y up) and the `Sheet` that holds them.
+"""Drawing primitives in sheet millimetres (origin bottom-left, y up) and the `Sheet` that holds
+them.
 
 Renderers draw exactly these and nothing else; every primitive carries a layer `Role` that fixes its
 ISO 128 line width and line type, so a backend never decides how a line looks.
@@ -379,8 +380,11 @@ class Table:
         for h in self.row_heights_mm:
             ys.append(ys[-1] - h)
         out: list[Primitive] = [
-            Polyline(((xs[0], ys[0]), (xs[-1], ys[0]), (xs[-1], ys[-1]), (xs[0], ys[-1])),
-                     self.border_role, closed=True)
+            Polyline(
+                ((xs[0], ys[0]), (xs[-1], ys[0]), (xs[-1], ys[-1]), (xs[0], ys[-1])),
+                self.border_role,
+                closed=True,
+            )
         ]
         out += [Line((x, ys[0]), (x, ys[-1]), self.grid_role) for x in xs[1:-1]]
         out += [Line((xs[0], y), (xs[-1], y), self.grid_role) for y in ys[1:-1]]
@@ -395,8 +399,9 @@ class Table:
                     x = xs[c + 1] - 1.0
                 else:
                     x = (xs[c] + xs[c + 1]) / 2.0
-                out.append(Text((x, ym), s, self.text_height_mm, halign=self.halign,
-                                valign=VAlign.MIDDLE))
+                out.append(
+                    Text((x, ym), s, self.text_height_mm, halign=self.halign, valign=VAlign.MIDDLE)
+                )
         return tuple(out)
 
 
@@ -428,7 +433,9 @@ class Sheet:
         if not self.name or any(c in self.name for c in "/\\\0"):
             raise DrawingError(f"Sheet name must be a plain file stem (got {self.name!r})")
         object.__setattr__(
-            self, "attributes", MappingProxyType({str(k): str(v) for k, v in self.attributes.items()})
+            self,
+            "attributes",
+            MappingProxyType({str(k): str(v) for k, v in self.attributes.items()}),
         )
 
     def flat(self) -> Iterator[Primitive]:
@@ -441,5 +448,11 @@ class Sheet:
 
     def with_primitives(self, extra: Iterable[Primitive]) -> Sheet:
         """Return a copy with `extra` primitives appended."""
-        return Sheet(self.width_mm, self.height_mm, self.primitives + tuple(extra),
-                     dict(self.attributes), self.language, self.name)
+        return Sheet(
+            self.width_mm,
+            self.height_mm,
+            self.primitives + tuple(extra),
+            dict(self.attributes),
+            self.language,
+            self.name,
+        )

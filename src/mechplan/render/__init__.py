@@ -1,4 +1,5 @@
-"""Backends that draw a `Sheet` of primitives: DXF (ezdxf), SVG (svgwrite), PDF and PNG (matplotlib).
+"""Backends that draw a `Sheet` of primitives: DXF (ezdxf), SVG (svgwrite), PDF and PNG
+(matplotlib).
 
 Every file is written atomically: a failing render leaves any existing file untouched.
 """

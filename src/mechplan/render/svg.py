@@ -1,6 +1,7 @@
 """SVG backend (svgwrite): true scale (size in mm, viewBox in mm), one group per layer role.
 
-Sheet coordinates have y up; SVG has y down, so every y is written as H − y (text is never mirrored).
+Sheet coordinates have y up; SVG has y down, so every y is written as H − y (text is never
+mirrored).
 """
 
 from __future__ import annotations
@@ -33,8 +34,17 @@ from mechplan.errors import DrawingError
 from mechplan.render.atomic import write_atomic
 
 #: Paint order of the role groups (text on top, thick lines over thin ones).
-ROLE_ORDER: tuple[Role, ...] = (Role.FILL, Role.THIN, Role.DASHED, Role.CHAIN, Role.DIMENSION,
-                                Role.TABLE, Role.OUTLINE, Role.FRAME, Role.TEXT)
+ROLE_ORDER: tuple[Role, ...] = (
+    Role.FILL,
+    Role.THIN,
+    Role.DASHED,
+    Role.CHAIN,
+    Role.DIMENSION,
+    Role.TABLE,
+    Role.OUTLINE,
+    Role.FRAME,
+    Role.TEXT,
+)
 _ANCHOR = {HAlign.LEFT: "start", HAlign.CENTER: "middle", HAlign.RIGHT: "end"}
 INK = "black"
 
@@ -54,8 +64,12 @@ class _Writer:
         self.sheet = sheet
         self.h = sheet.height_mm
         w = sheet.width_mm
-        self.dwg = svgwrite.Drawing(size=(f"{_n(w)}mm", f"{_n(self.h)}mm"), profile="full",
-                                    debug=False, viewBox=f"0 0 {_n(w)} {_n(self.h)}")
+        self.dwg = svgwrite.Drawing(
+            size=(f"{_n(w)}mm", f"{_n(self.h)}mm"),
+            profile="full",
+            debug=False,
+            viewBox=f"0 0 {_n(w)} {_n(self.h)}",
+        )
 
     def p(self, pt: tuple[float, float]) -> tuple[float, float]:
         return (_n(pt[0]), _n(self.h - pt[1]))
@@ -66,8 +80,13 @@ class _Writer:
         if role is Role.TEXT:
             attrs.update(fill=INK, stroke="none")
         else:
-            attrs.update(fill="none", stroke=INK, stroke_width=st.lineweight_mm,
-                         stroke_linecap="butt", stroke_linejoin="miter")
+            attrs.update(
+                fill="none",
+                stroke=INK,
+                stroke_width=st.lineweight_mm,
+                stroke_linecap="butt",
+                stroke_linejoin="miter",
+            )
             pattern = DASH_PATTERNS_MM[st.linetype]
             if pattern:
                 attrs["stroke_dasharray"] = " ".join(str(v) for v in pattern)

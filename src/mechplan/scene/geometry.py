@@ -33,8 +33,12 @@ def parse_side(text: str) -> tuple[str, str, int] | None:
     return m.group(2), m.group(3), 1 if m.group(1) == "left" else -1
 
 
-def triangulate(table: Table, lengths: dict[str, float], keys: dict[str, str],
-                sides: dict[str, tuple[str, str, int]]) -> dict[str, tuple[float, float]]:
+def triangulate(
+    table: Table,
+    lengths: dict[str, float],
+    keys: dict[str, str],
+    sides: dict[str, tuple[str, str, int]],
+) -> dict[str, tuple[float, float]]:
     """Place the points of a link in its frame from pairwise distances.
 
     ``lengths`` maps (sorted) "P|Q" to metres; the first key's points define the x axis.
@@ -46,7 +50,10 @@ def triangulate(table: Table, lengths: dict[str, float], keys: dict[str, str],
             if x not in order:
                 order.append(x)
     first = pairs[0]
-    local: dict[str, tuple[float, float]] = {first[0]: (0.0, 0.0), first[1]: (lengths["|".join(first)], 0.0)}
+    local: dict[str, tuple[float, float]] = {
+        first[0]: (0.0, 0.0),
+        first[1]: (lengths["|".join(first)], 0.0),
+    }
 
     def dist(a: str, b: str) -> float | None:
         return lengths.get(f"{a}|{b}", lengths.get(f"{b}|{a}"))
@@ -65,40 +72,65 @@ def triangulate(table: Table, lengths: dict[str, float], keys: dict[str, str],
             progress = True
     missing = [x for x in order if x not in local]
     if missing:
-        raise table.error("lengths", f"point {missing[0]} needs lengths to two other points of "
-                          "the link (a triangle), or define it under 'points'")
+        raise table.error(
+            "lengths",
+            f"point {missing[0]} needs lengths to two other points of "
+            "the link (a triangle), or define it under 'points'",
+        )
     for key, value in lengths.items():
         p, q = key.split("|")
         (x1, y1), (x2, y2) = local[p], local[q]
         got = math.hypot(x2 - x1, y2 - y1)
         if abs(got - value) > 1e-9 * max(value, 1e-12):
-            raise table.error(f"lengths.{keys[key]}", f"is inconsistent with the other lengths of "
-                              f"the link (the triangle gives {got * 1000:.6g} mm, got "
-                              f"{value * 1000:.6g} mm)")
+            raise table.error(
+                f"lengths.{keys[key]}",
+                f"is inconsistent with the other lengths of "
+                f"the link (the triangle gives {got * 1000:.6g} mm, got "
+                f"{value * 1000:.6g} mm)",
+            )
     return local
 
 
-def _place_third(table: Table, x: str, local: dict[str, tuple[float, float]], a: str, ra: float,
-                 b: str, rb: float, sides: dict[str, tuple[str, str, int]],
-                 keys: dict[str, str]) -> tuple[float, float]:
+def _place_third(
+    table: Table,
+    x: str,
+    local: dict[str, tuple[float, float]],
+    a: str,
+    ra: float,
+    b: str,
+    rb: float,
+    sides: dict[str, tuple[str, str, int]],
+    keys: dict[str, str],
+) -> tuple[float, float]:
     (ax, ay), (bx, by) = local[a], local[b]
     d = math.hypot(bx - ax, by - ay)
     if d == 0 or ra + rb < d * (1 - 1e-12) or abs(ra - rb) > d * (1 + 1e-12):
-        raise table.error("lengths", f"the lengths {a}{x} = {ra * 1000:.6g} mm, {b}{x} = "
-                          f"{rb * 1000:.6g} mm and {a}{b} = {d * 1000:.6g} mm do not form a triangle")
+        raise table.error(
+            "lengths",
+            f"the lengths {a}{x} = {ra * 1000:.6g} mm, {b}{x} = "
+            f"{rb * 1000:.6g} mm and {a}{b} = {d * 1000:.6g} mm do not form a triangle",
+        )
     u = ((bx - ax) / d, (by - ay) / d)
     along = (ra * ra - rb * rb + d * d) / (2 * d)
     h = math.sqrt(max(ra * ra - along * along, 0.0))
-    cand = {s: (ax + along * u[0] - s * h * u[1], ay + along * u[1] + s * h * u[0]) for s in (1, -1)}
+    cand = {
+        s: (ax + along * u[0] - s * h * u[1], ay + along * u[1] + s * h * u[0]) for s in (1, -1)
+    }
     if h <= 1e-12 * d:
         return cand[1]
     if x not in sides:
-        raise table.error("side", f"point {x} can be on either side of {a}->{b}; say which, e.g. "
-                          f"side = {{ {x} = \"left of {a}->{b}\" }}")
+        raise table.error(
+            "side",
+            f"point {x} can be on either side of {a}->{b}; say which, e.g. "
+            f'side = {{ {x} = "left of {a}->{b}" }}',
+        )
     p, q, s = sides[x]
     if p not in local or q not in local:
-        raise table.error(f"side.{x}", f"points {p} and {q} must be placed before {x} "
-                          f"(use two points of the same link that {x} is measured from)")
+        raise table.error(
+            f"side.{x}",
+            f"points {p} and {q} must be placed before {x} "
+            f"(use two points of the same link that {x} is measured from)",
+        )
     (px, py), (qx, qy) = local[p], local[q]
     for sign, (cx, cy) in cand.items():
         c = (qx - px) * (cy - py) - (qy - py) * (cx - px)
@@ -107,16 +139,20 @@ def _place_third(table: Table, x: str, local: dict[str, tuple[float, float]], a:
     raise table.error(f"side.{x}", f"point {x} lies on the line {p}->{q}; choose another line")
 
 
-def extra_point(table: Table, name: str, spec: object,
-                local: dict[str, tuple[float, float]]) -> tuple[float, float]:
+def extra_point(
+    table: Table, name: str, spec: object, local: dict[str, tuple[float, float]]
+) -> tuple[float, float]:
     """Place a point given as "midpoint B C", "0.35 of A B" or [x, y] in the link frame."""
     key = f"points.{name}"
     if isinstance(spec, list):
         if len(spec) != 2:
-            raise table.error(key, "expected [x, y] with units, e.g. [\"10 mm\", \"0 mm\"]")
-        return (table.value_quantity(spec[0], key, "length"), table.value_quantity(spec[1], key, "length"))
+            raise table.error(key, 'expected [x, y] with units, e.g. ["10 mm", "0 mm"]')
+        return (
+            table.value_quantity(spec[0], key, "length"),
+            table.value_quantity(spec[1], key, "length"),
+        )
     if not isinstance(spec, str):
-        raise table.error(key, f"expected \"midpoint B C\", \"0.35 of A B\" or [x, y] (got {spec!r})")
+        raise table.error(key, f'expected "midpoint B C", "0.35 of A B" or [x, y] (got {spec!r})')
     m = _MIDPOINT.match(spec)
     frac: float
     if m:
@@ -124,12 +160,15 @@ def extra_point(table: Table, name: str, spec: object,
     else:
         m = _FRACTION.match(spec)
         if not m:
-            raise table.error(key, f"expected \"midpoint B C\", \"0.35 of A B\" or [x, y] (got {spec!r})")
+            raise table.error(
+                key, f'expected "midpoint B C", "0.35 of A B" or [x, y] (got {spec!r})'
+            )
         frac = float(m.group(1).replace(",", "."))
         p, q = m.group(2), m.group(3)
     for r in (p, q):
         if r not in local:
-            raise table.error(key, f"point {r} is not a point of this link (it has "
-                              f"{', '.join(local)})")
+            raise table.error(
+                key, f"point {r} is not a point of this link (it has {', '.join(local)})"
+            )
     (x1, y1), (x2, y2) = local[p], local[q]
     return (x1 + frac * (x2 - x1), y1 + frac * (y2 - y1))

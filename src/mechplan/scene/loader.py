@@ -22,8 +22,8 @@ from .spec import (
     Scene,
 )
 
-TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions", "analysis",
-            "gravity", "loads", "drawing", "title_block", "description")
+TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions",
+            "analysis", "gravity", "loads", "drawing", "title_block", "description")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 SHEETS = ("A0", "A1", "A2", "A3", "A4")
@@ -97,7 +97,8 @@ def _ground(top: Table) -> tuple[dict[str, tuple[float, float]], dict[str, Guide
             raise ground.error(name, "a frame point name must start with a capital letter "
                                "(A, O1, D) or be 'guides'")
         if not isinstance(value, list) or len(value) != 2:
-            raise ground.error(name, f"expected coordinates [x, y], e.g. [\"0 mm\", \"0 mm\"] (got {value!r})")
+            raise ground.error(name, "expected coordinates [x, y], e.g. [\"0 mm\", \"0 mm\"] "
+                                     f"(got {value!r})")
         points[name] = (ground.value_quantity(value[0], name, "length"),
                         ground.value_quantity(value[1], name, "length"))
     if not points:
@@ -130,12 +131,14 @@ def _guide(g: Table, name: str, link: str, local: dict[str, tuple[float, float]]
     else:
         angle_v = g.quantity("angle", "angle")
         if angle_v is None:
-            raise g.error(None, f"guide {name} needs an 'angle' (e.g. \"60 deg\") or 'toward' a point")
+            raise g.error(None, f"guide {name} needs an 'angle' (e.g. \"60 deg\") "
+                          "or 'toward' a point")
         angle = angle_v
     return Guide(name=name, link=link, origin=origin, angle=angle, through=through)
 
 
-def _links(top: Table, ground: dict[str, tuple[float, float]]) -> tuple[dict[str, Link], dict[str, Guide]]:
+def _links(top: Table, ground: dict[str, tuple[float, float]]
+           ) -> tuple[dict[str, Link], dict[str, Guide]]:
     lt = top.table("links", required=True)
     assert lt is not None
     links: dict[str, Link] = {GROUND: Link(GROUND, "frame", dict(ground))}
@@ -186,7 +189,8 @@ def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]]
             text = side_t.string(name)
             parsed = parse_side(text or "")
             if parsed is None:
-                raise side_t.error(name, f"expected \"left of B->C\" or \"right of B->C\" (got {text!r})")
+                raise side_t.error(name, "expected \"left of B->C\" or \"right of B->C\" "
+                                   f"(got {text!r})")
             sides[name] = parsed
     slides_on = None
     local: dict[str, tuple[float, float]] = {}
@@ -255,19 +259,22 @@ def _pairs(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> list
     return pairs
 
 
-def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide], pairs: list[Pair]) -> Drive:
+def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
+           pairs: list[Pair]) -> Drive:
     d = top.table("drive", required=True)
     assert d is not None
     d.check_keys(("link", "speed", "omega", "sense", "from", "angle", "epsilon"))
     link = d.string("link", required=True)
     assert link is not None
     if link not in links or link == GROUND:
-        raise d.error("link", f"unknown link {link!r}; links are {', '.join(k for k in links if k != GROUND)}")
+        known = ", ".join(k for k in links if k != GROUND)
+        raise d.error("link", f"unknown link {link!r}; links are {known}")
     speed_key = "speed" if d.has("speed") else "omega"
     speed = d.quantity(speed_key, "angular_velocity", required=True, positive=True)
     assert speed is not None
     sense = d.string("sense", "ccw", choices=("cw", "ccw"))
-    pivots = [p.point for p in pairs if p.kind is PairKind.REVOLUTE and {p.a, p.b} == {GROUND, link}]
+    pivots = [p.point for p in pairs
+              if p.kind is PairKind.REVOLUTE and {p.a, p.b} == {GROUND, link}]
     if len(pivots) != 1:
         raise d.error("link", f"the driving link {link} must turn about exactly one frame point "
                       f"(it shares {len(pivots)} with the frame)")
@@ -280,7 +287,8 @@ def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide], pairs: 
 
 
 def _reference_angle(d: Table, name: str, guides: dict[str, Guide]) -> float:
-    axes = {"+x": 0.0, "x": 0.0, "+y": math.pi / 2, "y": math.pi / 2, "-x": math.pi, "-y": -math.pi / 2}
+    axes = {"+x": 0.0, "x": 0.0, "+y": math.pi / 2, "y": math.pi / 2, "-x": math.pi,
+            "-y": -math.pi / 2}
     if name in axes:
         return axes[name]
     if name in guides:
@@ -291,7 +299,8 @@ def _reference_angle(d: Table, name: str, guides: dict[str, Guide]) -> float:
         return d.value_quantity(name, "from", "angle")
     except SceneError:
         raise d.error("from", f"expected a frame guide ({', '.join(guides) or 'none defined'}), "
-                      f"an axis (+x, -y, …) or an angle such as \"30 deg\" (got {name!r})") from None
+                      "an axis (+x, -y, …) or an angle such as \"30 deg\" "
+                      f"(got {name!r})") from None
 
 
 def _assembly(top: Table, links: dict[str, Link]) -> tuple[dict[str, tuple[str, str, int]],
@@ -340,7 +349,8 @@ def _positions(top: Table, drive: Drive, points: set[str], links: dict[str, Link
         values = t.raw("at")
         if not isinstance(values, list) or not values:
             raise t.error("at", "expected a list of crank angles, e.g. [\"0 deg\", \"30 deg\"]")
-        return Positions(angles=tuple(t.value_quantity(v, f"at[{i}]", "angle") for i, v in enumerate(values)))
+        return Positions(angles=tuple(t.value_quantity(v, f"at[{i}]", "angle")
+                                      for i, v in enumerate(values)))
     count = t.raw("count", 12)
     if not isinstance(count, int) or isinstance(count, bool) or count < 1:
         raise t.error("count", f"must be a whole number ≥ 1 (got {count!r})")
@@ -397,7 +407,8 @@ def _drawing(top: Table, positions: int) -> DrawingSpec:
                 scales[k] = v
     plans_at = t.raw("plans_at", [])
     if not isinstance(plans_at, list) or not all(
-            isinstance(n, int) and not isinstance(n, bool) and 0 <= n < positions for n in plans_at):
+            isinstance(n, int) and not isinstance(n, bool) and 0 <= n < positions
+            for n in plans_at):
         raise t.error("plans_at", f"expected position numbers from 0 to {positions - 1}, e.g. "
                       f"[1, 4] (got {plans_at!r})")
     return DrawingSpec(sheet=t.string("sheet", "A1", choices=SHEETS) or "A1",

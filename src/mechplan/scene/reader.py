@@ -14,8 +14,11 @@ class Table:
 
     def __init__(self, data: Any, path: str, file: str) -> None:
         if not isinstance(data, dict):
-            raise SceneError(f"expected a table (got {type(data).__name__} {data!r})",
-                             file=file, key=path or None)
+            raise SceneError(
+                f"expected a table (got {type(data).__name__} {data!r})",
+                file=file,
+                key=path or None,
+            )
         self.data = data
         self.path = path
         self.file = file
@@ -26,7 +29,9 @@ class Table:
 
     def error(self, name: str | None, message: str) -> SceneError:
         """Return a SceneError located at a child key (or at this table)."""
-        return SceneError(message, file=self.file, key=self.key(name) if name else (self.path or None))
+        return SceneError(
+            message, file=self.file, key=self.key(name) if name else (self.path or None)
+        )
 
     def has(self, name: str) -> bool:
         """Tell whether a key is present."""
@@ -48,8 +53,13 @@ class Table:
             return None
         return Table(self.data[name], self.key(name), self.file)
 
-    def string(self, name: str, default: str | None = None, required: bool = False,
-               choices: tuple[str, ...] | None = None) -> str | None:
+    def string(
+        self,
+        name: str,
+        default: str | None = None,
+        required: bool = False,
+        choices: tuple[str, ...] | None = None,
+    ) -> str | None:
         """Return a string value, optionally from a closed set."""
         value = self.raw(name, default, required)
         if value is None:
@@ -61,9 +71,15 @@ class Table:
             raise self.error(name, f"must be one of {', '.join(choices)} (got {value!r})")
         return value
 
-    def quantity(self, name: str, dimension: str, default: float | None = None,
-                 required: bool = False, positive: bool = False,
-                 nonnegative: bool = False) -> float | None:
+    def quantity(
+        self,
+        name: str,
+        dimension: str,
+        default: float | None = None,
+        required: bool = False,
+        positive: bool = False,
+        nonnegative: bool = False,
+    ) -> float | None:
         """Return a quantity in SI units."""
         if name not in self.data:
             if required:
@@ -85,5 +101,9 @@ class Table:
         for name in self.data:
             if name not in allowed:
                 close = difflib.get_close_matches(name, allowed, n=1)
-                hint = f"did you mean '{close[0]}'?" if close else f"expected one of {', '.join(allowed)}"
+                hint = (
+                    f"did you mean '{close[0]}'?"
+                    if close
+                    else f"expected one of {', '.join(allowed)}"
+                )
                 raise self.error(name, f"unknown key; {hint}")

@@ -15,7 +15,6 @@ import numpy as np
 from ..construct.graph import Construction, Evaluation
 from ..construct.ops import Drawn, spec
 from ..construct.ops import Line as LineStyle
-from ..construct.ops.force import lever_terms
 from ..construct.protocol import mm
 from ..construct.protocol import plan_title as plan_name
 from ..construct.segments import SegmentKind
@@ -44,7 +43,6 @@ LABEL_H = 3.5
 TITLE_H = 5.0
 TABLE_H = 2.5
 ROW = 5.0
-
 
 
 @dataclass
@@ -78,8 +76,12 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
         w = text_width_mm(p.string, p.height_mm)
         x, y = p.position
         dx = {HAlign.LEFT: 0.0, HAlign.CENTER: -w / 2, HAlign.RIGHT: -w}[p.halign]
-        dy = {VAlign.BASELINE: 0.0, VAlign.BOTTOM: 0.0, VAlign.MIDDLE: -p.height_mm / 2,
-              VAlign.TOP: -p.height_mm}[p.valign]
+        dy = {
+            VAlign.BASELINE: 0.0,
+            VAlign.BOTTOM: 0.0,
+            VAlign.MIDDLE: -p.height_mm / 2,
+            VAlign.TOP: -p.height_mm,
+        }[p.valign]
         return [(x + dx, y + dy - 0.3 * p.height_mm), (x + dx + w, y + dy + p.height_mm)]
     if isinstance(p, Table):
         x0, y0 = p.origin
@@ -88,7 +90,7 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
 
 
 def mu_text(plan: Plan, mu: float, lang: str) -> str:
-    """"μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
+    """ "μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
     sym, unit = plan.scale_symbol, plan.scale_unit
     digits = max(0, -math.floor(math.log10(mu)) + 3) if mu > 0 else 3
     num = format_number(mu, digits, lang).rstrip("0").rstrip(",.")
@@ -120,19 +122,32 @@ def _finite(*pts: tuple[float, float]) -> bool:
     return all(math.isfinite(x) and math.isfinite(y) for x, y in pts)
 
 
-def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, lang: str,
-                title: str, group: str | None = None) -> Panel:
+def vector_plan(
+    c: Construction,
+    ev: Evaluation,
+    k: int,
+    plan: Plan,
+    mu: float,
+    lang: str,
+    title: str,
+    group: str | None = None,
+) -> Panel:
     """A velocity, acceleration or force plan at position k: lines, arrows, labels, tables.
 
     ``group`` keeps one group's steps only (each force polygon has a pole of its own).
     """
     panel = Panel(f"{plan.value}-{k}" + (f"-{group}" if group else ""), plan)
     prims = panel.primitives
-    steps = [s for s in c.of_plan(plan) if s.id in ev.values and (group is None or s.group == group)]
+    steps = [
+        s for s in c.of_plan(plan) if s.id in ev.values and (group is None or s.group == group)
+    ]
     segments = [g for g in c.segments if g.plan is plan and (group is None or g.group == group)]
-    if plan is Plan.FORCE:       # force vectors and lines of action are not polygon vertices
-        steps = [s for s in steps
-                 if s.kind is not Kind.POINT or spec(s.op).draw in (Drawn.VERTEX, Drawn.MEET)]
+    if plan is Plan.FORCE:  # force vectors and lines of action are not polygon vertices
+        steps = [
+            s
+            for s in steps
+            if s.kind is not Kind.POINT or spec(s.op).draw in (Drawn.VERTEX, Drawn.MEET)
+        ]
     pts: dict[str, tuple[float, float]] = {}
     for s in steps:
         if s.kind is Kind.POINT:
@@ -146,16 +161,26 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
         line = ev[s.id][k]
         through = _mm(line[0], mu)
         u = (float(line[1][0]), float(line[1][1]))
-        meet = next((m for m in steps if spec(m.op).draw is Drawn.MEET and s.id in m.inputs
-                     and m.id in pts), None)
+        meet = next(
+            (
+                m
+                for m in steps
+                if spec(m.op).draw is Drawn.MEET and s.id in m.inputs and m.id in pts
+            ),
+            None,
+        )
         if meet is None or not _finite(through):
             continue
         end = pts[meet.id]
         t_end = (end[0] - through[0]) * u[0] + (end[1] - through[1]) * u[1]
         t0, t1 = min(0.0, t_end) - 8.0, max(0.0, t_end) + 8.0
-        prims.append(Line((through[0] + t0 * u[0], through[1] + t0 * u[1]),
-                          (through[0] + t1 * u[0], through[1] + t1 * u[1]),
-                          ROLES[spec(s.op).line]))
+        prims.append(
+            Line(
+                (through[0] + t0 * u[0], through[1] + t0 * u[1]),
+                (through[0] + t1 * u[0], through[1] + t1 * u[1]),
+                ROLES[spec(s.op).line],
+            )
+        )
     # similarity images: the image triangle of a link
     for s in steps:
         if spec(s.op).draw is Drawn.IMAGE_TRIANGLE and s.id in pts:
@@ -170,8 +195,15 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
         if math.dist(a, b) < 0.5:
             continue
         thick = seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE, SegmentKind.REACTION)
-        prims.append(Arrow(a, b, Role.OUTLINE if thick else Role.THIN,
-                           head_length_mm=3.5 if thick else 3.0, head_width_mm=1.2 if thick else 1.0))
+        prims.append(
+            Arrow(
+                a,
+                b,
+                Role.OUTLINE if thick else Role.THIN,
+                head_length_mm=3.5 if thick else 3.0,
+                head_width_mm=1.2 if thick else 1.0,
+            )
+        )
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
     seen: dict[tuple[int, int], list[str]] = {}
     for s in steps:
@@ -188,25 +220,48 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
     return panel
 
 
-def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, plan: Plan,
-                      mu: float, lang: str, title: str, segments: list, group: str | None) -> None:
+def _title_and_tables(
+    panel: Panel,
+    c: Construction,
+    ev: Evaluation,
+    k: int,
+    plan: Plan,
+    mu: float,
+    lang: str,
+    title: str,
+    segments: list,
+    group: str | None,
+) -> None:
     x0, y0, _x1, y1 = panel.bounds()
     prims = panel.primitives
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(plan, mu, lang), LABEL_H))
+
     def head(key: str) -> str:
         return message(f"sheet.head.{key}", lang)
 
-    rows: list[tuple[str, ...]] = [(head("segment"), f"{head('on_paper')}, {mm(lang)}",
-                                    head("quantity"), f"{head('value')}, {plan.unit}")]
+    rows: list[tuple[str, ...]] = [
+        (
+            head("segment"),
+            f"{head('on_paper')}, {mm(lang)}",
+            head("quantity"),
+            f"{head('value')}, {plan.unit}",
+        )
+    ]
     for seg in segments:
         if seg.start not in ev.values or seg.end not in ev.values:
             continue
         length = float(np.hypot(*(ev[seg.end][k] - ev[seg.start][k])))
         if not math.isfinite(length):
             continue
-        rows.append((pole_label(seg.name, lang), format_number(length / mu, 1, lang), seg.quantity,
-                     format_number(length, 3, lang)))
+        rows.append(
+            (
+                pole_label(seg.name, lang),
+                format_number(length / mu, 1, lang),
+                seg.quantity,
+                format_number(length, 3, lang),
+            )
+        )
     y = y0 - 6.0
     if len(rows) > 1:
         t = table(rows, (x0, y))
@@ -217,21 +272,36 @@ def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, pla
             continue
         prims.append(Text((x0, y - TABLE_H), f"{g}:  {eq}", TABLE_H))
         y -= TABLE_H + 2.5
-        t2 = table([(head("term"), head("direction"), head("magnitude"))] +
-                   [(term, d.text(lang), m) for term, d, m in terms], (x0, y))
+        t2 = table(
+            [(head("term"), head("direction"), head("magnitude"))]
+            + [(term, d.text(lang), m) for term, d, m in terms],
+            (x0, y),
+        )
         prims.append(t2)
         y -= sum(t2.row_heights_mm) + 4.0
 
 
-def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech, highlight: list[int],
-                  extremes: list[float], ev_ext: Evaluation | None, mu: float, lang: str,
-                  title: str, numbers: list[str]) -> Panel:
+def position_plan(
+    c: Construction,
+    ev_all: Evaluation,
+    ev_traj: Evaluation,
+    mech,
+    highlight: list[int],
+    extremes: list[float],
+    ev_ext: Evaluation | None,
+    mu: float,
+    lang: str,
+    title: str,
+    numbers: list[str],
+) -> Panel:
     """Positions overlaid (highlighted ones thick), trajectories, extreme positions, guides."""
     panel = Panel("position", Plan.POSITION)
     prims = panel.primitives
     links = [lk for lk in mech.links.values() if lk.id != "0"]
-    joints = {lk.id: [p for p in lk.points if any(pr.point == p for pr in mech.pairs_of(lk.id))]
-              for lk in links}
+    joints = {
+        lk.id: [p for p in lk.points if any(pr.point == p for pr in mech.pairs_of(lk.id))]
+        for lk in links
+    }
 
     def draw_links(ev: Evaluation, k: int, role: Role) -> None:
         for lk in links:
@@ -266,8 +336,15 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
         if _finite(tip_mm):
             d = (tip_mm[0] - centre[0], tip_mm[1] - centre[1])
             n = math.hypot(*d) or 1.0
-            prims.append(Text((tip_mm[0] + 4.0 * d[0] / n, tip_mm[1] + 4.0 * d[1] / n), numbers[k],
-                              2.5, halign=HAlign.CENTER, valign=VAlign.MIDDLE))
+            prims.append(
+                Text(
+                    (tip_mm[0] + 4.0 * d[0] / n, tip_mm[1] + 4.0 * d[1] / n),
+                    numbers[k],
+                    2.5,
+                    halign=HAlign.CENTER,
+                    valign=VAlign.MIDDLE,
+                )
+            )
     if ev_ext is not None:
         for k in range(ev_ext.n):
             draw_links(ev_ext, k, Role.DASHED)
@@ -308,7 +385,7 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
             prims.extend(_pivot(_mm(ev_all[_pos(ev_all, name)][0], mu)))
     k0 = highlight[0] if highlight else 0
     names = list(dict.fromkeys(p for lk in links for p in lk.points))
-    for p in names:                      # points that are not joints get a small marker too
+    for p in names:  # points that are not joints get a small marker too
         if not any(p in js for js in joints.values()) and _has(ev_all, p):
             q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
@@ -328,78 +405,28 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
 def _slider(p: tuple[float, float], angle: float) -> Polyline:
     c, s = math.cos(angle), math.sin(angle)
     corners = [(-6.0, -3.5), (6.0, -3.5), (6.0, 3.5), (-6.0, 3.5)]
-    return Polyline(tuple((p[0] + c * x - s * y, p[1] + s * x + c * y) for x, y in corners),
-                    Role.OUTLINE, closed=True)
+    return Polyline(
+        tuple((p[0] + c * x - s * y, p[1] + s * x + c * y) for x, y in corners),
+        Role.OUTLINE,
+        closed=True,
+    )
 
 
 def _pivot(p: tuple[float, float]) -> list[Primitive]:
     x, y = p
-    out: list[Primitive] = [Polyline(((x, y), (x - 4.0, y - 6.0), (x + 4.0, y - 6.0)), Role.OUTLINE,
-                                     closed=True),
-                            Line((x - 6.0, y - 6.0), (x + 6.0, y - 6.0), Role.OUTLINE)]
-    out += [Line((x - 6.0 + 2.0 * i, y - 6.0), (x - 8.0 + 2.0 * i, y - 8.5), Role.THIN) for i in range(7)]
+    out: list[Primitive] = [
+        Polyline(((x, y), (x - 4.0, y - 6.0), (x + 4.0, y - 6.0)), Role.OUTLINE, closed=True),
+        Line((x - 6.0, y - 6.0), (x + 6.0, y - 6.0), Role.OUTLINE),
+    ]
+    out += [
+        Line((x - 6.0 + 2.0 * i, y - 6.0), (x - 8.0 + 2.0 * i, y - 8.5), Role.THIN)
+        for i in range(7)
+    ]
     return out
 
 
 def plan_title(plan: Plan, lang: str, k: int, phi_deg: float, group: str | None = None) -> str:
-    """"Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
+    """ "Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
     head = plan_name(plan, lang) + (f" {group}" if group else "")
     position = message("sheet.position", lang)
     return f"{head} — {position} {k}, φ = {format_number(phi_deg, 1, lang)}°"
-
-
-def lever_title(lang: str, phi_deg: float) -> str:
-    """"Zhukovsky's lever — φ = 30.0°" (the angle always with a decimal point, as drawn before)."""
-    return f"{message('sheet.lever.title', lang)} — φ = {phi_deg:.1f}°"
-
-
-def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: str,
-                    title: str) -> Panel | None:
-    """The velocity plan turned by 90° with every load at the image of its point."""
-    lever = next((s for s in c.of_plan(Plan.FORCE) if spec(s.op).draw is Drawn.LEVER), None)
-    if lever is None or lever.id not in ev.values:
-        return None
-    panel = Panel(f"force-{k}-lever", Plan.FORCE)
-    prims = panel.primitives
-
-    def turned(v: np.ndarray) -> tuple[float, float]:
-        return (-float(v[1]) / mu_v, float(v[0]) / mu_v)
-
-    for seg in c.segments:
-        if seg.plan is Plan.VELOCITY and seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE) \
-                and seg.start in ev.values and seg.end in ev.values:
-            a, b = turned(ev[seg.start][k]), turned(ev[seg.end][k])
-            if _finite(a, b) and math.dist(a, b) > 0.5:
-                prims.append(Line(a, b, Role.THIN))
-    forces: list[tuple[tuple[float, float], np.ndarray, str]] = []
-    couples: list[str] = []
-    for term in lever_terms(lever):
-        if term.kind == "F":
-            forces.append((turned(ev[term.first][k]), ev[term.second][k], c[term.second].label))
-        else:
-            couples.append(f"{c[term.first].label} = "
-                           f"{format_number(float(ev[term.first][k]), 2, lang)} N·m")
-    largest = max((float(np.hypot(*f)) for _, f, _ in forces), default=0.0)
-    if largest > 0:
-        from ..construct.scale import choose_scale
-        mu_f = choose_scale(largest, 40.0)
-        placer_items: list[tuple[tuple[float, float], str]] = []
-        for at, f, label in forces:
-            tip = (at[0] + float(f[0]) / mu_f, at[1] + float(f[1]) / mu_f)
-            if _finite(at, tip) and math.dist(at, tip) > 0.5:
-                prims.append(Arrow(at, tip, Role.OUTLINE, head_length_mm=3.0, head_width_mm=1.0))
-                placer_items.append((tip, label))
-        prims.append(Circle((0.0, 0.0), 0.8, Role.OUTLINE))
-        placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
-        prims.append(placer.place((0.0, 0.0), "p"))
-        for at, label in placer_items:
-            prims.append(placer.place(at, label))
-        x0, y0, _x1, y1 = panel.bounds()
-        prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
-        prims.append(Text((x0, y1 + 3.0), f"{mu_text(Plan.VELOCITY, mu_v, lang)};  "
-                          f"{mu_text(Plan.FORCE, mu_f, lang)}", LABEL_H))
-        y = y0 - 6.0
-        for line in couples + [f"{lever.label} = {format_number(float(ev[lever.id][k]), 2, lang)} N·m"]:
-            prims.append(Text((x0, y), line, TABLE_H))
-            y -= 4.5
-    return panel if prims else None

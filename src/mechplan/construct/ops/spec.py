@@ -26,22 +26,22 @@ Result = tuple[Array, Array | None, Array | None]
 class Source(enum.Enum):
     """Where an operation's value comes from."""
 
-    INPUTS = "inputs"        # evaluate(step, *input values)
+    INPUTS = "inputs"  # evaluate(step, *input values)
     POSITIONS = "positions"  # evaluate(step, n): depends only on the number of positions
-    DRIVE = "drive"          # the crank angle, from the construction's drive map
+    DRIVE = "drive"  # the crank angle, from the construction's drive map
 
 
 class Drawn(enum.Enum):
     """What a sheet draws for a step of this operation."""
 
-    NOTHING = "nothing"                      # a scalar or a value only written
-    POINT = "point"                          # a labelled point (an image)
-    VERTEX = "vertex"                        # a labelled vertex of a force polygon (or a pole)
-    MEET = "meet"                            # a labelled point where two construction lines meet
+    NOTHING = "nothing"  # a scalar or a value only written
+    POINT = "point"  # a labelled point (an image)
+    VERTEX = "vertex"  # a labelled vertex of a force polygon (or a pole)
+    MEET = "meet"  # a labelled point where two construction lines meet
     CONSTRUCTION_LINE = "construction_line"  # a line from its point to (and past) its meet
-    IMAGE_TRIANGLE = "image_triangle"        # a point joined to the two images it is similar to
-    VECTOR = "vector"                        # a force laid on a polygon, not a vertex of its own
-    LEVER = "lever"                          # Zhukovsky's lever: the turned plan with the loads
+    IMAGE_TRIANGLE = "image_triangle"  # a point joined to the two images it is similar to
+    VECTOR = "vector"  # a force laid on a polygon, not a vertex of its own
+    LEVER = "lever"  # Zhukovsky's lever: the turned plan with the loads
 
 
 class Line(enum.Enum):
@@ -57,10 +57,10 @@ class Grade(enum.Enum):
     """How the checker grades what a student submits for a step of this operation."""
 
     NOT_GRADED = "not_graded"  # given data or a value never drawn
-    POINT = "point"            # the submitted point against the exact one, in paper mm
-    MEET = "meet"              # a point found by two lines: graded as a point, lines by direction
-    DIRECTION = "direction"    # a construction line: its direction through its point
-    VALUE = "value"            # a scalar written in a table: relative error
+    POINT = "point"  # the submitted point against the exact one, in paper mm
+    MEET = "meet"  # a point found by two lines: graded as a point, lines by direction
+    DIRECTION = "direction"  # a construction line: its direction through its point
+    VALUE = "value"  # a scalar written in a table: relative error
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,11 +69,11 @@ class OpSpec:
 
     op: Op
     evaluate: Callable[..., Result] | None
-    message: str | None                  # protocol sentence; None: drawn, never written
+    message: str | None  # protocol sentence; None: drawn, never written
     draw: Drawn = Drawn.NOTHING
     line: Line = Line.NONE
     grade: Grade = Grade.NOT_GRADED
-    hint: str = "hint.step"              # key of the checker's hint for a wrong result
+    hint: str = "hint.step"  # key of the checker's hint for a wrong result
     source: Source = Source.INPUTS
     inputs: tuple[str, ...] = field(init=False)
     rest: str | None = field(init=False)  # name of a variable tail of inputs, if any
@@ -96,16 +96,18 @@ class OpSpec:
         try:
             return self.inputs.index(name)
         except ValueError:
-            raise KeyError(f"{self.op.value} has no input {name!r} (inputs: {self.inputs})") \
-                from None
+            raise KeyError(
+                f"{self.op.value} has no input {name!r} (inputs: {self.inputs})"
+            ) from None
 
 
 # -- helpers shared by the evaluators -----------------------------------------------------------
 def line(point: Array, u: Array) -> Array:
     """A line value (N, 2, 2): a point and a unit direction."""
     # component-wise copies: numpy's inner loop over a trailing axis of 2 is ~5x slower
-    out = np.empty(np.broadcast_shapes(point.shape, u.shape)[:-1] + (2, 2),
-                   np.result_type(point, u))
+    out = np.empty(
+        np.broadcast_shapes(point.shape, u.shape)[:-1] + (2, 2), np.result_type(point, u)
+    )
     out[..., 0, 0], out[..., 0, 1] = point[..., 0], point[..., 1]
     out[..., 1, 0], out[..., 1, 1] = u[..., 0], u[..., 1]
     return out
@@ -139,5 +141,7 @@ def to_complex(v: Array) -> Array:
 def to_real(z: Array) -> Array:
     """(N,) complex numbers as (N, 2) vectors without a copy where the layout allows."""
     if z.dtype in (np.complex128, np.complex64) and z.flags.c_contiguous:
-        return z.view(np.float64 if z.dtype == np.complex128 else np.float32).reshape(z.shape + (2,))
+        return z.view(np.float64 if z.dtype == np.complex128 else np.float32).reshape(
+            z.shape + (2,)
+        )
     return from_complex(z)

@@ -47,7 +47,9 @@ def omega(step: Step, p: Array, q: Array, vp: Array, vq: Array) -> Result:
     return cross(r, vq - vp) / dot(r, r), None, None
 
 
-def rigid_velocity(step: Step, origin: Array, omega: Array, p_origin: Array, p_point: Array) -> Result:
+def rigid_velocity(
+    step: Step, origin: Array, omega: Array, p_origin: Array, p_point: Array
+) -> Result:
     """v_X = v_O + ω × OX."""
     return origin + scaled(omega, perp(p_point - p_origin)), None, None
 
@@ -68,16 +70,48 @@ def copy(step: Step, value: Array) -> Result:
 
 SPECS = (
     OpSpec(Op.POLE, pole, "protocol.op.pole", Drawn.VERTEX, source=Source.POSITIONS),
-    OpSpec(Op.DRIVE_VELOCITY, drive_velocity, "protocol.op.drive_velocity", Drawn.POINT,
-           Line.OUTLINE, Grade.POINT, "hint.drive"),
-    OpSpec(Op.LINE_PERP, line_perp, "protocol.op.line_perp", Drawn.CONSTRUCTION_LINE,
-           Line.DASHED, Grade.DIRECTION),
-    OpSpec(Op.LINE_PARALLEL, line_parallel, "protocol.op.line_parallel", Drawn.CONSTRUCTION_LINE,
-           Line.DASHED, Grade.DIRECTION),
+    OpSpec(
+        Op.DRIVE_VELOCITY,
+        drive_velocity,
+        "protocol.op.drive_velocity",
+        Drawn.POINT,
+        Line.OUTLINE,
+        Grade.POINT,
+        "hint.drive",
+    ),
+    OpSpec(
+        Op.LINE_PERP,
+        line_perp,
+        "protocol.op.line_perp",
+        Drawn.CONSTRUCTION_LINE,
+        Line.DASHED,
+        Grade.DIRECTION,
+    ),
+    OpSpec(
+        Op.LINE_PARALLEL,
+        line_parallel,
+        "protocol.op.line_parallel",
+        Drawn.CONSTRUCTION_LINE,
+        Line.DASHED,
+        Grade.DIRECTION,
+    ),
     OpSpec(Op.OMEGA, omega, "protocol.op.omega", grade=Grade.VALUE),
-    OpSpec(Op.RIGID_VELOCITY, rigid_velocity, "protocol.op.rigid_velocity", Drawn.POINT,
-           Line.OUTLINE, Grade.POINT),
-    OpSpec(Op.SIMILAR_IMAGE, similar_image, "protocol.op.similar_image", Drawn.IMAGE_TRIANGLE,
-           Line.THIN, Grade.POINT, "hint.similar"),
+    OpSpec(
+        Op.RIGID_VELOCITY,
+        rigid_velocity,
+        "protocol.op.rigid_velocity",
+        Drawn.POINT,
+        Line.OUTLINE,
+        Grade.POINT,
+    ),
+    OpSpec(
+        Op.SIMILAR_IMAGE,
+        similar_image,
+        "protocol.op.similar_image",
+        Drawn.IMAGE_TRIANGLE,
+        Line.THIN,
+        Grade.POINT,
+        "hint.similar",
+    ),
     OpSpec(Op.COPY, copy, "protocol.op.copy", grade=Grade.VALUE),
 )

@@ -28,15 +28,35 @@ def emit_drive(b: Builder) -> None:
     tip, group = start_plan(b, A)
     drive = b.mech.drive
     body = b.bodies[drive.link]
-    body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR, Role.GIVEN,
-                         f"ε{drive.link}", value=drive.epsilon)
+    body.epsilon = b.add(
+        f"acc.epsilon.{drive.link}",
+        Op.CONSTANT,
+        (),
+        A,
+        Kind.SCALAR,
+        Role.GIVEN,
+        f"ε{drive.link}",
+        value=drive.epsilon,
+    )
     b.result(f"epsilon_{drive.link}", body.epsilon)
-    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
-                       Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
-                       omega=drive.omega, epsilon=drive.epsilon)
+    b.acc[tip] = b.add(
+        f"acc.{tip}",
+        Op.DRIVE_ACCELERATION,
+        (b.pos[drive.pivot], b.pos[tip]),
+        A,
+        Kind.POINT,
+        Role.RESULT,
+        alabel(tip),
+        group,
+        subject=(drive.pivot, tip),
+        omega=drive.omega,
+        epsilon=drive.epsilon,
+    )
     rows = [(f"a^n_{tip}", from_to(tip, drive.pivot), f"ω{drive.link}²·l_{drive.pivot}{tip}")]
     if drive.epsilon:
-        rows.append((f"a^t_{tip}", perp(f"{drive.pivot}{tip}"), f"ε{drive.link}·l_{drive.pivot}{tip}"))
+        rows.append(
+            (f"a^t_{tip}", perp(f"{drive.pivot}{tip}"), f"ε{drive.link}·l_{drive.pivot}{tip}")
+        )
     b.c.equations[(A, group)] = (f"a_{tip} = a^n_{tip} + a^t_{tip}", rows)
     absolute(b, tip, A, group)
     complete(b, drive.link, A, group)
@@ -44,8 +64,13 @@ def emit_drive(b: Builder) -> None:
 
 def emit_group(b: Builder, g: Group) -> None:
     """Acceleration construction of one group, then images of all its points."""
-    {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
-     GroupKind.RPP: _rpp}[g.kind](b, g)
+    {
+        GroupKind.RRR: _rrr,
+        GroupKind.RRP: _rrp,
+        GroupKind.RPR: _rpr,
+        GroupKind.PRP: _prp,
+        GroupKind.RPP: _rpp,
+    }[g.kind](b, g)
     for link in g.links:
         complete(b, link, A, g.name)
 
@@ -54,38 +79,75 @@ def _normal(b: Builder, start: str, link: str, p: str, q: str, q_name: str, grou
     """n_QP: from the image of P, ∥ QP towards P, of length ω²·l_PQ."""
     omega = b.bodies[link].omega
     assert omega is not None
-    sid = b.add(f"acc.n.{q_name}{p}", Op.NORMAL, (start, omega, b.pos[p], b.pos[q]), A, Kind.POINT,
-                Role.AUXILIARY, f"n_{q_name}{p}", group, subject=(b.c[start].label, q_name, p))
-    b.segment(A, start, sid, f"{b.c[start].label}n_{q_name}{p}", f"a^n_{q_name}{p}",
-              SegmentKind.NORMAL, group)
+    sid = b.add(
+        f"acc.n.{q_name}{p}",
+        Op.NORMAL,
+        (start, omega, b.pos[p], b.pos[q]),
+        A,
+        Kind.POINT,
+        Role.AUXILIARY,
+        f"n_{q_name}{p}",
+        group,
+        subject=(b.c[start].label, q_name, p),
+    )
+    b.segment(
+        A,
+        start,
+        sid,
+        f"{b.c[start].label}n_{q_name}{p}",
+        f"a^n_{q_name}{p}",
+        SegmentKind.NORMAL,
+        group,
+    )
     return sid
 
 
-def _coriolis(b: Builder, start: str, frame_link: str, v_from: str, v_to: str, name: str,
-              group: str) -> str:
+def _coriolis(
+    b: Builder, start: str, frame_link: str, v_from: str, v_to: str, name: str, group: str
+) -> str:
     """k: from ``start``, 2ω × v_rel where v_rel = v_to − v_from and ω of the guide's link."""
     if frame_link == GROUND:
         return start
     omega = b.bodies[frame_link].omega
     assert omega is not None
-    sid = b.add(f"acc.k.{name}", Op.CORIOLIS, (start, omega, v_from, v_to), A, Kind.POINT,
-                Role.AUXILIARY, f"k_{name}", group,
-                subject=(b.c[start].label, b.c[omega].label, b.c[v_from].label, b.c[v_to].label))
-    b.segment(A, start, sid, f"{b.c[start].label}k_{name}", f"a^k_{name}", SegmentKind.CORIOLIS,
-              group)
+    sid = b.add(
+        f"acc.k.{name}",
+        Op.CORIOLIS,
+        (start, omega, v_from, v_to),
+        A,
+        Kind.POINT,
+        Role.AUXILIARY,
+        f"k_{name}",
+        group,
+        subject=(b.c[start].label, b.c[omega].label, b.c[v_from].label, b.c[v_to].label),
+    )
+    b.segment(
+        A, start, sid, f"{b.c[start].label}k_{name}", f"a^k_{name}", SegmentKind.CORIOLIS, group
+    )
     return sid
 
 
 def _epsilon(b: Builder, link: str, p: str, q_pos: str, n: str, aq: str, group: str) -> str:
     body = b.bodies[link]
-    body.epsilon = b.add(f"acc.epsilon.{link}", Op.EPSILON, (b.pos[p], q_pos, n, aq), A,
-                         Kind.SCALAR, Role.RESULT, f"ε{link}", group, subject=(p, b.c[q_pos].label))
+    body.epsilon = b.add(
+        f"acc.epsilon.{link}",
+        Op.EPSILON,
+        (b.pos[p], q_pos, n, aq),
+        A,
+        Kind.SCALAR,
+        Role.RESULT,
+        f"ε{link}",
+        group,
+        subject=(p, b.c[q_pos].label),
+    )
     b.result(f"epsilon_{link}", body.epsilon)
     return body.epsilon
 
 
 def _tangential(b: Builder, n: str, end: str, quantity: str, group: str) -> None:
-    b.segment(A, n, end, f"{b.c[n].label} {b.c[end].label}", quantity, SegmentKind.TANGENTIAL, group)
+    b.segment(
+        A, n, end, f"{b.c[n].label} {b.c[end].label}", quantity, SegmentKind.TANGENTIAL, group
+    )
 
 
 def _rrr(b: Builder, g: Group) -> None:
@@ -93,8 +155,15 @@ def _rrr(b: Builder, g: Group) -> None:
     p1, p2, k = g.outer1.point, g.outer2.point, g.inner.point
     n1 = _normal(b, b.acc[p1], l1, p1, k, k, g.name)
     n2 = _normal(b, b.acc[p2], l2, p2, k, k, g.name)
-    meet = meet_lines(b, A, f"acc.{k}", perp_line(b, A, n1, p1, k, g.name), perp_line(b, A, n2, p2, k, g.name),
-                 alabel(k), g.name)
+    meet = meet_lines(
+        b,
+        A,
+        f"acc.{k}",
+        perp_line(b, A, n1, p1, k, g.name),
+        perp_line(b, A, n2, p2, k, g.name),
+        alabel(k),
+        g.name,
+    )
     b.acc[k] = meet
     _epsilon(b, l1, p1, b.pos[k], n1, meet, g.name)
     _epsilon(b, l2, p2, b.pos[k], n2, meet, g.name)
@@ -102,10 +171,16 @@ def _rrr(b: Builder, g: Group) -> None:
     _tangential(b, n2, meet, f"a^t_{k}{p2}", g.name)
     absolute(b, k, A, g.name)
     b.c.equations[(A, g.name)] = (
-        f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{p2} + a^n_{k}{p2} + a^t_{k}{p2}", [
-            (f"a_{p1}", GIVEN, "✓"), (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
-            (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?"), (f"a_{p2}", GIVEN, "✓"),
-            (f"a^n_{k}{p2}", from_to(k, p2), f"ω{l2}²·l_{p2}{k}"), (f"a^t_{k}{p2}", perp(f"{p2}{k}"), "?")])
+        f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{p2} + a^n_{k}{p2} + a^t_{k}{p2}",
+        [
+            (f"a_{p1}", GIVEN, "✓"),
+            (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
+            (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?"),
+            (f"a_{p2}", GIVEN, "✓"),
+            (f"a^n_{k}{p2}", from_to(k, p2), f"ω{l2}²·l_{p2}{k}"),
+            (f"a^t_{k}{p2}", perp(f"{p2}{k}"), "?"),
+        ],
+    )
 
 
 def _rrp(b: Builder, g: Group) -> None:
@@ -117,27 +192,49 @@ def _rrp(b: Builder, g: Group) -> None:
     km_v = coincident(b, m, k, Plan.VELOCITY, g.name)
     km = coincident(b, m, k, A, g.name)
     kk = _coriolis(b, km, m, km_v, b.vel[k], f"{k}{l2}{k}{m}", g.name)
-    meet = meet_lines(b, A, f"acc.{k}", perp_line(b, A, n1, p1, k, g.name), parallel_line(b, A, kk, locus, g.name),
-                 alabel(k), g.name)
+    meet = meet_lines(
+        b,
+        A,
+        f"acc.{k}",
+        perp_line(b, A, n1, p1, k, g.name),
+        parallel_line(b, A, kk, locus, g.name),
+        alabel(k),
+        g.name,
+    )
     b.acc[k] = meet
     _epsilon(b, l1, p1, b.pos[k], n1, meet, g.name)
     link_scalar(b, l2, m, A, g.name)
     _tangential(b, n1, meet, f"a^t_{k}{p1}", g.name)
     guide = b.c[locus].label
     if m != GROUND:
-        b.segment(A, kk, meet, f"{b.c[kk].label} {b.c[meet].label}", f"a^r_{k}{l2}{k}{m}",
-                  SegmentKind.SLIDING, g.name)
+        b.segment(
+            A,
+            kk,
+            meet,
+            f"{b.c[kk].label} {b.c[meet].label}",
+            f"a^r_{k}{l2}{k}{m}",
+            SegmentKind.SLIDING,
+            g.name,
+        )
     absolute(b, k, A, g.name)
-    rows = [(f"a_{p1}", GIVEN, "✓"), (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
-            (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?")]
+    rows = [
+        (f"a_{p1}", GIVEN, "✓"),
+        (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
+        (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?"),
+    ]
     if m == GROUND:
         eq = f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1}"
         rows.append((f"a_{k}", parallel(f"{guide}"), "?"))
     else:
-        eq = (f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{k}{m} + a^k_{k}{l2}{k}{m} + "
-              f"a^r_{k}{l2}{k}{m}")
-        rows += [(f"a_{k}{m}", GIVEN, "✓"), (f"a^k_{k}{l2}{k}{m}", perp(f"{guide}"), f"2ω{m}·v_{k}{l2}{k}{m}"),
-                 (f"a^r_{k}{l2}{k}{m}", parallel(f"{guide}"), "?")]
+        eq = (
+            f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{k}{m} + a^k_{k}{l2}{k}{m} + "
+            f"a^r_{k}{l2}{k}{m}"
+        )
+        rows += [
+            (f"a_{k}{m}", GIVEN, "✓"),
+            (f"a^k_{k}{l2}{k}{m}", perp(f"{guide}"), f"2ω{m}·v_{k}{l2}{k}{m}"),
+            (f"a^r_{k}{l2}{k}{m}", parallel(f"{guide}"), "?"),
+        ]
     b.c.equations[(A, g.name)] = (eq, rows)
 
 
@@ -152,23 +249,38 @@ def _rpr(b: Builder, g: Group) -> None:
     n = _normal(b, b.acc[pc], c, pc, ps, f"{ps}{c}", g.name)
     kk = _coriolis(b, b.acc[ps], c, b.vel[ps], im.vel, f"{ps}{c}{ps}{s}", g.name)
     label = b.c[im.vel].label + "′"
-    meet = meet_lines(b, A, f"acc.{ps}@{c}", perp_line(b, A, n, pc, ps, g.name), parallel_line(b, A, kk, gline, g.name),
-                 label, g.name)
+    meet = meet_lines(
+        b,
+        A,
+        f"acc.{ps}@{c}",
+        perp_line(b, A, n, pc, ps, g.name),
+        parallel_line(b, A, kk, gline, g.name),
+        label,
+        g.name,
+    )
     im.acc = meet
     _epsilon(b, c, pc, b.pos[ps], n, meet, g.name)
     link_scalar(b, s, c, A, g.name)
     _tangential(b, n, meet, f"a^t_{ps}{c}{pc}", g.name)
-    b.segment(A, kk, meet, f"{b.c[kk].label} {label}", f"a^r_{ps}{c}{ps}{s}", SegmentKind.SLIDING,
-              g.name)
+    b.segment(
+        A, kk, meet, f"{b.c[kk].label} {label}", f"a^r_{ps}{c}{ps}{s}", SegmentKind.SLIDING, g.name
+    )
     b.segment(A, "acc.pi", meet, f"π{label}", f"a_{ps}{c}", SegmentKind.ABSOLUTE, g.name)
     b.result(f"a_{ps}{c}", meet)
     b.c.equations[(A, g.name)] = (
-        (f"a_{ps}{c} = a_{ps}{s} + a^k_{ps}{c}{ps}{s} + a^r_{ps}{c}{ps}{s} = a_{pc} + a^n_{ps}{c}{pc} + "
-        f"a^t_{ps}{c}{pc}"), [
-            (f"a_{ps}{s}", GIVEN, "✓"), (f"a^k_{ps}{c}{ps}{s}", perp(f"{guide.name}"), f"2ω{c}·v_{ps}{c}{ps}{s}"),
-            (f"a^r_{ps}{c}{ps}{s}", parallel(f"{guide.name}"), "?"), (f"a_{pc}", GIVEN, "✓"),
+        (
+            f"a_{ps}{c} = a_{ps}{s} + a^k_{ps}{c}{ps}{s} + a^r_{ps}{c}{ps}{s} = "
+            f"a_{pc} + a^n_{ps}{c}{pc} + a^t_{ps}{c}{pc}"
+        ),
+        [
+            (f"a_{ps}{s}", GIVEN, "✓"),
+            (f"a^k_{ps}{c}{ps}{s}", perp(f"{guide.name}"), f"2ω{c}·v_{ps}{c}{ps}{s}"),
+            (f"a^r_{ps}{c}{ps}{s}", parallel(f"{guide.name}"), "?"),
+            (f"a_{pc}", GIVEN, "✓"),
             (f"a^n_{ps}{c}{pc}", from_to(ps, pc), f"ω{c}²·l_{pc}{ps}"),
-            (f"a^t_{ps}{c}{pc}", perp(f"{pc}{ps}"), "?")])
+            (f"a^t_{ps}{c}{pc}", perp(f"{pc}{ps}"), "?"),
+        ],
+    )
 
 
 def _prp(b: Builder, g: Group) -> None:
@@ -187,11 +299,19 @@ def _prp(b: Builder, g: Group) -> None:
     link_scalar(b, l2, m2, A, g.name)
     absolute(b, k, A, g.name)
     b.c.equations[(A, g.name)] = (
-        (f"a_{k} = a_{k}{m1} + a^k_{k}{l1}{k}{m1} + a^r_{k}{l1}{k}{m1} = a_{k}{m2} + a^k_{k}{l2}{k}{m2} + "
-        f"a^r_{k}{l2}{k}{m2}"), [
-            (f"a_{k}{m1}", GIVEN, "✓"), (f"a^k_{k}{l1}{k}{m1}", perp(), f"2ω{m1}·v_{k}{l1}{k}{m1}"),
-            (f"a^r_{k}{l1}{k}{m1}", parallel(), "?"), (f"a_{k}{m2}", GIVEN, "✓"),
-            (f"a^k_{k}{l2}{k}{m2}", perp(), f"2ω{m2}·v_{k}{l2}{k}{m2}"), (f"a^r_{k}{l2}{k}{m2}", parallel(), "?")])
+        (
+            f"a_{k} = a_{k}{m1} + a^k_{k}{l1}{k}{m1} + a^r_{k}{l1}{k}{m1} = "
+            f"a_{k}{m2} + a^k_{k}{l2}{k}{m2} + a^r_{k}{l2}{k}{m2}"
+        ),
+        [
+            (f"a_{k}{m1}", GIVEN, "✓"),
+            (f"a^k_{k}{l1}{k}{m1}", perp(), f"2ω{m1}·v_{k}{l1}{k}{m1}"),
+            (f"a^r_{k}{l1}{k}{m1}", parallel(), "?"),
+            (f"a_{k}{m2}", GIVEN, "✓"),
+            (f"a^k_{k}{l2}{k}{m2}", perp(), f"2ω{m2}·v_{k}{l2}{k}{m2}"),
+            (f"a^r_{k}{l2}{k}{m2}", parallel(), "?"),
+        ],
+    )
 
 
 def _rpp(b: Builder, g: Group) -> None:
@@ -211,6 +331,11 @@ def _rpp(b: Builder, g: Group) -> None:
     b.acc[x] = meet_lines(b, A, f"acc.{x}", lines[0], lines[1], alabel(x), g.name)
     absolute(b, x, A, g.name)
     b.c.equations[(A, g.name)] = (
-        f"a_{x} = a_{x}{m} + a^k + a^r_{x}{l2}{x}{m} = a_{x}{l1} + a^k + a^r_{x}{l2}{x}{l1}", [
-            (f"a_{x}{m}", GIVEN, "✓"), (f"a^r_{x}{l2}{x}{m}", parallel(), "?"),
-            (f"a_{x}{l1}", GIVEN, "✓"), (f"a^r_{x}{l2}{x}{l1}", parallel(), "?")])
+        f"a_{x} = a_{x}{m} + a^k + a^r_{x}{l2}{x}{m} = a_{x}{l1} + a^k + a^r_{x}{l2}{x}{l1}",
+        [
+            (f"a_{x}{m}", GIVEN, "✓"),
+            (f"a^r_{x}{l2}{x}{m}", parallel(), "?"),
+            (f"a_{x}{l1}", GIVEN, "✓"),
+            (f"a^r_{x}{l2}{x}{l1}", parallel(), "?"),
+        ],
+    )
