@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -25,7 +26,7 @@ def valid_mask(ev: Evaluation, max_condition: float = MAX_CONDITION) -> np.ndarr
     return ok
 
 
-def _gap_function(c: Construction, step_id: str):
+def _gap_function(c: Construction, step_id: str) -> Callable[[np.ndarray], np.ndarray]:
     def gap(phi: np.ndarray) -> np.ndarray:
         ev = c.evaluate(phi)
         ev.get(step_id)
@@ -60,7 +61,8 @@ def unreachable_intervals(
             m_bad = gap(mid) > 0
             go_right = ~m_bad if entering else m_bad
             lo, hi = np.where(go_right, mid, lo), np.where(go_right, hi, mid)
-        return 0.5 * (lo + hi)
+        out: np.ndarray = 0.5 * (lo + hi)
+        return out
 
     s = np.mod(refine(starts, True), TWO_PI)
     e = np.mod(refine(ends, False), TWO_PI)

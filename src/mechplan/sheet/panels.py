@@ -8,6 +8,7 @@ and decides line kinds, labels and table cells.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -97,7 +98,7 @@ def mu_text(plan: Plan, mu: float, lang: str) -> str:
     return f"{sym} = {num} {unit}"
 
 
-def table(rows: list[tuple[str, ...]], origin: tuple[float, float]) -> Table:
+def table(rows: Sequence[tuple[str, ...]], origin: tuple[float, float]) -> Table:
     """A table whose column widths fit their texts."""
     ncol = len(rows[0])
     widths = tuple(max(text_width_mm(r[c], TABLE_H) for r in rows) + 3.0 for c in range(ncol))

@@ -31,7 +31,8 @@ def _along_guide(value: Array, at: Array, towards: Array, angle: Array) -> Array
     """A force of signed size ``value`` along the guide at ``angle``, in the sense at → towards."""
     u = direction(angle)
     sense = np.sign(dot(towards - at, u))
-    return (value * sense)[..., None] * u
+    out: Array = (value * sense)[..., None] * u
+    return out
 
 
 def force_load(step: Step, *operands: Array) -> Result:

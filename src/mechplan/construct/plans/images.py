@@ -160,7 +160,8 @@ def link_scalar(b: Builder, link: str, source_link: str, plan: Plan, group: str)
     prefix = "vel.omega" if plan is Plan.VELOCITY else "acc.epsilon"
     body = b.bodies[link]
     if getattr(body, attr) is not None:
-        return getattr(body, attr)
+        known: str = getattr(body, attr)
+        return known
     src = getattr(b.bodies[source_link], attr) if source_link != GROUND else None
     if source_link == GROUND:
         sid = b.add(
