@@ -13,8 +13,6 @@ per string, and it is not a code page AutoCAD writes, so it is not used.
 from __future__ import annotations
 
 import io
-import os
-from pathlib import Path
 
 import ezdxf
 from ezdxf.document import Drawing
@@ -40,7 +38,6 @@ from mechplan.drafting.primitives import (
     VAlign,
 )
 from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
 
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
 ENCODINGS = {"en": "cp1252", "ru": "cp1251", "vi": "cp1258", "zh": "gbk"}
@@ -198,8 +195,3 @@ def to_bytes(sheet: Sheet) -> bytes:
     stream = io.StringIO()
     doc.write(stream)
     return doc.encode(stream.getvalue())
-
-
-def write_dxf(sheet: Sheet, path: str | os.PathLike[str]) -> Path:
-    """Write `sheet` to `path` as DXF R2013, atomically."""
-    return write_atomic(path, to_bytes(sheet))

@@ -7,8 +7,6 @@ one sheet millimetre is one millimetre on the page. Uses `Figure` directly: no p
 from __future__ import annotations
 
 import io
-import os
-from pathlib import Path
 from typing import Any, cast
 
 import matplotlib
@@ -38,7 +36,6 @@ from mechplan.drafting.primitives import (
     Text,
 )
 from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
 
 PT_PER_MM = 72.0 / 25.4
 INK = "black"
@@ -217,13 +214,3 @@ def to_bytes(sheet: Sheet, fmt: str, *, dpi: float = 150.0) -> bytes:
         else:
             fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": "mechplan"})
     return buf.getvalue()
-
-
-def write_pdf(sheet: Sheet, path: str | os.PathLike[str]) -> Path:
-    """Write `sheet` to `path` as a true-scale PDF, atomically."""
-    return write_atomic(path, to_bytes(sheet, "pdf"))
-
-
-def write_png(sheet: Sheet, path: str | os.PathLike[str], *, dpi: float = 150.0) -> Path:
-    """Write `sheet` to `path` as PNG at `dpi`, atomically."""
-    return write_atomic(path, to_bytes(sheet, "png", dpi=dpi))

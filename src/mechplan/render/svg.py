@@ -7,9 +7,7 @@ mirrored).
 from __future__ import annotations
 
 import math
-import os
 from collections.abc import Iterable
-from pathlib import Path
 from typing import Any
 
 import svgwrite
@@ -31,7 +29,6 @@ from mechplan.drafting.primitives import (
     Text,
 )
 from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
 
 #: Paint order of the role groups (text on top, thick lines over thin ones).
 ROLE_ORDER: tuple[Role, ...] = (
@@ -179,9 +176,3 @@ class _Writer:
 def to_svg(sheet: Sheet) -> str:
     """Return the SVG document of `sheet` as a string."""
     return str(_Writer(sheet).document().tostring())
-
-
-def write_svg(sheet: Sheet, path: str | os.PathLike[str]) -> Path:
-    """Write `sheet` to `path` as SVG, atomically."""
-    text = '<?xml version="1.0" encoding="utf-8" ?>\n' + to_svg(sheet)
-    return write_atomic(path, text.encode("utf-8"))
