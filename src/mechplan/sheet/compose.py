@@ -243,7 +243,7 @@ def compose(
         else round_scale(_largest(sol, plan, drawn) / (0.4 * short_side))
         for plan, key in FIXED.items()
     }
-    if "mu_l" not in scene.drawing.scales:
+    if Plan.POSITION.scale_key not in scene.drawing.scales:
         mu0[Plan.POSITION] = round_scale(
             sol.scales.get(Plan.POSITION, 1.0) * 150.0 / (0.45 * short_side)
         )
@@ -260,12 +260,8 @@ def compose(
     )
 
 
-FIXED = {
-    Plan.POSITION: "mu_l",
-    Plan.VELOCITY: "mu_v",
-    Plan.ACCELERATION: "mu_a",
-    Plan.FORCE: "mu_F",
-}
+#: plan → its scale-factor key (``mu_l``, ``mu_v``, …), which a scene may fix
+FIXED = {plan: plan.scale_key for plan in Plan}
 
 
 @dataclasses.dataclass(frozen=True)
