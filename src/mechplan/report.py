@@ -17,27 +17,18 @@ from .solve import Solution, segment_table
 def _w(key: str, lang: str) -> str:
     return message(f"report.{key}", lang)
 
-
 _KEYS = ("dof", "structure", "cls", "position", "equation", "segments", "results", "crank", "fromx")
-PLANS = {
-    "position": Plan.POSITION,
-    "velocity": Plan.VELOCITY,
-    "acceleration": Plan.ACCELERATION,
-    "force": Plan.FORCE,
-}
-
+PLANS = {"position": Plan.POSITION, "velocity": Plan.VELOCITY, "acceleration": Plan.ACCELERATION,
+         "force": Plan.FORCE}
 
 def text_report(sol: Solution, lang: str | None = None) -> str:
     """The full report: structure, then per position the plans' protocols, tables and results."""
     lang = lang or sol.scene.language
     w = {key: _w(key, lang) for key in _KEYS}
     st = sol.structure
-    out = [
-        sol.scene.title,
-        "=" * len(sol.scene.title),
-        f"{w['dof']}: W = 3·{st.moving_links} − 2·{st.lower_pairs} = {st.dof}",
-        f"{w['structure']}: {st.formula}  ({w['cls']} {st.mechanism_class})",
-    ]
+    out = [sol.scene.title, "=" * len(sol.scene.title),
+           f"{w['dof']}: W = 3·{st.moving_links} − 2·{st.lower_pairs} = {st.dof}",
+           f"{w['structure']}: {st.formula}  ({w['cls']} {st.mechanism_class})"]
     for g in st.groups:
         out.append(f"  {g.name}: {g.kind}")
     plans = tuple(PLANS[p] for p in sol.plans if p in PLANS)
@@ -50,13 +41,14 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         for plan in plans:
             mu = sol.scales.get(plan, 1.0)
             unit = plan.scale_unit
-            num = format_number(mu, 6, lang).rstrip("0").rstrip(",.")
+            num = format_number(mu, 6, lang).rstrip('0').rstrip(',.')
             out += ["", f"### {plan_title(plan, lang)} (μ = {num} {unit})"]
             for (p, group), (eq, rows) in sol.construction.equations.items():
                 if p is plan:
                     out.append(f"{w['equation']} {group}: {eq}")
                     for term, direction, magnitude in rows:
-                        out.append(f"    {term:<16} {direction.text(lang):<12} {magnitude}")
+                        out.append(f"    {term:<16} {direction.text(lang):<12} "
+                                   f"{magnitude}")
             n = 0
             for p, label, text in steps:
                 if p is plan:
@@ -82,8 +74,7 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
     c, ev = sol.construction, sol.ev
     lines = []
     pts = sol.scene.points_of_interest or tuple(
-        p for lk in sol.scene.mechanism.links.values() if lk.id != "0" for p in lk.points
-    )
+        p for lk in sol.scene.mechanism.links.values() if lk.id != "0" for p in lk.points)
     for p in dict.fromkeys(pts):
         parts = [f"{p:<4}"]
         if c.has_position(p) and c.position(p) in ev.values:
@@ -106,10 +97,8 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
         lines.append("  " + "   ".join(parts))
     for lid in sol.scene.mechanism.moving:
         parts = []
-        for key, sym, unit, of in (
-            ("omega", "ω", "rad/s", c.omega),
-            ("epsilon", "ε", "rad/s²", c.epsilon),
-        ):
+        for key, sym, unit, of in (("omega", "ω", "rad/s", c.omega),
+                                   ("epsilon", "ε", "rad/s²", c.epsilon)):
             sid = of(lid) if c.has_result(key, lid) else None
             if sid in ev.values:
                 parts.append(f"{sym}{lid} = {format_number(float(ev[sid][k]), 4, lang)} {unit}")
@@ -118,19 +107,8 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
     return lines
 
 
-_FORCE_KEYS = (
-    "reactions",
-    "guide_reactions",
-    "balancing",
-    "driving",
-    "resisting",
-    "lever",
-    "difference",
-    "reduced_moment",
-    "reduced_inertia",
-    "at",
-    "pure_couple",
-)
+_FORCE_KEYS = ("reactions", "guide_reactions", "balancing", "driving", "resisting", "lever",
+               "difference", "reduced_moment", "reduced_inertia", "at", "pure_couple")
 
 
 def _forces(sol: Solution, k: int, lang: str) -> list[str]:
@@ -153,10 +131,8 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     link = sol.scene.mechanism.drive.link
     sense = sense_text(mb, lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} N·m ({sense}; {role})")
-    out.append(
-        f"  {w[5]}: M_b = {format_number(mz, 3, lang)} N·m; {w[6]} "
-        f"{float(fa.difference_percent[k]):.2e} %"
-    )
+    out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} N·m; {w[6]} "
+               f"{float(fa.difference_percent[k]):.2e} %")
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} N·m")
     out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} kg·m²")
     return out

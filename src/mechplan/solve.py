@@ -52,14 +52,12 @@ def build(
     plans = plans or scene.plans
     if "force" in plans and loading is None:
         from .dynamics.loading import Loading
-
         loading = Loading.from_scene(scene)
     build_plans = tuple(
         p for p in (*KINEMATIC, "force") if p in plans or p in ("position", "velocity")
     )
-    c = build_construction(
-        scene.mechanism, structure, build_plans, scene.assembly_phi, scene.path, loading
-    )
+    c = build_construction(scene.mechanism, structure, build_plans, scene.assembly_phi, scene.path,
+                           loading)
     return structure, c
 
 
@@ -71,11 +69,8 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
     n = count or pos.count or 12
     start = pos.start_angle
     if pos.start_extreme is not None:
-        ex = [
-            e
-            for e in extreme_positions(c, scene.mechanism, pos.start_extreme.subject)
-            if e.which == pos.start_extreme.which
-        ]
+        ex = [e for e in extreme_positions(c, scene.mechanism, pos.start_extreme.subject)
+              if e.which == pos.start_extreme.which]
         if not ex:
             raise SceneError(
                 f"{pos.start_extreme.subject} has no {pos.start_extreme.which} extreme "
@@ -90,8 +85,7 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
 def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[str]:
     """Step ids of the results a scene asks for (their ancestors are all that is evaluated)."""
     points = scene.points_of_interest or tuple(
-        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points
-    )
+        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points)
     out: list[str] = []
     for p in points:
         if "position" in plans:
@@ -129,14 +123,9 @@ def choose_scales(
     return out
 
 
-def solve(
-    scene: Scene,
-    at_deg: list[float] | None = None,
-    count: int | None = None,
-    plans: tuple[str, ...] | None = None,
-    loading: Any = None,
-    max_condition: float = MAX_CONDITION,
-) -> Solution:
+def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = None,
+          plans: tuple[str, ...] | None = None, loading: Any = None,
+          max_condition: float = MAX_CONDITION) -> Solution:
     """Solve a scene at the positions it (or the caller) asks for; raise on unbuildable ones."""
     plans = plans or scene.plans
     structure, c = build(scene, plans, loading)
@@ -152,7 +141,6 @@ def solve(
     if "force" in plans:
         from .dynamics.kinetostatics import analyse_forces
         from .dynamics.loading import Loading
-
         sol.extras["loading"] = loading or Loading.from_scene(scene)
         sol.extras["forces"] = analyse_forces(c, ev, scene.mechanism, sol.extras["loading"])
     return sol
@@ -166,8 +154,7 @@ def to_json(sol: Solution) -> dict[str, Any]:
     """The JSON document of ``mechplan solve --json`` (SI units, ω/ε counter-clockwise +)."""
     scene, c, ev = sol.scene, sol.construction, sol.ev
     points = scene.points_of_interest or tuple(
-        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points
-    )
+        p for lk in scene.mechanism.links.values() if lk.id != GROUND for p in lk.points)
     theta = c.drive.absolute(sol.phi)
     positions = []
     for k in range(sol.positions):
@@ -184,11 +171,8 @@ def to_json(sol: Solution) -> dict[str, Any]:
         links: dict[str, Any] = {}
         for lid in scene.mechanism.moving:
             entry: dict[str, Any] = {}
-            for key, name, of in (
-                ("angle", "angle_deg", c.link_angle),
-                ("omega", "omega", c.omega),
-                ("epsilon", "epsilon", c.epsilon),
-            ):
+            for key, name, of in (("angle", "angle_deg", c.link_angle), ("omega", "omega", c.omega),
+                                  ("epsilon", "epsilon", c.epsilon)):
                 sid = of(lid) if c.has_result(key, lid) else None
                 if sid is not None and sid in ev.values:
                     val = float(ev[sid][k])

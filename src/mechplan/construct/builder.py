@@ -30,8 +30,8 @@ def alabel(point: str) -> str:
 class Image:
     """A point of a link whose position, velocity and acceleration images are steps."""
 
-    key: str  # point name, or "A@3" for the point of link 3 under A
-    label: str  # "A" or "A3"
+    key: str                 # point name, or "A@3" for the point of link 3 under A
+    label: str               # "A" or "A3"
     pos: str
     vel: str | None = None
     acc: str | None = None
@@ -43,7 +43,7 @@ class Body:
 
     link: Link
     angle: str | None = None
-    anchor: str | None = None  # a named point with a position step
+    anchor: str | None = None        # a named point with a position step
     omega: str | None = None
     epsilon: str | None = None
     images: list[Image] = field(default_factory=list)
@@ -56,16 +56,10 @@ class Body:
 class Builder:
     """Emit steps for the requested plans into one :class:`Construction`."""
 
-    def __init__(
-        self,
-        mech: Mechanism,
-        structure: Structure,
-        assembly_phi: float = 0.0,
-        file: str | None = None,
-        loading: Any = None,
-    ) -> None:
+    def __init__(self, mech: Mechanism, structure: Structure, assembly_phi: float = 0.0,
+                 file: str | None = None, loading: Any = None) -> None:
         self.mech = mech
-        self.loading = loading  # a Loading (masses, loads, gravity) for the force plan
+        self.loading = loading          # a Loading (masses, loads, gravity) for the force plan
         self.structure = structure
         self.file = file
         self.assembly_phi = assembly_phi
@@ -77,47 +71,16 @@ class Builder:
         self.bodies: dict[str, Body] = {k: Body(link) for k, link in mech.links.items()}
 
     # -- step helpers ------------------------------------------------------------------------
-    def add(
-        self,
-        id: str,
-        op: Op,
-        inputs: tuple[str, ...],
-        plan: Plan,
-        kind: Kind,
-        role: Role,
-        label: str,
-        group: str = "",
-        subject: tuple[str, ...] = (),
-        **params: Any,
-    ) -> str:
+    def add(self, id: str, op: Op, inputs: tuple[str, ...], plan: Plan, kind: Kind, role: Role,
+            label: str, group: str = "", subject: tuple[str, ...] = (), **params: Any) -> str:
         """Add a step (or return the existing one with the same id)."""
         if id in self.c:
             return id
-        return self.c.add(
-            Step(
-                id,
-                op,
-                inputs,
-                plan,
-                kind,
-                role,
-                label,
-                group,
-                tuple(sorted(params.items())),
-                subject,
-            )
-        )
+        return self.c.add(Step(id, op, inputs, plan, kind, role, label, group,
+                               tuple(sorted(params.items())), subject))
 
-    def segment(
-        self,
-        plan: Plan,
-        start: str,
-        end: str,
-        name: str,
-        quantity: str,
-        kind: SegmentKind,
-        group: str = "",
-    ) -> None:
+    def segment(self, plan: Plan, start: str, end: str, name: str, quantity: str,
+                kind: SegmentKind, group: str = "") -> None:
         """Record a measured segment."""
         if not any(s.start == start and s.end == end for s in self.c.segments):
             self.c.segments.append(Segment(plan, start, end, name, quantity, kind, group))
@@ -148,14 +111,11 @@ class Builder:
                 ev = self.c.evaluate(self.assembly_phi)
                 dist[sigma] = float(np.linalg.norm(ev[probe][0] - target))
             if all(math.isnan(d) for d in dist.values()):
-                raise SceneError(
-                    f"the mechanism cannot be assembled at φ = "
-                    f"{math.degrees(self.assembly_phi):g}° to match the sketch of "
-                    f"{point} (group {group}); set assembly.at to a reachable angle",
-                    file=self.file,
-                    key=f"assembly.{point}",
-                )
-            best = min(dist, key=lambda s: math.inf if math.isnan(dist[s]) else dist[s])
+                raise SceneError(f"the mechanism cannot be assembled at φ = "
+                                 f"{math.degrees(self.assembly_phi):g}° to match the sketch of "
+                                 f"{point} (group {group}); set assembly.at to a reachable angle",
+                                 file=self.file, key=f"assembly.{point}")
+            best = min(dist, key=lambda s: (math.inf if math.isnan(dist[s]) else dist[s]))
             self.c.steps[step_id] = _with(step, sigma=best)
             return
         if point not in mech.sides:
@@ -205,7 +165,6 @@ class Builder:
                 acceleration.emit_group(self, group)
         if "force" in plans and self.loading is not None:
             from .plans import force
-
             force.emit(self)
         return self.c
 
@@ -213,28 +172,14 @@ class Builder:
 def _with(step: Step, **changes: Any) -> Step:
     params = dict(step.params)
     params.update(changes)
-    return Step(
-        step.id,
-        step.op,
-        step.inputs,
-        step.plan,
-        step.kind,
-        step.role,
-        step.label,
-        step.group,
-        tuple(sorted(params.items())),
-        step.subject,
-    )
+    return Step(step.id, step.op, step.inputs, step.plan, step.kind, step.role, step.label,
+                step.group, tuple(sorted(params.items())), step.subject)
 
 
-def build_construction(
-    mech: Mechanism,
-    structure: Structure,
-    plans: tuple[str, ...] = ("position", "velocity", "acceleration"),
-    assembly_phi: float = 0.0,
-    file: str | None = None,
-    loading: Any = None,
-) -> Construction:
+def build_construction(mech: Mechanism, structure: Structure,
+                       plans: tuple[str, ...] = ("position", "velocity", "acceleration"),
+                       assembly_phi: float = 0.0, file: str | None = None,
+                       loading: Any = None) -> Construction:
     """Build the construction of a mechanism for the requested plans."""
     return Builder(mech, structure, assembly_phi, file, loading).build(plans)
 

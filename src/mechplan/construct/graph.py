@@ -18,8 +18,8 @@ from .terms import Row
 class DriveMap:
     """Map the scene's crank angle φ to the absolute crank direction θ = ref + sense·φ."""
 
-    ref: float  # rad, direction of φ = 0, counter-clockwise from +x
-    sense: int  # +1 counter-clockwise, -1 clockwise
+    ref: float      # rad, direction of φ = 0, counter-clockwise from +x
+    sense: int      # +1 counter-clockwise, -1 clockwise
 
     def absolute(self, phi: Array) -> Array:
         """Return θ for φ (radians)."""
@@ -43,7 +43,8 @@ class Construction:
     steps: dict[str, Step] = field(default_factory=dict)
     segments: list[Segment] = field(default_factory=list)
     #: vector equations per (plan, group): the equation and rows of (term, direction, magnitude)
-    equations: dict[tuple[Plan, str], tuple[str, list[Row]]] = field(default_factory=dict)
+    equations: dict[tuple[Plan, str], tuple[str, list[Row]]] = field(
+        default_factory=dict)
     #: named results: quantity key ("v_C", "omega_2", "r_C") → step id
     results: dict[str, str] = field(default_factory=dict)
 
@@ -139,19 +140,13 @@ class Construction:
 
     def link_results(self) -> list[str]:
         """Step ids of every link's angle, ω and ε, in construction order."""
-        return [
-            sid
-            for key, sid in self.results.items()
-            if key.split("_")[0] in ("angle", "omega", "epsilon")
-        ]
+        return [sid for key, sid in self.results.items()
+                if key.split("_")[0] in ("angle", "omega", "epsilon")]
 
     def force_results(self) -> list[str]:
         """Step ids of the balancing moments, reactions and guide offsets."""
-        return [
-            sid
-            for key, sid in self.results.items()
-            if key in ("M_b", "M_b_zhukovsky") or key.startswith(("R_", "d_"))
-        ]
+        return [sid for key, sid in self.results.items()
+                if key in ("M_b", "M_b_zhukovsky") or key.startswith(("R_", "d_"))]
 
     def _named(self, key: str) -> str:
         try:

@@ -30,12 +30,12 @@ TEXT: dict[Op, str] = {op: s.message for op, s in SPECS.items() if s.message}
 
 
 def plan_title(plan: Plan, lang: str) -> str:
-    """ "Velocity plan", "План скоростей", …"""
+    """"Velocity plan", "План скоростей", …"""
     return message(f"protocol.plan.{plan.value}", lang)
 
 
 def sense_text(value: float, lang: str) -> str:
-    """ "counter-clockwise" for a positive value, "clockwise" otherwise."""
+    """"counter-clockwise" for a positive value, "clockwise" otherwise."""
     return message("protocol.sense.ccw" if value > 0 else "protocol.sense.cw", lang)
 
 
@@ -45,7 +45,7 @@ def mm(lang: str) -> str:
 
 
 def vector_text(value: np.ndarray, lang: str, digits: int = 1, unit: str = "N") -> str:
-    """ "1459,8 N ∠ -120,0°": magnitude and direction (no angle for a zero vector)."""
+    """"1459,8 N ∠ -120,0°": magnitude and direction (no angle for a zero vector)."""
     mag = float(np.hypot(*value))
     text = f"{number(mag, digits, lang)} {unit}"
     if float(f"{mag:.{digits}f}") != 0:
@@ -68,20 +68,17 @@ def _scalar_text(step: Step, value: float, lang: str) -> str:
 
 
 def measured(seg: Segment, ev: Evaluation, k: int, mu: float, lang: str) -> str:
-    """ "pb = 67.0 mm → v_B = 6.70 m/s" for one segment at position k."""
+    """"pb = 67.0 mm → v_B = 6.70 m/s" for one segment at position k."""
     a, b = ev[seg.start][k], ev[seg.end][k]
     length = float(np.hypot(*(b - a)))
     if seg.plan is Plan.POSITION:
         return f"{seg.name} = {number(length / mu, 1, lang)} {mm(lang)}"
-    return (
-        f"{pole_label(seg.name, lang)} = {number(length / mu, 1, lang)} {mm(lang)} → "
-        f"{seg.quantity} = {number(length, 3, lang)} {seg.plan.unit}"
-    )
+    return (f"{pole_label(seg.name, lang)} = {number(length / mu, 1, lang)} {mm(lang)} → "
+            f"{seg.quantity} = {number(length, 3, lang)} {seg.plan.unit}")
 
 
-def sentence(
-    c: Construction, step: Step, ev: Evaluation, k: int, lang: str, mu: dict[Plan, float]
-) -> str:
+def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
+             mu: dict[Plan, float]) -> str:
     """The protocol sentence of one step at position k."""
     subject = [pole_label(s, lang) for s in step.subject] + ["", "", ""]
     segs = [s for s in c.segments if s.end == step.id and s.plan is step.plan]
@@ -109,21 +106,13 @@ def sentence(
         "s2": subject[2],
     }
     if step.op is Op.SIMILAR_IMAGE:
-        fields.update(
-            a=pole_label(c[step.input("a")].label, lang),
-            b=pole_label(c[step.input("b")].label, lang),
-        )
+        fields.update(a=pole_label(c[step.input("a")].label, lang),
+                      b=pole_label(c[step.input("b")].label, lang))
     return message(msgid, lang, **fields)
 
 
-def protocol(
-    c: Construction,
-    ev: Evaluation,
-    k: int,
-    lang: str,
-    mu: dict[Plan, float],
-    plans: tuple[Plan, ...],
-) -> list[tuple[Plan, str, str]]:
+def protocol(c: Construction, ev: Evaluation, k: int, lang: str, mu: dict[Plan, float],
+             plans: tuple[Plan, ...]) -> list[tuple[Plan, str, str]]:
     """(plan, label, sentence) for every evaluated step of the given plans at position k."""
     out = []
     for step in c:

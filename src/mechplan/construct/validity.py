@@ -31,13 +31,11 @@ def _gap_function(c: Construction, step_id: str) -> Callable[[np.ndarray], np.nd
         ev = c.evaluate(phi)
         ev.get(step_id)
         return ev.gaps[step_id]
-
     return gap
 
 
-def unreachable_intervals(
-    c: Construction, step_id: str, samples: int = 3600, iterations: int = 60
-) -> list[tuple[float, float]]:
+def unreachable_intervals(c: Construction, step_id: str, samples: int = 3600,
+                          iterations: int = 60) -> list[tuple[float, float]]:
     """Crank-angle intervals (φ, rad, scene convention) where a meet has no solution.
 
     Boundaries are refined by bisection on the sign of the gap to ~1e-15 rad.
@@ -50,8 +48,8 @@ def unreachable_intervals(
     if bad.all():
         return [(0.0, TWO_PI)]
     nxt = np.roll(bad, -1)
-    starts = np.nonzero(~bad & nxt)[0]  # good → bad between i and i+1
-    ends = np.nonzero(bad & ~nxt)[0]  # bad → good
+    starts = np.nonzero(~bad & nxt)[0]    # good → bad between i and i+1
+    ends = np.nonzero(bad & ~nxt)[0]      # bad → good
     step = TWO_PI / samples
 
     def refine(idx: np.ndarray, entering: bool) -> np.ndarray:
@@ -76,9 +74,8 @@ def unreachable_intervals(
     return intervals
 
 
-def ensure_valid(
-    c: Construction, ev: Evaluation, file: str | None = None, max_condition: float = MAX_CONDITION
-) -> None:
+def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
+                 max_condition: float = MAX_CONDITION) -> None:
     """Raise for the first position a user asked for that cannot be built or is singular."""
     for sid in c.ancestors(ev.values):
         if sid in ev.gaps and np.any(ev.gaps[sid] > 0):
@@ -92,12 +89,8 @@ def ensure_valid(
             raise UnreachableError(
                 f"group {step.group} cannot be assembled at φ = {phi_deg:g}°: point {step.label} "
                 f"misses by {ev.gaps[sid][k] * 1000:.6g} mm; the mechanism cannot close for φ in "
-                f"{where}",
-                group=step.group,
-                intervals_deg=intervals,
-                gap=float(ev.gaps[sid][k]),
-                file=file,
-            )
+                f"{where}", group=step.group, intervals_deg=intervals,
+                gap=float(ev.gaps[sid][k]), file=file)
     for sid in c.ancestors(ev.values):
         if sid not in ev.sines:
             continue
@@ -112,9 +105,5 @@ def ensure_valid(
                 f"{step.plan.value} plan, group {step.group or 'I'}: the loci meeting at "
                 f"{step.label} are parallel or nearly so at φ = {math.degrees(ev.phi[k]):g}° "
                 f"(condition number {cond[k]:.3g} > {max_condition:.0e}; a toggle or change "
-                "point); choose another position",
-                step=step.label,
-                phi_deg=math.degrees(ev.phi[k]),
-                condition=float(cond[k]),
-                file=file,
-            )
+                "point); choose another position", step=step.label,
+                phi_deg=math.degrees(ev.phi[k]), condition=float(cond[k]), file=file)

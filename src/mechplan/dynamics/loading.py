@@ -42,7 +42,6 @@ class Loading:
 
         Masses are kept, so reactions reverse only when the masses are zero.
         """
-
         def flip(spec: LoadSpec) -> LoadSpec:
             return replace(
                 spec,
@@ -50,21 +49,16 @@ class Loading:
                 angle=None if spec.angle is None else spec.angle + math.pi,
                 pressure=None if spec.pressure is None else -spec.pressure,
                 moment=None if spec.moment is None else -spec.moment,
-                table=tuple((x, -f) for x, f in spec.table),
-            )
-
+                table=tuple((x, -f) for x, f in spec.table))
         flipped = []
         for spec in self.loads:
             if spec.kind is LoadKind.FORCE and spec.vector is None and spec.towards is not None:
                 # a force "towards a point" keeps its direction; reverse it by its sign instead
-                raise ValueError(
-                    f"load {spec.key or spec.point}: a force towards a point cannot "
-                    "be reversed; give it as a vector"
-                )
+                raise ValueError(f"load {spec.key or spec.point}: a force towards a point cannot "
+                                 "be reversed; give it as a vector")
             flipped.append(flip(spec))
-        gravity = replace(
-            self.gravity, direction=(-self.gravity.direction[0], -self.gravity.direction[1])
-        )
+        gravity = replace(self.gravity, direction=(-self.gravity.direction[0],
+                                                   -self.gravity.direction[1]))
         return Loading(self.masses, tuple(flipped), gravity, self.file)
 
     def check(self, mech: Mechanism) -> None:
@@ -72,50 +66,33 @@ class Loading:
         for link, ms in self.masses.items():
             key = f"links.{link}"
             if link not in mech.links or link == GROUND:
-                raise SceneError(
-                    f"masses are given for link {link!r}, which is not a moving link "
-                    f"(links are {', '.join(mech.moving)})",
-                    file=self.file,
-                    key=key,
-                )
+                raise SceneError(f"masses are given for link {link!r}, which is not a moving link "
+                                 f"(links are {', '.join(mech.moving)})", file=self.file, key=key)
             if not (ms.mass >= 0 and math.isfinite(ms.mass)):
-                raise SceneError(
-                    f"the mass of link {link} must not be negative (got {ms.mass} kg)",
-                    file=self.file,
-                    key=f"{key}.mass",
-                )
+                raise SceneError(f"the mass of link {link} must not be negative (got {ms.mass} kg)",
+                                 file=self.file, key=f"{key}.mass")
             if not (ms.inertia >= 0 and math.isfinite(ms.inertia)):
-                raise SceneError(
-                    f"the moment of inertia J_S of link {link} must not be negative "
-                    f"(got {ms.inertia} kg·m²)",
-                    file=self.file,
-                    key=f"{key}.J",
-                )
+                raise SceneError(f"the moment of inertia J_S of link {link} must not be negative "
+                                 f"(got {ms.inertia} kg·m²)", file=self.file, key=f"{key}.J")
             if ms.centre not in mech.links[link].points:
-                raise SceneError(
-                    f"the centre of mass {ms.centre!r} is not a point of link {link} "
-                    f"(it has {', '.join(mech.links[link].points)})",
-                    file=self.file,
-                    key=f"{key}.centre",
-                )
+                raise SceneError(f"the centre of mass {ms.centre!r} is not a point of link {link} "
+                                 f"(it has {', '.join(mech.links[link].points)})",
+                                 file=self.file, key=f"{key}.centre")
         for i, spec in enumerate(self.loads):
             self._check_load(mech, spec, spec.key or f"loads[{i}]")
 
     def _check_load(self, mech: Mechanism, spec: LoadSpec, key: str) -> None:
         def fail(message: str) -> SceneError:
             return SceneError(message, file=self.file, key=key)
-
         if spec.link not in mech.links or spec.link == GROUND:
             raise fail(f"a load acts on a moving link (got link {spec.link!r})")
         if spec.kind is LoadKind.MOMENT:
             if spec.moment is None:
-                raise fail('a moment load needs its moment, e.g. moment = "50 N*m"')
+                raise fail("a moment load needs its moment, e.g. moment = \"50 N*m\"")
             return
         if spec.point is None or spec.point not in mech.links[spec.link].points:
-            raise fail(
-                f"unknown point {spec.point!r} on link {spec.link} (it has "
-                f"{', '.join(mech.links[spec.link].points)})"
-            )
+            raise fail(f"unknown point {spec.point!r} on link {spec.link} (it has "
+                       f"{', '.join(mech.links[spec.link].points)})")
         points = {p for link in mech.links.values() for p in link.points}
         if spec.towards is not None and spec.towards not in points:
             raise fail(f"unknown point {spec.towards!r} to direct the force towards")
@@ -125,26 +102,20 @@ class Loading:
             if spec.vector is None and spec.towards is None and spec.angle is None:
                 raise fail("a force given by its magnitude needs 'angle' or 'towards'")
             if spec.vector is None and spec.towards == spec.point:
-                raise fail(
-                    f"a force at {spec.point} cannot point towards {spec.point} itself; "
-                    "give another point or an angle"
-                )
+                raise fail(f"a force at {spec.point} cannot point towards {spec.point} itself; "
+                           "give another point or an angle")
             return
         if mech.links[spec.link].slides_on is None:
-            raise fail(
-                f"a {spec.kind.value} load acts on a slider along its guide; link "
-                f"{spec.link} does not slide"
-            )
+            raise fail(f"a {spec.kind.value} load acts on a slider along its guide; link "
+                       f"{spec.link} does not slide")
         if spec.towards is None:
-            raise fail('give the sense along the guide, e.g. towards = "A"')
+            raise fail("give the sense along the guide, e.g. towards = \"A\"")
         if spec.kind is LoadKind.PRESSURE:
             if spec.bore is None or not spec.bore > 0:
-                raise fail(
-                    f"a pressure needs the piston's bore diameter > 0 (got {spec.bore}); "
-                    'e.g. bore = "100 mm"'
-                )
+                raise fail(f"a pressure needs the piston's bore diameter > 0 (got {spec.bore}); "
+                           "e.g. bore = \"100 mm\"")
             if spec.pressure is None:
-                raise fail('a pressure load needs its pressure, e.g. pressure = "1 MPa"')
+                raise fail("a pressure load needs its pressure, e.g. pressure = \"1 MPa\"")
             return
         if spec.against not in ("crank_angle", "displacement"):
             raise fail(
@@ -154,7 +125,5 @@ class Loading:
         if len(xs) < 2 or any(b <= a for a, b in itertools.pairwise(xs)):
             raise fail("a table needs at least two rows with a strictly increasing first column")
         if spec.against == "crank_angle" and xs[-1] - xs[0] > 2 * math.pi * (1 + 1e-12):
-            raise fail(
-                f"a table against the crank angle spans one turn at most (it spans "
-                f"{math.degrees(xs[-1] - xs[0]):g}°)"
-            )
+            raise fail(f"a table against the crank angle spans one turn at most (it spans "
+                       f"{math.degrees(xs[-1] - xs[0]):g}°)")

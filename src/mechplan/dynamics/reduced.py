@@ -17,13 +17,8 @@ from ..geom.vec import Array, dot
 from ..model.mechanism import GROUND, Mechanism
 
 
-def reduced_moment(
-    forces: Sequence[Array],
-    velocities: Sequence[Array],
-    moments: Sequence[Array],
-    omegas: Sequence[Array],
-    omega1: Array,
-) -> Array:
+def reduced_moment(forces: Sequence[Array], velocities: Sequence[Array], moments: Sequence[Array],
+                   omegas: Sequence[Array], omega1: Array) -> Array:
     """Return M_red = (Σ F_i·v_i + Σ M_k·ω_k)/ω1 (N·m).
 
     ``forces``/``velocities``: (N, 2) arrays pairwise (N, m/s); ``moments``/``omegas``: (N,)
@@ -38,21 +33,15 @@ def reduced_moment(
     return power / omega1
 
 
-def reduced_inertia(
-    masses: Sequence[float],
-    centre_velocities: Sequence[Array],
-    inertias: Sequence[float],
-    omegas: Sequence[Array],
-    omega1: Array,
-) -> Array:
+def reduced_inertia(masses: Sequence[float], centre_velocities: Sequence[Array],
+                    inertias: Sequence[float], omegas: Sequence[Array], omega1: Array) -> Array:
     """Return J_red = (Σ m_i·v_Si² + Σ J_Si·ω_i²)/ω1² (kg·m²).
 
     ``centre_velocities``: (N, 2) arrays, one per mass; ``omegas``: (N,) arrays, one per J_S.
     """
     omega1 = np.asarray(omega1, dtype=float)
-    energy = np.zeros(
-        np.broadcast_shapes(omega1.shape, *(np.shape(v)[:-1] for v in centre_velocities))
-    )
+    energy = np.zeros(np.broadcast_shapes(omega1.shape,
+                                          *(np.shape(v)[:-1] for v in centre_velocities)))
     for m, v in zip(masses, centre_velocities, strict=True):
         v = np.asarray(v)
         energy = energy + m * dot(v, v)
@@ -104,11 +93,8 @@ def reduced_of(
     m_red = reduced_moment(forces, velocities, moments, omegas, omega1)
     massive = [ms for ms in loading.masses.values() if ms.mass > 0]
     turning = [ms for ms in loading.masses.values() if ms.inertia > 0]
-    j_red = reduced_inertia(
-        [ms.mass for ms in massive],
-        [point_velocity(c, ev, mech, ms.centre) for ms in massive],
-        [ms.inertia for ms in turning],
-        [link_omega(c, ev, ms.link) for ms in turning],
-        omega1,
-    )
+    j_red = reduced_inertia([ms.mass for ms in massive],
+                            [point_velocity(c, ev, mech, ms.centre) for ms in massive],
+                            [ms.inertia for ms in turning],
+                            [link_omega(c, ev, ms.link) for ms in turning], omega1)
     return m_red, j_red

@@ -42,15 +42,10 @@ from mechplan.errors import DrawingError
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
 ENCODINGS = {"en": "cp1252", "ru": "cp1251", "vi": "cp1258", "zh": "gbk"}
 
-LINETYPE_NAMES = {
-    LineType.CONTINUOUS: "Continuous",
-    LineType.DASHED: "DASHED",
-    LineType.DASH_DOT: "DASHDOT",
-}
-_LINETYPE_DESCRIPTIONS = {
-    LineType.DASHED: "ISO 128 dashed (02) __ __ __",
-    LineType.DASH_DOT: "ISO 128 long-dash dotted (04) ____ . ____ .",
-}
+LINETYPE_NAMES = {LineType.CONTINUOUS: "Continuous", LineType.DASHED: "DASHED",
+                  LineType.DASH_DOT: "DASHDOT"}
+_LINETYPE_DESCRIPTIONS = {LineType.DASHED: "ISO 128 dashed (02) __ __ __",
+                          LineType.DASH_DOT: "ISO 128 long-dash dotted (04) ____ . ____ ."}
 TEXT_STYLES = {SheetFont.ISO: "ISO", SheetFont.SYMBOL: "SYMBOL", SheetFont.CJK: "CJK"}
 
 _ALIGN = {
@@ -89,24 +84,20 @@ def _setup(doc: Drawing, sheet: Sheet) -> None:
         if not pattern:
             continue
         elements = [v if i % 2 == 0 else -v for i, v in enumerate(pattern)]
-        doc.linetypes.add(name, [sum(pattern), *elements], description=_LINETYPE_DESCRIPTIONS[lt])
+        doc.linetypes.add(name, [sum(pattern), *elements],
+                          description=_LINETYPE_DESCRIPTIONS[lt])
     doc.styles.get("Standard").dxf.font = SheetFont.ISO.file_name
     for font, style in TEXT_STYLES.items():
         doc.styles.add(style, font=font.file_name)
     for role in Role:
         st = role.style
-        doc.layers.add(
-            role.layer,
-            color=st.aci,
-            linetype=LINETYPE_NAMES[st.linetype],
-            lineweight=round(st.lineweight_mm * 100),
-        )
+        doc.layers.add(role.layer, color=st.aci, linetype=LINETYPE_NAMES[st.linetype],
+                       lineweight=round(st.lineweight_mm * 100))
     doc.set_modelspace_vport(height=h * 1.05, center=(w / 2.0, h / 2.0))
     paper = doc.paperspace()
     paper.page_setup(size=(w, h), margins=(0, 0, 0, 0), units="mm")
-    paper.add_viewport(
-        center=(w / 2.0, h / 2.0), size=(w, h), view_center_point=(w / 2.0, h / 2.0), view_height=h
-    )
+    paper.add_viewport(center=(w / 2.0, h / 2.0), size=(w, h), view_center_point=(w / 2.0, h / 2.0),
+                       view_height=h)
 
 
 def _text_attribs(t: Text) -> dict[str, object]:
@@ -121,7 +112,6 @@ def _text_attribs(t: Text) -> dict[str, object]:
 
 def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> None:
     """Add primitive `p` to `layout`, shifted by (-dx, -dy) (block-local coordinates)."""
-
     def q(pt: tuple[float, float]) -> tuple[float, float]:
         return (pt[0] - dx, pt[1] - dy)
 
@@ -135,9 +125,8 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
             hatch = layout.add_hatch(color=256, dxfattribs=layer)  # colour by layer
             hatch.paths.add_polyline_path([q(v) for v in p.points], is_closed=True)
         else:
-            layout.add_lwpolyline(
-                [q(v) for v in p.points], format="xy", close=p.closed, dxfattribs=layer
-            )
+            layout.add_lwpolyline([q(v) for v in p.points], format="xy", close=p.closed,
+                                  dxfattribs=layer)
     elif isinstance(p, Circle):
         layout.add_circle(q(p.center), p.radius, dxfattribs=layer)
     elif isinstance(p, Arc):
@@ -149,9 +138,8 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
         layout.add_solid([q(v) for v in p.head()], dxfattribs=layer)
     elif isinstance(p, Text):
         if p.tag is not None and isinstance(layout, BlockLayout):
-            attdef = layout.add_attdef(
-                p.tag, q(p.position), p.string, dxfattribs={**_text_attribs(p), "prompt": p.tag}
-            )
+            attdef = layout.add_attdef(p.tag, q(p.position), p.string,
+                                       dxfattribs={**_text_attribs(p), "prompt": p.tag})
             attdef.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])
         elif p.string:
             text = layout.add_text(p.string, dxfattribs=_text_attribs(p))

@@ -39,13 +39,8 @@ from mechplan.errors import DrawingError
 
 PT_PER_MM = 72.0 / 25.4
 INK = "black"
-_RC = {
-    "pdf.fonttype": 42,
-    "ps.fonttype": 42,
-    "lines.scale_dashes": False,
-    "path.simplify": False,
-    "svg.fonttype": "none",
-}
+_RC = {"pdf.fonttype": 42, "ps.fonttype": 42, "lines.scale_dashes": False,
+       "path.simplify": False, "svg.fonttype": "none"}
 
 
 def _register_fonts() -> None:
@@ -61,13 +56,8 @@ def _style(role: Role) -> dict[str, Any]:
     st = role.style
     pattern = DASH_PATTERNS_MM[st.linetype]
     linestyle: Any = (0, tuple(v * PT_PER_MM for v in pattern)) if pattern else "solid"
-    return {
-        "linewidth": st.lineweight_mm * PT_PER_MM,
-        "linestyle": linestyle,
-        "capstyle": "butt",
-        "joinstyle": "miter",
-        "color": INK,
-    }
+    return {"linewidth": st.lineweight_mm * PT_PER_MM, "linestyle": linestyle,
+            "capstyle": "butt", "joinstyle": "miter", "color": INK}
 
 
 def _draw(ax: Any, sheet: Sheet) -> None:
@@ -77,65 +67,35 @@ def _draw(ax: Any, sheet: Sheet) -> None:
             paths.setdefault(p.role, []).append([p.start, p.end])
         elif isinstance(p, Polyline):
             if p.filled:
-                ax.add_patch(
-                    PolygonPatch(
-                        p.points, closed=True, facecolor=INK, edgecolor="none", linewidth=0
-                    )
-                )
+                ax.add_patch(PolygonPatch(p.points, closed=True, facecolor=INK, edgecolor="none",
+                                          linewidth=0))
             else:
                 pts = list(p.points) + ([p.points[0]] if p.closed else [])
                 paths.setdefault(p.role, []).append(pts)
         elif isinstance(p, Circle):
             st = _style(p.role)
-            ax.add_patch(
-                CirclePatch(
-                    p.center,
-                    p.radius,
-                    fill=False,
-                    linewidth=st["linewidth"],
-                    linestyle=st["linestyle"],
-                    capstyle="butt",
-                    edgecolor=INK,
-                )
-            )
+            ax.add_patch(CirclePatch(p.center, p.radius, fill=False, linewidth=st["linewidth"],
+                                     linestyle=st["linestyle"], capstyle="butt", edgecolor=INK))
         elif isinstance(p, Arc):
             st = _style(p.role)
-            ax.add_patch(
-                ArcPatch(
-                    p.center,
-                    2 * p.radius,
-                    2 * p.radius,
-                    theta1=p.start_deg,
-                    theta2=p.start_deg + p.sweep_deg,
-                    linewidth=st["linewidth"],
-                    linestyle=st["linestyle"],
-                    capstyle="butt",
-                    edgecolor=INK,
-                )
-            )
+            ax.add_patch(ArcPatch(p.center, 2 * p.radius, 2 * p.radius, theta1=p.start_deg,
+                                  theta2=p.start_deg + p.sweep_deg, linewidth=st["linewidth"],
+                                  linestyle=st["linestyle"], capstyle="butt", edgecolor=INK))
         elif isinstance(p, Arrow):
             shaft = p.shaft()
             if shaft is not None:
                 paths.setdefault(p.role, []).append([shaft.start, shaft.end])
-            ax.add_patch(
-                PolygonPatch(p.head(), closed=True, facecolor=INK, edgecolor="none", linewidth=0)
-            )
+            ax.add_patch(PolygonPatch(p.head(), closed=True, facecolor=INK, edgecolor="none",
+                                      linewidth=0))
         elif isinstance(p, Text):
             _text(ax, p)
         else:
             raise DrawingError(f"PDF/PNG backend cannot draw {type(p).__name__}")
     for role, segs in paths.items():
         st = _style(role)
-        ax.add_collection(
-            LineCollection(
-                segs,
-                linewidths=st["linewidth"],
-                linestyles=[st["linestyle"]],
-                colors=INK,
-                capstyle="butt",
-                joinstyle="miter",
-            )
-        )
+        ax.add_collection(LineCollection(segs, linewidths=st["linewidth"],
+                                         linestyles=[st["linestyle"]], colors=INK,
+                                         capstyle="butt", joinstyle="miter"))
 
 
 def _text(ax: Any, t: Text) -> None:
@@ -146,34 +106,18 @@ def _text(ax: Any, t: Text) -> None:
     families = list(families_for(t.string))
     ha = {HAlign.LEFT: "left", HAlign.CENTER: "center", HAlign.RIGHT: "right"}[t.halign]
     if t.width_factor == 1.0:
-        ax.text(
-            x,
-            y,
-            t.string,
-            fontsize=size_mm * PT_PER_MM,
-            fontfamily=families,
-            rotation=t.rotation_deg,
-            rotation_mode="anchor",
-            ha=ha,
-            va="baseline",
-            color=INK,
-            transform=ax.transData,
-        )
+        ax.text(x, y, t.string, fontsize=size_mm * PT_PER_MM, fontfamily=families,
+                rotation=t.rotation_deg, rotation_mode="anchor", ha=ha, va="baseline",
+                color=INK, transform=ax.transData)
         return
     # Condensed text has no font-level equivalent: draw the glyph outlines, scaled.
     path = TextPath((0, 0), t.string, size=1.0, prop=FontProperties(family=families))
     width = path.get_extents().x1 if len(path.vertices) else 0.0
     shift = {HAlign.LEFT: 0.0, HAlign.CENTER: -width / 2, HAlign.RIGHT: -width}[t.halign]
-    transform = (
-        Affine2D()
-        .translate(shift, 0)
-        .scale(size_mm * t.width_factor, size_mm)
-        .rotate_deg(t.rotation_deg)
-        .translate(x, y)
-    )
-    ax.add_patch(
-        PathPatch(transform.transform_path(path), facecolor=INK, edgecolor="none", linewidth=0)
-    )
+    transform = (Affine2D().translate(shift, 0).scale(size_mm * t.width_factor, size_mm)
+                 .rotate_deg(t.rotation_deg).translate(x, y))
+    ax.add_patch(PathPatch(transform.transform_path(path), facecolor=INK, edgecolor="none",
+                           linewidth=0))
 
 
 def figure(sheet: Sheet) -> Figure:
@@ -204,12 +148,8 @@ def to_bytes(sheet: Sheet, fmt: str, *, dpi: float = 150.0) -> bytes:
     with render_context():
         fig = figure(sheet)
         if fmt == "pdf":
-            meta = {
-                "Title": sheet.attributes.get("title", sheet.name),
-                "Creator": "mechplan",
-                "Author": sheet.attributes.get("author", ""),
-                "CreationDate": None,
-            }
+            meta = {"Title": sheet.attributes.get("title", sheet.name), "Creator": "mechplan",
+                    "Author": sheet.attributes.get("author", ""), "CreationDate": None}
             fig.savefig(buf, format="pdf", metadata=meta)
         else:
             fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": "mechplan"})

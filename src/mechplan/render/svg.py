@@ -31,17 +31,8 @@ from mechplan.drafting.primitives import (
 from mechplan.errors import DrawingError
 
 #: Paint order of the role groups (text on top, thick lines over thin ones).
-ROLE_ORDER: tuple[Role, ...] = (
-    Role.FILL,
-    Role.THIN,
-    Role.DASHED,
-    Role.CHAIN,
-    Role.DIMENSION,
-    Role.TABLE,
-    Role.OUTLINE,
-    Role.FRAME,
-    Role.TEXT,
-)
+ROLE_ORDER: tuple[Role, ...] = (Role.FILL, Role.THIN, Role.DASHED, Role.CHAIN, Role.DIMENSION,
+                                Role.TABLE, Role.OUTLINE, Role.FRAME, Role.TEXT)
 _ANCHOR = {HAlign.LEFT: "start", HAlign.CENTER: "middle", HAlign.RIGHT: "end"}
 INK = "black"
 
@@ -61,12 +52,8 @@ class _Writer:
         self.sheet = sheet
         self.h = sheet.height_mm
         w = sheet.width_mm
-        self.dwg = svgwrite.Drawing(
-            size=(f"{_n(w)}mm", f"{_n(self.h)}mm"),
-            profile="full",
-            debug=False,
-            viewBox=f"0 0 {_n(w)} {_n(self.h)}",
-        )
+        self.dwg = svgwrite.Drawing(size=(f"{_n(w)}mm", f"{_n(self.h)}mm"), profile="full",
+                                    debug=False, viewBox=f"0 0 {_n(w)} {_n(self.h)}")
 
     def p(self, pt: tuple[float, float]) -> tuple[float, float]:
         return (_n(pt[0]), _n(self.h - pt[1]))
@@ -77,13 +64,8 @@ class _Writer:
         if role is Role.TEXT:
             attrs.update(fill=INK, stroke="none")
         else:
-            attrs.update(
-                fill="none",
-                stroke=INK,
-                stroke_width=st.lineweight_mm,
-                stroke_linecap="butt",
-                stroke_linejoin="miter",
-            )
+            attrs.update(fill="none", stroke=INK, stroke_width=st.lineweight_mm,
+                         stroke_linecap="butt", stroke_linejoin="miter")
             pattern = DASH_PATTERNS_MM[st.linetype]
             if pattern:
                 attrs["stroke_dasharray"] = " ".join(str(v) for v in pattern)

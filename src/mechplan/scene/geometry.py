@@ -33,12 +33,8 @@ def parse_side(text: str) -> tuple[str, str, int] | None:
     return m.group(2), m.group(3), 1 if m.group(1) == "left" else -1
 
 
-def triangulate(
-    table: Table,
-    lengths: dict[str, float],
-    keys: dict[str, str],
-    sides: dict[str, tuple[str, str, int]],
-) -> dict[str, tuple[float, float]]:
+def triangulate(table: Table, lengths: dict[str, float], keys: dict[str, str],
+                sides: dict[str, tuple[str, str, int]]) -> dict[str, tuple[float, float]]:
     """Place the points of a link in its frame from pairwise distances.
 
     ``lengths`` maps (sorted) "P|Q" to metres; the first key's points define the x axis.
@@ -72,36 +68,22 @@ def triangulate(
             progress = True
     missing = [x for x in order if x not in local]
     if missing:
-        raise table.error(
-            "lengths",
-            f"point {missing[0]} needs lengths to two other points of "
-            "the link (a triangle), or define it under 'points'",
-        )
+        raise table.error("lengths", f"point {missing[0]} needs lengths to two other points of "
+                          "the link (a triangle), or define it under 'points'")
     for key, value in lengths.items():
         p, q = key.split("|")
         (x1, y1), (x2, y2) = local[p], local[q]
         got = math.hypot(x2 - x1, y2 - y1)
         if abs(got - value) > 1e-9 * max(value, 1e-12):
-            raise table.error(
-                f"lengths.{keys[key]}",
-                f"is inconsistent with the other lengths of "
-                f"the link (the triangle gives {got * 1000:.6g} mm, got "
-                f"{value * 1000:.6g} mm)",
-            )
+            raise table.error(f"lengths.{keys[key]}", f"is inconsistent with the other lengths of "
+                              f"the link (the triangle gives {got * 1000:.6g} mm, got "
+                              f"{value * 1000:.6g} mm)")
     return local
 
 
-def _place_third(
-    table: Table,
-    x: str,
-    local: dict[str, tuple[float, float]],
-    a: str,
-    ra: float,
-    b: str,
-    rb: float,
-    sides: dict[str, tuple[str, str, int]],
-    keys: dict[str, str],
-) -> tuple[float, float]:
+def _place_third(table: Table, x: str, local: dict[str, tuple[float, float]], a: str, ra: float,
+                 b: str, rb: float, sides: dict[str, tuple[str, str, int]],
+                 keys: dict[str, str]) -> tuple[float, float]:
     (ax, ay), (bx, by) = local[a], local[b]
     d = math.hypot(bx - ax, by - ay)
     if d == 0 or ra + rb < d * (1 - 1e-12) or abs(ra - rb) > d * (1 + 1e-12):
@@ -119,18 +101,12 @@ def _place_third(
     if h <= 1e-12 * d:
         return cand[1]
     if x not in sides:
-        raise table.error(
-            "side",
-            f"point {x} can be on either side of {a}->{b}; say which, e.g. "
-            f'side = {{ {x} = "left of {a}->{b}" }}',
-        )
+        raise table.error("side", f"point {x} can be on either side of {a}->{b}; say which, e.g. "
+                          f"side = {{ {x} = \"left of {a}->{b}\" }}")
     p, q, s = sides[x]
     if p not in local or q not in local:
-        raise table.error(
-            f"side.{x}",
-            f"points {p} and {q} must be placed before {x} "
-            f"(use two points of the same link that {x} is measured from)",
-        )
+        raise table.error(f"side.{x}", f"points {p} and {q} must be placed before {x} "
+                          f"(use two points of the same link that {x} is measured from)")
     (px, py), (qx, qy) = local[p], local[q]
     for sign, (cx, cy) in cand.items():
         c = (qx - px) * (cy - py) - (qy - py) * (cx - px)
@@ -139,14 +115,13 @@ def _place_third(
     raise table.error(f"side.{x}", f"point {x} lies on the line {p}->{q}; choose another line")
 
 
-def extra_point(
-    table: Table, name: str, spec: object, local: dict[str, tuple[float, float]]
-) -> tuple[float, float]:
+def extra_point(table: Table, name: str, spec: object,
+                local: dict[str, tuple[float, float]]) -> tuple[float, float]:
     """Place a point given as "midpoint B C", "0.35 of A B" or [x, y] in the link frame."""
     key = f"points.{name}"
     if isinstance(spec, list):
         if len(spec) != 2:
-            raise table.error(key, 'expected [x, y] with units, e.g. ["10 mm", "0 mm"]')
+            raise table.error(key, "expected [x, y] with units, e.g. [\"10 mm\", \"0 mm\"]")
         return (
             table.value_quantity(spec[0], key, "length"),
             table.value_quantity(spec[1], key, "length"),
@@ -167,8 +142,7 @@ def extra_point(
         p, q = m.group(2), m.group(3)
     for r in (p, q):
         if r not in local:
-            raise table.error(
-                key, f"point {r} is not a point of this link (it has {', '.join(local)})"
-            )
+            raise table.error(key, f"point {r} is not a point of this link (it has "
+                              f"{', '.join(local)})")
     (x1, y1), (x2, y2) = local[p], local[q]
     return (x1 + frac * (x2 - x1), y1 + frac * (y2 - y1))

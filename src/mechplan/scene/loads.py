@@ -37,10 +37,8 @@ def masses_of(top: Table, links: dict[str, Link]) -> dict[str, MassSpec]:
                 'or centre = { S2 = "midpoint B C" }',
             )
         if centre not in links[lid].points:
-            raise t.error(
-                "centre",
-                f"point {centre!r} is not on link {lid} (it has {', '.join(links[lid].points)})",
-            )
+            raise t.error("centre", f"point {centre!r} is not on link {lid} (it has "
+                          f"{', '.join(links[lid].points)})")
         masses[lid] = MassSpec(lid, mass or 0.0, centre, inertia or 0.0)
     return masses
 
@@ -55,14 +53,8 @@ def gravity_of(top: Table) -> Gravity:
         raise t.error("enabled", "expected true or false")
     g = t.quantity("g", "acceleration", 9.81, nonnegative=True) or 0.0
     direction = t.string("direction", "-y") or "-y"
-    axes = {
-        "-y": (0.0, -1.0),
-        "+y": (0.0, 1.0),
-        "y": (0.0, 1.0),
-        "-x": (-1.0, 0.0),
-        "+x": (1.0, 0.0),
-        "x": (1.0, 0.0),
-    }
+    axes = {"-y": (0.0, -1.0), "+y": (0.0, 1.0), "y": (0.0, 1.0), "-x": (-1.0, 0.0),
+            "+x": (1.0, 0.0), "x": (1.0, 0.0)}
     if direction in axes:
         vec = axes[direction]
     else:
@@ -71,9 +63,8 @@ def gravity_of(top: Table) -> Gravity:
     return Gravity(g=g, direction=vec, enabled=enabled)
 
 
-def loads_of(
-    top: Table, links: dict[str, Link], guides: dict[str, Guide], masses: dict[str, MassSpec]
-) -> tuple[LoadSpec, ...]:
+def loads_of(top: Table, links: dict[str, Link], guides: dict[str, Guide],
+           masses: dict[str, MassSpec]) -> tuple[LoadSpec, ...]:
     raw = top.raw("loads", [])
     if not isinstance(raw, list):
         raise top.error("loads", "expected [[loads]] entries")
@@ -98,25 +89,8 @@ def _point_link(t: Table, links: dict[str, Link], point: str, link: str | None) 
 
 
 def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpec:
-    t.check_keys(
-        (
-            "type",
-            "kind",
-            "link",
-            "point",
-            "vector",
-            "magnitude",
-            "angle",
-            "towards",
-            "toward",
-            "pressure",
-            "bore",
-            "moment",
-            "against",
-            "table",
-            "name",
-        )
-    )
+    t.check_keys(("type", "kind", "link", "point", "vector", "magnitude", "angle", "towards",
+                  "toward", "pressure", "bore", "moment", "against", "table", "name"))
     kind_s = t.string("type", t.string("kind"), choices=tuple(k.value for k in LoadKind))
     if kind_s is None:
         raise t.error("type", f"is missing; one of {', '.join(k.value for k in LoadKind)}")
@@ -135,16 +109,13 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     if towards is not None and not any(towards in lk.points for lk in links.values()):
         raise t.error("towards", f"unknown point {towards!r}")
     if towards is not None and towards == point:
-        raise t.error(
-            "towards",
-            f"a load at {point} cannot point towards {point} itself; name "
-            "another point on its line of action",
-        )
+        raise t.error("towards", f"a load at {point} cannot point towards {point} itself; name "
+                      "another point on its line of action")
     if kind is LoadKind.FORCE:
         if t.has("vector"):
             v = t.raw("vector")
             if not isinstance(v, list) or len(v) != 2:
-                raise t.error("vector", 'expected [Fx, Fy] with units, e.g. ["0 N", "-100 N"]')
+                raise t.error("vector", "expected [Fx, Fy] with units, e.g. [\"0 N\", \"-100 N\"]")
             vec = (
                 t.value_quantity(v[0], "vector", "force"),
                 t.value_quantity(v[1], "vector", "force"),
@@ -153,22 +124,13 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
         mag = t.quantity("magnitude", "force", required=True, nonnegative=True)
         if towards is None and not t.has("angle"):
             raise t.error(None, "a force needs 'vector', or 'magnitude' with 'angle' or 'towards'")
-        return LoadSpec(
-            kind,
-            owner,
-            point,
-            magnitude=mag,
-            angle=t.quantity("angle", "angle"),
-            towards=towards,
-            key=t.path,
-        )
+        return LoadSpec(kind, owner, point, magnitude=mag, angle=t.quantity("angle", "angle"),
+                        towards=towards, key=t.path)
     if links[owner].slides_on is None:
-        raise t.error(
-            "point",
-            f"a {kind.value} load acts on a slider along its guide; link {owner} does not slide",
-        )
+        raise t.error("point", f"a {kind.value} load acts on a slider along its guide; link "
+                      f"{owner} does not slide")
     if towards is None:
-        raise t.error("towards", 'give the sense along the cylinder axis, e.g. towards = "A"')
+        raise t.error("towards", "give the sense along the cylinder axis, e.g. towards = \"A\"")
     if kind is LoadKind.PRESSURE:
         if not t.has("bore"):
             raise t.error(
@@ -192,22 +154,14 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     for j, row in enumerate(rows):
         if not isinstance(row, list) or len(row) != 2:
             raise t.error(f"table[{j}]", "expected a row [x, F]")
-        parsed.append(
-            (
-                t.value_quantity(row[0], f"table[{j}]", xdim),
-                t.value_quantity(row[1], f"table[{j}]", "force"),
-            )
-        )
+        parsed.append((t.value_quantity(row[0], f"table[{j}]", xdim),
+                       t.value_quantity(row[1], f"table[{j}]", "force")))
     xs = [r[0] for r in parsed]
     if any(b <= a for a, b in itertools.pairwise(xs)):
         raise t.error("table", "the first column must increase strictly")
     if against == "crank_angle" and xs[-1] - xs[0] > 2 * math.pi + 1e-9:
-        raise t.error(
-            "table",
-            "a table against crank angle spans at most one crank turn "
-            f"(360°; got {math.degrees(xs[-1] - xs[0]):g}°); a four-stroke cycle of 720° "
-            "needs two crank turns, which a one-turn analysis cannot represent",
-        )
-    return LoadSpec(
-        kind, owner, point, towards=towards, against=against, table=tuple(parsed), key=t.path
-    )
+        raise t.error("table", "a table against crank angle spans at most one crank turn "
+                      f"(360°; got {math.degrees(xs[-1] - xs[0]):g}°); a four-stroke cycle of 720° "
+                      "needs two crank turns, which a one-turn analysis cannot represent")
+    return LoadSpec(kind, owner, point, towards=towards, against=against, table=tuple(parsed),
+                    key=t.path)

@@ -14,11 +14,8 @@ class Table:
 
     def __init__(self, data: Any, path: str, file: str) -> None:
         if not isinstance(data, dict):
-            raise SceneError(
-                f"expected a table (got {type(data).__name__} {data!r})",
-                file=file,
-                key=path or None,
-            )
+            raise SceneError(f"expected a table (got {type(data).__name__} {data!r})",
+                             file=file, key=path or None)
         self.data = data
         self.path = path
         self.file = file
@@ -53,13 +50,8 @@ class Table:
             return None
         return Table(self.data[name], self.key(name), self.file)
 
-    def string(
-        self,
-        name: str,
-        default: str | None = None,
-        required: bool = False,
-        choices: tuple[str, ...] | None = None,
-    ) -> str | None:
+    def string(self, name: str, default: str | None = None, required: bool = False,
+               choices: tuple[str, ...] | None = None) -> str | None:
         """Return a string value, optionally from a closed set."""
         value = self.raw(name, default, required)
         if value is None:
@@ -71,15 +63,9 @@ class Table:
             raise self.error(name, f"must be one of {', '.join(choices)} (got {value!r})")
         return value
 
-    def quantity(
-        self,
-        name: str,
-        dimension: str,
-        default: float | None = None,
-        required: bool = False,
-        positive: bool = False,
-        nonnegative: bool = False,
-    ) -> float | None:
+    def quantity(self, name: str, dimension: str, default: float | None = None,
+                 required: bool = False, positive: bool = False,
+                 nonnegative: bool = False) -> float | None:
         """Return a quantity in SI units."""
         if name not in self.data:
             if required:

@@ -21,14 +21,13 @@ from ..solve import Solution
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 
-GAP = 8.0  # mm between panels
+GAP = 8.0          # mm between panels
 MAX_PLAN_POSITIONS = 2
 
 
 def _moved(p: Primitive | Table, dx: float, dy: float) -> Primitive | Table:
     def mv(q: tuple[float, float]) -> tuple[float, float]:
         return (q[0] + dx, q[1] + dy)
-
     if isinstance(p, (Line, Arrow)):
         return dataclasses.replace(p, start=mv(p.start), end=mv(p.end))
     if isinstance(p, Polyline):
@@ -88,48 +87,21 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
     highlight = plan_positions(sol)
     numbers = [str(k) for k in range(sol.positions)]
     title = plan_name(Plan.POSITION, lang)
-    panels = [
-        position_plan(
-            c,
-            ev_all,
-            ev_traj,
-            scene.mechanism,
-            highlight,
-            extremes,
-            ev_ext,
-            mu[Plan.POSITION],
-            lang,
-            title,
-            numbers,
-        )
-    ]
+    panels = [position_plan(c, ev_all, ev_traj, scene.mechanism, highlight, extremes, ev_ext,
+                            mu[Plan.POSITION], lang, title, numbers)]
     for k in highlight:
         phi_deg = math.degrees(float(sol.phi[k]))
         for plan in (Plan.VELOCITY, Plan.ACCELERATION):
             if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
-                panels.append(
-                    vector_plan(
-                        c, ev_all, k, plan, mu[plan], lang, plan_title(plan, lang, k, phi_deg)
-                    )
-                )
+                panels.append(vector_plan(c, ev_all, k, plan, mu[plan], lang,
+                                          plan_title(plan, lang, k, phi_deg)))
         if "force" in sol.plans:
             groups = list(dict.fromkeys(s.group for s in c.segments if s.plan is Plan.FORCE))
             for group in groups:
-                panels.append(
-                    vector_plan(
-                        c,
-                        ev_all,
-                        k,
-                        Plan.FORCE,
-                        mu[Plan.FORCE],
-                        lang,
-                        plan_title(Plan.FORCE, lang, k, phi_deg, group),
-                        group,
-                    )
-                )
-            lever = zhukovsky_lever(
-                c, ev_all, k, mu[Plan.VELOCITY], lang, lever_title(lang, phi_deg)
-            )
+                panels.append(vector_plan(c, ev_all, k, Plan.FORCE, mu[Plan.FORCE], lang,
+                                          plan_title(Plan.FORCE, lang, k, phi_deg, group), group))
+            lever = zhukovsky_lever(c, ev_all, k, mu[Plan.VELOCITY], lang,
+                                    lever_title(lang, phi_deg))
             if lever is not None:
                 panels.append(lever)
     return panels
@@ -140,8 +112,7 @@ def packing_area(frame):
     f, t = frame.frame, frame.title_block
     inner = box(f.x0 + 7.0, f.y0 + 7.0, f.x1 - 7.0, f.y1 - 7.0)
     return inner.difference(box(t.x0 - 3.0, t.y0 - 3.0, t.x1 + 3.0, t.y1 + 3.0)).intersection(
-        frame.drawing_area
-    )
+        frame.drawing_area)
 
 
 def _pack(panels: list[Panel], area) -> tuple[list[tuple[float, float]], int | None]:
@@ -157,17 +128,13 @@ def _pack(panels: list[Panel], area) -> tuple[list[tuple[float, float]], int | N
         for r in placed:
             bx0, by0, bx1, by1 = r.bounds
             candidates |= {(bx1, by1), (bx0, by0), (ax0 + GAP / 2, by0), (bx1, ay1 - GAP / 2)}
-        grid = [
-            (ax0 + i * 10.0, ay1 - j * 10.0)
-            for j in range(int((ay1 - ay0) / 10) + 1)
-            for i in range(int((ax1 - ax0) / 10) + 1)
-        ]
+        grid = [(ax0 + i * 10.0, ay1 - j * 10.0) for j in range(int((ay1 - ay0) / 10) + 1)
+                for i in range(int((ax1 - ax0) / 10) + 1)]
         best = None
         for cx, cy in sorted(candidates, key=lambda q: (-q[1], q[0])) + grid:
             rect = box(cx, cy - h, cx + w, cy)
-            if inside.contains(rect) and not any(
-                rect.intersects(r) and rect.intersection(r).area > 1e-6 for r in placed
-            ):
+            if inside.contains(rect) and not any(rect.intersects(r) and
+                                                 rect.intersection(r).area > 1e-6 for r in placed):
                 best = rect
                 break
         if best is None:
@@ -204,24 +171,14 @@ def scale_field(mu_l: float) -> str:
     return f"1:{r:g}" if r >= 1 else f"{1 / r:g}:1"
 
 
-def compose_sheets(
-    sol: Solution,
-    size: str | None = None,
-    standard: str | None = None,
-    lang: str | None = None,
-    name: str = "sheet",
-) -> list[Sheet]:
+def compose_sheets(sol: Solution, size: str | None = None, standard: str | None = None,
+                   lang: str | None = None, name: str = "sheet") -> list[Sheet]:
     """The sheets of :func:`compose`."""
     return compose(sol, size, standard, lang, name).sheets
 
 
-def compose(
-    sol: Solution,
-    size: str | None = None,
-    standard: str | None = None,
-    lang: str | None = None,
-    name: str = "sheet",
-) -> Composition:
+def compose(sol: Solution, size: str | None = None, standard: str | None = None,
+            lang: str | None = None, name: str = "sheet") -> Composition:
     """Lay out the plans of a solution on framed sheets.
 
     Everything goes on one sheet when it fits; otherwise the force analysis gets a second sheet, as
@@ -237,12 +194,9 @@ def compose(
     # free scale factors start large (a vector plan about 40 % of the sheet's short side) and
     # shrink by one round step at a time until everything fits
     drawn = plan_positions(sol)
-    mu0 = {
-        plan: sol.scales.get(plan, 1.0)
-        if key in scene.drawing.scales
-        else round_scale(_largest(sol, plan, drawn) / (0.4 * short_side))
-        for plan, key in FIXED.items()
-    }
+    mu0 = {plan: sol.scales.get(plan, 1.0) if key in scene.drawing.scales
+           else round_scale(_largest(sol, plan, drawn) / (0.4 * short_side))
+           for plan, key in FIXED.items()}
     if Plan.POSITION.scale_key not in scene.drawing.scales:
         mu0[Plan.POSITION] = round_scale(
             sol.scales.get(Plan.POSITION, 1.0) * 150.0 / (0.45 * short_side)
@@ -252,12 +206,9 @@ def compose(
         if composition is not None:
             return composition
     fixed = ", ".join(f"{k} = {mu0[p]:g}" for p, k in FIXED.items() if k in scene.drawing.scales)
-    raise DrawingError(
-        f"the plans do not fit on {size} sheets at the scale factors "
-        f"{fixed or 'chosen'}; use a larger sheet (--sheet A0) or larger scale "
-        "factors in [drawing.scales]",
-        file=scene.path,
-    )
+    raise DrawingError(f"the plans do not fit on {size} sheets at the scale factors "
+                       f"{fixed or 'chosen'}; use a larger sheet (--sheet A0) or larger scale "
+                       "factors in [drawing.scales]", file=scene.path)
 
 
 #: plan → its scale-factor key (``mu_l``, ``mu_v``, …), which a scene may fix
@@ -273,24 +224,15 @@ class Composition:
     scales: dict[Plan, float]
 
 
-def _fit(
-    sol: Solution,
-    mu: dict[Plan, float],
-    size: str,
-    standard: str,
-    lang: str,
-    name: str,
-    split: bool,
-) -> Composition | None:
+def _fit(sol: Solution, mu: dict[Plan, float], size: str, standard: str, lang: str, name: str,
+         split: bool) -> Composition | None:
     scene = sol.scene
     free = [p for p, key in FIXED.items() if key not in scene.drawing.scales]
     for _ in range(40):
         panels = _panels(sol, mu, lang)
         if split and any(_plan_of(p) is Plan.FORCE for p in panels):
-            parts = [
-                [p for p in panels if _plan_of(p) is not Plan.FORCE],
-                [p for p in panels if _plan_of(p) is Plan.FORCE],
-            ]
+            parts = [[p for p in panels if _plan_of(p) is not Plan.FORCE],
+                     [p for p in panels if _plan_of(p) is Plan.FORCE]]
         elif split:
             return None
         else:
@@ -299,12 +241,8 @@ def _fit(
         placements: list[list[tuple[Panel, tuple[float, float]]]] = []
         failed_panel = None
         for i, part in enumerate(parts):
-            fields = {
-                "title": scene.title,
-                "scale": scale_field(mu[Plan.POSITION]),
-                "sheet_number": str(i + 1),
-                "sheets_total": str(len(parts)),
-            }
+            fields = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION]),
+                      "sheet_number": str(i + 1), "sheets_total": str(len(parts))}
             fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
             frame = make_frame(size, standard, fields, language=lang)
             offsets, failed = _pack(part, packing_area(frame))
@@ -327,9 +265,7 @@ def _fit(
             )
             if not in_part:
                 return None
-            plan = max(
-                in_part,
-                key=lambda q: max((_area(x) for x in panels if _plan_of(x) is q), default=0.0),
-            )
+            plan = max(in_part, key=lambda q: max((_area(x) for x in panels if _plan_of(x) is q),
+                                                  default=0.0))
         mu[plan] = round_scale(mu[plan] * 1.0001 * 1.25)
     return None

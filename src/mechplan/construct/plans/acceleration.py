@@ -28,30 +28,12 @@ def emit_drive(b: Builder) -> None:
     tip, group = start_plan(b, A)
     drive = b.mech.drive
     body = b.bodies[drive.link]
-    body.epsilon = b.add(
-        f"acc.epsilon.{drive.link}",
-        Op.CONSTANT,
-        (),
-        A,
-        Kind.SCALAR,
-        Role.GIVEN,
-        f"ε{drive.link}",
-        value=drive.epsilon,
-    )
+    body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR, Role.GIVEN,
+                         f"ε{drive.link}", value=drive.epsilon)
     b.result(f"epsilon_{drive.link}", body.epsilon)
-    b.acc[tip] = b.add(
-        f"acc.{tip}",
-        Op.DRIVE_ACCELERATION,
-        (b.pos[drive.pivot], b.pos[tip]),
-        A,
-        Kind.POINT,
-        Role.RESULT,
-        alabel(tip),
-        group,
-        subject=(drive.pivot, tip),
-        omega=drive.omega,
-        epsilon=drive.epsilon,
-    )
+    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
+                       Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
+                       omega=drive.omega, epsilon=drive.epsilon)
     rows = [(f"a^n_{tip}", from_to(tip, drive.pivot), f"ω{drive.link}²·l_{drive.pivot}{tip}")]
     if drive.epsilon:
         rows.append(
@@ -64,13 +46,8 @@ def emit_drive(b: Builder) -> None:
 
 def emit_group(b: Builder, g: Group) -> None:
     """Acceleration construction of one group, then images of all its points."""
-    {
-        GroupKind.RRR: _rrr,
-        GroupKind.RRP: _rrp,
-        GroupKind.RPR: _rpr,
-        GroupKind.PRP: _prp,
-        GroupKind.RPP: _rpp,
-    }[g.kind](b, g)
+    {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
+     GroupKind.RPP: _rpp}[g.kind](b, g)
     for link in g.links:
         complete(b, link, A, g.name)
 
@@ -79,67 +56,32 @@ def _normal(b: Builder, start: str, link: str, p: str, q: str, q_name: str, grou
     """n_QP: from the image of P, ∥ QP towards P, of length ω²·l_PQ."""
     omega = b.bodies[link].omega
     assert omega is not None
-    sid = b.add(
-        f"acc.n.{q_name}{p}",
-        Op.NORMAL,
-        (start, omega, b.pos[p], b.pos[q]),
-        A,
-        Kind.POINT,
-        Role.AUXILIARY,
-        f"n_{q_name}{p}",
-        group,
-        subject=(b.c[start].label, q_name, p),
-    )
-    b.segment(
-        A,
-        start,
-        sid,
-        f"{b.c[start].label}n_{q_name}{p}",
-        f"a^n_{q_name}{p}",
-        SegmentKind.NORMAL,
-        group,
-    )
+    sid = b.add(f"acc.n.{q_name}{p}", Op.NORMAL, (start, omega, b.pos[p], b.pos[q]), A, Kind.POINT,
+                Role.AUXILIARY, f"n_{q_name}{p}", group, subject=(b.c[start].label, q_name, p))
+    b.segment(A, start, sid, f"{b.c[start].label}n_{q_name}{p}", f"a^n_{q_name}{p}",
+              SegmentKind.NORMAL, group)
     return sid
 
 
-def _coriolis(
-    b: Builder, start: str, frame_link: str, v_from: str, v_to: str, name: str, group: str
-) -> str:
+def _coriolis(b: Builder, start: str, frame_link: str, v_from: str, v_to: str, name: str,
+              group: str) -> str:
     """k: from ``start``, 2ω × v_rel where v_rel = v_to − v_from and ω of the guide's link."""
     if frame_link == GROUND:
         return start
     omega = b.bodies[frame_link].omega
     assert omega is not None
-    sid = b.add(
-        f"acc.k.{name}",
-        Op.CORIOLIS,
-        (start, omega, v_from, v_to),
-        A,
-        Kind.POINT,
-        Role.AUXILIARY,
-        f"k_{name}",
-        group,
-        subject=(b.c[start].label, b.c[omega].label, b.c[v_from].label, b.c[v_to].label),
-    )
-    b.segment(
-        A, start, sid, f"{b.c[start].label}k_{name}", f"a^k_{name}", SegmentKind.CORIOLIS, group
-    )
+    sid = b.add(f"acc.k.{name}", Op.CORIOLIS, (start, omega, v_from, v_to), A, Kind.POINT,
+                Role.AUXILIARY, f"k_{name}", group,
+                subject=(b.c[start].label, b.c[omega].label, b.c[v_from].label, b.c[v_to].label))
+    b.segment(A, start, sid, f"{b.c[start].label}k_{name}", f"a^k_{name}", SegmentKind.CORIOLIS,
+              group)
     return sid
 
 
 def _epsilon(b: Builder, link: str, p: str, q_pos: str, n: str, aq: str, group: str) -> str:
     body = b.bodies[link]
-    body.epsilon = b.add(
-        f"acc.epsilon.{link}",
-        Op.EPSILON,
-        (b.pos[p], q_pos, n, aq),
-        A,
-        Kind.SCALAR,
-        Role.RESULT,
-        f"ε{link}",
-        group,
-        subject=(p, b.c[q_pos].label),
-    )
+    body.epsilon = b.add(f"acc.epsilon.{link}", Op.EPSILON, (b.pos[p], q_pos, n, aq), A,
+                         Kind.SCALAR, Role.RESULT, f"ε{link}", group, subject=(p, b.c[q_pos].label))
     b.result(f"epsilon_{link}", body.epsilon)
     return body.epsilon
 
@@ -207,29 +149,17 @@ def _rrp(b: Builder, g: Group) -> None:
     _tangential(b, n1, meet, f"a^t_{k}{p1}", g.name)
     guide = b.c[locus].label
     if m != GROUND:
-        b.segment(
-            A,
-            kk,
-            meet,
-            f"{b.c[kk].label} {b.c[meet].label}",
-            f"a^r_{k}{l2}{k}{m}",
-            SegmentKind.SLIDING,
-            g.name,
-        )
+        b.segment(A, kk, meet, f"{b.c[kk].label} {b.c[meet].label}", f"a^r_{k}{l2}{k}{m}",
+                  SegmentKind.SLIDING, g.name)
     absolute(b, k, A, g.name)
-    rows = [
-        (f"a_{p1}", GIVEN, "✓"),
-        (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
-        (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?"),
-    ]
+    rows = [(f"a_{p1}", GIVEN, "✓"), (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
+            (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?")]
     if m == GROUND:
         eq = f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1}"
         rows.append((f"a_{k}", parallel(f"{guide}"), "?"))
     else:
-        eq = (
-            f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{k}{m} + a^k_{k}{l2}{k}{m} + "
-            f"a^r_{k}{l2}{k}{m}"
-        )
+        eq = (f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{k}{m} + a^k_{k}{l2}{k}{m} + "
+              f"a^r_{k}{l2}{k}{m}")
         rows += [
             (f"a_{k}{m}", GIVEN, "✓"),
             (f"a^k_{k}{l2}{k}{m}", perp(f"{guide}"), f"2ω{m}·v_{k}{l2}{k}{m}"),
@@ -262,9 +192,8 @@ def _rpr(b: Builder, g: Group) -> None:
     _epsilon(b, c, pc, b.pos[ps], n, meet, g.name)
     link_scalar(b, s, c, A, g.name)
     _tangential(b, n, meet, f"a^t_{ps}{c}{pc}", g.name)
-    b.segment(
-        A, kk, meet, f"{b.c[kk].label} {label}", f"a^r_{ps}{c}{ps}{s}", SegmentKind.SLIDING, g.name
-    )
+    b.segment(A, kk, meet, f"{b.c[kk].label} {label}", f"a^r_{ps}{c}{ps}{s}", SegmentKind.SLIDING,
+              g.name)
     b.segment(A, "acc.pi", meet, f"π{label}", f"a_{ps}{c}", SegmentKind.ABSOLUTE, g.name)
     b.result(f"a_{ps}{c}", meet)
     b.c.equations[(A, g.name)] = (
@@ -331,11 +260,6 @@ def _rpp(b: Builder, g: Group) -> None:
     b.acc[x] = meet_lines(b, A, f"acc.{x}", lines[0], lines[1], alabel(x), g.name)
     absolute(b, x, A, g.name)
     b.c.equations[(A, g.name)] = (
-        f"a_{x} = a_{x}{m} + a^k + a^r_{x}{l2}{x}{m} = a_{x}{l1} + a^k + a^r_{x}{l2}{x}{l1}",
-        [
-            (f"a_{x}{m}", GIVEN, "✓"),
-            (f"a^r_{x}{l2}{x}{m}", parallel(), "?"),
-            (f"a_{x}{l1}", GIVEN, "✓"),
-            (f"a^r_{x}{l2}{x}{l1}", parallel(), "?"),
-        ],
-    )
+        f"a_{x} = a_{x}{m} + a^k + a^r_{x}{l2}{x}{m} = a_{x}{l1} + a^k + a^r_{x}{l2}{x}{l1}", [
+            (f"a_{x}{m}", GIVEN, "✓"), (f"a^r_{x}{l2}{x}{m}", parallel(), "?"),
+            (f"a_{x}{l1}", GIVEN, "✓"), (f"a^r_{x}{l2}{x}{l1}", parallel(), "?")])

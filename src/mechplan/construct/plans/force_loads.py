@@ -32,6 +32,7 @@ class LoadingLike(Protocol):
         """Raise SceneError if the loading does not fit the mechanism."""
 
 
+
 @dataclass(frozen=True, slots=True)
 class Term:
     """A known load on a link: a force at a point, a couple, or both (a guide reaction).
@@ -41,11 +42,11 @@ class Term:
 
     label: str
     force: str | None = None
-    point: str | None = None  # position step of the point of application
+    point: str | None = None      # position step of the point of application
     couple: str | None = None
     direction: Direction = GIVEN
     magnitude: str = "✓"
-    where: str = ""  # name of the point of application (for its velocity image)
+    where: str = ""               # name of the point of application (for its velocity image)
 
 
 @dataclass
@@ -57,18 +58,8 @@ class State:
     applied: list[tuple[str, Term]] = field(default_factory=list)
     letters: dict[str, int] = field(default_factory=dict)
 
-    def add(
-        self,
-        id: str,
-        op: Op,
-        inputs: tuple[str, ...],
-        kind: Kind,
-        role: Role,
-        label: str,
-        group: str,
-        subject: tuple[str, ...] = (),
-        **params: Any,
-    ) -> str:
+    def add(self, id: str, op: Op, inputs: tuple[str, ...], kind: Kind, role: Role, label: str,
+            group: str, subject: tuple[str, ...] = (), **params: Any) -> str:
         return self.b.add(id, op, inputs, F, kind, role, label, group, subject, **params)
 
     def label(self, sid: str) -> str:
@@ -99,17 +90,8 @@ def inertia_and_weights(st: State) -> None:
         s_pos = b.pos[ms.centre]
         q = mq = None
         if ms.mass > 0:
-            q = st.add(
-                f"force.Q.{link}",
-                Op.FORCE_INERTIA,
-                (b.acc[ms.centre],),
-                Kind.POINT,
-                Role.RESULT,
-                f"Q{link}",
-                group,
-                subject=(ms.centre, link),
-                mass=ms.mass,
-            )
+            q = st.add(f"force.Q.{link}", Op.FORCE_INERTIA, (b.acc[ms.centre],), Kind.POINT,
+                       Role.RESULT, f"Q{link}", group, subject=(ms.centre, link), mass=ms.mass)
             b.result(f"Q_{link}", q)
             add_load(
                 st,
@@ -126,17 +108,8 @@ def inertia_and_weights(st: State) -> None:
         if ms.inertia > 0:
             eps = b.bodies[link].epsilon
             assert eps is not None
-            mq = st.add(
-                f"force.Mq.{link}",
-                Op.MOMENT_INERTIA,
-                (eps,),
-                Kind.SCALAR,
-                Role.RESULT,
-                f"M_q{link}",
-                group,
-                subject=(link,),
-                inertia=ms.inertia,
-            )
+            mq = st.add(f"force.Mq.{link}", Op.MOMENT_INERTIA, (eps,), Kind.SCALAR, Role.RESULT,
+                        f"M_q{link}", group, subject=(link,), inertia=ms.inertia)
             b.result(f"M_q{link}", mq)
             add_load(
                 st,
@@ -149,55 +122,24 @@ def inertia_and_weights(st: State) -> None:
                 ),
             )
         if q is not None and mq is not None:
-            h = st.add(
-                f"force.h.{link}",
-                Op.INERTIA_OFFSET,
-                (q, mq),
-                Kind.SCALAR,
-                Role.AUXILIARY,
-                f"h_q{link}",
-                group,
-                subject=(f"M_q{link}", f"Q{link}"),
-            )
+            h = st.add(f"force.h.{link}", Op.INERTIA_OFFSET, (q, mq), Kind.SCALAR,
+                       Role.AUXILIARY, f"h_q{link}", group, subject=(f"M_q{link}", f"Q{link}"))
             b.result(f"h_{link}", h)
-            k = st.add(
-                f"force.Kq.{link}",
-                Op.LINE_OF_ACTION,
-                (s_pos, q, mq),
-                Kind.POINT,
-                Role.AUXILIARY,
-                f"K{link}",
-                group,
-                subject=(ms.centre, f"Q{link}", f"M_q{link}"),
-            )
+            k = st.add(f"force.Kq.{link}", Op.LINE_OF_ACTION, (s_pos, q, mq), Kind.POINT,
+                       Role.AUXILIARY, f"K{link}", group,
+                       subject=(ms.centre, f"Q{link}", f"M_q{link}"))
             b.result(f"K_q{link}", k)
         if grav.enabled and ms.mass > 0 and grav.g > 0:
             gx, gy = grav.direction
             vec = (ms.mass * grav.g * gx, ms.mass * grav.g * gy)
-            w = st.add(
-                f"force.G.{link}",
-                Op.FORCE_LOAD,
-                (s_pos,),
-                Kind.POINT,
-                Role.GIVEN,
-                f"G{link}",
-                group,
-                subject=(ms.centre, link),
-                mode="vector",
-                vector=vec,
-            )
+            w = st.add(f"force.G.{link}", Op.FORCE_LOAD, (s_pos,), Kind.POINT, Role.GIVEN,
+                       f"G{link}", group, subject=(ms.centre, link), mode="vector", vector=vec)
             b.result(f"G_{link}", w)
             arrow = {(0.0, -1.0): "↓", (0.0, 1.0): "↑", (1.0, 0.0): "→", (-1.0, 0.0): "←"}
-            gdir = (
-                Direction(Relation.SYMBOL, arrow[(gx, gy)])
-                if (gx, gy) in arrow
-                else parallel_to("g")
-            )
-            add_load(
-                st,
-                link,
-                Term(f"G{link}", w, s_pos, direction=gdir, magnitude=f"m{link}·g", where=ms.centre),
-            )
+            gdir = (Direction(Relation.SYMBOL, arrow[(gx, gy)]) if (gx, gy) in arrow
+                    else parallel_to("g"))
+            add_load(st, link, Term(f"G{link}", w, s_pos, direction=gdir,
+                                 magnitude=f"m{link}·g", where=ms.centre))
 
 
 def external_loads(st: State) -> None:
@@ -209,17 +151,8 @@ def external_loads(st: State) -> None:
         kind = spec.kind.value
         sid = f"force.load.{j}"
         if kind == "moment":
-            m = st.add(
-                sid,
-                Op.CONSTANT,
-                (),
-                Kind.SCALAR,
-                Role.GIVEN,
-                f"M{link}",
-                group,
-                subject=(link,),
-                value=float(spec.moment),
-            )
+            m = st.add(sid, Op.CONSTANT, (), Kind.SCALAR, Role.GIVEN, f"M{link}", group,
+                       subject=(link,), value=float(spec.moment))
             b.result(f"load_{j}", m)
             add_load(st, link, Term(f"M{link}", couple=m))
             continue
@@ -231,111 +164,49 @@ def external_loads(st: State) -> None:
         direction_text, magnitude_text = GIVEN, "✓"
         if kind == "force":
             if spec.vector is not None:
-                f = st.add(
-                    sid,
-                    Op.FORCE_LOAD,
-                    (p,),
-                    Kind.POINT,
-                    Role.GIVEN,
-                    label,
-                    group,
-                    subject=(point,),
-                    mode="vector",
-                    vector=tuple(spec.vector),
-                )
+                f = st.add(sid, Op.FORCE_LOAD, (p,), Kind.POINT, Role.GIVEN, label, group,
+                           subject=(point,), mode="vector", vector=tuple(spec.vector))
             elif spec.towards is not None:
-                f = st.add(
-                    sid,
-                    Op.FORCE_LOAD,
-                    (p, b.pos[spec.towards]),
-                    Kind.POINT,
-                    Role.GIVEN,
-                    label,
-                    group,
-                    subject=(point, spec.towards),
-                    mode="towards",
-                    magnitude=float(spec.magnitude),
-                )
+                f = st.add(sid, Op.FORCE_LOAD, (p, b.pos[spec.towards]), Kind.POINT, Role.GIVEN,
+                           label, group, subject=(point, spec.towards), mode="towards",
+                           magnitude=float(spec.magnitude))
                 direction_text = from_to(point, spec.towards)
             else:
                 vec = (spec.magnitude * math.cos(spec.angle), spec.magnitude * math.sin(spec.angle))
-                f = st.add(
-                    sid,
-                    Op.FORCE_LOAD,
-                    (p,),
-                    Kind.POINT,
-                    Role.GIVEN,
-                    label,
-                    group,
-                    subject=(point,),
-                    mode="vector",
-                    vector=vec,
-                )
+                f = st.add(sid, Op.FORCE_LOAD, (p,), Kind.POINT, Role.GIVEN, label, group,
+                           subject=(point,), mode="vector", vector=vec)
         else:
             slides_on = b.mech.links[link].slides_on
             theta = b.bodies[link].angle
-            assert slides_on is not None and theta is not None  # Loading.check made sure
+            assert slides_on is not None and theta is not None    # Loading.check made sure
             guide = b.mech.guides[slides_on]
             towards = b.pos[spec.towards]
-            direction_text = Direction(
-                Relation.PARALLEL, guide.name, then=Direction(Relation.TOWARDS, spec.towards)
-            )
+            direction_text = Direction(Relation.PARALLEL, guide.name,
+                                       then=Direction(Relation.TOWARDS, spec.towards))
             if kind == "pressure":
-                area = math.pi * spec.bore**2 / 4.0
-                f = st.add(
-                    sid,
-                    Op.FORCE_LOAD,
-                    (p, towards, theta),
-                    Kind.POINT,
-                    Role.GIVEN,
-                    label,
-                    group,
-                    subject=(point, spec.towards, guide.name),
-                    mode="guide",
-                    value=float(spec.pressure) * area,
-                )
+                area = math.pi * spec.bore ** 2 / 4.0
+                f = st.add(sid, Op.FORCE_LOAD, (p, towards, theta), Kind.POINT, Role.GIVEN,
+                           label, group, subject=(point, spec.towards, guide.name), mode="guide",
+                           value=float(spec.pressure) * area)
                 magnitude_text = "p·πd²/4"
             elif spec.against == "displacement":
                 xs, fs = zip(*spec.table)
-                f = st.add(
-                    sid,
-                    Op.FORCE_LOAD,
-                    (p, b.pos[guide.through], towards, theta),
-                    Kind.POINT,
-                    Role.GIVEN,
-                    label,
-                    group,
-                    subject=(point, spec.towards, guide.name),
-                    mode="table_s",
-                    xs=tuple(xs),
-                    fs=tuple(fs),
-                )
+                f = st.add(sid, Op.FORCE_LOAD, (p, b.pos[guide.through], towards, theta),
+                           Kind.POINT, Role.GIVEN, label, group,
+                           subject=(point, spec.towards, guide.name), mode="table_s",
+                           xs=tuple(xs), fs=tuple(fs))
                 magnitude_text = f"F(s_{point})"
             else:
                 xs, fs = zip(*spec.table)
                 drive = b.mech.drive
-                f = st.add(
-                    sid,
-                    Op.FORCE_LOAD,
-                    ("pos.phi1", p, towards, theta),
-                    Kind.POINT,
-                    Role.GIVEN,
-                    label,
-                    group,
-                    subject=(point, spec.towards, guide.name),
-                    mode="table_phi",
-                    xs=tuple(xs),
-                    fs=tuple(fs),
-                    ref=drive.ref_angle,
-                    sense=drive.sense,
-                )
+                f = st.add(sid, Op.FORCE_LOAD, ("pos.phi1", p, towards, theta), Kind.POINT,
+                           Role.GIVEN, label, group, subject=(point, spec.towards, guide.name),
+                           mode="table_phi", xs=tuple(xs), fs=tuple(fs), ref=drive.ref_angle,
+                           sense=drive.sense)
                 magnitude_text = f"F(φ{drive.link})"
         b.result(f"load_{j}", f)
-        add_load(
-            st,
-            link,
-            Term(label, f, p, direction=direction_text, magnitude=magnitude_text, where=point),
-        )
+        add_load(st, link, Term(label, f, p, direction=direction_text, magnitude=magnitude_text,
+                             where=point))
 
 
 # -- building blocks of the group constructions ----------------------------------------------

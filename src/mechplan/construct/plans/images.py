@@ -37,16 +37,8 @@ def pole(plan: Plan) -> str:
     return "vel.p" if plan is Plan.VELOCITY else "acc.pi"
 
 
-def image_on(
-    b: Builder,
-    link: str,
-    key: str,
-    pos: str,
-    label: str,
-    plan: Plan,
-    group: str,
-    role: Role = Role.RESULT,
-) -> str:
+def image_on(b: Builder, link: str, key: str, pos: str, label: str, plan: Plan, group: str,
+             role: Role = Role.RESULT) -> str:
     """Image of the point at ``pos`` considered as a point of ``link`` (similarity theorem)."""
     if link == GROUND:
         return pole(plan)
@@ -58,43 +50,16 @@ def image_on(
     body = b.bodies[link]
     if len(known) >= 2:
         (pa, ia), (pb, ib) = known[0], known[1]
-        return b.add(
-            sid,
-            Op.SIMILAR_IMAGE,
-            (ia, ib, pa, pb, pos),
-            plan,
-            Kind.POINT,
-            role,
-            label,
-            group,
-            subject=(b.c[pa].label, b.c[pb].label, b.c[pos].label),
-        )
+        return b.add(sid, Op.SIMILAR_IMAGE, (ia, ib, pa, pb, pos), plan, Kind.POINT, role, label,
+                     group, subject=(b.c[pa].label, b.c[pb].label, b.c[pos].label))
     (pa, ia) = known[0]
     assert body.omega is not None
     if plan is Plan.VELOCITY:
-        return b.add(
-            sid,
-            Op.RIGID_VELOCITY,
-            (ia, body.omega, pa, pos),
-            plan,
-            Kind.POINT,
-            role,
-            label,
-            group,
-            subject=(b.c[pa].label, b.c[pos].label),
-        )
+        return b.add(sid, Op.RIGID_VELOCITY, (ia, body.omega, pa, pos), plan, Kind.POINT, role,
+                     label, group, subject=(b.c[pa].label, b.c[pos].label))
     assert body.epsilon is not None
-    return b.add(
-        sid,
-        Op.RIGID_ACCELERATION,
-        (ia, body.omega, body.epsilon, pa, pos),
-        plan,
-        Kind.POINT,
-        role,
-        label,
-        group,
-        subject=(b.c[pa].label, b.c[pos].label),
-    )
+    return b.add(sid, Op.RIGID_ACCELERATION, (ia, body.omega, body.epsilon, pa, pos), plan,
+                 Kind.POINT, role, label, group, subject=(b.c[pa].label, b.c[pos].label))
 
 
 def coincident(b: Builder, link: str, point: str, plan: Plan, group: str) -> str:
@@ -141,15 +106,8 @@ def absolute(b: Builder, name: str, plan: Plan, group: str) -> None:
     sid = table[name]
     if sid == pole(plan):
         return
-    b.segment(
-        plan,
-        pole(plan),
-        sid,
-        f"{pole_label}{b.c[sid].label}",
-        f"{sym}_{name}",
-        SegmentKind.ABSOLUTE,
-        group,
-    )
+    b.segment(plan, pole(plan), sid, f"{pole_label}{b.c[sid].label}", f"{sym}_{name}",
+              SegmentKind.ABSOLUTE, group)
     b.result(f"{sym}_{name}", sid)
 
 
@@ -164,30 +122,12 @@ def link_scalar(b: Builder, link: str, source_link: str, plan: Plan, group: str)
         return known
     src = getattr(b.bodies[source_link], attr) if source_link != GROUND else None
     if source_link == GROUND:
-        sid = b.add(
-            f"{prefix}.{link}",
-            Op.CONSTANT,
-            (),
-            plan,
-            Kind.SCALAR,
-            Role.RESULT,
-            f"{sym}{link}",
-            group,
-            value=0.0,
-        )
+        sid = b.add(f"{prefix}.{link}", Op.CONSTANT, (), plan, Kind.SCALAR, Role.RESULT,
+                    f"{sym}{link}", group, value=0.0)
     else:
         assert src is not None
-        sid = b.add(
-            f"{prefix}.{link}",
-            Op.COPY,
-            (src,),
-            plan,
-            Kind.SCALAR,
-            Role.RESULT,
-            f"{sym}{link}",
-            group,
-            subject=(b.c[src].label,),
-        )
+        sid = b.add(f"{prefix}.{link}", Op.COPY, (src,), plan, Kind.SCALAR, Role.RESULT,
+                    f"{sym}{link}", group, subject=(b.c[src].label,))
     setattr(body, attr, sid)
     b.result(f"{attr}_{link}", sid)
     return sid
@@ -196,54 +136,21 @@ def link_scalar(b: Builder, link: str, source_link: str, plan: Plan, group: str)
 def perp_line(b: Builder, plan: Plan, through: str, p: str, q: str, group: str) -> str:
     """A line through an image, ⊥ to the link segment PQ."""
     prefix = "vel" if plan is Plan.VELOCITY else "acc"
-    return b.add(
-        f"{prefix}.line.{b.c[through].label}.perp.{p}{q}",
-        Op.LINE_PERP,
-        (through, b.pos[p], b.pos[q]),
-        plan,
-        Kind.LINE,
-        Role.AUXILIARY,
-        f"⊥{p}{q}",
-        group,
-        subject=(b.c[through].label, f"{p}{q}"),
-    )
+    return b.add(f"{prefix}.line.{b.c[through].label}.perp.{p}{q}", Op.LINE_PERP,
+                 (through, b.pos[p], b.pos[q]), plan, Kind.LINE, Role.AUXILIARY, f"⊥{p}{q}", group,
+                 subject=(b.c[through].label, f"{p}{q}"))
 
 
 def parallel_line(b: Builder, plan: Plan, through: str, locus: str, group: str) -> str:
     """A line through an image, ∥ to a guide (the direction of a locus line)."""
     prefix = "vel" if plan is Plan.VELOCITY else "acc"
-    return b.add(
-        f"{prefix}.line.{b.c[through].label}.par.{b.c[locus].label}",
-        Op.LINE_PARALLEL,
-        (through, locus),
-        plan,
-        Kind.LINE,
-        Role.AUXILIARY,
-        f"∥{b.c[locus].label}",
-        group,
-        subject=(b.c[through].label, b.c[locus].label),
-    )
+    return b.add(f"{prefix}.line.{b.c[through].label}.par.{b.c[locus].label}", Op.LINE_PARALLEL,
+                 (through, locus), plan, Kind.LINE, Role.AUXILIARY, f"∥{b.c[locus].label}", group,
+                 subject=(b.c[through].label, b.c[locus].label))
 
 
-def meet_lines(
-    b: Builder,
-    plan: Plan,
-    id: str,
-    l1: str,
-    l2: str,
-    label: str,
-    group: str,
-    role: Role = Role.RESULT,
-) -> str:
+def meet_lines(b: Builder, plan: Plan, id: str, l1: str, l2: str, label: str, group: str,
+         role: Role = Role.RESULT) -> str:
     """The image where two construction lines meet."""
-    return b.add(
-        id,
-        Op.LINE_LINE,
-        (l1, l2),
-        plan,
-        Kind.POINT,
-        role,
-        label,
-        group,
-        subject=(b.c[l1].label, b.c[l2].label),
-    )
+    return b.add(id, Op.LINE_LINE, (l1, l2), plan, Kind.POINT, role, label, group,
+                 subject=(b.c[l1].label, b.c[l2].label))

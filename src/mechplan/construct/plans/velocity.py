@@ -28,29 +28,12 @@ def emit_drive(b: Builder) -> None:
     tip, group = start_plan(b, V)
     drive = b.mech.drive
     body = b.bodies[drive.link]
-    body.omega = b.add(
-        f"vel.omega.{drive.link}",
-        Op.CONSTANT,
-        (),
-        V,
-        Kind.SCALAR,
-        Role.GIVEN,
-        f"ω{drive.link}",
-        value=drive.omega,
-    )
+    body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR, Role.GIVEN,
+                       f"ω{drive.link}", value=drive.omega)
     b.result(f"omega_{drive.link}", body.omega)
-    b.vel[tip] = b.add(
-        f"vel.{tip}",
-        Op.DRIVE_VELOCITY,
-        (b.pos[drive.pivot], b.pos[tip]),
-        V,
-        Kind.POINT,
-        Role.RESULT,
-        vlabel(tip),
-        group,
-        subject=(drive.pivot, tip),
-        omega=drive.omega,
-    )
+    b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY, (b.pos[drive.pivot], b.pos[tip]), V,
+                       Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
+                       omega=drive.omega)
     b.c.equations[(V, group)] = (
         f"v_{tip} = ω{drive.link} × l_{drive.pivot}{tip}",
         [(f"v_{tip}", perp(f"{drive.pivot}{tip}"), f"ω{drive.link}·l_{drive.pivot}{tip}")],
@@ -61,30 +44,16 @@ def emit_drive(b: Builder) -> None:
 
 def emit_group(b: Builder, g: Group) -> None:
     """Velocity construction of one group, then images of all its points."""
-    {
-        GroupKind.RRR: _rrr,
-        GroupKind.RRP: _rrp,
-        GroupKind.RPR: _rpr,
-        GroupKind.PRP: _prp,
-        GroupKind.RPP: _rpp,
-    }[g.kind](b, g)
+    {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
+     GroupKind.RPP: _rpp}[g.kind](b, g)
     for link in g.links:
         complete(b, link, V, g.name)
 
 
 def _omega(b: Builder, link: str, p: str, q_pos: str, vp: str, vq: str, group: str) -> str:
     body = b.bodies[link]
-    body.omega = b.add(
-        f"vel.omega.{link}",
-        Op.OMEGA,
-        (b.pos[p], q_pos, vp, vq),
-        V,
-        Kind.SCALAR,
-        Role.RESULT,
-        f"ω{link}",
-        group,
-        subject=(p, b.c[q_pos].label),
-    )
+    body.omega = b.add(f"vel.omega.{link}", Op.OMEGA, (b.pos[p], q_pos, vp, vq), V, Kind.SCALAR,
+                       Role.RESULT, f"ω{link}", group, subject=(p, b.c[q_pos].label))
     b.result(f"omega_{link}", body.omega)
     return body.omega
 
@@ -92,7 +61,7 @@ def _omega(b: Builder, link: str, p: str, q_pos: str, vp: str, vq: str, group: s
 def _relative(
     b: Builder, start: str, end: str, quantity: str, kind: SegmentKind, group: str
 ) -> None:
-    if start == "vel.p":  # relative to a frame point: the absolute segment says it
+    if start == "vel.p":        # relative to a frame point: the absolute segment says it
         return
     b.segment(V, start, end, f"{b.c[start].label}{b.c[end].label}", quantity, kind, group)
 
@@ -100,30 +69,17 @@ def _relative(
 def _rrr(b: Builder, g: Group) -> None:
     l1, l2 = g.links
     p1, p2, k = g.outer1.point, g.outer2.point, g.inner.point
-    meet = meet_lines(
-        b,
-        V,
-        f"vel.{k}",
-        perp_line(b, V, b.vel[p1], p1, k, g.name),
-        perp_line(b, V, b.vel[p2], p2, k, g.name),
-        vlabel(k),
-        g.name,
-    )
+    meet = meet_lines(b, V, f"vel.{k}", perp_line(b, V, b.vel[p1], p1, k, g.name),
+                 perp_line(b, V, b.vel[p2], p2, k, g.name), vlabel(k), g.name)
     b.vel[k] = meet
     _omega(b, l1, p1, b.pos[k], b.vel[p1], meet, g.name)
     _omega(b, l2, p2, b.pos[k], b.vel[p2], meet, g.name)
     _relative(b, b.vel[p1], meet, f"v_{k}{p1}", SegmentKind.RELATIVE, g.name)
     _relative(b, b.vel[p2], meet, f"v_{k}{p2}", SegmentKind.RELATIVE, g.name)
     absolute(b, k, V, g.name)
-    b.c.equations[(V, g.name)] = (
-        f"v_{k} = v_{p1} + v_{k}{p1} = v_{p2} + v_{k}{p2}",
-        [
-            (f"v_{p1}", GIVEN, "✓"),
-            (f"v_{k}{p1}", perp(f"{p1}{k}"), "?"),
-            (f"v_{p2}", GIVEN, "✓"),
-            (f"v_{k}{p2}", perp(f"{p2}{k}"), "?"),
-        ],
-    )
+    b.c.equations[(V, g.name)] = (f"v_{k} = v_{p1} + v_{k}{p1} = v_{p2} + v_{k}{p2}", [
+        (f"v_{p1}", GIVEN, "✓"), (f"v_{k}{p1}", perp(f"{p1}{k}"), "?"),
+        (f"v_{p2}", GIVEN, "✓"), (f"v_{k}{p2}", perp(f"{p2}{k}"), "?")])
 
 
 def _rrp(b: Builder, g: Group) -> None:
@@ -151,16 +107,11 @@ def _rrp(b: Builder, g: Group) -> None:
     absolute(b, k, V, g.name)
     guide = b.c[locus].label
     b.c.equations[(V, g.name)] = (
-        f"v_{k} = v_{p1} + v_{k}{p1} = v_{km_name} + v_{k}{l2}{km_name}"
-        if m != GROUND
-        else f"v_{k} = v_{p1} + v_{k}{p1}",
-        [
-            (f"v_{p1}", GIVEN, "✓"),
-            (f"v_{k}{p1}", perp(f"{p1}{k}"), "?"),
+        f"v_{k} = v_{p1} + v_{k}{p1} = v_{km_name} + v_{k}{l2}{km_name}" if m != GROUND
+        else f"v_{k} = v_{p1} + v_{k}{p1}", [
+            (f"v_{p1}", GIVEN, "✓"), (f"v_{k}{p1}", perp(f"{p1}{k}"), "?"),
             *([(f"v_{km_name}", GIVEN, "✓")] if m != GROUND else []),
-            (f"v_{k}{l2}{km_name}" if m != GROUND else f"v_{k}", parallel(f"{guide}"), "?"),
-        ],
-    )
+            (f"v_{k}{l2}{km_name}" if m != GROUND else f"v_{k}", parallel(f"{guide}"), "?")])
 
 
 def _rpr(b: Builder, g: Group) -> None:
@@ -170,15 +121,8 @@ def _rpr(b: Builder, g: Group) -> None:
     guide = b.guide_of(g.inner)
     gline = f"pos.guide.{guide.name}"
     label = (vlabel(ps) + c) if not any(ch.isdigit() for ch in ps) else f"{vlabel(ps)}_{c}"
-    meet = meet_lines(
-        b,
-        V,
-        f"vel.{ps}@{c}",
-        perp_line(b, V, b.vel[pc], pc, ps, g.name),
-        parallel_line(b, V, b.vel[ps], gline, g.name),
-        label,
-        g.name,
-    )
+    meet = meet_lines(b, V, f"vel.{ps}@{c}", perp_line(b, V, b.vel[pc], pc, ps, g.name),
+                 parallel_line(b, V, b.vel[ps], gline, g.name), label, g.name)
     body = b.bodies[c]
     body.images.append(Image(f"{ps}@{c}", f"{ps}{c}", b.pos[ps], vel=meet))
     _omega(b, c, pc, b.pos[ps], b.vel[pc], meet, g.name)
