@@ -14,16 +14,10 @@ import numpy as np
 
 from ..i18n import message, number
 from .graph import Construction, Evaluation
-from .ops import SPECS, spec
+from .ops import SPECS, Drawn, Written, spec
 from .segments import Segment
 from .step import Op, Plan, Step
 from .terms import pole_label
-
-_OFFSETS = {Op.GUIDE_OFFSET, Op.INERTIA_OFFSET}
-_ANGLES = {Op.CRANK_ANGLE, Op.ANGLE_OF, Op.ANGLE_PLUS, Op.CARRIER_ANGLE}
-#: steps whose measured segments follow a colon
-_COLON = {Op.LINE_LINE, Op.SIMILAR_IMAGE, Op.RIGID_VELOCITY, Op.RIGID_ACCELERATION, Op.FORCE_CLOSE}
-
 
 #: operation → message id of its sentence (kept for ``check/``, which asks whether one exists)
 TEXT: dict[Op, str] = {op: s.message for op, s in SPECS.items() if s.message}
@@ -54,15 +48,16 @@ def vector_text(value: np.ndarray, lang: str, digits: int = 1, unit: str = "N") 
 
 
 def _scalar_text(step: Step, value: float, lang: str) -> str:
+    written = spec(step.op).written
     if step.plan is Plan.FORCE:
-        if step.op in _OFFSETS:
+        if written is Written.OFFSET:
             return f"{number(value * 1000, 1, lang)} {mm(lang)}"
         return f"{number(value, 2, lang)} N·m"
-    if step.op in _ANGLES or step.label.startswith("θ"):
+    if written is Written.ANGLE or step.label.startswith("θ"):
         return f"{number(math.degrees(value), 2, lang)}°"
     unit = "rad/s" if step.plan is Plan.VELOCITY else "rad/s²"
     text = f"{number(value, 3, lang)} {unit}"
-    if float(number(value, 3, "en")) != 0 and step.op in (Op.OMEGA, Op.EPSILON):
+    if float(number(value, 3, "en")) != 0 and written is Written.RATE:
         text += f" ({sense_text(value, lang)})"
     return text
 
@@ -96,7 +91,7 @@ def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
         return f"{label} = {v or m}"
     fields = {
         "label": label,
-        "m": (": " + m) if m and step.op in _COLON else m,
+        "m": (": " + m) if m and spec(step.op).written is Written.MEET else m,
         "v": v,
         "pole": "p" if step.plan is Plan.VELOCITY else pole_label("π", lang),
         "a": "",
@@ -105,7 +100,7 @@ def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
         "s1": subject[1],
         "s2": subject[2],
     }
-    if step.op is Op.SIMILAR_IMAGE:
+    if spec(step.op).draw is Drawn.IMAGE_TRIANGLE:     # the two images it is similar to
         fields.update(a=pole_label(c[step.input("a")].label, lang),
                       b=pole_label(c[step.input("b")].label, lang))
     return message(msgid, lang, **fields)

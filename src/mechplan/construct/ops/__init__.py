@@ -11,7 +11,7 @@ from collections.abc import Callable
 
 from ..step import Op, Step
 from . import acceleration, force, position, velocity
-from .spec import Drawn, Grade, Line, OpSpec, Result, Source
+from .spec import Drawn, Grade, Line, OpSpec, Result, Source, Written
 
 #: the registry: operation → its spec (built once from the family modules' ``SPECS``)
 SPECS: dict[Op, OpSpec] = {s.op: s for family in (position, velocity, acceleration, force)
@@ -31,4 +31,4 @@ SOURCES: dict[Op, Callable[[Step, int], Result]] = {
     s.op: s.evaluate for s in SPECS.values() if s.source is Source.POSITIONS and s.evaluate}
 
 __all__ = ["EVALUATORS", "SOURCES", "SPECS", "Drawn", "Grade", "Line", "OpSpec", "Result",
-           "Source", "spec"]
+           "Source", "Written", "spec"]

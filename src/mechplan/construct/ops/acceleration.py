@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ...geom.vec import Array, cross, dot, perp
 from ..step import Op, Step
-from .spec import Drawn, Grade, Line, OpSpec, Result, scaled
+from .spec import Drawn, Grade, Line, OpSpec, Result, Written, scaled
 
 
 def drive_acceleration(step: Step, pivot: Array, tip: Array) -> Result:
@@ -43,7 +43,7 @@ SPECS = (
     OpSpec(Op.NORMAL, normal, "protocol.op.normal", Drawn.POINT, Line.THIN, Grade.POINT,
            "hint.normal"),
     OpSpec(Op.CORIOLIS, coriolis, "protocol.op.coriolis", Drawn.POINT, Line.THIN, Grade.POINT),
-    OpSpec(Op.EPSILON, epsilon, "protocol.op.epsilon", grade=Grade.VALUE),
+    OpSpec(Op.EPSILON, epsilon, "protocol.op.epsilon", grade=Grade.VALUE, written=Written.RATE),
     OpSpec(Op.RIGID_ACCELERATION, rigid_acceleration, "protocol.op.rigid_acceleration",
-           Drawn.POINT, Line.OUTLINE, Grade.POINT),
+           Drawn.POINT, Line.OUTLINE, Grade.POINT, written=Written.MEET),
 )

@@ -14,7 +14,7 @@ import numpy as np
 from ...geom import meet
 from ...geom.vec import Array, cross, direction, dot, norm, perp, unit
 from ..step import Op, Step
-from .spec import Drawn, Grade, Line, OpSpec, Result
+from .spec import Drawn, Grade, Line, OpSpec, Result, Written
 
 
 def force_inertia(step: Step, a_centre: Array) -> Result:
@@ -182,7 +182,8 @@ SPECS = (
     OpSpec(Op.FORCE_INERTIA, force_inertia, "protocol.op.force_inertia", Drawn.VECTOR,
            Line.OUTLINE, Grade.VALUE),
     OpSpec(Op.MOMENT_INERTIA, moment_inertia, "protocol.op.moment_inertia", grade=Grade.VALUE),
-    OpSpec(Op.INERTIA_OFFSET, inertia_offset, "protocol.op.inertia_offset", grade=Grade.VALUE),
+    OpSpec(Op.INERTIA_OFFSET, inertia_offset, "protocol.op.inertia_offset", grade=Grade.VALUE,
+           written=Written.OFFSET),
     OpSpec(Op.LINE_OF_ACTION, line_of_action, None),
     OpSpec(Op.FORCE_LOAD, force_load, "protocol.op.force_load", Drawn.VECTOR, Line.OUTLINE),
     OpSpec(Op.MOMENT_SUM, moment_sum, "protocol.op.moment_sum", grade=Grade.VALUE),
@@ -193,14 +194,15 @@ SPECS = (
     OpSpec(Op.FORCE_LINE, force_line, "protocol.op.force_line", Drawn.CONSTRUCTION_LINE,
            Line.DASHED, Grade.DIRECTION),
     OpSpec(Op.FORCE_CLOSE, force_close, "protocol.op.force_close", Drawn.MEET, Line.NONE,
-           Grade.MEET, "hint.meet"),
+           Grade.MEET, "hint.meet", written=Written.MEET),
     OpSpec(Op.DIFFERENCE, difference, "protocol.op.difference", Drawn.VECTOR, Line.OUTLINE,
            Grade.VALUE),
     OpSpec(Op.FORCE_REVERSE, negate, "protocol.op.force_reverse", Drawn.VECTOR, Line.OUTLINE,
            Grade.VALUE),
     OpSpec(Op.MOMENT_CLOSE, negate, "protocol.op.moment_close", grade=Grade.VALUE),
     OpSpec(Op.BALANCING_MOMENT, negate, "protocol.op.balancing_moment", grade=Grade.VALUE),
-    OpSpec(Op.GUIDE_OFFSET, guide_offset, "protocol.op.guide_offset", grade=Grade.VALUE),
+    OpSpec(Op.GUIDE_OFFSET, guide_offset, "protocol.op.guide_offset", grade=Grade.VALUE,
+           written=Written.OFFSET),
     OpSpec(Op.ZHUKOVSKY, zhukovsky, "protocol.op.zhukovsky", Drawn.LEVER, Line.OUTLINE,
            Grade.VALUE),
 )

@@ -7,7 +7,7 @@ import numpy as np
 from ...geom import meet
 from ...geom.vec import Array, angle_of, direction, rotate
 from ..step import Op, Step
-from .spec import Drawn, Grade, Line, OpSpec, Result, Source, line, to_complex, to_real
+from .spec import Drawn, Grade, Line, OpSpec, Result, Source, Written, line, to_complex, to_real
 
 
 def fixed_point(step: Step, n: int) -> Result:
@@ -99,22 +99,23 @@ def similar_position(step: Step, a: Array, b: Array) -> Result:
 
 
 SPECS = (
-    OpSpec(Op.CRANK_ANGLE, None, "protocol.op.crank_angle", source=Source.DRIVE),
+    OpSpec(Op.CRANK_ANGLE, None, "protocol.op.crank_angle", source=Source.DRIVE,
+           written=Written.ANGLE),
     OpSpec(Op.FIXED_POINT, fixed_point, None, Drawn.POINT, source=Source.POSITIONS),
     OpSpec(Op.CONSTANT, constant, "protocol.op.constant", source=Source.POSITIONS),
     OpSpec(Op.POLAR_POINT, polar_point, "protocol.op.polar_point", Drawn.POINT, Line.OUTLINE,
            Grade.POINT),
-    OpSpec(Op.ANGLE_OF, angle_of_segment, "protocol.op.angle_of"),
-    OpSpec(Op.ANGLE_PLUS, angle_plus, "protocol.op.angle_plus"),
+    OpSpec(Op.ANGLE_OF, angle_of_segment, "protocol.op.angle_of", written=Written.ANGLE),
+    OpSpec(Op.ANGLE_PLUS, angle_plus, "protocol.op.angle_plus", written=Written.ANGLE),
     OpSpec(Op.CIRCLE_CIRCLE, circle_circle, "protocol.op.circle_circle", Drawn.POINT,
            Line.OUTLINE, Grade.POINT),
     OpSpec(Op.CIRCLE_LINE, circle_line, "protocol.op.circle_line", Drawn.POINT, Line.OUTLINE,
            Grade.POINT),
     OpSpec(Op.LINE_LINE, line_line, "protocol.op.line_line", Drawn.MEET, Line.NONE, Grade.MEET,
-           "hint.meet"),
+           "hint.meet", written=Written.MEET),
     OpSpec(Op.LOCUS_LINE, locus_line, "protocol.op.locus_line", Drawn.CONSTRUCTION_LINE,
            Line.DASHED, Grade.DIRECTION),
-    OpSpec(Op.CARRIER_ANGLE, carrier_angle, "protocol.op.carrier_angle"),
+    OpSpec(Op.CARRIER_ANGLE, carrier_angle, "protocol.op.carrier_angle", written=Written.ANGLE),
     OpSpec(Op.PLACE, place, "protocol.op.place", Drawn.POINT, Line.OUTLINE, Grade.POINT),
     OpSpec(Op.SIMILAR_POSITION, similar_position, "protocol.op.similar_position", Drawn.POINT,
            Line.OUTLINE, Grade.POINT),

@@ -4,7 +4,8 @@ An :class:`OpSpec` is the one home of an operation. Its named inputs are the par
 ``evaluate`` function after ``step`` (in the order of ``Step.inputs``; a ``*name`` parameter takes
 the rest); its protocol sentence is the catalogue message ``message`` (``locale/*/protocol.po``);
 ``draw`` and ``line`` say what a sheet draws for it; ``grade`` and ``hint`` say how the checker
-grades a submitted point or line of it and which hint it gives.
+grades a submitted point or line of it and which hint it gives; ``written`` how the protocol writes
+its value.
 """
 
 from __future__ import annotations
@@ -44,6 +45,16 @@ class Drawn(enum.Enum):
     LEVER = "lever"  # Zhukovsky's lever: the turned plan with the loads
 
 
+class Written(enum.Enum):
+    """How the protocol writes a step's scalar value and its measured segments."""
+
+    PLAIN = "plain"          # the value in its plan's unit (rad/s, rad/s², N·m)
+    ANGLE = "angle"          # degrees
+    RATE = "rate"            # ω or ε with its sense (counter-clockwise / clockwise)
+    OFFSET = "offset"        # a distance of the force plan, in millimetres
+    MEET = "meet"            # a point found by a construction: its segments after a colon
+
+
 class Line(enum.Enum):
     """Line style of what is drawn (the sheet maps it to its layer roles)."""
 
@@ -75,6 +86,7 @@ class OpSpec:
     grade: Grade = Grade.NOT_GRADED
     hint: str = "hint.step"  # key of the checker's hint for a wrong result
     source: Source = Source.INPUTS
+    written: Written = Written.PLAIN     # how the protocol writes its value
     inputs: tuple[str, ...] = field(init=False)
     rest: str | None = field(init=False)  # name of a variable tail of inputs, if any
 
