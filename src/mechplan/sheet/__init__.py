@@ -1,4 +1,8 @@
-"""Sheets: drawing primitives with layer roles, frames and title blocks (ISO, ГОСТ, TCVN)."""
+"""Sheets presenting a solution (:mod:`.compose`, :mod:`.panels`, :mod:`.lever`).
+
+The drafting names (primitives with layer roles, frames and title blocks) live in
+:mod:`mechplan.drafting` and are re-exported here as before.
+"""
 
 from mechplan.drafting.frame import (
     PAPER_SIZES_MM,
