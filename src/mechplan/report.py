@@ -6,48 +6,26 @@ import math
 
 import numpy as np
 
-from .construct.protocol import (
-    MM,
-    PLAN_TITLE,
-    SENSE,
-    localize_direction,
-    pole_label,
-    protocol,
-    vector_text,
-)
+from .construct.protocol import mm, plan_title, protocol, sense_text, vector_text
 from .construct.step import Plan
+from .construct.terms import pole_label
 from .i18n import message
+from .i18n import number as format_number
 from .solve import Solution, segment_table
 from .trust_report import summary_lines
-from .units import format_number
 
-WORDS = {
-    "en": {"dof": "Degrees of freedom", "structure": "Structure formula", "cls": "class", "position": "Position",
-               "equation": "Vector equation", "term": "term", "direction": "direction", "magnitude": "magnitude",
-               "segments": "Measured segments", "results": "Results", "point": "point", "link": "link",
-               "groups": "Assur groups", "crank": "crank at", "fromx": "from +x"},
-    "ru": {"dof": "Степень подвижности", "structure": "Формула строения", "cls": "класс", "position": "Положение",
-               "equation": "Векторное уравнение", "term": "вектор", "direction": "направление", "magnitude": "величина",
-               "segments": "Измеренные отрезки", "results": "Результаты", "point": "точка", "link": "звено",
-               "groups": "Группы Ассура", "crank": "кривошип под углом", "fromx": "от оси +x"},
-    "vi": {"dof": "Bậc tự do", "structure": "Công thức cấu trúc", "cls": "loại", "position": "Vị trí",
-               "equation": "Phương trình véc tơ", "term": "véc tơ", "direction": "phương chiều", "magnitude": "giá trị",
-               "segments": "Các đoạn đo được", "results": "Kết quả", "point": "điểm", "link": "khâu",
-               "groups": "Nhóm Axua", "crank": "tay quay ở góc", "fromx": "so với trục +x"},
-    "zh": {"dof": "自由度", "structure": "机构的组成式", "cls": "级", "position": "位置", "equation": "矢量方程",
-               "term": "矢量", "direction": "方向", "magnitude": "大小", "segments": "测量线段", "results": "结果",
-               "point": "点", "link": "构件", "groups": "杆组", "crank": "曲柄位于", "fromx": "（自 +x 轴）"},
-}
+
+def _w(key: str, lang: str) -> str:
+    return message(f"report.{key}", lang)
+
+_KEYS = ("dof", "structure", "cls", "position", "equation", "segments", "results", "crank", "fromx")
 PLANS = {"position": Plan.POSITION, "velocity": Plan.VELOCITY, "acceleration": Plan.ACCELERATION,
          "force": Plan.FORCE}
-UNITS = {Plan.POSITION: "m/mm", Plan.VELOCITY: "(m/s)/mm", Plan.ACCELERATION: "(m/s²)/mm",
-         Plan.FORCE: "N/mm"}
-
 
 def text_report(sol: Solution, lang: str | None = None) -> str:
     """The full report: structure, then per position the plans' protocols, tables and results."""
     lang = lang or sol.scene.language
-    w = WORDS[lang]
+    w = {key: _w(key, lang) for key in _KEYS}
     st = sol.structure
     out = [sol.scene.title, "=" * len(sol.scene.title),
            f"{w['dof']}: W = 3·{st.moving_links} − 2·{st.lower_pairs} = {st.dof}",
@@ -67,13 +45,14 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         steps = protocol(sol.construction, sol.ev, k, lang, sol.scales, plans)
         for plan in plans:
             mu = sol.scales.get(plan, 1.0)
-            unit = UNITS[plan]
-            out += ["", f"### {PLAN_TITLE[plan][lang]} (μ = {format_number(mu, 6, lang).rstrip('0').rstrip(',.')} {unit})"]
+            unit = plan.scale_unit
+            num = format_number(mu, 6, lang).rstrip('0').rstrip(',.')
+            out += ["", f"### {plan_title(plan, lang)} (μ = {num} {unit})"]
             for (p, group), (eq, rows) in sol.construction.equations.items():
                 if p is plan:
                     out.append(f"{w['equation']} {group}: {eq}")
                     for term, direction, magnitude in rows:
-                        out.append(f"    {term:<16} {localize_direction(direction, lang):<12} "
+                        out.append(f"    {term:<16} {direction.text(lang):<12} "
                                    f"{magnitude}")
             n = 0
             for p, label, text in steps:
@@ -83,9 +62,12 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
             measured = segment_table(sol, plan, k)
             if measured:
                 out.append(f"  {w['segments']}:")
-                for name, mm, _mu, quantity, value in measured:
-                    out.append(f"    {pole_label(name, lang):<14} {format_number(mm, 1, lang):>8} {MM[lang]}"
-                               f"   {quantity:<14} {format_number(value, 4, lang)}")
+                for name, mm_, _mu, quantity, value in measured:
+                    out.append(
+                        f"    {pole_label(name, lang):<14} "
+                        f"{format_number(mm_, 1, lang):>8} {mm(lang)}"
+                        f"   {quantity:<14} {format_number(value, 4, lang)}"
+                    )
         out += ["", f"### {w['results']}"]
         out += _results(sol, k, lang)
         if "forces" in sol.extras:
@@ -101,23 +83,29 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
         p for lk in sol.scene.mechanism.links.values() if lk.id != "0" for p in lk.points)
     for p in dict.fromkeys(pts):
         parts = [f"{p:<4}"]
-        if f"pos.{p}" in ev.values:
-            x, y = ev[f"pos.{p}"][k] * 1000
+        if c.has_position(p) and c.position(p) in ev.values:
+            x, y = ev[c.position(p)][k] * 1000
             parts.append(f"r = ({format_number(x, 2, lang)}; {format_number(y, 2, lang)}) mm")
-        for sym, unit in (("v", "m/s"), ("a", "m/s²")):
-            sid = c.results.get(f"{sym}_{p}")
+        for sym, unit, image in (
+            ("v", "m/s", c.velocity_image),
+            ("a", "m/s²", c.acceleration_image),
+        ):
+            sid = image(p) if c.has_result(sym, p) else None
             if sid in ev.values:
                 vec = ev[sid][k]
                 mag = float(np.hypot(*vec))
                 text = f"{sym} = {format_number(mag, 4, lang)} {unit}"
                 if float(f"{mag:.4f}") != 0:
-                    text += f" ∠ {format_number(math.degrees(math.atan2(vec[1], vec[0])), 1, lang)}°"
+                    text += (
+                        f" ∠ {format_number(math.degrees(math.atan2(vec[1], vec[0])), 1, lang)}°"
+                    )
                 parts.append(text)
         lines.append("  " + "   ".join(parts))
     for lid in sol.scene.mechanism.moving:
         parts = []
-        for key, sym, unit in (("omega", "ω", "rad/s"), ("epsilon", "ε", "rad/s²")):
-            sid = c.results.get(f"{key}_{lid}")
+        for key, sym, unit, of in (("omega", "ω", "rad/s", c.omega),
+                                   ("epsilon", "ε", "rad/s²", c.epsilon)):
+            sid = of(lid) if c.has_result(key, lid) else None
             if sid in ev.values:
                 parts.append(f"{sym}{lid} = {format_number(float(ev[sid][k]), 4, lang)} {unit}")
         if parts:
@@ -125,27 +113,14 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
     return lines
 
 
-FORCE_WORDS = {
-    "en": ("Reactions R_ij (force of link i on link j)", "Guide reactions (⊥ guide), line of action from",
-           "Balancing moment on link", "driving", "resisting", "Zhukovsky's lever", "difference",
-           "Reduced moment of forces", "Reduced moment of inertia", "at", "pure couple"),
-    "ru": ("Реакции R_ij (сила звена i на звено j)", "Реакции направляющих (⊥ направляющей), линия действия от",
-           "Уравновешивающий момент на звене", "движущий", "момент сопротивления", "Рычаг Жуковского",
-           "расхождение", "Приведённый момент сил", "Приведённый момент инерции", "в точке",
-           "чистая пара"),
-    "vi": ("Áp lực khớp động R_ij (lực của khâu i lên khâu j)", "Phản lực dẫn hướng (⊥ đường dẫn), đường tác dụng cách",
-           "Mômen cân bằng trên khâu", "phát động", "cản", "Đòn Giucôpxki", "sai lệch",
-           "Mômen thay thế của lực", "Mômen quán tính thay thế", "tại", "ngẫu lực thuần"),
-    "zh": ("运动副反力 R_ij（构件 i 对构件 j 的力）", "导路反力（⊥ 导路），作用线距",
-           "构件上的平衡力矩", "驱动", "阻抗", "儒可夫斯基杠杆", "相差", "等效力矩", "等效转动惯量",
-           "作用于", "纯力偶"),
-}
+_FORCE_KEYS = ("reactions", "guide_reactions", "balancing", "driving", "resisting", "lever",
+               "difference", "reduced_moment", "reduced_inertia", "at", "pure_couple")
 
 
 def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     """Reactions, guide reactions, balancing moment (two ways), M_red and J_red at position k."""
     fa = sol.extras["forces"]
-    w = FORCE_WORDS[lang]
+    w = [_w(f"force.{key}", lang) for key in _FORCE_KEYS]
     out = [f"### {w[0]}"]
     for r in fa.reactions.values():
         out.append(f"  R_{r.key} = {vector_text(r.force[k], lang, 2)}   ({w[9]} {r.point})")
@@ -153,12 +128,14 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
         out.append(f"### {w[1]} {', '.join(r.point for r in fa.guide_reactions.values())}")
     for r in fa.guide_reactions.values():
         d = float(r.offset[k]) if r.offset is not None else math.nan
-        where = f"d = {format_number(d * 1000, 2, lang)} mm ({r.guide})" if math.isfinite(d) else w[10]
+        where = (
+            f"d = {format_number(d * 1000, 2, lang)} mm ({r.guide})" if math.isfinite(d) else w[10]
+        )
         out.append(f"  R_{r.key} = {vector_text(r.force[k], lang, 2)};  {where}")
     mb, mz = float(fa.balancing_moment[k]), float(fa.zhukovsky_moment[k])
     role = w[3] if fa.driving(k) else w[4]
     link = sol.scene.mechanism.drive.link
-    sense = SENSE[lang][0 if mb > 0 else 1]
+    sense = sense_text(mb, lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} N·m ({sense}; {role})")
     out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} N·m; {w[6]} "
                f"{float(fa.difference_percent[k]):.2e} %")

@@ -53,14 +53,18 @@ class Solution:
         return int(self.phi.shape[0])
 
 
-def build(scene: Scene, plans: tuple[str, ...] | None = None, loading: Any = None) -> tuple[Structure, Construction]:
+def build(
+    scene: Scene, plans: tuple[str, ...] | None = None, loading: Any = None
+) -> tuple[Structure, Construction]:
     """Structure and construction of a scene."""
     structure = analyse(scene.mechanism)
     plans = plans or scene.plans
     if "force" in plans and loading is None:
         from .dynamics.loading import Loading
         loading = Loading.from_scene(scene)
-    build_plans = tuple(p for p in (*KINEMATIC, "force") if p in plans or p in ("position", "velocity"))
+    build_plans = tuple(
+        p for p in (*KINEMATIC, "force") if p in plans or p in ("position", "velocity")
+    )
     c = build_construction(scene.mechanism, structure, build_plans, scene.assembly_phi, scene.path,
                            loading)
     return structure, c
@@ -77,8 +81,12 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
         ex = [e for e in extreme_positions(c, scene.mechanism, pos.start_extreme.subject)
               if e.which == pos.start_extreme.which]
         if not ex:
-            raise SceneError(f"{pos.start_extreme.subject} has no {pos.start_extreme.which} extreme "
-                             "position over the cycle", file=scene.path, key="positions.start")
+            raise SceneError(
+                f"{pos.start_extreme.subject} has no {pos.start_extreme.which} extreme "
+                "position over the cycle",
+                file=scene.path,
+                key="positions.start",
+            )
         start = ex[0].phi
     return np.mod(start + np.arange(n) * 2.0 * math.pi / n, 2.0 * math.pi)
 
@@ -90,22 +98,21 @@ def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[s
     out: list[str] = []
     for p in points:
         if "position" in plans:
-            out.append(f"pos.{p}")
-        for sym, plan in (("v", "velocity"), ("a", "acceleration")):
-            if plan in plans and f"{sym}_{p}" in c.results:
-                out.append(c.results[f"{sym}_{p}"])
+            out.append(c.position(p))
+        if "velocity" in plans and c.has_result("v", p):
+            out.append(c.velocity_image(p))
+        if "acceleration" in plans and c.has_result("a", p):
+            out.append(c.acceleration_image(p))
     if not scene.points_of_interest:
-        for key, sid in c.results.items():
-            plan = c[sid].plan.value
-            if plan in plans and key.split("_")[0] in ("angle", "omega", "epsilon"):
-                out.append(sid)
+        out += [sid for sid in c.link_results() if c[sid].plan.value in plans]
     if "force" in plans:
-        out += [sid for key, sid in c.results.items()
-                if key in ("M_b", "M_b_zhukovsky") or key.startswith(("R_", "d_"))]
+        out += c.force_results()
     return list(dict.fromkeys(out))
 
 
-def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]) -> dict[Plan, float]:
+def choose_scales(
+    scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]
+) -> dict[Plan, float]:
     """Scale factors: fixed by the scene or round values so each plan's largest segment ≤ 120 mm."""
     out: dict[Plan, float] = {}
     for plan in (Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION, Plan.FORCE):
@@ -119,7 +126,9 @@ def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[st
                 d = np.hypot(*(ev[s.end] - ev[s.start]).T)
                 if np.isfinite(d).any():
                     largest = max(largest, float(np.nanmax(d)))
-        out[plan] = choose_scale(largest, 150.0 if plan is Plan.POSITION else 120.0) if largest else 1.0
+        out[plan] = (
+            choose_scale(largest, 150.0 if plan is Plan.POSITION else 120.0) if largest else 1.0
+        )
     return out
 
 
@@ -185,36 +194,50 @@ def to_json(sol: Solution) -> dict[str, Any]:
         pts: dict[str, Any] = {}
         for p in points:
             entry_p: dict[str, Any] = {}
-            if f"pos.{p}" in ev.values:
-                entry_p["r"] = _vec(ev[f"pos.{p}"][k])
-            for sym in ("v", "a"):
-                sid = c.results.get(f"{sym}_{p}")
+            if c.has_position(p) and c.position(p) in ev.values:
+                entry_p["r"] = _vec(ev[c.position(p)][k])
+            for sym, image in (("v", c.velocity_image), ("a", c.acceleration_image)):
+                sid = image(p) if c.has_result(sym, p) else None
                 if sid is not None and sid in ev.values:
                     entry_p[sym] = _vec(ev[sid][k])
             pts[p] = entry_p
         links: dict[str, Any] = {}
         for lid in scene.mechanism.moving:
             entry: dict[str, Any] = {}
-            for key, name in (("angle", "angle_deg"), ("omega", "omega"), ("epsilon", "epsilon")):
-                sid = c.results.get(f"{key}_{lid}")
+            for key, name, of in (("angle", "angle_deg", c.link_angle), ("omega", "omega", c.omega),
+                                  ("epsilon", "epsilon", c.epsilon)):
+                sid = of(lid) if c.has_result(key, lid) else None
                 if sid is not None and sid in ev.values:
                     val = float(ev[sid][k])
-                    entry[name] = math.degrees(math.remainder(val, 2 * math.pi)) if key == "angle" else val
+                    entry[name] = (
+                        math.degrees(math.remainder(val, 2 * math.pi)) if key == "angle" else val
+                    )
             if entry:
                 links[lid] = entry
         entry_k: dict[str, Any] = {
             "phi_deg": round(math.degrees(float(sol.phi[k])), 10),
-            "crank_angle_deg": round(math.degrees(math.remainder(float(theta[k]), 2 * math.pi)), 10),
-            "points": pts, "links": links}
+            "crank_angle_deg": round(
+                math.degrees(math.remainder(float(theta[k]), 2 * math.pi)), 10
+            ),
+            "points": pts,
+            "links": links,
+        }
         if "forces" in sol.extras:
             entry_k.update(sol.extras["forces"].json(k))
         entry_k["error_estimate"] = position_json(sol, k)
         positions.append(entry_k)
-    return {"mechplan": __version__, "title": scene.title, "dof": sol.structure.dof,
-            "structure": sol.structure.formula,
-            "groups": [{"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups],
-            "positions": positions, "accuracy": trust_json(sol),
-            "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated}}
+    return {
+        "mechplan": __version__,
+        "title": scene.title,
+        "dof": sol.structure.dof,
+        "structure": sol.structure.formula,
+        "groups": [
+            {"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups
+        ],
+        "positions": positions,
+        "accuracy": trust_json(sol),
+        "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated},
+    }
 
 
 def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, float, str, float]]:

@@ -11,11 +11,12 @@ import pytest
 from mechplan.construct.builder import build_construction
 from mechplan.construct.ops import EVALUATORS
 from mechplan.construct.plans import force
+from mechplan.construct.terms import Relation
 from mechplan.construct.step import Kind, Op, Plan
 from mechplan.dynamics import Loading
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
-from mechplan.scene.spec import LoadKind, LoadSpec
+from mechplan.model.loads import LoadKind, LoadSpec
 
 ROOT = Path(__file__).resolve().parents[2]
 PLANS = ("position", "velocity", "acceleration", "force")
@@ -66,7 +67,9 @@ def test_groups_from_the_farthest_back_to_the_crank():
 
 def test_equations_of_the_force_polygons():
     _, c = build("v_engine")
-    eq, rows = c.equations[(Plan.FORCE, "II(2,3)")]
+    eq, typed = c.equations[(Plan.FORCE, "II(2,3)")]
+    rows = [(term, str(d), m) for term, d, m in typed]      # directions are structured terms
+    assert typed[-1][1].relation is Relation.PARALLEL
     assert eq == "R^t_12 + Q2 + G2 + R_42 + Q3 + G3 + F_C + R_03 + R^n_12 = 0"
     assert ("R_03", "⊥ Ax", "?") in rows and ("R^n_12", "∥ BC", "?") in rows
     assert ("F_C", "∥ Ax, towards A", "p·πd²/4") in rows

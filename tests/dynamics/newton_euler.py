@@ -14,7 +14,7 @@ import numpy as np
 
 from mechplan.dynamics import Loading
 from mechplan.model.mechanism import GROUND, Mechanism, PairKind
-from mechplan.scene.spec import Gravity, LoadKind, LoadSpec, MassSpec
+from mechplan.model.loads import Gravity, LoadKind, LoadSpec, MassSpec
 
 
 def _cross(a, b):

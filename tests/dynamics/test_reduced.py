@@ -14,7 +14,7 @@ from mechplan.dynamics import Loading, reduced_inertia, reduced_moment
 from mechplan.dynamics.reduced import reduced_of
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
-from mechplan.scene.spec import Gravity
+from mechplan.model.loads import Gravity
 
 from .dyad_scenes import CYCLE, PINNED_SLIDERS, SCOTCH_YOKE
 

@@ -12,7 +12,7 @@ from pathlib import Path
 import ezdxf
 import pytest
 
-from mechplan.render import dxf
+from mechplan import render
 from mechplan.sheet import Arrow, Role, Text
 from mechplan.sheet.fonts import SheetFont
 
@@ -24,7 +24,7 @@ ALLOWED_LINEWEIGHTS = {0, 5, 9, 13, 15, 18, 20, 25, 30, 35, 40, 50, 53, 60, 70, 
 
 def _write(tmp_path: Path, standard: str = "iso", language: str = "vi") -> tuple[Path, object]:
     sheet = sample_sheet(standard, language)
-    path = dxf.write_dxf(sheet, tmp_path / f"{standard}_{language}.dxf")
+    path = render.write(sheet, tmp_path / f"{standard}_{language}.dxf", ("dxf",))[0]
     return path, sheet
 
 

@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
+from mechplan import render
 from mechplan.render import mpl
 from mechplan.sheet.fonts import SheetFont, font_path
 
@@ -42,7 +43,7 @@ def test_pdf_true_scale_and_embedded_fonts(tmp_path: Path, require) -> None:
             "fonts osifont and Noto Sans CJK (apt-get install fonts-osifont fonts-noto-cjk)")
     import pdfplumber
 
-    path = mpl.write_pdf(sample_sheet("iso", "vi"), tmp_path / "sheet.pdf")
+    path = render.write(sample_sheet("iso", "vi"), tmp_path / "sheet.pdf", ("pdf",))[0]
     with pdfplumber.open(path) as pdf:
         page = pdf.pages[0]
         assert page.width * MM_PER_PT == pytest.approx(210.0, abs=0.01)

@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
+from mechplan import render
 from mechplan.render import svg
 from mechplan.sheet import Role
 
@@ -29,7 +30,7 @@ def _group(root: ET.Element, role: Role) -> list[ET.Element]:
 
 def test_svg_size_viewbox_and_flip(tmp_path: Path) -> None:
     sheet = sample_sheet("iso", "vi")
-    path = svg.write_svg(sheet, tmp_path / "a4.svg")
+    path = render.write(sheet, tmp_path / "a4.svg", ("svg",))[0]
     root = ET.parse(path).getroot()
     assert root.get("width") == "210.0mm" and root.get("height") == "297.0mm"
     assert [float(v) for v in root.get("viewBox").split()] == [0.0, 0.0, 210.0, 297.0]
@@ -84,7 +85,7 @@ def test_chromium_renders_true_scale(tmp_path: Path, require) -> None:
     exe = shutil.which("chromium") or shutil.which("chromium-browser")
     require(exe is not None, "Chromium (apt-get install --no-install-recommends chromium)")
     sheet = sample_sheet("iso", "zh")
-    path = svg.write_svg(sheet, tmp_path / "sheet.svg")
+    path = render.write(sheet, tmp_path / "sheet.svg", ("svg",))[0]
     shot = tmp_path / "shot.png"
     px_per_mm = 96.0 / 25.4
     w, h = round(210 * px_per_mm), round(297 * px_per_mm)

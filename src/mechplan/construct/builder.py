@@ -10,7 +10,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..model.mechanism import GROUND, Guide, Link, Mechanism, Pair, PairKind
-from ..model.structure import Group, Structure
+from ..model.structure import Structure
 from .graph import Construction, DriveMap
 from .segments import Segment, SegmentKind
 from .step import Kind, Op, Plan, Role, Step
@@ -89,10 +89,6 @@ class Builder:
         """Name a step as a result quantity."""
         self.c.results.setdefault(key, step_id)
 
-    def constant(self, value: float, label: str, plan: Plan, id: str) -> str:
-        """A given scalar."""
-        return self.add(id, Op.CONSTANT, (), plan, Kind.SCALAR, Role.GIVEN, label, value=value)
-
     def guide_of(self, pair: Pair) -> Guide:
         """The guide of a prismatic pair."""
         assert pair.guide is not None
@@ -130,10 +126,13 @@ class Builder:
             return
         missing = [x for x in (p, q) if x not in self.pos]
         if missing:
-            raise SceneError(f"point {point} is found in group {group}, before {', '.join(missing)}; "
-                             "give its side relative to points known by then "
-                             f"({', '.join(sorted(self.pos))}) or sketch coordinates",
-                             file=self.file, key=f"assembly.{point}")
+            raise SceneError(
+                f"point {point} is found in group {group}, before {', '.join(missing)}; "
+                "give its side relative to points known by then "
+                f"({', '.join(sorted(self.pos))}) or sketch coordinates",
+                file=self.file,
+                key=f"assembly.{point}",
+            )
         sides = []
         for sigma in (1, -1):
             self.c.steps[step_id] = _with(step, sigma=sigma)
@@ -183,11 +182,6 @@ def _with(step: Step, **changes: Any) -> Step:
                 step.group, tuple(sorted(params.items())), step.subject)
 
 
-def group_of(structure: Structure, link: str) -> Group | None:
-    """Return the group containing a link (None for the frame and the driving link)."""
-    return next((g for g in structure.groups if link in g.links), None)
-
-
 def build_construction(mech: Mechanism, structure: Structure,
                        plans: tuple[str, ...] = ("position", "velocity", "acceleration"),
                        assembly_phi: float = 0.0, file: str | None = None,
@@ -204,6 +198,5 @@ __all__ = [
     "PairKind",
     "alabel",
     "build_construction",
-    "group_of",
     "vlabel",
 ]

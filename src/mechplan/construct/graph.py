@@ -8,9 +8,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geom.vec import Array
-from .ops import EVALUATORS, SOURCES
+from .ops import Source, spec
 from .segments import Segment
-from .step import Op, Plan, Step
+from .step import Plan, Step
+from .terms import Row
 
 
 @dataclass(frozen=True, slots=True)
@@ -29,6 +30,11 @@ class DriveMap:
         return np.mod(self.sense * (np.asarray(theta, dtype=float) - self.ref), 2.0 * np.pi)
 
 
+def reaction_key(i: str, j: str) -> str:
+    """Key of the reaction of link i on link j: ``"12"``, or ``"10,12"`` for longer link ids."""
+    return f"{i}{j}" if len(i) == 1 and len(j) == 1 else f"{i},{j}"
+
+
 @dataclass
 class Construction:
     """An ordered DAG of steps; steps are added after their inputs."""
@@ -37,7 +43,7 @@ class Construction:
     steps: dict[str, Step] = field(default_factory=dict)
     segments: list[Segment] = field(default_factory=list)
     #: vector equations per (plan, group): the equation and rows of (term, direction, magnitude)
-    equations: dict[tuple[Plan, str], tuple[str, list[tuple[str, str, str]]]] = field(
+    equations: dict[tuple[Plan, str], tuple[str, list[Row]]] = field(
         default_factory=dict)
     #: named results: quantity key ("v_C", "omega_2", "r_C") → step id
     results: dict[str, str] = field(default_factory=dict)
@@ -97,8 +103,61 @@ class Construction:
         """Return the step id of a link's angular acceleration (rad/s², counter-clockwise +)."""
         return self._result("epsilon", link)
 
+    def has_position(self, point: str) -> bool:
+        """Tell whether a point has a position step."""
+        return f"pos.{point}" in self.steps
+
+    # force plan (built with a loading); a link without mass has no inertia, weight or couple
+    def inertia_force(self, link: str) -> str | None:
+        """Return the step id of a link's inertia force Q = −m·a_S (N, 2), if it has one."""
+        return self.results.get(f"Q_{link}")
+
+    def inertia_couple(self, link: str) -> str | None:
+        """Return the step id of a link's inertia couple M_q = −J_S·ε (N·m), if it has one."""
+        return self.results.get(f"M_q{link}")
+
+    def weight(self, link: str) -> str | None:
+        """Return the step id of a link's weight (N, 2), if it has one."""
+        return self.results.get(f"G_{link}")
+
+    def load(self, index: int) -> str | None:
+        """Return the step id of the ``index``-th load of the loading (force or couple)."""
+        return self.results.get(f"load_{index}")
+
+    def reaction(self, i: str, j: str) -> str:
+        """Return the step id of R_ij, the force of link i on link j at their pair (N, 2)."""
+        return self._named(f"R_{reaction_key(i, j)}")
+
+    def guide_offset(self, i: str, j: str) -> str:
+        """Return the step id of d_ij: where R_ij's line of action crosses the guide (m)."""
+        return self._named(f"d_{reaction_key(i, j)}")
+
+    def balancing_moment(self) -> str:
+        """Return the step id of the balancing moment M_b on the driving link (N·m)."""
+        return self._named("M_b")
+
+    def zhukovsky_moment(self) -> str:
+        """Return the step id of M_b found by Zhukovsky's lever (N·m)."""
+        return self._named("M_b_zhukovsky")
+
+    def link_results(self) -> list[str]:
+        """Step ids of every link's angle, ω and ε, in construction order."""
+        return [sid for key, sid in self.results.items()
+                if key.split("_")[0] in ("angle", "omega", "epsilon")]
+
+    def force_results(self) -> list[str]:
+        """Step ids of the balancing moments, reactions and guide offsets."""
+        return [sid for key, sid in self.results.items()
+                if key in ("M_b", "M_b_zhukovsky") or key.startswith(("R_", "d_"))]
+
+    def _named(self, key: str) -> str:
+        try:
+            return self.results[key]
+        except KeyError:
+            raise KeyError(f"the construction has no {key}") from None
+
     def has_result(self, quantity: str, subject: str) -> bool:
-        """Tell whether a result (``"v"``, ``"a"``, ``"angle"``, ``"omega"``, ``"epsilon"``) exists."""
+        """Tell if a result exists (``"v"``, ``"a"``, ``"angle"``, ``"omega"``, ``"epsilon"``)."""
         return f"{quantity}_{subject}" in self.results
 
     def quantity_of(self, step_id: str) -> tuple[str, str] | None:
@@ -182,20 +241,23 @@ class Evaluation:
 
     def _compute(self, step: Step) -> None:
         value: Array
+        op = spec(step.op)
         if step.id in self.overrides:
             value, gap, sine = np.asarray(self.overrides[step.id], dtype=self.dtype), None, None
             if value.shape[:1] != (self.n,):
                 raise ValueError(f"override of {step.id!r} must have {self.n} positions "
                                  f"(got shape {value.shape})")
-        elif step.op is Op.CRANK_ANGLE:
+        elif op.source is Source.DRIVE:
             theta = self.construction.drive.absolute(self.phi)
             value, gap, sine = theta.astype(self.dtype), None, None
-        elif step.op in SOURCES:
-            value, gap, sine = SOURCES[step.op](step, self.n)
+        elif op.source is Source.POSITIONS:
+            assert op.evaluate is not None
+            value, gap, sine = op.evaluate(step, self.n)
             value = value.astype(self.dtype)
         else:
+            assert op.evaluate is not None
             args = [self.values[i] for i in step.inputs]
-            value, gap, sine = EVALUATORS[step.op](step, *args)
+            value, gap, sine = op.evaluate(step, *args)
         stored: Array = np.asarray(value)
         stored.flags.writeable = False
         self.values[step.id] = stored

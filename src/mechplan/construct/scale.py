@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import math
 
+from .step import Plan
+
 ROUND_MANTISSAS = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0)
 
-#: plan → scale-factor key and unit text
-SCALE_KEYS = {"position": ("mu_l", "m/mm"), "velocity": ("mu_v", "(m/s)/mm"),
-              "acceleration": ("mu_a", "(m/s²)/mm"), "force": ("mu_F", "N/mm")}
+#: plan name → scale-factor key and unit text (derived from :class:`Plan`)
+SCALE_KEYS = {p.value: (p.scale_key, p.scale_unit) for p in Plan}
 
 
 def round_scale(per_mm: float) -> float:

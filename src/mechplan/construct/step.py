@@ -15,6 +15,30 @@ class Plan(enum.Enum):
     ACCELERATION = "acceleration"
     FORCE = "force"
 
+    @property
+    def unit(self) -> str:
+        """SI unit of the plan's vectors: ``m``, ``m/s``, ``m/s²``, ``N``."""
+        return _PLAN_UNITS[self][0]
+
+    @property
+    def scale_key(self) -> str:
+        """Key of the plan's scale factor in scene files and JSON: ``mu_l``, ``mu_v``, …"""
+        return _PLAN_UNITS[self][1]
+
+    @property
+    def scale_symbol(self) -> str:
+        """Symbol of the plan's scale factor on sheets: ``μl``, ``μv``, ``μa``, ``μF``."""
+        return _PLAN_UNITS[self][2]
+
+    @property
+    def scale_unit(self) -> str:
+        """Unit of the scale factor: physical units per paper millimetre (``(m/s)/mm``)."""
+        return f"{self.unit}/mm" if "/" not in self.unit else f"({self.unit})/mm"
+
+
+_PLAN_UNITS = {Plan.POSITION: ("m", "mu_l", "μl"), Plan.VELOCITY: ("m/s", "mu_v", "μv"),
+               Plan.ACCELERATION: ("m/s²", "mu_a", "μa"), Plan.FORCE: ("N", "mu_F", "μF")}
+
 
 class Role(enum.Enum):
     """How a step is drawn: given data, an auxiliary line, or a result."""
@@ -99,6 +123,18 @@ class Step:
     group: str = ""
     params: tuple[tuple[str, Any], ...] = field(default_factory=tuple)
     subject: tuple[str, ...] = field(default_factory=tuple)
+
+    def input(self, name: str) -> str:
+        """Return the id of the named input (names: ``construct.ops.spec(op).inputs``)."""
+        from .ops import spec  # the registry is built above this module
+
+        return self.inputs[spec(self.op).index(name)]
+
+    def rest(self) -> tuple[str, ...]:
+        """Return the ids of the variable tail of inputs (after the named ones)."""
+        from .ops import spec
+
+        return self.inputs[len(spec(self.op).inputs):]
 
     def param(self, name: str, default: Any = None) -> Any:
         """Return a parameter by name."""

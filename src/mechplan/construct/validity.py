@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -25,7 +26,7 @@ def valid_mask(ev: Evaluation, max_condition: float = MAX_CONDITION) -> np.ndarr
     return ok
 
 
-def _gap_function(c: Construction, step_id: str):
+def _gap_function(c: Construction, step_id: str) -> Callable[[np.ndarray], np.ndarray]:
     def gap(phi: np.ndarray) -> np.ndarray:
         ev = c.evaluate(phi)
         ev.get(step_id)
@@ -58,7 +59,8 @@ def unreachable_intervals(c: Construction, step_id: str, samples: int = 3600,
             m_bad = gap(mid) > 0
             go_right = ~m_bad if entering else m_bad
             lo, hi = np.where(go_right, mid, lo), np.where(go_right, hi, mid)
-        return 0.5 * (lo + hi)
+        out: np.ndarray = 0.5 * (lo + hi)
+        return out
 
     s = np.mod(refine(starts, True), TWO_PI)
     e = np.mod(refine(ends, False), TWO_PI)
@@ -80,7 +82,9 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             step = c[sid]
             k = int(np.argmax(ev.gaps[sid] > 0))
             phi_deg = math.degrees(ev.phi[k])
-            intervals = [(math.degrees(a), math.degrees(b)) for a, b in unreachable_intervals(c, sid)]
+            intervals = [
+                (math.degrees(a), math.degrees(b)) for a, b in unreachable_intervals(c, sid)
+            ]
             where = ", ".join(f"{a:.9f}°…{b:.9f}°" for a, b in intervals)
             raise UnreachableError(
                 f"group {step.group} cannot be assembled at φ = {phi_deg:g}°: point {step.label} "

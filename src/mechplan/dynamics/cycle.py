@@ -21,9 +21,10 @@ from ..construct.builder import build_construction
 from ..errors import SceneError
 from ..geom.vec import Array, dot
 from ..model.dynamics import DynamicsSpec, IndicatorSpec
+from ..model.loads import LoadKind, LoadSpec
 from ..model.mechanism import GROUND
 from ..model.structure import analyse
-from ..scene.spec import LoadKind, LoadSpec, Scene
+from ..scene.spec import Scene
 from .loading import Loading
 
 PLANS = ("position", "velocity", "acceleration", "force")

@@ -8,8 +8,8 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ..errors import SceneError
+from ..model.loads import Gravity, LoadKind, LoadSpec, MassSpec
 from ..model.mechanism import GROUND, Mechanism
-from ..scene.spec import Gravity, LoadKind, LoadSpec, MassSpec
 
 if TYPE_CHECKING:
     from ..scene.spec import Scene
@@ -118,7 +118,9 @@ class Loading:
                 raise fail("a pressure load needs its pressure, e.g. pressure = \"1 MPa\"")
             return
         if spec.against not in ("crank_angle", "displacement"):
-            raise fail(f"a table is given against crank_angle or displacement (got {spec.against!r})")
+            raise fail(
+                f"a table is given against crank_angle or displacement (got {spec.against!r})"
+            )
         xs = [x for x, _ in spec.table]
         if len(xs) < 2 or any(b <= a for a, b in itertools.pairwise(xs)):
             raise fail("a table needs at least two rows with a strictly increasing first column")

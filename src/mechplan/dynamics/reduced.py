@@ -54,15 +54,17 @@ def point_velocity(c: Construction, ev: Evaluation, mech: Mechanism, point: str)
     """Velocity (N, 2) of a named point from the velocity plan (zero for a frame point)."""
     if point in mech.links[GROUND].points:
         return np.zeros((ev.n, 2))
-    return ev[c.results[f"v_{point}"]]
+    return ev[c.velocity_image(point)]
 
 
 def link_omega(c: Construction, ev: Evaluation, link: str) -> Array:
     """Angular velocity (N,) of a link from the velocity plan."""
-    return ev[c.results[f"omega_{link}"]]
+    return ev[c.omega(link)]
 
 
-def reduced_of(c: Construction, ev: Evaluation, mech: Mechanism, loading: Any) -> tuple[Array, Array]:
+def reduced_of(
+    c: Construction, ev: Evaluation, mech: Mechanism, loading: Any
+) -> tuple[Array, Array]:
     """Return (M_red, J_red) at the evaluated positions.
 
     J_red needs the velocity plan only; M_red needs the loads of the force plan (a construction
@@ -74,12 +76,12 @@ def reduced_of(c: Construction, ev: Evaluation, mech: Mechanism, loading: Any) -
     moments: list[Array] = []
     omegas: list[Array] = []
     for link, ms in loading.masses.items():
-        key = f"G_{link}"
-        if key in c.results:
-            forces.append(ev[c.results[key]])
+        weight = c.weight(link)
+        if weight is not None:
+            forces.append(ev[weight])
             velocities.append(point_velocity(c, ev, mech, ms.centre))
     for j, spec in enumerate(loading.loads):
-        step = c.results.get(f"load_{j}")
+        step = c.load(j)
         if step is None:
             continue
         if spec.point is None:

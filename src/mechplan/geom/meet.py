@@ -14,12 +14,13 @@ import numpy as np
 from .vec import Array, cross, dot, norm
 
 
-def circle_circle(c1: Array, r1: Array | float, c2: Array, r2: Array | float,
-                  sigma: int) -> tuple[Array, Array, Array]:
+def circle_circle(
+    c1: Array, r1: Array | float, c2: Array, r2: Array | float, sigma: int
+) -> tuple[Array, Array, Array]:
     """Intersect circles (c1, r1) and (c2, r2); sigma=+1 takes the point left of c1→c2."""
     d_vec = c2 - c1
     d = norm(d_vec)
-    r1 = np.asarray(r1, dtype=d.dtype)     # the points' float type (float32 stays float32)
+    r1 = np.asarray(r1, dtype=d.dtype)  # the points' float type (float32 stays float32)
     r2 = np.asarray(r2, dtype=d.dtype)
     gap = np.maximum(d - (r1 + r2), np.abs(r1 - r2) - d)
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
@@ -36,11 +37,15 @@ def circle_circle(c1: Array, r1: Array | float, c2: Array, r2: Array | float,
     return point, gap, sine
 
 
-def circle_line(c: Array, r: Array | float, p: Array, u: Array,
-                sigma: int) -> tuple[Array, Array, Array]:
-    """Intersect circle (c, r) with the line through p along unit u; sigma=+1 takes the far one along u."""
+def circle_line(
+    c: Array, r: Array | float, p: Array, u: Array, sigma: int
+) -> tuple[Array, Array, Array]:
+    """Intersect circle (c, r) with the line through p along unit u.
+
+    sigma=+1 takes the far one along u.
+    """
     w = cross(u, c - p)
-    r = np.asarray(r, dtype=np.result_type(w, np.float32))   # float32 points stay float32
+    r = np.asarray(r, dtype=np.result_type(w, np.float32))  # float32 points stay float32
     along = dot(c - p, u)
     ux, uy = u[..., 0], u[..., 1]
     gap = np.abs(w) - r

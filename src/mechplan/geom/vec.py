@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import cast
+
 import numpy as np
 
 Array = np.ndarray
@@ -14,23 +16,23 @@ def perp(v: Array) -> Array:
 
 def cross(a: Array, b: Array) -> Array:
     """Return the z component of a × b."""
-    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]
+    return cast(Array, a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0])
 
 
 def dot(a: Array, b: Array) -> Array:
     """Return a · b along the last axis."""
-    return a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1]
+    return cast(Array, a[..., 0] * b[..., 0] + a[..., 1] * b[..., 1])
 
 
 def norm(v: Array) -> Array:
     """Return the Euclidean length along the last axis."""
-    return np.hypot(v[..., 0], v[..., 1])
+    return cast(Array, np.hypot(v[..., 0], v[..., 1]))
 
 
 def unit(v: Array) -> Array:
     """Return v / |v| (NaN where |v| = 0)."""
     with np.errstate(invalid="ignore", divide="ignore"):
-        return v / norm(v)[..., None]
+        return cast(Array, v / norm(v)[..., None])
 
 
 def direction(angle: Array) -> Array:
@@ -43,7 +45,7 @@ def direction(angle: Array) -> Array:
 
 def angle_of(v: Array) -> Array:
     """Return the direction angle of vectors in (-π, π]."""
-    return np.arctan2(v[..., 1], v[..., 0])
+    return cast(Array, np.arctan2(v[..., 1], v[..., 0]))
 
 
 def rotate(v: Array, angle: Array) -> Array:

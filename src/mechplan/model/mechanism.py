@@ -22,13 +22,13 @@ class PairKind(enum.Enum):
 
 @dataclass(frozen=True, slots=True)
 class Guide:
-    """A straight guide fixed to a link: a line through ``origin`` at ``angle`` in the link frame."""
+    """A straight guide fixed to a link: a line through ``origin`` at ``angle`` (link frame)."""
 
     name: str
     link: str
     origin: tuple[float, float]
     angle: float
-    through: str            # the named point the guide passes through (for texts)
+    through: str  # the named point the guide passes through (for texts)
 
 
 @dataclass(frozen=True, slots=True)
@@ -68,7 +68,7 @@ class Link:
     id: str
     name: str
     points: dict[str, tuple[float, float]]
-    slides_on: str | None = None     # guide name when the link is a slider
+    slides_on: str | None = None  # guide name when the link is a slider
 
     def distance(self, p: str, q: str) -> float:
         """Return the distance between two of the link's points (m)."""
@@ -82,10 +82,10 @@ class Drive:
 
     link: str
     pivot: str
-    omega: float          # rad/s, signed: + counter-clockwise
-    epsilon: float        # rad/s², signed
-    ref_angle: float      # rad, absolute direction of φ = 0
-    ref_name: str         # what φ is measured from ("Ax", "+x")
+    omega: float  # rad/s, signed: + counter-clockwise
+    epsilon: float  # rad/s², signed
+    ref_angle: float  # rad, absolute direction of φ = 0
+    ref_name: str  # what φ is measured from ("Ax", "+x")
 
     @property
     def sense(self) -> int:
@@ -101,7 +101,9 @@ class Mechanism:
     pairs: tuple[Pair, ...]
     guides: dict[str, Guide]
     drive: Drive
-    sides: dict[str, tuple[str, str, int]] = field(default_factory=dict)  # assembly: point → (P, Q, ±1)
+    sides: dict[str, tuple[str, str, int]] = field(
+        default_factory=dict
+    )  # assembly: point → (P, Q, ±1)
     sketch: dict[str, tuple[float, float]] = field(default_factory=dict)  # assembly by sketch
 
     @property

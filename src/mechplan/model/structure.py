@@ -2,11 +2,22 @@
 
 from __future__ import annotations
 
+import enum
 import itertools
 from dataclasses import dataclass
 
 from ..errors import TopologyError
 from .mechanism import GROUND, Mechanism, Pair, PairKind
+
+
+class GroupKind(enum.StrEnum):
+    """Kind of a class II Assur group: pair kinds outer1–inner–outer2 (R revolute, P prismatic)."""
+
+    RRR = "RRR"
+    RRP = "RRP"
+    RPR = "RPR"
+    PRP = "PRP"
+    RPP = "RPP"
 
 
 @dataclass(frozen=True, slots=True)
@@ -19,9 +30,9 @@ class Group:
     outer2: Pair
 
     @property
-    def kind(self) -> str:
+    def kind(self) -> GroupKind:
         """Pair kinds in order outer1–inner–outer2, e.g. ``RRP``."""
-        return self.outer1.kind.value + self.inner.kind.value + self.outer2.kind.value
+        return GroupKind(_letters(self))
 
     @property
     def name(self) -> str:
@@ -103,13 +114,17 @@ def _find_dyad(mech: Mechanism, remaining: list[str], known: set[str]) -> Group 
         if len(o1) != 1 or len(o2) != 1:
             continue
         g = Group((i, j), o1[0], inner[0], o2[0])
-        if g.kind in ("PRR", "PPR"):   # canonical order: the revolute outer pair first
+        if _letters(g) in ("PRR", "PPR"):   # canonical order: the revolute outer pair first
             g = Group((j, i), o2[0], inner[0], o1[0])
-        if g.kind == "PPP":
+        if _letters(g) == "PPP":
             raise TopologyError(f"links {i} and {j} form a PPP group, which cannot be assembled "
                                 "(it has no defined position)", key=f"links.{i}")
         return g
     return None
+
+
+def _letters(g: Group) -> str:
+    return g.outer1.kind.value + g.inner.kind.value + g.outer2.kind.value
 
 
 def _raise_undecomposable(mech: Mechanism, remaining: list[str], known: set[str]) -> None:

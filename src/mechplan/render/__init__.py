@@ -1,4 +1,5 @@
-"""Backends that draw a `Sheet` of primitives: DXF (ezdxf), SVG (svgwrite), PDF and PNG (matplotlib).
+"""Backends that draw a `Sheet` of primitives: DXF (ezdxf), SVG (svgwrite), PDF and PNG
+(matplotlib).
 
 Every file is written atomically: a failing render leaves any existing file untouched.
 """
@@ -9,9 +10,9 @@ import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
+from mechplan.drafting.primitives import Sheet
 from mechplan.errors import DrawingError
 from mechplan.render.atomic import atomic_open, write_atomic
-from mechplan.sheet.primitives import Sheet
 
 FORMATS: tuple[str, ...] = ("dxf", "svg", "pdf", "png")
 

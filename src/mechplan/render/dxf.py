@@ -1,20 +1,18 @@
 """DXF R2013 backend (ezdxf): one layer per role, ISO 128 lineweights and line types, title block as
 a BLOCK with attributes.
 
-Text encoding: DXF R2007+ files are UTF-8 whatever $DWGCODEPAGE says (AutoCAD and ezdxf read them so).
-The code page is set to the one AutoCAD itself writes on a system of the sheet's language
-(ANSI_1252 en, ANSI_1251 ru, ANSI_1258 vi, ANSI_936 zh), which is what matters when AutoCAD saves the
-drawing down to R2004 or older. GDAL 3.6 instead decodes R2007+ text by the code page: read these files
-with `--config DXF_ENCODING UTF-8` (checked in the tests for vi/ru/zh). ANSI_65001 was tried too: GDAL
-then returns the right text only through a failed-recode fallback with one warning per string, and it
-is not a code page AutoCAD writes, so it is not used.
+Text encoding: DXF R2007+ files are UTF-8 whatever $DWGCODEPAGE says (AutoCAD and ezdxf read them
+so). The code page is set to the one AutoCAD itself writes on a system of the sheet's language
+(ANSI_1252 en, ANSI_1251 ru, ANSI_1258 vi, ANSI_936 zh), which is what matters when AutoCAD saves
+the drawing down to R2004 or older. GDAL 3.6 instead decodes R2007+ text by the code page: read
+these files with `--config DXF_ENCODING UTF-8` (checked in the tests for vi/ru/zh). ANSI_65001 was
+tried too: GDAL then returns the right text only through a failed-recode fallback with one warning
+per string, and it is not a code page AutoCAD writes, so it is not used.
 """
 
 from __future__ import annotations
 
 import io
-import os
-from pathlib import Path
 
 import ezdxf
 from ezdxf.document import Drawing
@@ -22,10 +20,8 @@ from ezdxf.enums import TextEntityAlignment
 from ezdxf.layouts.base import BaseLayout
 from ezdxf.layouts.blocklayout import BlockLayout
 
-from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
-from mechplan.sheet.fonts import SheetFont, font_for
-from mechplan.sheet.primitives import (
+from mechplan.drafting.fonts import SheetFont, font_for
+from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
     Arrow,
@@ -41,6 +37,7 @@ from mechplan.sheet.primitives import (
     Text,
     VAlign,
 )
+from mechplan.errors import DrawingError
 
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
 ENCODINGS = {"en": "cp1252", "ru": "cp1251", "vi": "cp1258", "zh": "gbk"}
@@ -174,7 +171,9 @@ def to_document(sheet: Sheet) -> Drawing:
     auditor = doc.audit()
     if auditor.has_errors:
         messages = "; ".join(str(e.message) for e in auditor.errors[:5])
-        raise DrawingError(f"DXF audit must report no errors (got {len(auditor.errors)}: {messages})")
+        raise DrawingError(
+            f"DXF audit must report no errors (got {len(auditor.errors)}: {messages})"
+        )
     return doc
 
 
@@ -184,8 +183,3 @@ def to_bytes(sheet: Sheet) -> bytes:
     stream = io.StringIO()
     doc.write(stream)
     return doc.encode(stream.getvalue())
-
-
-def write_dxf(sheet: Sheet, path: str | os.PathLike[str]) -> Path:
-    """Write `sheet` to `path` as DXF R2013, atomically."""
-    return write_atomic(path, to_bytes(sheet))

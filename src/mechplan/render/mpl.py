@@ -1,14 +1,12 @@
 """PDF and PNG backend (matplotlib, Agg): true scale, fonts embedded as TrueType (fonttype 42).
 
-The figure is exactly the sheet (figsize = mm / 25.4, axes filling it, no tight bounding box), so one
-sheet millimetre is one millimetre on the page. Uses `Figure` directly: no pyplot state.
+The figure is exactly the sheet (figsize = mm / 25.4, axes filling it, no tight bounding box), so
+one sheet millimetre is one millimetre on the page. Uses `Figure` directly: no pyplot state.
 """
 
 from __future__ import annotations
 
 import io
-import os
-from pathlib import Path
 from typing import Any, cast
 
 import matplotlib
@@ -24,10 +22,8 @@ from matplotlib.patches import Polygon as PolygonPatch
 from matplotlib.textpath import TextPath
 from matplotlib.transforms import Affine2D
 
-from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
-from mechplan.sheet.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_path
-from mechplan.sheet.primitives import (
+from mechplan.drafting.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_path
+from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
     Arrow,
@@ -39,6 +35,7 @@ from mechplan.sheet.primitives import (
     Sheet,
     Text,
 )
+from mechplan.errors import DrawingError
 
 PT_PER_MM = 72.0 / 25.4
 INK = "black"
@@ -157,13 +154,3 @@ def to_bytes(sheet: Sheet, fmt: str, *, dpi: float = 150.0) -> bytes:
         else:
             fig.savefig(buf, format="png", dpi=dpi, metadata={"Software": "mechplan"})
     return buf.getvalue()
-
-
-def write_pdf(sheet: Sheet, path: str | os.PathLike[str]) -> Path:
-    """Write `sheet` to `path` as a true-scale PDF, atomically."""
-    return write_atomic(path, to_bytes(sheet, "pdf"))
-
-
-def write_png(sheet: Sheet, path: str | os.PathLike[str], *, dpi: float = 150.0) -> Path:
-    """Write `sheet` to `path` as PNG at `dpi`, atomically."""
-    return write_atomic(path, to_bytes(sheet, "png", dpi=dpi))

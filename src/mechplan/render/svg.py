@@ -1,23 +1,20 @@
 """SVG backend (svgwrite): true scale (size in mm, viewBox in mm), one group per layer role.
 
-Sheet coordinates have y up; SVG has y down, so every y is written as H − y (text is never mirrored).
+Sheet coordinates have y up; SVG has y down, so every y is written as H − y (text is never
+mirrored).
 """
 
 from __future__ import annotations
 
 import math
-import os
 from collections.abc import Iterable
-from pathlib import Path
 from typing import Any
 
 import svgwrite
 from svgwrite.container import Group
 
-from mechplan.errors import DrawingError
-from mechplan.render.atomic import write_atomic
-from mechplan.sheet.fonts import baseline_point, em_size_mm, families_for
-from mechplan.sheet.primitives import (
+from mechplan.drafting.fonts import baseline_point, em_size_mm, families_for
+from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
     Arrow,
@@ -31,6 +28,7 @@ from mechplan.sheet.primitives import (
     Sheet,
     Text,
 )
+from mechplan.errors import DrawingError
 
 #: Paint order of the role groups (text on top, thick lines over thin ones).
 ROLE_ORDER: tuple[Role, ...] = (Role.FILL, Role.THIN, Role.DASHED, Role.CHAIN, Role.DIMENSION,
@@ -163,9 +161,3 @@ class _Writer:
 def to_svg(sheet: Sheet) -> str:
     """Return the SVG document of `sheet` as a string."""
     return str(_Writer(sheet).document().tostring())
-
-
-def write_svg(sheet: Sheet, path: str | os.PathLike[str]) -> Path:
-    """Write `sheet` to `path` as SVG, atomically."""
-    text = '<?xml version="1.0" encoding="utf-8" ?>\n' + to_svg(sheet)
-    return write_atomic(path, text.encode("utf-8"))

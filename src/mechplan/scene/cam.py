@@ -5,7 +5,9 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+from ..drafting.fields import TITLE_BLOCK_FIELDS
 from ..errors import SceneError
+from ..i18n import LANGUAGES
 from ..model.cam import (
     CamDrawing,
     CamSpec,
@@ -19,7 +21,6 @@ from ..model.cam import (
 )
 from .document import parse_toml
 from .reader import Table
-from .spec import LANGUAGES, TITLE_BLOCK_FIELDS
 
 TOP_KEYS = ("kind", "title", "language", "description", "follower", "motion", "limits", "drawing",
             "title_block")

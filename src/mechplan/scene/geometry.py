@@ -46,7 +46,10 @@ def triangulate(table: Table, lengths: dict[str, float], keys: dict[str, str],
             if x not in order:
                 order.append(x)
     first = pairs[0]
-    local: dict[str, tuple[float, float]] = {first[0]: (0.0, 0.0), first[1]: (lengths["|".join(first)], 0.0)}
+    local: dict[str, tuple[float, float]] = {
+        first[0]: (0.0, 0.0),
+        first[1]: (lengths["|".join(first)], 0.0),
+    }
 
     def dist(a: str, b: str) -> float | None:
         return lengths.get(f"{a}|{b}", lengths.get(f"{b}|{a}"))
@@ -84,12 +87,17 @@ def _place_third(table: Table, x: str, local: dict[str, tuple[float, float]], a:
     (ax, ay), (bx, by) = local[a], local[b]
     d = math.hypot(bx - ax, by - ay)
     if d == 0 or ra + rb < d * (1 - 1e-12) or abs(ra - rb) > d * (1 + 1e-12):
-        raise table.error("lengths", f"the lengths {a}{x} = {ra * 1000:.6g} mm, {b}{x} = "
-                          f"{rb * 1000:.6g} mm and {a}{b} = {d * 1000:.6g} mm do not form a triangle")
+        raise table.error(
+            "lengths",
+            f"the lengths {a}{x} = {ra * 1000:.6g} mm, {b}{x} = "
+            f"{rb * 1000:.6g} mm and {a}{b} = {d * 1000:.6g} mm do not form a triangle",
+        )
     u = ((bx - ax) / d, (by - ay) / d)
     along = (ra * ra - rb * rb + d * d) / (2 * d)
     h = math.sqrt(max(ra * ra - along * along, 0.0))
-    cand = {s: (ax + along * u[0] - s * h * u[1], ay + along * u[1] + s * h * u[0]) for s in (1, -1)}
+    cand = {
+        s: (ax + along * u[0] - s * h * u[1], ay + along * u[1] + s * h * u[0]) for s in (1, -1)
+    }
     if h <= 1e-12 * d:
         return cand[1]
     if x not in sides:
@@ -114,9 +122,12 @@ def extra_point(table: Table, name: str, spec: object,
     if isinstance(spec, list):
         if len(spec) != 2:
             raise table.error(key, "expected [x, y] with units, e.g. [\"10 mm\", \"0 mm\"]")
-        return (table.value_quantity(spec[0], key, "length"), table.value_quantity(spec[1], key, "length"))
+        return (
+            table.value_quantity(spec[0], key, "length"),
+            table.value_quantity(spec[1], key, "length"),
+        )
     if not isinstance(spec, str):
-        raise table.error(key, f"expected \"midpoint B C\", \"0.35 of A B\" or [x, y] (got {spec!r})")
+        raise table.error(key, f'expected "midpoint B C", "0.35 of A B" or [x, y] (got {spec!r})')
     m = _MIDPOINT.match(spec)
     frac: float
     if m:
@@ -124,7 +135,9 @@ def extra_point(table: Table, name: str, spec: object,
     else:
         m = _FRACTION.match(spec)
         if not m:
-            raise table.error(key, f"expected \"midpoint B C\", \"0.35 of A B\" or [x, y] (got {spec!r})")
+            raise table.error(
+                key, f'expected "midpoint B C", "0.35 of A B" or [x, y] (got {spec!r})'
+            )
         frac = float(m.group(1).replace(",", "."))
         p, q = m.group(2), m.group(3)
     for r in (p, q):

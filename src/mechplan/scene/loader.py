@@ -2,32 +2,28 @@
 
 from __future__ import annotations
 
-import itertools
 import math
 import tomllib
 from pathlib import Path
 
+from ..drafting.fields import TITLE_BLOCK_FIELDS
 from ..errors import SceneError, TopologyError
+from ..i18n import LANGUAGES
 from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
 from ..model.structure import analyse
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
+from .loads import gravity_of, loads_of, masses_of
 from .reader import Table
 from .spec import (
-    LANGUAGES,
     PLANS,
-    TITLE_BLOCK_FIELDS,
     DrawingSpec,
     Extreme,
-    Gravity,
-    LoadKind,
-    LoadSpec,
-    MassSpec,
     Positions,
     Scene,
 )
 
-TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions", "analysis",
-            "gravity", "loads", "drawing", "title_block", "description", "dynamics")
+TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions",
+            "analysis", "gravity", "loads", "drawing", "title_block", "description", "dynamics")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 SHEETS = ("A0", "A1", "A2", "A3", "A4")
@@ -77,14 +73,14 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
                             key=exc.key) from None
     all_points = {p for link in links.values() for p in link.points}
     positions = _positions(top, drive, all_points, links)
-    masses = _masses(top, links)
+    masses = masses_of(top, links)
     plans, interest = _analysis(top, all_points)
     if not top.has("analysis") and (masses or top.raw("loads")):
         plans = (*plans, "force")      # a scene with masses or loads asks for its forces
     return Scene(
         path=file, title=top.string("title", Path(file).stem) or "", language=language or "en",
         mechanism=mech, positions=positions, plans=plans, points_of_interest=interest,
-        masses=masses, loads=_loads(top, links, guides, masses), gravity=_gravity(top),
+        masses=masses, loads=loads_of(top, links, guides, masses), gravity=gravity_of(top),
         drawing=_drawing(top, len(positions.angles) or positions.count),
         assembly_phi=assembly_phi)
 
@@ -102,7 +98,8 @@ def _ground(top: Table) -> tuple[dict[str, tuple[float, float]], dict[str, Guide
             raise ground.error(name, "a frame point name must start with a capital letter "
                                "(A, O1, D) or be 'guides'")
         if not isinstance(value, list) or len(value) != 2:
-            raise ground.error(name, f"expected coordinates [x, y], e.g. [\"0 mm\", \"0 mm\"] (got {value!r})")
+            raise ground.error(name, "expected coordinates [x, y], e.g. [\"0 mm\", \"0 mm\"] "
+                                     f"(got {value!r})")
         points[name] = (ground.value_quantity(value[0], name, "length"),
                         ground.value_quantity(value[1], name, "length"))
     if not points:
@@ -135,12 +132,14 @@ def _guide(g: Table, name: str, link: str, local: dict[str, tuple[float, float]]
     else:
         angle_v = g.quantity("angle", "angle")
         if angle_v is None:
-            raise g.error(None, f"guide {name} needs an 'angle' (e.g. \"60 deg\") or 'toward' a point")
+            raise g.error(None, f"guide {name} needs an 'angle' (e.g. \"60 deg\") "
+                          "or 'toward' a point")
         angle = angle_v
     return Guide(name=name, link=link, origin=origin, angle=angle, through=through)
 
 
-def _links(top: Table, ground: dict[str, tuple[float, float]]) -> tuple[dict[str, Link], dict[str, Guide]]:
+def _links(top: Table, ground: dict[str, tuple[float, float]]
+           ) -> tuple[dict[str, Link], dict[str, Guide]]:
     lt = top.table("links", required=True)
     assert lt is not None
     links: dict[str, Link] = {GROUND: Link(GROUND, "frame", dict(ground))}
@@ -191,7 +190,8 @@ def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]]
             text = side_t.string(name)
             parsed = parse_side(text or "")
             if parsed is None:
-                raise side_t.error(name, f"expected \"left of B->C\" or \"right of B->C\" (got {text!r})")
+                raise side_t.error(name, "expected \"left of B->C\" or \"right of B->C\" "
+                                   f"(got {text!r})")
             sides[name] = parsed
     slides_on = None
     local: dict[str, tuple[float, float]] = {}
@@ -286,14 +286,16 @@ def _pairs(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> list
     return pairs
 
 
-def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide], pairs: list[Pair]) -> Drive:
+def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
+           pairs: list[Pair]) -> Drive:
     d = top.table("drive", required=True)
     assert d is not None
     d.check_keys(("link", "speed", "omega", "sense", "from", "angle", "epsilon"))
     link = d.string("link", required=True)
     assert link is not None
     if link not in links or link == GROUND:
-        raise d.error("link", f"unknown link {link!r}; links are {', '.join(k for k in links if k != GROUND)}")
+        known = ", ".join(k for k in links if k != GROUND)
+        raise d.error("link", f"unknown link {link!r}; links are {known}")
     if not d.has("speed") and not d.has("omega"):
         raise d.error("speed", "is missing: give the crank speed, e.g. speed = \"800 rpm\" or "
                       "\"83.8 rad/s\"")
@@ -301,7 +303,8 @@ def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide], pairs: 
     speed = d.quantity(speed_key, "angular_velocity", required=True, positive=True)
     assert speed is not None
     sense = d.string("sense", "ccw", choices=("cw", "ccw"))
-    pivots = [p.point for p in pairs if p.kind is PairKind.REVOLUTE and {p.a, p.b} == {GROUND, link}]
+    pivots = [p.point for p in pairs
+              if p.kind is PairKind.REVOLUTE and {p.a, p.b} == {GROUND, link}]
     if len(pivots) != 1:
         raise d.error("link", f"the driving link {link} must turn about exactly one frame point "
                       f"(it shares {len(pivots)} with the frame)")
@@ -314,7 +317,8 @@ def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide], pairs: 
 
 
 def _reference_angle(d: Table, name: str, guides: dict[str, Guide]) -> float:
-    axes = {"+x": 0.0, "x": 0.0, "+y": math.pi / 2, "y": math.pi / 2, "-x": math.pi, "-y": -math.pi / 2}
+    axes = {"+x": 0.0, "x": 0.0, "+y": math.pi / 2, "y": math.pi / 2, "-x": math.pi,
+            "-y": -math.pi / 2}
     if name in axes:
         return axes[name]
     if name in guides:
@@ -325,7 +329,8 @@ def _reference_angle(d: Table, name: str, guides: dict[str, Guide]) -> float:
         return d.value_quantity(name, "from", "angle")
     except SceneError:
         raise d.error("from", f"expected a frame guide ({', '.join(guides) or 'none defined'}), "
-                      f"an axis (+x, -y, …) or an angle such as \"30 deg\" (got {name!r})") from None
+                      "an axis (+x, -y, …) or an angle such as \"30 deg\" "
+                      f"(got {name!r})") from None
 
 
 def _assembly(top: Table, links: dict[str, Link]) -> tuple[dict[str, tuple[str, str, int]],
@@ -374,7 +379,8 @@ def _positions(top: Table, drive: Drive, points: set[str], links: dict[str, Link
         values = t.raw("at")
         if not isinstance(values, list) or not values:
             raise t.error("at", "expected a list of crank angles, e.g. [\"0 deg\", \"30 deg\"]")
-        return Positions(angles=tuple(t.value_quantity(v, f"at[{i}]", "angle") for i, v in enumerate(values)))
+        return Positions(angles=tuple(t.value_quantity(v, f"at[{i}]", "angle")
+                                      for i, v in enumerate(values)))
     count = t.raw("count", 12)
     if not isinstance(count, int) or isinstance(count, bool) or count < 1:
         raise t.error("count", f"must be a whole number ≥ 1 (got {count!r})")
@@ -408,152 +414,6 @@ def _analysis(top: Table, points: set[str]) -> tuple[tuple[str, ...], tuple[str,
     return tuple(plans), tuple(interest)
 
 
-def _masses(top: Table, links: dict[str, Link]) -> dict[str, MassSpec]:
-    lt = top.table("links")
-    assert lt is not None
-    masses: dict[str, MassSpec] = {}
-    for lid in lt.data:
-        t = lt.table(lid)
-        assert t is not None
-        mass = t.quantity("mass", "mass", nonnegative=True)
-        inertia = t.quantity("J", "inertia", nonnegative=True)
-        if inertia is None:
-            inertia = t.quantity("inertia", "inertia", nonnegative=True)
-        centre_raw = t.raw("centre", t.raw("center"))
-        if mass is None and inertia is None:
-            continue
-        if isinstance(centre_raw, dict):
-            if len(centre_raw) != 1:
-                raise t.error("centre", "expected one point, e.g. centre = { S2 = \"midpoint B C\" }"
-                              f" (got {centre_raw!r})")
-            centre = next(iter(centre_raw))
-        elif isinstance(centre_raw, str):
-            centre = centre_raw
-        elif len(links[lid].points) == 1:
-            centre = next(iter(links[lid].points))
-        else:
-            raise t.error("centre", "a link with a mass needs its centre of mass, e.g. centre = \"S2\" "
-                          "or centre = { S2 = \"midpoint B C\" }")
-        if centre not in links[lid].points:
-            raise t.error("centre", f"point {centre!r} is not on link {lid} (it has "
-                          f"{', '.join(links[lid].points)})")
-        masses[lid] = MassSpec(lid, mass or 0.0, centre, inertia or 0.0)
-    return masses
-
-
-def _gravity(top: Table) -> Gravity:
-    t = top.table("gravity")
-    if t is None:
-        return Gravity(enabled=False)
-    t.check_keys(("g", "direction", "enabled"))
-    enabled = t.raw("enabled", True)
-    if not isinstance(enabled, bool):
-        raise t.error("enabled", "expected true or false")
-    g = t.quantity("g", "acceleration", 9.81, nonnegative=True) or 0.0
-    direction = t.string("direction", "-y") or "-y"
-    axes = {"-y": (0.0, -1.0), "+y": (0.0, 1.0), "y": (0.0, 1.0), "-x": (-1.0, 0.0),
-            "+x": (1.0, 0.0), "x": (1.0, 0.0)}
-    if direction in axes:
-        vec = axes[direction]
-    else:
-        ang = t.value_quantity(direction, "direction", "angle")
-        vec = (math.cos(ang), math.sin(ang))
-    return Gravity(g=g, direction=vec, enabled=enabled)
-
-
-def _loads(top: Table, links: dict[str, Link], guides: dict[str, Guide],
-           masses: dict[str, MassSpec]) -> tuple[LoadSpec, ...]:
-    raw = top.raw("loads", [])
-    if not isinstance(raw, list):
-        raise top.error("loads", "expected [[loads]] entries")
-    out: list[LoadSpec] = []
-    for i, entry in enumerate(raw):
-        t = Table(entry, f"loads[{i}]", top.file)
-        out.append(_load(t, links, guides))
-    return tuple(out)
-
-
-def _point_link(t: Table, links: dict[str, Link], point: str, link: str | None) -> str:
-    owners = [k for k, lk in links.items() if point in lk.points and k != GROUND]
-    if link is not None:
-        if link not in links or link == GROUND:
-            raise t.error("link", f"unknown moving link {link!r}")
-        if point not in links[link].points:
-            raise t.error("point", f"point {point!r} is not on link {link}")
-        return link
-    if not owners:
-        raise t.error("point", f"unknown point {point!r} (no moving link carries it)")
-    return owners[-1]
-
-
-def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpec:
-    if "force" in t.data:
-        raise t.error("force", "unknown key; a load of type = \"force\" takes vector = "
-                      "[\"0 N\", \"-800 N\"], or magnitude = \"800 N\" with angle = \"90 deg\" "
-                      "or towards = \"A\" (see docs/reference.md)")
-    t.check_keys(("type", "kind", "link", "point", "vector", "magnitude", "angle", "towards",
-                  "toward", "pressure", "bore", "moment", "against", "table", "name"))
-    kind_s = t.string("type", t.string("kind"), choices=tuple(k.value for k in LoadKind))
-    if kind_s is None:
-        raise t.error("type", f"is missing; one of {', '.join(k.value for k in LoadKind)}")
-    kind = LoadKind(kind_s)
-    link = t.string("link")
-    if kind is LoadKind.MOMENT:
-        if link is None or link not in links or link == GROUND:
-            raise t.error("link", f"a moment acts on a moving link; unknown link {link!r}")
-        return LoadSpec(kind, link, moment=t.quantity("moment", "moment", required=True), key=t.path)
-    point = t.string("point", required=True)
-    assert point is not None
-    owner = _point_link(t, links, point, link)
-    towards = t.string("towards") or t.string("toward")
-    if towards is not None and not any(towards in lk.points for lk in links.values()):
-        raise t.error("towards", f"unknown point {towards!r}")
-    if towards is not None and towards == point:
-        raise t.error("towards", f"a load at {point} cannot point towards {point} itself; name "
-                      "another point on its line of action")
-    if kind is LoadKind.FORCE:
-        if t.has("vector"):
-            v = t.raw("vector")
-            if not isinstance(v, list) or len(v) != 2:
-                raise t.error("vector", "expected [Fx, Fy] with units, e.g. [\"0 N\", \"-100 N\"]")
-            vec = (t.value_quantity(v[0], "vector", "force"), t.value_quantity(v[1], "vector", "force"))
-            return LoadSpec(kind, owner, point, vector=vec, key=t.path)
-        mag = t.quantity("magnitude", "force", required=True, nonnegative=True)
-        if towards is None and not t.has("angle"):
-            raise t.error(None, "a force needs 'vector', or 'magnitude' with 'angle' or 'towards'")
-        return LoadSpec(kind, owner, point, magnitude=mag, angle=t.quantity("angle", "angle"),
-                        towards=towards, key=t.path)
-    if links[owner].slides_on is None:
-        raise t.error("point", f"a {kind.value} load acts on a slider along its guide; link "
-                      f"{owner} does not slide")
-    if towards is None:
-        raise t.error("towards", "give the sense along the cylinder axis, e.g. towards = \"A\"")
-    if kind is LoadKind.PRESSURE:
-        if not t.has("bore"):
-            raise t.error("bore", "a pressure needs the piston's bore diameter, e.g. bore = \"100 mm\"")
-        return LoadSpec(kind, owner, point, pressure=t.quantity("pressure", "pressure", required=True),
-                        bore=t.quantity("bore", "length", positive=True), towards=towards, key=t.path)
-    against = t.string("against", "crank_angle", choices=("crank_angle", "displacement"))
-    rows = t.raw("table", required=True)
-    if not isinstance(rows, list) or len(rows) < 2:
-        raise t.error("table", "expected at least two rows [x, F]")
-    xdim = "angle" if against == "crank_angle" else "length"
-    parsed = []
-    for j, row in enumerate(rows):
-        if not isinstance(row, list) or len(row) != 2:
-            raise t.error(f"table[{j}]", "expected a row [x, F]")
-        parsed.append((t.value_quantity(row[0], f"table[{j}]", xdim),
-                       t.value_quantity(row[1], f"table[{j}]", "force")))
-    xs = [r[0] for r in parsed]
-    if any(b <= a for a, b in itertools.pairwise(xs)):
-        raise t.error("table", "the first column must increase strictly")
-    if against == "crank_angle" and xs[-1] - xs[0] > 4 * math.pi + 1e-9:
-        raise t.error("table", "a table against crank angle spans at most two crank turns "
-                      f"(720°, a four-stroke cycle; got {math.degrees(xs[-1] - xs[0]):g}°)")
-    return LoadSpec(kind, owner, point, towards=towards, against=against, table=tuple(parsed),
-                    key=t.path)
-
-
 def _drawing(top: Table, positions: int) -> DrawingSpec:
     t = top.table("drawing")
     tb = top.table("title_block")
@@ -577,7 +437,8 @@ def _drawing(top: Table, positions: int) -> DrawingSpec:
                 scales[k] = v
     plans_at = t.raw("plans_at", [])
     if not isinstance(plans_at, list) or not all(
-            isinstance(n, int) and not isinstance(n, bool) and 0 <= n < positions for n in plans_at):
+            isinstance(n, int) and not isinstance(n, bool) and 0 <= n < positions
+            for n in plans_at):
         raise t.error("plans_at", f"expected position numbers from 0 to {positions - 1}, e.g. "
                       f"[1, 4] (got {plans_at!r})")
     return DrawingSpec(sheet=t.string("sheet", "A1", choices=SHEETS) or "A1",

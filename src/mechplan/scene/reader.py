@@ -37,7 +37,9 @@ class Table:
 
     def error(self, name: str | None, message: str) -> SceneError:
         """Return a SceneError located at a child key (or at this table)."""
-        return SceneError(message, file=self.file, key=self.key(name) if name else (self.path or None))
+        return SceneError(
+            message, file=self.file, key=self.key(name) if name else (self.path or None)
+        )
 
     def has(self, name: str) -> bool:
         """Tell whether a key is present."""
@@ -105,5 +107,9 @@ class Table:
         for name in self.data:
             if name not in allowed:
                 close = difflib.get_close_matches(name, allowed, n=1)
-                hint = f"did you mean '{close[0]}'?" if close else f"expected one of {', '.join(allowed)}"
+                hint = (
+                    f"did you mean '{close[0]}'?"
+                    if close
+                    else f"expected one of {', '.join(allowed)}"
+                )
                 raise self.error(name, f"unknown key; {hint}")

@@ -1,6 +1,10 @@
-"""Sheets: drawing primitives with layer roles, frames and title blocks (ISO, ГОСТ, TCVN)."""
+"""Sheets presenting a solution (:mod:`.compose`, :mod:`.panels`, :mod:`.lever`).
 
-from mechplan.sheet.frame import (
+The drafting names (primitives with layer roles, frames and title blocks) live in
+:mod:`mechplan.drafting` and are re-exported here as before.
+"""
+
+from mechplan.drafting.frame import (
     PAPER_SIZES_MM,
     TITLE_FIELDS,
     FrameLayout,
@@ -10,7 +14,7 @@ from mechplan.sheet.frame import (
     make_frame,
     paper_size,
 )
-from mechplan.sheet.primitives import (
+from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     ISO_3098_HEIGHTS_MM,
     LANGUAGES,

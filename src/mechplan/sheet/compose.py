@@ -10,15 +10,17 @@ from shapely import box
 from shapely.prepared import prep
 
 from ..construct.extremes import extreme_positions
+from ..construct.protocol import plan_title as plan_name
 from ..construct.scale import round_scale
 from ..construct.step import Plan
+from ..drafting.frame import make_frame
+from ..drafting.primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 from ..errors import DrawingError, MechplanError
 from ..i18n import message
 from ..model.mechanism import GROUND, PairKind
 from ..solve import Solution
-from .frame import make_frame
-from .panels import LEVER_TITLE, Panel, plan_title, position_plan, vector_plan, zhukovsky_lever
-from .primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
+from .lever import lever_title, zhukovsky_lever
+from .panels import Panel, plan_title, position_plan, vector_plan
 
 GAP = 8.0          # mm between panels
 MAX_PLAN_POSITIONS = 2
@@ -58,7 +60,9 @@ def _extreme_phis(sol: Solution) -> list[float]:
             continue
         if lk.slides_on and mech.guides[lk.slides_on].link == GROUND:
             subjects.append(next(iter(lk.points)))
-        elif any(p.kind is PairKind.REVOLUTE and GROUND in (p.a, p.b) for p in mech.pairs_of(lk.id)):
+        elif any(
+            p.kind is PairKind.REVOLUTE and GROUND in (p.a, p.b) for p in mech.pairs_of(lk.id)
+        ):
             subjects.append(lk.id)
     phis: list[float] = []
     for s in subjects:
@@ -77,14 +81,13 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
     ev_ext = c.evaluate(np.asarray(extremes)) if extremes else None
     if ev_ext is not None:
         for p in (q for lk in scene.mechanism.links.values() for q in lk.points):
-            ev_ext.get(f"pos.{p}")
+            ev_ext.get(c.position(p))
     for p in (q for lk in scene.mechanism.links.values() for q in lk.points):
-        ev_traj.get(f"pos.{p}")
-        ev_all.get(f"pos.{p}")
+        ev_traj.get(c.position(p))
+        ev_all.get(c.position(p))
     highlight = plan_positions(sol)
     numbers = [str(k) for k in range(sol.positions)]
-    title = {"en": "Position plan", "ru": "План положений", "vi": "Họa đồ vị trí",
-             "zh": "机构位置图"}[lang]
+    title = plan_name(Plan.POSITION, lang)
     panels = [position_plan(c, ev_all, ev_traj, scene.mechanism, highlight, extremes, ev_ext,
                             mu[Plan.POSITION], lang, title, numbers)]
     for k in highlight:
@@ -100,7 +103,7 @@ def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
                 panels.append(vector_plan(c, ev_all, k, Plan.FORCE, mu[Plan.FORCE], lang,
                                           plan_title(Plan.FORCE, lang, k, phi_deg, group), group))
             lever = zhukovsky_lever(c, ev_all, k, mu[Plan.VELOCITY], lang,
-                                    f"{LEVER_TITLE[lang]} — φ = {phi_deg:.1f}°")
+                                    lever_title(lang, phi_deg))
             if lever is not None:
                 panels.append(lever)
     return panels
@@ -129,7 +132,7 @@ def packing_area(frame):
 
 
 def _pack(panels: list[Panel], area) -> tuple[list[tuple[float, float]], int | None]:
-    """Top-left-first packing inside the drawing area; also the index of a panel that does not fit."""
+    """Top-left-first packing inside the drawing area; also the index of a panel not fitting."""
     inside = prep(area)
     ax0, ay0, ax1, ay1 = area.bounds
     placed: list = []
@@ -170,7 +173,9 @@ def _largest(sol: Solution, plan: Plan, positions: list[int]) -> float:
 
 
 def _plan_of(panel: Panel) -> Plan:
-    return Plan(panel.name.split("-")[0])
+    if panel.plan is None:       # the linkage sheet composes only panels of plans
+        raise DrawingError(f"panel {panel.name!r} shows no plan")
+    return panel.plan
 
 
 def _area(panel: Panel) -> float:
@@ -210,8 +215,10 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
     mu0 = {plan: sol.scales.get(plan, 1.0) if key in scene.drawing.scales
            else round_scale(_largest(sol, plan, drawn) / (0.4 * short_side))
            for plan, key in FIXED.items()}
-    if "mu_l" not in scene.drawing.scales:
-        mu0[Plan.POSITION] = round_scale(sol.scales.get(Plan.POSITION, 1.0) * 150.0 / (0.45 * short_side))
+    if Plan.POSITION.scale_key not in scene.drawing.scales:
+        mu0[Plan.POSITION] = round_scale(
+            sol.scales.get(Plan.POSITION, 1.0) * 150.0 / (0.45 * short_side)
+        )
     for split in (False, True):
         composition = _fit(sol, dict(mu0), size, standard, lang, name, split)
         if composition is not None:
@@ -222,7 +229,8 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
                        "factors in [drawing.scales]", file=scene.path)
 
 
-FIXED = {Plan.POSITION: "mu_l", Plan.VELOCITY: "mu_v", Plan.ACCELERATION: "mu_a", Plan.FORCE: "mu_F"}
+#: plan → its scale-factor key (``mu_l``, ``mu_v``, …), which a scene may fix
+FIXED = {plan: plan.scale_key for plan in Plan}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -270,7 +278,9 @@ def _fit(sol: Solution, mu: dict[Plan, float], size: str, standard: str, lang: s
             return Composition(sheets, placements, dict(mu))
         plan = _plan_of(failed_panel)
         if plan not in free:
-            in_part = {_plan_of(p) for p in parts[0 if failed_panel in parts[0] else -1]} & set(free)
+            in_part = {_plan_of(p) for p in parts[0 if failed_panel in parts[0] else -1]} & set(
+                free
+            )
             if not in_part:
                 return None
             plan = max(in_part, key=lambda q: max((_area(x) for x in panels if _plan_of(x) is q),

@@ -8,34 +8,42 @@ and decides line kinds, labels and table cells.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..construct.graph import Construction, Evaluation
-from ..construct.protocol import MM, PLAN_TITLE, localize_direction, pole_label
+from ..construct.ops import Drawn, spec
+from ..construct.ops import Line as LineStyle
+from ..construct.protocol import mm
+from ..construct.protocol import plan_title as plan_name
 from ..construct.segments import SegmentKind
-from ..construct.step import Kind, Op, Plan
-from ..units import format_number
-from .fonts import text_width_mm
-from .labels import LabelPlacer
-from .primitives import Arrow, Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
+from ..construct.step import Kind, Plan
+from ..construct.terms import pole_label
+from ..drafting.fonts import text_width_mm
+from ..drafting.labels import LabelPlacer
+from ..drafting.primitives import (
+    Arrow,
+    Circle,
+    HAlign,
+    Line,
+    Polyline,
+    Primitive,
+    Role,
+    Table,
+    Text,
+    VAlign,
+)
+from ..i18n import message
+from ..i18n import number as format_number
 
+#: line style of an operation's drawing rule → layer role
+ROLES = {LineStyle.DASHED: Role.DASHED, LineStyle.THIN: Role.THIN, LineStyle.OUTLINE: Role.OUTLINE}
 LABEL_H = 3.5
 TITLE_H = 5.0
 TABLE_H = 2.5
 ROW = 5.0
-
-SCALE_UNIT = {Plan.POSITION: ("μl", "m/mm"), Plan.VELOCITY: ("μv", "(m/s)/mm"),
-              Plan.ACCELERATION: ("μa", "(m/s²)/mm"), Plan.FORCE: ("μF", "N/mm")}
-UNIT = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
-HEAD = {
-    "en": ("segment", "on paper", "μ", "quantity", "value", "term", "direction", "magnitude"),
-    "ru": ("отрезок", "на чертеже", "μ", "величина", "значение", "вектор", "направление", "модуль"),
-    "vi": ("đoạn", "trên bản vẽ", "μ", "đại lượng", "giá trị", "véc tơ", "phương chiều", "giá trị"),
-    "zh": ("线段", "图上长度", "μ", "物理量", "数值", "矢量", "方向", "大小"),
-}
-POSITION_WORD = {"en": "position", "ru": "положение", "vi": "vị trí", "zh": "位置"}
 
 
 @dataclass
@@ -44,6 +52,7 @@ class Panel:
 
     name: str
     primitives: list[Primitive | Table] = field(default_factory=list)
+    plan: Plan | None = None        # the plan a panel of plans shows (None: a diagram, a table)
 
     def bounds(self) -> tuple[float, float, float, float]:
         """(x0, y0, x1, y1) of everything drawn."""
@@ -68,8 +77,12 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
         w = text_width_mm(p.string, p.height_mm)
         x, y = p.position
         dx = {HAlign.LEFT: 0.0, HAlign.CENTER: -w / 2, HAlign.RIGHT: -w}[p.halign]
-        dy = {VAlign.BASELINE: 0.0, VAlign.BOTTOM: 0.0, VAlign.MIDDLE: -p.height_mm / 2,
-              VAlign.TOP: -p.height_mm}[p.valign]
+        dy = {
+            VAlign.BASELINE: 0.0,
+            VAlign.BOTTOM: 0.0,
+            VAlign.MIDDLE: -p.height_mm / 2,
+            VAlign.TOP: -p.height_mm,
+        }[p.valign]
         return [(x + dx, y + dy - 0.3 * p.height_mm), (x + dx + w, y + dy + p.height_mm)]
     if isinstance(p, Table):
         x0, y0 = p.origin
@@ -78,14 +91,14 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
 
 
 def mu_text(plan: Plan, mu: float, lang: str) -> str:
-    """"μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
-    sym, unit = SCALE_UNIT[plan]
+    """ "μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
+    sym, unit = plan.scale_symbol, plan.scale_unit
     digits = max(0, -math.floor(math.log10(mu)) + 3) if mu > 0 else 3
     num = format_number(mu, digits, lang).rstrip("0").rstrip(",.")
     return f"{sym} = {num} {unit}"
 
 
-def table(rows: list[tuple[str, ...]], origin: tuple[float, float]) -> Table:
+def table(rows: Sequence[tuple[str, ...]], origin: tuple[float, float]) -> Table:
     """A table whose column widths fit their texts."""
     ncol = len(rows[0])
     widths = tuple(max(text_width_mm(r[c], TABLE_H) for r in rows) + 3.0 for c in range(ncol))
@@ -96,24 +109,46 @@ def _mm(v: np.ndarray, mu: float) -> tuple[float, float]:
     return (float(v[0]) / mu, float(v[1]) / mu)
 
 
+def _pos(ev: Evaluation, point: str) -> str:
+    return ev.construction.position(point)
+
+
+def _has(ev: Evaluation, point: str) -> bool:
+    """Tell whether a point's position was evaluated."""
+    c = ev.construction
+    return c.has_position(point) and c.position(point) in ev.values
+
+
 def _finite(*pts: tuple[float, float]) -> bool:
     return all(math.isfinite(x) and math.isfinite(y) for x, y in pts)
 
 
-def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, lang: str,
-                title: str, group: str | None = None) -> Panel:
+def vector_plan(
+    c: Construction,
+    ev: Evaluation,
+    k: int,
+    plan: Plan,
+    mu: float,
+    lang: str,
+    title: str,
+    group: str | None = None,
+) -> Panel:
     """A velocity, acceleration or force plan at position k: lines, arrows, labels, tables.
 
     ``group`` keeps one group's steps only (each force polygon has a pole of its own).
     """
-    panel = Panel(f"{plan.value}-{k}" + (f"-{group}" if group else ""))
+    panel = Panel(f"{plan.value}-{k}" + (f"-{group}" if group else ""), plan=plan)
     prims = panel.primitives
-    steps = [s for s in c.of_plan(plan) if s.id in ev.values and (group is None or s.group == group)]
+    steps = [
+        s for s in c.of_plan(plan) if s.id in ev.values and (group is None or s.group == group)
+    ]
     segments = [g for g in c.segments if g.plan is plan and (group is None or g.group == group)]
-    vertex_ops = {Op.POLE, getattr(Op, "FORCE_SUM", Op.POLE), getattr(Op, "FORCE_CLOSE", Op.POLE)}
-    if plan is Plan.FORCE:       # force vectors and lines of action are not polygon vertices
-        steps = [s for s in steps if s.kind is not Kind.POINT or s.op in vertex_ops]
-    meet_ops = {Op.LINE_LINE, getattr(Op, "FORCE_CLOSE", Op.LINE_LINE)}
+    if plan is Plan.FORCE:  # force vectors and lines of action are not polygon vertices
+        steps = [
+            s
+            for s in steps
+            if s.kind is not Kind.POINT or spec(s.op).draw in (Drawn.VERTEX, Drawn.MEET)
+        ]
     pts: dict[str, tuple[float, float]] = {}
     for s in steps:
         if s.kind is Kind.POINT:
@@ -122,25 +157,37 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
                 pts[s.id] = p
     # auxiliary construction lines: from the point they pass through to (and past) their meet
     for s in steps:
-        if s.kind is not Kind.LINE:
+        if spec(s.op).draw is not Drawn.CONSTRUCTION_LINE:
             continue
         line = ev[s.id][k]
         through = _mm(line[0], mu)
         u = (float(line[1][0]), float(line[1][1]))
-        meet = next((m for m in steps if m.op in meet_ops and s.id in m.inputs and m.id in pts), None)
+        meet = next(
+            (
+                m
+                for m in steps
+                if spec(m.op).draw is Drawn.MEET and s.id in m.inputs and m.id in pts
+            ),
+            None,
+        )
         if meet is None or not _finite(through):
             continue
         end = pts[meet.id]
         t_end = (end[0] - through[0]) * u[0] + (end[1] - through[1]) * u[1]
         t0, t1 = min(0.0, t_end) - 8.0, max(0.0, t_end) + 8.0
-        prims.append(Line((through[0] + t0 * u[0], through[1] + t0 * u[1]),
-                          (through[0] + t1 * u[0], through[1] + t1 * u[1]), Role.DASHED))
+        prims.append(
+            Line(
+                (through[0] + t0 * u[0], through[1] + t0 * u[1]),
+                (through[0] + t1 * u[0], through[1] + t1 * u[1]),
+                ROLES[spec(s.op).line],
+            )
+        )
     # similarity images: the image triangle of a link
     for s in steps:
-        if s.op is Op.SIMILAR_IMAGE and s.id in pts:
-            for src in s.inputs[:2]:
+        if spec(s.op).draw is Drawn.IMAGE_TRIANGLE and s.id in pts:
+            for src in (s.input("a"), s.input("b")):
                 if src in pts and math.dist(pts[src], pts[s.id]) > 1e-6:
-                    prims.append(Line(pts[src], pts[s.id], Role.THIN))
+                    prims.append(Line(pts[src], pts[s.id], ROLES[spec(s.op).line]))
     # vectors: absolute ones thick, components and relative ones thin
     for seg in segments:
         if seg.start not in pts or seg.end not in pts:
@@ -149,8 +196,15 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
         if math.dist(a, b) < 0.5:
             continue
         thick = seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE, SegmentKind.REACTION)
-        prims.append(Arrow(a, b, Role.OUTLINE if thick else Role.THIN,
-                           head_length_mm=3.5 if thick else 3.0, head_width_mm=1.2 if thick else 1.0))
+        prims.append(
+            Arrow(
+                a,
+                b,
+                Role.OUTLINE if thick else Role.THIN,
+                head_length_mm=3.5 if thick else 3.0,
+                head_width_mm=1.2 if thick else 1.0,
+            )
+        )
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
     seen: dict[tuple[int, int], list[str]] = {}
     for s in steps:
@@ -167,22 +221,48 @@ def vector_plan(c: Construction, ev: Evaluation, k: int, plan: Plan, mu: float, 
     return panel
 
 
-def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, plan: Plan,
-                      mu: float, lang: str, title: str, segments: list, group: str | None) -> None:
+def _title_and_tables(
+    panel: Panel,
+    c: Construction,
+    ev: Evaluation,
+    k: int,
+    plan: Plan,
+    mu: float,
+    lang: str,
+    title: str,
+    segments: list,
+    group: str | None,
+) -> None:
     x0, y0, _x1, y1 = panel.bounds()
     prims = panel.primitives
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(plan, mu, lang), LABEL_H))
-    head = HEAD[lang]
-    rows: list[tuple[str, ...]] = [(head[0], f"{head[1]}, {MM[lang]}", head[3], f"{head[4]}, {UNIT[plan]}")]
+
+    def head(key: str) -> str:
+        return message(f"sheet.head.{key}", lang)
+
+    rows: list[tuple[str, ...]] = [
+        (
+            head("segment"),
+            f"{head('on_paper')}, {mm(lang)}",
+            head("quantity"),
+            f"{head('value')}, {plan.unit}",
+        )
+    ]
     for seg in segments:
         if seg.start not in ev.values or seg.end not in ev.values:
             continue
         length = float(np.hypot(*(ev[seg.end][k] - ev[seg.start][k])))
         if not math.isfinite(length):
             continue
-        rows.append((pole_label(seg.name, lang), format_number(length / mu, 1, lang), seg.quantity,
-                     format_number(length, 3, lang)))
+        rows.append(
+            (
+                pole_label(seg.name, lang),
+                format_number(length / mu, 1, lang),
+                seg.quantity,
+                format_number(length, 3, lang),
+            )
+        )
     y = y0 - 6.0
     if len(rows) > 1:
         t = table(rows, (x0, y))
@@ -193,25 +273,40 @@ def _title_and_tables(panel: Panel, c: Construction, ev: Evaluation, k: int, pla
             continue
         prims.append(Text((x0, y - TABLE_H), f"{g}:  {eq}", TABLE_H))
         y -= TABLE_H + 2.5
-        t2 = table([(head[5], head[6], head[7])] +
-                   [(term, localize_direction(d, lang), m) for term, d, m in terms], (x0, y))
+        t2 = table(
+            [(head("term"), head("direction"), head("magnitude"))]
+            + [(term, d.text(lang), m) for term, d, m in terms],
+            (x0, y),
+        )
         prims.append(t2)
         y -= sum(t2.row_heights_mm) + 4.0
 
 
-def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech, highlight: list[int],
-                  extremes: list[float], ev_ext: Evaluation | None, mu: float, lang: str,
-                  title: str, numbers: list[str]) -> Panel:
+def position_plan(
+    c: Construction,
+    ev_all: Evaluation,
+    ev_traj: Evaluation,
+    mech,
+    highlight: list[int],
+    extremes: list[float],
+    ev_ext: Evaluation | None,
+    mu: float,
+    lang: str,
+    title: str,
+    numbers: list[str],
+) -> Panel:
     """Positions overlaid (highlighted ones thick), trajectories, extreme positions, guides."""
-    panel = Panel("position")
+    panel = Panel("position", plan=Plan.POSITION)
     prims = panel.primitives
     links = [lk for lk in mech.links.values() if lk.id != "0"]
-    joints = {lk.id: [p for p in lk.points if any(pr.point == p for pr in mech.pairs_of(lk.id))]
-              for lk in links}
+    joints = {
+        lk.id: [p for p in lk.points if any(pr.point == p for pr in mech.pairs_of(lk.id))]
+        for lk in links
+    }
 
     def draw_links(ev: Evaluation, k: int, role: Role) -> None:
         for lk in links:
-            pts = [_mm(ev[f"pos.{p}"][k], mu) for p in joints[lk.id] if f"pos.{p}" in ev.values]
+            pts = [_mm(ev[_pos(ev, p)][k], mu) for p in joints[lk.id] if _has(ev, p)]
             pts = [p for p in pts if _finite(p)]
             if len(pts) == 2 and math.dist(*pts) > 1e-6:
                 prims.append(Line(pts[0], pts[1], role))
@@ -224,26 +319,33 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
         if lk.id == crank or lk.slides_on:
             continue
         for p in lk.points:
-            if p in mech.links["0"].points or f"pos.{p}" not in ev_traj.values:
+            if p in mech.links["0"].points or not _has(ev_traj, p):
                 continue
             if any(p in other.points for other in links if other.slides_on):
                 continue
-            path = [_mm(v, mu) for v in ev_traj[f"pos.{p}"]]
+            path = [_mm(v, mu) for v in ev_traj[_pos(ev_traj, p)]]
             path = [q for q in path if _finite(q)]
             if len(path) > 2:
                 prims.append(Polyline(tuple(path), Role.CHAIN))
     tip = next(p for p in mech.links[crank].points if p != mech.drive.pivot)
-    centre = _mm(ev_all[f"pos.{mech.drive.pivot}"][0], mu)
-    radius = math.dist(centre, _mm(ev_all[f"pos.{tip}"][0], mu))
+    centre = _mm(ev_all[_pos(ev_all, mech.drive.pivot)][0], mu)
+    radius = math.dist(centre, _mm(ev_all[_pos(ev_all, tip)][0], mu))
     prims.append(Circle(centre, radius, Role.CHAIN))
     for k in range(ev_all.n):
         draw_links(ev_all, k, Role.OUTLINE if k in highlight else Role.THIN)
-        tip_mm = _mm(ev_all[f"pos.{tip}"][k], mu)
+        tip_mm = _mm(ev_all[_pos(ev_all, tip)][k], mu)
         if _finite(tip_mm):
             d = (tip_mm[0] - centre[0], tip_mm[1] - centre[1])
             n = math.hypot(*d) or 1.0
-            prims.append(Text((tip_mm[0] + 4.0 * d[0] / n, tip_mm[1] + 4.0 * d[1] / n), numbers[k],
-                              2.5, halign=HAlign.CENTER, valign=VAlign.MIDDLE))
+            prims.append(
+                Text(
+                    (tip_mm[0] + 4.0 * d[0] / n, tip_mm[1] + 4.0 * d[1] / n),
+                    numbers[k],
+                    2.5,
+                    halign=HAlign.CENTER,
+                    valign=VAlign.MIDDLE,
+                )
+            )
     if ev_ext is not None:
         for k in range(ev_ext.n):
             draw_links(ev_ext, k, Role.DASHED)
@@ -255,7 +357,7 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
         if g.link != "0":
             continue
         p = next(iter(lk.points))
-        travel = np.asarray(ev_traj[f"pos.{p}"])
+        travel = np.asarray(ev_traj[_pos(ev_traj, p)])
         travel = travel[np.isfinite(travel).all(axis=1)]
         if travel.size == 0:
             continue
@@ -270,29 +372,29 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
         for lk in links:
             if lk.slides_on:
                 g = mech.guides[lk.slides_on]
-                p = _mm(ev_all[f"pos.{next(iter(lk.points))}"][k], mu)
-                ang = g.angle if g.link == "0" else float(ev_all[c.results[f"angle_{lk.id}"]][k])
+                p = _mm(ev_all[_pos(ev_all, next(iter(lk.points)))][k], mu)
+                ang = g.angle if g.link == "0" else float(ev_all[c.link_angle(lk.id)][k])
                 if _finite(p):
                     prims.append(_slider(p, ang))
         for p in dict.fromkeys(q for js in joints.values() for q in js):
-            if f"pos.{p}" in ev_all.values:
-                q = _mm(ev_all[f"pos.{p}"][k], mu)
+            if _has(ev_all, p):
+                q = _mm(ev_all[_pos(ev_all, p)][k], mu)
                 if _finite(q):
                     prims.append(Circle(q, 1.0, Role.OUTLINE))
     for name in mech.links["0"].points:
         if any(name in js for js in joints.values()):
-            prims.extend(_pivot(_mm(ev_all[f"pos.{name}"][0], mu)))
+            prims.extend(_pivot(_mm(ev_all[_pos(ev_all, name)][0], mu)))
     k0 = highlight[0] if highlight else 0
     names = list(dict.fromkeys(p for lk in links for p in lk.points))
-    for p in names:                      # points that are not joints get a small marker too
-        if not any(p in js for js in joints.values()) and f"pos.{p}" in ev_all.values:
-            q = _mm(ev_all[f"pos.{p}"][k0], mu)
+    for p in names:  # points that are not joints get a small marker too
+        if not any(p in js for js in joints.values()) and _has(ev_all, p):
+            q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
                 prims.append(Circle(q, 0.8, Role.OUTLINE))
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H)
     for p in names:
-        if f"pos.{p}" in ev_all.values:
-            q = _mm(ev_all[f"pos.{p}"][k0], mu)
+        if _has(ev_all, p):
+            q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
                 prims.append(placer.place(q, p))
     x0, _y0, _x1, y1 = panel.bounds()
@@ -304,81 +406,28 @@ def position_plan(c: Construction, ev_all: Evaluation, ev_traj: Evaluation, mech
 def _slider(p: tuple[float, float], angle: float) -> Polyline:
     c, s = math.cos(angle), math.sin(angle)
     corners = [(-6.0, -3.5), (6.0, -3.5), (6.0, 3.5), (-6.0, 3.5)]
-    return Polyline(tuple((p[0] + c * x - s * y, p[1] + s * x + c * y) for x, y in corners),
-                    Role.OUTLINE, closed=True)
+    return Polyline(
+        tuple((p[0] + c * x - s * y, p[1] + s * x + c * y) for x, y in corners),
+        Role.OUTLINE,
+        closed=True,
+    )
 
 
 def _pivot(p: tuple[float, float]) -> list[Primitive]:
     x, y = p
-    out: list[Primitive] = [Polyline(((x, y), (x - 4.0, y - 6.0), (x + 4.0, y - 6.0)), Role.OUTLINE,
-                                     closed=True),
-                            Line((x - 6.0, y - 6.0), (x + 6.0, y - 6.0), Role.OUTLINE)]
-    out += [Line((x - 6.0 + 2.0 * i, y - 6.0), (x - 8.0 + 2.0 * i, y - 8.5), Role.THIN) for i in range(7)]
+    out: list[Primitive] = [
+        Polyline(((x, y), (x - 4.0, y - 6.0), (x + 4.0, y - 6.0)), Role.OUTLINE, closed=True),
+        Line((x - 6.0, y - 6.0), (x + 6.0, y - 6.0), Role.OUTLINE),
+    ]
+    out += [
+        Line((x - 6.0 + 2.0 * i, y - 6.0), (x - 8.0 + 2.0 * i, y - 8.5), Role.THIN)
+        for i in range(7)
+    ]
     return out
 
 
 def plan_title(plan: Plan, lang: str, k: int, phi_deg: float, group: str | None = None) -> str:
-    """"Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
-    head = PLAN_TITLE[plan][lang] + (f" {group}" if group else "")
-    return f"{head} — {POSITION_WORD[lang]} {k}, φ = {format_number(phi_deg, 1, lang)}°"
-
-
-LEVER_TITLE = {"en": "Zhukovsky's lever", "ru": "Рычаг Жуковского", "vi": "Đòn Giucôpxki",
-               "zh": "儒可夫斯基杠杆"}
-
-
-def zhukovsky_lever(c: Construction, ev: Evaluation, k: int, mu_v: float, lang: str,
-                    title: str) -> Panel | None:
-    """The velocity plan turned by 90° with every load at the image of its point."""
-    lever = next((s for s in c.of_plan(Plan.FORCE) if s.op is getattr(Op, "ZHUKOVSKY", None)), None)
-    if lever is None or lever.id not in ev.values:
-        return None
-    panel = Panel(f"force-{k}-lever")
-    prims = panel.primitives
-
-    def turned(v: np.ndarray) -> tuple[float, float]:
-        return (-float(v[1]) / mu_v, float(v[0]) / mu_v)
-
-    for seg in c.segments:
-        if seg.plan is Plan.VELOCITY and seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE) \
-                and seg.start in ev.values and seg.end in ev.values:
-            a, b = turned(ev[seg.start][k]), turned(ev[seg.end][k])
-            if _finite(a, b) and math.dist(a, b) > 0.5:
-                prims.append(Line(a, b, Role.THIN))
-    layout = lever.param("layout", "")
-    inputs = list(lever.inputs[1:])
-    forces: list[tuple[tuple[float, float], np.ndarray, str]] = []
-    couples: list[str] = []
-    for kind in layout:
-        if kind == "F":
-            img, force = inputs[0], inputs[1]
-            inputs = inputs[2:]
-            forces.append((turned(ev[img][k]), ev[force][k], c[force].label))
-        else:
-            couple, _omega = inputs[0], inputs[1]
-            inputs = inputs[2:]
-            couples.append(f"{c[couple].label} = {format_number(float(ev[couple][k]), 2, lang)} N·m")
-    largest = max((float(np.hypot(*f)) for _, f, _ in forces), default=0.0)
-    if largest > 0:
-        from ..construct.scale import choose_scale
-        mu_f = choose_scale(largest, 40.0)
-        placer_items: list[tuple[tuple[float, float], str]] = []
-        for at, f, label in forces:
-            tip = (at[0] + float(f[0]) / mu_f, at[1] + float(f[1]) / mu_f)
-            if _finite(at, tip) and math.dist(at, tip) > 0.5:
-                prims.append(Arrow(at, tip, Role.OUTLINE, head_length_mm=3.0, head_width_mm=1.0))
-                placer_items.append((tip, label))
-        prims.append(Circle((0.0, 0.0), 0.8, Role.OUTLINE))
-        placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
-        prims.append(placer.place((0.0, 0.0), "p"))
-        for at, label in placer_items:
-            prims.append(placer.place(at, label))
-        x0, y0, _x1, y1 = panel.bounds()
-        prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
-        prims.append(Text((x0, y1 + 3.0), f"{mu_text(Plan.VELOCITY, mu_v, lang)};  "
-                          f"{mu_text(Plan.FORCE, mu_f, lang)}", LABEL_H))
-        y = y0 - 6.0
-        for line in couples + [f"{lever.label} = {format_number(float(ev[lever.id][k]), 2, lang)} N·m"]:
-            prims.append(Text((x0, y), line, TABLE_H))
-            y -= 4.5
-    return panel if prims else None
+    """ "Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
+    head = plan_name(plan, lang) + (f" {group}" if group else "")
+    position = message("sheet.position", lang)
+    return f"{head} — {position} {k}, φ = {format_number(phi_deg, 1, lang)}°"

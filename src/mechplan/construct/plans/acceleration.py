@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from ...model.mechanism import GROUND
-from ...model.structure import Group
+from ...model.structure import Group, GroupKind
 from ..builder import Builder, alabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
+from ..terms import GIVEN, from_to, parallel, perp
 from .images import (
     absolute,
     coincident,
@@ -33,9 +34,11 @@ def emit_drive(b: Builder) -> None:
     b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
                        Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
                        omega=drive.omega, epsilon=drive.epsilon)
-    rows = [(f"a^n_{tip}", f"{tip} → {drive.pivot}", f"ω{drive.link}²·l_{drive.pivot}{tip}")]
+    rows = [(f"a^n_{tip}", from_to(tip, drive.pivot), f"ω{drive.link}²·l_{drive.pivot}{tip}")]
     if drive.epsilon:
-        rows.append((f"a^t_{tip}", f"⊥ {drive.pivot}{tip}", f"ε{drive.link}·l_{drive.pivot}{tip}"))
+        rows.append(
+            (f"a^t_{tip}", perp(f"{drive.pivot}{tip}"), f"ε{drive.link}·l_{drive.pivot}{tip}")
+        )
     b.c.equations[(A, group)] = (f"a_{tip} = a^n_{tip} + a^t_{tip}", rows)
     absolute(b, tip, A, group)
     complete(b, drive.link, A, group)
@@ -43,7 +46,8 @@ def emit_drive(b: Builder) -> None:
 
 def emit_group(b: Builder, g: Group) -> None:
     """Acceleration construction of one group, then images of all its points."""
-    {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}[g.kind](b, g)
+    {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
+     GroupKind.RPP: _rpp}[g.kind](b, g)
     for link in g.links:
         complete(b, link, A, g.name)
 
@@ -83,7 +87,9 @@ def _epsilon(b: Builder, link: str, p: str, q_pos: str, n: str, aq: str, group: 
 
 
 def _tangential(b: Builder, n: str, end: str, quantity: str, group: str) -> None:
-    b.segment(A, n, end, f"{b.c[n].label} {b.c[end].label}", quantity, SegmentKind.TANGENTIAL, group)
+    b.segment(
+        A, n, end, f"{b.c[n].label} {b.c[end].label}", quantity, SegmentKind.TANGENTIAL, group
+    )
 
 
 def _rrr(b: Builder, g: Group) -> None:
@@ -91,8 +97,15 @@ def _rrr(b: Builder, g: Group) -> None:
     p1, p2, k = g.outer1.point, g.outer2.point, g.inner.point
     n1 = _normal(b, b.acc[p1], l1, p1, k, k, g.name)
     n2 = _normal(b, b.acc[p2], l2, p2, k, k, g.name)
-    meet = meet_lines(b, A, f"acc.{k}", perp_line(b, A, n1, p1, k, g.name), perp_line(b, A, n2, p2, k, g.name),
-                 alabel(k), g.name)
+    meet = meet_lines(
+        b,
+        A,
+        f"acc.{k}",
+        perp_line(b, A, n1, p1, k, g.name),
+        perp_line(b, A, n2, p2, k, g.name),
+        alabel(k),
+        g.name,
+    )
     b.acc[k] = meet
     _epsilon(b, l1, p1, b.pos[k], n1, meet, g.name)
     _epsilon(b, l2, p2, b.pos[k], n2, meet, g.name)
@@ -100,10 +113,16 @@ def _rrr(b: Builder, g: Group) -> None:
     _tangential(b, n2, meet, f"a^t_{k}{p2}", g.name)
     absolute(b, k, A, g.name)
     b.c.equations[(A, g.name)] = (
-        f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{p2} + a^n_{k}{p2} + a^t_{k}{p2}", [
-            (f"a_{p1}", "✓", "✓"), (f"a^n_{k}{p1}", f"{k} → {p1}", f"ω{l1}²·l_{p1}{k}"),
-            (f"a^t_{k}{p1}", f"⊥ {p1}{k}", "?"), (f"a_{p2}", "✓", "✓"),
-            (f"a^n_{k}{p2}", f"{k} → {p2}", f"ω{l2}²·l_{p2}{k}"), (f"a^t_{k}{p2}", f"⊥ {p2}{k}", "?")])
+        f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{p2} + a^n_{k}{p2} + a^t_{k}{p2}",
+        [
+            (f"a_{p1}", GIVEN, "✓"),
+            (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
+            (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?"),
+            (f"a_{p2}", GIVEN, "✓"),
+            (f"a^n_{k}{p2}", from_to(k, p2), f"ω{l2}²·l_{p2}{k}"),
+            (f"a^t_{k}{p2}", perp(f"{p2}{k}"), "?"),
+        ],
+    )
 
 
 def _rrp(b: Builder, g: Group) -> None:
@@ -115,8 +134,15 @@ def _rrp(b: Builder, g: Group) -> None:
     km_v = coincident(b, m, k, Plan.VELOCITY, g.name)
     km = coincident(b, m, k, A, g.name)
     kk = _coriolis(b, km, m, km_v, b.vel[k], f"{k}{l2}{k}{m}", g.name)
-    meet = meet_lines(b, A, f"acc.{k}", perp_line(b, A, n1, p1, k, g.name), parallel_line(b, A, kk, locus, g.name),
-                 alabel(k), g.name)
+    meet = meet_lines(
+        b,
+        A,
+        f"acc.{k}",
+        perp_line(b, A, n1, p1, k, g.name),
+        parallel_line(b, A, kk, locus, g.name),
+        alabel(k),
+        g.name,
+    )
     b.acc[k] = meet
     _epsilon(b, l1, p1, b.pos[k], n1, meet, g.name)
     link_scalar(b, l2, m, A, g.name)
@@ -126,16 +152,19 @@ def _rrp(b: Builder, g: Group) -> None:
         b.segment(A, kk, meet, f"{b.c[kk].label} {b.c[meet].label}", f"a^r_{k}{l2}{k}{m}",
                   SegmentKind.SLIDING, g.name)
     absolute(b, k, A, g.name)
-    rows = [(f"a_{p1}", "✓", "✓"), (f"a^n_{k}{p1}", f"{k} → {p1}", f"ω{l1}²·l_{p1}{k}"),
-            (f"a^t_{k}{p1}", f"⊥ {p1}{k}", "?")]
+    rows = [(f"a_{p1}", GIVEN, "✓"), (f"a^n_{k}{p1}", from_to(k, p1), f"ω{l1}²·l_{p1}{k}"),
+            (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?")]
     if m == GROUND:
         eq = f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1}"
-        rows.append((f"a_{k}", f"∥ {guide}", "?"))
+        rows.append((f"a_{k}", parallel(f"{guide}"), "?"))
     else:
         eq = (f"a_{k} = a_{p1} + a^n_{k}{p1} + a^t_{k}{p1} = a_{k}{m} + a^k_{k}{l2}{k}{m} + "
               f"a^r_{k}{l2}{k}{m}")
-        rows += [(f"a_{k}{m}", "✓", "✓"), (f"a^k_{k}{l2}{k}{m}", f"⊥ {guide}", f"2ω{m}·v_{k}{l2}{k}{m}"),
-                 (f"a^r_{k}{l2}{k}{m}", f"∥ {guide}", "?")]
+        rows += [
+            (f"a_{k}{m}", GIVEN, "✓"),
+            (f"a^k_{k}{l2}{k}{m}", perp(f"{guide}"), f"2ω{m}·v_{k}{l2}{k}{m}"),
+            (f"a^r_{k}{l2}{k}{m}", parallel(f"{guide}"), "?"),
+        ]
     b.c.equations[(A, g.name)] = (eq, rows)
 
 
@@ -150,8 +179,15 @@ def _rpr(b: Builder, g: Group) -> None:
     n = _normal(b, b.acc[pc], c, pc, ps, f"{ps}{c}", g.name)
     kk = _coriolis(b, b.acc[ps], c, b.vel[ps], im.vel, f"{ps}{c}{ps}{s}", g.name)
     label = b.c[im.vel].label + "′"
-    meet = meet_lines(b, A, f"acc.{ps}@{c}", perp_line(b, A, n, pc, ps, g.name), parallel_line(b, A, kk, gline, g.name),
-                 label, g.name)
+    meet = meet_lines(
+        b,
+        A,
+        f"acc.{ps}@{c}",
+        perp_line(b, A, n, pc, ps, g.name),
+        parallel_line(b, A, kk, gline, g.name),
+        label,
+        g.name,
+    )
     im.acc = meet
     _epsilon(b, c, pc, b.pos[ps], n, meet, g.name)
     link_scalar(b, s, c, A, g.name)
@@ -161,12 +197,19 @@ def _rpr(b: Builder, g: Group) -> None:
     b.segment(A, "acc.pi", meet, f"π{label}", f"a_{ps}{c}", SegmentKind.ABSOLUTE, g.name)
     b.result(f"a_{ps}{c}", meet)
     b.c.equations[(A, g.name)] = (
-        (f"a_{ps}{c} = a_{ps}{s} + a^k_{ps}{c}{ps}{s} + a^r_{ps}{c}{ps}{s} = a_{pc} + a^n_{ps}{c}{pc} + "
-        f"a^t_{ps}{c}{pc}"), [
-            (f"a_{ps}{s}", "✓", "✓"), (f"a^k_{ps}{c}{ps}{s}", f"⊥ {guide.name}", f"2ω{c}·v_{ps}{c}{ps}{s}"),
-            (f"a^r_{ps}{c}{ps}{s}", f"∥ {guide.name}", "?"), (f"a_{pc}", "✓", "✓"),
-            (f"a^n_{ps}{c}{pc}", f"{ps} → {pc}", f"ω{c}²·l_{pc}{ps}"),
-            (f"a^t_{ps}{c}{pc}", f"⊥ {pc}{ps}", "?")])
+        (
+            f"a_{ps}{c} = a_{ps}{s} + a^k_{ps}{c}{ps}{s} + a^r_{ps}{c}{ps}{s} = "
+            f"a_{pc} + a^n_{ps}{c}{pc} + a^t_{ps}{c}{pc}"
+        ),
+        [
+            (f"a_{ps}{s}", GIVEN, "✓"),
+            (f"a^k_{ps}{c}{ps}{s}", perp(f"{guide.name}"), f"2ω{c}·v_{ps}{c}{ps}{s}"),
+            (f"a^r_{ps}{c}{ps}{s}", parallel(f"{guide.name}"), "?"),
+            (f"a_{pc}", GIVEN, "✓"),
+            (f"a^n_{ps}{c}{pc}", from_to(ps, pc), f"ω{c}²·l_{pc}{ps}"),
+            (f"a^t_{ps}{c}{pc}", perp(f"{pc}{ps}"), "?"),
+        ],
+    )
 
 
 def _prp(b: Builder, g: Group) -> None:
@@ -185,11 +228,19 @@ def _prp(b: Builder, g: Group) -> None:
     link_scalar(b, l2, m2, A, g.name)
     absolute(b, k, A, g.name)
     b.c.equations[(A, g.name)] = (
-        (f"a_{k} = a_{k}{m1} + a^k_{k}{l1}{k}{m1} + a^r_{k}{l1}{k}{m1} = a_{k}{m2} + a^k_{k}{l2}{k}{m2} + "
-        f"a^r_{k}{l2}{k}{m2}"), [
-            (f"a_{k}{m1}", "✓", "✓"), (f"a^k_{k}{l1}{k}{m1}", "⊥", f"2ω{m1}·v_{k}{l1}{k}{m1}"),
-            (f"a^r_{k}{l1}{k}{m1}", "∥", "?"), (f"a_{k}{m2}", "✓", "✓"),
-            (f"a^k_{k}{l2}{k}{m2}", "⊥", f"2ω{m2}·v_{k}{l2}{k}{m2}"), (f"a^r_{k}{l2}{k}{m2}", "∥", "?")])
+        (
+            f"a_{k} = a_{k}{m1} + a^k_{k}{l1}{k}{m1} + a^r_{k}{l1}{k}{m1} = "
+            f"a_{k}{m2} + a^k_{k}{l2}{k}{m2} + a^r_{k}{l2}{k}{m2}"
+        ),
+        [
+            (f"a_{k}{m1}", GIVEN, "✓"),
+            (f"a^k_{k}{l1}{k}{m1}", perp(), f"2ω{m1}·v_{k}{l1}{k}{m1}"),
+            (f"a^r_{k}{l1}{k}{m1}", parallel(), "?"),
+            (f"a_{k}{m2}", GIVEN, "✓"),
+            (f"a^k_{k}{l2}{k}{m2}", perp(), f"2ω{m2}·v_{k}{l2}{k}{m2}"),
+            (f"a^r_{k}{l2}{k}{m2}", parallel(), "?"),
+        ],
+    )
 
 
 def _rpp(b: Builder, g: Group) -> None:
@@ -210,5 +261,5 @@ def _rpp(b: Builder, g: Group) -> None:
     absolute(b, x, A, g.name)
     b.c.equations[(A, g.name)] = (
         f"a_{x} = a_{x}{m} + a^k + a^r_{x}{l2}{x}{m} = a_{x}{l1} + a^k + a^r_{x}{l2}{x}{l1}", [
-            (f"a_{x}{m}", "✓", "✓"), (f"a^r_{x}{l2}{x}{m}", "∥", "?"),
-            (f"a_{x}{l1}", "✓", "✓"), (f"a^r_{x}{l2}{x}{l1}", "∥", "?")])
+            (f"a_{x}{m}", GIVEN, "✓"), (f"a^r_{x}{l2}{x}{m}", parallel(), "?"),
+            (f"a_{x}{l1}", GIVEN, "✓"), (f"a^r_{x}{l2}{x}{l1}", parallel(), "?")])

@@ -21,346 +21,45 @@ action of the single equivalent inertia force, |S K| = |h|).
 
 from __future__ import annotations
 
-import math
-from collections.abc import Mapping
-from dataclasses import dataclass, field
-from string import ascii_lowercase
-from typing import Any, Protocol
-
-import numpy as np
-
-from ...geom import meet
-from ...geom.vec import Array, cross, direction, dot, norm, perp, unit
 from ...model.mechanism import GROUND, Pair, PairKind
-from ...model.structure import Group
-from .. import ops
-from ..builder import Builder, alabel
+from ...model.structure import Group, GroupKind
+from ..builder import Builder
+from ..graph import reaction_key
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
+from ..terms import UNKNOWN, Row
+from ..terms import parallel as parallel_to
+from ..terms import perp as perp_to
+from .force_loads import (
+    LoadingLike,
+    State,
+    Term,
+    external_loads,
+    group_of,
+    inertia_and_weights,
+)
 
 F = Plan.FORCE
 
-
-class LoadingLike(Protocol):
-    """What the force plan needs of a loading (see :class:`mechplan.dynamics.loading.Loading`)."""
-
-    masses: Mapping[str, Any]
-    loads: tuple[Any, ...]
-    gravity: Any
-
-    def check(self, mech: Any) -> None:
-        """Raise SceneError if the loading does not fit the mechanism."""
-
-
-def pair_key(i: str, j: str) -> str:
-    """Key of the reaction of link i on link j: ``"12"``, or ``"10,12"`` for longer link ids."""
-    return f"{i}{j}" if len(i) == 1 and len(j) == 1 else f"{i},{j}"
-
-
-# -- evaluators ------------------------------------------------------------------------------
-Result = ops.Result
-
-
-def _ev_force_inertia(step: Any, a: Array) -> Result:
-    return -float(step.param("mass")) * a, None, None
-
-
-def _ev_moment_inertia(step: Any, eps: Array) -> Result:
-    return -float(step.param("inertia")) * eps, None, None
-
-
-def _ev_force_load(step: Any, *args: Array) -> Result:
-    mode = step.param("mode")
-    if mode == "vector":
-        vec = np.asarray(step.param("vector"), dtype=float)
-        return np.broadcast_to(vec, args[0].shape).copy(), None, None
-    if mode == "towards":
-        p, q = args
-        return float(step.param("magnitude")) * unit(q - p), None, None
-    if mode == "guide":
-        p, q, theta = args
-        value = np.full(p.shape[:-1], float(step.param("value")))
-    elif mode == "table_phi":
-        theta1, p, q, theta = args
-        xs, fs = np.asarray(step.param("xs")), np.asarray(step.param("fs"))
-        phi = step.param("sense") * (theta1 - step.param("ref"))
-        phi = xs[0] + np.mod(phi - xs[0], 2.0 * math.pi)
-        value = np.interp(phi, xs, fs)
-    elif mode == "table_s":
-        p, o, q, theta = args
-        xs, fs = np.asarray(step.param("xs")), np.asarray(step.param("fs"))
-        value = np.interp(dot(p - o, direction(theta)), xs, fs)
-    else:  # pragma: no cover - emitted only by this module
-        raise ValueError(f"unknown force load mode {mode!r}")
-    u = direction(theta)
-    sense = np.sign(dot(q - p, u))
-    return (value * sense)[..., None] * u, None, None
-
-
-def _ev_moment_sum(step: Any, centre: Array, *args: Array) -> Result:
-    total = np.zeros(centre.shape[:-1])
-    i = 0
-    for kind in step.param("layout"):
-        if kind == "F":
-            total = total + cross(args[i] - centre, args[i + 1])
-            i += 2
-        else:
-            total = total + args[i]
-            i += 1
-    return total, None, None
-
-
-def _ev_moment_arm_tangential(step: Any, centre: Array, at: Array, total: Array,
-                           *angle: Array) -> Result:
-    """Force at ``at`` ⊥ (at − centre), or ⊥ a guide, whose moment about centre is −total."""
-    r = at - centre
-    d = perp(direction(angle[0])) if angle else unit(perp(r))
-    arm = cross(r, d)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        lam = -total / arm
-        sine = np.abs(arm) / norm(r) if angle else None
-    return lam[..., None] * d, None, sine
-
-
-def _ev_force_sum(step: Any, prev: Array, force: Array) -> Result:
-    return prev + force, None, None
-
-
-def _ev_force_line(step: Any, through: Array, *args: Array) -> Result:
-    u = unit(args[1] - args[0]) if len(args) == 2 else direction(args[0])
-    if step.param("turn") == 90:
-        u = perp(u)
-    return np.stack((through, u), axis=-2), None, None
-
-
-def _ev_force_close(step: Any, l1: Array, l2: Array) -> Result:
-    return meet.line_line(l1[..., 0, :], l1[..., 1, :], l2[..., 0, :], l2[..., 1, :])
-
-
-def _ev_negate(step: Any, x: Array) -> Result:
-    return -x, None, None
-
-
-def _ev_guide_offset(step: Any, o: Array, at: Array, couple: Array, force: Array,
-                  theta: Array) -> Result:
-    u = direction(theta)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return dot(at - o, u) + couple / cross(u, force), None, None
-
-
-def _ev_line_of_action(step: Any, at: Array, force: Array, couple: Array) -> Result:
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return at - (couple / dot(force, force))[..., None] * perp(force), None, None
-
-
-def _ev_inertia_offset(step: Any, q: Array, m: Array) -> Result:
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return m / norm(q), None, None
-
-
-def _ev_zhukovsky(step: Any, omega1: Array, *args: Array) -> Result:
-    """Moments about the pole of forces at velocity images turned by +90°, couples as M·ω."""
-    lever = np.zeros(omega1.shape)
-    i = 0
-    for kind in step.param("layout"):
-        if kind == "F":
-            lever = lever + cross(perp(args[i]), args[i + 1])
-        else:
-            lever = lever - args[i] * args[i + 1]
-        i += 2
-    return lever / omega1, None, None
-
-
-ops.EVALUATORS.update({
-    Op.FORCE_INERTIA: _ev_force_inertia,
-    Op.MOMENT_INERTIA: _ev_moment_inertia,
-    Op.FORCE_LOAD: _ev_force_load,
-    Op.MOMENT_SUM: _ev_moment_sum,
-    Op.MOMENT_ARM_TANGENTIAL: _ev_moment_arm_tangential,
-    Op.FORCE_SUM: _ev_force_sum,
-    Op.FORCE_LINE: _ev_force_line,
-    Op.FORCE_CLOSE: _ev_force_close,
-    Op.FORCE_REVERSE: _ev_negate,
-    Op.MOMENT_CLOSE: _ev_negate,
-    Op.BALANCING_MOMENT: _ev_negate,
-    Op.GUIDE_OFFSET: _ev_guide_offset,
-    Op.LINE_OF_ACTION: _ev_line_of_action,
-    Op.INERTIA_OFFSET: _ev_inertia_offset,
-    Op.ZHUKOVSKY: _ev_zhukovsky,
-})
-
-
-# -- emitting --------------------------------------------------------------------------------
-@dataclass(frozen=True, slots=True)
-class Term:
-    """A known load on a link: a force at a point, a couple, or both (a guide reaction).
-
-    ``direction``/``magnitude`` are the entries of the vector-equation table ("⊥ BC", "m2·g").
-    """
-
-    label: str
-    force: str | None = None
-    point: str | None = None      # position step of the point of application
-    couple: str | None = None
-    direction: str = "✓"
-    magnitude: str = "✓"
-    where: str = ""               # name of the point of application (for its velocity image)
-
-
-@dataclass
-class _State:
-    b: Builder
-    loading: LoadingLike
-    terms: dict[str, list[Term]] = field(default_factory=dict)
-    #: loads (not reactions) with the link they act on, for Zhukovsky's lever
-    applied: list[tuple[str, Term]] = field(default_factory=list)
-    letters: dict[str, int] = field(default_factory=dict)
-
-    def add(self, id: str, op: Op, inputs: tuple[str, ...], kind: Kind, role: Role, label: str,
-            group: str, subject: tuple[str, ...] = (), **params: Any) -> str:
-        return self.b.add(id, op, inputs, F, kind, role, label, group, subject, **params)
-
-    def label(self, sid: str) -> str:
-        return self.b.c[sid].label
-
-    def letter(self, group: str) -> str:
-        n = self.letters.get(group, 0)
-        self.letters[group] = n + 1
-        return ascii_lowercase[n % 26] + (str(n // 26) if n >= 26 else "")
+#: key of the reaction of link i on link j (``"12"``, ``"10,12"``)
+pair_key = reaction_key
 
 
 def emit(b: Builder) -> None:
     """Emit the force plan: loads, groups from the last to the first, the crank, the lever."""
     loading: LoadingLike = b.loading
     loading.check(b.mech)
-    st = _State(b, loading, {k: [] for k in b.mech.moving})
-    _inertia_and_weights(st)
-    _external_loads(st)
+    st = State(b, loading, {k: [] for k in b.mech.moving})
+    inertia_and_weights(st)
+    external_loads(st)
     for g in reversed(b.structure.groups):
-        {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}[g.kind](st, g)
+        {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
+         GroupKind.RPP: _rpp}[g.kind](st, g)
     _driving_link(st)
     _lever(st)
 
 
-def _group_of(b: Builder, link: str) -> str:
-    for g in b.structure.groups:
-        if link in g.links:
-            return g.name
-    return f"I({GROUND},{b.mech.drive.link})"
-
-
-def _load(st: _State, link: str, term: Term) -> None:
-    st.terms[link].append(term)
-    st.applied.append((link, term))
-
-
-def _inertia_and_weights(st: _State) -> None:
-    b, grav = st.b, st.loading.gravity
-    for link, ms in st.loading.masses.items():
-        group = _group_of(b, link)
-        s_pos = b.pos[ms.centre]
-        q = mq = None
-        if ms.mass > 0:
-            q = st.add(f"force.Q.{link}", Op.FORCE_INERTIA, (b.acc[ms.centre],), Kind.POINT,
-                       Role.RESULT, f"Q{link}", group, subject=(ms.centre, link), mass=ms.mass)
-            b.result(f"Q_{link}", q)
-            _load(st, link, Term(f"Q{link}", q, s_pos, direction=f"opposite to π{alabel(ms.centre)}",
-                                 magnitude=f"m{link}·a_{ms.centre}", where=ms.centre))
-        if ms.inertia > 0:
-            eps = b.bodies[link].epsilon
-            assert eps is not None
-            mq = st.add(f"force.Mq.{link}", Op.MOMENT_INERTIA, (eps,), Kind.SCALAR, Role.RESULT,
-                        f"M_q{link}", group, subject=(link,), inertia=ms.inertia)
-            b.result(f"M_q{link}", mq)
-            _load(st, link, Term(f"M_q{link}", couple=mq, direction=f"against ε{link}",
-                                 magnitude=f"J_{ms.centre}·ε{link}"))
-        if q is not None and mq is not None:
-            h = st.add(f"force.h.{link}", Op.INERTIA_OFFSET, (q, mq), Kind.SCALAR,
-                       Role.AUXILIARY, f"h_q{link}", group, subject=(f"M_q{link}", f"Q{link}"))
-            b.result(f"h_{link}", h)
-            k = st.add(f"force.Kq.{link}", Op.LINE_OF_ACTION, (s_pos, q, mq), Kind.POINT,
-                       Role.AUXILIARY, f"K{link}", group,
-                       subject=(ms.centre, f"Q{link}", f"M_q{link}"))
-            b.result(f"K_q{link}", k)
-        if grav.enabled and ms.mass > 0 and grav.g > 0:
-            gx, gy = grav.direction
-            vec = (ms.mass * grav.g * gx, ms.mass * grav.g * gy)
-            w = st.add(f"force.G.{link}", Op.FORCE_LOAD, (s_pos,), Kind.POINT, Role.GIVEN,
-                       f"G{link}", group, subject=(ms.centre, link), mode="vector", vector=vec)
-            b.result(f"G_{link}", w)
-            arrow = {(0.0, -1.0): "↓", (0.0, 1.0): "↑", (1.0, 0.0): "→", (-1.0, 0.0): "←"}
-            _load(st, link, Term(f"G{link}", w, s_pos, direction=arrow.get((gx, gy), "∥ g"),
-                                 magnitude=f"m{link}·g", where=ms.centre))
-
-
-def _external_loads(st: _State) -> None:
-    b = st.b
-    seen: dict[str, int] = {}
-    for j, spec in enumerate(st.loading.loads):
-        link = spec.link
-        group = _group_of(b, link)
-        kind = spec.kind.value
-        sid = f"force.load.{j}"
-        if kind == "moment":
-            m = st.add(sid, Op.CONSTANT, (), Kind.SCALAR, Role.GIVEN, f"M{link}", group,
-                       subject=(link,), value=float(spec.moment))
-            b.result(f"load_{j}", m)
-            _load(st, link, Term(f"M{link}", couple=m))
-            continue
-        point = spec.point
-        n = seen.get(point, 0)
-        seen[point] = n + 1
-        label = f"F_{point}" + "′" * n
-        p = b.pos[point]
-        direction_text, magnitude_text = "✓", "✓"
-        if kind == "force":
-            if spec.vector is not None:
-                f = st.add(sid, Op.FORCE_LOAD, (p,), Kind.POINT, Role.GIVEN, label, group,
-                           subject=(point,), mode="vector", vector=tuple(spec.vector))
-            elif spec.towards is not None:
-                f = st.add(sid, Op.FORCE_LOAD, (p, b.pos[spec.towards]), Kind.POINT, Role.GIVEN,
-                           label, group, subject=(point, spec.towards), mode="towards",
-                           magnitude=float(spec.magnitude))
-                direction_text = f"{point} → {spec.towards}"
-            else:
-                vec = (spec.magnitude * math.cos(spec.angle), spec.magnitude * math.sin(spec.angle))
-                f = st.add(sid, Op.FORCE_LOAD, (p,), Kind.POINT, Role.GIVEN, label, group,
-                           subject=(point,), mode="vector", vector=vec)
-        else:
-            slides_on = b.mech.links[link].slides_on
-            theta = b.bodies[link].angle
-            assert slides_on is not None and theta is not None    # Loading.check made sure
-            guide = b.mech.guides[slides_on]
-            towards = b.pos[spec.towards]
-            direction_text = f"∥ {guide.name}, towards {spec.towards}"
-            if kind == "pressure":
-                area = math.pi * spec.bore ** 2 / 4.0
-                f = st.add(sid, Op.FORCE_LOAD, (p, towards, theta), Kind.POINT, Role.GIVEN,
-                           label, group, subject=(point, spec.towards, guide.name), mode="guide",
-                           value=float(spec.pressure) * area)
-                magnitude_text = "p·πd²/4"
-            elif spec.against == "displacement":
-                xs, fs = zip(*spec.table)
-                f = st.add(sid, Op.FORCE_LOAD, (p, b.pos[guide.through], towards, theta),
-                           Kind.POINT, Role.GIVEN, label, group,
-                           subject=(point, spec.towards, guide.name), mode="table_s",
-                           xs=tuple(xs), fs=tuple(fs))
-                magnitude_text = f"F(s_{point})"
-            else:
-                xs, fs = zip(*spec.table)
-                drive = b.mech.drive
-                f = st.add(sid, Op.FORCE_LOAD, ("pos.phi1", p, towards, theta), Kind.POINT,
-                           Role.GIVEN, label, group, subject=(point, spec.towards, guide.name),
-                           mode="table_phi", xs=tuple(xs), fs=tuple(fs), ref=drive.ref_angle,
-                           sense=drive.sense)
-                magnitude_text = f"F(φ{drive.link})"
-        b.result(f"load_{j}", f)
-        _load(st, link, Term(label, f, p, direction=direction_text, magnitude=magnitude_text,
-                             where=point))
-
-
-# -- building blocks of the group constructions ----------------------------------------------
-def _segment(st: _State, start: str, end: str, quantity: str, group: str,
+def _segment(st: State, start: str, end: str, quantity: str, group: str,
              reaction: bool = False) -> None:
     kind = getattr(SegmentKind, "REACTION" if reaction else "FORCE", None)
     if kind is None:     # the segment kinds of the force plan are not declared yet
@@ -368,7 +67,7 @@ def _segment(st: _State, start: str, end: str, quantity: str, group: str,
     st.b.segment(F, start, end, f"{st.label(start)}{st.label(end)}", quantity, kind, group)
 
 
-def _moment_sum(st: _State, group: str, link: str, about: str, terms: list[Term],
+def _moment_sum(st: State, group: str, link: str, about: str, terms: list[Term],
                 tag: str) -> str:
     """ΣM about a point of the known loads on a link (forces by their arms, couples)."""
     b = st.b
@@ -387,7 +86,7 @@ def _moment_sum(st: _State, group: str, link: str, about: str, terms: list[Term]
                   subject=(about, link, *[t.label for t in terms]), layout=layout)
 
 
-def _chain(st: _State, group: str, start: str, terms: list[Term]) -> str:
+def _chain(st: State, group: str, start: str, terms: list[Term]) -> str:
     """Lay the forces of ``terms`` head to tail from ``start``; return the last vertex."""
     vertex = start
     for t in terms:
@@ -401,25 +100,25 @@ def _chain(st: _State, group: str, start: str, terms: list[Term]) -> str:
     return vertex
 
 
-def _pole(st: _State, group: str) -> str:
+def _pole(st: State, group: str) -> str:
     letter = st.letter(group)
     return st.add(f"force.{group}.v.{letter}", Op.POLE, (), Kind.POINT, Role.GIVEN, letter, group)
 
 
-def _line(st: _State, group: str, through: str, tag: str, label: str, *direction_from: str,
+def _line(st: State, group: str, through: str, tag: str, label: str, *direction_from: str,
           turn: int) -> str:
     return st.add(f"force.{group}.line.{tag}", Op.FORCE_LINE, (through, *direction_from),
                   Kind.LINE, Role.AUXILIARY, label, group,
                   subject=(st.label(through), label), turn=turn)
 
 
-def _close(st: _State, group: str, l1: str, l2: str) -> str:
+def _close(st: State, group: str, l1: str, l2: str) -> str:
     letter = st.letter(group)
     return st.add(f"force.{group}.v.{letter}", Op.FORCE_CLOSE, (l1, l2), Kind.POINT, Role.RESULT,
                   letter, group, subject=(st.label(l1), st.label(l2)))
 
 
-def _between(st: _State, group: str, start: str, end: str, label: str, tag: str,
+def _between(st: State, group: str, start: str, end: str, label: str, tag: str,
              role: Role = Role.RESULT) -> str:
     """A force read off the polygon: the vector from ``start`` to ``end``."""
     sid = st.add(f"force.{group}.{tag}", Op.DIFFERENCE, (start, end), Kind.POINT, role, label,
@@ -428,13 +127,13 @@ def _between(st: _State, group: str, start: str, end: str, label: str, tag: str,
     return sid
 
 
-def _guide_angle(st: _State, pair: Pair) -> str:
+def _guide_angle(st: State, pair: Pair) -> str:
     theta = st.b.bodies[pair.a].angle
     assert theta is not None
     return theta
 
 
-def _reaction(st: _State, group: str, pair: Pair, i: str, j: str, force: str,
+def _reaction(st: State, group: str, pair: Pair, i: str, j: str, force: str,
               couple: str | None = None, at: str | None = None) -> str:
     """Record R_ij (force of link i on link j) and R_ji; pass R_ji to link i if it is earlier.
 
@@ -462,12 +161,12 @@ def _reaction(st: _State, group: str, pair: Pair, i: str, j: str, force: str,
         for k in (key, rkey):
             b.result(f"d_{k}", d)
             b.result(f"K_{k}", point)
-    if i != GROUND and i in st.terms and _group_of(b, i) != group:
+    if i != GROUND and i in st.terms and group_of(b, i) != group:
         st.terms[i].append(Term(f"R_{rkey}", back, at, back_couple))
     return back
 
 
-def _guide_couple(st: _State, group: str, link: str, pair: Pair, terms: list[Term],
+def _guide_couple(st: State, group: str, link: str, pair: Pair, terms: list[Term],
                   label: str) -> str:
     """Couple of a guide reaction on ``link`` (force at the pair point) from ΣM = 0 there."""
     total = _moment_sum(st, group, link, pair.point, terms, f"guide.{link}")
@@ -475,7 +174,7 @@ def _guide_couple(st: _State, group: str, link: str, pair: Pair, terms: list[Ter
                   Role.RESULT, label, group, subject=(st.label(total),))
 
 
-def _tangential(st: _State, group: str, link: str, partner: str, about: str, at: str) -> str:
+def _tangential(st: State, group: str, link: str, partner: str, about: str, at: str) -> str:
     """R^t of the outer pair at ``at`` from the moment equation of the link about ``about``."""
     b = st.b
     total = _moment_sum(st, group, link, about, st.terms[link], f"t.{link}")
@@ -484,16 +183,16 @@ def _tangential(st: _State, group: str, link: str, partner: str, about: str, at:
                   f"R^t_{pair_key(partner, link)}", group, subject=(at, about, st.label(total)))
 
 
-def _rows(terms: list[Term]) -> list[tuple[str, str, str]]:
+def _rows(terms: list[Term]) -> list[Row]:
     return [(t.label, t.direction, t.magnitude) for t in terms if t.force is not None]
 
 
-def _equation(st: _State, group: str, rows: list[tuple[str, str, str]]) -> None:
+def _equation(st: State, group: str, rows: list[Row]) -> None:
     st.b.c.equations[(F, group)] = (" + ".join(r[0] for r in rows) + " = 0", rows)
 
 
 # -- the five dyads --------------------------------------------------------------------------
-def _rrr(st: _State, g: Group) -> None:
+def _rrr(st: State, g: Group) -> None:
     b, gn = st.b, g.name
     l1, l2 = g.links
     p1, p2, k = g.outer1.point, g.outer2.point, g.inner.point
@@ -515,13 +214,13 @@ def _rrr(st: _State, g: Group) -> None:
     _reaction(st, gn, g.outer1, m1, l1, r1)
     _reaction(st, gn, g.outer2, m2, l2, r2)
     _reaction(st, gn, g.inner, l2, l1, r21)
-    _equation(st, gn, [(st.label(t1), f"⊥ {p1}{k}", "✓"), *_rows(st.terms[l1]),
-                       *_rows(st.terms[l2]), (st.label(t2), f"⊥ {p2}{k}", "✓"),
-                       (f"R^n_{pair_key(m2, l2)}", f"∥ {p2}{k}", "?"),
-                       (f"R^n_{pair_key(m1, l1)}", f"∥ {p1}{k}", "?")])
+    _equation(st, gn, [(st.label(t1), perp_to(f"{p1}{k}"), "✓"), *_rows(st.terms[l1]),
+                       *_rows(st.terms[l2]), (st.label(t2), perp_to(f"{p2}{k}"), "✓"),
+                       (f"R^n_{pair_key(m2, l2)}", parallel_to(f"{p2}{k}"), "?"),
+                       (f"R^n_{pair_key(m1, l1)}", parallel_to(f"{p1}{k}"), "?")])
 
 
-def _rrp(st: _State, g: Group) -> None:
+def _rrp(st: State, g: Group) -> None:
     b, gn = st.b, g.name
     l1, l2 = g.links
     p1, k = g.outer1.point, g.inner.point
@@ -544,12 +243,12 @@ def _rrp(st: _State, g: Group) -> None:
                            [*st.terms[l2], Term(f"R_{pair_key(l1, l2)}", r12, b.pos[k])],
                            f"M_{pair_key(m2, l2)}")
     _reaction(st, gn, g.outer2, m2, l2, r2, couple)
-    _equation(st, gn, [(st.label(t1), f"⊥ {p1}{k}", "✓"), *_rows(st.terms[l1]),
-                       *_rows(st.terms[l2]), (f"R_{pair_key(m2, l2)}", f"⊥ {guide}", "?"),
-                       (f"R^n_{pair_key(m1, l1)}", f"∥ {p1}{k}", "?")])
+    _equation(st, gn, [(st.label(t1), perp_to(f"{p1}{k}"), "✓"), *_rows(st.terms[l1]),
+                       *_rows(st.terms[l2]), (f"R_{pair_key(m2, l2)}", perp_to(f"{guide}"), "?"),
+                       (f"R^n_{pair_key(m1, l1)}", parallel_to(f"{p1}{k}"), "?")])
 
 
-def _rpr(st: _State, g: Group) -> None:
+def _rpr(st: State, g: Group) -> None:
     b, gn = st.b, g.name
     s, c = g.inner.a, g.inner.b
     outer = {g.links[0]: g.outer1, g.links[1]: g.outer2}
@@ -578,11 +277,11 @@ def _rpr(st: _State, g: Group) -> None:
     r_c = _between(st, gn, z, y, f"R_{pair_key(mc, c)}", "Rc")
     _reaction(st, gn, outer[s], ms, s, r_s)
     _reaction(st, gn, outer[c], mc, c, r_c)
-    _equation(st, gn, [*_rows(st.terms[s]), (f"R_{pair_key(c, s)}", f"⊥ {guide}", "✓"),
-                       (f"R_{pair_key(ms, s)}", "?", "?")])
+    _equation(st, gn, [*_rows(st.terms[s]), (f"R_{pair_key(c, s)}", perp_to(f"{guide}"), "✓"),
+                       (f"R_{pair_key(ms, s)}", UNKNOWN, "?")])
 
 
-def _prp(st: _State, g: Group) -> None:
+def _prp(st: State, g: Group) -> None:
     b, gn = st.b, g.name
     l1, l2 = g.links
     k = g.inner.point
@@ -606,11 +305,11 @@ def _prp(st: _State, g: Group) -> None:
     _reaction(st, gn, g.outer1, m1, l1, r1, c1)
     _reaction(st, gn, g.outer2, m2, l2, r2, c2)
     _equation(st, gn, [*_rows(st.terms[l1]), *_rows(st.terms[l2]),
-                       (f"R_{pair_key(m2, l2)}", f"⊥ {g2}", "?"),
-                       (f"R_{pair_key(m1, l1)}", f"⊥ {g1}", "?")])
+                       (f"R_{pair_key(m2, l2)}", perp_to(f"{g2}"), "?"),
+                       (f"R_{pair_key(m1, l1)}", perp_to(f"{g1}"), "?")])
 
 
-def _rpp(st: _State, g: Group) -> None:
+def _rpp(st: State, g: Group) -> None:
     b, gn = st.b, g.name
     l1, l2 = g.links
     p1, oi = g.outer1.point, g.inner.point
@@ -639,12 +338,12 @@ def _rpp(st: _State, g: Group) -> None:
     _reaction(st, gn, g.inner, l1, l2, r12, c12)
     _reaction(st, gn, g.outer1, m1, l1, r1)
     _reaction(st, gn, g.outer2, m2, l2, r2, c2)
-    _equation(st, gn, [*_rows(st.terms[l2]), (f"R_{pair_key(m2, l2)}", f"⊥ {go}", "?"),
-                       (f"R_{pair_key(l1, l2)}", f"⊥ {gi}", "?")])
+    _equation(st, gn, [*_rows(st.terms[l2]), (f"R_{pair_key(m2, l2)}", perp_to(f"{go}"), "?"),
+                       (f"R_{pair_key(l1, l2)}", perp_to(f"{gi}"), "?")])
 
 
 # -- the driving link and Zhukovsky's lever --------------------------------------------------
-def _driving_link(st: _State) -> None:
+def _driving_link(st: State) -> None:
     b = st.b
     drive = b.mech.drive
     link, pivot = drive.link, drive.pivot
@@ -660,10 +359,10 @@ def _driving_link(st: _State) -> None:
     pair = next(p for p in b.mech.pairs_of(link)
                 if p.other(link) == GROUND and p.kind is PairKind.REVOLUTE)
     _reaction(st, gn, pair, GROUND, link, r01)
-    _equation(st, gn, [*_rows(terms), (f"R_{pair_key(GROUND, link)}", "?", "?")])
+    _equation(st, gn, [*_rows(terms), (f"R_{pair_key(GROUND, link)}", UNKNOWN, "?")])
 
 
-def _lever(st: _State) -> None:
+def _lever(st: State) -> None:
     """Zhukovsky's lever: every load at its velocity image turned by 90°, moments about p."""
     b = st.b
     drive = b.mech.drive

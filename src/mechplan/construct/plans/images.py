@@ -66,7 +66,11 @@ def coincident(b: Builder, link: str, point: str, plan: Plan, group: str) -> str
     """Image of the point of ``link`` under the named point (e.g. A3: A on the coulisse 3)."""
     if link == GROUND:
         return pole(plan)
-    label = (vlabel(point) + link) if not any(ch.isdigit() for ch in point) else f"{vlabel(point)}_{link}"
+    label = (
+        (vlabel(point) + link)
+        if not any(ch.isdigit() for ch in point)
+        else f"{vlabel(point)}_{link}"
+    )
     if plan is Plan.ACCELERATION:
         label += "′"
     key = f"{point}@{link}"
@@ -114,7 +118,8 @@ def link_scalar(b: Builder, link: str, source_link: str, plan: Plan, group: str)
     prefix = "vel.omega" if plan is Plan.VELOCITY else "acc.epsilon"
     body = b.bodies[link]
     if getattr(body, attr) is not None:
-        return getattr(body, attr)
+        known: str = getattr(body, attr)
+        return known
     src = getattr(b.bodies[source_link], attr) if source_link != GROUND else None
     if source_link == GROUND:
         sid = b.add(f"{prefix}.{link}", Op.CONSTANT, (), plan, Kind.SCALAR, Role.RESULT,

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 
 from ...model.mechanism import GROUND, Pair
-from ...model.structure import Group
+from ...model.structure import Group, GroupKind
 from ..builder import Builder
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
@@ -37,7 +37,9 @@ def emit_frame_and_drive(b: Builder) -> None:
                             Role.RESULT, name, group=f"I(0,{drive.link})", subject=(pivot, name),
                             length=crank.distance(pivot, name),
                             offset=_local_angle(b, drive.link, pivot, name) - base)
-        b.segment(P, b.pos[pivot], b.pos[name], f"{pivot}{name}", f"l_{pivot}{name}", SegmentKind.LINK)
+        b.segment(
+            P, b.pos[pivot], b.pos[name], f"{pivot}{name}", f"l_{pivot}{name}", SegmentKind.LINK
+        )
     body = b.bodies[drive.link]
     body.anchor = pivot
     body.angle = theta if base == 0.0 else b.add(
@@ -138,7 +140,8 @@ def locus(b: Builder, link: str, point: str, pair: Pair, partner: str, group: st
 def emit_group(b: Builder, g: Group) -> None:
     """Emit the position construction of one class II group."""
     kind = g.kind
-    {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}[kind](b, g)
+    {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
+     GroupKind.RPP: _rpp}[kind](b, g)
     for link in g.links:
         complete(b, link, g.name)
 

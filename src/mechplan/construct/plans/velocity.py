@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from ...model.mechanism import GROUND
-from ...model.structure import Group
+from ...model.structure import Group, GroupKind
 from ..builder import Builder, Image, vlabel
 from ..segments import SegmentKind
 from ..step import Kind, Op, Plan, Role
+from ..terms import GIVEN, parallel, perp
 from .images import (
     absolute,
     coincident,
@@ -33,15 +34,18 @@ def emit_drive(b: Builder) -> None:
     b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY, (b.pos[drive.pivot], b.pos[tip]), V,
                        Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
                        omega=drive.omega)
-    b.c.equations[(V, group)] = (f"v_{tip} = ω{drive.link} × l_{drive.pivot}{tip}",
-                                 [(f"v_{tip}", f"⊥ {drive.pivot}{tip}", f"ω{drive.link}·l_{drive.pivot}{tip}")])
+    b.c.equations[(V, group)] = (
+        f"v_{tip} = ω{drive.link} × l_{drive.pivot}{tip}",
+        [(f"v_{tip}", perp(f"{drive.pivot}{tip}"), f"ω{drive.link}·l_{drive.pivot}{tip}")],
+    )
     absolute(b, tip, V, group)
     complete(b, drive.link, V, group)
 
 
 def emit_group(b: Builder, g: Group) -> None:
     """Velocity construction of one group, then images of all its points."""
-    {"RRR": _rrr, "RRP": _rrp, "RPR": _rpr, "PRP": _prp, "RPP": _rpp}[g.kind](b, g)
+    {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
+     GroupKind.RPP: _rpp}[g.kind](b, g)
     for link in g.links:
         complete(b, link, V, g.name)
 
@@ -54,7 +58,9 @@ def _omega(b: Builder, link: str, p: str, q_pos: str, vp: str, vq: str, group: s
     return body.omega
 
 
-def _relative(b: Builder, start: str, end: str, quantity: str, kind: SegmentKind, group: str) -> None:
+def _relative(
+    b: Builder, start: str, end: str, quantity: str, kind: SegmentKind, group: str
+) -> None:
     if start == "vel.p":        # relative to a frame point: the absolute segment says it
         return
     b.segment(V, start, end, f"{b.c[start].label}{b.c[end].label}", quantity, kind, group)
@@ -72,8 +78,8 @@ def _rrr(b: Builder, g: Group) -> None:
     _relative(b, b.vel[p2], meet, f"v_{k}{p2}", SegmentKind.RELATIVE, g.name)
     absolute(b, k, V, g.name)
     b.c.equations[(V, g.name)] = (f"v_{k} = v_{p1} + v_{k}{p1} = v_{p2} + v_{k}{p2}", [
-        (f"v_{p1}", "✓", "✓"), (f"v_{k}{p1}", f"⊥ {p1}{k}", "?"),
-        (f"v_{p2}", "✓", "✓"), (f"v_{k}{p2}", f"⊥ {p2}{k}", "?")])
+        (f"v_{p1}", GIVEN, "✓"), (f"v_{k}{p1}", perp(f"{p1}{k}"), "?"),
+        (f"v_{p2}", GIVEN, "✓"), (f"v_{k}{p2}", perp(f"{p2}{k}"), "?")])
 
 
 def _rrp(b: Builder, g: Group) -> None:
@@ -82,8 +88,15 @@ def _rrp(b: Builder, g: Group) -> None:
     m = g.outer2.other(l2)
     locus = locus_id(l2, k, g.outer2.guide)
     km = coincident(b, m, k, V, g.name)
-    meet = meet_lines(b, V, f"vel.{k}", perp_line(b, V, b.vel[p1], p1, k, g.name), parallel_line(b, V, km, locus, g.name),
-                 vlabel(k), g.name)
+    meet = meet_lines(
+        b,
+        V,
+        f"vel.{k}",
+        perp_line(b, V, b.vel[p1], p1, k, g.name),
+        parallel_line(b, V, km, locus, g.name),
+        vlabel(k),
+        g.name,
+    )
     b.vel[k] = meet
     _omega(b, l1, p1, b.pos[k], b.vel[p1], meet, g.name)
     link_scalar(b, l2, m, V, g.name)
@@ -96,9 +109,9 @@ def _rrp(b: Builder, g: Group) -> None:
     b.c.equations[(V, g.name)] = (
         f"v_{k} = v_{p1} + v_{k}{p1} = v_{km_name} + v_{k}{l2}{km_name}" if m != GROUND
         else f"v_{k} = v_{p1} + v_{k}{p1}", [
-            (f"v_{p1}", "✓", "✓"), (f"v_{k}{p1}", f"⊥ {p1}{k}", "?"),
-            *([(f"v_{km_name}", "✓", "✓")] if m != GROUND else []),
-            (f"v_{k}{l2}{km_name}" if m != GROUND else f"v_{k}", f"∥ {guide}", "?")])
+            (f"v_{p1}", GIVEN, "✓"), (f"v_{k}{p1}", perp(f"{p1}{k}"), "?"),
+            *([(f"v_{km_name}", GIVEN, "✓")] if m != GROUND else []),
+            (f"v_{k}{l2}{km_name}" if m != GROUND else f"v_{k}", parallel(f"{guide}"), "?")])
 
 
 def _rpr(b: Builder, g: Group) -> None:
@@ -119,9 +132,15 @@ def _rpr(b: Builder, g: Group) -> None:
     b.segment(V, "vel.p", meet, f"p{label}", f"v_{ps}{c}", SegmentKind.ABSOLUTE, g.name)
     b.result(f"v_{ps}{c}", meet)
     b.result(f"v_rel_{s}{c}", meet)
-    b.c.equations[(V, g.name)] = (f"v_{ps}{c} = v_{ps}{s} + v_{ps}{c}{ps}{s} = v_{pc} + v_{ps}{c}{pc}", [
-        (f"v_{ps}{s}", "✓", "✓"), (f"v_{ps}{c}{ps}{s}", f"∥ {guide.name}", "?"),
-        (f"v_{pc}", "✓", "✓"), (f"v_{ps}{c}{pc}", f"⊥ {pc}{ps}", "?")])
+    b.c.equations[(V, g.name)] = (
+        f"v_{ps}{c} = v_{ps}{s} + v_{ps}{c}{ps}{s} = v_{pc} + v_{ps}{c}{pc}",
+        [
+            (f"v_{ps}{s}", GIVEN, "✓"),
+            (f"v_{ps}{c}{ps}{s}", parallel(f"{guide.name}"), "?"),
+            (f"v_{pc}", GIVEN, "✓"),
+            (f"v_{ps}{c}{pc}", perp(f"{pc}{ps}"), "?"),
+        ],
+    )
 
 
 def _prp(b: Builder, g: Group) -> None:
@@ -130,17 +149,30 @@ def _prp(b: Builder, g: Group) -> None:
     m1, m2 = g.outer1.other(l1), g.outer2.other(l2)
     loc1, loc2 = locus_id(l1, k, g.outer1.guide), locus_id(l2, k, g.outer2.guide)
     k1, k2 = coincident(b, m1, k, V, g.name), coincident(b, m2, k, V, g.name)
-    meet = meet_lines(b, V, f"vel.{k}", parallel_line(b, V, k1, loc1, g.name), parallel_line(b, V, k2, loc2, g.name),
-                 vlabel(k), g.name)
+    meet = meet_lines(
+        b,
+        V,
+        f"vel.{k}",
+        parallel_line(b, V, k1, loc1, g.name),
+        parallel_line(b, V, k2, loc2, g.name),
+        vlabel(k),
+        g.name,
+    )
     b.vel[k] = meet
     link_scalar(b, l1, m1, V, g.name)
     link_scalar(b, l2, m2, V, g.name)
     _relative(b, k1, meet, f"v_{k}{l1}{k}{m1}", SegmentKind.SLIDING, g.name)
     _relative(b, k2, meet, f"v_{k}{l2}{k}{m2}", SegmentKind.SLIDING, g.name)
     absolute(b, k, V, g.name)
-    b.c.equations[(V, g.name)] = (f"v_{k} = v_{k}{m1} + v_{k}{l1}{k}{m1} = v_{k}{m2} + v_{k}{l2}{k}{m2}", [
-        (f"v_{k}{m1}", "✓", "✓"), (f"v_{k}{l1}{k}{m1}", f"∥ {b.c[loc1].label}", "?"),
-        (f"v_{k}{m2}", "✓", "✓"), (f"v_{k}{l2}{k}{m2}", f"∥ {b.c[loc2].label}", "?")])
+    b.c.equations[(V, g.name)] = (
+        f"v_{k} = v_{k}{m1} + v_{k}{l1}{k}{m1} = v_{k}{m2} + v_{k}{l2}{k}{m2}",
+        [
+            (f"v_{k}{m1}", GIVEN, "✓"),
+            (f"v_{k}{l1}{k}{m1}", parallel(f"{b.c[loc1].label}"), "?"),
+            (f"v_{k}{m2}", GIVEN, "✓"),
+            (f"v_{k}{l2}{k}{m2}", parallel(f"{b.c[loc2].label}"), "?"),
+        ],
+    )
 
 
 def _rpp(b: Builder, g: Group) -> None:
@@ -152,13 +184,26 @@ def _rpp(b: Builder, g: Group) -> None:
     x = next(iter(b.mech.links[l2].points))
     loc_ext, loc_in = locus_id(l2, x, g.outer2.guide), locus_id(l2, x, g.inner.guide)
     xm, x1 = coincident(b, m, x, V, g.name), coincident(b, l1, x, V, g.name)
-    meet = meet_lines(b, V, f"vel.{x}", parallel_line(b, V, xm, loc_ext, g.name), parallel_line(b, V, x1, loc_in, g.name),
-                 vlabel(x), g.name)
+    meet = meet_lines(
+        b,
+        V,
+        f"vel.{x}",
+        parallel_line(b, V, xm, loc_ext, g.name),
+        parallel_line(b, V, x1, loc_in, g.name),
+        vlabel(x),
+        g.name,
+    )
     b.vel[x] = meet
     _relative(b, x1, meet, f"v_{x}{l2}{x}{l1}", SegmentKind.SLIDING, g.name)
     if m != GROUND:
         _relative(b, xm, meet, f"v_{x}{l2}{x}{m}", SegmentKind.SLIDING, g.name)
     absolute(b, x, V, g.name)
-    b.c.equations[(V, g.name)] = (f"v_{x} = v_{x}{m} + v_{x}{l2}{x}{m} = v_{x}{l1} + v_{x}{l2}{x}{l1}", [
-        (f"v_{x}{m}", "✓", "✓"), (f"v_{x}{l2}{x}{m}", f"∥ {b.c[loc_ext].label}", "?"),
-        (f"v_{x}{l1}", "✓", "✓"), (f"v_{x}{l2}{x}{l1}", f"∥ {b.c[loc_in].label}", "?")])
+    b.c.equations[(V, g.name)] = (
+        f"v_{x} = v_{x}{m} + v_{x}{l2}{x}{m} = v_{x}{l1} + v_{x}{l2}{x}{l1}",
+        [
+            (f"v_{x}{m}", GIVEN, "✓"),
+            (f"v_{x}{l2}{x}{m}", parallel(f"{b.c[loc_ext].label}"), "?"),
+            (f"v_{x}{l1}", GIVEN, "✓"),
+            (f"v_{x}{l2}{x}{l1}", parallel(f"{b.c[loc_in].label}"), "?"),
+        ],
+    )

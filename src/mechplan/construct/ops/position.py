@@ -1,0 +1,122 @@
+"""Operations of the position plan: frame points, the crank, compass arcs, guides, link points."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geom import meet
+from ...geom.vec import Array, angle_of, direction, rotate
+from ..step import Op, Step
+from .spec import Drawn, Grade, Line, OpSpec, Result, Source, Written, line, to_complex, to_real
+
+
+def fixed_point(step: Step, n: int) -> Result:
+    """A point of the frame: ``xy`` at every position."""
+    xy = np.asarray(step.param("xy"), dtype=float)
+    return np.tile(xy, (n, 1)), None, None
+
+
+def constant(step: Step, n: int) -> Result:
+    """A given scalar ``value`` (ω1, a guide angle)."""
+    return np.full(n, float(step.param("value"))), None, None
+
+
+def polar_point(step: Step, centre: Array, angle: Array) -> Result:
+    """The crank pin: ``length`` from the centre at the angle (+ ``offset``)."""
+    return centre + step.param("length") * direction(angle + step.param("offset", 0.0)), None, None
+
+
+def angle_of_segment(step: Step, start: Array, end: Array) -> Result:
+    """Direction of the segment start → end, less ``minus``."""
+    return angle_of(end - start) - step.param("minus", 0.0), None, None
+
+
+def angle_plus(step: Step, angle: Array) -> Result:
+    """An angle plus the constant ``delta`` (a slider turning with its guide)."""
+    return angle + step.param("delta"), None, None
+
+
+def circle_circle(step: Step, centre1: Array, centre2: Array) -> Result:
+    """Two compass arcs of radii ``r1``, ``r2`` meet (branch ``sigma``)."""
+    return meet.circle_circle(centre1, step.param("r1"), centre2, step.param("r2"),
+                              step.param("sigma"))
+
+
+def circle_line(step: Step, centre: Array, guide: Array) -> Result:
+    """A compass arc of radius ``r`` cuts a guide line (branch ``sigma``)."""
+    return meet.circle_line(centre, step.param("r"), guide[..., 0, :], guide[..., 1, :],
+                            step.param("sigma"))
+
+
+def line_line(step: Step, line1: Array, line2: Array) -> Result:
+    """Two lines meet."""
+    return meet.line_line(line1[..., 0, :], line1[..., 1, :], line2[..., 0, :], line2[..., 1, :])
+
+
+def locus_line(step: Step, base: Array, *angle: Array) -> Result:
+    """The line a point of a sliding link lies on: through base + ``offset`` at ``dir_angle``.
+
+    Without an angle the guide belongs to the frame; with one it turns with its link.
+    """
+    offset = np.asarray(step.param("offset"), dtype=base.dtype)
+    if not angle:
+        # a guide of the frame: the same direction at every position; rotating by a zero angle
+        # and taking cos/sin once give the values the per-position evaluation would
+        zero = np.zeros(1, dtype=base.dtype)
+        point = base + rotate(offset, zero)
+        return line(point, direction(zero + step.param("dir_angle"))), None, None
+    theta = angle[0]
+    c, s = np.cos(theta), np.sin(theta)
+    # rotate(offset, theta) with the cosine and sine computed once
+    point = base + np.stack((c * offset[0] - s * offset[1], s * offset[0] + c * offset[1]), axis=-1)
+    dir_angle = step.param("dir_angle")
+    u = np.stack((c, s), axis=-1) if dir_angle == 0.0 else direction(theta + dir_angle)
+    return line(point, u), None, None
+
+
+def carrier_angle(step: Step, pivot: Array, slider: Array) -> Result:
+    """Angle of a guide carrier pivoting at ``pivot`` whose guide must pass through ``slider``."""
+    rel = slider - pivot
+    q0 = np.asarray(step.param("q0"), dtype=rel.dtype)
+    d = direction(np.asarray(step.param("dir_angle"), dtype=rel.dtype))
+    radius = np.hypot(rel[..., 0], rel[..., 1])
+    # the circle's centre and the guide are the same at every position: pass them once, (1, 2),
+    # and let numpy broadcast (same values as (N, 2) copies, without N-sized work on constants)
+    origin = np.zeros((1, 2), dtype=rel.dtype)
+    hit, gap, sine = meet.circle_line(origin, radius, q0[None, :], d[None, :], step.param("sigma"))
+    return angle_of(rel) - angle_of(hit), gap, sine
+
+
+def place(step: Step, origin: Array, angle: Array) -> Result:
+    """A point of a link: ``offset`` in link coordinates from the origin, turned by the angle."""
+    return origin + rotate(np.asarray(step.param("offset"), dtype=origin.dtype), angle), None, None
+
+
+def similar_position(step: Step, a: Array, b: Array) -> Result:
+    """A point on the known side ab with the link's shape (complex ratio ``z``)."""
+    za, zb = to_complex(a), to_complex(b)
+    return to_real(za + (zb - za) * step.param("z")), None, None
+
+
+SPECS = (
+    OpSpec(Op.CRANK_ANGLE, None, "protocol.op.crank_angle", source=Source.DRIVE,
+           written=Written.ANGLE),
+    OpSpec(Op.FIXED_POINT, fixed_point, None, Drawn.POINT, source=Source.POSITIONS),
+    OpSpec(Op.CONSTANT, constant, "protocol.op.constant", source=Source.POSITIONS),
+    OpSpec(Op.POLAR_POINT, polar_point, "protocol.op.polar_point", Drawn.POINT, Line.OUTLINE,
+           Grade.POINT),
+    OpSpec(Op.ANGLE_OF, angle_of_segment, "protocol.op.angle_of", written=Written.ANGLE),
+    OpSpec(Op.ANGLE_PLUS, angle_plus, "protocol.op.angle_plus", written=Written.ANGLE),
+    OpSpec(Op.CIRCLE_CIRCLE, circle_circle, "protocol.op.circle_circle", Drawn.POINT,
+           Line.OUTLINE, Grade.POINT),
+    OpSpec(Op.CIRCLE_LINE, circle_line, "protocol.op.circle_line", Drawn.POINT, Line.OUTLINE,
+           Grade.POINT),
+    OpSpec(Op.LINE_LINE, line_line, "protocol.op.line_line", Drawn.MEET, Line.NONE, Grade.MEET,
+           "hint.meet", written=Written.MEET),
+    OpSpec(Op.LOCUS_LINE, locus_line, "protocol.op.locus_line", Drawn.CONSTRUCTION_LINE,
+           Line.DASHED, Grade.DIRECTION),
+    OpSpec(Op.CARRIER_ANGLE, carrier_angle, "protocol.op.carrier_angle", written=Written.ANGLE),
+    OpSpec(Op.PLACE, place, "protocol.op.place", Drawn.POINT, Line.OUTLINE, Grade.POINT),
+    OpSpec(Op.SIMILAR_POSITION, similar_position, "protocol.op.similar_position", Drawn.POINT,
+           Line.OUTLINE, Grade.POINT),
+)

@@ -1,0 +1,61 @@
+"""Label placement: try positions around a point, keep the one that crosses the fewest lines."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+from shapely import STRtree, box
+from shapely.geometry import LineString
+
+from .fonts import text_width_mm
+from .primitives import Arrow, HAlign, Line, Polyline, Primitive, Text, VAlign
+
+#: candidate directions (degrees), right-above first as draftsmen usually write
+_DIRECTIONS = (45, 135, 315, 225, 0, 90, 180, 270, 22, 158, 338, 202)
+
+
+class LabelPlacer:
+    """Place labels near anchors avoiding the given lines and each other."""
+
+    def __init__(self, obstacles: Sequence[Primitive], height_mm: float) -> None:
+        geoms = []
+        for p in obstacles:
+            if isinstance(p, (Line, Arrow)):
+                geoms.append(LineString([p.start, p.end]))
+            elif isinstance(p, Polyline):
+                pts = list(p.points) + ([p.points[0]] if p.closed else [])
+                geoms.append(LineString(pts))
+        self.lines = geoms
+        self.tree = STRtree(geoms) if geoms else None
+        self.placed: list = []
+        self.h = height_mm
+
+    def _cost(self, rect) -> float:
+        cost = 0.0
+        if self.tree is not None:
+            for i in self.tree.query(rect):
+                cost += self.lines[int(i)].intersection(rect).length
+        for other in self.placed:
+            if other.intersects(rect):
+                cost += 100.0 + other.intersection(rect).area
+        return cost
+
+    def place(self, anchor: tuple[float, float], text: str) -> Text:
+        """Return the label as a Text at the best free spot around ``anchor``."""
+        w = text_width_mm(text, self.h)
+        best = None
+        for gap in (1.2, 2.5, 4.0):
+            for deg in _DIRECTIONS:
+                a = math.radians(deg)
+                cx = anchor[0] + math.cos(a) * (gap + w / 2)
+                cy = anchor[1] + math.sin(a) * (gap + self.h / 2)
+                rect = box(cx - w / 2, cy - self.h / 2 - 0.3, cx + w / 2, cy + self.h / 2 + 0.3)
+                cost = self._cost(rect) + 0.05 * gap
+                if best is None or cost < best[0]:
+                    best = (cost, cx, cy, rect)
+            if best is not None and best[0] < 0.2:
+                break
+        assert best is not None
+        self.placed.append(best[3])
+        return Text((best[1], best[2]), text, self.h, halign=HAlign.CENTER, valign=VAlign.MIDDLE)

@@ -1,0 +1,89 @@
+"""Zhukovsky's lever on a sheet: the velocity plan turned by 90° with every load at its image."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..construct.graph import Construction, Evaluation
+from ..construct.ops import Drawn, spec
+from ..construct.ops.force import lever_terms
+from ..construct.segments import SegmentKind
+from ..construct.step import Plan
+from ..drafting.labels import LabelPlacer
+from ..drafting.primitives import Arrow, Circle, Line, Role, Text
+from ..i18n import message
+from ..i18n import number as format_number
+from .panels import LABEL_H, TABLE_H, TITLE_H, Panel, _finite, mu_text
+
+
+def lever_title(lang: str, phi_deg: float) -> str:
+    """ "Zhukovsky's lever — φ = 30.0°" (the angle always with a decimal point, as drawn before)."""
+    return f"{message('sheet.lever.title', lang)} — φ = {phi_deg:.1f}°"
+
+
+def zhukovsky_lever(
+    c: Construction, ev: Evaluation, k: int, mu_v: float, lang: str, title: str
+) -> Panel | None:
+    """The velocity plan turned by 90° with every load at the image of its point."""
+    lever = next((s for s in c.of_plan(Plan.FORCE) if spec(s.op).draw is Drawn.LEVER), None)
+    if lever is None or lever.id not in ev.values:
+        return None
+    panel = Panel(f"force-{k}-lever", plan=Plan.FORCE)
+    prims = panel.primitives
+
+    def turned(v: np.ndarray) -> tuple[float, float]:
+        return (-float(v[1]) / mu_v, float(v[0]) / mu_v)
+
+    for seg in c.segments:
+        if (
+            seg.plan is Plan.VELOCITY
+            and seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE)
+            and seg.start in ev.values
+            and seg.end in ev.values
+        ):
+            a, b = turned(ev[seg.start][k]), turned(ev[seg.end][k])
+            if _finite(a, b) and math.dist(a, b) > 0.5:
+                prims.append(Line(a, b, Role.THIN))
+    forces: list[tuple[tuple[float, float], np.ndarray, str]] = []
+    couples: list[str] = []
+    for term in lever_terms(lever):
+        if term.kind == "F":
+            forces.append((turned(ev[term.first][k]), ev[term.second][k], c[term.second].label))
+        else:
+            couples.append(
+                f"{c[term.first].label} = {format_number(float(ev[term.first][k]), 2, lang)} N·m"
+            )
+    largest = max((float(np.hypot(*f)) for _, f, _ in forces), default=0.0)
+    if largest > 0:
+        from ..construct.scale import choose_scale
+
+        mu_f = choose_scale(largest, 40.0)
+        placer_items: list[tuple[tuple[float, float], str]] = []
+        for at, f, label in forces:
+            tip = (at[0] + float(f[0]) / mu_f, at[1] + float(f[1]) / mu_f)
+            if _finite(at, tip) and math.dist(at, tip) > 0.5:
+                prims.append(Arrow(at, tip, Role.OUTLINE, head_length_mm=3.0, head_width_mm=1.0))
+                placer_items.append((tip, label))
+        prims.append(Circle((0.0, 0.0), 0.8, Role.OUTLINE))
+        placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
+        prims.append(placer.place((0.0, 0.0), "p"))
+        for at, label in placer_items:
+            prims.append(placer.place(at, label))
+        x0, y0, _x1, y1 = panel.bounds()
+        prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
+        prims.append(
+            Text(
+                (x0, y1 + 3.0),
+                f"{mu_text(Plan.VELOCITY, mu_v, lang)};  {mu_text(Plan.FORCE, mu_f, lang)}",
+                LABEL_H,
+            )
+        )
+        y = y0 - 6.0
+        for line in couples + [
+            f"{lever.label} = {format_number(float(ev[lever.id][k]), 2, lang)} N·m"
+        ]:
+            prims.append(Text((x0, y), line, TABLE_H))
+            y -= 4.5
+    return panel if prims else None
