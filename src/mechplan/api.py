@@ -36,6 +36,9 @@ SceneSource = str | os.PathLike[str] | Mapping[str, Any]
 
 
 def _frozen(a: Any) -> np.ndarray:
+    """A read-only float array: the evaluation's own read-only arrays are shared, not copied."""
+    if isinstance(a, np.ndarray) and a.dtype == float and not a.flags.writeable:
+        return a
     out = np.array(a, dtype=float, copy=True)
     out.flags.writeable = False
     return out
@@ -260,7 +263,7 @@ class Mechanism:
             if arr.ndim != 1 or arr.size == 0 or not np.all(np.isfinite(arr)):
                 raise MechplanError(f"phi_deg must be finite crank angles in degrees "
                                     f"(got {phi_deg!r})")
-            at = [float(x) for x in arr]
+            at = arr
         chosen = self._plans(plans)
         if fast is not False and "force" not in chosen:
             quick = self._solve_fast(chosen, at, positions)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -132,7 +133,8 @@ def choose_scales(
     return out
 
 
-def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = None,
+def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
+          count: int | None = None,
           plans: tuple[str, ...] | None = None, loading: Any = None,
           max_condition: float = MAX_CONDITION, tolerance: float = DEFAULT_TOLERANCE, *,
           built: tuple[Structure, Construction] | None = None,
@@ -148,14 +150,15 @@ def solve(scene: Scene, at_deg: list[float] | None = None, count: int | None = N
     """
     plans = plans or scene.plans
     structure, c = built or build(scene, plans, loading)
-    if at_deg:
+    requested = at_deg is not None and len(at_deg) > 0
+    if requested:
         phi = np.radians(np.asarray(at_deg, dtype=float))
     else:
         phi = crank_positions(scene, c, count)
-    individually = bool(at_deg) or (count is None and bool(scene.positions.angles))
+    individually = requested or (count is None and bool(scene.positions.angles))
     targets = targets_for(scene, c, plans)
     ensure_within_budget(int(phi.shape[0]), len(c.ancestors(targets)), file=scene.path,
-                         key=None if at_deg or count else "positions.count")
+                         key=None if requested or count else "positions.count")
     ev = c.evaluate(phi)
     ev.evaluate_all(targets)
     estimate = estimate_errors(c, ev, targets)

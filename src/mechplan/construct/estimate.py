@@ -43,6 +43,7 @@ class ErrorEstimate:
     #: max(1, |value| / scale) of the results: a result larger than its plan (a slider running
     #: far out, an acceleration blowing up near a toggle) is measured against its own size
     divisor: dict[str, Array] = field(default_factory=dict)
+    _relative: dict[str, Array] = field(default_factory=dict, repr=False)   # memo of relative()
 
     def __contains__(self, step_id: str) -> bool:
         return step_id in self.relative_of
@@ -52,11 +53,16 @@ class ErrorEstimate:
 
         Relative to the larger of the plan's scale and the result's own size.
         """
+        if step_id in self._relative:
+            return self._relative[step_id]
         rel = self.relative_of[step_id].astype(float)
         if step_id in self.divisor:
             with np.errstate(invalid="ignore", divide="ignore"):
                 rel = rel / self.divisor[step_id]
-        return np.where(np.isnan(rel), np.inf, rel)
+        rel[np.isnan(rel)] = np.inf
+        rel.flags.writeable = False
+        self._relative[step_id] = rel
+        return rel
 
     def absolute(self, step_id: str) -> Array:
         """Estimated absolute error of a step in its own units (m, m/s, rad/s, N …)."""

@@ -1,0 +1,133 @@
+"""The public solve path — numpy and fused (numba) — against a numpy closed form and pylinkage.
+
+Run from a clone with the bench extra (``pip install -e ".[bench,fast]"``):
+``python benchmarks/kernel.py [--quick]``; writes ``benchmarks/KERNEL_RESULTS.md``. All methods are
+timed side by side in one process (best of several runs; this machine is shared and noisy, so read
+the ratios, not the absolute times). Every method computes positions, velocities and accelerations
+of the same points and ω, ε of the same links.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import platform
+import sys
+import tempfile
+import time
+import tracemalloc
+from collections.abc import Callable
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from mechplan_bench.config import CASES  # noqa: E402
+from mechplan_bench.formulas import closed_form  # noqa: E402
+from mechplan_bench.model import Model  # noqa: E402
+from mechplan_bench.peers import installed, pylinkage_runner  # noqa: E402
+
+import mechplan  # noqa: E402
+from mechplan.fast import numba_available  # noqa: E402
+
+KINEMATIC = ("position", "velocity", "acceleration")
+
+
+def best(run: Callable[[], object], budget_s: float, max_runs: int = 50) -> float:
+    """Best wall time of repeated runs within a time budget (at least 3 runs)."""
+    times: list[float] = []
+    start = time.perf_counter()
+    while len(times) < 3 or (time.perf_counter() - start < budget_s and len(times) < max_runs):
+        t0 = time.perf_counter()
+        run()
+        times.append(time.perf_counter() - t0)
+    return min(times)
+
+
+def peak_mib(run: Callable[[], object]) -> float:
+    """Peak traced memory of one run (numpy allocations are traced), MiB."""
+    tracemalloc.start()
+    run()
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    return peak / 2**20
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--quick", action="store_true", help="N up to 1e5, shorter budgets")
+    args = ap.parse_args()
+    if not numba_available():
+        raise SystemExit("install the fast extra: pip install -e '.[fast]'")
+    os.environ.setdefault("MECHPLAN_CACHE", tempfile.mkdtemp(prefix="mechplan-kernels-"))
+    ns = (1, 1_000, 100_000) if args.quick else (1, 1_000, 100_000, 1_000_000)
+    budget = 0.5 if args.quick else 2.0
+    lines = ["# Compiled construction: the public path against peers", "",
+             f"Machine: {platform.machine()}, {os.cpu_count()} cores (shared), Python "
+             f"{platform.python_version()}, numpy {np.__version__}. Times per position in ns "
+             "(N = 1: per call in µs), best of repeated runs in one process.", "",
+             "| mechanism | N | public numpy | public fused | closed form (numpy) | pylinkage+numba "
+             "| fused / closed form | fused / pylinkage | numpy / closed form |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    compile_rows = []
+    memory_rows = []
+    for name in ("four_bar", "slider_crank", "v_engine"):
+        model = Model.load(CASES[name])
+        m = mechplan.load(ROOT / "templates" / f"{name}.toml")
+        t0 = time.perf_counter()
+        m.solve(phi_deg=[10.0], plans=KINEMATIC, fast=True)          # compile (or load the cache)
+        first = time.perf_counter() - t0
+        m2 = mechplan.load(ROOT / "templates" / f"{name}.toml")
+        t0 = time.perf_counter()
+        m2.solve(phi_deg=[10.0], plans=KINEMATIC, fast=True)         # from the on-disk cache
+        cached = time.perf_counter() - t0
+        compile_rows.append(f"| {name} | {first:.2f} s | {cached * 1e3:.1f} ms |")
+        for n in ns:
+            phi = model.phi(n)
+            phi_deg = np.degrees(phi)
+            runs: dict[str, Callable[[], object] | None] = {
+                "numpy": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=False),
+                "fused": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=True),
+                "closed": closed_form(model, phi),
+                "pylinkage": pylinkage_runner(model, phi) if installed("pylinkage") and n > 1
+                else None,
+            }
+            t = {k: (best(r, budget) if r is not None else math.nan) for k, r in runs.items()}
+            scale = 1e6 if n == 1 else 1e9 / n
+            unit = " µs" if n == 1 else ""
+
+            def cell(x: float) -> str:
+                return "—" if math.isnan(x) else f"{x * scale:.1f}{unit}" if n == 1 else f"{x * scale:.0f}"
+
+            def ratio(a: float, b: float) -> str:
+                return "—" if math.isnan(a) or math.isnan(b) else f"{a / b:.2f}×"
+            lines.append(f"| {name} | {n:,} | {cell(t['numpy'])} | {cell(t['fused'])} | "
+                         f"{cell(t['closed'])} | {cell(t['pylinkage'])} | "
+                         f"{ratio(t['fused'], t['closed'])} | {ratio(t['fused'], t['pylinkage'])} "
+                         f"| {ratio(t['numpy'], t['closed'])} |")
+            print(lines[-1], flush=True)
+            if n == ns[-1]:
+                memory_rows.append(
+                    f"| {name} | {n:,} | {peak_mib(runs['fused']):.0f} MiB | "
+                    f"{peak_mib(runs['numpy']):.0f} MiB |")
+    lines += ["", "## Compile time of the fused kernel", "",
+              "| mechanism | first call (JIT compile) | new process, same mechanism (on-disk cache) |",
+              "|---|---|---|", *compile_rows,
+              "", "The kernel source is written to the cache folder (`MECHPLAN_CACHE`, default "
+              "`~/.cache/mechplan/kernels`) and compiled with `numba.njit(cache=True)`, so other "
+              "processes load it instead of compiling; the table's second column is a fresh "
+              "`Mechanism` in the same process reading that cache.",
+              "", "## Peak memory at the largest N (tracemalloc)", "",
+              "| mechanism | N | public fused | public numpy |", "|---|---|---|---|", *memory_rows,
+              "", "The fused path allocates only the requested outputs (points (N, 2), links (N,)) "
+              "and their (N, outputs) estimates; the numpy path keeps every step's values."]
+    out = ROOT / "benchmarks" / "KERNEL_RESULTS.md"
+    out.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    print(f"written {out}")
+
+
+if __name__ == "__main__":
+    main()
