@@ -38,6 +38,12 @@ def _solve(args: argparse.Namespace) -> int:
         print(json.dumps(study.to_json(), ensure_ascii=False, indent=1))
     else:
         print(study.report(args.lang))
+    if args.csv:
+        write_csv = getattr(study, "write_csv", None)
+        if write_csv is None:
+            raise MechplanError(f"--csv writes the per-angle table of an engine scene; "
+                                f"{args.scene} has none")
+        write_csv(args.csv)
     warnings = study.warnings(args.lang) if isinstance(study, MechanismStudy) else []
     for line in warnings:
         print(line, file=sys.stderr)
@@ -150,6 +156,8 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("--lang", choices=LANGUAGE_CHOICES)
     s.add_argument("--json", action="store_true", help="one JSON document, SI units")
     s.add_argument("--stats", action="store_true", help="print step counts to stderr")
+    s.add_argument("--csv", metavar="PATH",
+                   help="write the per-angle table (engine scenes) as CSV")
     s.set_defaults(func=_solve)
     d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG",
                        description="Draw the sheets of one or more scenes. A scene that fails is "

@@ -213,8 +213,10 @@ class EngineStudy:
         return buf.getvalue()
 
     def write_csv(self, path: str | Path, dense: bool = False) -> None:
-        """Write :meth:`to_csv` to a file."""
-        Path(path).write_text(self.to_csv(dense), encoding="utf-8")
+        """Write :meth:`to_csv` to a file (atomically: never a half-written file)."""
+        from ..render.atomic import write_atomic
+
+        write_atomic(path, self.to_csv(dense).encode("utf-8"))
 
     def sheets(self, size: str | None, standard: str | None, language: str | None,
                name: str) -> list[Sheet]:
