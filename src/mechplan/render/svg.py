@@ -29,6 +29,7 @@ from mechplan.drafting.primitives import (
     Text,
 )
 from mechplan.errors import DrawingError
+from mechplan.render.svg_fonts import font_faces_css
 
 #: Paint order of the role groups (text on top, thick lines over thin ones).
 ROLE_ORDER: tuple[Role, ...] = (Role.FILL, Role.THIN, Role.DASHED, Role.CHAIN, Role.DIMENSION,
@@ -153,6 +154,9 @@ class _Writer:
         title = self.sheet.attributes.get("title")
         if title:
             d.set_desc(title=title)
+        faces = font_faces_css(self.sheet)
+        if faces:
+            d.defs.add(d.style(faces))
         d.add(d.rect((0, 0), (_n(self.sheet.width_mm), _n(self.h)), fill="white", stroke="none"))
         self.add_all(d, self.sheet.primitives)
         return d
