@@ -172,6 +172,7 @@ class _Propagator:
             if sid not in self.ev.values:
                 continue
             step = self.c[sid]
+            rel: Array
             if not step.inputs:
                 rel = np.full(n, u, self.dtype)
             else:
@@ -234,7 +235,8 @@ def _magnitude_divisor(value: Array, scale: float, dtype: type) -> Array:
     else:
         size = np.abs(value)
     with np.errstate(invalid="ignore", over="ignore"):
-        return np.maximum(size / scale, 1.0).astype(dtype)
+        out: Array = np.maximum(size / scale, 1.0).astype(dtype)
+    return out
 
 
 def estimate_errors(c: Construction, ev: Evaluation,
