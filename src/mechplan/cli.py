@@ -1,4 +1,4 @@
-"""Command line: mechplan solve | draw | check | bench | new."""
+"""Command line: mechplan solve | draw | check | bench | batch | sweep | new."""
 
 from __future__ import annotations
 
@@ -77,11 +77,13 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--lang", choices=("en", "ru", "vi", "zh"))
     d.add_argument("--standard", choices=("iso", "gost", "tcvn"))
     d.set_defaults(func=_draw)
+    from .batch.cli import add_parser as add_batch
     from .bench import add_parser as add_bench
     from .check.cli import add_parser as add_check
 
     add_check(sub)
     add_bench(sub)
+    add_batch(sub)
     n = sub.add_parser("new", help="start a scene from a bundled template")
     n.add_argument("template")
     n.add_argument("-o", "--output")
