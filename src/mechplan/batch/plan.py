@@ -71,7 +71,7 @@ class Summaries:
     acceleration: dict[str, str] = field(default_factory=dict)
     omega: dict[str, str] = field(default_factory=dict)          # link → step id
     epsilon: dict[str, str] = field(default_factory=dict)
-    #: group name → (kind "RRR"/"RRP", (p1, p2, p3) position step ids, guide name or "")
+    #: group ("2_3": its links) → (kind "RRR"/"RRP", (p1, p2, p3) position step ids, guide name or "")
     groups: dict[str, tuple[str, tuple[str, str, str], str]] = field(default_factory=dict)
     moment: str | None = None                                    # M_b step id
 
@@ -275,10 +275,10 @@ def _summaries(scene: Any, c: Construction) -> Summaries:
     for g in _structure_groups(scene):
         p1, p2, p3 = g.outer1.point, g.inner.point, g.outer2.point
         if g.kind == "RRR":
-            out.groups[g.name] = ("RRR", (c.position(p1), c.position(p2), c.position(p3)), "")
+            out.groups["_".join(g.links)] = ("RRR", (c.position(p1), c.position(p2), c.position(p3)), "")
         elif (g.kind == "RRP" and g.outer2.kind is PairKind.PRISMATIC and g.outer2.guide
               and mech.guides[g.outer2.guide].link == GROUND):
-            out.groups[g.name] = ("RRP", (c.position(p1), c.position(p2), c.position(p2)),
+            out.groups["_".join(g.links)] = ("RRP", (c.position(p1), c.position(p2), c.position(p2)),
                                   g.outer2.guide)
     if "M_b" in c.results:
         out.moment = c.results["M_b"]

@@ -136,7 +136,7 @@ def _summarise(plan: SweepPlan, buf: dict[str, np.ndarray], guide_angle: dict[st
                 cos = np.abs(u[..., 0] * np.cos(g) + u[..., 1] * np.sin(g)) / np.hypot(
                     u[..., 0], u[..., 1])
             gamma = 90.0 - np.degrees(np.arccos(np.clip(cos, 0.0, 1.0)))
-        cols[f"min_gamma_{name.strip('II()').replace(',', '_')}"] = np.fmin.reduce(gamma, axis=1)
+        cols[f"min_gamma_{name}"] = np.fmin.reduce(gamma, axis=1)
     if summ.moment:
         cols["max_M_b"] = _fmax(np.abs(buf[summ.moment]))
 

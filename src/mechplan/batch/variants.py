@@ -51,7 +51,7 @@ class Rule:
         if self.choices:
             return self.choices[int(rng.integers(len(self.choices)))]
         if self.step:
-            count = int(math.floor((self.high - self.low) / self.step + 1e-9))
+            count = math.floor((self.high - self.low) / self.step + 1e-9)
             value = self.low + self.step * int(rng.integers(count + 1))
             value = round(value, 12)
         else:
