@@ -6,7 +6,6 @@ import json
 from pathlib import Path
 
 import pyarrow.parquet as pq
-import pytest
 
 from mechplan.batch import Variant, run_class
 from mechplan.batch.plan import parse_vary
@@ -19,8 +18,13 @@ CLASS = [Variant("a", "A", {"links.1.lengths.OA": "90 mm"}),
 AXES = [parse_vary("links.1.lengths.OA=80mm..120mm:5"), parse_vary("links.2.lengths.AB=300mm..400mm:4")]
 
 
-def test_class_and_sweep_on_a_local_cluster_equal_the_embedded_run(tmp_path):
-    distributed = pytest.importorskip("distributed")
+def test_class_and_sweep_on_a_local_cluster_equal_the_embedded_run(tmp_path, require):
+    try:
+        import distributed
+    except ImportError:
+        distributed = None
+    require(distributed is not None, "dask.distributed (pip install 'mechplan[cluster]')")
+    assert distributed is not None
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   host="127.0.0.1", dashboard_address=None) as cluster:
         address = cluster.scheduler_address
