@@ -9,6 +9,7 @@ the grid are rebuilt in full and compared, which catches a dependence the probes
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 import re
@@ -111,6 +112,16 @@ class SweepPlan:
         """Number of variants."""
         return math.prod(self.shape)
 
+    def restricted(self, start: int, stop: int) -> SweepPlan:
+        """The plan with only the prepared steps variants ``start``…``stop - 1`` use (small to send)."""
+        grid = np.unravel_index(np.arange(start, stop), self.shape)
+        tables = {}
+        for dep, table in self.tables.items():
+            used = set(zip(*(grid[i].tolist() for i in dep), strict=True)) if dep else {()}
+            tables[dep] = {combo: table[combo] for combo in used}
+        errors = {k: v for k, v in self.errors.items() if k[1] in tables[k[0]]}
+        return dataclasses.replace(self, tables=tables, errors=errors)
+
 
 def _plans(scene: Any) -> tuple[str, ...]:
     base = ("position", "velocity", "acceleration")
@@ -156,6 +167,17 @@ class _Builder:
         return self.memo[index]
 
 
+def _same(a: Any, b: Any) -> bool:
+    """Equality of recorded values (steps may hold arrays in their parameters)."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return bool(np.array_equal(a, b))
+    if isinstance(a, tuple | list) and isinstance(b, tuple | list):
+        return len(a) == len(b) and all(_same(x, y) for x, y in zip(a, b, strict=True))
+    if dataclasses.is_dataclass(a) and type(a) is type(b):
+        return all(_same(getattr(a, f.name), getattr(b, f.name)) for f in dataclasses.fields(a))
+    return bool(a == b)
+
+
 def _same_structure(a: dict[str, Any], b: dict[str, Any], where: str) -> None:
     if a.keys() != b.keys() or any(
             getattr(a[k], "inputs", None) != getattr(b[k], "inputs", None) for k in a):
@@ -187,7 +209,7 @@ def make_plan(text: str, file: str, axes: Sequence[Axis], positions: int = 360) 
                 continue
             _same_structure(rec0, rec, f"{ax.key} = {ax.scene_value(j)}")
             for name, value in rec.items():
-                if value != rec0[name]:
+                if not _same(value, rec0[name]):
                     deps[name].add(i)
     corners = list(itertools.product(*[sorted({0, len(a.values) - 1}) for a in axes]))
     if len(corners) > MAX_CORNERS:
@@ -204,7 +226,7 @@ def make_plan(text: str, file: str, axes: Sequence[Axis], positions: int = 360) 
                                                  for a, i in zip(axes, corner, strict=True)))
             derived = _derive(rec0, deps, tables, corner)
             for name, value in rec.items():
-                if derived.get(name) is not None and derived[name] != value:
+                if derived.get(name) is not None and not _same(derived[name], value):
                     deps[name] |= {k for k, i in enumerate(corner) if i}
                     missed = True
         if not missed:
@@ -275,7 +297,8 @@ def _summaries(scene: Any, c: Construction) -> Summaries:
     for g in _structure_groups(scene):
         p1, p2, p3 = g.outer1.point, g.inner.point, g.outer2.point
         if g.kind == "RRR":
-            out.groups["_".join(g.links)] = ("RRR", (c.position(p1), c.position(p2), c.position(p3)), "")
+            out.groups["_".join(g.links)] = (
+                "RRR", (c.position(p1), c.position(p2), c.position(p3)), "")
         elif (g.kind == "RRP" and g.outer2.kind is PairKind.PRISMATIC and g.outer2.guide
               and mech.guides[g.outer2.guide].link == GROUND):
             out.groups["_".join(g.links)] = ("RRP", (c.position(p1), c.position(p2), c.position(p2)),

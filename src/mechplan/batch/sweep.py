@@ -43,6 +43,7 @@ class SweepResult:
     csv: Path
     plot: Path | None
     columns: tuple[str, ...]
+    cpu_seconds: float = 0.0     # CPU time the workers spent evaluating chunks
 
 
 def _variant(plan: SweepPlan, index: tuple[int, ...]
@@ -67,11 +68,16 @@ def _variant(plan: SweepPlan, index: tuple[int, ...]
     return Construction(drive, steps, base.segments, base.equations, base.results), guides, ""
 
 
-def evaluate_chunk(plan: SweepPlan, start: int, stop: int) -> tuple[int, dict[str, np.ndarray]]:
-    """Evaluate variants ``start``…``stop - 1`` over the cycle; return their summary columns."""
+def evaluate_chunk(plan: SweepPlan, start: int, stop: int
+                   ) -> tuple[int, dict[str, np.ndarray], float]:
+    """Evaluate variants ``start``…``stop - 1`` over the cycle.
+
+    Return the start, the summary columns and the CPU seconds the worker spent.
+    """
     # the force plan's evaluators are registered when its module is imported (a fresh worker)
     from ..construct.plans import force  # noqa: F401
 
+    cpu0 = time.process_time()
     n = stop - start
     grid = np.unravel_index(np.arange(start, stop), plan.shape)
     summ = plan.summaries
@@ -105,7 +111,7 @@ def evaluate_chunk(plan: SweepPlan, start: int, stop: int) -> tuple[int, dict[st
         bad |= np.isnan(arr.reshape(n, plan.phi.size, -1)).any(axis=2)
     cols["unbuilt"] = bad.sum(axis=1).astype(np.int32)
     cols["error"] = errors
-    return start, cols
+    return start, cols, time.process_time() - cpu0
 
 
 def _fmax(x: np.ndarray) -> np.ndarray:
@@ -148,10 +154,10 @@ def unit_of(column: str) -> str:
 
 
 def _chunk_size(plan: SweepPlan, workers: int) -> int:
-    probe_stop = min(plan.size, 3)
-    t0 = time.perf_counter()
-    evaluate_chunk(plan, 0, probe_stop)
-    per_variant = max((time.perf_counter() - t0) / probe_stop, 1e-6)
+    evaluate_chunk(plan, 0, 1)                       # warm up
+    probe_stop = min(plan.size, 20)
+    # CPU time, not wall time: on a busy machine the wall time would shrink the chunks
+    per_variant = max(evaluate_chunk(plan, 0, probe_stop)[2] / probe_stop, 1e-6)
     size = max(1, math.ceil(CHUNK_SECONDS / per_variant))
     if plan.size < size * workers:          # small sweep: one chunk per worker
         size = max(1, math.ceil(plan.size / workers))
@@ -189,9 +195,12 @@ def run_sweep(scene: str | Path, axes: Sequence[Axis], out_dir: str | Path, *,
     size = chunk or _chunk_size(plan, n_workers)
     starts = list(range(0, plan.size, size))
     part = {s: parts / f"part-{s:010d}.parquet" for s in starts}
-    todo = [(plan, s, min(s + size, plan.size)) for s in starts if not part[s].exists()]
-    for start, cols in run_tasks(evaluate_chunk, todo, workers=workers, scheduler=scheduler,
+    todo = [(plan.restricted(s, min(s + size, plan.size)), s, min(s + size, plan.size))
+            for s in starts if not part[s].exists()]
+    cpu = 0.0
+    for start, cols, seconds in run_tasks(evaluate_chunk, todo, workers=workers, scheduler=scheduler,
                                  progress=progress, desc="chunks", unit="chunk"):
+        cpu += seconds
         table = _to_table(cols)
         write_atomic(part[start], lambda fh, t=table: pq.write_table(t, fh))
     parquet, csv_path = out / "summary.parquet", out / "summary.csv"
@@ -209,7 +218,7 @@ def run_sweep(scene: str | Path, axes: Sequence[Axis], out_dir: str | Path, *,
 
         png = plot_summary(parquet, plan, plot, plot_axes, out / f"{plot}.png")
     return SweepResult(plan.size, len(starts), len(starts) - len(todo), parquet, csv_path, png,
-                       tuple(columns))
+                       tuple(columns), cpu)
 
 
 def _merge(paths: Sequence[Path], parquet: Path, csv_path: Path) -> list[str]:
