@@ -104,23 +104,21 @@ def evaluate_chunk(plan: SweepPlan, start: int, stop: int
         cols[ax.key] = np.asarray(ax.values)[idx]
     if not buf:           # no variant of the chunk could be built
         buf = {t: np.full((n, plan.phi.size, 2), np.nan) for t in targets}
-    _summarise(plan, buf, guide_angle, cols, n)
-    bad = np.zeros((n, plan.phi.size), dtype=bool)
-    for t in targets:
-        arr = buf[t]
-        bad |= np.isnan(arr.reshape(n, plan.phi.size, -1)).any(axis=2)
+    bad = _summarise(plan, buf, guide_angle, cols, n)
     cols["unbuilt"] = bad.sum(axis=1).astype(np.int32)
     cols["error"] = errors
     return start, cols, time.process_time() - cpu0
 
 
-def _fmax(x: np.ndarray) -> np.ndarray:
-    return np.fmax.reduce(x, axis=1)
-
-
 def _summarise(plan: SweepPlan, buf: dict[str, np.ndarray], guide_angle: dict[str, np.ndarray],
-               cols: dict[str, np.ndarray], n: int) -> None:
+               cols: dict[str, np.ndarray], n: int) -> np.ndarray:
+    """Add the summary columns; return where (variant, position) a quantity is NaN (unbuilt)."""
     summ = plan.summaries
+    bad = np.zeros((n, plan.phi.size), dtype=bool)
+
+    def _fmax(x: np.ndarray) -> np.ndarray:
+        bad[...] |= np.isnan(x)
+        return np.fmax.reduce(x, axis=1)
     for sym, table in (("v", summ.velocity), ("a", summ.acceleration)):
         for p, sid in table.items():
             v = buf[sid]
@@ -142,9 +140,11 @@ def _summarise(plan: SweepPlan, buf: dict[str, np.ndarray], guide_angle: dict[st
                 cos = np.abs(u[..., 0] * np.cos(g) + u[..., 1] * np.sin(g)) / np.hypot(
                     u[..., 0], u[..., 1])
             gamma = 90.0 - np.degrees(np.arccos(np.clip(cos, 0.0, 1.0)))
+        bad |= np.isnan(gamma)
         cols[f"min_gamma_{name}"] = np.fmin.reduce(gamma, axis=1)
     if summ.moment:
         cols["max_M_b"] = _fmax(np.abs(buf[summ.moment]))
+    return bad
 
 
 def unit_of(column: str) -> str:
