@@ -113,7 +113,8 @@ def answer_pdf(key: dict[str, Any], language: str) -> bytes:
     head_q = message("batch.key.quantity", language)
     head_u = message("batch.key.unit", language)
     title = message("batch.key.title", language, title=key["title"])
-    who = message("batch.key.variant", language, id=key["id"], name=key["name"])
+    who = (message("batch.key.variant", language, id=key["id"], name=key["name"]) if key["name"]
+           else message("batch.key.variant_id", language, id=key["id"]))
     pages: list[Sheet] = []
     col_chunks = [list(range(i, min(i + COLUMNS_PER_PAGE, len(phi))))
                   for i in range(0, len(phi), COLUMNS_PER_PAGE)]
