@@ -198,11 +198,12 @@ def run_sweep(scene: str | Path, axes: Sequence[Axis], out_dir: str | Path, *,
     todo = [(plan.restricted(s, min(s + size, plan.size)), s, min(s + size, plan.size))
             for s in starts if not part[s].exists()]
     cpu = 0.0
-    for start, cols, seconds in run_tasks(evaluate_chunk, todo, workers=workers, scheduler=scheduler,
-                                 progress=progress, desc="chunks", unit="chunk"):
+    for start, cols, seconds in run_tasks(evaluate_chunk, todo, workers=workers,
+                                          scheduler=scheduler, progress=progress,
+                                          desc="chunks", unit="chunk"):
         cpu += seconds
-        table = _to_table(cols)
-        write_atomic(part[start], lambda fh, t=table: pq.write_table(t, fh))
+        with atomic_open(part[start]) as fh:
+            pq.write_table(_to_table(cols), fh)
     parquet, csv_path = out / "summary.parquet", out / "summary.csv"
     columns = _merge([part[s] for s in starts], parquet, csv_path)
     meta = {"scene": str(scene), "positions": positions, "variants": plan.size,
