@@ -1,4 +1,4 @@
-"""Command line: mechplan solve | draw | check | new | doctor | completion."""
+"""Command line: mechplan solve | draw | check | batch | sweep | new | doctor | completion."""
 
 from __future__ import annotations
 
@@ -170,9 +170,11 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--lang", choices=LANGUAGE_CHOICES)
     d.add_argument("--standard", choices=STANDARDS)
     d.set_defaults(func=_draw)
+    from .batch.cli import add_parser as add_batch
     from .check.cli import add_parser as add_check
 
     add_check(sub)
+    add_batch(sub)
     names = template_names()
     n = sub.add_parser("new", help="start a scene from a bundled template",
                        description="Copy a bundled template to start a scene.",

@@ -1,0 +1,159 @@
+"""A class of variants: per student a folder with the scene, its sheets and its answer key.
+
+Each variant is one task on the engine. A folder is complete when its marker ``.complete`` (written
+last, holding a fingerprint of the scene and the options) matches: re-running skips it. Every file is
+written atomically; a variant that fails (cannot be assembled, bad value) is reported in
+``summary.csv`` with its error and the others go on.
+"""
+
+from __future__ import annotations
+
+import csv
+import hashlib
+import io
+import json
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from .. import __version__
+from ..errors import MechplanError
+from ..render.atomic import write_atomic
+from ..scene.document import parse_toml, read_text
+from .engine import run_tasks
+from .keys import with_values
+from .variants import Variant
+
+MARKER = ".complete"
+SUMMARY = "summary.csv"
+
+
+@dataclass(frozen=True)
+class ClassJob:
+    """What every variant of a class shares: the template and the output options."""
+
+    template_text: str
+    template_file: str
+    name: str                       # stem of the sheets' file names
+    out_dir: str
+    formats: tuple[str, ...] = ("dxf", "svg", "pdf")
+    size: str | None = None
+    standard: str | None = None
+    language: str | None = None
+
+
+@dataclass(frozen=True)
+class ClassResult:
+    """What a class run did."""
+
+    rows: list[dict[str, Any]]
+    solved: int
+    skipped: int
+    failed: int
+    summary: Path
+
+
+def variant_scene(job: ClassJob, variant: Variant) -> str:
+    """Return the TOML text of a variant's scene: the template with the variant's values set."""
+    import tomli_w
+
+    doc = parse_toml(job.template_text, job.template_file)
+    header = f"# {variant.id}" + (f" — {variant.name}" if variant.name else "") + "\n"
+    return header + tomli_w.dumps(with_values(doc, variant.values, job.template_file))
+
+
+def _fingerprint(job: ClassJob, scene: str) -> str:
+    h = hashlib.sha256()
+    for part in (__version__, scene, ",".join(job.formats), str(job.size), str(job.standard),
+                 str(job.language)):
+        h.update(part.encode())
+        h.update(b"\0")
+    return h.hexdigest()
+
+
+def solve_variant(job: ClassJob, variant: Variant, index: int) -> tuple[int, dict[str, Any], bool]:
+    """Write one variant's folder (or find it complete); return (index, summary row, skipped)."""
+    folder = Path(job.out_dir) / variant.id
+    marker = folder / MARKER
+    row: dict[str, Any] = {"id": variant.id, "name": variant.name, "status": "ok", "error": "",
+                           **variant.values}
+    try:
+        scene = variant_scene(job, variant)
+    except MechplanError as exc:
+        return index, {**row, "status": "failed", "error": str(exc)}, False
+    stamp = _fingerprint(job, scene)
+    if marker.exists() and marker.read_text(encoding="utf-8") == stamp:
+        with (folder / "summary.json").open(encoding="utf-8") as fh:
+            return index, json.load(fh), True
+    folder.mkdir(parents=True, exist_ok=True)
+    marker.unlink(missing_ok=True)
+    scene_path = folder / "scene.toml"
+    write_atomic(scene_path, scene.encode())
+    try:
+        row.update(_solve_and_write(job, variant, scene, str(scene_path), folder))
+    except Exception as exc:  # noqa: BLE001 - one bad variant must not stop the class
+        row.update(status="failed", error=str(exc) or type(exc).__name__)
+    write_atomic(folder / "summary.json", json.dumps(row, ensure_ascii=False, indent=1).encode())
+    if row["status"] == "ok":
+        write_atomic(marker, stamp.encode())
+    return index, row, False
+
+
+def _solve_and_write(job: ClassJob, variant: Variant, scene: str, scene_file: str,
+                     folder: Path) -> dict[str, Any]:
+    from ..render import write
+    from ..studies import solve_text
+    from .answer import answer_key, answer_pdf, headline
+
+    study = solve_text(scene, scene_file)
+    language = job.language or str(parse_toml(scene, scene_file).get("language", "en"))
+    for sheet in study.sheets(job.size, job.standard, job.language, job.name):
+        write(sheet, folder, list(job.formats))
+    key = answer_key(study.to_json(), variant.id, variant.name, variant.values)
+    write_atomic(folder / "answer_key.json",
+                 json.dumps(key, ensure_ascii=False, indent=1).encode())
+    write_atomic(folder / "answer_key.pdf", answer_pdf(key, language))
+    return headline(key)
+
+
+def write_summary(path: Path, rows: Sequence[dict[str, Any]]) -> Path:
+    """Write the class summary (one row per variant, failed ones with their error) atomically."""
+    columns: list[str] = []
+    for row in rows:
+        columns += [c for c in row if c not in columns]
+    buf = io.StringIO()
+    writer = csv.DictWriter(buf, columns, lineterminator="\n")
+    writer.writeheader()
+    for row in rows:
+        writer.writerow({c: _csv_value(row.get(c, "")) for c in columns})
+    return write_atomic(path, buf.getvalue().encode())
+
+
+def _csv_value(value: Any) -> Any:
+    return f"{value:.10g}" if isinstance(value, float) else value
+
+
+def run_class(template: str | Path, variants: Sequence[Variant], out_dir: str | Path, *,
+              formats: Sequence[str] = ("dxf", "svg", "pdf"), workers: int | None = None,
+              scheduler: str | None = None, progress: bool | None = None,
+              size: str | None = None, standard: str | None = None,
+              language: str | None = None) -> ClassResult:
+    """Solve and draw every variant of a class; write ``summary.csv`` at the top of ``out_dir``."""
+    template = Path(template)
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    job = ClassJob(read_text(template), str(template), template.stem, str(out.resolve()),
+                   tuple(formats), size, standard, language)
+    rows: list[dict[str, Any] | None] = [None] * len(variants)
+    skipped = 0
+    calls = [(job, v, i) for i, v in enumerate(variants)]
+    for index, row, was_skipped in run_tasks(solve_variant, calls, workers=workers,
+                                             scheduler=scheduler, progress=progress,
+                                             desc="variants", unit="variant"):
+        rows[index] = row
+        skipped += was_skipped
+    done = [r for r in rows if r is not None]
+    failed = sum(r["status"] != "ok" for r in done)
+    summary = write_summary(out / SUMMARY, done)
+    return ClassResult(done, len(done) - skipped - failed, skipped, failed, summary)
