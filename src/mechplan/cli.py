@@ -76,6 +76,8 @@ def _draw(args: argparse.Namespace) -> int:
             for sheet in study.sheets(args.sheet, args.standard, args.lang, Path(path).stem):
                 for written in write(sheet, out, formats):
                     print(written)
+            for line in getattr(study, "warnings", lambda _lang: [])(args.lang):
+                print(line, file=sys.stderr)          # positions left out, poor estimates
             extra = getattr(study, "write_files", None)     # e.g. a cam's profile DXF
             if extra is not None and "dxf" in formats:
                 for written in extra(out, Path(path).stem):

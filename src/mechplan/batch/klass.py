@@ -92,8 +92,8 @@ def solve_variant(job: ClassJob, variant: Variant, index: int) -> tuple[int, dic
     write_atomic(scene_path, scene.encode())
     try:
         row.update(_solve_and_write(job, variant, scene, str(scene_path), folder))
-    except Exception as exc:  # noqa: BLE001 - one bad variant must not stop the class
-        row.update(status="failed", error=str(exc) or type(exc).__name__)
+    except MechplanError as exc:     # one bad variant does not stop the class; a bug does
+        row.update(status="failed", error=str(exc))
     write_atomic(folder / "summary.json", json.dumps(row, ensure_ascii=False, indent=1).encode())
     if row["status"] == "ok":
         write_atomic(marker, stamp.encode())
@@ -107,6 +107,12 @@ def _solve_and_write(job: ClassJob, variant: Variant, scene: str, scene_file: st
     from .answer import answer_key, answer_pdf, headline
 
     study = solve_text(scene, scene_file)
+    solution = getattr(study, "solution", None)
+    failures = getattr(solution, "failures", ())
+    if failures:      # an assignment must be buildable at every position a student draws
+        first = failures[0]
+        raise MechplanError(f"{len(failures)} of {solution.positions} positions cannot be built; "
+                            f"φ = {first.phi_deg:g}°: {first.reason}", file=scene_file)
     language = job.language or str(parse_toml(scene, scene_file).get("language", "en"))
     for sheet in study.sheets(job.size, job.standard, job.language, job.name):
         write(sheet, folder, list(job.formats))

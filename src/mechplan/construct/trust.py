@@ -103,20 +103,44 @@ def failures(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Seque
         with np.errstate(divide="ignore"):
             bad |= 1.0 / sine > max_condition
     out: list[Failure] = []
-    reasons: dict[str, str] = {}
+    first_of: dict[str, Failure] = {}
     for k in np.flatnonzero(bad):
+        phi_deg = math.degrees(float(ev.phi[k]))
+        cause = _cause(c, ev, est, targets, int(k), max_condition)
+        if cause in first_of and len(out) >= FULL_REASONS:
+            # the same cause as an earlier position: say so instead of searching again
+            out.append(Failure(int(k), phi_deg, f"as at φ = {first_of[cause].phi_deg:g}°: "
+                                                f"{first_of[cause].reason}"))
+            continue
         one = c.evaluate(ev.phi[k:k + 1])
         one.evaluate_all(targets)
-        phi_deg = math.degrees(float(ev.phi[k]))
         try:
             ensure_valid(c, one, file, max_condition)
             refuse_unbounded(c, one, estimate_errors(c, one, targets), targets, file)
             reason = "not computable"
         except MechplanError as exc:
-            key = type(exc).__name__ + str(getattr(exc, "step", "") or getattr(exc, "group", ""))
-            reason = reasons.setdefault(key, exc.detail)
-        out.append(Failure(int(k), phi_deg, reason))
+            reason = exc.detail
+        failure = Failure(int(k), phi_deg, reason)
+        first_of.setdefault(cause, failure)
+        out.append(failure)
     return out
+
+
+#: failures explained in full (each needs its own search of the unreachable interval); the rest
+#: refer to the first position with the same cause
+FULL_REASONS = 12
+
+
+def _cause(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str], k: int,
+           max_condition: float) -> str:
+    """The first step that fails at position k (a meet with no solution or an ill-conditioned one)."""
+    for sid, gap in ev.gaps.items():
+        if gap[k] > 0:
+            return sid
+    for sid, sine in ev.sines.items():
+        if not sine[k] * max_condition >= 1.0:
+            return sid
+    return "unbounded"
 
 
 def flags(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],
