@@ -21,7 +21,8 @@ ALLOWED = {
     "sheet": {"geom", "model", "scene", "construct", "dynamics", "synthesis", "solve",
               "render.atomic"},
     "render": {"sheet"},
-    "check": {"geom", "model", "scene", "construct", "dynamics", "solve", "sheet", "render"},
+    "check": {"geom", "model", "scene", "construct", "dynamics", "synthesis", "solve", "sheet",
+              "render", "studies"},
 }
 BASE = {"errors", "units", "i18n", "__init__", "__version__"}
 
