@@ -99,9 +99,9 @@ def _own_dynamics(k: Keys, name: str, phi: float | None, w: Written) -> Own | No
     if name == "omega_m" and g("omega_max") and g("omega_min"):
         return ((g("omega_max") + g("omega_min")) / 2, "ω_m = (ω_max + ω_min)/2",
                 ("omega_max", "omega_min"))
-    delta = g("delta") or d["delta"]
-    if name in ("J_fly", "J_W") and g("dT_max"):
-        return g("dT_max") / (delta * wm ** 2), "J = ΔT_max/(δ·ω_m²)", ("dT_max",)
+    if name in ("J_fly", "J_W") and g("dT_max"):      # δ and ω_m are given data
+        return (g("dT_max") / (d["delta"] * d["omega_m"] ** 2), "J = ΔT_max/(δ·ω_m²)",
+                ("dT_max",))
     if name in ("J_fly", "J_Mer") and g("J_I"):
         return g("J_I") - d["J_present"], "J = J_I − J_const", ("J_I",)
     cycle = math.radians(d["cycle_deg"])

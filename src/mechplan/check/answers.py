@@ -60,6 +60,7 @@ def _notation() -> dict[str, dict[str, list[Spec]]]:
                         bool(e.get("integer", False)))
             for sp in [canonical, *e["spellings"]]:
                 names.setdefault(compact(sp), []).append(spec)
+                names.setdefault("=" + compact(sp, case=True), []).append(spec)
         out[table] = names
     return out
 
@@ -94,9 +95,10 @@ def read_name(name: str, kind: str, section: str | None, has_angle: bool,
             tables = ("gears_pair",)
         elif sk == "planetary" or keys.study.pair is None:
             tables = ("gears",)
-    key = compact(name)
     for table in tables:
-        for spec in _notation()[table].get(key, []):
+        names = _notation()[table]
+        exact_case = names.get("=" + compact(name, case=True), [])
+        for spec in exact_case + names.get(compact(name), []):
             if spec.canonical == "phi" or spec.per_angle != has_angle:
                 continue
             return spec, ("pair." if table == "gears_pair" else "") + spec.canonical
@@ -104,7 +106,8 @@ def read_name(name: str, kind: str, section: str | None, has_angle: bool,
 
 
 def _closest(name: str, kind: str) -> list[str]:
-    pool = {k: specs[0].canonical for t in _TABLES[kind] for k, specs in _notation()[t].items()}
+    pool = {k: specs[0].canonical for t in _TABLES[kind] for k, specs in _notation()[t].items()
+            if not k.startswith("=")}
     hits = difflib.get_close_matches(compact(name), list(pool), n=6, cutoff=0.3)
     return list(dict.fromkeys(pool[h] for h in hits))[:4]
 
