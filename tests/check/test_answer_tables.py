@@ -71,21 +71,6 @@ def test_cam_table_russian_toml(tmp_path):
     s45, s1_45, _ = _cyc(45)
     a20 = math.degrees(math.atan(s1_20 / (r0 + s20)))
     a45 = math.degrees(math.atan(s1_45 / (r0 + s45)))
-    text = f'''
-"R0" = "{r0 * 1000:.2f} мм"
-"e" = "0 мм"
-"αmax" = "30°"
-["φ = 20°"]
-"S" = "{s20 * 1000:.3f} мм".replace(".", ",")
-'''
-    text = f'''
-"R0" = "{r0 * 1000:.2f} мм"
-"e" = "0 мм"
-"αmax" = "{30 * 1.2:.1f}°"
-["φ = 20°"]
-"S" = "{s20 * 1000:.3f}".replace(".", ",")
-'''
-    del text
     lines = [
         f'"R0" = "{r0 * 1000:.2f} мм"'.replace(".", ","),
         '"e" = "0 мм"',
@@ -154,7 +139,7 @@ def _engine_rows(phis):
         P = Pk + Pj
         T = P * math.sin(a + beta) / math.cos(beta)
         Z = P * math.cos(a + beta) / math.cos(beta)
-        out[phi] = dict(p=p, Pk=Pk, Pj=Pj, P=P, N=P * math.tan(beta), T=T, Z=Z, M=T * R)
+        out[phi] = {"p": p, "Pk": Pk, "Pj": Pj, "P": P, "N": P * math.tan(beta), "T": T, "Z": Z, "M": T * R}
     return out
 
 
@@ -206,9 +191,9 @@ def _pair_closed_form():
     inv = (lambda a: math.tan(a) - a)
     target = inv(alpha) + 2 * x1 * math.tan(alpha) / (z1 + z2)
     aw = brentq(lambda a: inv(a) - target, 0.1, 1.0)
-    return dict(x1=x1, alpha_w=math.degrees(aw),
-                a_w=m * (z1 + z2) / 2 * math.cos(alpha) / math.cos(aw),
-                rb1=m * z1 * math.cos(alpha) / 2, rb2=m * z2 * math.cos(alpha) / 2)
+    return {"x1": x1, "alpha_w": math.degrees(aw),
+                "a_w": m * (z1 + z2) / 2 * math.cos(alpha) / math.cos(aw),
+                "rb1": m * z1 * math.cos(alpha) / 2, "rb2": m * z2 * math.cos(alpha) / 2}
 
 
 def test_gears_english_toml(tmp_path):
@@ -232,7 +217,7 @@ def test_gears_english_toml(tmp_path):
 
 def test_gears_other_valid_set_and_wrong_set_chinese_csv(tmp_path):
     # a valid set other than the program's (24, 36, 96): its own values are the exact ones
-    csv = "\n".join(["名称,数值", "z1,24", "z2,36", "z3,96", "传动比,5", "中心距,90 mm"])
+    csv = "名称,数值\nz1,24\nz2,36\nz3,96\n传动比,5\n中心距,90 mm"
     report = check(TEMPLATES / "planetary_single_row.toml", _write(tmp_path, "li.csv", csv))
     FOUND["gears_zh_valid"] = list(_grade(report, {}))
     assert any("meet every condition" in n.message for n in report.notes)

@@ -261,7 +261,7 @@ def _own_gears(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
     zs = [w.get((f"z{i}", None)) for i in range(1, n + 1)]
     if any(z is None for z in zs):
         return None
-    z = np.array([int(round(v)) for v in zs if v is not None])
+    z = np.array([round(v) for v in zs if v is not None])
     used = tuple(f"z{i}" for i in range(1, n + 1))
     if name == "u":
         i = train.willis_i(spec.scheme, z)

@@ -24,7 +24,18 @@ from .answer_table import AnswerItem, read_answers
 from .context import Options
 from .match import parse_value
 from .notation import catalogue, compact
-from .report import CARRIED, NEW, OK, SLIP, SWAPPED, UNCHECKED, WRONG, CheckReport, Finding, ValueRow
+from .report import (
+    CARRIED,
+    NEW,
+    OK,
+    SLIP,
+    SWAPPED,
+    UNCHECKED,
+    WRONG,
+    CheckReport,
+    Finding,
+    ValueRow,
+)
 from .submission import Note
 from .texts import T, join
 
@@ -249,7 +260,7 @@ def _gear_set(keys: Keys, written: dict[tuple[str, float | None], float], rows: 
     zs = [written.get((f"z{i}", None)) for i in range(1, n + 1)]
     if any(z is None for z in zs):
         return {}
-    z = tuple(int(round(v)) for v in zs if v is not None)
+    z = tuple(round(v) for v in zs if v is not None)
     sets = valid_sets(keys)
     chosen = tuple(int(v) for v in keys.study.planetary.chosen.z)
     if z in sets and z != chosen:

@@ -64,7 +64,6 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
           options: Options | None = None) -> CheckReport:
     """Check a submission (DXF or table) against the exact construction of a scene."""
     from ..scene import load_scene
-
     from .answers import maybe_check_answers
 
     options = options or Options()
