@@ -274,3 +274,67 @@ def test_cli_exit_codes(tmp_path, capsys):
     assert main(["check", str(TEMPLATES / "planetary_single_row.toml"), str(bad),
                  "--lang", "vi"]) == 1
     assert "bộ truyền bánh răng" in capsys.readouterr().out
+
+
+# -- no false alarm on any template: a table of the study's values at 4 significant digits ----
+def _g(x: float, unit: str = "") -> str:
+    return f"{x:.4g} {unit}".strip()
+
+
+def _generated(name: str) -> str:
+    doc = solve_file(TEMPLATES / name).to_json()
+    out: list[str] = []
+    if doc.get("kind") == "engine":
+        for a in doc["angles"][1::7]:
+            c = a["cylinders"]["1"]
+            out.append(f'["φ = {a["phi_deg"]:g}°"]')
+            out += [f'{k} = "{_g(c[k], u)}"' for k, u in (("p", "Pa"), ("Pk", "N"), ("Pj", "N"),
+                                                          ("P", "N"), ("N", "N"), ("T", "N"),
+                                                          ("Z", "N"), ("M", "N*m"))]
+            out.append(f'"ΣM" = "{_g(a["M_total"], "N*m")}"')
+        return f'"Mср" = "{_g(doc["torque"]["mean"], "N*m")}"\n' + "\n".join(out)
+    if doc.get("kind") == "cam":
+        osc = doc["follower"]["motion"] != "translating"
+        alpha = not osc and doc["follower"]["contact"] != "flat"
+        b, pa = doc["base_radius"], doc["pressure_angle_max"]
+        out += [f'r0 = "{_g(b["used"], "m")}"', f'"ρmin" = "{_g(doc["radius_of_curvature_min"]["profile"][0], "m")}"']
+        if not osc:
+            out.append(f'"αmaxп" = "{math.degrees(pa["rise"][0]):.3f}°"')
+        for r in doc["table"][1::5]:
+            out.append(f'["φ = {math.degrees(r["phi"]):.4g}°"]')
+            out += [f's = "{_g(r["s"], "rad" if osc else "m")}"', f"s1 = {r['s1']:.4g}" if osc
+                    else f's1 = "{_g(r["s1"], "m")}"']
+            if alpha:
+                out.append(f'"α" = "{math.degrees(r["alpha"]):.3f}°"')
+        return "\n".join(out)
+    if doc.get("kind") == "gears":
+        c = doc["planetary"]["chosen"]
+        out += [f"z{i} = {z}" for i, z in enumerate(c["z"], start=1)]
+        out += [f"k = {doc['planetary']['planets']}", f"u = {c['ratio']:.4g}",
+                f'a_w = "{_g(c["a_w_m"][0], "m")}"']
+        p = doc.get("pair")
+        if p:
+            out += ["[pair]", f"x1 = {p['x'][0]:.4g}", f"x2 = {p['x'][1]:.4g}",
+                    f'"αw" = "{p["alpha_w_deg"]:.4g}°"', f'a_w = "{_g(p["a_w_m"], "m")}"',
+                    f'"εα" = {p["contact_ratio"]:.4g}', f'rb1 = "{_g(p["gears"][0]["r_b"], "m")}"']
+        return "\n".join(out)
+    d = doc["dynamics"]
+    fly = d["flywheel"]
+    out += [f'"Jм" = "{_g(fly["exact"]["J"], "kg*m^2")}"', f'JW = "{_g(fly["wittenbauer"]["J"], "kg*m^2")}"',
+            f'"δ" = {d["delta"]}', f'"ωmax" = "{d["motion"]["omega_max"]:.5g} rad/s"',
+            f'"ωmin" = "{d["motion"]["omega_min"]:.5g} rad/s"', f'Mc = "{_g(d["constant_moment"], "N*m")}"']
+    for pos in d["positions"][1::4]:
+        out.append(f'["φ = {pos["phi_deg"]:g}°"]')
+        out += [f'"Jпр" = "{_g(pos["J_red"], "kg*m^2")}"', f'"ω" = "{pos["omega"]:.5g} rad/s"']
+    return "\n".join(out)
+
+
+@pytest.mark.parametrize("name", ["cam_cycloidal.toml", "cam_flat.toml", "cam_oscillating.toml",
+                                  "motorcycle_engine.toml", "v_engine_dynamics.toml",
+                                  "planetary_single_row.toml", "planetary_two_row.toml",
+                                  "machine_unit.toml", "shaper_flywheel.toml"])
+def test_right_tables_of_every_template_pass(tmp_path, name):
+    report = check(TEMPLATES / name, _write(tmp_path, "right.toml", _generated(name)))
+    bad = [(v.name, v.verdict, v.hint) for v in report.values if v.verdict != "ok"]
+    assert not bad and len(report.values) >= 5, bad
+    assert not [n for n in report.notes if n.level == "error"], report.notes

@@ -28,6 +28,7 @@ class Keys:
     columns: dict[str, dict[float, float]] = field(default_factory=dict)   # name → φ → value
     spans: dict[str, float] = field(default_factory=dict)
     any_angle: Any = None                           # cam: φ (deg) → {name: value}
+    dimensions: dict[str, str] = field(default_factory=dict)   # where the catalogue's differs
     study: Any = None
 
     def exact(self, name: str, phi: float | None) -> float | None:
@@ -89,25 +90,32 @@ def _dynamics(study: Any) -> Keys:
     return k
 
 
+def _all(w: Written, phi: float | None, *names: str) -> list[float] | None:
+    """The student's values of ``names`` (at ``phi``), or None when one is missing."""
+    vals = [w.get((n, phi)) for n in names]
+    return [v for v in vals if v is not None] if all(v is not None for v in vals) else None
+
+
 def _own_dynamics(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
     d = k.study
-    g = (lambda n: w.get((n, None)))
-    wm = g("omega_m") or d["omega_m"]
-    if name == "delta" and g("omega_max") and g("omega_min"):
-        return ((g("omega_max") - g("omega_min")) / wm, "δ = (ω_max − ω_min)/ω_m",
+    wm = w.get(("omega_m", None)) or d["omega_m"]
+    extremes = _all(w, None, "omega_max", "omega_min")
+    if name == "delta" and extremes:
+        return ((extremes[0] - extremes[1]) / wm, "δ = (ω_max − ω_min)/ω_m",
                 ("omega_max", "omega_min"))
-    if name == "omega_m" and g("omega_max") and g("omega_min"):
-        return ((g("omega_max") + g("omega_min")) / 2, "ω_m = (ω_max + ω_min)/2",
+    if name == "omega_m" and extremes:
+        return ((extremes[0] + extremes[1]) / 2, "ω_m = (ω_max + ω_min)/2",
                 ("omega_max", "omega_min"))
-    if name in ("J_fly", "J_W") and g("dT_max"):      # δ and ω_m are given data
-        return (g("dT_max") / (d["delta"] * d["omega_m"] ** 2), "J = ΔT_max/(δ·ω_m²)",
-                ("dT_max",))
-    if name in ("J_fly", "J_Mer") and g("J_I"):
-        return g("J_I") - d["J_present"], "J = J_I − J_const", ("J_I",)
-    cycle = math.radians(d["cycle_deg"])
-    work = g("A_c") if d["unknown"] == "driving" else g("A_d")
+    dT = _all(w, None, "dT_max")
+    if name in ("J_fly", "J_W") and dT:            # δ and ω_m are given data
+        return (dT[0] / (d["delta"] * d["omega_m"] ** 2), "J = ΔT_max/(δ·ω_m²)", ("dT_max",))
+    j1 = _all(w, None, "J_I")
+    if name in ("J_fly", "J_Mer") and j1:
+        return j1[0] - d["J_present"], "J = J_I − J_const", ("J_I",)
+    work_name = "A_c" if d["unknown"] == "driving" else "A_d"
+    work = _all(w, None, work_name)
     if name == "M_const" and work:
-        return (work / cycle, "M = A/φ_cycle", ("A_c" if d["unknown"] == "driving" else "A_d",))
+        return work[0] / math.radians(d["cycle_deg"]), "M = A/φ_cycle", (work_name,)
     return None
 
 
@@ -134,26 +142,27 @@ def _own_engine(k: Keys, name: str, phi: float | None, w: Written) -> Own | None
     if phi is None:
         return None
     e = k.study["engine"]
-    g = (lambda n: w.get((n, phi)))
-    beta = g("beta")
+    pressure = _all(w, phi, "p")
+    if name == "Pk" and pressure:
+        return (pressure[0] - e["p0"]) * e["F_p"], "P_г = (p − p₀)·F_п", ("p",)
+    parts = _all(w, phi, "Pk", "Pj")
+    if name == "P" and parts:
+        return parts[0] + parts[1], "P = P_г + P_j", ("Pk", "Pj")
+    tangential = _all(w, phi, "T")
+    if name == "M" and tangential:
+        return tangential[0] * e["R"], "M = T·R", ("T",)
+    beta = w.get(("beta", phi))
     if beta is None:
         beta = k.exact("beta", phi)
-    if name == "Pk" and g("p") is not None:
-        return (g("p") - e["p0"]) * e["F_p"], "P_г = (p − p₀)·F_п", ("p",)
-    if name == "P" and g("Pk") is not None and g("Pj") is not None:
-        return g("Pk") + g("Pj"), "P = P_г + P_j", ("Pk", "Pj")
-    if name == "M_total" or beta is None or len(k.study["cylinders"]) > 1 and name != "M":
-        return None
+    if beta is None or len(k.study["cylinders"]) > 1:
+        return None                 # the formulas below are those of a central slider-crank
     a = math.radians(phi)
-    p = g("P")
-    if p is not None:
-        rule = {"N": (math.tan(beta), "N = P·tg β"), "S": (1 / math.cos(beta), "S = P/cos β"),
-                "T": (math.sin(a + beta) / math.cos(beta), "T = P·sin(φ+β)/cos β"),
-                "Z": (math.cos(a + beta) / math.cos(beta), "Z = P·cos(φ+β)/cos β")}.get(name)
-        if rule:
-            return p * rule[0], rule[1], ("P",)
-    if name == "M" and g("T") is not None:
-        return g("T") * e["R"], "M = T·R", ("T",)
+    force = _all(w, phi, "P")
+    rule = {"N": (math.tan(beta), "N = P·tg β"), "S": (1 / math.cos(beta), "S = P/cos β"),
+            "T": (math.sin(a + beta) / math.cos(beta), "T = P·sin(φ+β)/cos β"),
+            "Z": (math.cos(a + beta) / math.cos(beta), "Z = P·cos(φ+β)/cos β")}.get(name)
+    if rule and force:
+        return force[0] * rule[0], rule[1], ("P",)
     return None
 
 
@@ -184,6 +193,8 @@ def _cam(study: Any) -> Keys:
         return out
 
     k.any_angle = at
+    if doc["follower"]["motion"] != "translating":       # the follower's s is an angle ψ
+        k.dimensions = {"s": "angle", "s1": "dimensionless", "s2": "dimensionless"}
     return k
 
 

@@ -15,7 +15,7 @@ import difflib
 import functools
 import math
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -56,6 +56,7 @@ class Spec:
     span_pct: float = 0.0
     per_angle: bool = False
     integer: bool = False
+    magnitude: bool = False
 
 
 @functools.cache
@@ -68,7 +69,7 @@ def _notation() -> dict[str, dict[str, list[Spec]]]:
         for canonical, e in data[table].items():
             spec = Spec(canonical, e["dimension"], float(e.get("pct", 0)), e.get("floor"),
                         float(e.get("span_pct", 0)), bool(e.get("per_angle", False)),
-                        bool(e.get("integer", False)))
+                        bool(e.get("integer", False)), bool(e.get("magnitude", False)))
             for sp in [canonical, *e["spellings"]]:
                 names.setdefault(compact(sp), []).append(spec)
                 names.setdefault("=" + compact(sp, case=True), []).append(spec)
@@ -212,9 +213,13 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
                                          known=join(_closest(item.name, kind))), item.where))
             continue
         spec, key = found
+        if key in keys.dimensions:
+            spec = replace(spec, dimension=keys.dimensions[key])
         parsed = _parse(item, spec, notes)
         if parsed is None:
             continue
+        if spec.magnitude:
+            parsed = (abs(parsed[0]), parsed[1])
         name = item.name if item.phi_deg is None else f"{item.name} ({item.phi_deg:g}°)"
         unit = _SI.get(spec.dimension, "")
         rows.append(_Row(item, spec, key, parsed[0], parsed[1],
@@ -275,7 +280,8 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
            report: CheckReport) -> None:
     kind_text = T(f"answers.kind.{keys.kind}")
     checked = [r for r in rows if r.exact is not None]
-    off = {id(r) for r in checked if abs(r.value - r.exact) > r.tol}    # type: ignore[operator]
+    ex = {id(r): float(r.exact) for r in checked if r.exact is not None}
+    off = {id(r) for r in checked if abs(r.value - ex[id(r)]) > r.tol}
     # swapped names: two values off by themselves that are right under each other's names
     swapped: set[int] = set()
     for a in checked:
@@ -283,7 +289,7 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
             if (id(a) < id(b) and id(a) in off and id(b) in off and id(a) not in swapped
                     and id(b) not in swapped and a.item.phi_deg == b.item.phi_deg
                     and a.spec.dimension == b.spec.dimension
-                    and abs(a.value - b.exact) <= b.tol and abs(b.value - a.exact) <= a.tol):
+                    and abs(a.value - ex[id(b)]) <= b.tol and abs(b.value - ex[id(a)]) <= a.tol):
                 swapped |= {id(a), id(b)}
                 hint = T("answers.hint.swapped", a=a.row.name, b=b.row.name)
                 for r in (a, b):
