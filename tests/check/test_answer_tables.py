@@ -139,7 +139,8 @@ def _engine_rows(phis):
         P = Pk + Pj
         T = P * math.sin(a + beta) / math.cos(beta)
         Z = P * math.cos(a + beta) / math.cos(beta)
-        out[phi] = {"p": p, "Pk": Pk, "Pj": Pj, "P": P, "N": P * math.tan(beta), "T": T, "Z": Z, "M": T * R}
+        out[phi] = {"p": p, "Pk": Pk, "Pj": Pj, "P": P, "N": P * math.tan(beta), "T": T, "Z": Z,
+                    "M": T * R}
     return out
 
 
@@ -188,7 +189,10 @@ def test_engine_toml_vietnamese_swapped_and_sign(tmp_path):
 def _pair_closed_form():
     m, z1, z2, alpha = 0.003, 12, 30, math.radians(20)
     x1 = (17 - z1) / 17
-    inv = (lambda a: math.tan(a) - a)
+
+    def inv(a):
+        return math.tan(a) - a
+
     target = inv(alpha) + 2 * x1 * math.tan(alpha) / (z1 + z2)
     aw = brentq(lambda a: inv(a) - target, 0.1, 1.0)
     return {"x1": x1, "alpha_w": math.degrees(aw),
@@ -297,7 +301,8 @@ def _generated(name: str) -> str:
         osc = doc["follower"]["motion"] != "translating"
         alpha = not osc and doc["follower"]["contact"] != "flat"
         b, pa = doc["base_radius"], doc["pressure_angle_max"]
-        out += [f'r0 = "{_g(b["used"], "m")}"', f'"ρmin" = "{_g(doc["radius_of_curvature_min"]["profile"][0], "m")}"']
+        rho = doc["radius_of_curvature_min"]["profile"][0]
+        out += [f'r0 = "{_g(b["used"], "m")}"', f'"ρmin" = "{_g(rho, "m")}"']
         if not osc:
             out.append(f'"αmaxп" = "{math.degrees(pa["rise"][0]):.3f}°"')
         for r in doc["table"][1::5]:
@@ -320,9 +325,11 @@ def _generated(name: str) -> str:
         return "\n".join(out)
     d = doc["dynamics"]
     fly = d["flywheel"]
-    out += [f'"Jм" = "{_g(fly["exact"]["J"], "kg*m^2")}"', f'JW = "{_g(fly["wittenbauer"]["J"], "kg*m^2")}"',
+    out += [f'"Jм" = "{_g(fly["exact"]["J"], "kg*m^2")}"',
+            f'JW = "{_g(fly["wittenbauer"]["J"], "kg*m^2")}"',
             f'"δ" = {d["delta"]}', f'"ωmax" = "{d["motion"]["omega_max"]:.5g} rad/s"',
-            f'"ωmin" = "{d["motion"]["omega_min"]:.5g} rad/s"', f'Mc = "{_g(d["constant_moment"], "N*m")}"']
+            f'"ωmin" = "{d["motion"]["omega_min"]:.5g} rad/s"',
+            f'Mc = "{_g(d["constant_moment"], "N*m")}"']
     for pos in d["positions"][1::4]:
         out.append(f'["φ = {pos["phi_deg"]:g}°"]')
         out += [f'"Jпр" = "{_g(pos["J_red"], "kg*m^2")}"', f'"ω" = "{pos["omega"]:.5g} rad/s"']

@@ -246,7 +246,8 @@ def _gears(study: Any) -> Keys:
         spec = p.spec
         k.scalars |= {"pair.z1": float(p.gears[0].z), "pair.z2": float(p.gears[1].z),
                       "pair.m": spec.module, "pair.x1": p.x1, "pair.x2": p.x2,
-                      "pair.a_w": p.a_w, "pair.alpha_w": p.alpha_w, "pair.eps_alpha": p.eps, "pair.r_b1": p.gears[0].r_b,
+                      "pair.a_w": p.a_w, "pair.alpha_w": p.alpha_w, "pair.eps_alpha": p.eps,
+                      "pair.r_b1": p.gears[0].r_b,
                       "pair.r_b2": p.gears[1].r_b, "pair.y": p.y}
     return k
 
@@ -277,7 +278,9 @@ def _own_gears(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
     if name == "u":
         i = train.willis_i(spec.scheme, z)
         u = float(train.ratio_from_i(i, spec.scheme, spec.fixed, spec.input, spec.output))
-        return u, "u = f(i^h = ±Π z_driven/Π z_driving) (Willis)", used
+        sign = "−" if train.willis_sign(spec.scheme) < 0 else ""
+        i_text = "z3/z1" if len(z) == 3 else "z2·z4/(z1·z3)"
+        return u, f"Willis: i^h = {sign}{i_text}", used
     if name == "a_w":
         return float(train.centre_distance(spec, z)[0]), "a_w = m(z₁ ± z₂)/2", used
     if name == "assembly":

@@ -22,7 +22,7 @@ from typing import Any
 from .answer_keys import Keys, keys_for, valid_sets
 from .answer_table import AnswerItem, read_answers
 from .context import Options
-from .match import parse_value
+from .match import _number_and_half, parse_value
 from .notation import catalogue, compact
 from .report import (
     CARRIED,
@@ -183,6 +183,9 @@ def _parse(item: AnswerItem, spec: Spec, notes: list[Note]) -> tuple[float, floa
     dim = spec.dimension
     if dim == "count":
         dim = "dimensionless"
+    if dim == "dimensionless" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
+        value, half = _number_and_half(text)     # a tooth number or a ratio needs no unit
+        return (value, half) if value is not None else None
     if dim == "angle" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
         text += " deg"                       # pressure angles are written in degrees
     return parse_value(text, dim, item.where, notes, item.name)
@@ -242,7 +245,10 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
         r.tol = 0.5 if s.integer else max(pct / 100 * abs(r.exact), _floor(s),
                                           s.span_pct / 100 * keys.spans.get(r.key, 0.0), r.half)
     _grade(rows, keys, written, report)
-    scale = (lambda r, x: math.degrees(x) if r.spec.dimension == "angle" else x)
+
+    def scale(r: _Row, x: float) -> float:
+        return math.degrees(x) if r.spec.dimension == "angle" else x
+
     for r in rows:
         row = r.row
         row.submitted = scale(r, r.value)
@@ -337,7 +343,9 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
         if r.value * exact < 0 and abs(abs(r.value) - abs(exact)) <= r.tol:
             r.row.hint = T("answers.hint.sign", exact=_round(shown))
         else:
-            r.row.hint = T("answers.hint.wrong", exact=_round(shown), unit=_SI.get(r.spec.dimension, ""),
+            r.row.hint = T("answers.hint.wrong", exact=round(shown) if r.spec.integer
+                           else _round(shown),
+                           unit=_SI.get(r.spec.dimension, ""),
                            pct=100 * (r.value - exact) / exact if abs(exact) > r.tol
                            else math.nan)
         report.findings.append(Finding("wrong value", kind_text, r.row.name, r.row.hint))
