@@ -19,6 +19,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
+from ..errors import CheckError
 from .answer_keys import Keys, keys_for, valid_sets
 from .answer_table import AnswerItem, read_answers
 from .context import Options
@@ -147,21 +148,21 @@ def maybe_check_answers(scene: Any, submission: Any,
     found = scene_kind_of(scene)
     if found is None:
         return None
-    kind, _ = found
-    table = read_answers(submission, is_angle_name)
-    if kind == "dynamics":
-        from ..studies import solve_file
-
-        study = solve_file(scene)
-        keys = keys_for(study)
-        read = sum(read_name(i.name, kind, i.section, i.phi_deg is not None, keys) is not None
-                   for i in table.items)
-        if 2 * read < len(table.items):
-            return None                      # a linkage table (segments, v_B …)
-        return check_answers(scene, table, keys, kind, options or Options())
     from ..studies import solve_file
 
+    kind = found[0]
+    if kind != "dynamics":
+        table = read_answers(submission, is_angle_name)
+        return check_answers(scene, table, keys_for(solve_file(scene)), kind, options or Options())
+    try:                                # a linkage table of the same scene is checked elsewhere
+        table = read_answers(submission, is_angle_name)
+    except CheckError:
+        return None
     keys = keys_for(solve_file(scene))
+    read = sum(read_name(i.name, kind, i.section, i.phi_deg is not None, keys) is not None
+               for i in table.items)
+    if 2 * read < len(table.items):
+        return None                     # mostly segments and linkage values (pb, v_B …)
     return check_answers(scene, table, keys, kind, options or Options())
 
 
