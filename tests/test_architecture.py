@@ -22,8 +22,8 @@ ALLOWED = {
     "sheet": {"geom", "model", "scene", "construct", "dynamics", "synthesis", "solve", "drafting",
               "render.atomic"},
     "render": {"drafting"},
-    "check": {"geom", "model", "scene", "construct", "dynamics", "solve", "sheet", "render",
-              "drafting"},
+    "check": {"geom", "model", "scene", "construct", "dynamics", "synthesis", "solve", "sheet",
+              "render", "drafting", "studies"},
 }
 BASE = {"errors", "units", "i18n", "__init__", "__version__"}
 

@@ -146,13 +146,19 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
     if Path(args.submission).is_dir():
         return _run_class(args, options)
     from ..scene import load_scene
+    from .answers import maybe_check_answers, scene_kind_of
 
-    scene = load_scene(args.scene)
-    lang = getattr(args, "lang", None) or scene.language or "en"
-    if lang not in LANGUAGES:
-        lang = "en"
-    said["lang"] = lang
-    report = check(scene, args.submission, options)
+    found = scene_kind_of(args.scene)
+    if found is not None:                   # a dynamics, engine, cam or gear study
+        lang = getattr(args, "lang", None) or str(found[1].get("language", "en"))
+        said["lang"] = lang if lang in LANGUAGES else "en"
+        report = maybe_check_answers(args.scene, args.submission, options)
+    if found is None or report is None:
+        scene = load_scene(args.scene)
+        lang = getattr(args, "lang", None) or scene.language or "en"
+        said["lang"] = lang if lang in LANGUAGES else "en"
+        report = check(scene, args.submission, options)
+    lang = said["lang"]
     doc = report.to_json(lang)
     text = report.text(lang)
     for o in outputs:

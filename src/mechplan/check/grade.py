@@ -64,8 +64,12 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
           options: Options | None = None) -> CheckReport:
     """Check a submission (DXF or table) against the exact construction of a scene."""
     from ..scene import load_scene
+    from .answers import maybe_check_answers
 
     options = options or Options()
+    answers = maybe_check_answers(scene, submission, options)   # a dynamics/engine/cam/gear study
+    if answers is not None:
+        return answers
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
     sub = submission if isinstance(submission, Submission) else read_submission(submission)

@@ -6,6 +6,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -68,7 +69,8 @@ def _one(st: Student, options: Options, lang: str, out: Path) -> dict[str, Any]:
     (out / f"{st.name}.json").write_text(
         json.dumps(report.to_json(lang), ensure_ascii=False, indent=1) + "\n", encoding="utf-8")
     summary = report.summary()
-    row |= {"phi_deg": round(report.phi_deg, 4), "passed": report.passed,
+    phi = round(report.phi_deg, 4) if math.isfinite(report.phi_deg) else ""   # answer tables
+    row |= {"phi_deg": phi, "passed": report.passed,
             **{k: summary.get(k, "") for k in COLUMNS if k in summary}}
     return row
 

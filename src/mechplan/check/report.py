@@ -311,7 +311,8 @@ def render_text(r: CheckReport, lang: str = "en") -> str:
     s = r.summary()
     out = [say("report.title", submission=r.submission),
            say("report.scene", scene=r.scene),
-           say("report.phi", phi=r.phi_deg, source=r.phi_source)]
+           say("report.phi", phi=r.phi_deg, source=r.phi_source) if math.isfinite(r.phi_deg)
+           else tr(r.phi_source, lang)]
     if r.units:
         out.append(say("report.units", units=r.units))
     if r.label_distance_mm is not None:

@@ -1,0 +1,193 @@
+"""Read an answer table (TOML or CSV) of a dynamics, engine, cam or gear study.
+
+Nothing here knows the study: the reader returns ``name = text`` items with the angle of their row
+(when the table has rows per angle) and the section they stand in. Accepted forms:
+
+* TOML: top-level ``name = "value unit"`` (or a number, or ``{ value = …, unit = … }``); a section
+  named by an angle (``["φ = 30°"]``, ``["30°"]``) holds that angle's values; any other section
+  name is kept (``[pair]``, ``["зацепление"]``); an array of tables (``[[rows]]``) holds one row per
+  angle, the angle under its own name (``φ = "30°"``).
+* CSV: ``name, value[, unit]`` rows; or a wide table whose header names the angle first and then
+  the quantities (``φ; p; Pг; Pj; P; N; T; Z; Mкр``), one row per angle. Units may follow a name in
+  the header (``T, Н`` as ``T [N]`` or ``T (N)``). A decimal comma is accepted.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import re
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from ..errors import CheckError
+from .submission import Note, _read_text
+from .texts import T
+
+_ANGLE_TEXT = re.compile(r"^\s*(?:([^\d\s=:+−-][^=:]*?)\s*[=:]\s*)?([-+−]?\d+(?:[.,]\d+)?)\s*"
+                         r"(?:°|deg|град|độ|度)?\s*$")
+_UNIT_IN_NAME = re.compile(r"^(.*?)\s*[\[(]\s*([^\])]+?)\s*[\])]\s*$")
+
+
+@dataclass(frozen=True, slots=True)
+class AnswerItem:
+    """One written answer: its name, its text ("92,3 kg*m^2"), the angle of its row (degrees)
+    and the section it stands in."""
+
+    name: str
+    text: str
+    where: str
+    phi_deg: float | None = None
+    section: str | None = None
+
+
+@dataclass
+class AnswerTable:
+    """What an answer table holds."""
+
+    path: str
+    items: list[AnswerItem]
+    notes: list[Note]
+
+
+def angle_of(text: str, is_angle_name: Any) -> float | None:
+    """The angle in degrees a section title or cell names ("φ = 30°", "30°", "30"), or None."""
+    m = _ANGLE_TEXT.match(str(text))
+    if not m:
+        return None
+    if m.group(1) is not None and not is_angle_name(m.group(1)):
+        return None
+    return float(m.group(2).replace(",", ".").replace("−", "-"))
+
+
+def read_answers(path: str | Path, is_angle_name: Any) -> AnswerTable:
+    """Read a TOML or CSV answer table; ``is_angle_name(name)`` tells an angle column or key."""
+    p = Path(path)
+    if not p.exists():
+        raise CheckError(T("error.no_file"), file=str(p))
+    if p.is_dir():
+        raise CheckError(T("error.is_dir"), file=str(p))
+    suffix = p.suffix.lower()
+    if suffix == ".toml":
+        table = _read_toml(p, is_angle_name)
+    elif suffix in (".csv", ".tsv", ".txt"):
+        table = _read_csv(p, is_angle_name)
+    else:
+        raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))
+    if not table.items:
+        raise CheckError(T("answers.empty"), file=str(p))
+    return table
+
+
+def _value_text(value: Any) -> str | None:
+    if isinstance(value, bool):
+        return None
+    if isinstance(value, (int, float, str)):
+        return str(value)
+    if isinstance(value, dict) and "value" in value:
+        unit = value.get("unit")
+        return f"{value['value']} {unit}" if unit else str(value["value"])
+    return None
+
+
+def _read_toml(path: Path, is_angle_name: Any) -> AnswerTable:
+    text = _read_text(path)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
+    lines = text.splitlines()
+    out = AnswerTable(str(path), [], [])
+
+    def where(key: str) -> str:
+        pat = re.compile(r"^\s*[\"']?" + re.escape(key) + r"[\"']?\s*=")
+        for i, ln in enumerate(lines, start=1):
+            if pat.match(ln):
+                return T("where.line", file=path.name, n=i)
+        return T("where.key", file=path.name, key=key)
+
+    def put(key: str, value: Any, phi: float | None, section: str | None, at: str) -> None:
+        text_ = _value_text(value)
+        if text_ is None:
+            out.notes.append(Note("error", T("note.cannot_use", value=repr(value)), at))
+        else:
+            out.items.append(AnswerItem(key, text_, at, phi, section))
+
+    def rows(key: str, table: list[dict[str, Any]], section: str | None) -> None:
+        for i, row in enumerate(table, start=1):
+            at = T("where.row", where=where(key), n=i)
+            phi = next((angle_of(str(v), lambda _: True) for k, v in row.items()
+                        if is_angle_name(k)), None)
+            for k, v in row.items():
+                if not is_angle_name(k):
+                    put(k, v, phi, section, at)
+
+    def walk(table: dict[str, Any], phi: float | None, section: str | None) -> None:
+        for key, value in table.items():
+            if isinstance(value, dict) and "value" not in value:
+                angle = angle_of(key, is_angle_name)
+                if angle is not None:
+                    walk(value, angle, section)
+                else:
+                    walk(value, phi, key if section is None else f"{section} {key}")
+            elif isinstance(value, list) and value and all(isinstance(v, dict) for v in value):
+                rows(key, value, section)
+            elif is_angle_name(key) and phi is None and section is None:
+                continue            # the angle of a whole table is not an answer
+            else:
+                put(key, value, phi, section, where(key))
+
+    walk(data, None, None)
+    return out
+
+
+def _read_csv(path: Path, is_angle_name: Any) -> AnswerTable:
+    text = _read_text(path)
+    if "\x00" in text:
+        raise CheckError(T("error.binary"), file=str(path))
+    sample = "\n".join(text.splitlines()[:20])
+    delimiter = ";" if sample.count(";") >= max(1, sample.count(",") // 2) else (
+        "\t" if "\t" in sample else ",")
+    try:
+        rows = list(csv.reader(io.StringIO(text), delimiter=delimiter))
+    except csv.Error as exc:
+        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
+    out = AnswerTable(str(path), [], [])
+    header: list[tuple[str, str]] | None = None
+    for n, row in enumerate(rows, start=1):
+        cells = [c.strip() for c in row]
+        if not any(cells) or cells[0].startswith("#"):
+            continue
+        at = T("where.line", file=path.name, n=n)
+        if header is None and is_angle_name(_UNIT_IN_NAME.sub(r"\1", cells[0])):
+            header = []
+            for c in cells:
+                m = _UNIT_IN_NAME.match(c)
+                header.append((m.group(1), m.group(2)) if m else (c, ""))
+            continue
+        if header is not None:
+            phi = angle_of(cells[0], lambda _: True)
+            if phi is None:
+                out.notes.append(Note("error", T("answers.no_angle", row=";".join(cells)), at))
+                continue
+            for (name, unit), cell in zip(header[1:], cells[1:]):
+                if name and cell:
+                    out.items.append(AnswerItem(name, f"{cell} {unit}".strip(), at, phi))
+            continue
+        cells = [c for c in cells if c]
+        if len(cells) == 1 and "=" in cells[0]:
+            name, _, value = cells[0].partition("=")
+            cells = [name.strip(), value.strip()]
+        if len(cells) < 2 or not re.search(r"\d", cells[1]):
+            if n == 1:
+                continue            # a header "name, value, unit"
+            out.notes.append(Note("error", T("note.expected_name_value", row=repr(",".join(row))),
+                                  at))
+            continue
+        value = cells[1] if len(cells) == 2 or re.search(r"\d", cells[2]) else (
+            f"{cells[1]} {cells[2]}")
+        phi = angle_of(cells[3], lambda _: True) if len(cells) > 3 else None
+        out.items.append(AnswerItem(cells[0], value, at, phi))
+    return out

@@ -1,0 +1,360 @@
+"""Check the answer table of a dynamics, engine, cam or gear study against its exact results.
+
+Names are read through the ``[answers.<kind>]`` sections of the notation catalogue
+(``notation.toml``); every value is graded with its error: *ok* within the quantity's tolerance
+(± pct % of the exact value, ± an absolute floor, or ± span_pct % of its diagram's extent,
+whichever is largest; tooth numbers exactly); a *slip* when it does not follow from the student's
+own other answers by the course's formula (:mod:`mechplan.check.answer_keys`); *wrong* and
+*carried* when it follows from their own wrong inputs; *swapped* when two names hold each other's
+values; *new* otherwise. The result is a :class:`CheckReport` with value rows only.
+"""
+
+from __future__ import annotations
+
+import difflib
+import functools
+import math
+import re
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any
+
+from ..errors import CheckError
+from .answer_keys import Keys, keys_for, valid_sets
+from .answer_table import AnswerItem, read_answers
+from .context import Options
+from .match import _number_and_half, parse_value
+from .notation import catalogue, compact
+from .report import (
+    CARRIED,
+    NEW,
+    OK,
+    SLIP,
+    SWAPPED,
+    UNCHECKED,
+    WRONG,
+    CheckReport,
+    Finding,
+    ValueRow,
+)
+from .submission import Note
+from .texts import T, join
+
+_TABLES = {"dynamics": ("dynamics",), "engine": ("engine",), "cam": ("cam",),
+           "gears": ("gears", "gears_pair")}
+_SI = {"inertia": "kg·m²", "angular_velocity": "rad/s", "moment": "N·m", "force": "N",
+       "pressure": "Pa", "length": "m", "angle": "°", "dimensionless": "", "count": ""}
+
+
+@dataclass(frozen=True, slots=True)
+class Spec:
+    """An answer quantity of the catalogue."""
+
+    canonical: str
+    dimension: str
+    pct: float = 0.0
+    floor: str | None = None
+    span_pct: float = 0.0
+    per_angle: bool = False
+    integer: bool = False
+    magnitude: bool = False
+
+
+@functools.cache
+def _notation() -> dict[str, dict[str, list[Spec]]]:
+    """table → compact spelling → the quantities it may mean."""
+    data = catalogue()["answers"]
+    out: dict[str, dict[str, list[Spec]]] = {}
+    for table in ("dynamics", "engine", "cam", "gears", "gears_pair"):
+        names: dict[str, list[Spec]] = {}
+        for canonical, e in data[table].items():
+            spec = Spec(canonical, e["dimension"], float(e.get("pct", 0)), e.get("floor"),
+                        float(e.get("span_pct", 0)), bool(e.get("per_angle", False)),
+                        bool(e.get("integer", False)), bool(e.get("magnitude", False)))
+            for sp in [canonical, *e["spellings"]]:
+                names.setdefault(compact(sp), []).append(spec)
+                names.setdefault("=" + compact(sp, case=True), []).append(spec)
+        out[table] = names
+    return out
+
+
+def _section_kind(section: str | None) -> str | None:
+    if not section:
+        return None
+    low = section.strip().lower()
+    for kind, names in catalogue()["answers"]["sections"].items():
+        if low in names:
+            return str(kind)
+    return None
+
+
+def is_angle_name(name: str) -> bool:
+    """True for the name of an angle column or key (φ, phi, угол, góc …)."""
+    key = compact(_strip_unit(name))
+    return any(s.canonical == "phi" for t in _notation().values() for s in t.get(key, []))
+
+
+def _strip_unit(name: str) -> str:
+    return re.sub(r"\s*[\[(].*[\])]\s*$", "", name)
+
+
+def read_name(name: str, kind: str, section: str | None, has_angle: bool,
+              keys: Keys) -> tuple[Spec, str] | None:
+    """The quantity an answer's name means (its spec and its key in ``keys``), or None."""
+    tables = _TABLES[kind]
+    if kind == "gears":
+        sk = _section_kind(section)
+        if sk == "pair" or keys.study.planetary is None:
+            tables = ("gears_pair",)
+        elif sk == "planetary" or keys.study.pair is None:
+            tables = ("gears",)
+    for table in tables:
+        names = _notation()[table]
+        exact_case = names.get("=" + compact(name, case=True), [])
+        for spec in exact_case + names.get(compact(name), []):
+            if spec.canonical == "phi" or spec.per_angle != has_angle:
+                continue
+            return spec, ("pair." if table == "gears_pair" else "") + spec.canonical
+    return None
+
+
+def _closest(name: str, kind: str) -> list[str]:
+    pool = {k: specs[0].canonical for t in _TABLES[kind] for k, specs in _notation()[t].items()
+            if not k.startswith("=")}
+    hits = difflib.get_close_matches(compact(name), list(pool), n=6, cutoff=0.3)
+    return list(dict.fromkeys(pool[h] for h in hits))[:4]
+
+
+# -- entry points -------------------------------------------------------------------------------
+def scene_kind_of(scene: str | Path) -> tuple[str, dict[str, Any]] | None:
+    """The answer kind a scene file asks for (None for a linkage without [dynamics])."""
+    from ..scene.document import parse_toml, read_text, scene_kind
+
+    data = parse_toml(read_text(scene), str(scene))
+    kind = scene_kind(data, str(scene))
+    if kind == "mechanism":
+        return ("dynamics", data) if "dynamics" in data else None
+    return kind, data
+
+
+def maybe_check_answers(scene: Any, submission: Any,
+                        options: Options | None = None) -> CheckReport | None:
+    """Check an answer table when the scene is a dynamics, engine, cam or gear study and the
+    submission a TOML/CSV table of its answers; None when it is a linkage check."""
+    if not isinstance(scene, (str, Path)) or not isinstance(submission, (str, Path)):
+        return None
+    if Path(submission).suffix.lower() not in (".toml", ".csv", ".tsv", ".txt"):
+        return None
+    found = scene_kind_of(scene)
+    if found is None:
+        return None
+    from ..studies import solve_file
+
+    kind = found[0]
+    if kind != "dynamics":
+        table = read_answers(submission, is_angle_name)
+        return check_answers(scene, table, keys_for(solve_file(scene)), kind, options or Options())
+    try:                                # a linkage table of the same scene is checked elsewhere
+        table = read_answers(submission, is_angle_name)
+    except CheckError:
+        return None
+    keys = keys_for(solve_file(scene))
+    read = sum(read_name(i.name, kind, i.section, i.phi_deg is not None, keys) is not None
+               for i in table.items)
+    if 2 * read < len(table.items):
+        return None                     # mostly segments and linkage values (pb, v_B …)
+    return check_answers(scene, table, keys, kind, options or Options())
+
+
+# -- grading ------------------------------------------------------------------------------------
+@dataclass
+class _Row:
+    item: AnswerItem
+    spec: Spec
+    key: str
+    value: float
+    half: float
+    row: ValueRow
+    exact: float | None = None
+    tol: float = 0.0
+
+
+def _parse(item: AnswerItem, spec: Spec, notes: list[Note]) -> tuple[float, float] | None:
+    text = item.text.strip()
+    dim = spec.dimension
+    if dim == "count":
+        dim = "dimensionless"
+    if dim == "dimensionless" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
+        value, half = _number_and_half(text)     # a tooth number or a ratio needs no unit
+        return (value, half) if value is not None else None
+    if dim == "angle" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
+        text += " deg"                       # pressure angles are written in degrees
+    return parse_value(text, dim, item.where, notes, item.name)
+
+
+def _floor(spec: Spec) -> float:
+    if not spec.floor:
+        return 0.0
+    from ..units import parse_quantity
+
+    dim = "dimensionless" if re.fullmatch(r"[\d.]+", spec.floor) else spec.dimension
+    return parse_quantity(spec.floor, dim)
+
+
+def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
+                  options: Options) -> CheckReport:
+    """Grade every answer of a table against the study's exact results."""
+    notes: list[Note] = list(table.notes)
+    report = CheckReport(str(scene), table.path, "table", math.nan,
+                         T("answers.source", kind=T(f"answers.kind.{kind}")))
+    user = options.tolerance.get(None)
+    rows: list[_Row] = []
+    for item in table.items:
+        found = read_name(item.name, kind, item.section, item.phi_deg is not None, keys)
+        if found is None:
+            notes.append(Note("error", T("answers.not_understood", name=item.name,
+                                         kind=T(f"answers.kind.{kind}"),
+                                         known=join(_closest(item.name, kind))), item.where))
+            continue
+        spec, key = found
+        if key in keys.dimensions:
+            spec = replace(spec, dimension=keys.dimensions[key])
+        parsed = _parse(item, spec, notes)
+        if parsed is None:
+            continue
+        if spec.magnitude:
+            parsed = (abs(parsed[0]), parsed[1])
+        name = item.name if item.phi_deg is None else f"{item.name} ({item.phi_deg:g}°)"
+        unit = _SI.get(spec.dimension, "")
+        rows.append(_Row(item, spec, key, parsed[0], parsed[1],
+                         ValueRow(name, key, unit, None, None, where=item.where)))
+    written = {(r.key, r.item.phi_deg): r.value for r in rows}
+    chosen_set = _gear_set(keys, written, rows, notes, report)
+    for r in rows:
+        r.exact = chosen_set.get(r.key, keys.exact(r.key, r.item.phi_deg))
+        if r.exact is None:
+            angles = keys.angles(r.key)
+            notes.append(Note("warning", T("answers.no_exact", name=r.item.name,
+                                           phi=r.item.phi_deg if r.item.phi_deg is not None
+                                           else math.nan,
+                                           angles=join(f"{a:g}°" for a in angles) or "—")
+                              if angles else T("answers.not_computed", name=r.item.name),
+                              r.item.where))
+            continue
+        s = r.spec
+        pct = user.pct if user is not None and not s.integer else s.pct
+        r.tol = 0.5 if s.integer else max(pct / 100 * abs(r.exact), _floor(s),
+                                          s.span_pct / 100 * keys.spans.get(r.key, 0.0), r.half)
+    _grade(rows, keys, written, report)
+
+    def scale(r: _Row, x: float) -> float:
+        return math.degrees(x) if r.spec.dimension == "angle" else x
+
+    for r in rows:
+        row = r.row
+        row.submitted = scale(r, r.value)
+        if r.exact is not None:
+            row.exact = scale(r, r.exact)
+            row.tolerance = scale(r, r.tol)
+            row.error_pct = (100 * (r.value - r.exact) / r.exact
+                             if abs(r.exact) > r.tol else None)
+        report.values.append(row)
+    report.notes = notes
+    return report
+
+
+def _gear_set(keys: Keys, written: dict[tuple[str, float | None], float], rows: list[_Row],
+              notes: list[Note], report: CheckReport) -> dict[str, float]:
+    """The exact values of the student's own tooth-number set when it meets every condition."""
+    if keys.kind != "gears" or keys.study.planetary is None:
+        return {}
+    n = len(keys.study.planetary.chosen.z)
+    zs = [written.get((f"z{i}", None)) for i in range(1, n + 1)]
+    if any(z is None for z in zs):
+        return {}
+    z = tuple(round(v) for v in zs if v is not None)
+    sets = valid_sets(keys)
+    chosen = tuple(int(v) for v in keys.study.planetary.chosen.z)
+    if z in sets and z != chosen:
+        c = sets[z]
+        notes.append(Note("info", T("answers.valid_set", z=join(z), chosen=join(chosen))))
+        return {**{f"z{i}": float(v) for i, v in enumerate(z, start=1)}, "u": c.ratio,
+                "a_w": c.a_w[0], "assembly": c.assembly_value}
+    return {}
+
+
+def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None], float],
+           report: CheckReport) -> None:
+    kind_text = T(f"answers.kind.{keys.kind}")
+    checked = [r for r in rows if r.exact is not None]
+    ex = {id(r): float(r.exact) for r in checked if r.exact is not None}
+    off = {id(r) for r in checked if abs(r.value - ex[id(r)]) > r.tol}
+    # swapped names: two values off by themselves that are right under each other's names
+    swapped: set[int] = set()
+    for a in checked:
+        for b in checked:
+            if (id(a) < id(b) and id(a) in off and id(b) in off and id(a) not in swapped
+                    and id(b) not in swapped and a.item.phi_deg == b.item.phi_deg
+                    and a.spec.dimension == b.spec.dimension
+                    and abs(a.value - ex[id(b)]) <= b.tol and abs(b.value - ex[id(a)]) <= a.tol):
+                swapped |= {id(a), id(b)}
+                hint = T("answers.hint.swapped", a=a.row.name, b=b.row.name)
+                for r in (a, b):
+                    r.row.verdict, r.row.cause, r.row.hint = WRONG, SWAPPED, hint
+                report.findings.append(Finding("swapped labels", kind_text,
+                                               f"{a.row.name} ↔ {b.row.name}", hint))
+    status: dict[tuple[str, float | None], str] = {}
+    pending: list[tuple[_Row, Any]] = []
+    for r in checked:
+        if id(r) in swapped:
+            status[(r.key, r.item.phi_deg)] = WRONG
+            continue
+        own = keys.own(r.key, r.item.phi_deg, written)
+        if own is not None:
+            r.row.own = own[0]
+            arith = max(0.01 * abs(own[0]), r.half, 0.25 * _floor(r.spec), 0.2
+                        * r.spec.span_pct / 100 * keys.spans.get(r.key, 0.0), 1e-9)
+            if abs(r.value - own[0]) > arith:
+                r.row.verdict, r.row.cause = SLIP, NEW
+                r.row.hint = T("answers.hint.slip", formula=own[1], own=_round(
+                    math.degrees(own[0]) if r.spec.dimension == "angle" else own[0]),
+                               written=r.item.name, text=r.item.text)
+                report.findings.append(Finding("arithmetic slip", kind_text, r.row.name,
+                                               r.row.hint))
+                status[(r.key, r.item.phi_deg)] = SLIP
+                continue
+        if id(r) not in off:
+            r.row.verdict = OK
+            status[(r.key, r.item.phi_deg)] = OK
+            continue
+        status[(r.key, r.item.phi_deg)] = WRONG
+        pending.append((r, own))
+    for r, own in pending:
+        upstream = [n for n in (own[2] if own else ())
+                    if status.get((n, r.item.phi_deg if (n, r.item.phi_deg) in status else None))
+                    in (WRONG, SLIP)]
+        r.row.verdict = WRONG
+        if upstream:
+            r.row.cause = CARRIED
+            r.row.hint = T("answers.hint.carried", formula=own[1], inputs=join(upstream))
+            continue
+        r.row.cause = NEW
+        exact = r.exact if r.exact is not None else math.nan
+        shown = math.degrees(exact) if r.spec.dimension == "angle" else exact
+        if r.value * exact < 0 and abs(abs(r.value) - abs(exact)) <= r.tol:
+            r.row.hint = T("answers.hint.sign", exact=_round(shown))
+        else:
+            r.row.hint = T("answers.hint.wrong", exact=round(shown) if r.spec.integer
+                           else _round(shown),
+                           unit=_SI.get(r.spec.dimension, ""),
+                           pct=100 * (r.value - exact) / exact if abs(exact) > r.tol
+                           else math.nan)
+        report.findings.append(Finding("wrong value", kind_text, r.row.name, r.row.hint))
+    for r in rows:
+        if r.exact is None:
+            r.row.verdict = UNCHECKED
+
+
+def _round(x: float) -> float:
+    """Four significant digits, for a hint."""
+    return float(f"{x:.4g}") if math.isfinite(x) else x
