@@ -1,4 +1,5 @@
-"""Time `mechplan draw templates/v_engine.toml` (DXF + SVG + PDF of a full A1 sheet), start-up included.
+"""Time `mechplan draw templates/v_engine.toml` (DXF + SVG + PDF of a full A1 sheet), start-up
+included.
 
 Writes the section "Drawing a sheet" of RESULTS.md. Goal (issue 4): < 3 s on this machine.
 """

@@ -5,7 +5,7 @@ Writes the section "Speed against error" of ``benchmarks/RESULTS.md`` and the lo
 ``benchmarks/speed_error.png``. Run from the repository root::
 
     python benchmarks/speed_error.py            # full run, a few minutes
-    python benchmarks/speed_error.py --quick    # the reduced run of `python benchmarks/bench.py --quick`
+    python benchmarks/speed_error.py --quick    # the reduced run of `bench.py --quick`
 """
 
 from __future__ import annotations
@@ -90,7 +90,8 @@ allocated before; the "cold allocator" table below shows the effect.
 
 
 def cold_allocator(n: int) -> list[dict]:
-    """Exact float64 and the closed form at N in a fresh child process without the allocator setting."""
+    """Exact float64 and the closed form at N in a fresh child process without the allocator
+    setting."""
     code = ("import json, sys; from mechplan import bench\n"
             f"cfg = bench.Config(cases=('slider_crank', 'four_bar'), ns=({n},), "
             "methods=('exact float64', 'numpy closed form'), steady_allocator=False)\n"

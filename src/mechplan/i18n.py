@@ -2,9 +2,9 @@
 
 Every user-visible sentence, label, heading and title is a message id looked up here. The catalogues
 are gettext ``.po`` files, one folder per language (``locale/<lang>/``) and one file per area
-(``core.po``, ``cam.po``, …): a translator edits them without reading Python, and each capability adds
-its own file without touching the others. Ids are symbolic (``cam.law.cycloidal``); the English text
-lives in ``locale/en/`` like every other language. Placeholders are ``str.format`` fields
+(``core.po``, ``cam.po``, …): a translator edits them without reading Python, and each capability
+adds its own file without touching the others. Ids are symbolic (``cam.law.cycloidal``); the English
+text lives in ``locale/en/`` like every other language. Placeholders are ``str.format`` fields
 (``{value}``); numbers are formatted by :func:`number` (Babel) so that ru/vi get a decimal comma.
 """
 

@@ -1,4 +1,5 @@
-"""Error estimates and flags of a solution, as the report, the warnings and the JSON present them."""
+"""Error estimates and flags of a solution, as the report, the warnings and the JSON present
+them."""
 
 from __future__ import annotations
 
@@ -41,7 +42,8 @@ def flag_line(f: Flag, tolerance: float, language: str) -> str:
 
 
 def warning_lines(sol: Solution, language: str | None = None, limit: int = WARNING_LIMIT) -> list[str]:
-    """Warnings for failed positions and flagged results (at most ``limit`` of each, then a count)."""
+    """Warnings for failed positions and flagged results (at most ``limit`` of each, then a
+    count)."""
     lang = language or sol.scene.language
     out = [message("estimate.failure", lang, phi=_phi(f.phi_deg, lang), reason=f.reason)
            for f in sol.failures[:limit]]

@@ -1,6 +1,6 @@
-"""The profile by inversion against independent computations: the pressure-angle formula, normals and
-curvature by finite differences of the profile, the envelope condition (shapely), the minimum base
-radius by brute force, the chord error of the profile polyline."""
+"""The profile by inversion against independent computations: the pressure-angle formula, normals
+and curvature by finite differences of the profile, the envelope condition (shapely), the minimum
+base radius by brute force, the chord error of the profile polyline."""
 
 from __future__ import annotations
 

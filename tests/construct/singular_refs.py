@@ -16,7 +16,8 @@ def _f(x) -> float:
 
 
 def slider_crank(r: float, l: float, e: float, theta: float, omega: float) -> dict[str, float]:
-    """Offset slider-crank: crank OA = r about O = (0, 0), rod AB = l, B on the guide y = e, far branch.
+    """Offset slider-crank: crank OA = r about O = (0, 0), rod AB = l, B on the guide y = e, far
+    branch.
 
     Returns B's x, v, a (along the guide) and the rod's angle, ω, ε.
     """
@@ -73,5 +74,6 @@ def four_bar(a: float, b: float, c: float, d: float, theta: float, omega: float)
 
 
 def slotted_through_pivot(omega: float) -> dict[str, float]:
-    """Coulisse pivoting on the crank circle: ω3 = ω1/2 and ε3 = 0 at every angle (inscribed angle)."""
+    """Coulisse pivoting on the crank circle: ω3 = ω1/2 and ε3 = 0 at every angle (inscribed
+    angle)."""
     return {"omega_3": omega / 2.0, "epsilon_3": 0.0}

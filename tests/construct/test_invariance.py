@@ -49,7 +49,8 @@ def test_rigid_motion_of_four_bar(dx, dy, deg):
 
 
 def test_mirror_image_of_four_bar():
-    """Mirror in the x axis: y → −y, the crank turns the other way, sides swap, ω and ε change sign."""
+    """Mirror in the x axis: y → −y, the crank turns the other way, sides swap, ω and ε change
+    sign."""
     _, c0 = build_text(four_bar_text())
     _, c1 = build_text(four_bar_text(sense="cw", side_c="right", side_e="right"))
     ev0, ev1 = c0.evaluate(PHI), c1.evaluate(PHI)

@@ -1,4 +1,5 @@
-"""Piston kinematics against independent references (mpmath derivatives, geometry of the drawing)."""
+"""Piston kinematics against independent references (mpmath derivatives, geometry of the
+drawing)."""
 
 from __future__ import annotations
 

@@ -1,10 +1,10 @@
 """A sweep's plan: one construction per topology, and the steps each varied key changes.
 
 A grid of variants shares the construction's steps, inputs and order; only some steps' parameters
-(lengths, branch signs, ω) differ. Each step's dependence on the varied keys is found by probing, and
-its versions are built once per combination of the keys it depends on — not once per variant — so a
-worker evaluates a variant by swapping a few prepared steps into the shared construction. Corners of
-the grid are rebuilt in full and compared, which catches a dependence the probes missed.
+(lengths, branch signs, ω) differ. Each step's dependence on the varied keys is found by probing,
+and its versions are built once per combination of the keys it depends on — not once per variant —
+so a worker evaluates a variant by swapping a few prepared steps into the shared construction.
+Corners of the grid are rebuilt in full and compared, which catches a dependence the probes missed.
 """
 
 from __future__ import annotations
@@ -113,7 +113,8 @@ class SweepPlan:
         return math.prod(self.shape)
 
     def restricted(self, start: int, stop: int) -> SweepPlan:
-        """The plan with only the prepared steps variants ``start``…``stop - 1`` use (small to send)."""
+        """The plan with only the prepared steps variants ``start``…``stop - 1`` use (small to
+        send)."""
         grid = np.unravel_index(np.arange(start, stop), self.shape)
         tables = {}
         for dep, table in self.tables.items():

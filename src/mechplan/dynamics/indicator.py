@@ -3,11 +3,11 @@
 A diagram is a set of branches, one per stroke (four-stroke: intake, compression, expansion,
 exhaust; two-stroke: expansion, compression), each a piecewise function p(V) on [V_c, V_a]. It comes
 from the thermal calculation (:func:`thermal_diagram`: the Grinevetsky–Mazing construction with the
-corners rounded) or from a measured table (:func:`volume_table_diagram`, :func:`angle_table_diagram`).
-Any crank mechanism then gives p(φ): the stroke from φ, V from the piston travel — so the
-machine-dynamics code can call :meth:`IndicatorDiagram.at_phi` with its own kinematics.
-Pressures are absolute (Pa), volumes m³, angles rad from the TDC that opens the intake (4-stroke)
-or from the TDC of combustion (2-stroke).
+corners rounded) or from a measured table (:func:`volume_table_diagram`,
+:func:`angle_table_diagram`). Any crank mechanism then gives p(φ): the stroke from φ, V from the
+piston travel — so the machine-dynamics code can call :meth:`IndicatorDiagram.at_phi` with its own
+kinematics. Pressures are absolute (Pa), volumes m³, angles rad from the TDC that opens the intake
+(4-stroke) or from the TDC of combustion (2-stroke).
 """
 
 from __future__ import annotations

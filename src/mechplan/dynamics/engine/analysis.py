@@ -20,7 +20,8 @@ WEAR_SPREAD = math.radians(60.0)
 
 @dataclass(frozen=True)
 class PinLoad:
-    """Load of the rods on one crank pin in the crank's frame (T across, Z along, towards the axis)."""
+    """Load of the rods on one crank pin in the crank's frame (T across, Z along, towards the
+    axis)."""
 
     T: Array
     Z: Array

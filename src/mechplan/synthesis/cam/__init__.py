@@ -212,7 +212,8 @@ def design(spec: CamSpec) -> CamDesign:
 
 
 def profile_table(table: Sample) -> list[dict[str, float]]:
-    """Rows of the profile table: φ, s, s′, s″, α, polar (ρ, θ) and Cartesian (x, y) of the profile."""
+    """Rows of the profile table: φ, s, s′, s″, α, polar (ρ, θ) and Cartesian (x, y) of the
+    profile."""
     rho, theta = polar(table.profile)
     rows = []
     for i in range(table.phi.size):

@@ -1,4 +1,5 @@
-"""Normalised motion laws y(x), y′(x), y″(x) on x ∈ [0, 1] with y(0) = 0, y(1) = 1, y′(0) = y′(1) = 0.
+"""Normalised motion laws y(x), y′(x), y″(x) on x ∈ [0, 1]
+with y(0) = 0, y(1) = 1, y′(0) = y′(1) = 0.
 
 Every law except 3-4-5 and the tables is a chain of acceleration segments a = a0 + b·sin(w·t + p),
 integrated in closed form and scaled so y(1) = 1; the uniform law's softened ends are such
