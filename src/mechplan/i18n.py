@@ -44,7 +44,8 @@ def catalogue(language: str) -> dict[str, str]:
                 if msg.id and isinstance(msg.id, str):
                     text = msg.string if isinstance(msg.string, str) else ""
                     if msg.id in messages:
-                        raise ValueError(f"message id {msg.id!r} is defined twice in locale/{language}")
+                        raise ValueError(f"message id {msg.id!r} is defined twice "
+                                         f"in locale/{language}")
                     messages[msg.id] = text
     return messages
 

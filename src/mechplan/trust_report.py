@@ -41,7 +41,8 @@ def flag_line(f: Flag, tolerance: float, language: str) -> str:
                    tolerance=_sci(tolerance, language))
 
 
-def warning_lines(sol: Solution, language: str | None = None, limit: int = WARNING_LIMIT) -> list[str]:
+def warning_lines(sol: Solution, language: str | None = None,
+                  limit: int = WARNING_LIMIT) -> list[str]:
     """Warnings for failed positions and flagged results (at most ``limit`` of each, then a
     count)."""
     lang = language or sol.scene.language

@@ -123,8 +123,8 @@ def read_variants(path: str | Path) -> list[Variant]:
         return _from_csv(text, file)
     if path.suffix.lower() == ".toml":
         return _from_toml(text, file)
-    raise SceneError(f"the variants file must be .csv or .toml (got {path.suffix or 'no suffix'!r})",
-                     file=file)
+    raise SceneError("the variants file must be .csv or .toml "
+                     f"(got {path.suffix or 'no suffix'!r})", file=file)
 
 
 def _from_csv(text: str, file: str) -> list[Variant]:

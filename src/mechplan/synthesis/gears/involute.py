@@ -102,7 +102,8 @@ def _layout(p: PairSpec, x1: float, x2: float) -> Pair:
     z1, z2 = p.z1, p.z2
     inv_w = 2 * (x1 + x2) * math.tan(al) / (z1 + z2) + float(inv(al))
     if inv_w <= 0:
-        raise SceneError(f"x1 + x2 = {x1 + x2:g} gives inv α_w = {inv_w:.3g} ≤ 0; use larger shifts",
+        raise SceneError(f"x1 + x2 = {x1 + x2:g} gives inv α_w = {inv_w:.3g} ≤ 0; "
+                         "use larger shifts",
                          key="pair.shifts")
     aw = inv_inverse(inv_w)
     a = m * (z1 + z2) / 2

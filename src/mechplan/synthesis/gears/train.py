@@ -62,7 +62,8 @@ def check_links(spec: PlanetarySpec) -> None:
                              f"{spec.scheme.value} (got {name!r})", key=f"planetary.{key}")
     if len({spec.fixed, spec.input, spec.output}) != 3:
         raise SceneError(f"fixed, input and output must be three different links of {links} (got "
-                         f"{spec.fixed!r}, {spec.input!r}, {spec.output!r})", key="planetary.output")
+                         f"{spec.fixed!r}, {spec.input!r}, {spec.output!r})",
+                         key="planetary.output")
 
 
 def module_ratio(spec: PlanetarySpec) -> float:
