@@ -42,8 +42,8 @@ def machine() -> str:
     return "\n".join([
         (f"- {platform.processor() or platform.machine()}, {os.cpu_count()} logical cores, "
         f"{platform.system()} {platform.release()}"),
-        (f"- Python {platform.python_version()}, numpy {np.__version__}, joblib {joblib.__version__},"
-        f" pyarrow {pyarrow.__version__}"),
+        (f"- Python {platform.python_version()}, numpy {np.__version__}, "
+         f"joblib {joblib.__version__}, pyarrow {pyarrow.__version__}"),
         f"- load average at the start: {', '.join(f'{x:.2f}' for x in os.getloadavg())}",
         f"- run: {time.strftime('%Y-%m-%d %H:%M %Z')}"])
 

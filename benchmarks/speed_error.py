@@ -150,7 +150,8 @@ def scatter(rows: list[bench.Row], path=PNG) -> None:
 
 def profile_block(n: int) -> str:
     """Markdown: where the exact float64 evaluation spends its time at N positions."""
-    lines = ["| mechanism | steps evaluated | ns/position (sum of steps) | top operations (share) |",
+    lines = [("| mechanism | steps evaluated | ns/position (sum of steps) "
+              "| top operations (share) |"),
              "|---|---|---|---|"]
     for name, case in bench.CASES.items():
         model = bench.Model.load(case)
