@@ -136,7 +136,8 @@ def test_generated_fillet_runs_from_the_root_circle_into_the_involute(z, x):
     assert math.hypot(*f[0]) == pytest.approx(g.r_f, abs=1e-12)
     assert math.hypot(*f[-1]) == pytest.approx(r[0], abs=1e-12)
     assert math.atan2(f[-1][1], f[-1][0]) == pytest.approx(th[0], abs=1e-12)
-    # the start radius is the lower limit of the generated involute: ρ_l = r sin α − (h_a* − x)m/sin α
+    # the start radius is the lower limit of the generated involute:
+    # ρ_l = r sin α − (h_a* − x)m/sin α
     rho_l = g.r * math.sin(ALPHA) - (1.0 - x) * 0.004 / math.sin(ALPHA)
     assert r[0] == pytest.approx(math.hypot(g.r_b, rho_l), rel=1e-12)
     radii = np.hypot(f[:, 0], f[:, 1])
