@@ -42,8 +42,8 @@ def machine() -> str:
     return "\n".join([
         (f"- {platform.processor() or platform.machine()}, {os.cpu_count()} logical cores, "
         f"{platform.system()} {platform.release()}"),
-        (f"- Python {platform.python_version()}, numpy {np.__version__}, joblib {joblib.__version__},"
-        f" pyarrow {pyarrow.__version__}"),
+        (f"- Python {platform.python_version()}, numpy {np.__version__}, "
+         f"joblib {joblib.__version__}, pyarrow {pyarrow.__version__}"),
         f"- load average at the start: {', '.join(f'{x:.2f}' for x in os.getloadavg())}",
         f"- run: {time.strftime('%Y-%m-%d %H:%M %Z')}"])
 
@@ -182,8 +182,8 @@ def bench_sweep(total: int) -> str:
     s_large_chunk = peak_of_sweep(axes, small, 1000)
     return f"""A sweep of **{result.variants:,} slider-crank variants × 360 positions**
 (`slider_crank.toml`, OA 80…120 mm × AB 300…500 mm; summaries: max |v|, |a| of A, B, S2, max |ω2|,
-|ε2|, min transmission angle, max |M_b| of every variant), 2 joblib workers, {result.chunks} chunks of
-{result.variants // result.chunks:,} variants:
+|ε2|, min transmission angle, max |M_b| of every variant), 2 joblib workers, {result.chunks} chunks
+of {result.variants // result.chunks:,} variants:
 
 | measure | value |
 |---|---|
@@ -191,12 +191,18 @@ def bench_sweep(total: int) -> str:
 | sweep wall time (2 workers, outputs written; load average {load:.1f} before) | {wall:.1f} s |
 | per variant-position, wall | {per_pos_wall * 1e9:.0f} ns |
 | per variant-position, CPU the workers spent in their chunks | {per_pos_cpu * 1e9:.0f} ns |
-| single-scene evaluation of the same targets, per position (360 positions) | {per_pos_single * 1e9:.0f} ns |
-| chunk evaluation in one process, CPU per variant-position (chunks of 250) | {per_pos_chunk * 1e9:.0f} ns |
-| **ratio** chunk CPU per variant-position / single-scene CPU per position | **{per_pos_chunk / per_pos_single:.2f}×** (goal ≤ 1.2×) |
-| ratio of the 2-worker run: workers' CPU per variant-position / single-scene | {per_pos_cpu / per_pos_single:.2f}× |
-| ratio of the 2-worker run: wall × 2 per variant-position / single-scene (start-up, dispatch and the other users of the machine included) | {wall * 2 / work / per_pos_single:.2f}× |
-| naive: parse + build + evaluate each variant, per variant | {naive * 1e3:.2f} ms (vs {per_pos_cpu * 360 * 1e3:.2f} ms here) |
+| single-scene evaluation of the same targets, per position (360 positions) \
+| {per_pos_single * 1e9:.0f} ns |
+| chunk evaluation in one process, CPU per variant-position (chunks of 250) \
+| {per_pos_chunk * 1e9:.0f} ns |
+| **ratio** chunk CPU per variant-position / single-scene CPU per position \
+| **{per_pos_chunk / per_pos_single:.2f}×** (goal ≤ 1.2×) |
+| ratio of the 2-worker run: workers' CPU per variant-position / single-scene \
+| {per_pos_cpu / per_pos_single:.2f}× |
+| ratio of the 2-worker run: wall × 2 per variant-position / single-scene (start-up, dispatch and \
+the other users of the machine included) | {wall * 2 / work / per_pos_single:.2f}× |
+| naive: parse + build + evaluate each variant, per variant \
+| {naive * 1e3:.2f} ms (vs {per_pos_cpu * 360 * 1e3:.2f} ms here) |
 | summary.parquet | {size_mb:.1f} MiB |
 | main process max RSS (whole benchmark) | {main_rss:.0f} MiB |
 

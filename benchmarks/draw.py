@@ -1,4 +1,5 @@
-"""Time `mechplan draw templates/v_engine.toml` (DXF + SVG + PDF of a full A1 sheet), start-up included.
+"""Time `mechplan draw templates/v_engine.toml` (DXF + SVG + PDF of a full A1 sheet), start-up
+included.
 
 Writes the section "Drawing a sheet" of RESULTS.md. Goal (issue 4): < 3 s on this machine.
 """
@@ -39,8 +40,8 @@ def main() -> None:
 |---|---|---|---|
 | {RUNS} | {best:.2f} s | {median:.2f} s | {worst:.2f} s |
 
-Goal of issue 4, a full A1 sheet (position plan with extreme positions and trajectories, velocity and
-acceleration plans, three force polygons, Zhukovsky's lever, all tables) as DXF + SVG + PDF in
+Goal of issue 4, a full A1 sheet (position plan with extreme positions and trajectories, velocity
+and acceleration plans, three force polygons, Zhukovsky's lever, all tables) as DXF + SVG + PDF in
 < 3 s including start-up: {verdict} (median {median:.2f} s).
 """
     write_section("draw", "Drawing a sheet", body)

@@ -80,25 +80,29 @@ def _hard_rows() -> list[str]:
                 v = ev[sid][k]
                 value = float(v[col]) if col is not None else float(v)
                 estimate = float(est.relative(sid)[k])
-                actual = abs(value - exact[name]) / est.scale[sid] if math.isfinite(value) else math.inf
+                actual = (abs(value - exact[name]) / est.scale[sid] if math.isfinite(value)
+                          else math.inf)
                 verdict = ("refused" if not math.isfinite(value) else
                            "flagged" if estimate > 1e-6 else
                            "bounded" if actual <= 10 * estimate else "SILENTLY WRONG")
-                rows.append(f"| {title} | {off:+g}° | {name} | {actual:.2e} | {estimate:.2e} | {verdict} |")
+                rows.append(f"| {title} | {off:+g}° | {name} | {actual:.2e} | {estimate:.2e} "
+                            f"| {verdict} |")
     return rows
 
 
 def main() -> None:
     lines = ["# Error estimates: cost and honesty", "",
-             f"Machine: {platform.processor() or platform.machine()}, Python {platform.python_version()}, "
-             f"numpy {np.__version__}; best of {REPEAT} runs, N = {N:,} positions, positions + velocities "
-             "+ accelerations of every point and link.", "",
+             (f"Machine: {platform.processor() or platform.machine()}, "
+              f"Python {platform.python_version()}, numpy {np.__version__}; "
+              f"best of {REPEAT} runs, N = {N:,} positions, "
+              "positions + velocities + accelerations of every point and link."), "",
              "| mechanism | evaluation, ms | estimates, ms | added time |", "|---|---|---|---|"]
     for name in ("slider_crank", "four_bar", "v_engine", "shaper"):
         e, s = _cost(name)
         lines.append(f"| {name} | {e * 1e3:.1f} | {s * 1e3:.1f} | {100 * s / e:.0f} % |")
     lines += ["", "## Actual error against the estimate on the hard cases",
-              "Relative to the plan's scale (ω1·L, ω1²·L, ω1, ω1²); references are 60-digit closed forms.",
+              ("Relative to the plan's scale (ω1·L, ω1²·L, ω1, ω1²); "
+               "references are 60-digit closed forms."),
               "", "| case | from the singular angle | quantity | actual | estimate | verdict |",
               "|---|---|---|---|---|---|"]
     lines += _hard_rows()

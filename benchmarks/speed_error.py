@@ -5,7 +5,7 @@ Writes the section "Speed against error" of ``benchmarks/RESULTS.md`` and the lo
 ``benchmarks/speed_error.png``. Run from the repository root::
 
     python benchmarks/speed_error.py            # full run, a few minutes
-    python benchmarks/speed_error.py --quick    # the reduced run of `python benchmarks/bench.py --quick`
+    python benchmarks/speed_error.py --quick    # the reduced run of `bench.py --quick`
 """
 
 from __future__ import annotations
@@ -33,39 +33,39 @@ PNG = HERE / "speed_error.png"
 MODEL_TEXT = f"""\
 **How errors are measured.** The reference is `tests/independent/mpref.py`: the loop-closure
 equations of each mechanism solved by Newton's method at 40 significant digits, velocities and
-accelerations by mpmath differentiation of that position solution (not the project's plans). For each
-kind of quantity — positions r, velocities v and accelerations a of the compared points, ω and ε of the
-compared links — the error is the largest vector difference from the reference over the compared
-positions, divided by the largest magnitude of that kind over {bench.SCALE_POSITIONS} positions of the
-cycle (so a velocity that passes through zero at a dead centre does not make the error meaningless).
-"max rel. error" is the largest of the kinds a method gives. Up to N = 360 every position is compared;
-at N = 100 000 a deterministic subsample of 50 evenly spread positions (indices
-`round(linspace(0, N−1, 50))`), because the mpmath reference costs 10–45 ms per position. Positions are
-φ = {bench.PHI0} rad + 2πk/N in each scene's own convention; none of the four mechanisms has a singular
-position, so all of them are "regular positions".
+accelerations by mpmath differentiation of that position solution (not the project's plans). For
+each kind of quantity — positions r, velocities v and accelerations a of the compared points, ω and
+ε of the compared links — the error is the largest vector difference from the reference over the
+compared positions, divided by the largest magnitude of that kind over {bench.SCALE_POSITIONS}
+positions of the cycle (so a velocity that passes through zero at a dead centre does not make the
+error meaningless). "max rel. error" is the largest of the kinds a method gives. Up to N = 360 every
+position is compared; at N = 100 000 a deterministic subsample of 50 evenly spread positions
+(indices `round(linspace(0, N−1, 50))`), because the mpmath reference costs 10–45 ms per position.
+Positions are φ = {bench.PHI0} rad + 2πk/N in each scene's own convention; none of the four
+mechanisms has a singular position, so all of them are "regular positions".
 
-**Timing.** `time.perf_counter`, best of k runs in one process (k ≥ 7 and ≥ 0.5 s of runs, fewer only
-for runs longer than 2 s), after the model is built: the construction graph (scene → steps), the
-pylinkage `Linkage` and its numba compilation, the `mechanism` objects are all set up outside the
-timed call. What is timed computes, for all N positions, the positions, velocities and accelerations
-of the compared points (and ω, ε where the method has them). The process keeps freed heap memory
-(glibc `mallopt(M_TRIM_THRESHOLD = 1 GiB, M_MMAP_THRESHOLD = 32 MiB)`) so that every method is timed
-in steady state rather than paying first-touch page faults whose count depends on what the process
-allocated before; the "cold allocator" table below shows the effect.
+**Timing.** `time.perf_counter`, best of k runs in one process (k ≥ 7 and ≥ 0.5 s of runs, fewer
+only for runs longer than 2 s), after the model is built: the construction graph (scene → steps),
+the pylinkage `Linkage` and its numba compilation, the `mechanism` objects are all set up outside
+the timed call. What is timed computes, for all N positions, the positions, velocities and
+accelerations of the compared points (and ω, ε where the method has them). The process keeps freed
+heap memory (glibc `mallopt(M_TRIM_THRESHOLD = 1 GiB, M_MMAP_THRESHOLD = 32 MiB)`) so that every
+method is timed in steady state rather than paying first-touch page faults whose count depends on
+what the process allocated before; the "cold allocator" table below shows the effect.
 
 **Methods.**
 - *exact float64 / float32*: the construction graph evaluated lazily and vectorised
   (`Construction.evaluate(phi, dtype)`); float32 carries every step in single precision.
 - *ruler 0.5 mm / 0.1 mm*: the same construction drawn at the scale factors the sheet would use (the
   scene's fixed μ, or the round μ that fits the largest segment of each plan in 150 mm / 120 mm) and
-  carried on as a student carries measured segments: every point placed on a plan (crank pin, compass
-  meet, image on the velocity or acceleration plan, end of a normal or Coriolis component) is measured
-  from the point its segment starts at, its length is rounded to the ruler's precision and its
-  direction to the angle whose arc at that length is the same precision (the end moves at most half a
-  step sideways), and everything after it — lines through it, meets, ω and ε computed from measured
-  segments — is built from the rounded point (`mechplan_bench.RulerEvaluation`). Frame points and
-  poles are exact. Rounding is deterministic (nearest), so this is one realisation of a careful
-  drawing, not an average over students.
+  carried on as a student carries measured segments: every point placed on a plan (crank pin,
+  compass meet, image on the velocity or acceleration plan, end of a normal or Coriolis component)
+  is measured from the point its segment starts at, its length is rounded to the ruler's precision
+  and its direction to the angle whose arc at that length is the same precision (the end moves at
+  most half a step sideways), and everything after it — lines through it, meets, ω and ε computed
+  from measured segments — is built from the rounded point (`mechplan_bench.RulerEvaluation`). Frame
+  points and poles are exact. Rounding is deterministic (nearest), so this is one realisation of a
+  careful drawing, not an average over students.
 - *finite differences*: positions from the construction, v and a by central differences in φ with
   steps h_v = {bench.FD_STEP_V:g} rad and h_a = {bench.FD_STEP_A:g} rad (near the optimum (3ε)^(1/3)
   and (48ε)^(1/4) for double precision), ω and ε the same way from the link angles; all five φ grids
@@ -75,22 +75,24 @@ allocated before; the "cold allocator" table below shows the effect.
 - *numpy closed form*: `tests/independent/closed_form.py`, hand-written vectorised formulas for the
   slider-crank and the four-bar (the speed baseline of the goals).
 - *pylinkage*: `Linkage.step_fast_with_kinematics`, positions, velocities and accelerations of the
-  joints (pylinkage has no link ω, ε output). Slider joints are `RRPDyad`s on a frame line, the coupler
-  point, the lug D and the coulisse point B are `FixedDyad`s (B as the point 600 mm from O3 on the
-  line O3→A — the coulisse turns with the slider, so the shaper needs no prismatic pair on a moving
-  guide). pylinkage advances the crank step by step (θ ← atan2(current) + Δθ) and keeps the nearest
-  solution, so its k-th position is θ0 + kΔθ up to accumulated rounding, which is part of its measured
-  error. "no numba" runs the same code with `NUMBA_DISABLE_JIT=1` in a child process (numba cannot be
-  switched off inside a process that has imported it).
-- *mechanism (fsolve)*: the `mechanism` package: vector loop equations solved by `scipy.optimize.fsolve`
-  at each position, three solves per position (position, velocity, acceleration) in a Python loop.
-  Modelled for the slider-crank (points A, B, link 2) and the four-bar (points B, C, links 2, 3; the
-  package has no rigid coupler point without an extra hand-written loop). Not run at N = 100 000
-  (its cost per position is flat; the N = 360 row gives it)."""
+  joints (pylinkage has no link ω, ε output). Slider joints are `RRPDyad`s on a frame line, the
+  coupler point, the lug D and the coulisse point B are `FixedDyad`s (B as the point 600 mm from O3
+  on the line O3→A — the coulisse turns with the slider, so the shaper needs no prismatic pair on a
+  moving guide). pylinkage advances the crank step by step (θ ← atan2(current) + Δθ) and keeps the
+  nearest solution, so its k-th position is θ0 + kΔθ up to accumulated rounding, which is part of
+  its measured error. "no numba" runs the same code with `NUMBA_DISABLE_JIT=1` in a child process
+  (numba cannot be switched off inside a process that has imported it).
+- *mechanism (fsolve)*: the `mechanism` package: vector loop equations solved by
+  `scipy.optimize.fsolve` at each position, three solves per position (position, velocity,
+  acceleration) in a Python loop. Modelled for the slider-crank (points A, B, link 2) and the
+  four-bar (points B, C, links 2, 3; the package has no rigid coupler point without an extra
+  hand-written loop). Not run at N = 100 000 (its cost per position is flat; the N = 360 row gives
+  it)."""
 
 
 def cold_allocator(n: int) -> list[dict]:
-    """Exact float64 and the closed form at N in a fresh child process without the allocator setting."""
+    """Exact float64 and the closed form at N in a fresh child process without the allocator
+    setting."""
     code = ("import json, sys; from mechplan import bench\n"
             f"cfg = bench.Config(cases=('slider_crank', 'four_bar'), ns=({n},), "
             "methods=('exact float64', 'numpy closed form'), steady_allocator=False)\n"
@@ -148,7 +150,8 @@ def scatter(rows: list[bench.Row], path=PNG) -> None:
 
 def profile_block(n: int) -> str:
     """Markdown: where the exact float64 evaluation spends its time at N positions."""
-    lines = ["| mechanism | steps evaluated | ns/position (sum of steps) | top operations (share) |",
+    lines = [("| mechanism | steps evaluated | ns/position (sum of steps) "
+              "| top operations (share) |"),
              "|---|---|---|---|"]
     for name, case in bench.CASES.items():
         model = bench.Model.load(case)

@@ -10,7 +10,8 @@ import pytest
 
 @pytest.fixture
 def require() -> Callable[[bool, str], None]:
-    """Return `check(available, what)`: skip with a reason when a tool is missing, fail if CI=true."""
+    """Return `check(available, what)`: skip with a reason when a tool is missing, fail if
+    CI=true."""
 
     def check(available: bool, what: str) -> None:
         if available:

@@ -42,7 +42,8 @@ def test_solve_json_document(capsys):
     assert doc["groups"] == [{"class": 2, "kind": "RRP", "links": ["2", "3"]},
                              {"class": 2, "kind": "RRP", "links": ["4", "5"]}]
     pos = doc["positions"][0]
-    assert pos["phi_deg"] == pytest.approx(180.0) and pos["crank_angle_deg"] == pytest.approx(-120.0)
+    assert (pos["phi_deg"] == pytest.approx(180.0)
+            and pos["crank_angle_deg"] == pytest.approx(-120.0))
     w1 = 800 * 2 * math.pi / 60
     assert pos["links"]["2"]["omega"] == pytest.approx(-w1 * 0.08 / 0.248, rel=1e-12)
     assert pos["links"]["2"]["angle_deg"] == pytest.approx(60.0, abs=1e-9)
@@ -57,7 +58,8 @@ def test_solve_at_and_positions(capsys):
     assert [p["phi_deg"] for p in doc["positions"]] == [0.0, 90.0]
     doc = json.loads(run(["solve", path, "--json", "--positions", "8"], capsys)[1])
     phis = [p["phi_deg"] for p in doc["positions"]]
-    assert len(phis) == 8 and all(math.isclose((b - a) % 360, 45.0) for a, b in itertools.pairwise(phis))
+    assert len(phis) == 8 and all(math.isclose((b - a) % 360, 45.0)
+                                  for a, b in itertools.pairwise(phis))
 
 
 def test_scene_error_exits_2_with_one_message(tmp_path):
@@ -70,7 +72,8 @@ def test_scene_error_exits_2_with_one_message(tmp_path):
     assert "Traceback" not in proc.stderr
     lines = proc.stderr.strip().splitlines()
     assert 1 <= len(lines) <= 2
-    assert "bad.toml" in lines[0] and "links.1.lengths.OA" in lines[0] and "not a length" in lines[0]
+    assert ("bad.toml" in lines[0] and "links.1.lengths.OA" in lines[0]
+            and "not a length" in lines[0])
 
 
 def test_missing_file_exits_2(capsys):
@@ -86,7 +89,8 @@ def test_every_template_solves(path, capsys):
     assert doc["dof"] == 1 and doc["positions"]
     for pos in doc["positions"]:
         for entry in pos["points"].values():
-            assert all(math.isfinite(x) for x in entry["r"] + entry.get("v", []) + entry.get("a", []))
+            assert all(math.isfinite(x)
+                       for x in entry["r"] + entry.get("v", []) + entry.get("a", []))
 
 
 def test_new_copies_a_template(tmp_path, capsys):
@@ -104,8 +108,10 @@ def test_solve_json_carries_forces_and_reduced_values(capsys):
                            "zhukovsky_balancing_moment"}
     assert set(forces["reactions"]) == {"01", "12", "23", "24", "45"}
     assert set(forces["guide_reactions"]) == {"03", "05"}
-    assert forces["balancing_moment"] == pytest.approx(forces["zhukovsky_balancing_moment"], rel=1e-9)
+    assert forces["balancing_moment"] == pytest.approx(forces["zhukovsky_balancing_moment"],
+                                                       rel=1e-9)
     # gas force p·πd²/4 on piston E, along Ay towards A: the guide reaction is ⊥ Ay
     r05 = forces["guide_reactions"]["05"]["force"]
-    assert r05[0] * math.cos(math.radians(120)) + r05[1] * math.sin(math.radians(120)) == pytest.approx(0, abs=1e-9)
+    assert (r05[0] * math.cos(math.radians(120)) + r05[1] * math.sin(math.radians(120))
+            == pytest.approx(0, abs=1e-9))
     assert set(pos["reduced"]) == {"moment", "inertia"} and pos["reduced"]["inertia"] > 0

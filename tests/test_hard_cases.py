@@ -71,7 +71,7 @@ def four_bar_reference(a, b, c, d, theta, omega=10.0) -> dict[str, np.ndarray]:
     return {k: np.array([float(x) for x in v]) for k, v in res.items()}
 
 
-# -- slider-crank at its dead centres ---------------------------------------------------------------
+# -- slider-crank at its dead centres --------------------------------------------------------------
 def _dead_centres(r: float, l: float, e: float) -> tuple[float, float]:
     """Crank angles of the outer and inner dead centres (crank and rod in line), closed form."""
     outer = math.asin(e / (l + r))              # B = (l + r)·(cos θ, sin θ) on the guide y = e
@@ -247,7 +247,8 @@ def test_outside_the_unreachable_interval_everything_is_exact() -> None:
     thetas = np.linspace(-start + 0.05, start - 0.05, 13)
     ev = evaluate(c, thetas)
     ref = [four_bar_reference(a, b, c_, d, float(t)) for t in thetas]
-    for key, col, point in (("pos.C", 0, "C"), (c.results["v_C"], 2, "C"), (c.results["a_C"], 4, "C")):
+    for key, col, point in (("pos.C", 0, "C"), (c.results["v_C"], 2, "C"),
+                            (c.results["a_C"], 4, "C")):
         want = np.array([r[point][col:col + 2] for r in ref])
         assert np.max(norm(ev[key] - want)) <= 1e-13 * np.max(norm(want)), key
     for key, link, col in (("omega_3", "3", 1), ("epsilon_3", "3", 2), ("epsilon_2", "2", 2)):
@@ -256,7 +257,7 @@ def test_outside_the_unreachable_interval_everything_is_exact() -> None:
     solve(scene, at_deg=list(np.degrees(thetas)))
 
 
-# -- micrometres and kilometres -----------------------------------------------------------------------
+# -- micrometres and kilometres --------------------------------------------------------------------
 @pytest.mark.parametrize("name", ["four_bar", "shaper"])
 def test_same_mechanism_in_micrometres_and_kilometres_scales_exactly(name: str) -> None:
     text = (TEMPLATES / f"{name}.toml").read_text(encoding="utf-8")

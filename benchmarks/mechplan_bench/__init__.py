@@ -1,8 +1,8 @@
 """Speed against error: every way of getting a mechanism's kinematics, timed and checked.
 
-``python benchmarks/bench.py [--quick]`` times, in one process, the construction engine (float64 and float32),
-"ruler mode" (the construction with every placed point rounded to the drawing's precision, as a
-student carries measured segments on), velocities and accelerations by finite differences of
+``python benchmarks/bench.py [--quick]`` times, in one process, the construction engine (float64 and
+float32), "ruler mode" (the construction with every placed point rounded to the drawing's precision,
+as a student carries measured segments on), velocities and accelerations by finite differences of
 positions, the engine λ-series (slider-crank), the hand-written numpy closed forms and the peer
 packages that are installed (pylinkage with and without numba, mechanism), and measures each one's
 error against a 40-digit mpmath reference (Newton on the loop-closure equations and mpmath
@@ -18,8 +18,9 @@ Config), ``results`` (Result, Row), ``reference`` (the mpmath reference, relativ
 ``ruler`` (RulerEvaluation), ``model`` (the construction exact, in ruler mode, by finite
 differences), ``formulas`` (λ-series, closed form), ``peers`` (pylinkage, mechanism), ``timing``
 (best of k, allocator, profile), ``no_numba`` (pylinkage in a child process), ``measure`` (the
-run), ``report`` (table, goals, machine), ``cli`` (``python benchmarks/bench.py``). ``measure`` and ``cli``
-call ``steady_allocator`` / the entry points through this package, so substitutes set here hold.
+run), ``report`` (table, goals, machine), ``cli`` (``python benchmarks/bench.py``). ``measure`` and
+``cli`` call ``steady_allocator`` / the entry points through this package, so substitutes set here
+hold.
 """
 
 from __future__ import annotations

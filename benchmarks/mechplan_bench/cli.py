@@ -50,5 +50,6 @@ def run(args: argparse.Namespace) -> int:
     print(bench.format_table(rows))
     print()
     for goal, met, detail in bench.goals(rows):
-        print(f"{'met' if met else 'NOT met' if met is False else 'not measured'}: {goal} ({detail})")
+        print(f"{'met' if met else 'NOT met' if met is False else 'not measured'}: "
+              f"{goal} ({detail})")
     return 0

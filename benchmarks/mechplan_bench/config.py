@@ -1,4 +1,5 @@
-"""What a benchmark run measures: the mechanisms, the methods, the fixed constants and :class:`Config`."""
+"""What a benchmark run measures: the mechanisms, the methods, the fixed constants and
+:class:`Config`."""
 
 from __future__ import annotations
 

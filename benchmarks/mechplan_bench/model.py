@@ -1,4 +1,5 @@
-"""A case's construction in its three uses: exact (float64/float32), ruler mode, finite differences."""
+"""A case's construction in its three uses: exact (float64/float32), ruler mode, finite
+differences."""
 
 from __future__ import annotations
 

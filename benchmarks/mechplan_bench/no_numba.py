@@ -31,7 +31,8 @@ def pylinkage_without_numba(cfg: Config, cases: Sequence[str], ns: Sequence[int]
         spec = {"cases": list(cases), "ns": list(ns), "out": tmp,
                 "cfg": {k: v for k, v in asdict(cfg).items() if not isinstance(v, tuple)}}
         env = dict(os.environ, NUMBA_DISABLE_JIT="1")
-        env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "src"), str(ROOT / "benchmarks"), env.get("PYTHONPATH", "")])
+        env["PYTHONPATH"] = os.pathsep.join([str(ROOT / "src"), str(ROOT / "benchmarks"),
+                                             env.get("PYTHONPATH", "")])
         log("pylinkage without numba: child process (NUMBA_DISABLE_JIT=1)")
         code = ("import sys, json; from mechplan_bench.no_numba import _child; "
                 "_child(json.loads(sys.argv[1]))")

@@ -19,7 +19,8 @@ def installed(module: str) -> bool:
     return importlib.util.find_spec(module) is not None
 
 
-def _pylinkage_linkage(case: Case, theta0: float, step: float, omega: float) -> tuple[Any, dict[str, int]]:
+def _pylinkage_linkage(case: Case, theta0: float, step: float,
+                       omega: float) -> tuple[Any, dict[str, int]]:
     """A pylinkage model of a case whose k-th output is at θ0 + k·step; (linkage, names).
 
     Dimensions are those of ``templates/<case>.toml`` (metres); the assembly branch is given by

@@ -76,7 +76,8 @@ def sizes(case: Case, ref: Result) -> dict[str, float]:
     return out
 
 
-def relative_errors(got: Result, want: Result, idx: np.ndarray, size: dict[str, float]) -> dict[str, float]:
+def relative_errors(got: Result, want: Result, idx: np.ndarray,
+                    size: dict[str, float]) -> dict[str, float]:
     """Relative error per kind of ``got`` at positions ``idx`` against ``want`` (all of its rows).
 
     A NaN where the reference has a value counts as an infinite error (a failed position).

@@ -29,7 +29,8 @@ def format_table(rows: Iterable[Row], markdown: bool = False) -> str:
     body = []
     for r in rows:
         if r.repeats == 0:
-            body.append([r.mechanism, r.method, str(r.n), "—", "—", *(["—"] * len(KINDS)), "0", r.note])
+            body.append([r.mechanism, r.method, str(r.n), "—", "—", *(["—"] * len(KINDS)), "0",
+                         r.note])
             continue
         body.append([r.mechanism, r.method, str(r.n), f"{r.ns_per_position:,.0f}",
                      _fmt_err(r.max_error), *(_fmt_err(r.errors.get(k)) for k in KINDS),

@@ -1,4 +1,5 @@
-"""Ruler mode: the construction evaluated with every placed point rounded to the drawing's precision."""
+"""Ruler mode: the construction evaluated with every placed point rounded to the drawing's
+precision."""
 
 from __future__ import annotations
 

@@ -70,7 +70,8 @@ class _Check:
 
 
 class _Package(types.ModuleType):
-    """The ``mechplan`` module: ``check`` stays the callable even after ``import mechplan.check``."""
+    """The ``mechplan`` module: ``check`` stays the callable even after
+    ``import mechplan.check``."""
 
     @property
     def check(self) -> _Check:

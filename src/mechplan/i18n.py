@@ -2,9 +2,9 @@
 
 Every user-visible sentence, label, heading and title is a message id looked up here. The catalogues
 are gettext ``.po`` files, one folder per language (``locale/<lang>/``) and one file per area
-(``core.po``, ``cam.po``, …): a translator edits them without reading Python, and each capability adds
-its own file without touching the others. Ids are symbolic (``cam.law.cycloidal``); the English text
-lives in ``locale/en/`` like every other language. Placeholders are ``str.format`` fields
+(``core.po``, ``cam.po``, …): a translator edits them without reading Python, and each capability
+adds its own file without touching the others. Ids are symbolic (``cam.law.cycloidal``); the English
+text lives in ``locale/en/`` like every other language. Placeholders are ``str.format`` fields
 (``{value}``); numbers are formatted by :func:`number` (Babel) so that ru/vi get a decimal comma.
 """
 
@@ -44,7 +44,8 @@ def catalogue(language: str) -> dict[str, str]:
                 if msg.id and isinstance(msg.id, str):
                     text = msg.string if isinstance(msg.string, str) else ""
                     if msg.id in messages:
-                        raise ValueError(f"message id {msg.id!r} is defined twice in locale/{language}")
+                        raise ValueError(f"message id {msg.id!r} is defined twice "
+                                         f"in locale/{language}")
                     messages[msg.id] = text
     return messages
 

@@ -17,8 +17,8 @@ def prepare_dir(path: str | os.PathLike[str]) -> Path:
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise DrawingError(f"the output folder cannot be created ({os_reason(exc)}); choose another -o",
-                           file=str(out)) from None
+        raise DrawingError(f"the output folder cannot be created ({os_reason(exc)}); "
+                           "choose another -o", file=str(out)) from None
     if not os.access(out, os.W_OK | os.X_OK):
         raise DrawingError("the output folder must be writable (permission denied or read-only); "
                            "choose another -o", file=str(out))

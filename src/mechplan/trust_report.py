@@ -1,4 +1,5 @@
-"""Error estimates and flags of a solution, as the report, the warnings and the JSON present them."""
+"""Error estimates and flags of a solution, as the report, the warnings and the JSON present
+them."""
 
 from __future__ import annotations
 
@@ -40,8 +41,10 @@ def flag_line(f: Flag, tolerance: float, language: str) -> str:
                    tolerance=_sci(tolerance, language))
 
 
-def warning_lines(sol: Solution, language: str | None = None, limit: int = WARNING_LIMIT) -> list[str]:
-    """Warnings for failed positions and flagged results (at most ``limit`` of each, then a count)."""
+def warning_lines(sol: Solution, language: str | None = None,
+                  limit: int = WARNING_LIMIT) -> list[str]:
+    """Warnings for failed positions and flagged results (at most ``limit`` of each, then a
+    count)."""
     lang = language or sol.scene.language
     out = [message("estimate.failure", lang, phi=_phi(f.phi_deg, lang), reason=f.reason)
            for f in sol.failures[:limit]]

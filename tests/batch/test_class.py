@@ -1,4 +1,5 @@
-"""A small class of slider-cranks: folders, answer keys against the closed form, failures, resume."""
+"""A small class of slider-cranks: folders, answer keys against the closed form, failures,
+resume."""
 
 from __future__ import annotations
 

@@ -11,11 +11,13 @@ from mechplan.batch import Variant, run_class
 from mechplan.batch.plan import parse_vary
 from mechplan.batch.sweep import run_sweep
 
-SLIDER = Path(__file__).resolve().parents[2] / "src" / "mechplan" / "templates" / "slider_crank.toml"
+SLIDER = (Path(__file__).resolve().parents[2] / "src" / "mechplan" / "templates"
+          / "slider_crank.toml")
 CLASS = [Variant("a", "A", {"links.1.lengths.OA": "90 mm"}),
          Variant("b", "B", {"links.1.lengths.OA": "110 mm"}),
          Variant("x", "X", {"links.1.lengths.OA": "600 mm"})]
-AXES = [parse_vary("links.1.lengths.OA=80mm..120mm:5"), parse_vary("links.2.lengths.AB=300mm..400mm:4")]
+AXES = [parse_vary("links.1.lengths.OA=80mm..120mm:5"),
+        parse_vary("links.2.lengths.AB=300mm..400mm:4")]
 
 
 def test_class_and_sweep_on_a_local_cluster_equal_the_embedded_run(tmp_path, require):

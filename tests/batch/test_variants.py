@@ -106,7 +106,8 @@ def test_rule_errors(tmp_path, rule, words):
 def test_key_paths_set_existing_tables_only():
     doc = {"links": {"1": {"lengths": {"OA": "100 mm"}}}}
     out = with_values(doc, {"links.1.lengths.OA": "90 mm"})
-    assert out["links"]["1"]["lengths"]["OA"] == "90 mm" and doc["links"]["1"]["lengths"]["OA"] == "100 mm"
+    assert (out["links"]["1"]["lengths"]["OA"] == "90 mm"
+            and doc["links"]["1"]["lengths"]["OA"] == "100 mm")
     with pytest.raises(SceneError, match="no table at links.7"):
         with_values(doc, {"links.7.lengths.OA": "90 mm"})
 

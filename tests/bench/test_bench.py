@@ -1,4 +1,5 @@
-"""Smoke test of the speed-against-error benchmark (``python benchmarks/bench.py``) on a tiny configuration."""
+"""Smoke test of the speed-against-error benchmark (``python benchmarks/bench.py``) on a tiny
+configuration."""
 
 from __future__ import annotations
 

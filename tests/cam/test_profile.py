@@ -1,6 +1,6 @@
-"""The profile by inversion against independent computations: the pressure-angle formula, normals and
-curvature by finite differences of the profile, the envelope condition (shapely), the minimum base
-radius by brute force, the chord error of the profile polyline."""
+"""The profile by inversion against independent computations: the pressure-angle formula, normals
+and curvature by finite differences of the profile, the envelope condition (shapely), the minimum
+base radius by brute force, the chord error of the profile polyline."""
 
 from __future__ import annotations
 
@@ -34,7 +34,8 @@ def central_cam():
     return design(parse_cam(cam_text()))
 
 
-PHI = np.radians(np.array([5.0, 33.0, 61.0, 100.0, 125.0, 150.0, 170.0, 200.0, 230.0, 271.0, 300.0]))
+PHI = np.radians(np.array([5.0, 33.0, 61.0, 100.0, 125.0, 150.0, 170.0, 200.0, 230.0, 271.0,
+                          300.0]))
 
 
 @pytest.mark.parametrize("name", ["offset_cam", "central_cam"])

@@ -22,7 +22,8 @@ LAWS = ["uniform", "parabolic", "cosine", "cycloidal", "poly345", "modified_trap
 @settings(max_examples=10, deadline=None)
 @given(law=st.sampled_from(LAWS), ret_law=st.sampled_from(LAWS),
        rise=st.integers(60, 150), far=st.integers(0, 40), ret=st.integers(60, 150),
-       stroke=st.floats(5.0, 40.0), offset=st.floats(-8.0, 8.0), sense=st.sampled_from(["ccw", "cw"]),
+       stroke=st.floats(5.0, 40.0), offset=st.floats(-8.0, 8.0),
+       sense=st.sampled_from(["ccw", "cw"]),
        limit=st.integers(20, 40))
 def test_random_cams(law, ret_law, rise, far, ret, stroke, offset, sense, limit):
     near = 360 - rise - far - ret

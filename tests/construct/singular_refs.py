@@ -16,7 +16,8 @@ def _f(x) -> float:
 
 
 def slider_crank(r: float, l: float, e: float, theta: float, omega: float) -> dict[str, float]:
-    """Offset slider-crank: crank OA = r about O = (0, 0), rod AB = l, B on the guide y = e, far branch.
+    """Offset slider-crank: crank OA = r about O = (0, 0), rod AB = l, B on the guide y = e, far
+    branch.
 
     Returns B's x, v, a (along the guide) and the rod's angle, ω, ε.
     """
@@ -36,10 +37,12 @@ def slider_crank(r: float, l: float, e: float, theta: float, omega: float) -> di
         aax, aay = -w * w * ax, -w * w * ay
         eps2 = -(aay - w2 * w2 * dy) / dx
         ab = aax - eps2 * dy - w2 * w2 * dx
-        return {"B_x": _f(bx), "v_B": _f(vb), "a_B": _f(ab), "omega_2": _f(w2), "epsilon_2": _f(eps2)}
+        return {"B_x": _f(bx), "v_B": _f(vb), "a_B": _f(ab), "omega_2": _f(w2),
+                "epsilon_2": _f(eps2)}
 
 
-def four_bar(a: float, b: float, c: float, d: float, theta: float, omega: float) -> dict[str, float]:
+def four_bar(a: float, b: float, c: float, d: float, theta: float,
+             omega: float) -> dict[str, float]:
     """Four-bar A = (0, 0), D = (d, 0), AB = a, BC = b, DC = c, C left of B→D."""
     with mp.workdps(DPS):
         a, b, c, d, th, w = (mpf(x) for x in (a, b, c, d, theta, omega))
@@ -73,5 +76,6 @@ def four_bar(a: float, b: float, c: float, d: float, theta: float, omega: float)
 
 
 def slotted_through_pivot(omega: float) -> dict[str, float]:
-    """Coulisse pivoting on the crank circle: ω3 = ω1/2 and ε3 = 0 at every angle (inscribed angle)."""
+    """Coulisse pivoting on the crank circle: ω3 = ω1/2 and ε3 = 0 at every angle (inscribed
+    angle)."""
     return {"omega_3": omega / 2.0, "epsilon_3": 0.0}

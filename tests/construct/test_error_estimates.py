@@ -175,7 +175,8 @@ def test_regular_positions_of_every_template_have_tiny_estimates(path):
 
 
 def test_a_sweep_never_dies_for_one_singular_position(tmp_path, capsys):
-    """--positions 360 through the pivot: 359 positions returned, the singular one listed, exit 3."""
+    """--positions 360 through the pivot: 359 positions returned, the singular one listed, exit
+    3."""
     from mechplan.cli import main
 
     scene = tmp_path / "pivot.toml"

@@ -57,7 +57,8 @@ def test_groups_from_the_farthest_back_to_the_crank():
     order = [s.group for s in c.of_plan(Plan.FORCE) if s.op is Op.POLE]
     assert order == ["II(4,5)", "II(2,3)", "I(0,1)"]
     ids = list(c.steps)
-    assert ids.index(c.results["R_24"]) < ids.index(c.results["R_12"]) < ids.index(c.results["R_01"])
+    assert (ids.index(c.results["R_24"]) < ids.index(c.results["R_12"])
+            < ids.index(c.results["R_01"]))
     # the reaction of group (4,5) on link 2 is a known force of group (2,3)
     rt = c[c.results["R_12"]]
     assert rt.group == "II(2,3)"
@@ -156,8 +157,8 @@ table = [["0.3 m", "0 N"], ["0.5 m", "1000 N"]]
     phi = np.radians([0.0, 70.0, 180.0])
     ev = c.evaluate(phi)
     x_b = ev["pos.B"][:, 0]
-    np.testing.assert_allclose(-ev[c.results["load_0"]][:, 0], np.interp(x_b, [0.3, 0.5], [0, 1000]),
-                               rtol=1e-12)
+    np.testing.assert_allclose(-ev[c.results["load_0"]][:, 0],
+                               np.interp(x_b, [0.3, 0.5], [0, 1000]), rtol=1e-12)
 
 
 def test_guide_offset_evaluator():

@@ -29,9 +29,10 @@ def test_rigid_motion_of_slider_crank(dx, dy, deg):
     for p in ("A", "B", "S2"):
         assert np.allclose(ev1[f"pos.{p}"], rot(ev0[f"pos.{p}"], deg) + shift, rtol=0, atol=1e-13)
         for key, tol in (("v", 1e-12), ("a", 1e-9)):
-            assert np.allclose(ev1[c1.results[f"{key}_{p}"]], rot(ev0[c0.results[f"{key}_{p}"]], deg),
-                               rtol=0, atol=tol)
-    assert np.allclose(ev1[c1.results["omega_2"]], ev0[c0.results["omega_2"]], rtol=1e-12, atol=1e-12)
+            assert np.allclose(ev1[c1.results[f"{key}_{p}"]],
+                               rot(ev0[c0.results[f"{key}_{p}"]], deg), rtol=0, atol=tol)
+    assert np.allclose(ev1[c1.results["omega_2"]], ev0[c0.results["omega_2"]],
+                       rtol=1e-12, atol=1e-12)
 
 
 @given(st.floats(-300, 300), st.floats(-300, 300), st.floats(-180, 180))
@@ -44,12 +45,15 @@ def test_rigid_motion_of_four_bar(dx, dy, deg):
     for p in ("B", "C", "E"):
         assert np.allclose(ev1[f"pos.{p}"], rot(ev0[f"pos.{p}"], deg) + np.array([dx, dy]) / 1000,
                            rtol=0, atol=1e-13)
-        assert np.allclose(ev1[c1.results[f"v_{p}"]], rot(ev0[c0.results[f"v_{p}"]], deg), atol=1e-12)
-        assert np.allclose(ev1[c1.results[f"a_{p}"]], rot(ev0[c0.results[f"a_{p}"]], deg), atol=1e-11)
+        assert np.allclose(ev1[c1.results[f"v_{p}"]], rot(ev0[c0.results[f"v_{p}"]], deg),
+                           atol=1e-12)
+        assert np.allclose(ev1[c1.results[f"a_{p}"]], rot(ev0[c0.results[f"a_{p}"]], deg),
+                           atol=1e-11)
 
 
 def test_mirror_image_of_four_bar():
-    """Mirror in the x axis: y → −y, the crank turns the other way, sides swap, ω and ε change sign."""
+    """Mirror in the x axis: y → −y, the crank turns the other way, sides swap, ω and ε change
+    sign."""
     _, c0 = build_text(four_bar_text())
     _, c1 = build_text(four_bar_text(sense="cw", side_c="right", side_e="right"))
     ev0, ev1 = c0.evaluate(PHI), c1.evaluate(PHI)
@@ -59,8 +63,10 @@ def test_mirror_image_of_four_bar():
                            (c0.results[f"a_{p}"], c1.results[f"a_{p}"])):
             assert np.allclose(ev1[sid1], ev0[sid0] * flip, rtol=0, atol=1e-12)
     for link in ("2", "3"):
-        assert np.allclose(ev1[c1.results[f"omega_{link}"]], -ev0[c0.results[f"omega_{link}"]], atol=1e-12)
-        assert np.allclose(ev1[c1.results[f"epsilon_{link}"]], -ev0[c0.results[f"epsilon_{link}"]], atol=1e-10)
+        assert np.allclose(ev1[c1.results[f"omega_{link}"]], -ev0[c0.results[f"omega_{link}"]],
+                           atol=1e-12)
+        assert np.allclose(ev1[c1.results[f"epsilon_{link}"]],
+                           -ev0[c0.results[f"epsilon_{link}"]], atol=1e-10)
 
 
 @given(st.floats(1e-3, 1e3))

@@ -1,4 +1,5 @@
-"""The fused kernel gives the numpy path's values (≤ 1e-15 of each plan's scale), estimates and flags.
+"""The fused kernel gives the numpy path's values (≤ 1e-15 of each plan's scale), estimates and
+flags.
 
 The generated code runs as plain Python for every template (the same source numba compiles), and
 JIT-compiled with numba for two templates.

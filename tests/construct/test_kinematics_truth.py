@@ -15,8 +15,9 @@ POINTS = {
     "machine_unit": ["A", "B", "S2"], "four_bar": ["B", "C", "E"],
     "v_engine": ["B", "C", "D", "E", "S2"], "quick_return": ["A", "B"], "shaper": ["A", "B", "C"],
 }
-LINKS = {"four_bar": ["2", "3"], "v_engine": ["2", "4"], "quick_return": ["3"], "shaper": ["3", "4"],
-         "slider_crank": ["2"], "offset_slider_crank": ["2"], "machine_unit": ["2"]}
+LINKS = {"four_bar": ["2", "3"], "v_engine": ["2", "4"], "quick_return": ["3"],
+         "shaper": ["3", "4"], "slider_crank": ["2"], "offset_slider_crank": ["2"],
+         "machine_unit": ["2"]}
 
 
 def rel(a, b):
@@ -96,7 +97,8 @@ def test_every_link_moves_rigidly(path):
                 scale_v = max(np.max(np.abs(ev[c.results[f"v_{q}"]])) for q in (x, y))
                 scale_a = max(np.max(np.abs(ev[c.results[f"a_{q}"]])) for q in (x, y))
                 assert np.max(np.abs(dv - w[:, None] * perp)) < 1e-12 * scale_v
-                assert np.max(np.abs(da - e[:, None] * perp + (w * w)[:, None] * r)) < 1e-11 * scale_a
+                assert (np.max(np.abs(da - e[:, None] * perp + (w * w)[:, None] * r))
+                        < 1e-11 * scale_a)
 
 
 def test_scotch_yoke_rpp_closed_form():

@@ -34,7 +34,8 @@ class Global:
     """Reactions of the global solution: force of link a on link b for each pair (a, b)."""
 
     force: dict[tuple[str, str], np.ndarray]      # (a, b) → (N, 2), both orders
-    couple: dict[tuple[str, str], np.ndarray]     # prismatic: couple with the force at the pair point
+    # prismatic: couple with the force at the pair point
+    couple: dict[tuple[str, str], np.ndarray]
     balancing: np.ndarray
 
 

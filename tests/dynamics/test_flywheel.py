@@ -1,4 +1,5 @@
-"""Flywheel methods against closed forms and an independent integration of the equation of motion."""
+"""Flywheel methods against closed forms and an independent integration of the equation of
+motion."""
 
 from __future__ import annotations
 

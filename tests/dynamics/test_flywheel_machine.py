@@ -92,7 +92,8 @@ def test_study_json_and_report():
     ('unknown = "resisting"', 'unknown = "resisting"\nconstant_moment = "50 N*m"',
      "dynamics.constant_moment"),
     ('exhaust = [["0 mm", "0.11 MPa"], ["150 mm", "0.11 MPa"]]',
-     'exhaust = [["0 mm", "0.11 MPa"], ["100 mm", "0.11 MPa"]]', "dynamics.indicator.strokes.exhaust"),
+     'exhaust = [["0 mm", "0.11 MPa"], ["100 mm", "0.11 MPa"]]',
+     "dynamics.indicator.strokes.exhaust"),
 ])
 def test_bad_input_names_the_key(old, new, key):
     assert old in ENGINE
@@ -109,17 +110,18 @@ def test_crank_angle_indicator_must_cover_the_cycle_and_be_periodic():
     assert d["cycle_deg"] == pytest.approx(720.0)
     short = good.replace('"720 deg", "0.1 MPa"', '"600 deg", "0.1 MPa"')
     with pytest.raises(SceneError, match="cover the cycle") as err:
-        solve_text(short.replace('unknown = "resisting"', 'unknown = "resisting"\ncycle = "720 deg"'),
-                   "bad.toml")
+        solve_text(short.replace('unknown = "resisting"',
+                                 'unknown = "resisting"\ncycle = "720 deg"'), "bad.toml")
     assert "'dynamics.indicator.table'" in str(err.value)
     jump = good.replace('["720 deg", "0.1 MPa"]', '["720 deg", "0.5 MPa"]')
     with pytest.raises(SceneError, match="periodic"):
-        solve_text(jump.replace('unknown = "resisting"', 'unknown = "resisting"\ncycle = "720 deg"'),
-                   "bad.toml")
+        solve_text(jump.replace('unknown = "resisting"',
+                                'unknown = "resisting"\ncycle = "720 deg"'), "bad.toml")
 
 
 def test_both_sides_given_reports_the_net_work():
-    text = ENGINE.replace('unknown = "resisting"', 'unknown = "resisting"\nconstant_moment = "80 N*m"')
+    text = ENGINE.replace('unknown = "resisting"',
+                          'unknown = "resisting"\nconstant_moment = "80 N*m"')
     d = solve_text(text, "both.toml").to_json()["dynamics"]
     assert not d["constant_moment_found"] and d["constant_moment"] == pytest.approx(80.0)
     # independent: the net work is the driving work minus 80 N·m over 4π
@@ -127,7 +129,8 @@ def test_both_sides_given_reports_the_net_work():
 
 
 def test_resisting_table_must_cover_a_turn_and_be_periodic():
-    short = SHAPER.replace('["350 deg", "2000 N"], ["360 deg", "2000 N"]]', '["350 deg", "2000 N"]]')
+    short = SHAPER.replace('["350 deg", "2000 N"], ["360 deg", "2000 N"]]',
+                           '["350 deg", "2000 N"]]')
     with pytest.raises(SceneError, match="cover the cycle") as err:
         solve_text(short, "bad.toml")
     assert "'loads[0].table'" in str(err.value)

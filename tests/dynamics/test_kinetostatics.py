@@ -202,8 +202,10 @@ towards = "O"
     beta = np.arcsin(-r / l * np.sin(theta))
     s = p_force / np.cos(beta)
     e_ab = np.stack((np.cos(beta), np.sin(beta)), axis=-1)
-    np.testing.assert_allclose(ev[c.results["R_23"]], s[:, None] * e_ab, rtol=0, atol=1e-9 * p_force)
-    np.testing.assert_allclose(ev[c.results["R_12"]], s[:, None] * e_ab, rtol=0, atol=1e-9 * p_force)
+    np.testing.assert_allclose(ev[c.results["R_23"]], s[:, None] * e_ab, rtol=0,
+                               atol=1e-9 * p_force)
+    np.testing.assert_allclose(ev[c.results["R_12"]], s[:, None] * e_ab, rtol=0,
+                               atol=1e-9 * p_force)
     np.testing.assert_allclose(ev[c.results["R_03"]][:, 1], -s * np.sin(beta), atol=1e-9 * p_force)
     np.testing.assert_allclose(ev[c.results["R_03"]][:, 0], 0.0, atol=1e-9 * p_force)
     np.testing.assert_allclose(ev[c.results["R_01"]], s[:, None] * e_ab, atol=1e-9 * p_force)
@@ -230,7 +232,8 @@ def test_reversing_all_loads_reverses_all_reactions(name):
     scene = scene_of(name)
     rich = rich_loading(scene.mechanism)
     massless = Loading({k: MassSpec(k, 0.0, m.centre, 0.0) for k, m in rich.masses.items()},
-                       tuple(s for s in rich.loads if s.towards is None or s.kind is not LoadKind.FORCE),
+                       tuple(s for s in rich.loads
+                             if s.towards is None or s.kind is not LoadKind.FORCE),
                        Gravity(enabled=False))
     c1, ev1 = solved(scene, massless)
     c2, ev2 = solved(scene, massless.reversed())

@@ -86,9 +86,11 @@ def test_T_R_equals_kinetostatic_balancing_moment(exact):
     m, l2 = 0.215, 0.106 * 0.040 / 0.215
     l1 = 0.106 - l2
     J = m * l1 * l2 if exact else 0.9e-3
-    split = f'rod_small_end = "40 g"\nrod_J = "{J!r} kg*m^2"' if not exact else 'rod_small_end = "40 g"'
+    split = (f'rod_small_end = "40 g"\nrod_J = "{J!r} kg*m^2"' if not exact
+             else 'rod_small_end = "40 g"')
     st = solve_text(moto(rod_split=split).replace('rod_small_end = "40 g"\nrod_J',
-                                                  'rod_centre = "19.7209302325581 mm"\nrod_J'), "m.toml")
+                                                  'rod_centre = "19.7209302325581 mm"\nrod_J'),
+                    "m.toml")
     degs = np.arange(0.0, 720.0, 15.0)
     res = st.model.cylinder(1, np.radians(degs))
     for turn in (0, 1):
@@ -124,7 +126,8 @@ def test_four_cylinder_inline_phases_and_identity():
 
 def test_v_engine_side_by_side_shares_a_pin():
     st = solve_text(moto(engine_extra='layout = "v"\ncylinders = 2\nthrows = ["0 deg", "0 deg"]\n'
-                                      'banks = ["0 deg", "90 deg"]\nfiring_order = [1, 2]'), "m.toml")
+                                      'banks = ["0 deg", "90 deg"]\nfiring_order = [1, 2]'),
+                    "m.toml")
     assert math.degrees(st.model.phases[2]) == pytest.approx(90.0)
     q = st.table.pins[1]
     c1, c2 = st.table.cylinders[1], st.table.cylinders[2]
@@ -159,12 +162,14 @@ def test_csv_round_trip():
     assert len(rows) == len(doc["angles"]) == 49
     for r, a in zip(rows, doc["angles"]):
         assert float(r["phi_deg"]) == pytest.approx(a["phi_deg"])
-        assert float(r["T_kN_1"]) * 1e3 == pytest.approx(a["cylinders"]["1"]["T"], rel=1e-8, abs=1e-9)
+        assert float(r["T_kN_1"]) * 1e3 == pytest.approx(a["cylinders"]["1"]["T"], rel=1e-8,
+                                                         abs=1e-9)
         assert float(r["M_total_Nm"]) == pytest.approx(a["M_total"], rel=1e-8, abs=1e-9)
 
 
 @pytest.mark.parametrize(("edit", "pattern"), [
-    (('rod_length = "106 mm"', 'rod_length = "20 mm"'), r"engine\.rod_length.*λ = R/L must be less than 1"),
+    (('rod_length = "106 mm"', 'rod_length = "20 mm"'),
+     r"engine\.rod_length.*λ = R/L must be less than 1"),
     (('rod_length = "106 mm"', 'lambda = 1.2'), r"engine\.lambda.*between 0 and 1"),
     (('rod = "215 g"', 'rod = "30 g"'), r"masses\.rod_small_end.*cannot be split"),
     (('rod_small_end = "40 g"', 'rod_centre = "200 mm"'), r"masses\.rod_centre.*cannot be split"),
@@ -180,7 +185,8 @@ def test_firing_order_must_list_every_cylinder_once():
         solve_text(moto(engine_extra='cylinders = 4\nfiring_order = [1, 3, 3, 2]'), "e.toml")
     with pytest.raises(SceneError, match=r"engine\.firing_order.*does not fit"):
         solve_text(moto(engine_extra='cylinders = 2\nthrows = ["0 deg", "0 deg"]\n'
-                        'firing_order = [1, 2]\nstrokes = 2').replace("strokes = 4\n", ""), "e.toml")
+                        'firing_order = [1, 2]\nstrokes = 2').replace("strokes = 4\n", ""),
+                   "e.toml")
 
 
 def test_articulated_pair_torque_equals_kinetostatic_balancing_moment():
@@ -273,7 +279,8 @@ def test_output_csv_key_writes_the_table(tmp_path):
 def test_wear_spreads_each_load_over_plus_minus_60_degrees():
     from mechplan.dynamics.engine.analysis import PinLoad, wear
     n = 10
-    load = PinLoad(np.zeros(n), np.full(n, 2.0), 0.0)    # Q towards the axis: presses the outer side
+    # Q towards the axis: presses the outer side
+    load = PinLoad(np.zeros(n), np.full(n, 2.0), 0.0)
     rays, sums = wear(load)
     deg = np.round(np.degrees(rays)).astype(int)
     inside = (deg <= 60) | (deg >= 300)
@@ -281,12 +288,13 @@ def test_wear_spreads_each_load_over_plus_minus_60_degrees():
     # a load across the crank in the sense of rotation presses the pin at 270° (opposite side)
     rays, sums = wear(PinLoad(np.full(n, 1.0), np.zeros(n), 0.0))
     assert math.degrees(rays[np.argmax(sums)]) in (210.0, 270.0)
-    assert sums[np.round(np.degrees(rays)) == 270.0][0] == n and sums[np.round(np.degrees(rays)) == 90.0][0] == 0
+    assert (sums[np.round(np.degrees(rays)) == 270.0][0] == n
+            and sums[np.round(np.degrees(rays)) == 90.0][0] == 0)
 
 
 def test_journals_share_the_throw_load():
-    st = solve_text(moto().replace('rotating_extra = "20 g"', 'rotating_extra = "20 g"\ncrank = "300 g"'),
-                    "m.toml")
+    st = solve_text(moto().replace('rotating_extra = "20 g"',
+                                   'rotating_extra = "20 g"\ncrank = "300 g"'), "m.toml")
     t = st.table
     q = t.pins[1]
     theta = t.phi

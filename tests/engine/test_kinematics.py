@@ -1,4 +1,5 @@
-"""Piston kinematics against independent references (mpmath derivatives, geometry of the drawing)."""
+"""Piston kinematics against independent references (mpmath derivatives, geometry of the
+drawing)."""
 
 from __future__ import annotations
 
@@ -15,7 +16,8 @@ OMEGA = 8500 * math.pi / 30
 
 def _x_mp(phi):
     """Travel from TDC by the geometry of the triangle (crank pin, piston pin, crank axis)."""
-    s = mpmath.mpf(R) * mpmath.cos(phi) + mpmath.sqrt(mpmath.mpf(L) ** 2 - (R * mpmath.sin(phi)) ** 2)
+    s = (mpmath.mpf(R) * mpmath.cos(phi)
+         + mpmath.sqrt(mpmath.mpf(L) ** 2 - (R * mpmath.sin(phi)) ** 2))
     return mpmath.mpf(R + L) - s
 
 
@@ -48,7 +50,8 @@ def test_series_differs_from_exact_by_046_percent_of_a_max():
     assert 0.0045 < ratio < 0.0047
     kin = SliderCrank(R, L)
     f = np.radians(np.arange(721) / 2)
-    mine = np.max(np.abs(kin.a(f, OMEGA) - kin.a_series(f, OMEGA))) / np.max(np.abs(kin.a(f, OMEGA)))
+    mine = (np.max(np.abs(kin.a(f, OMEGA) - kin.a_series(f, OMEGA)))
+            / np.max(np.abs(kin.a(f, OMEGA))))
     assert math.isclose(mine, ratio, rel_tol=1e-6)
 
 
@@ -68,7 +71,8 @@ def test_brix_travel_is_the_drawn_construction():
         x = (Op + t * d)[0]
         assert math.isclose(float(kin.x_brix(np.asarray(phi))), x, rel_tol=1e-12)
         # the series travel is Brix's to first order in λ
-        assert abs(float(kin.x_brix(np.asarray(phi)) - kin.x_series(np.asarray(phi)))) < R * lam ** 2
+        assert (abs(float(kin.x_brix(np.asarray(phi)) - kin.x_series(np.asarray(phi))))
+                < R * lam ** 2)
 
 
 def test_inverse_travel():

@@ -127,7 +127,8 @@ def test_meshed_teeth_touch_without_overlap():
 @pytest.mark.parametrize(("z", "x"), [(34, 0.0), (30, 0.3), (60, 0.0), (20, 0.5)])
 def test_generated_fillet_runs_from_the_root_circle_into_the_involute(z, x):
     """The rack's tip rounding, rolled on the pitch circle, ends where the rack's straight flank
-    starts generating: exactly at the start of the involute computed from inv α (a second method)."""
+    starts generating: exactly at the start of the involute computed from inv α (a second
+    method)."""
     p = pair_layout(PairSpec(0.004, z, 50, shifts=(x, 0.0)))
     g = p.gears[0]
     f = trochoid_fillet(g, ALPHA, 0.004, 1.0, 0.25, n=60)
@@ -135,7 +136,8 @@ def test_generated_fillet_runs_from_the_root_circle_into_the_involute(z, x):
     assert math.hypot(*f[0]) == pytest.approx(g.r_f, abs=1e-12)
     assert math.hypot(*f[-1]) == pytest.approx(r[0], abs=1e-12)
     assert math.atan2(f[-1][1], f[-1][0]) == pytest.approx(th[0], abs=1e-12)
-    # the start radius is the lower limit of the generated involute: ρ_l = r sin α − (h_a* − x)m/sin α
+    # the start radius is the lower limit of the generated involute:
+    # ρ_l = r sin α − (h_a* − x)m/sin α
     rho_l = g.r * math.sin(ALPHA) - (1.0 - x) * 0.004 / math.sin(ALPHA)
     assert r[0] == pytest.approx(math.hypot(g.r_b, rho_l), rel=1e-12)
     radii = np.hypot(f[:, 0], f[:, 1])

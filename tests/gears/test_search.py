@@ -17,8 +17,8 @@ M = 0.002
 
 
 def worked(**kw) -> PlanetarySpec:
-    base = {"scheme": Scheme.EXT_INT, "fixed": "4", "input": "1", "output": "h", "ratio": 4.0, "deviation": 0.02,
-                "planets": 4, "modules": (M, M), "z_range": (17, 120)}
+    base = {"scheme": Scheme.EXT_INT, "fixed": "4", "input": "1", "output": "h", "ratio": 4.0,
+            "deviation": 0.02, "planets": 4, "modules": (M, M), "z_range": (17, 120)}
     base.update(kw)
     return PlanetarySpec(**base)
 

@@ -18,21 +18,30 @@ def error_of(text: str) -> SceneError:
 def test_good_scene_parses_with_si_values():
     scene = parse_scene(GOOD, "good.toml")
     assert scene.mechanism.links["1"].distance("O", "A") == pytest.approx(0.1, rel=1e-15)
-    assert scene.mechanism.drive.omega == pytest.approx(1500 * 2 * 3.141592653589793 / 60, rel=1e-15)
+    assert scene.mechanism.drive.omega == pytest.approx(1500 * 2 * 3.141592653589793 / 60,
+                                                        rel=1e-15)
 
 
 @pytest.mark.parametrize("old,new,key,words", [
-    ('lengths = { OA = "100.0 mm" }', 'lengths = { OA = "100 kg" }', "links.1.lengths.OA", "not a length"),
-    ('lengths = { OA = "100.0 mm" }', 'lengths = { OA = "0 mm" }', "links.1.lengths.OA", "must be positive"),
-    ('lengths = { OA = "100.0 mm" }', 'lengths = { OA = "-5 mm" }', "links.1.lengths.OA", "must be positive"),
-    ('lengths = { OA = "100.0 mm" }', 'lengths = { OA = "100" }', "links.1.lengths.OA", "needs a unit"),
-    ('lengths = { OA = "100.0 mm" }', 'lenghts = { OA = "100 mm" }', "links.1.lenghts", "did you mean 'lengths'"),
+    ('lengths = { OA = "100.0 mm" }', 'lengths = { OA = "100 kg" }', "links.1.lengths.OA",
+     "not a length"),
+    ('lengths = { OA = "100.0 mm" }', 'lengths = { OA = "0 mm" }', "links.1.lengths.OA",
+     "must be positive"),
+    ('lengths = { OA = "100.0 mm" }', 'lengths = { OA = "-5 mm" }', "links.1.lengths.OA",
+     "must be positive"),
+    ('lengths = { OA = "100.0 mm" }', 'lengths = { OA = "100" }', "links.1.lengths.OA",
+     "needs a unit"),
+    ('lengths = { OA = "100.0 mm" }', 'lenghts = { OA = "100 mm" }', "links.1.lenghts",
+     "did you mean 'lengths'"),
     ('speed = "1500 rpm"', 'speed = "1500 mm"', "drive.speed", "not an angular velocity"),
     ('link = "1"', 'link = "7"', "drive.link", "unknown link"),
     ('B = "+"', 'Q = "+"', "assembly.Q", "unknown point"),
-    ('points = { S2 = "0.3 of A B" }', 'points = { S2 = "0.3 of A X" }', "links.2.points.S2", "not a point of this link"),
-    ('slides = { point = "B", on = "g" }', 'slides = { point = "B", on = "h" }', "links.3.slides.on", "unknown guide"),
-    ('guides.g = { through = "G"', 'guides.g = { through = "Z"', "ground.guides.g.through", "unknown point"),
+    ('points = { S2 = "0.3 of A B" }', 'points = { S2 = "0.3 of A X" }', "links.2.points.S2",
+     "not a point of this link"),
+    ('slides = { point = "B", on = "g" }', 'slides = { point = "B", on = "h" }',
+     "links.3.slides.on", "unknown guide"),
+    ('guides.g = { through = "G"', 'guides.g = { through = "Z"', "ground.guides.g.through",
+     "unknown point"),
 ])
 def test_error_names_file_key_and_expectation(old, new, key, words):
     assert old in GOOD
@@ -51,7 +60,8 @@ def test_point_on_no_link_is_reported():
 
 
 def test_missing_length_in_triangle():
-    text = GOOD.replace('lengths = { AB = "400.0 mm" }', 'lengths = { AB = "400 mm", AD = "50 mm" }\npoints = {}')
+    text = GOOD.replace('lengths = { AB = "400.0 mm" }',
+                        'lengths = { AB = "400 mm", AD = "50 mm" }\npoints = {}')
     text = text.replace('points = { S2 = "0.3 of A B" }', "")
     scene_err = error_of(text.replace('AD = "50 mm"', 'AD = "50 mm", BE = "20 mm"'))
     assert "needs lengths to two other points" in str(scene_err)
@@ -66,7 +76,8 @@ def test_triangle_without_side_asks_for_side():
 
 def test_impossible_triangle():
     text = GOOD.replace('lengths = { AB = "400.0 mm" }',
-                        'lengths = { AB = "400 mm", AD = "100 mm", BD = "100 mm" }\nside = { D = "left of A->B" }')
+                        'lengths = { AB = "400 mm", AD = "100 mm", BD = "100 mm" }\n'
+                        'side = { D = "left of A->B" }')
     assert "do not form a triangle" in str(error_of(text))
 
 
@@ -116,16 +127,20 @@ speed = "10 rad/s"
 def test_loads_are_validated():
     base = GOOD.replace('[links.3]\nslides', '[links.3]\nmass = "2 kg"\nslides')
     assert "must not be negative" in str(error_of(base.replace('mass = "2 kg"', 'mass = "-2 kg"')))
-    assert "unknown point 'Q'" in str(error_of(base + '\n[[loads]]\ntype = "force"\npoint = "Q"\nvector = ["1 N", "0 N"]\n'))
-    assert "bore" in str(error_of(base + '\n[[loads]]\ntype = "pressure"\npoint = "B"\npressure = "1 MPa"\ntowards = "O"\n'))
+    assert "unknown point 'Q'" in str(error_of(
+        base + '\n[[loads]]\ntype = "force"\npoint = "Q"\nvector = ["1 N", "0 N"]\n'))
+    assert "bore" in str(error_of(
+        base + '\n[[loads]]\ntype = "pressure"\npoint = "B"\npressure = "1 MPa"\ntowards = "O"\n'))
 
 
 def test_load_towards_its_own_point_and_table_longer_than_a_turn():
     base = GOOD.replace('[links.3]\nslides', '[links.3]\nmass = "2 kg"\nslides')
-    err = error_of(base + '\n[[loads]]\ntype = "force"\npoint = "B"\nmagnitude = "5 N"\ntowards = "B"\n')
+    err = error_of(base
+                   + '\n[[loads]]\ntype = "force"\npoint = "B"\nmagnitude = "5 N"\ntowards = "B"\n')
     assert "key 'loads[0].towards'" in str(err) and "towards B itself" in str(err)
     table = '[["0 deg", "0 N"], ["800 deg", "10 N"]]'
-    err = error_of(base + f'\n[[loads]]\ntype = "table"\npoint = "B"\ntowards = "O"\ntable = {table}\n')
+    err = error_of(base
+                   + f'\n[[loads]]\ntype = "table"\npoint = "B"\ntowards = "O"\ntable = {table}\n')
     assert "key 'loads[0].table'" in str(err) and "two crank turns" in str(err)
 
 

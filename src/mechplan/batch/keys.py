@@ -31,7 +31,8 @@ def get_value(doc: dict[str, Any], key: str, file: str | None = None) -> Any:
     return node
 
 
-def with_values(doc: dict[str, Any], values: dict[str, Any], file: str | None = None) -> dict[str, Any]:
+def with_values(doc: dict[str, Any], values: dict[str, Any],
+                file: str | None = None) -> dict[str, Any]:
     """Return a copy of a TOML document with values set at key paths (existing tables only)."""
     out = copy.deepcopy(doc)
     for key, value in values.items():

@@ -1,8 +1,8 @@
 """A class of variants: per student a folder with the scene, its sheets and its answer key.
 
 Each variant is one task on the engine. A folder is complete when its marker ``.complete`` (written
-last, holding a fingerprint of the scene and the options) matches: re-running skips it. Every file is
-written atomically; a variant that fails (cannot be assembled, bad value) is reported in
+last, holding a fingerprint of the scene and the options) matches: re-running skips it. Every file
+is written atomically; a variant that fails (cannot be assembled, bad value) is reported in
 ``summary.csv`` with its error and the others go on.
 """
 

@@ -1,10 +1,10 @@
 """A sweep's plan: one construction per topology, and the steps each varied key changes.
 
 A grid of variants shares the construction's steps, inputs and order; only some steps' parameters
-(lengths, branch signs, ω) differ. Each step's dependence on the varied keys is found by probing, and
-its versions are built once per combination of the keys it depends on — not once per variant — so a
-worker evaluates a variant by swapping a few prepared steps into the shared construction. Corners of
-the grid are rebuilt in full and compared, which catches a dependence the probes missed.
+(lengths, branch signs, ω) differ. Each step's dependence on the varied keys is found by probing,
+and its versions are built once per combination of the keys it depends on — not once per variant —
+so a worker evaluates a variant by swapping a few prepared steps into the shared construction.
+Corners of the grid are rebuilt in full and compared, which catches a dependence the probes missed.
 """
 
 from __future__ import annotations
@@ -49,8 +49,8 @@ def parse_vary(spec: str) -> Axis:
     """Parse ``KEY=FROM..TO:STEPS`` (e.g. ``links.1.lengths.AB=60mm..100mm:5``)."""
     m = _VARY.match(spec)
     if not m:
-        raise SceneError(f"--vary must be KEY=FROM..TO:STEPS, e.g. links.1.lengths.AB=60mm..100mm:5 "
-                         f"(got {spec!r})")
+        raise SceneError("--vary must be KEY=FROM..TO:STEPS, "
+                         f"e.g. links.1.lengths.AB=60mm..100mm:5 (got {spec!r})")
     key, a, b, steps = m.groups()
     low, unit = split_quantity(a, key)
     high, unit2 = split_quantity(b, key)
@@ -72,7 +72,8 @@ class Summaries:
     acceleration: dict[str, str] = field(default_factory=dict)
     omega: dict[str, str] = field(default_factory=dict)          # link → step id
     epsilon: dict[str, str] = field(default_factory=dict)
-    #: group ("2_3": its links) → (kind "RRR"/"RRP", (p1, p2, p3) position step ids, guide name or "")
+    #: group ("2_3": its links) → (kind "RRR"/"RRP", (p1, p2, p3) position step ids,
+    #: guide name or "")
     groups: dict[str, tuple[str, tuple[str, str, str], str]] = field(default_factory=dict)
     moment: str | None = None                                    # M_b step id
 
@@ -113,7 +114,8 @@ class SweepPlan:
         return math.prod(self.shape)
 
     def restricted(self, start: int, stop: int) -> SweepPlan:
-        """The plan with only the prepared steps variants ``start``…``stop - 1`` use (small to send)."""
+        """The plan with only the prepared steps variants ``start``…``stop - 1`` use (small to
+        send)."""
         grid = np.unravel_index(np.arange(start, stop), self.shape)
         tables = {}
         for dep, table in self.tables.items():
@@ -236,7 +238,8 @@ def make_plan(text: str, file: str, axes: Sequence[Axis], positions: int = 360) 
     phi = np.arange(positions) * (2.0 * math.pi / positions)
     return SweepPlan(file, tuple(axes), phi, base, summaries,
                      {n: tuple(sorted(d)) for n, d in deps.items()}, tables, errors,
-                     {n[len("__guide__."):]: v for n, v in rec0.items() if n.startswith("__guide__.")},
+                     {n[len("__guide__."):]: v for n, v in rec0.items()
+                      if n.startswith("__guide__.")},
                      builder.count)
 
 
@@ -301,8 +304,8 @@ def _summaries(scene: Any, c: Construction) -> Summaries:
                 "RRR", (c.position(p1), c.position(p2), c.position(p3)), "")
         elif (g.kind == "RRP" and g.outer2.kind is PairKind.PRISMATIC and g.outer2.guide
               and mech.guides[g.outer2.guide].link == GROUND):
-            out.groups["_".join(g.links)] = ("RRP", (c.position(p1), c.position(p2), c.position(p2)),
-                                  g.outer2.guide)
+            out.groups["_".join(g.links)] = (
+                "RRP", (c.position(p1), c.position(p2), c.position(p2)), g.outer2.guide)
     if "M_b" in c.results:
         out.moment = c.results["M_b"]
     return out

@@ -48,7 +48,8 @@ class SweepResult:
 
 def _variant(plan: SweepPlan, index: tuple[int, ...]
              ) -> tuple[Construction | None, dict[str, float], str]:
-    """The construction of one variant (prepared steps swapped in), its guide angles, or an error."""
+    """The construction of one variant (prepared steps swapped in), its guide angles, or an
+    error."""
     base = plan.base
     steps = dict(base.steps)
     drive = base.drive
@@ -182,7 +183,8 @@ def run_sweep(scene: str | Path, axes: Sequence[Axis], out_dir: str | Path, *,
               positions: int = 360, workers: int | None = None, scheduler: str | None = None,
               progress: bool | None = None, chunk: int | None = None,
               plot: str | None = None, plot_axes: Sequence[str] | None = None) -> SweepResult:
-    """Evaluate every variant of the grid; write ``summary.parquet``, ``summary.csv`` (and a plot)."""
+    """Evaluate every variant of the grid; write ``summary.parquet``, ``summary.csv`` (and a
+    plot)."""
     import pyarrow.parquet as pq
 
     scene = Path(scene)

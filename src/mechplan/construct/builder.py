@@ -149,8 +149,9 @@ class Builder:
                              "construction is ill-conditioned); set assembly.at to another crank "
                              "angle, e.g. at = \"30 deg\"", file=self.file,
                              key=f"assembly.{point}")
-        raise SceneError(f"neither assembly of point {point} lies {'left' if want > 0 else 'right'} "
-                         f"of {p}->{q} at φ = {math.degrees(self.assembly_phi):g}°",
+        raise SceneError(f"neither assembly of point {point} lies "
+                         f"{'left' if want > 0 else 'right'} of {p}->{q} "
+                         f"at φ = {math.degrees(self.assembly_phi):g}°",
                          file=self.file, key=f"assembly.{point}")
 
     # -- build -------------------------------------------------------------------------------

@@ -94,7 +94,8 @@ def refuse_unbounded(c: Construction, ev: Evaluation, est: ErrorEstimate, target
 
 def failures(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],
              file: str | None = None, max_condition: float = MAX_CONDITION) -> list[Failure]:
-    """Positions of a sweep that cannot be built, each with the message a single solve would give."""
+    """Positions of a sweep that cannot be built, each with the message a single solve would
+    give."""
     undefined = frozenset(targets) - frozenset(_checked(c, targets))
     bad = unbounded_positions(est, targets, ev.n, undefined)
     for gap in ev.gaps.values():
@@ -133,7 +134,8 @@ FULL_REASONS = 12
 
 def _cause(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str], k: int,
            max_condition: float) -> str:
-    """The first step that fails at position k (a meet with no solution or an ill-conditioned one)."""
+    """The first step that fails at position k (a meet with no solution or an ill-conditioned
+    one)."""
     for sid, gap in ev.gaps.items():
         if gap[k] > 0:
             return sid

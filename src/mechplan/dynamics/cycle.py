@@ -45,7 +45,8 @@ class CycleState:
 
 @dataclass(frozen=True)
 class _Tabled:
-    """A load tabulated against the crank angle: its index among the loads, its table, its period."""
+    """A load tabulated against the crank angle: its index among the loads, its table, its
+    period."""
 
     index: int
     xs: Array

@@ -56,7 +56,8 @@ def wittenbauer(J_red: Array, dT: Array, omega_m: float, delta: float) -> Witten
 
 @dataclass(frozen=True)
 class Merkalov:
-    """ΔT_I = ΔT − J_var·ω_m²/2 and the constant inertia J_I it needs; flywheel = J_I − J_present."""
+    """ΔT_I = ΔT − J_var·ω_m²/2 and the constant inertia J_I it needs;
+    flywheel = J_I − J_present."""
 
     dT_I: Array
     J_I: float

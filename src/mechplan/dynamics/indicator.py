@@ -3,11 +3,11 @@
 A diagram is a set of branches, one per stroke (four-stroke: intake, compression, expansion,
 exhaust; two-stroke: expansion, compression), each a piecewise function p(V) on [V_c, V_a]. It comes
 from the thermal calculation (:func:`thermal_diagram`: the Grinevetsky–Mazing construction with the
-corners rounded) or from a measured table (:func:`volume_table_diagram`, :func:`angle_table_diagram`).
-Any crank mechanism then gives p(φ): the stroke from φ, V from the piston travel — so the
-machine-dynamics code can call :meth:`IndicatorDiagram.at_phi` with its own kinematics.
-Pressures are absolute (Pa), volumes m³, angles rad from the TDC that opens the intake (4-stroke)
-or from the TDC of combustion (2-stroke).
+corners rounded) or from a measured table (:func:`volume_table_diagram`,
+:func:`angle_table_diagram`). Any crank mechanism then gives p(φ): the stroke from φ, V from the
+piston travel — so the machine-dynamics code can call :meth:`IndicatorDiagram.at_phi` with its own
+kinematics. Pressures are absolute (Pa), volumes m³, angles rad from the TDC that opens the intake
+(4-stroke) or from the TDC of combustion (2-stroke).
 """
 
 from __future__ import annotations
@@ -100,7 +100,8 @@ class Linear(Piece):
     p1: float
 
     def __call__(self, V: Array) -> Array:
-        return self.p0 + (self.p1 - self.p0) * (np.asarray(V, float) - self.V0) / (self.V1 - self.V0)
+        return (self.p0 + (self.p1 - self.p0) * (np.asarray(V, float) - self.V0)
+                / (self.V1 - self.V0))
 
     def integral(self, V0: float, V1: float) -> float:
         return float((self(np.asarray(V0)) + self(np.asarray(V1))) / 2.0 * (V1 - V0))
@@ -237,7 +238,8 @@ def _branch(parts: Sequence[tuple[float, float, Piece]], rising: bool) -> Branch
     return Branch(tuple([parts[0][0]] + [p[1] for p in parts]), tuple(p[2] for p in parts), rising)
 
 
-def thermal_diagram(spec: ThermalSpec, strokes: int, kin: SliderCrank, F_p: float) -> IndicatorDiagram:
+def thermal_diagram(spec: ThermalSpec, strokes: int, kin: SliderCrank,
+                    F_p: float) -> IndicatorDiagram:
     """The Grinevetsky–Mazing diagram from the thermal calculation, corners rounded.
 
     Compression p_a(V_a/V)^n1, combustion at V_c (petrol) or at p_z to ρV_c (diesel), expansion
@@ -269,7 +271,8 @@ def thermal_diagram(spec: ThermalSpec, strokes: int, kin: SliderCrank, F_p: floa
         p_tdc = spec.tdc_fraction * p_c
         comp_parts = [(V_ign, V_a, comp),
                       (V_c, V_ign, Hermite(V_c, p_tdc, comp.slope(V_c) * spec.tdc_fraction,
-                                           V_ign, float(comp(np.asarray(V_ign))), comp.slope(V_ign)))]
+                                           V_ign, float(comp(np.asarray(V_ign))),
+                                           comp.slope(V_ign)))]
         V_pk = V(spec.peak_angle)
         p_pk = spec.peak_fraction * spec.p_z
         V_j = max(V(2.0 * spec.peak_angle), V_z * (1.0 + 1e-9))
@@ -319,13 +322,14 @@ def volume_table_diagram(rows: Sequence[tuple[float, float]], strokes: int, V_h:
     p = np.asarray([r[1] for r in rows], float)
     span = float(V.max() - V.min())
     if abs(V[0] - V[-1]) > 1e-6 * span or abs(p[0] - p[-1]) > 1e-6 * max(abs(p).max(), 1.0):
-        raise SceneError(f"the p(V) table must be a closed cycle: its last row must repeat the first "
-                         f"(got first ({V[0]:g} m³, {p[0]:g} Pa), last ({V[-1]:g} m³, {p[-1]:g} Pa))",
-                         file=file, key=key)
+        raise SceneError("the p(V) table must be a closed cycle: its last row must repeat the "
+                         f"first (got first ({V[0]:g} m³, {p[0]:g} Pa), "
+                         f"last ({V[-1]:g} m³, {p[-1]:g} Pa))", file=file, key=key)
     runs = _runs(V)
     if len(runs) != strokes or not V[runs[0][1]] > V[runs[0][0]]:
         raise SceneError(f"the p(V) table must go around the cycle in {strokes} strokes, the first "
-                         f"from TDC to BDC (got {len(runs)} monotone runs of V)", file=file, key=key)
+                         f"from TDC to BDC (got {len(runs)} monotone runs of V)",
+                         file=file, key=key)
     if abs(span - V_h) > 0.01 * V_h:
         raise SceneError(f"the p(V) table's swept volume must equal the displacement F_p·2R = "
                          f"{V_h:.6g} m³ within 1 % (got {span:.6g} m³)", file=file, key=key)
@@ -353,11 +357,14 @@ def angle_table_diagram(rows: Sequence[tuple[float, float]], strokes: int, kin: 
     p = np.asarray([r[1] for r in rows], float)
     cycle = math.pi * strokes
     if abs(phi[0]) > 1e-9 or abs(phi[-1] - cycle) > 1e-9 or abs(p[0] - p[-1]) > 1e-6 * abs(p).max():
-        raise SceneError(f"the p(φ) table must be a closed cycle from 0° to {math.degrees(cycle):g}° "
+        raise SceneError("the p(φ) table must be a closed cycle from 0° to "
+                         f"{math.degrees(cycle):g}° "
                          f"with equal pressures at both ends (got {math.degrees(phi[0]):g}°…"
-                         f"{math.degrees(phi[-1]):g}°, {p[0]:g} Pa…{p[-1]:g} Pa)", file=file, key=key)
+                         f"{math.degrees(phi[-1]):g}°, {p[0]:g} Pa…{p[-1]:g} Pa)",
+                         file=file, key=key)
     if np.any(np.diff(phi) <= 0):
-        raise SceneError("the crank angles of the p(φ) table must increase strictly", file=file, key=key)
+        raise SceneError("the crank angles of the p(φ) table must increase strictly",
+                         file=file, key=key)
     V_h = F_p * 2.0 * kin.R
     V_c = V_h / (epsilon - 1.0)
     nodes = np.union1d(phi, np.arange(strokes + 1) * math.pi)

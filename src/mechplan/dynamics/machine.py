@@ -105,7 +105,8 @@ def _split(spec: DynamicsSpec, theta: Array, st: CycleState,
     return np.full_like(theta, M), -st.M_given, M, M * cycle + A_given
 
 
-def machine_dynamics(scene: Scene, spec: DynamicsSpec, phi0: float, per_turn: int) -> MachineDynamics:
+def machine_dynamics(scene: Scene, spec: DynamicsSpec, phi0: float,
+                     per_turn: int) -> MachineDynamics:
     """Solve the machine's dynamics with ``per_turn`` drawn positions per crank turn from φ0."""
     turns = round(spec.cycle / (2 * math.pi))
     m = max(1, math.ceil(spec.dense / per_turn))
@@ -118,7 +119,8 @@ def machine_dynamics(scene: Scene, spec: DynamicsSpec, phi0: float, per_turn: in
         scale = max(float(cumulative_work(theta, np.abs(M_d))[-1]), 1e-300)
         if abs(net) > spec.balance_tolerance * scale:
             raise SceneError(f"the driving and resisting works over the cycle must balance within "
-                             f"{spec.balance_tolerance:.0%} (net work {net:.4g} J of {scale:.4g} J); "
+                             f"{spec.balance_tolerance:.0%} "
+                             f"(net work {net:.4g} J of {scale:.4g} J); "
                              "remove constant_moment to find it from the cycle",
                              file=scene.path, key="dynamics.constant_moment")
     A_d, A_c = cumulative_work(theta, M_d), cumulative_work(theta, M_c)

@@ -1,7 +1,7 @@
 """Specs of a cam mechanism: the follower, the motion program (phases and laws) and the limits.
 
-SI units: lengths in m, angles in rad, speeds in rad/s. The follower's displacement s is a length for
-a translating follower and an angle (the swing ψ) for an oscillating one.
+SI units: lengths in m, angles in rad, speeds in rad/s. The follower's displacement s is a length
+for a translating follower and an angle (the swing ψ) for an oscillating one.
 """
 
 from __future__ import annotations
@@ -82,7 +82,8 @@ class Follower:
 
 @dataclass(frozen=True, slots=True)
 class Limits:
-    """Allowable pressure angles (rad), a given base radius (m) and the least radius of curvature."""
+    """Allowable pressure angles (rad), a given base radius (m) and the least radius of
+    curvature."""
 
     alpha_rise: float
     alpha_return: float

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 
 
 class Unknown(enum.Enum):
-    """Which side of the work balance is a constant moment, and whether it is found from the cycle."""
+    """Which side of the work balance is a constant moment, and whether it is found from the
+    cycle."""
 
     RESISTING = "resisting"      # the given loads drive (engine); M_c = const
     DRIVING = "driving"          # the given loads resist (shaper, press, pump); M_d = const
@@ -54,7 +55,8 @@ class FlywheelShape(enum.Enum):
 
 @dataclass(frozen=True, slots=True)
 class FlywheelSpec:
-    """Shape and material of the flywheel: outer (disc) or mean (rim) diameter or width ratio b/D."""
+    """Shape and material of the flywheel: outer (disc) or mean (rim) diameter or width ratio
+    b/D."""
 
     shape: FlywheelShape
     density: float = 7800.0

@@ -1,5 +1,5 @@
-"""Specs of a gear scene: a planetary train (scheme, links, target ratio), an ordinary stage after it
-and an involute pair. Frozen dataclasses, SI floats (module in metres, angles in radians)."""
+"""Specs of a gear scene: a planetary train (scheme, links, target ratio), an ordinary stage after
+it and an involute pair. Frozen dataclasses, SI floats (module in metres, angles in radians)."""
 
 from __future__ import annotations
 
@@ -8,10 +8,11 @@ from enum import Enum
 
 
 class Scheme(Enum):
-    """Planetary schemes. Gears: 1 and the last are central, the others are planets on the carrier h.
+    """Planetary schemes. Gears: 1 and the last are central, the others are planets on
+    the carrier h.
 
-    ``SINGLE_ROW``: sun 1 – planet 2 – ring 3. Two-row (planet block 2–3 on one shaft, central 1, 4):
-    ``EXT_INT`` 1–2 external, 3–4 internal (the worked example); ``EXT_EXT`` both external;
+    ``SINGLE_ROW``: sun 1 – planet 2 – ring 3. Two-row (planet block 2–3 on one shaft, central 1,
+    4): ``EXT_INT`` 1–2 external, 3–4 internal (the worked example); ``EXT_EXT`` both external;
     ``INT_INT`` both internal (1 and 4 are rings).
     """
 
@@ -38,7 +39,8 @@ class Scheme(Enum):
 
     @property
     def links(self) -> tuple[str, str, str]:
-        """The three basic links that can be fixed, input or output: central a, central b, carrier."""
+        """The three basic links that can be fixed, input or output: central a, central b,
+        carrier."""
         names = self.gear_names
         return (names[0], names[-1], "h")
 

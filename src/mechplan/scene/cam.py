@@ -119,13 +119,15 @@ def _motion(top: Table, follower: Follower) -> tuple[float, float, int, tuple[Ph
     if abs(total - 2 * math.pi) > FULL_TURN_TOL:
         raise m.error("phases", f"angles must sum to 360° (got {math.degrees(total):.6g}°)")
     level = 0
-    needs = {PhaseKind.RISE: 0, PhaseKind.FAR_DWELL: 1, PhaseKind.RETURN: 1, PhaseKind.NEAR_DWELL: 0}
+    needs = {PhaseKind.RISE: 0, PhaseKind.FAR_DWELL: 1, PhaseKind.RETURN: 1,
+             PhaseKind.NEAR_DWELL: 0}
     for p in phases:
         if needs[p.kind] != level:
             where = "the far position (after a rise)" if needs[p.kind] else \
                 "the near position (after a return or at the start)"
             raise SceneError(f"a {p.kind.value} must start from {where}; order the phases "
-                             "rise, far_dwell, return, near_dwell", file=m.file, key=p.key + ".kind")
+                             "rise, far_dwell, return, near_dwell",
+                             file=m.file, key=p.key + ".kind")
         level = {PhaseKind.RISE: 1, PhaseKind.RETURN: 0}.get(p.kind, level)
     if level != 0:
         raise m.error("phases", "must end at the near position: add a return")
@@ -215,8 +217,10 @@ def _drawing(top: Table) -> CamDrawing:
         steps[k] = v
     chord = t.quantity("chord_error", "length", d.chord_error, positive=True) or d.chord_error
     if not 1e-8 <= chord <= 1e-3:
-        raise t.error("chord_error", f"must be between 0.01 µm and 1 mm (got {t.raw('chord_error')!r})")
+        raise t.error("chord_error",
+                      f"must be between 0.01 µm and 1 mm (got {t.raw('chord_error')!r})")
     return CamDrawing(sheet=t.string("sheet", "A1", choices=("A0", "A1", "A2", "A3", "A4")) or "A1",
-                      standard=t.string("standard", "iso", choices=("iso", "gost", "tcvn")) or "iso",
+                      standard=t.string("standard", "iso",
+                                        choices=("iso", "gost", "tcvn")) or "iso",
                       ray_step=steps["ray_step"], table_step=steps["table_step"],
                       chord_error=chord, title_block=fields)

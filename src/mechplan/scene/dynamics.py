@@ -64,7 +64,8 @@ def parse_dynamics(data: dict[str, Any], file: str, mech: Mechanism) -> Dynamics
         constant_moment=t.quantity("constant_moment", "moment", nonnegative=True),
         inertia_const=t.quantity("J_const", "inertia", 0.0, nonnegative=True) or 0.0,
         indicator=indicator, flywheel=_flywheel(ft) if ft is not None else None,
-        dense=dense, pole_distance_mm=None if pole is None else pole * 1000.0, balance_tolerance=tol or 0.02)
+        dense=dense, pole_distance_mm=None if pole is None else pole * 1000.0,
+        balance_tolerance=tol or 0.02)
 
 
 def _rows(t: Table, name: str, xdim: str, ydim: str) -> tuple[tuple[float, float], ...]:

@@ -54,8 +54,8 @@ def parse_engine_scene(text: str, file: str = "<scene>") -> EngineScene:
     title = top.string("title", "") or ""
     e = top.table("engine", required=True)
     assert e is not None
-    e.check_keys(("strokes", "speed", "bore", "crank_radius", "rod_length", "lambda", "p0", "layout",
-                  "cylinders", "firing_order", "throws", "banks", "grid", "table_step"))
+    e.check_keys(("strokes", "speed", "bore", "crank_radius", "rod_length", "lambda", "p0",
+                  "layout", "cylinders", "firing_order", "throws", "banks", "grid", "table_step"))
     strokes = e.raw("strokes", 4)
     if strokes not in (2, 4):
         raise e.error("strokes", f"must be 2 or 4 (got {strokes!r})")
@@ -95,7 +95,8 @@ def parse_engine_scene(text: str, file: str = "<scene>") -> EngineScene:
             throws = [0.0] * n_cyl
             for k, number in enumerate(order):
                 throws[number - 1] = math.radians((k * interval) % 360.0)
-    cylinders = tuple(CylinderSpec(i + 1, throws[i], banks[i], layout is Layout.ARTICULATED and i == 1)
+    cylinders = tuple(CylinderSpec(i + 1, throws[i], banks[i],
+                                   layout is Layout.ARTICULATED and i == 1)
                       for i in range(n_cyl))
     _check_firing(e, cylinders, order, strokes)
     grid = e.raw("grid", 720 if strokes == 4 else 360)
@@ -135,8 +136,8 @@ def _rod_length(e: Table, R: float) -> float:
     L = e.quantity("rod_length", "length", required=True, positive=True)
     assert L is not None
     if not R / L < 1.0:
-        raise e.error("rod_length", f"λ = R/L must be less than 1 (got λ = {R / L:g}); the rod must "
-                      "be longer than the crank radius")
+        raise e.error("rod_length", f"λ = R/L must be less than 1 (got λ = {R / L:g}); "
+                      "the rod must be longer than the crank radius")
     return L
 
 
@@ -168,8 +169,8 @@ def _rod(t: Table, L: float, prefix: str = "rod") -> RodMasses:
 
 
 def _masses(t: Table, L: float) -> MassSpec:
-    t.check_keys(("piston", "rod", "rod_small_end", "rod_centre", "rod_J", "rotating_extra", "crank",
-                  "counterweight"))
+    t.check_keys(("piston", "rod", "rod_small_end", "rod_centre", "rod_J", "rotating_extra",
+                  "crank", "counterweight"))
     piston = t.quantity("piston", "mass", required=True, nonnegative=True)
     assert piston is not None
     return MassSpec(piston, _rod(t, L), t.quantity("rotating_extra", "mass", 0.0, nonnegative=True)
@@ -201,7 +202,8 @@ def _angles(e: Table, name: str, n: int) -> list[float]:
     if raw is None:
         return [0.0] * n
     if not isinstance(raw, list) or len(raw) != n:
-        raise e.error(name, f"expected one angle per cylinder ({n}), e.g. [\"0 deg\", …] (got {raw!r})")
+        raise e.error(name, f"expected one angle per cylinder ({n}), "
+                      f"e.g. [\"0 deg\", …] (got {raw!r})")
     return [e.value_quantity(v, f"{name}[{i}]", "angle") % (2 * math.pi) for i, v in enumerate(raw)]
 
 
@@ -225,7 +227,8 @@ def _check_firing(e: Table, cylinders: tuple[CylinderSpec, ...], order: tuple[in
         raise e.error("firing_order", str(exc)) from None
 
 
-def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str], file: str) -> list[tuple[float, float]]:
+def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str],
+          file: str) -> list[tuple[float, float]]:
     ureg = registry()
 
     def conv(value: object, unit: str, target: str, where: str) -> float:
@@ -287,7 +290,8 @@ def _indicator(t: Table, strokes: int, file: str) -> IndicatorSpec:
     if kind is not IndicatorKind.THERMAL:
         t.check_keys(("source", "units", "table", "file", "epsilon"))
         units = t.raw("units", ["cm^3" if kind is IndicatorKind.VOLUME else "deg", "MPa"])
-        if not isinstance(units, list) or len(units) != 2 or not all(isinstance(u, str) for u in units):
+        if (not isinstance(units, list) or len(units) != 2
+                or not all(isinstance(u, str) for u in units)):
             raise t.error("units", 'expected two unit names, e.g. ["cm^3", "MPa"]')
         dims = ("volume" if kind is IndicatorKind.VOLUME else "angle", "pressure")
         rows = _rows(t, (units[0], units[1]), dims, file)
@@ -342,8 +346,9 @@ def _indicator(t: Table, strokes: int, file: str) -> IndicatorSpec:
                           angle("ignition_advance", 15.0, 60.0), peak, frac, tdc,
                           angle("exhaust_opening", 50.0, 90.0), rounding)
     if rounding and tdc * p_c > frac * vals["p_z"]:
-        raise t.error("tdc_fraction", f"the pressure at TDC tdc_fraction·p_c = {tdc * p_c / 1e6:.3f} "
-                      f"MPa must not exceed the real peak peak_fraction·p_z = "
+        raise t.error("tdc_fraction", "the pressure at TDC tdc_fraction·p_c = "
+                      f"{tdc * p_c / 1e6:.3f} MPa must not exceed the real peak "
+                      "peak_fraction·p_z = "
                       f"{frac * vals['p_z'] / 1e6:.3f} MPa")
     return IndicatorSpec(IndicatorKind.THERMAL, thermal=thermal, epsilon=eps)
 

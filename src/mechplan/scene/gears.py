@@ -87,7 +87,8 @@ def _planetary(t: Table) -> PlanetarySpec:
                          z_range=(teeth[0], teeth[1]),
                          z_min=_int(t, "z_min", 17, lo=1) or 17,
                          ring_difference=_int(t, "ring_difference", 8, lo=1) or 8,
-                         addendum=t.quantity("addendum", "dimensionless", 1.0, positive=True) or 1.0,
+                         addendum=t.quantity("addendum", "dimensionless", 1.0,
+                                             positive=True) or 1.0,
                          given=given, input_speed=speed)
 
 
@@ -128,7 +129,8 @@ def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, i
         raise t.error("shifts", f"are chosen by shift_rule = {rule.value!r}; remove one of them")
     return PairSpec(module=module, z1=teeth[0], z2=teeth[1], alpha=alpha,
                     addendum=t.quantity("addendum", "dimensionless", 1.0, positive=True) or 1.0,
-                    clearance=t.quantity("clearance", "dimensionless", 0.25, nonnegative=True) or 0.0,
+                    clearance=t.quantity("clearance", "dimensionless", 0.25,
+                                         nonnegative=True) or 0.0,
                     shifts=(float(shifts_raw[0]), float(shifts_raw[1])), rule=rule,
                     z_min=_int(t, "z_min", 17, lo=1) or 17)
 

@@ -26,7 +26,8 @@ def masses_of(top: Table, links: dict[str, Link]) -> dict[str, MassSpec]:
             continue
         if isinstance(centre_raw, dict):
             if len(centre_raw) != 1:
-                raise t.error("centre", "expected one point, e.g. centre = { S2 = \"midpoint B C\" }"
+                raise t.error("centre", "expected one point, "
+                              "e.g. centre = { S2 = \"midpoint B C\" }"
                               f" (got {centre_raw!r})")
             centre = next(iter(centre_raw))
         elif isinstance(centre_raw, str):

@@ -8,7 +8,8 @@ from typing import Any
 from ..errors import SceneError
 from ..units import parse_quantity
 
-#: largest magnitude (SI) a scene may give per dimension: beyond, squares overflow or lose all digits
+#: largest magnitude (SI) a scene may give per dimension: beyond, squares overflow or lose all
+#: digits
 LIMITS = {"length": 1e6, "angle": 1e6, "angular_velocity": 1e9}
 DEFAULT_LIMIT = 1e15
 

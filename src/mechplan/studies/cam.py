@@ -28,11 +28,14 @@ def law_text(phase_law: Law | None, blend: float, lang: str) -> str:
 def follower_text(d: CamDesign, lang: str) -> str:
     """"Follower: translating follower, roller …; offset e = … mm"."""
     f, g = d.spec.follower, d.geometry
-    contact = message(f"cam.contact.{f.contact.value}", lang, rr=number(f.roller_radius * 1e3, 1, lang))
-    where = (message("cam.offset", lang, e=number(g.e * 1e3, 2, lang)) if f.motion is Motion.TRANSLATING
+    contact = message(f"cam.contact.{f.contact.value}", lang,
+                      rr=number(f.roller_radius * 1e3, 1, lang))
+    where = (message("cam.offset", lang, e=number(g.e * 1e3, 2, lang))
+             if f.motion is Motion.TRANSLATING
              else message("cam.arm", lang, l=number(f.arm * 1e3, 1, lang),
                           a=number(f.pivot_distance * 1e3, 1, lang)))
-    return message("cam.report.follower", lang, motion=message(f"cam.motion.{f.motion.value}", lang),
+    return message("cam.report.follower", lang,
+                   motion=message(f"cam.motion.{f.motion.value}", lang),
                    contact=contact, where=where)
 
 
@@ -60,18 +63,20 @@ class CamStudy:
         lines.append(message("cam.report.program", lang, stroke=stroke,
                              omega=number(spec.omega, 2, lang),
                              rpm=number(spec.omega * 30 / math.pi, 1, lang),
-                             sense=message("cam.sense." + ("ccw" if spec.sense > 0 else "cw"), lang)))
+                             sense=message("cam.sense." + ("ccw" if spec.sense > 0 else "cw"),
+                                           lang)))
         starts = d.phase_starts
         w = spec.omega
         for i, p in enumerate(spec.phases):
             common = {"n": i + 1, "kind": message(f"cam.phase.{p.kind.value}", lang),
-                          "start": number(deg(starts[i]), 1, lang), "end": number(deg(starts[i + 1]), 1, lang),
+                          "start": number(deg(starts[i]), 1, lang),
+                          "end": number(deg(starts[i + 1]), 1, lang),
                           "angle": number(deg(p.angle), 1, lang)}
             if p.law is None:
                 lines.append("  " + message("cam.report.dwell", lang, **common))
             else:
-                lines.append("  " + message("cam.report.phase", lang, law=law_text(p.law, p.blend, lang),
-                                            **common))
+                lines.append("  " + message("cam.report.phase", lang,
+                                            law=law_text(p.law, p.blend, lang), **common))
         lines.append("")
         idx = np.searchsorted(starts, np.mod(d.dense.phi, 2 * math.pi), side="right") - 1
         for i, p in enumerate(spec.phases):
@@ -80,9 +85,10 @@ class CamStudy:
             m = idx == i
             s1 = float(np.max(np.abs(d.dense.s1[m])))
             s2 = float(np.max(np.abs(d.dense.s2[m])))
-            lines.append(message("cam.report.peaks", lang, kind=message(f"cam.phase.{p.kind.value}", lang),
-                                 s1=number(s1 * u.f1, 3, lang), u1=u.u1, s2=number(s2 * u.f1, 3, lang),
-                                 u2=u.u2, v=number(s1 * w, 4, lang),
+            lines.append(message("cam.report.peaks", lang,
+                                 kind=message(f"cam.phase.{p.kind.value}", lang),
+                                 s1=number(s1 * u.f1, 3, lang), u1=u.u1,
+                                 s2=number(s2 * u.f1, 3, lang), u2=u.u2, v=number(s1 * w, 4, lang),
                                  uv=u.uv, a=number(s2 * w * w, 2, lang), ua=u.ua))
         lines.append("")
         lines.append(message("cam.report.graphical_head", lang, parts=12))
@@ -90,16 +96,19 @@ class CamStudy:
             lines.append("  " + message(
                 "cam.report.graphical", lang, kind=message(f"cam.phase.{c.kind.value}", lang),
                 d1=number(c.d_s1_chords * u.f1, 4, lang), d2=number(c.d_s2_chords * u.f1, 4, lang),
-                d3=number(c.d_s1_integral * u.f1, 4, lang), d4=number(c.d_s_integral * u.f0, 4, lang),
+                d3=number(c.d_s1_integral * u.f1, 4, lang),
+                d4=number(c.d_s_integral * u.f0, 4, lang),
                 u0=u.u0, u1=u.u1, u2=u.u2))
         lines.append("")
         lim = spec.limits
         if spec.follower.contact is Contact.FLAT:
-            lines.append(message("cam.report.r0_convex", lang, rho=number(lim.min_curvature * 1e3, 2, lang),
+            lines.append(message("cam.report.r0_convex", lang,
+                                 rho=number(lim.min_curvature * 1e3, 2, lang),
                                  r0=number(d.r0_min * 1e3, 3, lang)))
         else:
             text = message("cam.report.r0_pressure", lang, ar=number(deg(lim.alpha_rise), 1, lang),
-                           ad=number(deg(lim.alpha_return), 1, lang), r0=number(d.r0_min * 1e3, 3, lang),
+                           ad=number(deg(lim.alpha_return), 1, lang),
+                           r0=number(d.r0_min * 1e3, 3, lang),
                            e=number(d.geometry.e * 1e3, 3, lang))
             if spec.follower.offset is None and spec.follower.motion is Motion.TRANSLATING:
                 text += " — " + message("cam.report.r0_best", lang)
@@ -111,11 +120,13 @@ class CamStudy:
             lines.append(message("cam.report.r0_used", lang, r0=number(g.r0 * 1e3, 3, lang),
                                  rw=number((g.r0 - g.roller) * 1e3, 3, lang)))
         if spec.follower.contact is not Contact.FLAT:
-            lines.append(message("cam.report.alpha", lang, ar=number(deg(d.alpha_rise.value), 2, lang),
+            lines.append(message("cam.report.alpha", lang,
+                                 ar=number(deg(d.alpha_rise.value), 2, lang),
                                  pr=number(deg(d.alpha_rise.phi), 2, lang),
                                  ad=number(deg(d.alpha_return.value), 2, lang),
                                  pd=number(deg(d.alpha_return.phi), 2, lang)))
-        lines.append(message("cam.report.rho", lang, rp=number(d.rho_pitch_min.value * 1e3, 3, lang),
+        lines.append(message("cam.report.rho", lang,
+                             rp=number(d.rho_pitch_min.value * 1e3, 3, lang),
                              pp=number(deg(d.rho_pitch_min.phi), 2, lang),
                              rw=number(d.rho_profile_min.value * 1e3, 3, lang),
                              pw=number(deg(d.rho_profile_min.phi), 2, lang)))
@@ -162,7 +173,8 @@ class CamStudy:
                                      "limit": h.limit} for h in d.zone.planes]}
         return {
             "kind": "cam", "title": spec.title,
-            "follower": {"motion": spec.follower.motion.value, "contact": spec.follower.contact.value,
+            "follower": {"motion": spec.follower.motion.value,
+                         "contact": spec.follower.contact.value,
                          "offset": g.e, "roller_radius": g.roller, "arm": g.arm,
                          "pivot_distance": g.pivot},
             "stroke": spec.stroke, "omega": spec.omega, "sense": "ccw" if spec.sense > 0 else "cw",
@@ -172,8 +184,9 @@ class CamStudy:
             "s_prime_s_zone": zone,
             "pressure_angle_max": {"rise": [d.alpha_rise.value, d.alpha_rise.phi],
                                    "return": [d.alpha_return.value, d.alpha_return.phi]},
-            "radius_of_curvature_min": {"pitch": [d.rho_pitch_min.value, d.rho_pitch_min.phi],
-                                        "profile": [d.rho_profile_min.value, d.rho_profile_min.phi]},
+            "radius_of_curvature_min": {
+                "pitch": [d.rho_pitch_min.value, d.rho_pitch_min.phi],
+                "profile": [d.rho_profile_min.value, d.rho_profile_min.phi]},
             "face": list(d.face) if d.face else None,
             "graphical": [{"phase": c.index, "kind": c.kind.value, "d_s1_chords": c.d_s1_chords,
                            "d_s2_chords": c.d_s2_chords, "d_s1_integral": c.d_s1_integral,

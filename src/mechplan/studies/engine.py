@@ -102,7 +102,8 @@ class EngineStudy:
         lines += ["", message("engine.report.indicator", lang, W=n(ch.work_diagram, 2),
                               p_i=n(ch.work_diagram / spec.V_h * 1e-6, 4),
                               p_max=n(ch.p_max * 1e-6, 3))]
-        lines += ["", message("engine.report.table", lang, step=n(math.degrees(spec.table_step), 0))]
+        lines += ["", message("engine.report.table", lang,
+                              step=n(math.degrees(spec.table_step), 0))]
         lines += self._table_text(lang)
         Mt = d.M_total
         lines += ["", message("engine.report.torque", lang, mean=n(ch.work_torque / spec.cycle, 3),

@@ -1,1 +1,2 @@
-"""Dynamics of an internal-combustion engine: forces along the cylinders, torque, crank-pin loads."""
+"""Dynamics of an internal-combustion engine: forces along the cylinders, torque, crank-pin
+loads."""

@@ -20,7 +20,8 @@ WEAR_SPREAD = math.radians(60.0)
 
 @dataclass(frozen=True)
 class PinLoad:
-    """Load of the rods on one crank pin in the crank's frame (T across, Z along, towards the axis)."""
+    """Load of the rods on one crank pin in the crank's frame (T across, Z along, towards the
+    axis)."""
 
     T: Array
     Z: Array
@@ -97,7 +98,8 @@ def journal_loads(model: EngineModel, phi: Array, pins: dict[int, PinLoad]) -> A
         r = np.stack([np.cos(theta), np.sin(theta)], axis=1)
         t = np.stack([-np.sin(theta), np.cos(theta)], axis=1)
         q = pins[pin]
-        outward = -q.Q_Z + (spec.masses.crank - spec.masses.counterweight) * spec.R * model.omega ** 2
+        outward = (-q.Q_Z + (spec.masses.crank - spec.masses.counterweight)
+                   * spec.R * model.omega ** 2)
         W.append(q.Q_T[:, None] * t + outward[:, None] * r)
     zero = np.zeros_like(W[0])
     return np.stack([0.5 * ((W[j - 1] if j > 0 else zero) + (W[j] if j < len(W) else zero))

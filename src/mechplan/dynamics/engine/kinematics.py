@@ -1,4 +1,5 @@
-"""Piston kinematics of a central slider-crank: exact closed forms, the λ-series and Brix's transfer.
+"""Piston kinematics of a central slider-crank: exact closed forms, the λ-series and Brix's
+transfer.
 
 φ is the crank angle from the top dead centre in the sense of rotation (rad), ω > 0 constant;
 x is the piston's travel from TDC towards the crankshaft (m); v = dx/dt, a = d²x/dt².

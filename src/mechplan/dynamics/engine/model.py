@@ -94,7 +94,8 @@ class EngineModel:
                              self.m_j[number])
 
     def stroke_E(self, psi: Array) -> Array:
-        """Stroke index of the articulated cylinder at its own cycle angle ψ (exact dead centres)."""
+        """Stroke index of the articulated cylinder at its own cycle angle ψ (exact dead
+        centres)."""
         pair = self.pair
         assert pair is not None
         d = self.phases[2]

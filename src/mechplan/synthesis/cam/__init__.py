@@ -89,7 +89,8 @@ def _intervals(mask: np.ndarray, phi: np.ndarray) -> str:
 def _geometry(spec: CamSpec, r0: float, e: float) -> Geometry:
     f = spec.follower
     return Geometry(spec.phases, spec.stroke, spec.sense, f.motion, f.contact, r0, e,
-                    f.roller_radius if f.contact is Contact.ROLLER else 0.0, f.arm, f.pivot_distance)
+                    f.roller_radius if f.contact is Contact.ROLLER else 0.0, f.arm,
+                    f.pivot_distance)
 
 
 def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Zone | None]:
@@ -121,7 +122,8 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
                              f"(got {given * 1e3:g} mm)", file=spec.path, key="limits.base_radius")
         if given < zone.r0 * (1 - 1e-9):
             raise SceneError(f"cannot meet the allowable pressure angles: it must be at least "
-                             f"{zone.r0 * 1e3:.3f} mm with e = {e * 1e3:g} mm (got {given * 1e3:g} mm)",
+                             f"{zone.r0 * 1e3:.3f} mm with e = {e * 1e3:g} mm "
+                             f"(got {given * 1e3:g} mm)",
                              file=spec.path, key="limits.base_radius")
         return given, e, zone.r0, zone
     g0 = _geometry(spec, f.arm, 0.0)
@@ -202,7 +204,8 @@ def design(spec: CamSpec) -> CamDesign:
         face = (float(dense.s1.min()) - margin, float(dense.s1.max()) + margin)
     if spec.follower.contact is Contact.ROLLER:
         if roller > 0.4 * r0:
-            notes.append(("cam.note.roller_r0", {"rr_mm": roller * 1e3, "limit_mm": 0.4 * r0 * 1e3}))
+            notes.append(("cam.note.roller_r0",
+                          {"rr_mm": roller * 1e3, "limit_mm": 0.4 * r0 * 1e3}))
         if roller > 0.8 * rho_p.value:
             notes.append(("cam.note.roller_rho", {"rr_mm": roller * 1e3,
                                                   "limit_mm": 0.8 * rho_p.value * 1e3}))
@@ -212,7 +215,8 @@ def design(spec: CamSpec) -> CamDesign:
 
 
 def profile_table(table: Sample) -> list[dict[str, float]]:
-    """Rows of the profile table: φ, s, s′, s″, α, polar (ρ, θ) and Cartesian (x, y) of the profile."""
+    """Rows of the profile table: φ, s, s′, s″, α, polar (ρ, θ) and Cartesian (x, y) of the
+    profile."""
     rho, theta = polar(table.profile)
     rows = []
     for i in range(table.phi.size):

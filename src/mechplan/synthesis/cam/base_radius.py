@@ -2,13 +2,13 @@
 
 Translating follower (the courses' s′–s diagram): the follower's axis is the s axis, s′ is laid off
 across it in the sense of rotation, and the cam centre O = (e, −s0) of that diagram sees every point
-(s′, s) under a pressure angle tan α = (s′ − e)/(s + s0). |α| ≤ L is, for each point, two half-planes
-x − y·tan L ≥ s′ − s·tan L and −x − y·tan L ≥ −s′ − s·tan L; only the largest right-hand side of each
-family matters, so the admissible zone is the intersection of at most six half-planes (a convex
-region bounded by the rays at the allowable angles through the critical points) and the minimum r0
-is the point of that region nearest the origin. Oscillating follower: the least r0 whose exact
-pressure angles keep within the limits, by bisection on r0 for the given pivot distance and arm.
-Flat-faced follower: the least r0 with ρ = r0 + s + s″ ≥ ρ_min.
+(s′, s) under a pressure angle tan α = (s′ − e)/(s + s0). |α| ≤ L is, for each point, two
+half-planes x − y·tan L ≥ s′ − s·tan L and −x − y·tan L ≥ −s′ − s·tan L; only the largest right-hand
+side of each family matters, so the admissible zone is the intersection of at most six half-planes
+(a convex region bounded by the rays at the allowable angles through the critical points) and the
+minimum r0 is the point of that region nearest the origin. Oscillating follower: the least r0 whose
+exact pressure angles keep within the limits, by bisection on r0 for the given pivot distance and
+arm. Flat-faced follower: the least r0 with ρ = r0 + s + s″ ≥ ρ_min.
 """
 
 from __future__ import annotations

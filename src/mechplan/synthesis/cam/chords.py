@@ -18,7 +18,8 @@ from .profile import Geometry, sample
 
 def chord_deviation(curve: Callable[[np.ndarray], np.ndarray], phi: np.ndarray,
                     inner: int = 16) -> np.ndarray:
-    """Largest distance from the exact curve to each chord phi[i] → phi[i+1] (probed ``inner`` times)."""
+    """Largest distance from the exact curve to each chord phi[i] → phi[i+1] (probed ``inner``
+    times)."""
     pts = curve(phi)
     a, b = pts[:-1], pts[1:]
     t = (np.arange(1, inner + 1) / (inner + 1))
@@ -32,7 +33,8 @@ def chord_deviation(curve: Callable[[np.ndarray], np.ndarray], phi: np.ndarray,
 
 
 def profile_angles(g: Geometry, tol: float, dense: int = 36000) -> tuple[np.ndarray, float]:
-    """Cam angles (one turn, the first not repeated) of a closed polyline within ``tol`` of the profile.
+    """Cam angles (one turn, the first not repeated) of a closed polyline within ``tol`` of the
+    profile.
 
     Return the angles and the largest chord deviation measured.
     """

@@ -1,4 +1,5 @@
-"""Normalised motion laws y(x), y′(x), y″(x) on x ∈ [0, 1] with y(0) = 0, y(1) = 1, y′(0) = y′(1) = 0.
+"""Normalised motion laws y(x), y′(x), y″(x) on x ∈ [0, 1]
+with y(0) = 0, y(1) = 1, y′(0) = y′(1) = 0.
 
 Every law except 3-4-5 and the tables is a chain of acceleration segments a = a0 + b·sin(w·t + p),
 integrated in closed form and scaled so y(1) = 1; the uniform law's softened ends are such
@@ -115,7 +116,8 @@ def _table_s(values: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray,
     t0 = x - i * h              # distance from the left knot
     t1 = h - t0                 # distance to the right knot
     yl, yr, Ml, Mr = values[i], values[i + 1], M[i], M[i + 1]
-    y = (Ml * t1 ** 3 + Mr * t0 ** 3) / (6 * h) + (yl / h - Ml * h / 6) * t1 + (yr / h - Mr * h / 6) * t0
+    y = ((Ml * t1 ** 3 + Mr * t0 ** 3) / (6 * h) + (yl / h - Ml * h / 6) * t1
+         + (yr / h - Mr * h / 6) * t0)
     v = (-Ml * t1 ** 2 + Mr * t0 ** 2) / (2 * h) - (yl / h - Ml * h / 6) + (yr / h - Mr * h / 6)
     a = (Ml * t1 + Mr * t0) / h
     return y, v, a
@@ -143,8 +145,8 @@ def normalised(law: Law, x: np.ndarray, *, blend: float = 0.1, table: tuple[floa
                              f"integral is {y1[0]:.4g}); start with positive values", key=key)
         if abs(v1[0]) > 1e-6 * max(vmax, 1e-300):
             raise SceneError("the acceleration table must end at rest: its integral must be 0 "
-                             f"(got {v1[0] / y1[0]:.4g} of the mean velocity); balance the positive "
-                             "and negative parts", key=key)
+                             f"(got {v1[0] / y1[0]:.4g} of the mean velocity); "
+                             "balance the positive and negative parts", key=key)
         y, v, a = _table_a(values, x)
         c = 1.0 / float(y1[0])
         return y * c, v * c, a * c

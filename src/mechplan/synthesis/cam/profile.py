@@ -2,9 +2,9 @@
 
 Frames. The cam centre O is the origin. The computation is done for a counter-clockwise cam
 (σ = +1) and mirrored in the y axis for a clockwise one. Fixed frame, σ = +1: a translating follower
-moves along +y on the line x = e; an oscillating follower turns about the pivot A = (a, 0), its roller
-centre at B = A + l·(−cos γ, sin γ), γ = γ0 + ψ (ψ grows as B leaves O). Inversion turns the follower
-by −φ about O: a point p(φ) of the fixed frame is at P(φ) = R(−φ)·p(φ) on the cam, so
+moves along +y on the line x = e; an oscillating follower turns about the pivot A = (a, 0), its
+roller centre at B = A + l·(−cos γ, sin γ), γ = γ0 + ψ (ψ grows as B leaves O). Inversion turns the
+follower by −φ about O: a point p(φ) of the fixed frame is at P(φ) = R(−φ)·p(φ) on the cam, so
 P′ = R(−φ)(p′ − J p) and P″ = R(−φ)(p″ − 2J p′ − p), J the quarter turn. Radii of curvature are
 signed: positive where the curve is convex (bends toward O).
 """

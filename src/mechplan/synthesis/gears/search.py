@@ -4,9 +4,9 @@ Two enumerations give the same sets:
 
 - :func:`plain_sets` — the plain vectorised one: the whole grid of free tooth numbers (z1, z2, z3 of
   a two-row train, z4 from coaxiality), evaluated in blocks;
-- :func:`candidate_sets` — the search used: over the (z1, z2) grid only; for each pair the ratio band
-  is solved for z3 (i_14^h is monotonic in z3 once coaxiality fixes z4 = q·(z1 ± z2) ± z3), so only
-  the few z3 that can meet the ratio are generated.
+- :func:`candidate_sets` — the search used: over the (z1, z2) grid only; for each pair the ratio
+  band is solved for z3 (i_14^h is monotonic in z3 once coaxiality fixes z4 = q·(z1 ± z2) ± z3), so
+  only the few z3 that can meet the ratio are generated.
 """
 
 from __future__ import annotations
@@ -24,7 +24,8 @@ BLOCK = 8 * 1024 * 1024      # grid cells per block of the plain enumeration
 
 
 def _coaxial_pairs(spec: PlanetarySpec) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
-    """(z1, z2) grid of a two-row train with the integer q·S (S = z1 ± z2) and τ (z4 = qS + τ z3)."""
+    """(z1, z2) grid of a two-row train with the integer q·S (S = z1 ± z2) and τ
+    (z4 = qS + τ z3)."""
     lo, hi = spec.z_range
     zs = np.arange(lo, hi + 1, dtype=np.int64)
     z1, z2 = (a.ravel() for a in np.meshgrid(zs, zs, indexing="ij"))

@@ -1,8 +1,8 @@
 """Planetary trains: Willis ratios, coaxiality and the assembly, neighbour, undercut and
 internal-mesh conditions, all vectorised over arrays of tooth numbers.
 
-Tooth sets are arrays ``z`` of shape (n, g) in the order of ``Scheme.gear_names`` (single row: z1, z2,
-z3 = ring; two-row: z1, z2, z3, z4 with the planet block 2–3). Willis: with the carrier h held,
+Tooth sets are arrays ``z`` of shape (n, g) in the order of ``Scheme.gear_names`` (single row: z1,
+z2, z3 = ring; two-row: z1, z2, z3, z4 with the planet block 2–3). Willis: with the carrier h held,
 i_ab^h = (ω_a − ω_h)/(ω_b − ω_h) = ∏(∓ z_driven/z_driver), minus for an external mesh.
 """
 
@@ -62,7 +62,8 @@ def check_links(spec: PlanetarySpec) -> None:
                              f"{spec.scheme.value} (got {name!r})", key=f"planetary.{key}")
     if len({spec.fixed, spec.input, spec.output}) != 3:
         raise SceneError(f"fixed, input and output must be three different links of {links} (got "
-                         f"{spec.fixed!r}, {spec.input!r}, {spec.output!r})", key="planetary.output")
+                         f"{spec.fixed!r}, {spec.input!r}, {spec.output!r})",
+                         key="planetary.output")
 
 
 def module_ratio(spec: PlanetarySpec) -> float:
@@ -133,7 +134,8 @@ def neighbour_gap(spec: PlanetarySpec, z: np.ndarray, k: int | None = None) -> n
 
 
 def ring_differences(spec: PlanetarySpec, z: np.ndarray) -> np.ndarray:
-    """z_ring − z_planet of each internal mesh, shape (n, meshes) (inf where the mesh is external)."""
+    """z_ring − z_planet of each internal mesh, shape (n, meshes) (inf where the mesh is
+    external)."""
     z = np.asarray(z, dtype=np.int64)
     int1, int2 = spec.scheme.internal
     first = z[..., 0] - z[..., 1] if int1 else np.full(z.shape[:-1], np.iinfo(np.int64).max)
