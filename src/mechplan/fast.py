@@ -19,8 +19,13 @@ import numpy as np
 
 from .construct.estimate import DEFAULT_TOLERANCE
 from .construct.graph import Construction
-from .construct.kernel import (CANNOT_TRUST, OVER_TOLERANCE, Kernel, KernelUnavailable,
-                               compile_kernel)
+from .construct.kernel import (
+    CANNOT_TRUST,
+    OVER_TOLERANCE,
+    Kernel,
+    KernelUnavailable,
+    compile_kernel,
+)
 from .model.mechanism import GROUND
 from .scene.spec import Scene
 
