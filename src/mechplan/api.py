@@ -373,7 +373,9 @@ class Mechanism:
         if phi.shape[0] > 1000:
             from .limits import ensure_within_budget
 
-            ensure_within_budget(int(phi.shape[0]), len(c.steps), file=self.scene.path)
+            # the fused path keeps only the asked results (a point 16 bytes a position, a scalar
+            # 8, each counted as a step); should it fall back, the numpy path checks its own need
+            ensure_within_budget(int(phi.shape[0]), len(prepared.keys), file=self.scene.path)
         result = self._fast.evaluate(prepared, phi)
         if result is None:
             return None

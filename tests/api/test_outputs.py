@@ -72,3 +72,18 @@ def test_flags_are_those_of_the_asked_outputs(fast):
     few = m.solve(phi_deg=near, plans=KINEMATIC, links=("3",), fast=fast)
     want = {(k, q, s) for k, q, s, _ in full.flags if s == "3"}
     assert want and {(k, q, s) for k, q, s, _ in few.flags} == want
+
+
+@pytest.mark.skipif(not numba_available(), reason="the fast extra (numba) is not installed")
+def test_fused_memory_budget_counts_the_asked_results_only(monkeypatch):
+    m = _template("v_engine")
+    n = 20_000
+    few = {"points": ("B",), "links": ()}
+    # B's r, v, a: 3 results × 48 bytes × n; all steps of the construction need far more
+    monkeypatch.setenv("MECHPLAN_MEMORY_BUDGET", str(3 * 48 * n + 1))
+    sol = m.solve(positions=n, plans=KINEMATIC, fast=True, **few)
+    assert sol.r["B"].shape == (n, 2)
+    with pytest.raises(mechplan.MechplanError, match="MECHPLAN_MEMORY_BUDGET"):
+        m.solve(positions=n, plans=KINEMATIC, fast=False, **few)
+    with pytest.raises(mechplan.MechplanError, match="MECHPLAN_MEMORY_BUDGET"):
+        m.solve(positions=n, plans=KINEMATIC, fast=True)
