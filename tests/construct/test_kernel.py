@@ -94,6 +94,7 @@ def test_status_bits_say_what_the_stored_estimates_say():
     _, c = build(scene, KINEMATIC)
     targets = targets_for(scene, c, KINEMATIC)
     kernel = compile_kernel(c, targets, jit=False)
+    seen = 0
     for deg, tol in (([200.0], 1e-6), ([200.0, 270.1], 1e-6), ([200.0, 270.0], 1e-6),
                      ([200.0], 1e-18)):
         phi = np.radians(deg)
@@ -103,3 +104,5 @@ def test_status_bits_say_what_the_stored_estimates_say():
         assert bool(status & CANNOT_TRUST) == bool(bad.any() or not (rel < 1.0).all()), deg
         assert bool(status & OVER_TOLERANCE) == bool((rel > tol).any()), (deg, tol)
         assert block.shape == (len(deg), kernel.width)
+        seen |= status
+    assert seen == CANNOT_TRUST | OVER_TOLERANCE          # both bits were exercised
