@@ -14,26 +14,18 @@ evaluated by the numpy path.
 
 from __future__ import annotations
 
-import hashlib
-import importlib.util
 import math
-import os
-import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from .estimate import ROUNDINGS_PER_STEP, UNBOUNDED, length_scale, plan_sizes, scale_of
 from .graph import Construction
+from .kernel_load import KernelUnavailable, load
 from .step import Kind, Op, Step
 from .validity import MAX_CONDITION
-
-
-class KernelUnavailable(RuntimeError):
-    """The construction (or this installation) has no compiled kernel; use the numpy path."""
 
 
 def _f(x: Any) -> str:
@@ -465,49 +457,15 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
     return head + "\n".join(body) + "\n"
 
 
-def _cache_dir() -> Path:
-    base = os.environ.get("MECHPLAN_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"),
-        "mechplan")
-    path = Path(base) / "kernels"
-    path.mkdir(parents=True, exist_ok=True)
-    return path
-
-
-def _load(source: str, jit: bool) -> tuple[Callable[..., int], bool]:
-    digest = hashlib.sha256(source.encode()).hexdigest()[:24]
-    name = f"mechplan_kernel_{digest}"
-    if not jit:
-        namespace: dict[str, Any] = {}
-        exec(compile(source, name, "exec"), namespace)   # noqa: S102 - our own generated code
-        return namespace["kernel"], False
-    if importlib.util.find_spec("numba") is None:
-        raise KernelUnavailable("numba is not installed (pip install mechplan[fast])") from None
-    path = _cache_dir() / f"{name}.py"
-    if not path.exists():
-        tmp = path.with_suffix(f".{os.getpid()}.tmp")
-        tmp.write_text(source.replace("def _div", "@numba.njit(cache=True, error_model='numpy')\n"
-                                      "def _div").replace(
-            "def _cdiv", "@numba.njit(cache=True, error_model='numpy')\ndef _cdiv").replace(
-            "def _hyp", "@numba.njit(cache=True, error_model='numpy')\ndef _hyp").replace(
-            "def kernel", "@numba.njit(cache=True, error_model='numpy')\ndef kernel").replace(
-            "import math\n", "import math\nimport numba\n", 1), encoding="utf-8")
-        os.replace(tmp, path)
-    spec = importlib.util.spec_from_file_location(name, path)
-    if spec is None or spec.loader is None:
-        raise KernelUnavailable(f"cannot load the kernel module {path}")
-    module = sys.modules.get(name) or importlib.util.module_from_spec(spec)
-    if name not in sys.modules:
-        spec.loader.exec_module(module)
-        sys.modules[name] = module
-    return module.kernel, True
-
-
 def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) -> Kernel:
     """Compile the kernel of ``targets``; ``jit=False`` runs the generated code as plain Python."""
     targets = tuple(targets)
     source = kernel_source(c, targets)
-    function, compiled = _load(source, jit)
+    function, compiled = load(source, jit)
     kinds = tuple(c[sid].kind for sid in targets)
     columns, width = _columns(kinds)
     return Kernel(targets, kinds, columns, width, source, function, compiled)
+
+
+__all__ = ["CANNOT_TRUST", "OVER_TOLERANCE", "Kernel", "KernelUnavailable", "compile_kernel",
+           "kernel_source"]
