@@ -272,7 +272,7 @@ class Mechanism:
             (default, neither given: all of them; once one is given, the other defaults to
             none). Only the steps they need are evaluated, and only they are checked and flagged.
         fast : bool, optional
-            Use the fused kernel (JIT-compiled with numba, built once per set of plans) for
+            Use the fused kernel (JIT-compiled with numba, built once per plans and outputs) for
             kinematic plans. Default: when numba is installed. Same values (to 1e-15 of each
             plan's scale), estimates and flags as the numpy path.
 
