@@ -3,8 +3,11 @@
 Run from a clone with the bench extra (``pip install -e ".[bench,fast]"``):
 ``python benchmarks/kernel.py [--quick]``; writes ``benchmarks/KERNEL_RESULTS.md``. All methods are
 timed side by side in one process (best of several runs; this machine is shared and noisy, so read
-the ratios, not the absolute times). Every method computes positions, velocities and accelerations
-of the same points and ω, ε of the same links.
+the ratios, not the absolute times). Like with like: the public path is asked for the case's points
+and links only (``solve(points=..., links=...)``, the ``CASES`` of ``mechplan_bench/config.py``):
+r, v, a of those points and angle, ω, ε of those links — what the closed form and pylinkage return
+for them. The "all" columns solve every point and link of the template, as ``solve()`` does by
+default.
 """
 
 from __future__ import annotations
@@ -32,6 +35,7 @@ from mechplan_bench.peers import installed, pylinkage_runner  # noqa: E402
 
 import mechplan  # noqa: E402
 from mechplan.fast import numba_available  # noqa: E402
+from mechplan.limits import LimitError  # noqa: E402
 
 KINEMATIC = ("position", "velocity", "acceleration")
 
@@ -69,17 +73,26 @@ def main() -> None:
              f"Machine: {platform.machine()}, {os.cpu_count()} cores (shared), Python "
              f"{platform.python_version()}, numpy {np.__version__}. Times per position in ns "
              "(N = 1: per call in µs), best of repeated runs in one process.", "",
-             "| mechanism | N | public numpy | public fused | closed form (numpy) | pylinkage+numba "
-             "| fused / closed form | fused / pylinkage | numpy / closed form |",
-             "|---|---|---|---|---|---|---|---|---|"]
+             "Like with like: numpy and fused are `Mechanism.solve(phi_deg, plans=kinematics, "
+             "points=case.points, links=case.links)` — r, v, a of the case's points and angle, ω, ε "
+             "of its links, as the closed form and pylinkage compute them (points and links: "
+             "`benchmarks/mechplan_bench/config.py` CASES). The \"all\" columns are the default "
+             "`solve()`: every point and link of the template.", "",
+             "| mechanism | N | public numpy | public fused | public numpy (all) | "
+             "public fused (all) | closed form (numpy) | pylinkage+numba | fused / closed form "
+             "| fused / pylinkage | numpy / closed form |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
     compile_rows = []
     memory_rows = []
+    over_budget: list[str] = []
     for name in ("four_bar", "slider_crank", "v_engine"):
-        model = Model.load(CASES[name])
+        case = CASES[name]
+        model = Model.load(case)
         m = mechplan.load(ROOT / "templates" / f"{name}.toml")
         t0 = time.perf_counter()
         m.solve(phi_deg=[10.0], plans=KINEMATIC, fast=True)          # compile (or load the cache)
         first = time.perf_counter() - t0
+        m.solve(phi_deg=[10.0], plans=KINEMATIC, fast=True, points=case.points, links=case.links)
         m2 = mechplan.load(ROOT / "templates" / f"{name}.toml")
         t0 = time.perf_counter()
         m2.solve(phi_deg=[10.0], plans=KINEMATIC, fast=True)         # from the on-disk cache
@@ -88,31 +101,45 @@ def main() -> None:
         for n in ns:
             phi = model.phi(n)
             phi_deg = np.degrees(phi)
+            few = {"points": case.points, "links": case.links}
             runs: dict[str, Callable[[], object] | None] = {
-                "numpy": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=False),
-                "fused": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=True),
+                "numpy": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=False, **few),
+                "fused": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=True, **few),
+                "numpy_all": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=False),
+                "fused_all": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=True),
                 "closed": closed_form(model, phi),
                 "pylinkage": pylinkage_runner(model, phi) if installed("pylinkage") and n > 1
                 else None,
             }
+            for k, r in list(runs.items()):
+                try:
+                    if r is not None:
+                        r()
+                except LimitError:            # over the default memory budget (2 GB): not run
+                    runs[k] = None
+                    over_budget.append(f"{name}, N = {n:,}: public {k.replace('_', ' (')}"
+                                       f"{')' if '_' in k else ''}")
             t = {k: (best(r, budget) if r is not None else math.nan) for k, r in runs.items()}
             scale = 1e6 if n == 1 else 1e9 / n
             unit = " µs" if n == 1 else ""
 
             def cell(x: float) -> str:
-                return "—" if math.isnan(x) else f"{x * scale:.1f}{unit}" if n == 1 else f"{x * scale:.0f}"
+                if math.isnan(x):
+                    return "—"
+                return f"{x * scale:.1f}{unit}" if n == 1 else f"{x * scale:.0f}"
 
             def ratio(a: float, b: float) -> str:
                 return "—" if math.isnan(a) or math.isnan(b) else f"{a / b:.2f}×"
             lines.append(f"| {name} | {n:,} | {cell(t['numpy'])} | {cell(t['fused'])} | "
+                         f"{cell(t['numpy_all'])} | {cell(t['fused_all'])} | "
                          f"{cell(t['closed'])} | {cell(t['pylinkage'])} | "
                          f"{ratio(t['fused'], t['closed'])} | {ratio(t['fused'], t['pylinkage'])} "
                          f"| {ratio(t['numpy'], t['closed'])} |")
             print(lines[-1], flush=True)
             if n == ns[-1]:
-                memory_rows.append(
-                    f"| {name} | {n:,} | {peak_mib(runs['fused']):.0f} MiB | "
-                    f"{peak_mib(runs['numpy']):.0f} MiB |")
+                peaks = " | ".join("—" if runs[k] is None else f"{peak_mib(runs[k]):.0f} MiB"
+                                   for k in ("fused", "numpy", "fused_all", "numpy_all"))
+                memory_rows.append(f"| {name} | {n:,} | {peaks} |")
     lines += ["", "## Compile time of the fused kernel", "",
               "| mechanism | first call (JIT compile) | new process, same mechanism (on-disk cache) |",
               "|---|---|---|", *compile_rows,
@@ -121,9 +148,15 @@ def main() -> None:
               "processes load it instead of compiling; the table's second column is a fresh "
               "`Mechanism` in the same process reading that cache.",
               "", "## Peak memory at the largest N (tracemalloc)", "",
-              "| mechanism | N | public fused | public numpy |", "|---|---|---|---|", *memory_rows,
-              "", "The fused path allocates only the requested outputs (points (N, 2), links (N,)) "
-              "and their (N, outputs) estimates; the numpy path keeps every step's values."]
+              "| mechanism | N | public fused | public numpy | public fused (all) | "
+              "public numpy (all) |", "|---|---|---|---|---|---|", *memory_rows,
+              "", "The fused path allocates only the requested outputs: one (N, width) block "
+              "(two columns a point, one a scalar) and the angles; the estimates are checked in the "
+              "kernel's loop and stored only when some result is flagged. The numpy path keeps "
+              "the values of every step the requested outputs need, and their estimates."]
+    if over_budget:
+        lines += ["", "Not run (—): over the default memory budget of 2 GB (`MECHPLAN_MEMORY_BUDGET`"
+                  "), refused before any work: " + "; ".join(over_budget) + "."]
     out = ROOT / "benchmarks" / "KERNEL_RESULTS.md"
     out.write_text("\n".join(lines) + "\n", encoding="utf-8")
     print(f"written {out}")

@@ -70,6 +70,25 @@ class ByName(Mapping[str, V]):
         return f"<{self._what} of {', '.join(self._values)}>"
 
 
+class _Columns(ByName[np.ndarray]):
+    """A :class:`ByName` over the columns of one read-only block: views made on first access."""
+
+    def __init__(self, block: np.ndarray, columns: dict[str, slice | int], what: str) -> None:
+        super().__init__(columns, what)    # type: ignore[arg-type]
+        self._block = block
+        self._views: dict[str, np.ndarray] = {}
+
+    def __getitem__(self, name: object) -> np.ndarray:
+        key = str(name)
+        view = self._views.get(key)
+        if view is None:
+            col = self._values.get(key)
+            if col is None:
+                return super().__getitem__(key)      # raises the KeyError naming the known ones
+            view = self._views[key] = self._block[:, col]
+        return view
+
+
 @dataclass(frozen=True, slots=True)
 class InertiaLoad:
     """Inertia of a link over the positions: force ``Q`` (N, 2) in N, moment ``M_q`` (N,) in N·m."""
@@ -175,6 +194,8 @@ class Mechanism:
         self.scene = scene
         self._built: dict[tuple[str, ...], tuple[Structure, Construction]] = {}
         self._fast = FastPath(scene)
+        self._chosen: dict[object, tuple[str, ...]] = {}
+        self._asked: dict[tuple[object, object], tuple[tuple[str, ...] | None, ...]] = {}
 
     def __repr__(self) -> str:
         return f"<mechplan.Mechanism {self.scene.title!r} from {self.scene.path}>"
@@ -202,6 +223,19 @@ class Mechanism:
         return self._build(self._plans(plans))[1]
 
     def _plans(self, plans: Sequence[str] | None) -> tuple[str, ...]:
+        key = tuple(plans) if plans is not None and not isinstance(plans, str) else plans
+        try:
+            return self._chosen[key]
+        except (KeyError, TypeError):
+            pass
+        out = self._check_plans(plans)
+        try:
+            self._chosen[key] = out
+        except TypeError:
+            pass
+        return out
+
+    def _check_plans(self, plans: Sequence[str] | None) -> tuple[str, ...]:
         from .scene.spec import PLANS
 
         chosen = tuple(plans) if plans is not None else self.scene.plans
@@ -220,6 +254,7 @@ class Mechanism:
 
     def solve(self, phi_deg: float | Sequence[float] | np.ndarray | None = None, *,
               positions: int | None = None, plans: Sequence[str] | None = None,
+              points: Sequence[str] | None = None, links: Sequence[str] | None = None,
               fast: bool | None = None) -> Solution:
         """Solve the mechanism at crank angles.
 
@@ -232,8 +267,12 @@ class Mechanism:
         plans : sequence of str, optional
             Any of ``"position"``, ``"velocity"``, ``"acceleration"``, ``"force"`` (default:
             the scene's ``[analysis] plans``, with ``"force"`` when it has masses or loads).
+        points, links : sequence of str, optional
+            Compute r, v, a of these points only and angle, ω, ε of these moving links only
+            (default, neither given: all of them; once one is given, the other defaults to
+            none). Only the steps they need are evaluated, and only they are checked and flagged.
         fast : bool, optional
-            Use the fused kernel (JIT-compiled with numba, built once per set of plans) for
+            Use the fused kernel (JIT-compiled with numba, built once per plans and outputs) for
             kinematic plans. Default: when numba is installed. Same values (to 1e-15 of each
             plan's scale), estimates and flags as the numpy path.
 
@@ -256,32 +295,77 @@ class Mechanism:
                                       or not isinstance(positions, (int, np.integer))
                                       or positions < 1):
             raise MechplanError(f"positions must be a whole number ≥ 1 (got {positions!r})")
-        at: list[float] | None = None
+        at: np.ndarray | None = None
         if phi_deg is not None:
-            arr = np.atleast_1d(np.asarray(phi_deg, dtype=float))
-            if arr.ndim != 1 or arr.size == 0 or not np.all(np.isfinite(arr)):
+            arr = np.asarray(phi_deg, dtype=float)
+            if arr.ndim == 0:
+                arr = arr.reshape(1)
+            if arr.ndim != 1 or arr.size == 0 or not np.isfinite(arr).all():
                 raise MechplanError(f"phi_deg must be finite crank angles in degrees "
                                     f"(got {phi_deg!r})")
             at = arr
         chosen = self._plans(plans)
+        asked = self._outputs(points, links)
         if fast is not False and "force" not in chosen:
-            quick = self._solve_fast(chosen, at, positions)
+            quick = self._solve_fast(chosen, at, positions, asked)
             if quick is not None:
                 return quick
         elif fast and "force" in chosen:
             raise MechplanError("fast=True computes kinematics only; the force plan runs on the "
                                 "numpy path (leave fast unset)")
         scene = dataclasses.replace(self.scene, points_of_interest=())
+        built = self._build(chosen)
+        wanted = None
+        if asked != (None, None):
+            from .fast import targets
+
+            wanted = list(dict.fromkeys(targets(self.scene, built[1], chosen, *asked).values()))
+            if "force" in chosen:
+                wanted += built[1].force_results()
         solved = solve(scene, at_deg=at, count=int(positions) if positions else None,
-                       plans=chosen, built=self._build(chosen), scales=False)
-        return _solution(solved)
+                       plans=chosen, built=built, scales=False, targets=wanted)
+        return _solution(solved, *asked)
+
+    def _outputs(self, points: Sequence[str] | None, links: Sequence[str] | None
+                 ) -> tuple[tuple[str, ...] | None, tuple[str, ...] | None]:
+        """The points and links asked for, checked (None: all of them)."""
+        if points is None and links is None:
+            return None, None
+        points = () if points is None else points
+        links = () if links is None else links
+        key = (None if points is None else tuple(points), None if links is None else tuple(links))
+        if key in self._asked:
+            return key                                       # type: ignore[return-value]
+        for what, asked, known in (("points", points, self.points),
+                                   ("links", links, self.links)):
+            if asked is None:
+                continue
+            if isinstance(asked, str):
+                raise MechplanError(f"{what} must be a sequence of names (got {asked!r}); "
+                                    f"e.g. {what}=({asked!r},)")
+            unknown = [str(x) for x in asked if str(x) not in known]
+            if unknown:
+                raise MechplanError(f"{what} must be among {', '.join(known)} "
+                                    f"(got {', '.join(map(repr, unknown))})")
+        key = (None if points is None else tuple(map(str, points)),
+               None if links is None else tuple(map(str, links)))
+        if key[0] == () and key[1] == ():
+            raise MechplanError("points and links must not both be empty (got points=() and "
+                                "links=()); ask for at least one point or link")
+        self._asked[key] = key                               # type: ignore[assignment]
+        return key
 
 
-    def _solve_fast(self, chosen: tuple[str, ...], at: list[float] | None,
-                    positions: int | None) -> Solution | None:
+    def _solve_fast(self, chosen: tuple[str, ...], at: np.ndarray | None,
+                    positions: int | None,
+                    asked: tuple[tuple[str, ...] | None, tuple[str, ...] | None]
+                    ) -> Solution | None:
         c = self._build(chosen)[1]
+        prepared = self._fast.prepare(c, chosen, *asked)
+        if prepared is None:
+            return None
         if at is not None:
-            phi = np.radians(np.asarray(at, dtype=float))
+            phi = np.radians(at)
         else:
             from .solve import crank_positions
 
@@ -289,31 +373,33 @@ class Mechanism:
         if phi.shape[0] > 1000:
             from .limits import ensure_within_budget
 
-            ensure_within_budget(int(phi.shape[0]), len(c.steps), file=self.scene.path)
-        result = self._fast.evaluate(c, chosen, phi)
+            # the fused path keeps only the asked results (a point 16 bytes a position, a scalar
+            # 8, each counted as a step); should it fall back, the numpy path checks its own need
+            ensure_within_budget(int(phi.shape[0]), len(prepared.keys), file=self.scene.path)
+        result = self._fast.evaluate(prepared, phi)
         if result is None:
             return None
-        by_q: dict[str, dict[str, np.ndarray]] = {q: {} for q in
-                                                   ("r", "v", "a", "angle", "omega", "epsilon")}
-        for (q, subject), value in result.values.items():
-            by_q[q][subject] = value
+        block, cols = result.block, result.columns
         phi_deg = np.degrees(phi)
         phi_deg.flags.writeable = False
-        return Solution(phi_deg, ByName(by_q["r"], "position"),
-                        ByName(by_q["v"], "velocity"), ByName(by_q["a"], "acceleration"),
-                        ByName(by_q["angle"], "angle"), ByName(by_q["omega"], "omega"),
-                        ByName(by_q["epsilon"], "epsilon"), None, result.flagged)
+        return Solution(phi_deg, _Columns(block, cols["r"], "position"),
+                        _Columns(block, cols["v"], "velocity"),
+                        _Columns(block, cols["a"], "acceleration"),
+                        _Columns(block, cols["angle"], "angle"),
+                        _Columns(block, cols["omega"], "omega"),
+                        _Columns(block, cols["epsilon"], "epsilon"), None, result.flagged)
 
 
-def _solution(s: _Solved) -> Solution:
+def _solution(s: _Solved, only_points: tuple[str, ...] | None = None,
+              only_links: tuple[str, ...] | None = None) -> Solution:
     c, ev = s.construction, s.ev
     r: dict[str, np.ndarray] = {}
     v: dict[str, np.ndarray] = {}
     a: dict[str, np.ndarray] = {}
-    from .model.mechanism import GROUND
+    from .fast import all_points
 
-    points = dict.fromkeys(p for lk in s.scene.mechanism.links.values() if lk.id != GROUND
-                           for p in lk.points)
+    points = all_points(s.scene) if only_points is None else only_points
+    links = s.scene.mechanism.moving if only_links is None else only_links
     for p in points:
         _take(r, p, ev, c.position)
         if "velocity" in s.plans and c.has_result("v", p):
@@ -323,7 +409,7 @@ def _solution(s: _Solved) -> Solution:
     angle: dict[str, np.ndarray] = {}
     omega: dict[str, np.ndarray] = {}
     epsilon: dict[str, np.ndarray] = {}
-    for link in s.scene.mechanism.moving:
+    for link in links:
         for quantity, out, plan, accessor in (("angle", angle, "position", c.link_angle),
                                               ("omega", omega, "velocity", c.omega),
                                               ("epsilon", epsilon, "acceleration", c.epsilon)):

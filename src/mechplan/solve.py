@@ -138,7 +138,7 @@ def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
           plans: tuple[str, ...] | None = None, loading: Any = None,
           max_condition: float = MAX_CONDITION, tolerance: float = DEFAULT_TOLERANCE, *,
           built: tuple[Structure, Construction] | None = None,
-          scales: bool = True) -> Solution:
+          scales: bool = True, targets: Sequence[str] | None = None) -> Solution:
     """Solve a scene at the positions it (or the caller) asks for.
 
     Positions asked for by their angle (``at_deg``, or the scene's list of angles) must be
@@ -146,7 +146,9 @@ def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
     count) returns every position it can build and lists the others in ``Solution.failures``.
     Results whose estimated relative error exceeds ``tolerance`` are listed in ``Solution.flags``.
     ``built`` reuses a structure and construction from :func:`build` (same scene, plans and
-    loading); ``scales=False`` chooses no drawing scale factors (nothing will be drawn).
+    loading); ``scales=False`` chooses no drawing scale factors (nothing will be drawn);
+    ``targets`` (step ids) replaces the results the scene asks for: only their ancestors are
+    evaluated, checked and flagged.
     """
     plans = plans or scene.plans
     structure, c = built or build(scene, plans, loading)
@@ -156,7 +158,7 @@ def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
     else:
         phi = crank_positions(scene, c, count)
     individually = requested or (count is None and bool(scene.positions.angles))
-    targets = targets_for(scene, c, plans)
+    targets = list(targets) if targets is not None else targets_for(scene, c, plans)
     ensure_within_budget(int(phi.shape[0]), len(c.ancestors(targets)), file=scene.path,
                          key=None if requested or count else "positions.count")
     ev = c.evaluate(phi)

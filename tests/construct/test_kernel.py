@@ -86,3 +86,24 @@ def test_force_steps_have_no_kernel():
     _, c = build(scene, (*KINEMATIC, "force"))
     with pytest.raises(KernelUnavailable):
         compile_kernel(c, [c.results["M_b"]], jit=False)
+
+
+def test_status_bits_say_what_the_stored_estimates_say():
+    from mechplan.construct.kernel import CANNOT_TRUST, OVER_TOLERANCE
+
+    scene = parse_scene(SLOTTED_THROUGH_PIVOT, "pivot.toml")
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    kernel = compile_kernel(c, targets, jit=False)
+    seen = 0
+    for deg, tol in (([200.0], 1e-6), ([200.0, 270.1], 1e-6), ([200.0, 270.0], 1e-6),
+                     ([200.0], 1e-18)):
+        phi = np.radians(deg)
+        _, _, _, quiet = kernel.run(phi, tol, store=False)
+        block, rel, bad, status = kernel.run(phi, tol, store=True)
+        assert quiet == status
+        assert bool(status & CANNOT_TRUST) == bool(bad.any() or not (rel < 1.0).all()), deg
+        assert bool(status & OVER_TOLERANCE) == bool((rel > tol).any()), (deg, tol)
+        assert block.shape == (len(deg), kernel.width)
+        seen |= status
+    assert seen == CANNOT_TRUST | OVER_TOLERANCE          # both bits were exercised

@@ -16,6 +16,7 @@ meaningful relative error.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
@@ -40,13 +41,25 @@ class ErrorEstimate:
 
     relative_of: dict[str, Array] = field(default_factory=dict)
     scale: dict[str, float] = field(default_factory=dict)
-    #: max(1, |value| / scale) of the results: a result larger than its plan (a slider running
-    #: far out, an acceleration blowing up near a toggle) is measured against its own size
-    divisor: dict[str, Array] = field(default_factory=dict)
+    #: the values of the results, each measured against the larger of its plan's scale and its own
+    #: size (a slider running far out, an acceleration blowing up near a toggle): see divisor()
+    results: dict[str, Array] = field(default_factory=dict)
+    dtype: type = np.float32
+    _divisor: dict[str, Array] = field(default_factory=dict, repr=False)    # memo of divisor()
     _relative: dict[str, Array] = field(default_factory=dict, repr=False)   # memo of relative()
+    _bound: dict[str, float] = field(default_factory=dict, repr=False)      # of may_exceed()
 
     def __contains__(self, step_id: str) -> bool:
         return step_id in self.relative_of
+
+    def divisor(self, step_id: str) -> Array | None:
+        """max(1, |value| / scale) of a result at every position (None: not a result)."""
+        if step_id not in self.results:
+            return None
+        if step_id not in self._divisor:
+            self._divisor[step_id] = _magnitude_divisor(self.results[step_id],
+                                                        self.scale[step_id], self.dtype)
+        return self._divisor[step_id]
 
     def relative(self, step_id: str) -> Array:
         """Estimated relative error at every position (inf where it cannot be bounded).
@@ -56,13 +69,30 @@ class ErrorEstimate:
         if step_id in self._relative:
             return self._relative[step_id]
         rel = self.relative_of[step_id].astype(float)
-        if step_id in self.divisor:
+        divisor = self.divisor(step_id)
+        if divisor is not None:
             with np.errstate(invalid="ignore", divide="ignore"):
-                rel = rel / self.divisor[step_id]
+                rel = rel / divisor
         rel[np.isnan(rel)] = np.inf
         rel.flags.writeable = False
         self._relative[step_id] = rel
         return rel
+
+    def may_exceed(self, step_id: str, threshold: float) -> bool:
+        """Whether :meth:`relative` can exceed ``threshold`` at some position (False: it cannot).
+
+        Cheap: the divisor is at least 1 (or NaN, from a NaN value), so the relative error is at
+        most the bound against the plan's scale alone, and is computed only when that can exceed.
+        """
+        bound = self._bound.get(step_id)
+        if bound is None:
+            rel = self.relative_of[step_id]
+            bound = float(rel.max()) if rel.size else 0.0      # NaN when some bound is NaN
+            value = self.results.get(step_id)
+            if value is not None and value.size and not math.isfinite(float(value.sum())):
+                bound = math.inf      # a NaN value (or an infinite one): look position by position
+            self._bound[step_id] = bound
+        return not bound <= threshold
 
     def absolute(self, step_id: str) -> Array:
         """Estimated absolute error of a step in its own units (m, m/s, rad/s, N …)."""
@@ -166,7 +196,7 @@ class _Propagator:
         return self._distances[key]
 
     def run(self, ids: Iterable[str], targets: frozenset[str]) -> ErrorEstimate:
-        out = ErrorEstimate()
+        out = ErrorEstimate(dtype=self.dtype)
         n, u = self.ev.n, self.dtype(self.u)
         for sid in ids:
             if sid not in self.ev.values:
@@ -191,7 +221,7 @@ class _Propagator:
             out.relative_of[sid] = rel
             out.scale[sid] = scale
             if sid in targets and scale > 0.0:
-                out.divisor[sid] = _magnitude_divisor(self.ev.values[sid], scale, self.dtype)
+                out.results[sid] = self.ev.values[sid]
         return out
 
 

@@ -14,26 +14,18 @@ evaluated by the numpy path.
 
 from __future__ import annotations
 
-import hashlib
-import importlib.util
 import math
-import os
-import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from .estimate import ROUNDINGS_PER_STEP, length_scale, plan_sizes, scale_of
+from .estimate import ROUNDINGS_PER_STEP, UNBOUNDED, length_scale, plan_sizes, scale_of
 from .graph import Construction
+from .kernel_load import KernelUnavailable, load
 from .step import Kind, Op, Step
 from .validity import MAX_CONDITION
-
-
-class KernelUnavailable(RuntimeError):
-    """The construction (or this installation) has no compiled kernel; use the numpy path."""
 
 
 def _f(x: Any) -> str:
@@ -54,6 +46,7 @@ class _Gen:
         self.idx: dict[str, int] = {}
         self.lines: list[str] = []
         self.length = length
+        self.distances: dict[tuple[str, str], str] = {}
 
     def name(self, sid: str) -> str:
         return f"v{self.idx[sid]}"
@@ -68,6 +61,21 @@ class _Gen:
 
     def err(self, sid: str) -> str:
         return f"e{self.idx[sid]}"
+
+    def distance(self, a: str, b: str) -> str:
+        """|b − a| over the mechanism's length, computed once per pair of points.
+
+        An error estimate, not a value: like the numpy path's estimates it is √(dx² + dy²),
+        which needs no call of hypot.
+        """
+        key = (a, b) if a < b else (b, a)
+        name = self.distances.get(key)
+        if name is None:
+            name = self.distances[key] = f"_l{len(self.distances)}"
+            (ax, ay), (bx, by) = self.pt(a), self.pt(b)
+            self.emit(f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
+                      f"{name} = math.sqrt(_ex * _ex + _ey * _ey) / {_f(self.length)}")
+        return name
 
     def emit(self, *lines: str) -> None:
         self.lines.extend(lines)
@@ -88,9 +96,7 @@ class _Gen:
                 self.emit(f"{e} = max({e}, {self.err(i)} + U)")
             amplify = _AMPLIFY.get(s.op)
             if amplify is not None:
-                a, b = amplify(s)
-                (ax, ay), (bx, by) = self.pt(a), self.pt(b)
-                self.emit(f"{e} = _div({e}, _hyp({bx} - {ax}, {by} - {ay}) / {_f(self.length)})")
+                self.emit(f"{e} = _div({e}, {self.distance(*amplify(s))})")
             if sine is not None:
                 self.emit(f"{e} = _div({e}, {sine})")
 
@@ -354,35 +360,62 @@ def _hyp(x, y):
 
 @dataclass(frozen=True)
 class Kernel:
-    """A compiled construction: ``kernel(phi)`` → values and relative error estimates of the outputs."""
+    """A compiled construction: ``kernel(phi)`` → values and relative error estimates of the outputs.
+
+    The outputs are the columns of one (N, width) block: a point takes two (x, y), a scalar one
+    (``columns[j]`` is target j's slice). While it loops, the kernel also finds whether any position
+    cannot be built or has an estimate ≥ 1 (status bit 1, :data:`CANNOT_TRUST`) and whether any
+    estimate exceeds the tolerance (status bit 2, :data:`OVER_TOLERANCE`), so the estimate matrix
+    need only be stored when a caller asks for it.
+    """
 
     targets: tuple[str, ...]
     kinds: tuple[Kind, ...]
+    columns: tuple[slice | int, ...]
+    width: int
     source: str
-    function: Callable[..., None]
+    function: Callable[..., int]
     compiled: bool
 
-    def run(self, phi: np.ndarray) -> tuple[list[np.ndarray], np.ndarray, np.ndarray]:
-        """Evaluate at φ (rad): the outputs in target order, the (N, targets) relative estimates
-        and the cannot-build mask."""
-        phi = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
+    def run(self, phi: np.ndarray, tolerance: float = math.inf, store: bool = True
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+        """Evaluate at φ (rad, float64, 1-D): the (N, width) block of outputs, the (N, targets)
+        relative estimates (stored only when ``store``; else an unused (1, targets) array), the
+        cannot-build mask and the status bits."""
         n = phi.shape[0]
-        outs = [np.empty((n, 2)) if k is Kind.POINT else np.empty(n) for k in self.kinds]
-        rel = np.empty((n, len(self.targets)))
-        bad = np.zeros(n, dtype=np.bool_)
-        self.function(phi, rel, bad, *outs)
-        return outs, rel, bad
+        block = np.empty((n, self.width))
+        rel = np.empty((n if store else 1, len(self.targets)))
+        bad = np.empty(n, dtype=np.bool_)
+        status = self.function(phi, tolerance, block, rel, bad, store)
+        return block, rel, bad, int(status)
 
     def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
                                                    np.ndarray]:
         """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build mask)."""
-        outs, rel, bad = self.run(phi)
-        values = {}
-        for sid, out in zip(self.targets, outs):
-            out.flags.writeable = False
-            values[sid] = out
+        phi = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
+        block, rel, bad, _ = self.run(phi)
+        block.flags.writeable = False
+        values = {sid: block[:, col] for sid, col in zip(self.targets, self.columns)}
         estimates = {sid: rel[:, j] for j, sid in enumerate(self.targets)}
         return values, estimates, bad
+
+
+#: status bits of a kernel run
+CANNOT_TRUST = 1
+OVER_TOLERANCE = 2
+
+
+def _columns(kinds: Sequence[Kind]) -> tuple[tuple[slice | int, ...], int]:
+    cols: list[slice | int] = []
+    at = 0
+    for k in kinds:
+        if k is Kind.POINT:
+            cols.append(slice(at, at + 2))
+            at += 2
+        else:
+            cols.append(at)
+            at += 1
+    return tuple(cols), at
 
 
 def kernel_source(c: Construction, targets: Sequence[str]) -> str:
@@ -393,26 +426,30 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
     g = _Gen(c, length_scale(c))
     for sid in c.ancestors(targets):
         g.step(c[sid])
-    outs = ", ".join(f"out{j}" for j in range(len(targets)))
-    body = ["def kernel(phi, rel, bad, " + outs + "):", "    for i in range(phi.shape[0]):",
-            "        bad_i = False"]
+    body = ["def kernel(phi, tol, out, rel, bad, store):", "    status = 0",
+            "    for i in range(phi.shape[0]):", "        bad_i = False"]
     body += ["        " + line for line in g.lines]
     sizes = plan_sizes(c)
-    for j, sid in enumerate(targets):
+    columns, _ = _columns([c[sid].kind for sid in targets])
+    for j, (sid, col) in enumerate(zip(targets, columns)):
         scale = scale_of(c[sid], sizes)
-        if c[sid].kind is Kind.POINT:
+        if isinstance(col, slice):
             x, y = g.pt(sid)
-            body += [f"        out{j}[i, 0] = {x}", f"        out{j}[i, 1] = {y}"]
-            size = f"_hyp({x}, {y})"
+            body += [f"        out[i, {col.start}] = {x}", f"        out[i, {col.start + 1}] = {y}"]
+            size = f"math.sqrt({x} * {x} + {y} * {y})"
         else:
-            body.append(f"        out{j}[i] = {g.name(sid)}")
+            body.append(f"        out[i, {col}] = {g.name(sid)}")
             size = f"abs({g.name(sid)})"
         if scale > 0.0:
             # measured against the larger of the plan's scale and the result's own size
-            body.append(f"        rel[i, {j}] = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
+            body.append(f"        _r = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
         else:
-            body.append(f"        rel[i, {j}] = {g.err(sid)}")
-    body.append("        bad[i] = bad_i")
+            body.append(f"        _r = {g.err(sid)}")
+        body += ["        if store:", f"            rel[i, {j}] = _r",
+                 f"        if not (_r < {_f(UNBOUNDED)}):", f"            status |= {CANNOT_TRUST}",
+                 "        if _r > tol:", f"            status |= {OVER_TOLERANCE}"]
+    body += ["        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
+             "    return status"]
     drive = c.drive
     head = (_HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\n"
             f"U = {_f(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)}\n"
@@ -420,47 +457,15 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
     return head + "\n".join(body) + "\n"
 
 
-def _cache_dir() -> Path:
-    base = os.environ.get("MECHPLAN_CACHE") or os.path.join(
-        os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"),
-        "mechplan")
-    path = Path(base) / "kernels"
-    path.mkdir(parents=True, exist_ok=True)
-    return path
-
-
-def _load(source: str, jit: bool) -> tuple[Callable[..., None], bool]:
-    digest = hashlib.sha256(source.encode()).hexdigest()[:24]
-    name = f"mechplan_kernel_{digest}"
-    if not jit:
-        namespace: dict[str, Any] = {}
-        exec(compile(source, name, "exec"), namespace)   # noqa: S102 - our own generated code
-        return namespace["kernel"], False
-    if importlib.util.find_spec("numba") is None:
-        raise KernelUnavailable("numba is not installed (pip install mechplan[fast])") from None
-    path = _cache_dir() / f"{name}.py"
-    if not path.exists():
-        tmp = path.with_suffix(f".{os.getpid()}.tmp")
-        tmp.write_text(source.replace("def _div", "@numba.njit(cache=True, error_model='numpy')\n"
-                                      "def _div").replace(
-            "def _cdiv", "@numba.njit(cache=True, error_model='numpy')\ndef _cdiv").replace(
-            "def _hyp", "@numba.njit(cache=True, error_model='numpy')\ndef _hyp").replace(
-            "def kernel", "@numba.njit(cache=True, error_model='numpy')\ndef kernel").replace(
-            "import math\n", "import math\nimport numba\n", 1), encoding="utf-8")
-        os.replace(tmp, path)
-    spec = importlib.util.spec_from_file_location(name, path)
-    if spec is None or spec.loader is None:
-        raise KernelUnavailable(f"cannot load the kernel module {path}")
-    module = sys.modules.get(name) or importlib.util.module_from_spec(spec)
-    if name not in sys.modules:
-        spec.loader.exec_module(module)
-        sys.modules[name] = module
-    return module.kernel, True
-
-
 def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) -> Kernel:
     """Compile the kernel of ``targets``; ``jit=False`` runs the generated code as plain Python."""
     targets = tuple(targets)
     source = kernel_source(c, targets)
-    function, compiled = _load(source, jit)
-    return Kernel(targets, tuple(c[sid].kind for sid in targets), source, function, compiled)
+    function, compiled = load(source, jit)
+    kinds = tuple(c[sid].kind for sid in targets)
+    columns, width = _columns(kinds)
+    return Kernel(targets, kinds, columns, width, source, function, compiled)
+
+
+__all__ = ["CANNOT_TRUST", "OVER_TOLERANCE", "Kernel", "KernelUnavailable", "compile_kernel",
+           "kernel_source"]

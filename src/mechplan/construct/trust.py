@@ -49,6 +49,10 @@ class Failure:
 _UNDEFINED_AT_ZERO = frozenset({Op.GUIDE_OFFSET, Op.INERTIA_OFFSET, Op.LINE_OF_ACTION})
 
 
+#: the largest float below UNBOUNDED: "relative ≥ UNBOUNDED somewhere" is "may exceed this"
+_BELOW_UNBOUNDED = float(np.nextafter(UNBOUNDED, 0.0))
+
+
 def _checked(c: Construction, targets: Sequence[str]) -> list[str]:
     return [sid for sid in targets if c[sid].op not in _UNDEFINED_AT_ZERO]
 
@@ -66,7 +70,7 @@ def unbounded_positions(est: ErrorEstimate, targets: Sequence[str], n: int,
     """Positions where some target's error bound is 100 % of its scale or more (or unbounded)."""
     bad = np.zeros(n, dtype=bool)
     for sid in targets:
-        if sid in est and sid not in undefined:
+        if sid in est and sid not in undefined and est.may_exceed(sid, _BELOW_UNBOUNDED):
             bad |= ~(est.relative(sid) < UNBOUNDED)
     return bad
 
@@ -75,7 +79,7 @@ def refuse_unbounded(c: Construction, ev: Evaluation, est: ErrorEstimate, target
                      file: str | None = None) -> None:
     """Raise :class:`SingularError` for the first target that cannot be bounded at a position."""
     for sid in _checked(c, targets):
-        if sid not in est:
+        if sid not in est or not est.may_exceed(sid, _BELOW_UNBOUNDED):
             continue
         rel = est.relative(sid)
         bad = ~(rel < UNBOUNDED)
@@ -155,8 +159,11 @@ def flags(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence
     for sid in targets:
         if sid not in est:
             continue
+        undefined_at_zero = c[sid].op in _UNDEFINED_AT_ZERO
+        if not undefined_at_zero and not est.may_exceed(sid, tolerance):
+            continue
         rel = est.relative(sid)
-        if c[sid].op in _UNDEFINED_AT_ZERO:
+        if undefined_at_zero:
             rel = np.where(np.isfinite(ev[sid]), rel, 0.0)
         for k in np.flatnonzero((rel > tolerance) & ~skip_mask):
             quantity, subject = names[sid]
