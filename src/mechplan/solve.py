@@ -13,6 +13,7 @@ from .construct.builder import build_construction
 from .construct.estimate import DEFAULT_TOLERANCE, ErrorEstimate, estimate_errors
 from .construct.extremes import extreme_positions
 from .construct.graph import Construction, Evaluation
+from .construct.scale import SCALE_KEYS
 from .construct.segments import SegmentKind
 from .construct.step import Plan
 from .construct.trust import Failure, Flag, failures, flags, refuse_unbounded
@@ -204,6 +205,7 @@ def to_json(sol: Solution) -> dict[str, Any]:
             "structure": sol.structure.formula,
             "groups": [{"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups],
             "positions": positions, "accuracy": trust_json(sol),
+            "scales": {SCALE_KEYS[plan.value][0]: mu for plan, mu in sol.scales.items()},
             "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated}}
 
 

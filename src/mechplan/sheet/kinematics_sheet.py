@@ -105,7 +105,7 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     symbols = ("ψ", "ω", "ε") if rocker else ("s", "v", "a")
     units = ("°", "rad/s", "rad/s²") if rocker else ("m", "m/s", "m/s²")
     length_x = min(160.0, 0.36 * r.width)
-    length_y = min(45.0, 0.12 * r.height)
+    length_y = min(28.0, 0.1 * r.height)
     x_axis = Axis("φ", "°", length_x)
     exact_txt, graph_txt = message("layout.diagram.exact", lang), message("layout.diagram.graphical", lang)
     panels: list[Panel] = []
@@ -183,6 +183,8 @@ def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
     ch = max(b[3] - b[1] for b in boxes) + gap
     cols = max(1, min(len(cells), int((width_mm + gap) // cw)))
     rows_per = max(1, int((height_mm + gap) // ch))
+    if len(cells) <= cols * rows_per:            # full rows: as few columns as the rows allow
+        cols = math.ceil(len(cells) / math.ceil(len(cells) / cols))
     out: list[Panel] = []
     per = cols * rows_per
     for start in range(0, len(cells), per):
