@@ -122,7 +122,7 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     for kind, sym, unit, curves in specs:
         d = diagram_panel(f"diagram-{kind}", message(f"layout.diagram.{kind}", lang, symbol=sym,
                                                      link=out.link),
-                          curves, x_axis, Axis(sym, unit, length_y), lang)
+                          curves, x_axis, Axis(sym, unit, length_y, mu_symbol=f"μ{sym}(φ)"), lang)
         panels.append(d.panel)
     # one under the other on the same φ axis, as the course draws them
     width = max(p.bounds()[2] - p.bounds()[0] for p in panels)
