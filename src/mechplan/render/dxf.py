@@ -41,6 +41,7 @@ from mechplan.sheet.primitives import (
     Text,
     VAlign,
 )
+from mechplan.sheet.typography import has_scripts, mtext
 
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
 ENCODINGS = {"en": "cp1252", "ru": "cp1251", "vi": "cp1258", "zh": "gbk"}
@@ -103,6 +104,11 @@ def _setup(doc: Drawing, sheet: Sheet) -> None:
                        view_height=h)
 
 
+#: MTEXT attachment point of a text's alignment (the baseline taken as the bottom)
+_ATTACH = {(h, v): 1 + "LCR".index(h.name[0]) + 3 * {"TOP": 0, "MIDDLE": 1}.get(v.name, 2)
+           for h in HAlign for v in VAlign}
+
+
 def _text_attribs(t: Text) -> dict[str, object]:
     return {
         "layer": t.role.layer,
@@ -144,6 +150,13 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
             attdef = layout.add_attdef(p.tag, q(p.position), p.string,
                                        dxfattribs={**_text_attribs(p), "prompt": p.tag})
             attdef.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])
+        elif p.string and has_scripts(p.string):
+            # real sub- and superscripts: an MTEXT with height and alignment codes
+            attribs = _text_attribs(p)
+            layout.add_mtext(mtext(p.string), dxfattribs={
+                "layer": attribs["layer"], "style": attribs["style"], "char_height": p.height_mm,
+                "rotation": p.rotation_deg, "insert": q(p.position),
+                "attachment_point": _ATTACH[(p.halign, p.valign)]})
         elif p.string:
             text = layout.add_text(p.string, dxfattribs=_text_attribs(p))
             text.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])
