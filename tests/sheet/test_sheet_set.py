@@ -136,7 +136,7 @@ def test_kinematic_and_balancing_moment_diagrams_are_on_the_sheets():
     texts = _texts(comp)
     assert any(t.startswith("Диаграмма перемещений s(φ)") for t in texts)
     assert any(t.startswith("Диаграмма ускорений a(φ)") for t in texts)
-    assert "графическое дифференцирование" in texts
+    assert any("графическое дифференцирование" in t for t in texts)
     force_sheet = comp.placements[-1]
     assert any(p.name == "force-diagram-Mb" for p, _ in force_sheet)
 

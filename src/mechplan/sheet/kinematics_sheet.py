@@ -107,26 +107,31 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     length_x = min(160.0, 0.36 * r.width)
     length_y = min(28.0, 0.1 * r.height)
     x_axis = Axis("φ", "°", length_x)
-    exact_txt, graph_txt = message("layout.diagram.exact", lang), message("layout.diagram.graphical", lang)
+    # which line is which, over the diagrams: "—— exact   – – – graphical differentiation"
+    legend = (f"—— {message('layout.diagram.exact', lang)}   – – – "
+              f"{message('layout.diagram.graphical', lang)}")
     panels: list[Panel] = []
     specs = [("displacement", symbols[0], units[0], [Curve(x, s_exact), Curve(x_k, s_pos, label=None)])]
     if "v" in exact:
         specs.append(("velocity", symbols[1], units[1],
-                      [Curve(x, exact["v"], label=exact_txt),
-                       Curve(xv, v_graph, role=Role.DASHED, label=graph_txt)]))
+                      [Curve(x, exact["v"]), Curve(xv, v_graph, role=Role.DASHED)]))
         if "a" in exact:
             xa, a_graph = chords(xv, v_graph, dt)
             specs.append(("acceleration", symbols[2], units[2],
-                          [Curve(x, exact["a"], label=exact_txt),
-                           Curve(xa, a_graph, role=Role.DASHED, label=graph_txt)]))
+                          [Curve(x, exact["a"]), Curve(xa, a_graph, role=Role.DASHED)]))
     for kind, sym, unit, curves in specs:
-        d = diagram_panel(f"diagram-{kind}", message(f"layout.diagram.{kind}", lang, symbol=sym,
-                                                     link=out.link),
+        title = message(f"layout.diagram.{kind}", lang, symbol=sym, link=out.link)
+        d = diagram_panel(f"diagram-{kind}", title,
                           curves, x_axis, Axis(sym, unit, length_y, mu_symbol=f"μ{sym}(φ)"), lang)
         panels.append(d.panel)
     # one under the other on the same φ axis, as the course draws them
     width = max(p.bounds()[2] - p.bounds()[0] for p in panels)
-    return grid("diagram-kinematic", panels, width, r.height)
+    stacks = grid("diagram-kinematic", panels, width, r.height - 8.0)
+    if len(specs) > 1:
+        for stack in stacks:
+            x0, _y0, _x1, y1 = stack.bounds()
+            stack.primitives.append(Text((x0, y1 + 3.0), legend, TABLE_H))
+    return stacks
 
 
 def balancing_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
