@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import json
 import math
 import re
 
@@ -164,3 +165,20 @@ def test_the_coupler_point_closes_its_rigid_triangle():
                  and len(p.points) == 3]
     assert any(all(min(math.dist(q, v) for q in t.points) < 1e-6 for v in (b, c, e))
                for t in triangles)
+
+
+@pytest.mark.parametrize("size", ["A4", "A2"])
+def test_solve_with_a_sheet_prints_the_scale_factors_of_that_sheet(size, capsys):
+    path = ROOT / "templates" / "slider_crank.toml"
+    assert main(["solve", str(path), "--sheet", size, "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)["scales"]
+    drawn = compose(solved("slider_crank"), size=size).scales
+    keys = {Plan.POSITION: "mu_l", Plan.VELOCITY: "mu_v", Plan.ACCELERATION: "mu_a",
+            Plan.FORCE: "mu_F"}
+    assert printed == {keys[p]: mu for p, mu in drawn.items()}
+    assert printed != json.loads(_solve_json(path, capsys))["scales"] or size == "A1"
+
+
+def _solve_json(path, capsys) -> str:
+    assert main(["solve", str(path), "--json"]) == 0
+    return capsys.readouterr().out
