@@ -119,8 +119,7 @@ def _kinematics_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room)
     if has[Plan.VELOCITY] and len(every) > len(chosen):
         small = [small_plan(vector_plan(c, sol.ev, k, Plan.VELOCITY, mu[Plan.VELOCITY], lang,
                                         "-"), k, crank_degrees(sol, k), lang) for k in every]
-        title = {"en": "Velocity plans", "ru": "Планы скоростей", "vi": "Họa đồ vận tốc",
-                 "zh": "速度图"}[lang]
+        title = message("layout.velocity_plans", lang)
         for g in grid("velocity-all", small, r.width, r.height - 12.0):
             x0, _y0, _x1, y1 = g.bounds()
             g.primitives.append(Text((x0, y1 + 4.0), title, 5.0))
