@@ -192,7 +192,9 @@ def _add_block(doc: Drawing, blk: Block) -> None:
     # the values once more as plain TEXT on their own layer: LibreCAD and other viewers do not
     # draw block attributes (freeze the layer in AutoCAD before editing the attributes)
     for p in blk.primitives:
-        value = blk.attributes.get(p.tag, "") if isinstance(p, Text) and p.tag else ""
+        if not isinstance(p, Text) or not p.tag:
+            continue
+        value = blk.attributes.get(p.tag, "")
         if value:
             text = doc.modelspace().add_text(value, dxfattribs={
                 **_text_attribs(dataclasses.replace(p, string=value, tag=None)),

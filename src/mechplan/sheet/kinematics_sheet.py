@@ -20,7 +20,7 @@ from ..model.mechanism import GROUND, Mechanism, PairKind
 from ..solve import Solution
 from .diagram import Axis, Curve, diagram_panel
 from .panels import TABLE_H, TITLE_H, Panel
-from .primitives import Role, Table, Text
+from .primitives import Primitive, Role, Table, Text
 from .scales import Room
 
 SWEEP = 361            # samples of an exact curve over one turn
@@ -152,8 +152,9 @@ def balancing_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
 
 def small_plan(panel: Panel, k: int, phi_deg: float, lang: str) -> Panel:
     """A velocity plan without its tables, titled by its position only."""
-    keep = [p for p in panel.primitives if not isinstance(p, Table)
-            and not (isinstance(p, Text) and p.height_mm in (TABLE_H, TITLE_H))]
+    keep: list[Primitive | Table] = [
+        p for p in panel.primitives if not isinstance(p, Table)
+        and not (isinstance(p, Text) and p.height_mm in (TABLE_H, TITLE_H))]
     out = Panel(panel.name, keep)
     x0, _y0, _x1, y1 = out.bounds()
     title = message("layout.plan.small_title", lang, position=k, phi=number(phi_deg, 1, lang))
@@ -163,8 +164,9 @@ def small_plan(panel: Panel, k: int, phi_deg: float, lang: str) -> Panel:
 
 def tables_of(panel: Panel, title: str) -> Panel:
     """The tables of a plan panel (segments, vector equations) under a title, without the plan."""
-    keep = [p for p in panel.primitives if isinstance(p, Table)
-            or (isinstance(p, Text) and p.height_mm == TABLE_H)]
+    keep: list[Primitive | Table] = [
+        p for p in panel.primitives if isinstance(p, Table)
+        or (isinstance(p, Text) and p.height_mm == TABLE_H)]
     out = Panel(f"{panel.name}-tables", [])
     if not keep:
         return out
