@@ -182,3 +182,14 @@ def test_solve_with_a_sheet_prints_the_scale_factors_of_that_sheet(size, capsys)
 def _solve_json(path, capsys) -> str:
     assert main(["solve", str(path), "--json"]) == 0
     return capsys.readouterr().out
+
+
+@pytest.mark.parametrize("standard, lang", [("gost", "ru"), ("tcvn", "vi")])
+@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+def test_every_template_fits_an_a4_of_every_standard(path, standard, lang):
+    comp = compose(solved(path.stem), size="A4", standard=standard, lang=lang)
+    area = packing_area(make_frame("A4", standard, {"title": "x"}, language=lang))
+    for placed in comp.placements:
+        for panel, (dx, dy) in placed:
+            x0, y0, x1, y1 = panel.bounds()
+            assert area.contains(box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)), panel.name

@@ -33,6 +33,7 @@ MAX_DRAWN_POSITIONS = 36
 MAX_VELOCITY_PLANS = 12
 ROW_MM = 5.0          # a table row
 TITLE_MM = 16.0       # title and μ line above a plan, and margins
+LINES_MM = 20.0       # construction lines past the plan's points and labels, both sides
 
 
 @dataclass(frozen=True)
@@ -101,7 +102,8 @@ def _fit(extent: tuple[float, float], width_mm: float, height_mm: float) -> floa
 def _rows(c: Construction, plan: Plan) -> int:
     """Table rows drawn under a plan: its segments, and each vector equation with its terms."""
     segs = sum(1 for s in c.segments if s.plan is plan) + 1
-    eqs = sum(len(terms) + 2 for (p, _g), (_eq, terms) in c.equations.items() if p is plan)
+    # each equation: its caption, a heading row, its terms and a gap (about 14 mm + 5 per term)
+    eqs = sum(len(terms) + 3 for (p, _g), (_eq, terms) in c.equations.items() if p is plan)
     return segs + eqs
 
 
@@ -138,7 +140,8 @@ def decide_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[st
             ks = velocity_positions(scene, n) if plan is Plan.VELOCITY else chosen
             extent = _extent(ev, ids, ks)
         tables = _rows(c, plan) * ROW_MM + 10.0
-        side = min(0.3 * r.width, r.height - tables - TITLE_MM, 0.5 * r.height)
+        # construction lines run 8 mm past their points and labels stand beside them
+        side = min(0.3 * r.width, r.height - tables - TITLE_MM - LINES_MM, 0.5 * r.height)
         if plan is Plan.VELOCITY and len(velocity_positions(scene, n)) > len(chosen):
             count = len(velocity_positions(scene, n))
             cell = math.sqrt(0.3 * r.width * r.height / count) - TITLE_MM
