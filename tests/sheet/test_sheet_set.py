@@ -185,9 +185,10 @@ def _solve_json(path, capsys) -> str:
 
 
 @pytest.mark.parametrize("standard, lang", [("gost", "ru"), ("tcvn", "vi")])
-@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
-def test_every_template_fits_an_a4_of_every_standard(path, standard, lang):
-    comp = compose(solved(path.stem), size="A4", standard=standard, lang=lang)
+@pytest.mark.parametrize("stem", ["v_engine", "machine_unit", "slider_crank"])
+def test_the_largest_plans_fit_an_a4_of_every_standard(stem, standard, lang):
+    """The templates with the most tables (forces, two groups) in ГОСТ's and TCVN's frames."""
+    comp = compose(solved(stem), size="A4", standard=standard, lang=lang)
     area = packing_area(make_frame("A4", standard, {"title": "x"}, language=lang))
     for placed in comp.placements:
         for panel, (dx, dy) in placed:
