@@ -1,9 +1,8 @@
 """Sub- and superscripts written in a label ("a^n_CB", "v_B", "ω^2") for every backend.
 
 A ``^`` raises and a ``_`` lowers the run of letters, digits and primes that follows it; the
-renderers draw the runs at 70 % size above or below the baseline: DXF as MTEXT groups with
-height and alignment codes (``a{\\H0.7x;\\A2;n}{\\H0.7x;\\A0;CB}``), SVG as shifted
-``tspan``s, PDF/PNG as separately placed strings.
+renderers draw the runs at 70 % size above or below the baseline: DXF as MTEXT stacks
+(``a\\Sn^CB;``), SVG as shifted ``tspan``s, PDF/PNG as separately placed strings.
 """
 
 from __future__ import annotations
@@ -46,12 +45,22 @@ def _escape(text: str) -> str:
 
 
 def mtext(text: str) -> str:
-    """MTEXT content: each script run in a group at 70 % height aligned to the top (\\A2) or the
-    bottom (\\A0) of the line ("a{\\H0.7x;\\A2;n}{\\H0.7x;\\A0;CB}")."""
+    """MTEXT content with stacks: a superscript followed by a subscript is one stack (n over CB,
+    ``a\\Sn^CB;``), a lone one has an empty other half (``v\\S^B;``, ``ω\\S2^;``). AutoCAD and
+    LibreCAD both draw these stacks (LibreCAD prints the ``\\A`` alignment code as text)."""
+    parts = runs(text)
     out: list[str] = []
-    for t, shift in runs(text):
+    i = 0
+    while i < len(parts):
+        t, shift = parts[i]
         if shift == 0:
             out.append(_escape(t))
+        elif shift > 0 and i + 1 < len(parts) and parts[i + 1][1] < 0:
+            out.append(f"\\S{_escape(t)}^{_escape(parts[i + 1][0])};")
+            i += 1
+        elif shift > 0:
+            out.append(f"\\S{_escape(t)}^;")
         else:
-            out.append(f"{{\\H{SCRIPT_SIZE:g}x;\\A{2 if shift > 0 else 0};{_escape(t)}}}")
+            out.append(f"\\S^{_escape(t)};")
+        i += 1
     return "".join(out)
