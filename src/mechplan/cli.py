@@ -34,6 +34,13 @@ def _solve(args: argparse.Namespace) -> int:
     from .studies.mechanism import MechanismStudy
 
     study = solve_file(args.scene, at_deg=args.at, count=args.positions)
+    if isinstance(study, MechanismStudy) and (args.sheet or args.standard):
+        # the scale factors (μ, segment lengths) of the sheet `mechplan draw --sheet` draws
+        from .solve import choose_scales
+
+        sol = study.solution
+        sol.scales = choose_scales(sol.scene, sol.construction, sol.ev, sol.plans, args.sheet,
+                                   args.standard)
     if args.json:
         print(json.dumps(study.to_json(), ensure_ascii=False, indent=1))
     else:
@@ -160,6 +167,10 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("--stats", action="store_true", help="print step counts to stderr")
     s.add_argument("--csv", metavar="PATH",
                    help="write the per-angle table (engine scenes) as CSV")
+    s.add_argument("--sheet", choices=SHEETS,
+                   help="scale factors of this sheet size (as `draw --sheet`)")
+    s.add_argument("--standard", choices=STANDARDS,
+                   help="scale factors of this standard's sheet (as `draw --standard`)")
     s.set_defaults(func=_solve)
     d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG",
                        description="Draw the sheets of one or more scenes. A scene that fails is "

@@ -14,7 +14,7 @@ from .construct.builder import build_construction
 from .construct.estimate import DEFAULT_TOLERANCE, ErrorEstimate, estimate_errors
 from .construct.extremes import extreme_positions
 from .construct.graph import Construction, Evaluation
-from .construct.scale import SCALE_KEYS, choose_scale
+from .construct.scale import SCALE_KEYS
 from .construct.segments import SegmentKind
 from .construct.step import Plan
 from .construct.trust import Failure, Flag, failures, flags, refuse_unbounded
@@ -111,26 +111,13 @@ def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[s
     return list(dict.fromkeys(out))
 
 
-def choose_scales(
-    scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]
-) -> dict[Plan, float]:
-    """Scale factors: fixed by the scene or round values so each plan's largest segment ≤ 120 mm."""
-    out: dict[Plan, float] = {}
-    for plan in (Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION, Plan.FORCE):
-        key, _ = SCALE_KEYS[plan.value]
-        if key in scene.drawing.scales:
-            out[plan] = scene.drawing.scales[key]
-            continue
-        largest = 0.0
-        for s in c.segments:
-            if s.plan is plan and s.start in ev.values and s.end in ev.values:
-                d = np.hypot(*(ev[s.end] - ev[s.start]).T)
-                if np.isfinite(d).any():
-                    largest = max(largest, float(np.nanmax(d)))
-        out[plan] = (
-            choose_scale(largest, 150.0 if plan is Plan.POSITION else 120.0) if largest else 1.0
-        )
-    return out
+def choose_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...],
+                  size: str | None = None, standard: str | None = None) -> dict[Plan, float]:
+    """Scale factors of the sheet (the scene's own sheet size by default): the one decision
+    shared by the report, the JSON, the sheets and the checker (``sheet.scales``)."""
+    from .sheet.scales import decide_scales
+
+    return decide_scales(scene, c, ev, plans, size, standard)
 
 
 def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
@@ -241,6 +228,7 @@ def to_json(sol: Solution) -> dict[str, Any]:
         ],
         "positions": positions,
         "accuracy": trust_json(sol),
+        "scales": {SCALE_KEYS[plan.value][0]: mu for plan, mu in sol.scales.items()},
         "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated},
     }
 

@@ -78,7 +78,8 @@ def test_answer_key_pdf_is_a_printable_table(klass):
     with pdfplumber.open(out / "s1" / "answer_key.pdf") as pdf:
         text = "\n".join(page.extract_text() or "" for page in pdf.pages)
         assert len(pdf.pages) == 2               # 12 positions: 8 columns per page
-    assert "s1" in text and "Иван" in text and "v_B" in text and "φ = 0.0°" in text
+    # v_B is drawn with a real subscript (two text runs); R23 has none
+    assert "s1" in text and "Иван" in text and "R23" in text and "φ = 0.0°" in text
 
 
 def test_rerun_skips_complete_folders(klass):

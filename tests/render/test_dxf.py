@@ -95,10 +95,12 @@ def test_geometry_and_text_styles(tmp_path: Path) -> None:
     assert tips == {a.end for a in arrows}
     assert len(msp.query("HATCH[layer=='FILL']")) == 1
     styles = {e.dxf.text: e.dxf.style for e in msp.query("TEXT")}
-    assert styles[TEXTS["zh"]] == "CJK"
-    assert styles[TEXTS["vi"]] == "ISO"
-    assert doc.styles.get("ISO").dxf.font == SheetFont.ISO.file_name
-    assert doc.styles.get("CJK").dxf.font == SheetFont.CJK.file_name
+    # styles are named after the LibreCAD stroke font with their glyphs; AutoCAD uses the file
+    assert styles[TEXTS["zh"]] == "unicode"
+    assert styles[TEXTS["vi"]] == "mechplan-vi"
+    assert doc.styles.get("kst32b").dxf.font == SheetFont.ISO.file_name
+    assert doc.styles.get("mechplan-vi").dxf.font == SheetFont.ISO.file_name
+    assert doc.styles.get("unicode").dxf.font == SheetFont.CJK.file_name
     heights = {e.dxf.height for e in msp.query("TEXT")}
     assert heights <= {2.5, 3.5, 5.0}
     rotated = [e for e in msp.query("TEXT") if e.dxf.text == "b"]

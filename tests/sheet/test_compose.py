@@ -146,11 +146,16 @@ def test_pdf_of_a_full_sheet_is_true_scale():
         assert any(abs(w - 811.0) < 0.1 for w in widths)      # the ISO frame: 841 − 20 − 10
 
 
-def test_draw_writes_nothing_when_the_plans_do_not_fit(tmp_path, capsys):
-    code = main(["draw", str(ROOT / "templates" / "v_engine.toml"), "-o", str(tmp_path), "--sheet", "A4"])
+def test_draw_writes_nothing_when_the_scenes_own_scale_does_not_fit(tmp_path, capsys):
+    text = (ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
+    scene = tmp_path / "fb.toml"
+    scene.write_text(text + '\n[drawing]\nsheet = "A4"\nscales = { mu_l = "0.0002 m/mm" }\n',
+                     encoding="utf-8")
+    out = tmp_path / "out"
+    code = main(["draw", str(scene), "-o", str(out)])
     assert code == 2
-    assert "do not fit" in capsys.readouterr().err
-    assert list(tmp_path.iterdir()) == []
+    assert "does not fit" in capsys.readouterr().err
+    assert not out.exists() or list(out.iterdir()) == []
 
 
 def test_draw_cli_writes_every_format(tmp_path, capsys):
@@ -158,7 +163,8 @@ def test_draw_cli_writes_every_format(tmp_path, capsys):
                  "--format", "dxf,svg,pdf,png", "--lang", "ru", "--standard", "gost"])
     assert code == 0
     names = sorted(p.name for p in tmp_path.iterdir())
-    assert names == ["slider_crank.dxf", "slider_crank.pdf", "slider_crank.png", "slider_crank.svg"]
+    assert names == sorted(f"{stem}.{ext}" for stem in ("slider_crank", "slider_crank-2")
+                           for ext in ("dxf", "svg", "pdf", "png"))
     svg = (tmp_path / "slider_crank.svg").read_text(encoding="utf-8")
     assert re.search(r'width="841(\.0*)?mm"', svg) and "План скоростей" in svg
 
@@ -217,4 +223,6 @@ def test_plans_at_chooses_the_positions_drawn(tmp_path):
     scene_path.write_text(text + "\n[drawing]\nplans_at = [3, 7]\n", encoding="utf-8")
     comp = composed(scene_path)
     names = [panel.name for placed in comp.placements for panel, _ in placed]
-    assert "velocity-3" in names and "velocity-7" in names and "velocity-1" not in names
+    assert "acceleration-3" in names and "acceleration-7" in names
+    assert "acceleration-1" not in names and "velocity-1-tables" not in names
+    assert names.index("acceleration-3") < names.index("acceleration-7")

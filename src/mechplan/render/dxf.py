@@ -12,6 +12,7 @@ per string, and it is not a code page AutoCAD writes, so it is not used.
 
 from __future__ import annotations
 
+import dataclasses
 import io
 
 import ezdxf
@@ -37,6 +38,7 @@ from mechplan.drafting.primitives import (
     Text,
     VAlign,
 )
+from mechplan.drafting.typography import has_scripts, mtext
 from mechplan.errors import DrawingError
 
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
@@ -46,7 +48,20 @@ LINETYPE_NAMES = {LineType.CONTINUOUS: "Continuous", LineType.DASHED: "DASHED",
                   LineType.DASH_DOT: "DASHDOT"}
 _LINETYPE_DESCRIPTIONS = {LineType.DASHED: "ISO 128 dashed (02) __ __ __",
                           LineType.DASH_DOT: "ISO 128 long-dash dotted (04) ____ . ____ ."}
-TEXT_STYLES = {SheetFont.ISO: "ISO", SheetFont.SYMBOL: "SYMBOL", SheetFont.CJK: "CJK"}
+#: Text styles. AutoCAD draws a style's font file; LibreCAD 2.2 ignores the file and draws the
+#: stroke (.lff) font named like the STYLE, so each style is named after a LibreCAD font that has
+#: its glyphs: kst32b (Latin, Cyrillic, Greek μ φ, ⊥), azomix (symbols), unicode (CJK).
+TEXT_STYLES = {SheetFont.ISO: "kst32b", SheetFont.SYMBOL: "azomix", SheetFont.CJK: "unicode"}
+#: Vietnamese text: no LibreCAD font has its letters; mechplan ships the stroke font
+#: fonts/librecad/mechplan-vi.lff (add its folder to LibreCAD's Preferences → Paths → Fonts)
+VI_STYLE = "mechplan-vi"
+#: layer of the title-block values repeated as plain TEXT for viewers that ignore attributes
+TITLE_VALUES_LAYER = "TITLE_VALUES"
+_VI_LETTERS = frozenset("ăâđêôơưĂÂĐÊÔƠƯ")
+
+
+def _vietnamese(text: str) -> bool:
+    return any(c in _VI_LETTERS or 0x1EA0 <= ord(c) <= 0x1EF9 for c in text)
 
 _ALIGN = {
     (HAlign.LEFT, VAlign.BASELINE): TextEntityAlignment.LEFT,
@@ -89,10 +104,13 @@ def _setup(doc: Drawing, sheet: Sheet) -> None:
     doc.styles.get("Standard").dxf.font = SheetFont.ISO.file_name
     for font, style in TEXT_STYLES.items():
         doc.styles.add(style, font=font.file_name)
+    doc.styles.add(VI_STYLE, font=SheetFont.ISO.file_name)
     for role in Role:
         st = role.style
         doc.layers.add(role.layer, color=st.aci, linetype=LINETYPE_NAMES[st.linetype],
                        lineweight=round(st.lineweight_mm * 100))
+    st = Role.TEXT.style
+    doc.layers.add(TITLE_VALUES_LAYER, color=st.aci, lineweight=round(st.lineweight_mm * 100))
     doc.set_modelspace_vport(height=h * 1.05, center=(w / 2.0, h / 2.0))
     paper = doc.paperspace()
     paper.page_setup(size=(w, h), margins=(0, 0, 0, 0), units="mm")
@@ -100,10 +118,16 @@ def _setup(doc: Drawing, sheet: Sheet) -> None:
                        view_height=h)
 
 
+#: MTEXT attachment point of a text's alignment (the baseline taken as the bottom)
+_ATTACH = {(h, v): 1 + "LCR".index(h.name[0]) + 3 * {"TOP": 0, "MIDDLE": 1}.get(v.name, 2)
+           for h in HAlign for v in VAlign}
+
+
 def _text_attribs(t: Text) -> dict[str, object]:
     return {
         "layer": t.role.layer,
-        "style": TEXT_STYLES[font_for(t.string)],
+        "style": VI_STYLE if font_for(t.string) is SheetFont.ISO and _vietnamese(t.string)
+        else TEXT_STYLES[font_for(t.string)],
         "height": t.height_mm,
         "rotation": t.rotation_deg,
         "width": t.width_factor,
@@ -141,6 +165,13 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
             attdef = layout.add_attdef(p.tag, q(p.position), p.string,
                                        dxfattribs={**_text_attribs(p), "prompt": p.tag})
             attdef.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])
+        elif p.string and has_scripts(p.string):
+            # real sub- and superscripts: an MTEXT with height and alignment codes
+            attribs = _text_attribs(p)
+            layout.add_mtext(mtext(p.string), dxfattribs={
+                "layer": attribs["layer"], "style": attribs["style"], "char_height": p.height_mm,
+                "rotation": p.rotation_deg, "insert": q(p.position),
+                "attachment_point": _ATTACH[(p.halign, p.valign)]})
         elif p.string:
             text = layout.add_text(p.string, dxfattribs=_text_attribs(p))
             text.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])
@@ -155,6 +186,17 @@ def _add_block(doc: Drawing, blk: Block) -> None:
         _add(definition, p, ox, oy)
     ref = doc.modelspace().add_blockref(blk.name, (ox, oy), dxfattribs={"layer": "0"})
     ref.add_auto_attribs(blk.attributes)
+    # the values once more as plain TEXT on their own layer: LibreCAD and other viewers do not
+    # draw block attributes (freeze the layer in AutoCAD before editing the attributes)
+    for p in blk.primitives:
+        if not isinstance(p, Text) or not p.tag:
+            continue
+        value = blk.attributes.get(p.tag, "")
+        if value:
+            text = doc.modelspace().add_text(value, dxfattribs={
+                **_text_attribs(dataclasses.replace(p, string=value, tag=None)),
+                "layer": TITLE_VALUES_LAYER})
+            text.set_placement(p.position, align=_ALIGN[(p.halign, p.valign)])
 
 
 def to_document(sheet: Sheet) -> Drawing:

@@ -19,7 +19,7 @@ from matplotlib.patches import Arc as ArcPatch
 from matplotlib.patches import Circle as CirclePatch
 from matplotlib.patches import PathPatch
 from matplotlib.patches import Polygon as PolygonPatch
-from matplotlib.textpath import TextPath
+from matplotlib.textpath import TextPath, TextToPath
 from matplotlib.transforms import Affine2D
 
 from mechplan.drafting.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_path
@@ -34,6 +34,14 @@ from mechplan.drafting.primitives import (
     Role,
     Sheet,
     Text,
+)
+from mechplan.drafting.typography import (
+    SCRIPT_SIZE,
+    SUB_SHIFT,
+    SUP_SHIFT,
+    has_scripts,
+    plain,
+    runs,
 )
 from mechplan.errors import DrawingError
 
@@ -98,6 +106,25 @@ def _draw(ax: Any, sheet: Sheet) -> None:
                                          capstyle="butt", joinstyle="miter"))
 
 
+def _scripted(ax: Any, t: Text, x: float, y: float, size_mm: float, families: list[str],
+              ha: str) -> None:
+    """A label with sub- and superscripts: each run placed after the advance of the ones before."""
+    measure = TextToPath()
+    parts = []
+    for run, shift in runs(t.string):
+        size = size_mm * (SCRIPT_SIZE if shift else 1.0)
+        prop = FontProperties(family=families, size=size)
+        width = measure.get_text_width_height_descent(run, prop, ismath=False)[0]
+        rise = {1: SUP_SHIFT, -1: SUB_SHIFT, 0: 0.0}[shift] * t.height_mm
+        parts.append((run, size, width, rise))
+    total = sum(w for _, _, w, _ in parts)
+    cursor = x - {"left": 0.0, "center": total / 2, "right": total}[ha]
+    for run, size, width, rise in parts:
+        ax.text(cursor, y + rise, run, fontsize=size * PT_PER_MM, fontfamily=families,
+                ha="left", va="baseline", color=t.role.style.ink, transform=ax.transData)
+        cursor += width
+
+
 def _text(ax: Any, t: Text) -> None:
     if not t.string:
         return
@@ -105,8 +132,11 @@ def _text(ax: Any, t: Text) -> None:
     size_mm = em_size_mm(t)
     families = list(families_for(t.string))
     ha = {HAlign.LEFT: "left", HAlign.CENTER: "center", HAlign.RIGHT: "right"}[t.halign]
+    if t.width_factor == 1.0 and not t.rotation_deg and has_scripts(t.string):
+        _scripted(ax, t, x, y, size_mm, families, ha)
+        return
     if t.width_factor == 1.0:
-        ax.text(x, y, t.string, fontsize=size_mm * PT_PER_MM, fontfamily=families,
+        ax.text(x, y, plain(t.string) if has_scripts(t.string) else t.string, fontsize=size_mm * PT_PER_MM, fontfamily=families,
                 rotation=t.rotation_deg, rotation_mode="anchor", ha=ha, va="baseline",
                 color=t.role.style.ink, transform=ax.transData)
         return

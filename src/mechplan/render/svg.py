@@ -28,6 +28,7 @@ from mechplan.drafting.primitives import (
     Sheet,
     Text,
 )
+from mechplan.drafting.typography import SCRIPT_SIZE, SUB_SHIFT, SUP_SHIFT, has_scripts, runs
 from mechplan.errors import DrawingError
 from mechplan.render.svg_fonts import font_faces_css
 
@@ -147,7 +148,23 @@ class _Writer:
             attrs.update(fill=t.role.style.ink, stroke="none")
         if t.tag:
             attrs["data-tag"] = t.tag
-        g.add(self.dwg.text(t.string, **attrs))
+        if not has_scripts(t.string):
+            g.add(self.dwg.text(t.string, **attrs))
+            return
+        # sub- and superscripts: smaller tspans shifted off the baseline and back
+        text = self.dwg.text("", **attrs)
+        em = em_size_mm(t)
+        level = 0.0
+        for run, shift in runs(t.string):
+            target = {1: SUP_SHIFT, -1: SUB_SHIFT, 0: 0.0}[shift] * t.height_mm
+            span: dict[str, Any] = {}
+            if target != level:
+                span["dy"] = [_n(level - target)]        # SVG y runs down
+                level = target
+            if shift:
+                span["font_size"] = _n(em * SCRIPT_SIZE)
+            text.add(self.dwg.tspan(run, **span))
+        g.add(text)
 
     def document(self) -> svgwrite.Drawing:
         d = self.dwg

@@ -11,19 +11,33 @@ from shapely.prepared import prep
 
 from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
-from ..construct.scale import round_scale
 from ..construct.step import Plan
 from ..drafting.frame import make_frame
 from ..drafting.primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 from ..errors import DrawingError, MechplanError
-from ..i18n import message
+from ..i18n import decimal_mark, message
 from ..model.mechanism import GROUND, PairKind
 from ..solve import Solution
+from .kinematics_sheet import (
+    balancing_diagram,
+    grid,
+    kinematic_diagrams,
+    small_plan,
+    tables_of,
+)
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
+from .scales import (
+    KEYS,
+    MAX_DRAWN_POSITIONS,
+    Room,
+    chosen_positions,
+    decide_scales,
+    room,
+    velocity_positions,
+)
 
 GAP = 8.0          # mm between panels
-MAX_PLAN_POSITIONS = 2
 
 
 def _moved(p: Primitive | Table, dx: float, dy: float) -> Primitive | Table:
@@ -43,13 +57,8 @@ def _moved(p: Primitive | Table, dx: float, dy: float) -> Primitive | Table:
 
 
 def plan_positions(sol: Solution) -> list[int]:
-    """Positions whose velocity and acceleration plans go on the sheet."""
-    chosen = [k for k in sol.scene.drawing.plan_positions if k < sol.positions]
-    if chosen:
-        return chosen
-    if sol.scene.positions.angles:
-        return list(range(min(sol.positions, MAX_PLAN_POSITIONS)))
-    return [1 % sol.positions]
+    """Positions whose acceleration and force plans (with their tables) go on the sheets."""
+    return chosen_positions(sol.scene, sol.positions)
 
 
 def _extreme_phis(sol: Solution) -> list[float]:
@@ -73,40 +82,94 @@ def _extreme_phis(sol: Solution) -> list[float]:
     return sorted({round(p, 12) for p in phis})
 
 
-def _panels(sol: Solution, mu: dict[Plan, float], lang: str) -> list[Panel]:
+def _position_panel(sol: Solution, mu: float, lang: str) -> Panel:
+    """The position plan: every position (up to MAX_DRAWN_POSITIONS) with the trajectories."""
     c, scene = sol.construction, sol.scene
-    ev_all = sol.ev
+    points = [f"pos.{q}" for lk in scene.mechanism.links.values() for q in lk.points]
+    chosen = plan_positions(sol)
+    if sol.positions > MAX_DRAWN_POSITIONS:
+        drawn = chosen
+        ev_all = c.evaluate(sol.phi[drawn])
+        highlight = list(range(len(drawn)))
+    else:
+        drawn, ev_all, highlight = list(range(sol.positions)), sol.ev, chosen
     ev_traj = c.evaluate(np.linspace(0.0, 2 * math.pi, 241))
     extremes = _extreme_phis(sol)
     ev_ext = c.evaluate(np.asarray(extremes)) if extremes else None
-    if ev_ext is not None:
-        for p in (q for lk in scene.mechanism.links.values() for q in lk.points):
-            ev_ext.get(c.position(p))
-    for p in (q for lk in scene.mechanism.links.values() for q in lk.points):
-        ev_traj.get(c.position(p))
-        ev_all.get(c.position(p))
-    highlight = plan_positions(sol)
-    numbers = [str(k) for k in range(sol.positions)]
+    for q in points:
+        for ev in (ev_traj, ev_all) + ((ev_ext,) if ev_ext is not None else ()):
+            ev.get(q)
     title = plan_name(Plan.POSITION, lang)
-    panels = [position_plan(c, ev_all, ev_traj, scene.mechanism, highlight, extremes, ev_ext,
-                            mu[Plan.POSITION], lang, title, numbers)]
-    for k in highlight:
-        phi_deg = math.degrees(float(sol.phi[k]))
-        for plan in (Plan.VELOCITY, Plan.ACCELERATION):
-            if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
-                panels.append(_marked(vector_plan(c, ev_all, k, plan, mu[plan], lang,
-                                                  plan_title(plan, lang, k, phi_deg)),
-                                      sol, k, plan, lang))
-        if "force" in sol.plans:
-            groups = list(dict.fromkeys(s.group for s in c.segments if s.plan is Plan.FORCE))
-            for group in groups:
-                panels.append(vector_plan(c, ev_all, k, Plan.FORCE, mu[Plan.FORCE], lang,
-                                          plan_title(Plan.FORCE, lang, k, phi_deg, group), group))
-            lever = zhukovsky_lever(c, ev_all, k, mu[Plan.VELOCITY], lang,
-                                    lever_title(lang, phi_deg))
-            if lever is not None:
-                panels.append(lever)
-    return panels
+    panel = position_plan(c, ev_all, ev_traj, scene.mechanism, highlight, extremes, ev_ext, mu,
+                          lang, title, [str(k) for k in drawn])
+    if sol.positions > MAX_DRAWN_POSITIONS:
+        x0, y0, _, _ = panel.bounds()
+        panel.primitives.append(Text((x0, y0 - 5.0), message(
+            "layout.positions.trajectories_only", lang, count=sol.positions,
+            drawn=", ".join(str(k) for k in drawn)), 3.5))
+    return panel
+
+
+def _kinematics_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> list[Panel]:
+    """Sheet 1: position plan; velocity plans of all positions, small and in order on a grid;
+    per chosen position its velocity tables and acceleration plan; kinematic diagrams."""
+    c = sol.construction
+    panels = [_position_panel(sol, mu[Plan.POSITION], lang)]
+    chosen = plan_positions(sol)
+    has = {plan: plan.value in sol.plans and any(s.plan is plan for s in c.segments)
+           for plan in (Plan.VELOCITY, Plan.ACCELERATION)}
+    every = velocity_positions(sol.scene, sol.positions)
+    if has[Plan.VELOCITY] and len(every) > len(chosen):
+        small = [small_plan(vector_plan(c, sol.ev, k, Plan.VELOCITY, mu[Plan.VELOCITY], lang,
+                                        "-"), k, crank_degrees(sol, k), lang) for k in every]
+        title = message("layout.velocity_plans", lang)
+        for g in grid("velocity-all", small, r.width, r.height - 12.0):
+            x0, _y0, _x1, y1 = g.bounds()
+            g.primitives.append(Text((x0, y1 + 4.0), title, 5.0))
+            panels.append(g)
+    for k in chosen:
+        phi_deg = crank_degrees(sol, k)
+        if has[Plan.VELOCITY]:
+            vp = _marked(vector_plan(c, sol.ev, k, Plan.VELOCITY, mu[Plan.VELOCITY], lang,
+                                     plan_title(Plan.VELOCITY, lang, k, phi_deg)),
+                         sol, k, Plan.VELOCITY, lang)
+            if len(every) > len(chosen):
+                t = tables_of(vp, plan_title(Plan.VELOCITY, lang, k, phi_deg))
+                if t.primitives:
+                    panels.append(t)
+            else:
+                panels.append(vp)
+        if has[Plan.ACCELERATION]:
+            panels.append(_marked(vector_plan(c, sol.ev, k, Plan.ACCELERATION,
+                                              mu[Plan.ACCELERATION], lang,
+                                              plan_title(Plan.ACCELERATION, lang, k, phi_deg)),
+                                  sol, k, Plan.ACCELERATION, lang))
+    return panels + kinematic_diagrams(sol, lang, r)
+
+
+def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> list[Panel]:
+    """Sheet 2: force polygons and Zhukovsky's lever per chosen position, then M_b(φ)."""
+    c = sol.construction
+    if "force" not in sol.plans:
+        return []
+    panels: list[Panel] = []
+    groups = list(dict.fromkeys(s.group for s in c.segments if s.plan is Plan.FORCE))
+    for k in plan_positions(sol):
+        phi_deg = crank_degrees(sol, k)
+        for group in groups:
+            panels.append(vector_plan(c, sol.ev, k, Plan.FORCE, mu[Plan.FORCE], lang,
+                                      plan_title(Plan.FORCE, lang, k, phi_deg, group), group))
+        lever = zhukovsky_lever(c, sol.ev, k, mu[Plan.VELOCITY], lang,
+                                lever_title(lang, phi_deg))
+        if lever is not None:
+            panels.append(lever)
+    mb = balancing_diagram(sol, lang, r)
+    return panels + ([mb] if mb is not None else [])
+
+
+def crank_degrees(sol: Solution, k: int) -> float:
+    """φ of position k in degrees, in [0, 360) (one convention on every sheet)."""
+    return math.degrees(float(sol.phi[k])) % 360.0
 
 
 def _marked(panel: Panel, sol: Solution, k: int, plan: Plan, lang: str) -> Panel:
@@ -131,12 +194,15 @@ def packing_area(frame):
         frame.drawing_area)
 
 
-def _pack(panels: list[Panel], area) -> tuple[list[tuple[float, float]], int | None]:
-    """Top-left-first packing inside the drawing area; also the index of a panel not fitting."""
+def _pack(panels: list[Panel], area) -> list[tuple[float, float] | None]:
+    """Top-left-first packing inside the drawing area, in order; a panel that does not fit is
+    skipped (None) so that the later, smaller ones can still fill the sheet."""
     inside = prep(area)
     ax0, ay0, ax1, ay1 = area.bounds
     placed: list = []
-    offsets: list[tuple[float, float]] = []
+    offsets: list[tuple[float, float] | None] = []
+    grid = [(ax0 + i * 10.0, ay1 - j * 10.0) for j in range(int((ay1 - ay0) / 10) + 1)
+            for i in range(int((ax1 - ax0) / 10) + 1)]
     for panel in panels:
         x0, y0, x1, y1 = panel.bounds()
         w, h = x1 - x0 + GAP, y1 - y0 + GAP
@@ -144,38 +210,22 @@ def _pack(panels: list[Panel], area) -> tuple[list[tuple[float, float]], int | N
         for r in placed:
             bx0, by0, bx1, by1 = r.bounds
             candidates |= {(bx1, by1), (bx0, by0), (ax0 + GAP / 2, by0), (bx1, ay1 - GAP / 2)}
-        grid = [(ax0 + i * 10.0, ay1 - j * 10.0) for j in range(int((ay1 - ay0) / 10) + 1)
-                for i in range(int((ax1 - ax0) / 10) + 1)]
         best = None
         for cx, cy in sorted(candidates, key=lambda q: (-q[1], q[0])) + grid:
+            if cx + w > ax1 + 1e-9 or cy - h < ay0 - 1e-9:
+                continue
             rect = box(cx, cy - h, cx + w, cy)
             if inside.contains(rect) and not any(rect.intersects(r) and
                                                  rect.intersection(r).area > 1e-6 for r in placed):
                 best = rect
                 break
         if best is None:
-            return offsets, panels.index(panel)
+            offsets.append(None)
+            continue
         placed.append(best)
         bx0, by0, _, by1 = best.bounds
         offsets.append((bx0 + GAP / 2 - x0, by1 - GAP / 2 - y1))
-    return offsets, None
-
-
-def _largest(sol: Solution, plan: Plan, positions: list[int]) -> float:
-    """Longest segment of a plan at the drawn positions (physical units)."""
-    ev, out = sol.ev, 0.0
-    for seg in sol.construction.segments:
-        if seg.plan is plan and seg.start in ev.values and seg.end in ev.values:
-            d = np.hypot(*(ev[seg.end][positions] - ev[seg.start][positions]).T)
-            if np.isfinite(d).any():
-                out = max(out, float(np.nanmax(d)))
-    return out or 1.0
-
-
-def _plan_of(panel: Panel) -> Plan:
-    if panel.plan is None:       # the linkage sheet composes only panels of plans
-        raise DrawingError(f"panel {panel.name!r} shows no plan")
-    return panel.plan
+    return offsets
 
 
 def _area(panel: Panel) -> float:
@@ -183,10 +233,14 @@ def _area(panel: Panel) -> float:
     return (x1 - x0) * (y1 - y0)
 
 
-def scale_field(mu_l: float) -> str:
-    """Drawing scale of the position plan as a ratio ("1:2.5")."""
+def scale_field(mu_l: float, lang: str = "en") -> str:
+    """Drawing scale of the position plan as a ratio ("1:2,5" in ru and vi)."""
     r = mu_l * 1000.0
-    return f"1:{r:g}" if r >= 1 else f"{1 / r:g}:1"
+
+    def fmt(v: float) -> str:
+        text = f"{v:g}"
+        return text.replace(".", decimal_mark(lang))
+    return f"1:{fmt(r)}" if r >= 1 else f"{fmt(1 / r)}:1"
 
 
 def compose_sheets(sol: Solution, size: str | None = None, standard: str | None = None,
@@ -197,40 +251,55 @@ def compose_sheets(sol: Solution, size: str | None = None, standard: str | None 
 
 def compose(sol: Solution, size: str | None = None, standard: str | None = None,
             lang: str | None = None, name: str = "sheet") -> Composition:
-    """Lay out the plans of a solution on framed sheets.
+    """Lay out the course sheets of a solution: sheet 1 kinematics, sheet 2 kinetostatics.
 
-    Everything goes on one sheet when it fits; otherwise the force analysis gets a second sheet, as
-    course projects do. Free scale factors shrink by round steps until their plans fit; scale
-    factors fixed by the scene never change.
+    The scale factors are the one decision of :func:`sheet.scales.decide_scales` for this sheet
+    size (the report's own when it is the scene's sheet). Panels are packed in order, top left
+    first; what does not fit flows onto further sheets, each numbered with its title block.
     """
     scene = sol.scene
     lang = lang or scene.language
     size = size or scene.drawing.sheet
     standard = standard or scene.drawing.standard
-    frame = make_frame(size, standard, {"title": scene.title}, language=lang)
-    short_side = min(frame.frame.width, frame.frame.height)
-    # free scale factors start large (a vector plan about 40 % of the sheet's short side) and
-    # shrink by one round step at a time until everything fits
-    drawn = plan_positions(sol)
-    mu0 = {plan: sol.scales.get(plan, 1.0) if key in scene.drawing.scales
-           else round_scale(_largest(sol, plan, drawn) / (0.4 * short_side))
-           for plan, key in FIXED.items()}
-    if Plan.POSITION.scale_key not in scene.drawing.scales:
-        mu0[Plan.POSITION] = round_scale(
-            sol.scales.get(Plan.POSITION, 1.0) * 150.0 / (0.45 * short_side)
-        )
-    for split in (False, True):
-        composition = _fit(sol, dict(mu0), size, standard, lang, name, split)
-        if composition is not None:
-            return composition
-    fixed = ", ".join(f"{k} = {mu0[p]:g}" for p, k in FIXED.items() if k in scene.drawing.scales)
-    raise DrawingError(f"the plans do not fit on {size} sheets at the scale factors "
-                       f"{fixed or 'chosen'}; use a larger sheet (--sheet A0) or larger scale "
-                       "factors in [drawing.scales]", file=scene.path)
+    own = size == scene.drawing.sheet and standard == scene.drawing.standard and sol.scales
+    mu = dict(sol.scales) if own else decide_scales(scene, sol.construction, sol.ev, sol.plans,
+                                                    size, standard)
+    r = room(size, standard, lang)
+    parts = [p for p in (_kinematics_panels(sol, mu, lang, r), _force_panels(sol, mu, lang, r)) if p]
+    groups: list[list[tuple[Panel, tuple[float, float]]]] = []
+    base = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION], lang)}
+    base.update({k: v for k, v in scene.drawing.title_block.items() if v})
+    for part in parts:
+        rest = list(part)
+        if len(groups) > 1:
+            # the kinematics overflowed: its last sheet takes the first force panels too
+            rest = [q for q, _ in groups.pop()] + rest
+        while rest:
+            frame = make_frame(size, standard, base, language=lang)
+            offsets = _pack(rest, packing_area(frame))
+            if offsets[0] is None:
+                x0, y0, x1, y1 = rest[0].bounds()
+                fixed = ", ".join(f"{k} = {v:g}" for k, v in scene.drawing.scales.items())
+                raise DrawingError(
+                    f"the panel '{rest[0].name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not fit on "
+                    f"an {size} sheet at the scale factors {fixed or 'chosen'}; use a larger sheet "
+                    "(--sheet A1 or A0) or larger scale factors in [drawing.scales]", file=scene.path)
+            groups.append([(p, o) for p, o in zip(rest, offsets) if o is not None])
+            rest = [p for p, o in zip(rest, offsets) if o is None]
+    sheets: list[Sheet] = []
+    for i, placed in enumerate(groups):
+        fields = dict(base, sheet_number=str(i + 1), sheets_total=str(len(groups)))
+        frame = make_frame(size, standard, fields, language=lang)
+        prims: list[Primitive] = []
+        for panel, (dx, dy) in placed:
+            for p in panel.primitives:
+                m = _moved(p, dx, dy)
+                prims.extend(m.expand() if isinstance(m, Table) else (m,))
+        sheets.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
+    return Composition(sheets, groups, mu, size, standard)
 
 
-#: plan → its scale-factor key (``mu_l``, ``mu_v``, …), which a scene may fix
-FIXED = {plan: plan.scale_key for plan in Plan}
+FIXED = KEYS
 
 
 @dataclasses.dataclass(frozen=True)
@@ -240,50 +309,15 @@ class Composition:
     sheets: list[Sheet]
     placements: list[list[tuple[Panel, tuple[float, float]]]]
     scales: dict[Plan, float]
+    size: str = "A1"
+    standard: str = "iso"
 
-
-def _fit(sol: Solution, mu: dict[Plan, float], size: str, standard: str, lang: str, name: str,
-         split: bool) -> Composition | None:
-    scene = sol.scene
-    free = [p for p, key in FIXED.items() if key not in scene.drawing.scales]
-    for _ in range(40):
-        panels = _panels(sol, mu, lang)
-        if split and any(_plan_of(p) is Plan.FORCE for p in panels):
-            parts = [[p for p in panels if _plan_of(p) is not Plan.FORCE],
-                     [p for p in panels if _plan_of(p) is Plan.FORCE]]
-        elif split:
-            return None
-        else:
-            parts = [panels]
-        sheets: list[Sheet] = []
-        placements: list[list[tuple[Panel, tuple[float, float]]]] = []
-        failed_panel = None
-        for i, part in enumerate(parts):
-            fields = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION]),
-                      "sheet_number": str(i + 1), "sheets_total": str(len(parts))}
-            fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
-            frame = make_frame(size, standard, fields, language=lang)
-            offsets, failed = _pack(part, packing_area(frame))
-            if failed is not None:
-                failed_panel = part[failed]
-                break
-            placements.append(list(zip(part, offsets)))
-            prims: list[Primitive] = []
-            for panel, (dx, dy) in zip(part, offsets):
-                for p in panel.primitives:
-                    moved = _moved(p, dx, dy)
-                    prims.extend(moved.expand() if isinstance(moved, Table) else (moved,))
-            sheets.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
-        if failed_panel is None:
-            return Composition(sheets, placements, dict(mu))
-        plan = _plan_of(failed_panel)
-        if plan not in free:
-            in_part = {_plan_of(p) for p in parts[0 if failed_panel in parts[0] else -1]} & set(
-                free
-            )
-            if not in_part:
-                return None
-            plan = max(in_part, key=lambda q: max((_area(x) for x in panels if _plan_of(x) is q),
-                                                  default=0.0))
-        mu[plan] = round_scale(mu[plan] * 1.0001 * 1.25)
-    return None
+    def coverage(self) -> list[float]:
+        """Share of each sheet's drawing area covered by its panels' boxes."""
+        out = []
+        for placed in self.placements:
+            frame = make_frame(self.size, self.standard, {"title": ""})
+            area = packing_area(frame).area
+            used = sum(_area(p) for p, _ in placed)
+            out.append(used / area)
+        return out

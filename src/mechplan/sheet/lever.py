@@ -19,8 +19,8 @@ from .panels import LABEL_H, TABLE_H, TITLE_H, Panel, _finite, mu_text
 
 
 def lever_title(lang: str, phi_deg: float) -> str:
-    """ "Zhukovsky's lever — φ = 30.0°" (the angle always with a decimal point, as drawn before)."""
-    return f"{message('sheet.lever.title', lang)} — φ = {phi_deg:.1f}°"
+    """ "Zhukovsky's lever — φ = 30.0°" with the language's decimal mark."""
+    return f"{message('sheet.lever.title', lang)} — φ = {format_number(phi_deg, 1, lang)}°"
 
 
 def zhukovsky_lever(

@@ -304,9 +304,14 @@ def position_plan(
         for lk in links
     }
 
+    # a link's outline: its joints, then the points no other link joins (a coupler point E
+    # closes the rigid triangle B, C, E)
+    outline = {lk.id: joints[lk.id] + [p for p in lk.points if p not in joints[lk.id]]
+               if len(joints[lk.id]) >= 2 else joints[lk.id] for lk in links}
+
     def draw_links(ev: Evaluation, k: int, role: Role) -> None:
         for lk in links:
-            pts = [_mm(ev[_pos(ev, p)][k], mu) for p in joints[lk.id] if _has(ev, p)]
+            pts = [_mm(ev[_pos(ev, p)][k], mu) for p in outline[lk.id] if _has(ev, p)]
             pts = [p for p in pts if _finite(p)]
             if len(pts) == 2 and math.dist(*pts) > 1e-6:
                 prims.append(Line(pts[0], pts[1], role))

@@ -1,0 +1,204 @@
+"""Panels of the course sheets: sheet 1 kinematics, sheet 2 kinetostatics.
+
+Sheet 1: the position plan (every position with the trajectories), the velocity plans of all
+positions in order (small; the chosen positions with their tables), the acceleration plans of the
+chosen positions, and the kinematic diagrams of the output link — s(φ), v(φ), a(φ) exact, with the
+course's graphical differentiation (chords of the curve over the positions) beside them.
+Sheet 2: force polygons, Zhukovsky's lever and the diagram of the balancing moment M_b(φ).
+Nothing here computes mechanics beyond reading the evaluated construction.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..i18n import message, number
+from ..model.mechanism import GROUND, Mechanism, PairKind
+from ..solve import Solution
+from .diagram import Axis, Curve, diagram_panel
+from .panels import TABLE_H, TITLE_H, Panel
+from .primitives import Primitive, Role, Table, Text
+from .scales import Room
+
+SWEEP = 361            # samples of an exact curve over one turn
+
+
+@dataclass(frozen=True)
+class Output:
+    """The output link of a diagram: a slider on a frame guide or a link turning about the frame."""
+
+    link: str
+    point: str | None              # the slider's point, None for a rocker
+    direction: tuple[float, float]  # the guide's direction (slider)
+
+
+def output_link(mech: Mechanism) -> Output | None:
+    """The last link of the chain that slides on a frame guide or turns about a frame pivot."""
+    found: Output | None = None
+    for lk in mech.links.values():
+        if lk.id in (GROUND, mech.drive.link):
+            continue
+        if lk.slides_on and mech.guides[lk.slides_on].link == GROUND:
+            g = mech.guides[lk.slides_on]
+            found = Output(lk.id, next(iter(lk.points)), (math.cos(g.angle), math.sin(g.angle)))
+        elif any(p.kind is PairKind.REVOLUTE and GROUND in (p.a, p.b) for p in mech.pairs_of(lk.id)):
+            found = Output(lk.id, None, (1.0, 0.0))
+    return found
+
+
+def _series(sol: Solution, out: Output, phi: np.ndarray) -> dict[str, np.ndarray]:
+    """s, v, a (or ψ, ω, ε) of the output link at the angles phi (evaluated construction)."""
+    c = sol.construction
+    ev = c.evaluate(phi)
+    res: dict[str, np.ndarray] = {}
+    if out.point is not None:
+        u = np.asarray(out.direction)
+        res["s"] = np.asarray(ev.get(f"pos.{out.point}")) @ u
+        for sym in ("v", "a"):
+            sid = c.results.get(f"{sym}_{out.point}")
+            if sid is None or (sym == "a" and "acceleration" not in sol.plans):
+                continue
+            res[sym] = np.asarray(ev.get(sid)) @ u
+    else:
+        sid = c.results.get(f"angle_{out.link}")
+        if sid is None:
+            return res
+        res["s"] = np.unwrap(np.asarray(ev.get(sid), dtype=float))
+        for sym, key in (("v", "omega"), ("a", "epsilon")):
+            rid = c.results.get(f"{key}_{out.link}")
+            if rid is not None and (sym == "v" or "acceleration" in sol.plans):
+                res[sym] = np.asarray(ev.get(rid), dtype=float)
+    return res
+
+
+def chords(x: np.ndarray, y: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndarray]:
+    """Graphical differentiation by chords: slope of each chord at the middle of its interval."""
+    return (0.5 * (x[1:] + x[:-1]), np.diff(y) / dt)
+
+
+def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
+    """s(φ), v(φ), a(φ) of the output link: exact curves and the graphical differentiation."""
+    out = output_link(sol.scene.mechanism)
+    if out is None:
+        return []
+    omega = abs(sol.scene.mechanism.drive.omega)
+    sweep_positions = not sol.scene.positions.angles and sol.positions >= 4
+    phi0 = float(sol.phi[0]) if sweep_positions else 0.0
+    n = sol.positions if sweep_positions and sol.positions <= 72 else 12
+    phi = phi0 + np.linspace(0.0, 2.0 * math.pi, SWEEP)
+    exact = _series(sol, out, phi)
+    if "s" not in exact or omega == 0:
+        return []
+    phi_k = phi0 + np.arange(n + 1) * 2.0 * math.pi / n
+    s_k = _series(sol, out, phi_k)["s"]
+    x = np.degrees(phi - phi0)
+    x_k = np.degrees(phi_k - phi0)
+    shift = float(np.nanmin(exact["s"]))
+    rocker = out.point is None
+    conv = math.degrees(1.0) if rocker else 1.0
+    s_exact, s_pos = (exact["s"] - shift) * conv, (s_k - shift) * conv
+    dt = 2.0 * math.pi / n / omega
+    xv, v_graph = chords(x_k, s_k, dt)
+    symbols = ("ψ", "ω", "ε") if rocker else ("s", "v", "a")
+    units = ("°", "rad/s", "rad/s²") if rocker else ("m", "m/s", "m/s²")
+    length_x = min(160.0, 0.36 * r.width)
+    length_y = min(28.0, 0.1 * r.height)
+    x_axis = Axis("φ", "°", length_x)
+    # which line is which, over the diagrams: "—— exact   – – – graphical differentiation"
+    legend = (f"—— {message('layout.diagram.exact', lang)}   – – – "
+              f"{message('layout.diagram.graphical', lang)}")
+    panels: list[Panel] = []
+    specs = [("displacement", symbols[0], units[0], [Curve(x, s_exact), Curve(x_k, s_pos, label=None)])]
+    if "v" in exact:
+        specs.append(("velocity", symbols[1], units[1],
+                      [Curve(x, exact["v"]), Curve(xv, v_graph, role=Role.DASHED)]))
+        if "a" in exact:
+            xa, a_graph = chords(xv, v_graph, dt)
+            specs.append(("acceleration", symbols[2], units[2],
+                          [Curve(x, exact["a"]), Curve(xa, a_graph, role=Role.DASHED)]))
+    for kind, sym, unit, curves in specs:
+        title = message(f"layout.diagram.{kind}", lang, symbol=sym, link=out.link)
+        d = diagram_panel(f"diagram-{kind}", title,
+                          curves, x_axis, Axis(sym, unit, length_y, mu_symbol=f"μ{sym}(φ)"), lang)
+        panels.append(d.panel)
+    # one under the other on the same φ axis, as the course draws them
+    width = max(p.bounds()[2] - p.bounds()[0] for p in panels)
+    stacks = grid("diagram-kinematic", panels, width, r.height - 8.0)
+    if len(specs) > 1:
+        for stack in stacks:
+            x0, _y0, _x1, y1 = stack.bounds()
+            stack.primitives.append(Text((x0, y1 + 3.0), legend, TABLE_H))
+    return stacks
+
+
+def balancing_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
+    """M_b at the positions of a sweep, over the crank angle (a closed diagram of one turn)."""
+    c = sol.construction
+    sid = c.results.get("M_b")
+    if sid is None or sid not in sol.ev.values or sol.scene.positions.angles or sol.positions < 4:
+        return None
+    m = np.asarray(sol.ev[sid], dtype=float)
+    n = sol.positions
+    x = np.arange(n + 1) * 360.0 / n
+    y = np.append(m, m[0])
+    d = diagram_panel("force-diagram-Mb", message("layout.diagram.balancing", lang, symbol="M_b"),
+                      [Curve(x, y)], Axis("φ", "°", min(180.0, 0.42 * r.width)),
+                      Axis("M_b", "N·m", min(60.0, 0.2 * r.height)), lang)
+    return d.panel
+
+
+def small_plan(panel: Panel, k: int, phi_deg: float, lang: str) -> Panel:
+    """A velocity plan without its tables, titled by its position only."""
+    keep: list[Primitive | Table] = [
+        p for p in panel.primitives if not isinstance(p, Table)
+        and not (isinstance(p, Text) and p.height_mm in (TABLE_H, TITLE_H))]
+    out = Panel(panel.name, keep)
+    x0, _y0, _x1, y1 = out.bounds()
+    title = message("layout.plan.small_title", lang, position=k, phi=number(phi_deg, 1, lang))
+    out.primitives.append(Text((x0, y1 + 2.0), title, TABLE_H + 1.0))
+    return out
+
+
+def tables_of(panel: Panel, title: str) -> Panel:
+    """The tables of a plan panel (segments, vector equations) under a title, without the plan."""
+    keep: list[Primitive | Table] = [
+        p for p in panel.primitives if isinstance(p, Table)
+        or (isinstance(p, Text) and p.height_mm == TABLE_H)]
+    out = Panel(f"{panel.name}-tables", [])
+    if not keep:
+        return out
+    from .layout import moved
+
+    x0, _y0, _x1, y1 = Panel("", keep).bounds()
+    out.primitives.extend(moved(p, -x0, -y1) for p in keep)
+    out.primitives.append(Text((0.0, 3.0), title, TITLE_H - 1.5))
+    return out
+
+
+def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
+         gap: float = 6.0) -> list[Panel]:
+    """Panels in reading order on a grid of equal cells, as few grid panels as fit the room."""
+    from .layout import moved
+
+    if not cells:
+        return []
+    boxes = [c.bounds() for c in cells]
+    cw = max(b[2] - b[0] for b in boxes) + gap
+    ch = max(b[3] - b[1] for b in boxes) + gap
+    cols = max(1, min(len(cells), int((width_mm + gap) // cw)))
+    rows_per = max(1, int((height_mm + gap) // ch))
+    if len(cells) <= cols * rows_per:            # full rows: as few columns as the rows allow
+        cols = math.ceil(len(cells) / math.ceil(len(cells) / cols))
+    out: list[Panel] = []
+    per = cols * rows_per
+    for start in range(0, len(cells), per):
+        panel = Panel(f"{name}-{start // per + 1}" if len(cells) > per else name, [])
+        for i, (cell, b) in enumerate(zip(cells[start:start + per], boxes[start:start + per])):
+            col, row = i % cols, i // cols
+            dx, dy = col * cw - b[0], -row * ch - b[3]
+            panel.primitives.extend(moved(p, dx, dy) for p in cell.primitives)
+        out.append(panel)
+    return out
