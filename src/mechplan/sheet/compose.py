@@ -13,7 +13,7 @@ from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
 from ..construct.step import Plan
 from ..drafting.frame import make_frame
-from ..drafting.primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
+from ..drafting.primitives import Primitive, Sheet, Table, Text
 from ..errors import DrawingError, MechplanError
 from ..i18n import decimal_mark, message
 from ..model.mechanism import GROUND, PairKind
@@ -25,6 +25,7 @@ from .kinematics_sheet import (
     small_plan,
     tables_of,
 )
+from .layout import drawing_area, moved
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -38,22 +39,7 @@ from .scales import (
 )
 
 GAP = 8.0          # mm between panels
-
-
-def _moved(p: Primitive | Table, dx: float, dy: float) -> Primitive | Table:
-    def mv(q: tuple[float, float]) -> tuple[float, float]:
-        return (q[0] + dx, q[1] + dy)
-    if isinstance(p, (Line, Arrow)):
-        return dataclasses.replace(p, start=mv(p.start), end=mv(p.end))
-    if isinstance(p, Polyline):
-        return dataclasses.replace(p, points=tuple(mv(q) for q in p.points))
-    if isinstance(p, (Circle, Arc)):
-        return dataclasses.replace(p, center=mv(p.center))
-    if isinstance(p, Text):
-        return dataclasses.replace(p, position=mv(p.position))
-    if isinstance(p, Table):
-        return dataclasses.replace(p, origin=mv(p.origin))
-    raise DrawingError(f"cannot move a {type(p).__name__}")
+packing_area = drawing_area      # the drawing area clear of the centring marks and title block
 
 
 def plan_positions(sol: Solution) -> list[int]:
@@ -186,14 +172,6 @@ def _marked(panel: Panel, sol: Solution, k: int, plan: Plan, lang: str) -> Panel
     return panel
 
 
-def packing_area(frame):
-    """The drawing area kept clear of the frame's centring marks (6 mm) and the title block."""
-    f, t = frame.frame, frame.title_block
-    inner = box(f.x0 + 7.0, f.y0 + 7.0, f.x1 - 7.0, f.y1 - 7.0)
-    return inner.difference(box(t.x0 - 3.0, t.y0 - 3.0, t.x1 + 3.0, t.y1 + 3.0)).intersection(
-        frame.drawing_area)
-
-
 def _pack(panels: list[Panel], area) -> list[tuple[float, float] | None]:
     """Top-left-first packing inside the drawing area, in order; a panel that does not fit is
     skipped (None) so that the later, smaller ones can still fill the sheet."""
@@ -293,7 +271,7 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
         prims: list[Primitive] = []
         for panel, (dx, dy) in placed:
             for p in panel.primitives:
-                m = _moved(p, dx, dy)
+                m = moved(p, dx, dy)
                 prims.extend(m.expand() if isinstance(m, Table) else (m,))
         sheets.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
     return Composition(sheets, groups, mu, size, standard)
