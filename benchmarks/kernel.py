@@ -74,8 +74,8 @@ def main() -> None:
              f"{platform.python_version()}, numpy {np.__version__}. Times per position in ns "
              "(N = 1: per call in µs), best of repeated runs in one process.", "",
              "Like with like: numpy and fused are `Mechanism.solve(phi_deg, plans=kinematics, "
-             "points=case.points, links=case.links)` — r, v, a of the case's points and angle, ω, ε "
-             "of its links, as the closed form and pylinkage compute them (points and links: "
+             "points=case.points, links=case.links)` — r, v, a of the case's points and angle, "
+             "ω, ε of its links, as the closed form and pylinkage compute them (points and links: "
              "`benchmarks/mechplan_bench/config.py` CASES). The \"all\" columns are the default "
              "`solve()`: every point and link of the template.", "",
              "| mechanism | N | public numpy | public fused | public numpy (all) | "
@@ -141,7 +141,8 @@ def main() -> None:
                                    for k in ("fused", "numpy", "fused_all", "numpy_all"))
                 memory_rows.append(f"| {name} | {n:,} | {peaks} |")
     lines += ["", "## Compile time of the fused kernel", "",
-              "| mechanism | first call (JIT compile) | new process, same mechanism (on-disk cache) |",
+              ("| mechanism | first call (JIT compile) "
+               "| new process, same mechanism (on-disk cache) |"),
               "|---|---|---|", *compile_rows,
               "", "The kernel source is written to the cache folder (`MECHPLAN_CACHE`, default "
               "`~/.cache/mechplan/kernels`) and compiled with `numba.njit(cache=True)`, so other "
@@ -150,13 +151,15 @@ def main() -> None:
               "", "## Peak memory at the largest N (tracemalloc)", "",
               "| mechanism | N | public fused | public numpy | public fused (all) | "
               "public numpy (all) |", "|---|---|---|---|---|---|", *memory_rows,
-              "", "The fused path allocates only the requested outputs: one (N, width) block "
-              "(two columns a point, one a scalar) and the angles; the estimates are checked in the "
-              "kernel's loop and stored only when some result is flagged. The numpy path keeps "
+              "",
+              "The fused path allocates only the requested outputs: one (N, width) block "
+              "(two columns a point, one a scalar) and the angles; the estimates are checked in "
+              "the kernel's loop and stored only when some result is flagged. The numpy path keeps "
               "the values of every step the requested outputs need, and their estimates."]
     if over_budget:
-        lines += ["", "Not run (—): over the default memory budget of 2 GB (`MECHPLAN_MEMORY_BUDGET`"
-                  "), refused before any work: " + "; ".join(over_budget) + "."]
+        lines += ["", "Not run (—): over the default memory budget of 2 GB "
+                  "(`MECHPLAN_MEMORY_BUDGET`), refused before any work: "
+                  + "; ".join(over_budget) + "."]
     out = ROOT / "benchmarks" / "KERNEL_RESULTS.md"
     out.write_text("\n".join(lines) + "\n", encoding="utf-8")
     print(f"written {out}")

@@ -82,8 +82,8 @@ def mark(kind: str, cx: float, y: float) -> list[str]:
 def compose(g: dict[int, list[str]], ch: str) -> list[str] | None:
     nfd = unicodedata.normalize("NFD", ch)
     base, marks = nfd[0], nfd[1:]
-    if not marks or ord(base) not in g or any(m not in "\u0300\u0301\u0303\u0309\u0323\u0302\u0306\u031b"
-                                              for m in marks):
+    if not marks or ord(base) not in g or any(
+            m not in "\u0300\u0301\u0303\u0309\u0323\u0302\u0306\u031b" for m in marks):
         return None
     b = ord(base)
     if base == "i":
@@ -97,9 +97,11 @@ def compose(g: dict[int, list[str]], ch: str) -> list[str] | None:
             lines.append(stroke([(cx - 0.35, -1.2), (cx + 0.35, -1.2), (cx + 0.35, -1.9),
                                  (cx - 0.35, -1.9), (cx - 0.35, -1.2)]))
         elif m == "\u031b":
-            lines.append(stroke([(x1 - 0.3, top - 1.0), (x1 + 0.9, top - 0.2), (x1 + 1.1, top + 0.8)]))
+            lines.append(stroke([(x1 - 0.3, top - 1.0), (x1 + 0.9, top - 0.2),
+                                 (x1 + 1.1, top + 0.8)]))
         else:
-            lines += mark(m, cx + (1.2 if m in "\u0301\u0300\u0303\u0309" and y > top + 1.5 else 0.0), y)
+            lines += mark(m, cx + (1.2 if m in "\u0301\u0300\u0303\u0309" and y > top + 1.5
+                                   else 0.0), y)
             y += 2.0
     return lines
 
@@ -128,7 +130,8 @@ def main() -> None:
     # a glyph may reference only glyphs of this font
     for c, lines in g.items():
         assert all(int(x[1:], 16) in g for x in lines if x.startswith("C")), hex(c)
-    body = "\n".join(f"[{c:04x}] {chr(c)}\n" + "\n".join(lines) + "\n" for c, lines in sorted(g.items()))
+    body = "\n".join(f"[{c:04x}] {chr(c)}\n" + "\n".join(lines) + "\n"
+                     for c, lines in sorted(g.items()))
     OUT.write_text(HEADER + "\n" + body, encoding="utf-8")
     print(OUT, len(g), "glyphs")
 

@@ -30,7 +30,8 @@ def solved(name: str, at_deg: float):
 
 @dataclass
 class PlanSpec:
-    """How one plan is drawn: its scale factor, where its pole (or first point) goes on the sheet."""
+    """How one plan is drawn: its scale factor, where its pole (or first point) goes on the
+    sheet."""
 
     mu: float
     origin: tuple[float, float]
@@ -60,7 +61,8 @@ def exact_sheet(sol, specs: dict[Plan, PlanSpec], k: int = 0) -> Student:
             if s.plan is not plan or (spec.group and s.group != spec.group):
                 continue
             for sid in (s.start, s.end):
-                st.points[(plan, c[sid].label)] = np.asarray(spec.origin) + (ev[sid][k] - base) / spec.mu
+                st.points[(plan, c[sid].label)] = (np.asarray(spec.origin)
+                                                   + (ev[sid][k] - base) / spec.mu)
     return st
 
 

@@ -1,4 +1,5 @@
-"""`Construction.evaluate(phi, overrides=...)`: a plan re-derived from given (a student's) points."""
+"""`Construction.evaluate(phi, overrides=...)`: a plan re-derived from given (a student's)
+points."""
 
 from __future__ import annotations
 

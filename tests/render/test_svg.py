@@ -68,7 +68,8 @@ def test_svg_text_fonts_and_arrowheads() -> None:
     assert texts["Nguyễn Văn An"].get("data-tag") == "AUTHOR"
     # 3.5 mm capital height needs a larger em size
     assert float(texts[TEXTS["vi"]].get("font-size")) > 3.5
-    heads = [p for p in root.iter("{http://www.w3.org/2000/svg}polygon") if p.get("fill") == "black"]
+    heads = [p for p in root.iter("{http://www.w3.org/2000/svg}polygon")
+             if p.get("fill") == "black"]
     assert len(heads) == 3  # two arrowheads and one filled polygon
 
 

@@ -13,7 +13,8 @@ from mechplan.drafting.primitives import Text
 from mechplan.render.svg import to_svg
 from mechplan.studies import solve_file
 
-FACE = re.compile(r"font-family: '([^']+)'; src: url\(data:font/(ttf|otf);base64,([A-Za-z0-9+/=]+)\)")
+FACE = re.compile(r"font-family: '([^']+)'; "
+                  r"src: url\(data:font/(ttf|otf);base64,([A-Za-z0-9+/=]+)\)")
 
 
 def _faces(svg: str) -> dict[str, TTFont]:

@@ -109,7 +109,8 @@ def test_drawings_folder_is_up_to_date(path):
         stored = (ROOT / "drawings" / f"{sheet.name}.svg").read_text(encoding="utf-8")
         assert stored.split("\n", 1)[-1] == svg.split("\n", 1)[-1] or stored.endswith(svg)
         doc = ezdxf.readfile(ROOT / "drawings" / f"{sheet.name}.dxf")
-        fresh = ezdxf.read(io.StringIO(dxf_backend.to_bytes(sheet).decode("utf-8")))  # R2013 is UTF-8
+        # R2013 is UTF-8
+        fresh = ezdxf.read(io.StringIO(dxf_backend.to_bytes(sheet).decode("utf-8")))
         assert _signature(doc) == _signature(fresh)
 
 
@@ -179,7 +180,8 @@ def test_librecad_reads_a_full_sheet_at_true_scale(tmp_path, require):
     pdfplumber = pytest.importorskip("pdfplumber")
     src = ROOT / "drawings" / "four_bar.dxf"
     env = {**os.environ, "QT_QPA_PLATFORM": "offscreen"}
-    subprocess.run(["librecad", "dxf2pdf", "-s", "1", "-f", "0,0,0,0", "-t", str(tmp_path), str(src)],
+    subprocess.run(["librecad", "dxf2pdf", "-s", "1", "-f", "0,0,0,0", "-t", str(tmp_path),
+                    str(src)],
                    env=env, capture_output=True, timeout=120, check=True)
     with pdfplumber.open(tmp_path / "four_bar.pdf") as pdf:
         page = pdf.pages[0]

@@ -48,7 +48,8 @@ def test_chosen_font_has_every_glyph(require) -> None:
 def test_placeholder_glyphs_count_as_missing() -> None:
     box = SimpleNamespace(numberOfContours=1, coordinates=[(84, 1511), (824, 1511), (829, 0),
                                                            (94, 0)])
-    bar = SimpleNamespace(numberOfContours=1, coordinates=[(0, 0), (100, 0), (100, 1500), (0, 1500)])
+    bar = SimpleNamespace(numberOfContours=1,
+                          coordinates=[(0, 0), (100, 0), (100, 1500), (0, 1500)])
     o = SimpleNamespace(numberOfContours=2, coordinates=[(0, 0)] * 8)
     assert _is_placeholder(box, 2048)
     assert not _is_placeholder(bar, 2048)  # a narrow stroke such as "I" or "l"

@@ -55,8 +55,8 @@ def _text_box(t: Text):
     return box(x0, y - 0.2 * t.height_mm, x0 + w, y + 1.1 * t.height_mm)
 
 
-@pytest.mark.parametrize(("size", "standard"), list(itertools.product(PAPER_SIZES_MM, ["iso", "gost",
-                                                                                  "tcvn"])))
+@pytest.mark.parametrize(("size", "standard"),
+                         list(itertools.product(PAPER_SIZES_MM, ["iso", "gost", "tcvn"])))
 def test_frame_margins_title_block_and_free_area(size: str, standard: str) -> None:
     layout = make_frame(size, standard, FIELDS, language="vi")
     w, h = paper_size(size)

@@ -74,7 +74,8 @@ def test_every_template_fits_every_sheet_size_without_overlap(path, size):
     total = len(comp.sheets)
     for i, (sheet, placed) in enumerate(zip(comp.sheets, comp.placements)):
         assert placed, f"sheet {i + 1} is empty"
-        assert sheet.attributes["sheet_number"] == str(i + 1) and sheet.attributes["sheets_total"] == str(total)
+        assert sheet.attributes["sheet_number"] == str(i + 1)
+        assert sheet.attributes["sheets_total"] == str(total)
         boxes = []
         for panel, (dx, dy) in placed:
             x0, y0, x1, y1 = panel.bounds()

@@ -108,7 +108,8 @@ def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
         try:
             value = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
         except SceneError as exc:
-            raise CheckError(T("error.mu_option", option=f"--mu-{key.upper() if key == 'f' else key}",
+            option = f"--mu-{key.upper() if key == 'f' else key}"
+            raise CheckError(T("error.mu_option", option=option,
                                text=text, detail=exc.detail)) from None
         if not value > 0:
             raise CheckError(T("error.positive", option=f"--mu-{key}", value=text))

@@ -96,7 +96,8 @@ def prepare(ctx: Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> Drawn:
     reference = next((s for s in segs if s.start in dp.points and s.end in dp.points), None)
     if mu is None:
         if reference is not None:
-            exact = float(np.hypot(*(exact_at(ctx, reference.end, k) - exact_at(ctx, reference.start, k))))
+            exact = float(np.hypot(*(exact_at(ctx, reference.end, k)
+                                     - exact_at(ctx, reference.start, k))))
             drawn = math.dist(dp.points[reference.end].at, dp.points[reference.start].at)
             if drawn > 1e-9 and exact > 0:
                 mu = exact / drawn

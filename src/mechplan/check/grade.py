@@ -397,7 +397,8 @@ def _segment_row(ctx: Ctx, d: Drawn, k: int, start: str, end: str, name: str, qu
         row.hint = T("hint.reference")
     if row.verdict != WRONG:
         return row
-    # why: swapped labels, a new error at one end, carried from earlier items, or small ones adding up
+    # why: swapped labels, a new error at one end, carried from earlier items, or small ones
+    # adding up
     if start in d.swapped or end in d.swapped:
         row.cause = SWAPPED
         x = end if end in d.swapped else start

@@ -61,7 +61,8 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> Text:
     lbl = ctx.labels
     label = lbl(step.id)
     own_here = _pt(ctx.own(step.id))
-    off = ctx.mm(plan, float(np.hypot(*(at - own_here)))) if np.all(np.isfinite(own_here)) else math.nan
+    off = (ctx.mm(plan, float(np.hypot(*(at - own_here))))
+           if np.all(np.isfinite(own_here)) else math.nan)
 
     def tail(body: Text) -> Text:
         return T("rule.tail", body=body, off=off)

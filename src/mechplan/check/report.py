@@ -1,4 +1,5 @@
-"""The check report: rows per point, segment and value, root-cause findings, notes; text and JSON."""
+"""The check report: rows per point, segment and value, root-cause findings, notes; text and
+JSON."""
 
 from __future__ import annotations
 

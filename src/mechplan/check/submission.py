@@ -1,4 +1,5 @@
-"""Read a submission: a hand-drawn DXF (lines, polylines, text labels) or a table of measured values.
+"""Read a submission: a hand-drawn DXF (lines, polylines, text labels) or a table of measured
+values.
 
 Nothing here knows the mechanism: the reader returns drawn lines, texts and "name = value" entries
 with where each came from (file, entity handle, line number); :mod:`mechplan.check.match` gives them
@@ -216,7 +217,8 @@ _ROW_KEYS = {"mm", "length", "length_mm", "mu", "value", "quantity", "unit"}
 
 
 def _is_row(d: dict[str, Any]) -> bool:
-    return bool(d) and set(d) <= _ROW_KEYS | {"name", "segment", "plan"} and bool(set(d) & _ROW_KEYS)
+    return (bool(d) and set(d) <= _ROW_KEYS | {"name", "segment", "plan"}
+            and bool(set(d) & _ROW_KEYS))
 
 
 def _str(v: Any) -> str | None:

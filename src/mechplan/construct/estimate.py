@@ -37,7 +37,8 @@ ROUNDINGS_PER_STEP = 2.0
 
 @dataclass
 class ErrorEstimate:
-    """Relative error bounds per step id (float32, NaN/inf where no bound exists) and their scales."""
+    """Relative error bounds per step id (float32, NaN/inf where no bound exists) and their
+    scales."""
 
     relative_of: dict[str, Array] = field(default_factory=dict)
     scale: dict[str, float] = field(default_factory=dict)

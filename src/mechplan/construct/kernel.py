@@ -144,7 +144,8 @@ def _circle_circle(g: _Gen, s: Step, n: str) -> str:
     g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", "_d = _hyp(_dx, _dy)",
            f"_gap = max(_d - ({r1} + {r2}), abs({r1} - {r2}) - _d)",
            f"_a = _div({r1} * {r1} - {r2} * {r2} + _d * _d, 2.0 * _d)",
-           f"_h2 = _div((({r1} + {r2}) ** 2 - _d * _d) * (_d * _d - ({r1} - {r2}) ** 2), 4.0 * _d * _d)",
+           f"_h2 = _div((({r1} + {r2}) ** 2 - _d * _d) * (_d * _d - ({r1} - {r2}) ** 2), "
+           "4.0 * _d * _d)",
            "_h = math.sqrt(_h2) if _h2 >= 0.0 else NAN",
            "_h = 0.0 if (_h2 < 0.0 and _gap <= 0.0) else _h",
            "_ux = _div(_dx, _d)", "_uy = _div(_dy, _d)", f"_sh = {sigma} * _h",
@@ -188,8 +189,10 @@ def _locus_line(g: _Gen, s: Step, n: str) -> None:
     dir_angle = float(s.param("dir_angle"))
     if len(s.inputs) == 1:
         # rotate(offset, 0) and direction(0 + dir_angle), as the vectorised path computes them
-        g.emit(f"{n}px = {bx} + (1.0 * {ox} - 0.0 * {oy})", f"{n}py = {by} + (0.0 * {ox} + 1.0 * {oy})",
-               f"{n}ux = math.cos(0.0 + {_f(dir_angle)})", f"{n}uy = math.sin(0.0 + {_f(dir_angle)})")
+        g.emit(f"{n}px = {bx} + (1.0 * {ox} - 0.0 * {oy})",
+               f"{n}py = {by} + (0.0 * {ox} + 1.0 * {oy})",
+               f"{n}ux = math.cos(0.0 + {_f(dir_angle)})",
+               f"{n}uy = math.sin(0.0 + {_f(dir_angle)})")
         return
     th = g.name(s.inputs[1])
     g.emit(f"_c = math.cos({th})", f"_s = math.sin({th})",
@@ -197,15 +200,18 @@ def _locus_line(g: _Gen, s: Step, n: str) -> None:
     if dir_angle == 0.0:
         g.emit(f"{n}ux = _c", f"{n}uy = _s")
     else:
-        g.emit(f"{n}ux = math.cos({th} + {_f(dir_angle)})", f"{n}uy = math.sin({th} + {_f(dir_angle)})")
+        g.emit(f"{n}ux = math.cos({th} + {_f(dir_angle)})",
+               f"{n}uy = math.sin({th} + {_f(dir_angle)})")
 
 
 def _carrier_angle(g: _Gen, s: Step, n: str) -> str:
     (cx, cy), (px, py) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
     qx, qy = (_f(v) for v in s.param("q0"))
     g.emit(f"_rx = {px} - {cx}", f"_ry = {py} - {cy}", "_rad = _hyp(_rx, _ry)",
-           f"_dux = math.cos({_f(s.param('dir_angle'))})", f"_duy = math.sin({_f(s.param('dir_angle'))})")
-    _circle_line_core(g, f"_hit{n}", "0.0", "0.0", "_rad", qx, qy, "_dux", "_duy", _f(s.param("sigma")))
+           f"_dux = math.cos({_f(s.param('dir_angle'))})",
+           f"_duy = math.sin({_f(s.param('dir_angle'))})")
+    _circle_line_core(g, f"_hit{n}", "0.0", "0.0", "_rad", qx, qy, "_dux", "_duy",
+                      _f(s.param("sigma")))
     g.emit(f"{n} = math.atan2(_ry, _rx) - math.atan2(_hit{n}y, _hit{n}x)", f"sn{n} = sn_hit{n}")
     return f"sn{n}"
 
@@ -360,7 +366,8 @@ def _hyp(x, y):
 
 @dataclass(frozen=True)
 class Kernel:
-    """A compiled construction: ``kernel(phi)`` → values and relative error estimates of the outputs.
+    """A compiled construction: ``kernel(phi)`` → values and relative error estimates of the
+    outputs.
 
     The outputs are the columns of one (N, width) block: a point takes two (x, y), a scalar one
     (``columns[j]`` is target j's slice). While it loops, the kernel also finds whether any position
@@ -391,7 +398,8 @@ class Kernel:
 
     def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
                                                    np.ndarray]:
-        """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build mask)."""
+        """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build
+        mask)."""
         phi = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
         block, rel, bad, _ = self.run(phi)
         block.flags.writeable = False

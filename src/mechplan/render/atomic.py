@@ -52,7 +52,8 @@ def atomic_open(path: str | os.PathLike[str]) -> Iterator[BinaryIO]:
         try:
             os.replace(tmp, target)
         except OSError as exc:
-            raise DrawingError(f"cannot replace the file ({os_reason(exc)})", file=str(path)) from None
+            raise DrawingError(f"cannot replace the file ({os_reason(exc)})",
+                               file=str(path)) from None
     except BaseException:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(tmp)

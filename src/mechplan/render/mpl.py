@@ -136,7 +136,8 @@ def _text(ax: Any, t: Text) -> None:
         _scripted(ax, t, x, y, size_mm, families, ha)
         return
     if t.width_factor == 1.0:
-        ax.text(x, y, plain(t.string) if has_scripts(t.string) else t.string, fontsize=size_mm * PT_PER_MM, fontfamily=families,
+        ax.text(x, y, plain(t.string) if has_scripts(t.string) else t.string,
+                fontsize=size_mm * PT_PER_MM, fontfamily=families,
                 rotation=t.rotation_deg, rotation_mode="anchor", ha=ha, va="baseline",
                 color=t.role.style.ink, transform=ax.transData)
         return

@@ -20,7 +20,8 @@ LAYER = "PROFILE"
 
 
 def profile_bytes(points_mm: Sequence[tuple[float, float]], layer: str = LAYER) -> bytes:
-    """Return the DXF file of one closed polyline through ``points_mm`` (first point not repeated)."""
+    """Return the DXF file of one closed polyline through ``points_mm`` (first point not
+    repeated)."""
     pts = [(float(x), float(y)) for x, y in points_mm]
     if len(pts) < 3:
         raise DrawingError(f"a closed profile must have at least 3 points (got {len(pts)})")

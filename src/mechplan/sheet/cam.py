@@ -47,7 +47,8 @@ def units_of(d: CamDesign, lang: str) -> Units:
         return message(f"cam.unit.{name}", lang)
     if d.spec.follower.motion is Motion.TRANSLATING:
         return Units(1e3, 1e3, u("mm"), u("mm"), u("mm"), u("m_s"), u("m_s2"))
-    return Units(180.0 / math.pi, 1.0, u("deg"), u("rad_rad"), u("per_rad"), u("rad_s"), u("rad_s2"))
+    return Units(180.0 / math.pi, 1.0, u("deg"), u("rad_rad"), u("per_rad"), u("rad_s"),
+                 u("rad_s2"))
 
 
 def table_rows(d: CamDesign, lang: str) -> tuple[list[str], list[list[str]]]:

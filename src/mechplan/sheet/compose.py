@@ -243,7 +243,8 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
     mu = dict(sol.scales) if own else decide_scales(scene, sol.construction, sol.ev, sol.plans,
                                                     size, standard)
     r = room(size, standard, lang)
-    parts = [p for p in (_kinematics_panels(sol, mu, lang, r), _force_panels(sol, mu, lang, r)) if p]
+    parts = [p for p in (_kinematics_panels(sol, mu, lang, r), _force_panels(sol, mu, lang, r))
+             if p]
     groups: list[list[tuple[Panel, tuple[float, float]]]] = []
     base = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION], lang)}
     base.update({k: v for k, v in scene.drawing.title_block.items() if v})
@@ -259,9 +260,10 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
                 x0, y0, x1, y1 = rest[0].bounds()
                 fixed = ", ".join(f"{k} = {v:g}" for k, v in scene.drawing.scales.items())
                 raise DrawingError(
-                    f"the panel '{rest[0].name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not fit on "
-                    f"an {size} sheet at the scale factors {fixed or 'chosen'}; use a larger sheet "
-                    "(--sheet A1 or A0) or larger scale factors in [drawing.scales]", file=scene.path)
+                    f"the panel '{rest[0].name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not "
+                    f"fit on an {size} sheet at the scale factors {fixed or 'chosen'}; use a "
+                    "larger sheet (--sheet A1 or A0) or larger scale factors in [drawing.scales]",
+                    file=scene.path)
             groups.append([(p, o) for p, o in zip(rest, offsets) if o is not None])
             rest = [p for p, o in zip(rest, offsets) if o is None]
     sheets: list[Sheet] = []

@@ -2,8 +2,8 @@
 
 Every capability that plots a quantity against an angle or another quantity (kinematic diagrams,
 M_red(φ), works, ΔT–J, s(φ), T(φ), the gear velocity plan) draws it through :func:`diagram_panel`,
-so all diagrams of a sheet set look alike: thin axes with arrowheads, ticks at round values, curves in
-the outline line, the scale factor of each axis written under the diagram.
+so all diagrams of a sheet set look alike: thin axes with arrowheads, ticks at round values, curves
+in the outline line, the scale factor of each axis written under the diagram.
 """
 
 from __future__ import annotations
@@ -74,7 +74,8 @@ class Diagram:
         return (self.origin[0] + x / self.mu_x, self.origin[1] + y / self.mu_y)
 
 
-def scale_for(values: Sequence[float] | np.ndarray, length_mm: float, include_zero: bool = True) -> float:
+def scale_for(values: Sequence[float] | np.ndarray, length_mm: float,
+              include_zero: bool = True) -> float:
     """Round scale factor so the range of ``values`` (with 0 if asked) fits ``length_mm``."""
     v = np.asarray(values, dtype=float)
     v = v[np.isfinite(v)]
@@ -84,7 +85,9 @@ def scale_for(values: Sequence[float] | np.ndarray, length_mm: float, include_ze
     if include_zero:
         lo, hi = min(lo, 0.0), max(hi, 0.0)
     span = hi - lo
-    return round_scale(span / length_mm) if span > 0 else round_scale(max(abs(hi), 1e-300) / length_mm)
+    if span > 0:
+        return round_scale(span / length_mm)
+    return round_scale(max(abs(hi), 1e-300) / length_mm)
 
 
 def _tick_step(mu: float, min_gap_mm: float = 12.0) -> float:
@@ -124,7 +127,8 @@ def _polylines(xs: np.ndarray, ys: np.ndarray, role: Role, closed: bool) -> list
 
 
 def diagram_panel(name: str, title: str, curves: Sequence[Curve], x_axis: Axis, y_axis: Axis,
-                  language: str, *, markers: Sequence[Marker] = (), hlines: Sequence[tuple[float, str]] = (),
+                  language: str, *, markers: Sequence[Marker] = (),
+                  hlines: Sequence[tuple[float, str]] = (),
                   x_zero: bool = True, y_zero: bool = True) -> Diagram:
     """Draw curves on a pair of axes; return the panel and the scale factors.
 

@@ -116,9 +116,11 @@ def indicator_panel(study: EngineData, lang: str) -> Panel:
         px, py = ox - t * math.cos(phi), cy - t * math.sin(phi)
         prims.append(Line((ox, cy), (px, py), Role.THIN))
         prims.append(Line((px, py), (px, 0.0), Role.DASHED))
-        prims.append(Text((px, py - 1.0), f"{30 * k}°", 1.8, halign=HAlign.CENTER, valign=VAlign.TOP))
+        prims.append(Text((px, py - 1.0), f"{30 * k}°", 1.8, halign=HAlign.CENTER,
+                          valign=VAlign.TOP))
     prims.append(Text((cx - r_mm, cy - r_mm - 4.0),
-                      message("engine.label.brix", lang, shift=_num(spec.R * lam / 2.0 * 1e3, lang)),
+                      message("engine.label.brix", lang,
+                              shift=_num(spec.R * lam / 2.0 * 1e3, lang)),
                       TEXT_H, valign=VAlign.TOP))
     return dia.panel
 

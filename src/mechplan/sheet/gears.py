@@ -150,7 +150,8 @@ def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, langu
         others = [(", ".join(map(str, c.z)), _mm(c.size, lang, 1), number(c.ratio, 4, lang))
                   for c in res.others]
         if others:
-            panels.append(table_panel("others", message("gears.sheet.others", lang, count=res.found),
+            panels.append(table_panel("others",
+                                      message("gears.sheet.others", lang, count=res.found),
                                       ("z", f"D, {message('gears.unit.mm', lang)}", "u"), others))
         per_s = message("gears.unit.per_s", lang)
         panels.append(table_panel("omega", message("gears.report.omega", lang),
@@ -163,7 +164,8 @@ def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, langu
                                   (message("gears.col.quantity", lang),
                                    message("gears.col.gear", lang, j=1),
                                    message("gears.col.gear", lang, j=2)),
-                                  pair_rows(sol.pair, lang), tuple(pair_lines(sol.pair, lang)[1:5])))
+                                  pair_rows(sol.pair, lang),
+                                  tuple(pair_lines(sol.pair, lang)[1:5])))
     title = sol.scene.title or message("gears.sheet.title", lang)
     return framed_sheets(panels, size=size or "A1", standard=standard or "iso", language=lang,
                          name=name, fields={"title": title})

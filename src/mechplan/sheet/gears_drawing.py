@@ -85,7 +85,8 @@ def plan_panels(res: PlanetaryResult, lang: str) -> list[Panel]:
     dia.panel.primitives.extend(_scheme(res, mu_l))
     dia.panel.primitives.append(Text((-95.0, -8.0), message("gears.sheet.scheme", lang),
                                      TITLE_H, valign=VAlign.TOP))
-    # angular velocity plan: rays from the pole P parallel to the plan's lines cut the reference line
+    # angular velocity plan: rays from the pole P parallel to the plan's lines cut the reference
+    # line
     w = {n: p.omega[n] for n in p.names}
     w_max = max(abs(v) for v in w.values()) or 1.0
     H = max(5.0, math.floor(PLAN_MM * mu_v / (mu_l * w_max) / 5.0) * 5.0)
@@ -115,19 +116,23 @@ def plan_panels(res: PlanetaryResult, lang: str) -> list[Panel]:
     return [dia.panel, Panel("angular", prims)]
 
 
-def _arc(c: tuple[float, float], r: float, a0: float, a1: float, n: int = 40) -> list[tuple[float, float]]:
+def _arc(c: tuple[float, float], r: float, a0: float, a1: float,
+         n: int = 40) -> list[tuple[float, float]]:
     t = np.linspace(a0, a1, n)
     return list(zip((c[0] + r * np.cos(t)).tolist(), (c[1] + r * np.sin(t)).tolist()))
 
 
-def _place(pts: np.ndarray, c: tuple[float, float], angle: float, s: float) -> list[tuple[float, float]]:
+def _place(pts: np.ndarray, c: tuple[float, float], angle: float,
+           s: float) -> list[tuple[float, float]]:
     ca, sa = math.cos(angle), math.sin(angle)
     x, y = pts[:, 0], pts[:, 1]
-    return list(zip((c[0] + s * (ca * x - sa * y)).tolist(), (c[1] + s * (sa * x + ca * y)).tolist()))
+    return list(zip((c[0] + s * (ca * x - sa * y)).tolist(),
+                    (c[1] + s * (sa * x + ca * y)).tolist()))
 
 
 def mesh_scale(pair: Pair) -> float:
-    """Drawing scale (paper mm per mm): the largest of 10, 5, 4, 2.5, 2, 1 … fitting 5 pitches in 280 mm."""
+    """Drawing scale (paper mm per mm): the largest of 10, 5, 4, 2.5, 2, 1 … fitting 5 pitches
+    in 280 mm."""
     m_mm = pair.spec.module * 1000
     for s in (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.25):
         if 5.0 * math.pi * m_mm * s <= 280.0:

@@ -44,7 +44,8 @@ def output_link(mech: Mechanism) -> Output | None:
         if lk.slides_on and mech.guides[lk.slides_on].link == GROUND:
             g = mech.guides[lk.slides_on]
             found = Output(lk.id, next(iter(lk.points)), (math.cos(g.angle), math.sin(g.angle)))
-        elif any(p.kind is PairKind.REVOLUTE and GROUND in (p.a, p.b) for p in mech.pairs_of(lk.id)):
+        elif any(p.kind is PairKind.REVOLUTE and GROUND in (p.a, p.b)
+                 for p in mech.pairs_of(lk.id)):
             found = Output(lk.id, None, (1.0, 0.0))
     return found
 
@@ -111,7 +112,8 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     legend = (f"—— {message('layout.diagram.exact', lang)}   – – – "
               f"{message('layout.diagram.graphical', lang)}")
     panels: list[Panel] = []
-    specs = [("displacement", symbols[0], units[0], [Curve(x, s_exact), Curve(x_k, s_pos, label=None)])]
+    specs = [("displacement", symbols[0], units[0],
+              [Curve(x, s_exact), Curve(x_k, s_pos, label=None)])]
     if "v" in exact:
         specs.append(("velocity", symbols[1], units[1],
                       [Curve(x, exact["v"]), Curve(xv, v_graph, role=Role.DASHED)]))

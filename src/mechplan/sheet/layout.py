@@ -46,8 +46,10 @@ def drawing_area(frame: FrameLayout) -> BaseGeometry:
         frame.drawing_area)
 
 
-def pack(panels: Sequence[Panel], area: BaseGeometry) -> tuple[list[tuple[float, float]], int | None]:
-    """Top-left-first packing; return the offsets of the panels placed and the first that did not fit."""
+def pack(panels: Sequence[Panel],
+         area: BaseGeometry) -> tuple[list[tuple[float, float]], int | None]:
+    """Top-left-first packing; return the offsets of the panels placed and the first that did not
+    fit."""
     inside = prep(area)
     ax0, ay0, ax1, ay1 = area.bounds
     placed: list[BaseGeometry] = []
@@ -89,8 +91,9 @@ def framed_sheets(panels: Sequence[Panel], *, size: str, standard: str, language
         offsets, failed = pack(rest, drawing_area(frame))
         if failed == 0:
             x0, y0, x1, y1 = rest[0].bounds()
-            raise DrawingError(f"the panel '{rest[0].name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does "
-                               f"not fit on an {size} sheet; use a larger sheet (--sheet A1 or A0)")
+            raise DrawingError(f"the panel '{rest[0].name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) "
+                               f"does not fit on an {size} sheet; use a larger sheet "
+                               "(--sheet A1 or A0)")
         n = len(offsets) if failed is not None else len(rest)
         groups.append((rest[:n], offsets))
         rest = rest[n:]

@@ -3,9 +3,9 @@
 `mechplan solve` (its segment tables and JSON), `mechplan draw` and `mechplan check` all take their
 scale factors from :func:`decide_scales`, so the lengths a student copies from the report are the
 lengths on the sheet. Values are round (1, 2, 2.5, 4, 5 × 10^k); a value fixed by the scene's
-``[drawing.scales]`` is kept on the scene's own sheet (on another size it is kept when it fits, else it shrinks
-like a free one). The free values are chosen so that every plan fits its place on the
-chosen sheet: the position plan about half the drawing area, the velocity plans of all positions
+``[drawing.scales]`` is kept on the scene's own sheet (on another size it is kept when it fits,
+else it shrinks like a free one). The free values are chosen so that every plan fits its place on
+the chosen sheet: the position plan about half the drawing area, the velocity plans of all positions
 (or of the chosen ones) together about a third, each other plan with its tables on a sheet alone.
 """
 
