@@ -17,17 +17,17 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))
 
-from construct import singular_refs as ref  # noqa: E402
-from construct.test_error_estimates import (  # noqa: E402
+from construct import singular_refs as ref
+from construct.test_error_estimates import (
     FOUR_BAR_CHANGE,
     OFFSETS_DEG,
     SLIDER_TOGGLE,
     SLOTTED_THROUGH_PIVOT,
 )
 
-from mechplan.construct.estimate import estimate_errors  # noqa: E402
-from mechplan.scene import load_scene, parse_scene  # noqa: E402
-from mechplan.solve import build, targets_for  # noqa: E402
+from mechplan.construct.estimate import estimate_errors
+from mechplan.scene import load_scene, parse_scene
+from mechplan.solve import build, targets_for
 
 KINEMATIC = ("position", "velocity", "acceleration")
 N = 100_000

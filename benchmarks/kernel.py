@@ -28,14 +28,14 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
-from mechplan_bench.config import CASES  # noqa: E402
-from mechplan_bench.formulas import closed_form  # noqa: E402
-from mechplan_bench.model import Model  # noqa: E402
-from mechplan_bench.peers import installed, pylinkage_runner  # noqa: E402
+from mechplan_bench.config import CASES
+from mechplan_bench.formulas import closed_form
+from mechplan_bench.model import Model
+from mechplan_bench.peers import installed, pylinkage_runner
 
-import mechplan  # noqa: E402
-from mechplan.fast import numba_available  # noqa: E402
-from mechplan.limits import LimitError  # noqa: E402
+import mechplan
+from mechplan.fast import numba_available
+from mechplan.limits import LimitError
 
 KINEMATIC = ("position", "velocity", "acceleration")
 

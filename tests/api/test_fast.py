@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from construct.test_error_estimates import SLOTTED_THROUGH_PIVOT
 from scenes import TEMPLATES
 
 import mechplan
-from construct.test_error_estimates import SLOTTED_THROUGH_PIVOT
 from mechplan.fast import numba_available
 
 KINEMATIC = ("position", "velocity", "acceleration")

@@ -2,9 +2,9 @@
 
 import numpy as np
 import pytest
+from scenes import build_text, four_bar_text, slider_crank_text
 
 from mechplan.errors import SceneError
-from scenes import build_text, four_bar_text, slider_crank_text
 
 PHI = np.linspace(0, 2 * np.pi, 721)
 

@@ -11,9 +11,9 @@ import math
 
 import numpy as np
 import pytest
+from construct import singular_refs as ref
 from scenes import TEMPLATES
 
-from construct import singular_refs as ref
 from mechplan.construct.estimate import DEFAULT_TOLERANCE, estimate_errors
 from mechplan.scene import load_scene, parse_scene
 from mechplan.solve import build, targets_for

@@ -11,12 +11,12 @@ import pytest
 from mechplan.construct.builder import build_construction
 from mechplan.construct.ops import EVALUATORS
 from mechplan.construct.plans import force
-from mechplan.construct.terms import Relation
 from mechplan.construct.step import Kind, Op, Plan
+from mechplan.construct.terms import Relation
 from mechplan.dynamics import Loading
+from mechplan.model.loads import LoadKind, LoadSpec
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
-from mechplan.model.loads import LoadKind, LoadSpec
 
 ROOT = Path(__file__).resolve().parents[2]
 PLANS = ("position", "velocity", "acceleration", "force")

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from construct.test_error_estimates import SLOTTED_THROUGH_PIVOT
 from scenes import TEMPLATES
 
-from construct.test_error_estimates import SLOTTED_THROUGH_PIVOT
 from mechplan.construct.estimate import estimate_errors
 from mechplan.construct.kernel import KernelUnavailable, compile_kernel
 from mechplan.construct.trust import failures

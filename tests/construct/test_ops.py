@@ -8,15 +8,14 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from mechplan.construct.builder import build_construction
 from mechplan.construct.ops import SPECS, Source, spec
 from mechplan.construct.step import Op
-from mechplan.i18n import LANGUAGES, has_message
-
-from mechplan.construct.builder import build_construction
 from mechplan.dynamics import Loading
+from mechplan.i18n import LANGUAGES, has_message
+from mechplan.model.loads import LoadKind, LoadSpec
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene
-from mechplan.model.loads import LoadKind, LoadSpec
 
 ROOT = Path(__file__).resolve().parents[2]
 

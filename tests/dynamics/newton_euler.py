@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from mechplan.dynamics import Loading
-from mechplan.model.mechanism import GROUND, Mechanism, PairKind
 from mechplan.model.loads import Gravity, LoadKind, LoadSpec, MassSpec
+from mechplan.model.mechanism import GROUND, Mechanism, PairKind
 
 
 def _cross(a, b):

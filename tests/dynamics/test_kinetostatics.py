@@ -15,10 +15,10 @@ from mechplan.construct.builder import build_construction
 from mechplan.construct.plans.force import pair_key
 from mechplan.dynamics import Loading
 from mechplan.dynamics.kinetostatics import analyse_forces, balancing_force
+from mechplan.model.loads import Gravity, LoadKind, LoadSpec, MassSpec
 from mechplan.model.mechanism import GROUND, PairKind
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
-from mechplan.model.loads import Gravity, LoadKind, LoadSpec, MassSpec
 
 from .dyad_scenes import CYCLE, PINNED_SLIDERS, SCOTCH_YOKE
 from .newton_euler import Kinematics, applied_loads, rich_loading, solve_global

@@ -9,8 +9,8 @@ import pytest
 
 from mechplan.dynamics import Loading
 from mechplan.errors import SceneError
-from mechplan.scene import load_scene, parse_scene
 from mechplan.model.loads import LoadKind, LoadSpec, MassSpec
+from mechplan.scene import load_scene, parse_scene
 
 ROOT = Path(__file__).resolve().parents[2]
 BASE = (ROOT / "templates" / "slider_crank.toml").read_text(encoding="utf-8")

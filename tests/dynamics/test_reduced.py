@@ -12,9 +12,9 @@ from independent import closed_form
 from mechplan.construct.builder import build_construction
 from mechplan.dynamics import Loading, reduced_inertia, reduced_moment
 from mechplan.dynamics.reduced import reduced_of
+from mechplan.model.loads import Gravity
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
-from mechplan.model.loads import Gravity
 
 from .dyad_scenes import CYCLE, PINNED_SLIDERS, SCOTCH_YOKE
 

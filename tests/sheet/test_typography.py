@@ -10,13 +10,13 @@ import pytest
 from scenes import ROOT
 
 from mechplan.check.labels import clean_text
+from mechplan.drafting.typography import mtext, plain, runs
 from mechplan.render import dxf as dxf_backend
 from mechplan.render import mpl as mpl_backend
 from mechplan.render import svg as svg_backend
 from mechplan.scene import load_scene
 from mechplan.sheet.compose import compose, scale_field
 from mechplan.sheet.primitives import Sheet, Text
-from mechplan.drafting.typography import mtext, plain, runs
 from mechplan.solve import solve
 
 
