@@ -13,6 +13,7 @@ kinematics. Pressures are absolute (Pa), volumes m³, angles rad from the TDC th
 from __future__ import annotations
 
 import math
+from abc import ABC, abstractmethod
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 
@@ -34,11 +35,12 @@ def gauss(f: Callable[[Array], Array], a: float, b: float) -> float:
     return float(0.5 * (b - a) * np.dot(_GL_W, f(x)))
 
 
-class Piece:
-    """p(V) on one interval of a branch."""
+class Piece(ABC):
+    """p(V) on one interval of a branch (constant, polytropic, straight line …)."""
 
+    @abstractmethod
     def __call__(self, V: Array) -> Array:
-        raise NotImplementedError
+        """Pressure (Pa) at volumes V (m³)."""
 
     def integral(self, V0: float, V1: float) -> float:
         """∫ p dV over [V0, V1]."""
