@@ -211,8 +211,9 @@ def _firing_order(e: Table, n: int) -> tuple[int, ...]:
     raw = e.raw("firing_order", list(range(1, n + 1)) if n <= 2 else None)
     if raw is None:
         raise e.error("firing_order", f"is missing; list every cylinder 1…{n} once in firing order")
-    if (not isinstance(raw, list) or sorted(raw) != list(range(1, n + 1))
-            or not all(isinstance(v, int) and not isinstance(v, bool) for v in raw)):
+    if (not isinstance(raw, list)
+            or not all(isinstance(v, int) and not isinstance(v, bool) for v in raw)
+            or sorted(raw) != list(range(1, n + 1))):
         raise e.error("firing_order", f"must list every cylinder 1…{n} exactly once (got {raw!r})")
     return tuple(raw)
 

@@ -55,8 +55,16 @@ def _planetary(t: Table) -> PlanetarySpec:
     scheme = Scheme(name)
     a, b, h = scheme.links
     fixed, inp, out = (t.string(k, d) for k, d in (("fixed", b), ("input", a), ("output", h)))
+    for key, value in (("fixed", fixed), ("input", inp), ("output", out)):
+        if value not in scheme.links:
+            raise t.error(key, f"must be one of the scheme's links {', '.join(scheme.links)} "
+                               f"(got {value!r})")
+    if len({fixed, inp, out}) != 3:
+        raise t.error("fixed", f"fixed, input and output must be three different links "
+                               f"(got {fixed!r}, {inp!r}, {out!r})")
     ratio = t.quantity("ratio", "dimensionless", required=True)
-    assert ratio is not None and fixed and inp and out
+    if ratio is None or fixed is None or inp is None or out is None:   # required: never None here
+        raise t.error("ratio", "is missing")
     if ratio == 0:
         raise t.error("ratio", "must not be zero (got 0)")
     deviation = t.quantity("deviation", "dimensionless", 0.02, nonnegative=True)
