@@ -23,7 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
-from .submission import Note, _read_text
+from .submission import Note, _read_text, submitted_file
 from .texts import T
 
 _ANGLE_TEXT = re.compile(r"^\s*(?:([^\d\s=:+−-][^=:]*?)\s*[=:]\s*)?([-+−]?\d+(?:[.,]\d+)?)\s*"
@@ -64,11 +64,7 @@ def angle_of(text: str, is_angle_name: Any) -> float | None:
 
 def read_answers(path: str | Path, is_angle_name: Any) -> AnswerTable:
     """Read a TOML or CSV answer table; ``is_angle_name(name)`` tells an angle column or key."""
-    p = Path(path)
-    if not p.exists():
-        raise CheckError(T("error.no_file"), file=str(p))
-    if p.is_dir():
-        raise CheckError(T("error.is_dir"), file=str(p))
+    p = submitted_file(path)
     suffix = p.suffix.lower()
     if suffix == ".toml":
         table = _read_toml(p, is_angle_name)

@@ -108,13 +108,19 @@ class Submission:
     skipped: int = 0        # dash-dot lines and lines of frames and tables, not read
 
 
-def read_submission(path: str | Path) -> Submission:
-    """Read a DXF, TOML or CSV submission; raise :class:`CheckError` if it cannot be read at all."""
+def submitted_file(path: str | Path) -> Path:
+    """The path of a submitted file; a missing file or a folder is a :class:`CheckError`."""
     p = Path(path)
     if not p.exists():
         raise CheckError(T("error.no_file"), file=str(p))
     if p.is_dir():
         raise CheckError(T("error.is_dir"), file=str(p))
+    return p
+
+
+def read_submission(path: str | Path) -> Submission:
+    """Read a DXF, TOML or CSV submission; raise :class:`CheckError` if it cannot be read at all."""
+    p = submitted_file(path)
     suffix = p.suffix.lower()
     if suffix == ".dxf":
         from .dxf import read_dxf
