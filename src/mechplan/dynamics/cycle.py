@@ -188,8 +188,9 @@ class MachineCycle:
         power = np.zeros(n)
         lever = np.zeros(n)
         for link, ms in self.loading.masses.items():
-            if f"G_{link}" in c.results:
-                G, v = ev[c.results[f"G_{link}"]], self._velocity(ev, ms.centre, n)
+            weight = c.weight(link)
+            if weight is not None:
+                G, v = ev[weight], self._velocity(ev, ms.centre, n)
                 power += dot(G, v)
                 lever += _lever(G, v)
         factors = {t.index: np.interp(t.xs[0] + np.mod(phi - t.xs[0], t.period), t.xs, t.fs)
@@ -199,7 +200,10 @@ class MachineCycle:
             assert point is not None
             factors[self.indicator_index] = self.indicator_force(theta, ev[c.position(point)])
         for j, load in enumerate(self.loading.loads):
-            value = ev[c.results[f"load_{j}"]]
+            load_id = c.load(j)
+            if load_id is None:
+                raise KeyError(f"the construction has no load {j}")
+            value = ev[load_id]
             factor = factors.get(j, 1.0)
             if load.point is None:
                 p = value * ev[c.omega(load.link)]

@@ -71,7 +71,7 @@ def _extreme_phis(sol: Solution) -> list[float]:
 def _position_panel(sol: Solution, mu: float, lang: str) -> Panel:
     """The position plan: every position (up to MAX_DRAWN_POSITIONS) with the trajectories."""
     c, scene = sol.construction, sol.scene
-    points = [f"pos.{q}" for lk in scene.mechanism.links.values() for q in lk.points]
+    points = [c.position(q) for lk in scene.mechanism.links.values() for q in lk.points]
     chosen = plan_positions(sol)
     if sol.positions > MAX_DRAWN_POSITIONS:
         drawn = chosen

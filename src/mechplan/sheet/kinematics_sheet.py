@@ -57,21 +57,18 @@ def _series(sol: Solution, out: Output, phi: np.ndarray) -> dict[str, np.ndarray
     res: dict[str, np.ndarray] = {}
     if out.point is not None:
         u = np.asarray(out.direction)
-        res["s"] = np.asarray(ev.get(f"pos.{out.point}")) @ u
-        for sym in ("v", "a"):
-            sid = c.results.get(f"{sym}_{out.point}")
-            if sid is None or (sym == "a" and "acceleration" not in sol.plans):
+        res["s"] = np.asarray(ev.get(c.position(out.point))) @ u
+        for sym, image in (("v", c.velocity_image), ("a", c.acceleration_image)):
+            if not c.has_result(sym, out.point) or (sym == "a" and "acceleration" not in sol.plans):
                 continue
-            res[sym] = np.asarray(ev.get(sid)) @ u
+            res[sym] = np.asarray(ev.get(image(out.point))) @ u
     else:
-        sid = c.results.get(f"angle_{out.link}")
-        if sid is None:
+        if not c.has_result("angle", out.link):
             return res
-        res["s"] = np.unwrap(np.asarray(ev.get(sid), dtype=float))
-        for sym, key in (("v", "omega"), ("a", "epsilon")):
-            rid = c.results.get(f"{key}_{out.link}")
-            if rid is not None and (sym == "v" or "acceleration" in sol.plans):
-                res[sym] = np.asarray(ev.get(rid), dtype=float)
+        res["s"] = np.unwrap(np.asarray(ev.get(c.link_angle(out.link)), dtype=float))
+        for sym, key, rate in (("v", "omega", c.omega), ("a", "epsilon", c.epsilon)):
+            if c.has_result(key, out.link) and (sym == "v" or "acceleration" in sol.plans):
+                res[sym] = np.asarray(ev.get(rate(out.link)), dtype=float)
     return res
 
 

@@ -116,7 +116,7 @@ def decide_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[st
     n = ev.n
     out: dict[Plan, float] = {}
     mech = scene.mechanism
-    points = [f"pos.{p}" for lk in mech.links.values() for p in lk.points]
+    points = [c.position(p) for lk in mech.links.values() for p in lk.points]
     sweep = c.evaluate(np.linspace(0.0, 2.0 * math.pi, 73))
     for p in points:
         sweep.get(p)
