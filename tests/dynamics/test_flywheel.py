@@ -16,6 +16,7 @@ from mechplan.dynamics.flywheel import (
     exact_flywheel,
     flywheel_size,
     merkalov,
+    speed,
     wittenbauer,
 )
 from mechplan.model.dynamics import FlywheelShape, FlywheelSpec
@@ -36,6 +37,21 @@ def test_constant_inertia_sinusoidal_moment_closed_form():
     err = [np.abs(cumulative_work(t, M0 * np.sin(t)) - M0 * (1 - np.cos(t))).max()
            for t in (np.linspace(0, 2 * math.pi, n + 1) for n in (12, 24, 48))]
     assert err[0] > err[1] > err[2] and err[1] / err[2] == pytest.approx(4.0, rel=0.05)
+
+
+def test_merkalov_law_of_motion_constant_inertia_closed_form():
+    """J constant, ΔT = M0(1 − cos θ): J_I = 2M0/(δω_m²), so ω = ω_m(1 − (δ/2)·cos θ) exactly,
+    within O(δ²·ω_m) of the exact ½Jω² = E0 + ΔT law."""
+    M0, J0, w, delta = 150.0, 0.8, 40.0, 1 / 30
+    theta = np.linspace(0.0, 2 * math.pi, 4001)
+    dT = M0 * (1 - np.cos(theta))
+    J = np.full_like(theta, J0)
+    law = merkalov(J - J0, dT, w, delta, J0).omega
+    np.testing.assert_allclose(law, w * (1 - 0.5 * delta * np.cos(theta)), rtol=1e-13)
+    J_f, E0 = exact_flywheel(theta, J, dT, w, delta, 1.0)
+    exact = speed(J + J_f, dT, E0)
+    gap = float(np.abs(law - exact).max())
+    assert 1e-6 * delta * w < gap < delta ** 2 * w
 
 
 def _case():

@@ -81,6 +81,15 @@ def test_study_json_and_report():
     assert doc["scales"]["mu_A"] == pytest.approx(
         doc["scales"]["mu_M"] * doc["scales"]["mu_phi"] * doc["scales"]["H_mm"])
     assert "Мерцалов" in study.report("ru") and "梅尔察洛夫" in study.report("zh")
+    # Merkalov's law of motion: its spread is δ·ω_m about ω_m by construction, and it is close to
+    # (but not the same as) the exact motion with Merkalov's flywheel
+    merk, w_m, delta = fw["merkalov"], doc["omega_m"], doc["delta"]
+    assert merk["omega_max"] - merk["omega_min"] == pytest.approx(delta * w_m, rel=1e-9)
+    assert 0.5 * (merk["omega_max"] + merk["omega_min"]) == pytest.approx(w_m, rel=1e-12)
+    assert 0.0 < merk["omega_error_max"] < 0.5 * delta * w_m
+    om = [p["omega_merkalov"] for p in doc["positions"]]
+    assert min(om) >= merk["omega_min"] - 1e-12 and max(om) <= merk["omega_max"] + 1e-12
+    assert "Мерцалову" in study.report("ru")
     sheets = study.sheets("A1", "gost", "vi", "machine_unit")
     assert any(s.name.endswith("-dynamics") for s in sheets)
 

@@ -57,18 +57,20 @@ def wittenbauer(J_red: Array, dT: Array, omega_m: float, delta: float) -> Witten
 @dataclass(frozen=True)
 class Merkalov:
     """ΔT_I = ΔT − J_var·ω_m²/2 and the constant inertia J_I it needs;
-    flywheel = J_I − J_present."""
+    flywheel = J_I − J_present; the law of motion ω ≈ ω_min + (ΔT_I − ΔT_I,min)/(J_I·ω_m)."""
 
     dT_I: Array
     J_I: float
     J_flywheel: float
+    omega: Array
 
 
 def merkalov(J_var: Array, dT: Array, omega_m: float, delta: float, J_present: float) -> Merkalov:
-    """Return the flywheel by Merkalov's method."""
+    """Return the flywheel and the (approximate) law of motion by Merkalov's method."""
     dT_I = dT - 0.5 * J_var * omega_m ** 2
     J_I = float(dT_I.max() - dT_I.min()) / (delta * omega_m ** 2)
-    return Merkalov(dT_I, J_I, J_I - J_present)
+    omega = omega_m * (1.0 - 0.5 * delta) + (dT_I - dT_I.min()) / (J_I * omega_m)
+    return Merkalov(dT_I, J_I, J_I - J_present, omega)
 
 
 def speed(J: Array, dT: Array, E0: float) -> Array:

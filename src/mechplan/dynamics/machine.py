@@ -60,6 +60,7 @@ class MachineDynamics:
     J_exact: float
     delta_witt: float         # δ that each flywheel gives, by the exact integration
     delta_merk: float
+    merk_omega_error: float   # max |Merkalov's ω − the exact ω with Merkalov's flywheel| (rad/s)
     delta_exact: float
     omega: Array
     epsilon: Array
@@ -142,6 +143,8 @@ def machine_dynamics(scene: Scene, spec: DynamicsSpec, phi0: float,
     J_exact, E0 = exact_flywheel(theta, J_red, dT, omega_m, spec.delta, merk.J_flywheel)
     J = J_red + J_exact
     omega = speed(J, dT, E0)
+    delta_merk, E0_merk = delta_of(theta, J_red + merk.J_flywheel, dT, omega_m)
+    omega_merk = speed(J_red + merk.J_flywheel, dT, E0_merk)
     epsilon = (M_d - M_c) / J - omega ** 2 * st.dJ_red / (2.0 * J)
     return MachineDynamics(
         spec=spec, omega_m=omega_m, phi0=phi0, theta=theta, drawn=drawn, M_d=M_d, M_c=M_c,
@@ -150,7 +153,8 @@ def machine_dynamics(scene: Scene, spec: DynamicsSpec, phi0: float,
         M_given=st.M_given[drawn], A_c_drawn=A_c_drawn, witt=witt,
         merk=merk, J_exact=J_exact,
         delta_witt=delta_of(theta, J_red + witt.J_flywheel, dT, omega_m)[0],
-        delta_merk=delta_of(theta, J_red + merk.J_flywheel, dT, omega_m)[0],
+        delta_merk=delta_merk,
+        merk_omega_error=float(np.abs(merk.omega - omega_merk).max()),
         delta_exact=delta_of(theta, J, dT, omega_m)[0], omega=omega, epsilon=epsilon,
         ext=extremes(theta, omega),
         size=flywheel_size(J_exact, spec.flywheel) if spec.flywheel is not None else None)

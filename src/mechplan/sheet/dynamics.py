@@ -107,7 +107,10 @@ def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
                               kl=number((w.b_max - w.b_min) / sc.mu_T, 1, lang),
                               J=number(w.J_flywheel, 4, lang)))
     omega = diagram_panel("dynamics.omega", message("dynamics.diagram.omega", lang),
-                          [Curve(deg[q], d.omega[q])], phi_axis, Axis("ω", "rad/s", 50.0), lang,
+                          [Curve(deg[q], d.omega[q]),
+                           Curve(deg[q], d.merk.omega[q], Role.THIN,
+                                 label=message("dynamics.curve.merkalov", lang))],
+                          phi_axis, Axis("ω", "rad/s", 50.0), lang,
                           hlines=[(d.omega_m, "ω_m")], y_zero=False)
     _note(omega.panel, message(
         "dynamics.sheet.flywheels", lang, witt=number(w.J_flywheel, 4, lang),

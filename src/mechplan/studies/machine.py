@@ -69,6 +69,10 @@ def dynamics_report(d: MachineDynamics, lang: str) -> str:
                          pmax=_f(math.degrees(d.ext.theta_max), 1, lang),
                          wmin=_f(d.ext.omega_min, 4, lang),
                          pmin=_f(math.degrees(d.ext.theta_min), 1, lang)))
+    lines.append(message("dynamics.report.motion_merkalov", lang,
+                         wmin=_f(float(d.merk.omega.min()), 4, lang),
+                         wmax=_f(float(d.merk.omega.max()), 4, lang),
+                         err=_f(d.merk_omega_error, 4, lang)))
     if d.size is not None:
         s = d.size
         lines.append(message(f"dynamics.report.size.{s.shape.value}", lang,
@@ -97,7 +101,8 @@ def dynamics_json(d: MachineDynamics) -> dict[str, Any]:
             "A_d_exact": float(d.A_d[i]), "A_c_exact": float(d.A_c[i]),
             "dT": float(d.dT_drawn[j]), "dT_exact": float(d.dT[i]),
             "J_red": float(d.J_red[i]), "dJ_red": float(d.dJ_red[i]),
-            "omega": float(d.omega[i]), "epsilon": float(d.epsilon[i])})
+            "omega": float(d.omega[i]), "epsilon": float(d.epsilon[i]),
+            "omega_merkalov": float(d.merk.omega[i])})
     out: dict[str, Any] = {
         "cycle_deg": math.degrees(spec.cycle),
         "start_crank_angle_deg": math.degrees(d.phi0),
@@ -119,7 +124,10 @@ def dynamics_json(d: MachineDynamics) -> dict[str, Any]:
                             "psi_max_deg": math.degrees(math.atan(tmax)),
                             "psi_min_deg": math.degrees(math.atan(tmin))},
             "merkalov": {"J": d.merk.J_flywheel, "J_I": d.merk.J_I,
-                         "delta_actual": d.delta_merk},
+                         "delta_actual": d.delta_merk,
+                         "omega_min": float(d.merk.omega.min()),
+                         "omega_max": float(d.merk.omega.max()),
+                         "omega_error_max": d.merk_omega_error},
             "exact": {"J": d.J_exact, "delta_actual": d.delta_exact}},
         "motion": {"omega_max": d.ext.omega_max,
                    "phi_max_deg": math.degrees(d.ext.theta_max),
