@@ -14,7 +14,7 @@ from ..i18n import message, number
 from ..model.cam import Contact, Motion
 from ..synthesis.cam.profile import follower_positions
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
-from .layout import framed_sheets
+from .layout import enlargement, framed_sheets
 from .panels import Panel
 from .primitives import Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
 
@@ -72,13 +72,14 @@ def table_rows(d: CamDesign, lang: str) -> tuple[list[str], list[list[str]]]:
 
 
 
-def _motion_diagrams(d: CamDesign, lang: str) -> list[Panel]:
+def _motion_diagrams(d: CamDesign, lang: str, scale: float) -> list[Panel]:
     u = units_of(d, lang)
     phi_deg = np.degrees(d.dense.phi[::STEP])
     phi_deg = np.append(phi_deg, 360.0)
     def closed(v: np.ndarray, f: float) -> np.ndarray:
         return np.append(v[::STEP], v[0]) * f
-    x_axis = Axis("φ", "°", DIAGRAM_W, mu=2.0)
+    mu_deg = round_scale(360.0 / (DIAGRAM_W * scale))
+    x_axis = Axis("φ", "°", 360.0 / mu_deg, mu=mu_deg)
     panels = []
     mus = []
     for name, values, unit, f in (("s", d.dense.s, u.u0, u.f0), ("s1", d.dense.s1, u.u1, u.f1),
@@ -92,10 +93,10 @@ def _motion_diagrams(d: CamDesign, lang: str) -> list[Panel]:
                 curves.append(Curve(np.degrees(c.inner_nodes), c.s2_by_chords * f, Role.DASHED))
         symbol = {"s": "s", "s1": "s′", "s2": "s″"}[name]
         dg = diagram_panel(f"cam-{name}", message(f"cam.sheet.{name}", lang),
-                           curves, x_axis, Axis(symbol, unit, DIAGRAM_H), lang)
+                           curves, x_axis, Axis(symbol, unit, DIAGRAM_H * scale), lang)
         panels.append(dg)
         mus.append(dg.mu_y / f)             # SI per mm
-    mu_phi = math.radians(2.0)
+    mu_phi = math.radians(mu_deg)
     out = []
     for i, dg in enumerate(panels):
         if i > 0:
@@ -109,7 +110,7 @@ def _motion_diagrams(d: CamDesign, lang: str) -> list[Panel]:
     return out
 
 
-def _ss1_diagram(d: CamDesign, lang: str) -> Panel | None:
+def _ss1_diagram(d: CamDesign, lang: str, scale: float) -> Panel | None:
     if d.zone is None:
         return None
     k = 1e3
@@ -127,10 +128,10 @@ def _ss1_diagram(d: CamDesign, lang: str) -> Panel | None:
     curves.append(Curve(np.array([cx, 0.0]), np.array([cy, 0.0]), Role.DASHED,
                         label=f"r0 = {number(d.zone.r0 * k, 2, lang)}"))
     span = max(float(np.ptp(np.append(s1, cx))), float(np.ptp(np.append(s, low))))
-    mu = round_scale(span / 110.0)
+    mu = round_scale(span / (110.0 * scale))
     dg = diagram_panel("cam-ss1", message("cam.sheet.ss1", lang), curves,
-                       Axis("s′", message("cam.unit.mm", lang), 110.0, mu=mu),
-                       Axis("s", message("cam.unit.mm", lang), 110.0, mu=mu), lang,
+                       Axis("s′", message("cam.unit.mm", lang), 110.0 * scale, mu=mu),
+                       Axis("s", message("cam.unit.mm", lang), 110.0 * scale, mu=mu), lang,
                        markers=[Marker(cx, cy, "O")])
     zx, zy = dg.to_mm(cx, cy * 1.1 - 1.0)
     dg.panel.primitives.append(Text((zx, zy), message("cam.sheet.zone", lang), 2.5,
@@ -138,13 +139,13 @@ def _ss1_diagram(d: CamDesign, lang: str) -> Panel | None:
     return dg.panel
 
 
-def _inversion(d: CamDesign, lang: str) -> tuple[Panel, float]:
+def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
     g = d.geometry
     reach = float(np.max(np.hypot(*d.dense.pitch.T)))
     if g.motion is Motion.OSCILLATING:
         reach = max(reach, g.pivot + 0.1 * g.arm)
     length = 0.35 * g.r0
-    mu = round_scale((reach + length + g.roller) / CAM_R)   # m per mm
+    mu = round_scale((reach + length + g.roller) / (CAM_R * scale))   # m per mm
     def mm(p: np.ndarray) -> list[tuple[float, float]]:
         return [(float(x) / mu, float(y) / mu) for x, y in p]
     prims: list[Primitive | Table] = []
@@ -182,7 +183,7 @@ def _inversion(d: CamDesign, lang: str) -> tuple[Panel, float]:
         prims.append(Text((float(lbl[0]), float(lbl[1])), str(i), 2.5, halign=HAlign.CENTER,
                           valign=VAlign.MIDDLE))
     top = max(y for p in prims if isinstance(p, Circle) for y in (p.center[1] + p.radius,))
-    left = -CAM_R
+    left = -CAM_R * scale
     prims.append(Text((left, top + 14.0), message("cam.sheet.inversion", lang), 3.5))
     prims.append(Text((left, top + 8.0), message("cam.sheet.scale", lang, mu=number(mu, 4, lang)) +
                       ";  " + message("cam.sheet.base", lang, r0=number(g.r0 * 1e3, 2, lang)), 2.5))
@@ -209,18 +210,24 @@ def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[li
                size: str | None, standard: str | None, lang: str, name: str) -> list[Sheet]:
     """Lay the cam's panels out on framed sheets; ``summary`` are the report's result sentences."""
     spec = d.spec
-    inversion, mu = _inversion(d, lang)
-    panels = [inversion, *_motion_diagrams(d, lang)]
-    ss1 = _ss1_diagram(d, lang)
-    if ss1 is not None:
-        panels.append(ss1)
-    panels += [_table(*table, lang), _results(summary, lang)]
-    r = mu * 1000.0
-    scale = f"1:{r:g}" if r >= 1 else f"{1 / r:g}:1"
-    fields = {"title": spec.title, "scale": scale}
+    size, standard = size or spec.drawing.sheet, standard or spec.drawing.standard
+
+    def build(scale: float) -> tuple[list[Panel], float]:
+        inversion, mu = _inversion(d, lang, scale)
+        panels = [inversion, *_motion_diagrams(d, lang, scale)]
+        ss1 = _ss1_diagram(d, lang, scale)
+        if ss1 is not None:
+            panels.append(ss1)
+        return panels + [_table(*table, lang), _results(summary, lang)], mu
+
+    fields = {"title": spec.title}
     fields.update({k: v for k, v in spec.drawing.title_block.items() if v})
-    return framed_sheets(panels, size=size or spec.drawing.sheet,
-                         standard=standard or spec.drawing.standard, language=lang, name=name,
+    k = enlargement(lambda scale: build(scale)[0], size=size, standard=standard, language=lang,
+                    fields=fields)
+    panels, mu = build(k)
+    r = mu * 1000.0
+    fields.setdefault("scale", f"1:{r:g}" if r >= 1 else f"{1 / r:g}:1")
+    return framed_sheets(panels, size=size, standard=standard, language=lang, name=name,
                          fields=fields)
 
 

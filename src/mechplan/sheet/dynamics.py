@@ -10,17 +10,16 @@ import numpy as np
 
 from ..i18n import message, number
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
-from .layout import framed_sheets
-from .panels import Panel
-from .primitives import HAlign, Role, Table, Text, VAlign
+from .layout import enlargement, fitted_sheets
+from .panels import Panel, table
+from .primitives import HAlign, Role, Text, VAlign
 
 if TYPE_CHECKING:
     from ..dynamics.machine import MachineDynamics
     from ..scene.spec import Scene
     from .primitives import Sheet
 
-PHI_MM = 180.0        # length of the φ axis for the whole cycle
-ROW_H = 5.0
+PHI_MM = 180.0        # length of the φ axis for the whole cycle (at enlargement 1)
 
 
 @dataclass(frozen=True)
@@ -40,13 +39,13 @@ class DynamicsScales:
         return k * (1 + d.spec.delta), k * (1 - d.spec.delta)
 
 
-def dynamics_scales(d: MachineDynamics) -> DynamicsScales:
-    """Round scale factors for the diagrams of ``d``."""
-    mu_phi = d.spec.cycle / PHI_MM
-    mu_M = scale_for(np.concatenate([d.M_d, d.M_c]), 60.0)
-    H = d.spec.pole_distance_mm or pole_distance(d, mu_M, mu_phi)
-    return DynamicsScales(mu_phi, mu_M, H, mu_M * mu_phi * H, scale_for(d.dT, 50.0),
-                          scale_for(d.J_red, 60.0))
+def dynamics_scales(d: MachineDynamics, k: float = 1.0) -> DynamicsScales:
+    """Round scale factors for the diagrams of ``d`` drawn at enlargement ``k``."""
+    mu_phi = math.radians(scale_for([0.0, math.degrees(d.spec.cycle)], PHI_MM * k))
+    mu_M = scale_for(np.concatenate([d.M_d, d.M_c]), 60.0 * k)
+    H = d.spec.pole_distance_mm or pole_distance(d, mu_M, mu_phi, 60.0 * k)
+    return DynamicsScales(mu_phi, mu_M, H, mu_M * mu_phi * H, scale_for(d.dT, 50.0 * k),
+                          scale_for(d.J_red, 60.0 * k))
 
 
 def pole_distance(d: MachineDynamics, mu_M: float, mu_phi: float, height_mm: float = 60.0) -> float:
@@ -64,34 +63,36 @@ def _note(panel: Panel, text: str) -> None:
     panel.primitives.append(Text((x0, y0 - 2.0), text, 2.5, valign=VAlign.TOP))
 
 
-def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
-    """The panels of the dynamics sheet, in reading order."""
-    sc = dynamics_scales(d)
+def dynamics_panels(d: MachineDynamics, lang: str, scale: float = 1.0) -> list[Panel]:
+    """The panels of the dynamics sheet at enlargement ``scale``, in reading order."""
+    sc = dynamics_scales(d, scale)
     # the curves at ≤ 4 points per mm of the φ axis (the dense grid is finer than the pen)
     q = np.unique(np.concatenate([np.arange(0, d.theta.size, max(1, d.theta.size // 720)),
                                   d.drawn, [d.theta.size - 1]]))
     deg = np.degrees(d.theta)
     k = d.drawn
-    phi_axis = Axis("φ", "°", PHI_MM, mu=math.degrees(sc.mu_phi), mu_symbol="μφ")
+    phi_axis = Axis("φ", "°", math.degrees(d.spec.cycle) / math.degrees(sc.mu_phi),
+                    mu=math.degrees(sc.mu_phi), mu_symbol="μφ")
     given = d.M_d if d.spec.unknown.value == "resisting" else d.M_c     # the variable side
     marks = [Marker(float(deg[i]), float(given[i]), str(j)) for j, i in enumerate(k[:-1])]
     moments = diagram_panel("dynamics.moments", message("dynamics.diagram.moments", lang),
                             [Curve(deg[q], d.M_d[q], label="M_d"),
                              Curve(deg[q], d.M_c[q], Role.DASHED, label="M_c")],
-                            phi_axis, Axis("M", "N·m", 60.0, mu=sc.mu_M, mu_symbol="μM"), lang,
+                            phi_axis, Axis("M", "N·m", 60.0 * scale, mu=sc.mu_M, mu_symbol="μM"),
+                            lang,
                             markers=marks)
     works = diagram_panel("dynamics.works", message("dynamics.diagram.works", lang),
                           [Curve(deg[k], d.A_d_drawn, label="A_d"),
                            Curve(deg[k], d.A_c_drawn, Role.DASHED, label="A_c")],
-                          phi_axis, Axis("A", "J", 60.0, mu=sc.mu_A, mu_symbol="μA"), lang)
+                          phi_axis, Axis("A", "J", 60.0 * scale, mu=sc.mu_A, mu_symbol="μA"), lang)
     _note(works.panel, message("dynamics.sheet.pole", lang, H=number(sc.H_mm, 0, lang),
                                muA=number(sc.mu_A, 4, lang)))
     energy = diagram_panel("dynamics.energy", message("dynamics.diagram.energy", lang),
                            [Curve(deg[q], d.dT[q]), Curve(deg[k], d.dT_drawn, Role.THIN)], phi_axis,
-                           Axis("ΔT", "J", 50.0, mu=sc.mu_T, mu_symbol="μT"), lang)
+                           Axis("ΔT", "J", 50.0 * scale, mu=sc.mu_T, mu_symbol="μT"), lang)
     inertia = diagram_panel("dynamics.inertia", message("dynamics.diagram.inertia", lang),
                             [Curve(deg[q], d.J_red[q])], phi_axis,
-                            Axis("J", "kg·m²", 60.0, mu=sc.mu_J, mu_symbol="μJ"), lang)
+                            Axis("J", "kg·m²", 60.0 * scale, mu=sc.mu_J, mu_symbol="μJ"), lang)
     w = d.witt
     j_hi = float(d.J_red.max()) * 1.1
     tangents = [Curve(np.array([0.0, j_hi]), np.array([w.b_max, w.b_max + w.k_max * j_hi]),
@@ -100,8 +101,8 @@ def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
                       Role.THIN, label="ψ_min")]
     witt = diagram_panel("dynamics.wittenbauer", message("dynamics.diagram.wittenbauer", lang),
                          [Curve(d.J_red[q], d.dT[q]), *tangents],
-                         Axis("J", "kg·m²", 60.0, mu=sc.mu_J, mu_symbol="μJ"),
-                         Axis("ΔT", "J", 50.0, mu=sc.mu_T, mu_symbol="μT"), lang,
+                         Axis("J", "kg·m²", 60.0 * scale, mu=sc.mu_J, mu_symbol="μJ"),
+                         Axis("ΔT", "J", 50.0 * scale, mu=sc.mu_T, mu_symbol="μT"), lang,
                          markers=[Marker(0.0, w.b_max, "k"), Marker(0.0, w.b_min, "l")])
     _note(witt.panel, message("dynamics.sheet.kl", lang,
                               kl=number((w.b_max - w.b_min) / sc.mu_T, 1, lang),
@@ -110,14 +111,14 @@ def dynamics_panels(d: MachineDynamics, lang: str) -> list[Panel]:
                           [Curve(deg[q], d.omega[q]),
                            Curve(deg[q], d.merk.omega[q], Role.THIN,
                                  label=message("dynamics.curve.merkalov", lang))],
-                          phi_axis, Axis("ω", "rad/s", 50.0), lang,
+                          phi_axis, Axis("ω", "rad/s", 50.0 * scale), lang,
                           hlines=[(d.omega_m, "ω_m")], y_zero=False)
     _note(omega.panel, message(
         "dynamics.sheet.flywheels", lang, witt=number(w.J_flywheel, 4, lang),
         merk=number(d.merk.J_flywheel, 4, lang), exact=number(d.J_exact, 4, lang),
         wmax=number(d.ext.omega_max, 3, lang), wmin=number(d.ext.omega_min, 3, lang)))
     return [moments.panel, works.panel, energy.panel, inertia.panel, witt.panel, omega.panel,
-            _table(d, lang)]
+            _table(d, lang, sc)]
 
 
 def table_rows(d: MachineDynamics, lang: str) -> list[tuple[str, ...]]:
@@ -135,12 +136,9 @@ def table_rows(d: MachineDynamics, lang: str) -> list[tuple[str, ...]]:
     return rows
 
 
-def _table(d: MachineDynamics, lang: str) -> Panel:
-    rows = table_rows(d, lang)
-    widths = (10.0, 12.0, 18.0, 18.0, 16.0, 16.0, 16.0, 16.0, 22.0, 22.0, 18.0, 18.0)
-    t = Table((0.0, 0.0), widths, tuple(ROW_H for _ in rows), tuple(rows), 2.5)
-    panel = Panel("dynamics.table", [t])
-    panel.primitives.append(Text((0.0, 2.0), mu_text("μM", dynamics_scales(d).mu_M, "N·m", lang),
+def _table(d: MachineDynamics, lang: str, sc: DynamicsScales) -> Panel:
+    panel = Panel("dynamics.table", [table(table_rows(d, lang), (0.0, 0.0))])
+    panel.primitives.append(Text((0.0, 2.0), mu_text("μM", sc.mu_M, "N·m", lang),
                                  2.5, halign=HAlign.LEFT, valign=VAlign.BOTTOM))
     return panel
 
@@ -150,5 +148,14 @@ def dynamics_sheets(d: MachineDynamics, scene: Scene, size: str, standard: str, 
     """The dynamics sheet(s) ``name`` (``name-2`` … when the panels need more)."""
     fields = {"title": scene.title, "document_type": message("dynamics.sheet.title", lang)}
     fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
-    return framed_sheets(dynamics_panels(d, lang), size=size, standard=standard, language=lang,
-                         name=name, fields=fields)
+    return fitted_sheets(lambda scale: dynamics_panels(d, lang, scale), size=size,
+                         standard=standard, language=lang, name=name, fields=fields)
+
+
+def dynamics_enlargement(d: MachineDynamics, scene: Scene) -> float:
+    """The enlargement of the dynamics diagrams on the scene's own sheet (size, language)."""
+    lang = scene.language
+    fields = {"title": scene.title, "document_type": message("dynamics.sheet.title", lang)}
+    fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
+    return enlargement(lambda scale: dynamics_panels(d, lang, scale), size=scene.drawing.sheet,
+                       standard=scene.drawing.standard, language=lang, fields=fields)

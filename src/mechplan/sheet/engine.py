@@ -8,12 +8,13 @@ from typing import Protocol
 
 import numpy as np
 
+from ..construct.scale import round_scale
 from ..dynamics.engine.analysis import Checks, EngineResult
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene
 from .diagram import TEXT_H, Axis, Curve, Diagram, Marker, diagram_panel, mu_text
-from .layout import framed_sheets
+from .layout import fitted_sheets
 from .panels import Panel
 from .primitives import Arc, Circle, HAlign, Line, Polyline, Role, Sheet, Table, Text, VAlign
 
@@ -69,13 +70,16 @@ def engine_sheets(study: EngineData, size: str, standard: str, language: str,
                   name: str) -> list[Sheet]:
     """All panels of an engine study laid out on framed sheets."""
     lang = language
-    panels = [indicator_panel(study, lang), forces_panel(study, lang), tz_panel(study, lang),
-              torque_panel(study, lang), polar_panel(study, lang), developed_panel(study, lang),
-              wear_panel(study, lang)]
-    panels += table_panels(study, lang)
+
+    def panels(scale: float) -> list[Panel]:
+        out = [f(study, lang, scale) for f in (indicator_panel, forces_panel, tz_panel,
+                                               torque_panel, polar_panel, developed_panel,
+                                               wear_panel)]
+        return out + table_panels(study, lang)
+
     fields = {"title": study.scene.engine.title or message("engine.sheet.title", lang)}
     fields.update({k: v for k, v in study.scene.drawing.title_block.items() if v})
-    return framed_sheets(panels, size=size, standard=standard, language=lang, name=name,
+    return fitted_sheets(panels, size=size, standard=standard, language=lang, name=name,
                          fields=fields)
 
 
@@ -83,19 +87,20 @@ def _deg(phi: np.ndarray) -> np.ndarray:
     return np.degrees(phi)
 
 
-def _phi_axis(study: EngineData) -> Axis:
+def _phi_axis(study: EngineData, scale: float) -> Axis:
     cycle = math.degrees(study.scene.engine.cycle)
-    return Axis("φ", "°", W, mu=cycle / 144.0, mu_symbol="μφ")
+    mu = round_scale(cycle / (144.0 * scale))
+    return Axis("φ", "°", cycle / mu + (W - 144.0) * scale, mu=mu, mu_symbol="μφ")
 
 
-def indicator_panel(study: EngineData, lang: str) -> Panel:
+def indicator_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     """p–V diagram with Brix's semicircle (pole O′ shifted by Rλ/2 towards BDC) under it."""
     m, spec = study.model, study.scene.engine
     V, p = m.diagram.loop()
     cm3 = 1e6
     dia = diagram_panel("indicator", message("engine.diagram.indicator", lang),
                         [Curve(V * cm3, p * 1e-6, closed=True)],
-                        Axis("V", "cm³", 150.0), Axis("p", "MPa", 130.0), lang)
+                        Axis("V", "cm³", 150.0 * scale), Axis("p", "MPa", 130.0 * scale), lang)
     prims = dia.panel.primitives
     Vc, Vh = m.diagram.V_c * cm3, m.diagram.V_h * cm3
     r_mm = Vh / 2.0 / dia.mu_x
@@ -129,7 +134,7 @@ def _num(x: float, lang: str, k: int = 2) -> str:
     return number(x, k, lang)
 
 
-def forces_panel(study: EngineData, lang: str) -> Panel:
+def forces_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     """Pk, Pj and P of cylinder 1 against φ."""
     d = study.dense
     f = d.cylinders[1]
@@ -137,20 +142,20 @@ def forces_panel(study: EngineData, lang: str) -> Panel:
     curves = [Curve(x, f.Pk * 1e-3, Role.THIN, "Pk"), Curve(x, f.Pj * 1e-3, Role.DASHED, "Pj"),
               Curve(x, f.P * 1e-3, Role.OUTLINE, "P")]
     return diagram_panel("forces", message("engine.diagram.forces", lang), curves,
-                         _phi_axis(study), Axis("P", "kN", H), lang).panel
+                         _phi_axis(study, scale), Axis("P", "kN", H * scale), lang).panel
 
 
-def tz_panel(study: EngineData, lang: str) -> Panel:
+def tz_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     """T and Z of cylinder 1 (for the articulated pair: T and Z on the shared pin)."""
     d = study.dense
     q = d.pins[1]
     x = _deg(d.phi)
     curves = [Curve(x, q.T * 1e-3, Role.OUTLINE, "T"), Curve(x, q.Z * 1e-3, Role.DASHED, "Z")]
-    return diagram_panel("tz", message("engine.diagram.tz", lang), curves, _phi_axis(study),
-                         Axis("T, Z", "kN", H), lang).panel
+    return diagram_panel("tz", message("engine.diagram.tz", lang), curves, _phi_axis(study, scale),
+                         Axis("T, Z", "kN", H * scale), lang).panel
 
 
-def torque_panel(study: EngineData, lang: str) -> Panel:
+def torque_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     """ΣM of the engine (cylinders thin) with its mean."""
     d = study.dense
     x = _deg(d.phi)
@@ -159,12 +164,13 @@ def torque_panel(study: EngineData, lang: str) -> Panel:
         curves += [Curve(x, f.M, Role.THIN) for f in d.cylinders.values()]
     curves.append(Curve(x, d.M_total, Role.OUTLINE, "ΣM"))
     mean = study.checks.work_torque / study.scene.engine.cycle
-    return diagram_panel("torque", message("engine.diagram.torque", lang), curves, _phi_axis(study),
-                         Axis("M", "N·m", H), lang,
+    return diagram_panel("torque", message("engine.diagram.torque", lang), curves,
+                         _phi_axis(study, scale),
+                         Axis("M", "N·m", H * scale), lang,
                          hlines=[(mean, message("engine.label.mean", lang))]).panel
 
 
-def polar_panel(study: EngineData, lang: str) -> Panel:
+def polar_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     """Polar diagram of the load on crank pin 1: ends of (T, Z); Q is drawn from the pole O_p."""
     d, t = study.dense, study.table
     q = d.pins[1]
@@ -172,14 +178,15 @@ def polar_panel(study: EngineData, lang: str) -> Panel:
     pole = -q.K_r * 1e-3
     dia = diagram_panel("polar", message("engine.diagram.polar", lang),
                         [Curve(q.T * 1e-3, q.Z * 1e-3, Role.OUTLINE, closed=True)],
-                        Axis("T", "kN", 150.0), Axis("Z", "kN", 150.0), lang,
+                        Axis("T", "kN", 150.0 * scale), Axis("Z", "kN", 150.0 * scale), lang,
                         markers=[Marker(0.0, pole, "Oₚ")])
     mu_x, mu_y = dia.mu_x, dia.mu_y
     if abs(mu_x - mu_y) > 1e-12 * mu_x:              # a polar diagram needs one scale
         mu = max(mu_x, mu_y)
         dia = diagram_panel("polar", message("engine.diagram.polar", lang),
                             [Curve(q.T * 1e-3, q.Z * 1e-3, Role.OUTLINE, closed=True)],
-                            Axis("T", "kN", 110.0, mu=mu), Axis("Z", "kN", 110.0, mu=mu), lang,
+                            Axis("T", "kN", 110.0 * scale, mu=mu),
+                            Axis("Z", "kN", 110.0 * scale, mu=mu), lang,
                             markers=[Marker(0.0, pole, "Oₚ")])
     prims = dia.panel.primitives
     px, py = dia.to_mm(0.0, pole)
@@ -196,21 +203,21 @@ def polar_panel(study: EngineData, lang: str) -> Panel:
     return dia.panel
 
 
-def developed_panel(study: EngineData, lang: str) -> Panel:
+def developed_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     """|Q|(φ) of crank pin 1 with Q_mean."""
     d = study.dense
     Q = d.pins[1].Q * 1e-3
     mean = float(np.trapezoid(Q, d.phi) / study.scene.engine.cycle)
     return diagram_panel("developed", message("engine.diagram.developed", lang),
-                         [Curve(_deg(d.phi), Q, Role.OUTLINE, "Q")], _phi_axis(study),
-                         Axis("Q", "kN", H), lang,
+                         [Curve(_deg(d.phi), Q, Role.OUTLINE, "Q")], _phi_axis(study, scale),
+                         Axis("Q", "kN", H * scale), lang,
                          hlines=[(mean, message("engine.label.Q_mean", lang))]).panel
 
 
-def wear_panel(study: EngineData, lang: str) -> Panel:
+def wear_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     """Wear diagram of crank pin 1: the circle, 24 rays, the summed loads drawn inwards."""
     rays, sums = study.wear
-    radius = 40.0
+    radius = 40.0 * scale
     from .diagram import scale_for
     mu = scale_for(sums * 1e-3, radius * 0.8)
     prims: list = [Circle((0.0, 0.0), radius, Role.THIN)]

@@ -12,7 +12,7 @@ from ..synthesis.gears.involute import TIP_MIN, Pair
 from ..synthesis.gears.solve import GearSolution, PlanetaryResult
 from ..synthesis.gears.train import Conditions
 from .fonts import text_width_mm
-from .layout import framed_sheets
+from .layout import fitted_sheets
 from .panels import Panel
 from .primitives import HAlign, Primitive, Sheet, Table, Text
 
@@ -129,13 +129,21 @@ def table_panel(name: str, title: str, head: tuple[str, ...], rows: Sequence[tup
 def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, language: str | None,
                 name: str) -> list[Sheet]:
     """Every panel of a gear scene on framed sheets."""
+    lang = language or sol.scene.language
+    title = sol.scene.title or message("gears.sheet.title", lang)
+    return fitted_sheets(lambda scale: _panels(sol, lang, scale), size=size or "A1",
+                         standard=standard or "iso", language=lang, name=name,
+                         fields={"title": title})
+
+
+def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:
+    """The panels of a gear scene, drawings ``scale`` times their usual size."""
     from .gears_drawing import mesh_panel, plan_panels
 
-    lang = language or sol.scene.language
     panels: list[Panel] = []
     res = sol.planetary
     if res is not None:
-        panels.extend(plan_panels(res, lang))
+        panels.extend(plan_panels(res, lang, scale))
         head = (message("gears.col.condition", lang), message("gears.col.numbers", lang),
                 message("gears.col.verdict", lang))
         rows = [(a, b, verdict(ok, lang)) for a, b, ok in condition_rows(res, lang)]
@@ -159,13 +167,11 @@ def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, langu
                                    f"ω − ω_h, {per_s}"),
                                   omega_rows(res, lang, sol.ordinary_omega)))
     if sol.pair is not None:
-        panels.append(mesh_panel(sol.pair, lang))
+        panels.append(mesh_panel(sol.pair, lang, scale))
         panels.append(table_panel("pair", message("gears.sheet.pair", lang),
                                   (message("gears.col.quantity", lang),
                                    message("gears.col.gear", lang, j=1),
                                    message("gears.col.gear", lang, j=2)),
                                   pair_rows(sol.pair, lang),
                                   tuple(pair_lines(sol.pair, lang)[1:5])))
-    title = sol.scene.title or message("gears.sheet.title", lang)
-    return framed_sheets(panels, size=size or "A1", standard=standard or "iso", language=lang,
-                         name=name, fields={"title": title})
+    return panels

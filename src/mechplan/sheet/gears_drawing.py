@@ -64,12 +64,14 @@ def _scheme(res: PlanetaryResult, mu_l: float) -> list[Primitive]:
     return prims
 
 
-def plan_panels(res: PlanetaryResult, lang: str) -> list[Panel]:
-    """The diagram with the linear velocity plan, and the angular velocity plan."""
+def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Panel]:
+    """The diagram with the linear velocity plan, and the angular velocity plan (their size
+    ``scale`` times the usual)."""
+    size = PLAN_MM * scale
     p = res.plan
     r_max = max(p.radius[n] + (p.a_w if n not in (p.names[0], p.names[-2]) else 0.0)
                 for n in p.names[:-1])
-    mu_l = round_scale(r_max / PLAN_MM)
+    mu_l = round_scale(r_max / size)
     curves = []
     for n in p.names:
         (y0, v0), (y1, v1) = p.lines[n]
@@ -78,10 +80,10 @@ def plan_panels(res: PlanetaryResult, lang: str) -> list[Panel]:
         label = f"{n},{p.names[2]}" if n == p.names[1] and res.spec.scheme.two_row else n
         curves.append(Curve(np.array([v0, v1]), np.array([y0, y1]), Role.OUTLINE, label))
     v_all = [v for n in p.names for (_, v) in p.lines[n]]
-    mu_v = round_scale(max(abs(v) for v in v_all) / PLAN_MM) if any(v_all) else 1.0
+    mu_v = round_scale(max(abs(v) for v in v_all) / size) if any(v_all) else 1.0
     dia = diagram_panel("velocity", message("gears.sheet.velocity", lang), curves,
-                        Axis("v", "m/s", PLAN_MM, mu_v), Axis("r", "m", PLAN_MM, mu_l,
-                                                              mu_symbol="μl"), lang)
+                        Axis("v", "m/s", size, mu_v), Axis("r", "m", size, mu_l, mu_symbol="μl"),
+                        lang)
     dia.panel.primitives.extend(_scheme(res, mu_l))
     dia.panel.primitives.append(Text((-95.0, -8.0), message("gears.sheet.scheme", lang),
                                      TITLE_H, valign=VAlign.TOP))
@@ -89,7 +91,7 @@ def plan_panels(res: PlanetaryResult, lang: str) -> list[Panel]:
     # line
     w = {n: p.omega[n] for n in p.names}
     w_max = max(abs(v) for v in w.values()) or 1.0
-    H = max(5.0, math.floor(PLAN_MM * mu_v / (mu_l * w_max) / 5.0) * 5.0)
+    H = max(5.0, math.floor(size * mu_v / (mu_l * w_max) / 5.0) * 5.0)
     mu_w = mu_v / (mu_l * H)
     prims: list[Primitive | Table] = []
     xs = {n: v / mu_w for n, v in w.items()}
@@ -130,20 +132,21 @@ def _place(pts: np.ndarray, c: tuple[float, float], angle: float,
                     (c[1] + s * (sa * x + ca * y)).tolist()))
 
 
-def mesh_scale(pair: Pair) -> float:
+def mesh_scale(pair: Pair, width_mm: float = 280.0) -> float:
     """Drawing scale (paper mm per mm): the largest of 10, 5, 4, 2.5, 2, 1 … fitting 5 pitches
-    in 280 mm."""
+    in ``width_mm``."""
     m_mm = pair.spec.module * 1000
     for s in (10.0, 5.0, 4.0, 2.5, 2.0, 1.0, 0.5, 0.25):
-        if 5.0 * math.pi * m_mm * s <= 280.0:
+        if 5.0 * math.pi * m_mm * s <= width_mm:
             return s
     return 0.1
 
 
-def mesh_panel(pair: Pair, lang: str) -> Panel:
-    """Three teeth of each gear with their circles, the line of action and its active part."""
+def mesh_panel(pair: Pair, lang: str, scale: float = 1.0) -> Panel:
+    """Three teeth of each gear with their circles, the line of action and its active part
+    (5 pitches in up to ``scale`` × 280 mm)."""
     sp = pair.spec
-    S = mesh_scale(pair) * 1000.0                     # paper mm per metre
+    S = mesh_scale(pair, 280.0 * scale) * 1000.0      # paper mm per metre
     g1, g2 = pair.gears
     O1, O2 = (0.0, -g1.r_w * S), (0.0, g2.r_w * S)
     prims: list[Primitive | Table] = []

@@ -7,7 +7,7 @@ title block with its number and the total.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 from shapely import box
 from shapely.geometry.base import BaseGeometry
@@ -19,6 +19,10 @@ from .panels import Panel
 from .primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 
 GAP = 8.0          # mm between panels
+
+#: enlargements of a capability sheet's drawings and diagrams tried, largest first; text heights
+#: and tables keep their size
+ENLARGEMENTS = (2.0, 1.6, 1.25, 1.0, 0.8, 0.6, 0.5)
 
 
 def moved(p: Primitive | Table, dx: float, dy: float) -> Primitive | Table:
@@ -109,3 +113,38 @@ def framed_sheets(panels: Sequence[Panel], *, size: str, standard: str, language
                 prims.extend(m.expand() if isinstance(m, Table) else (m,))
         sheets.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
     return sheets
+
+
+def _sheets_needed(panels: Sequence[Panel], area: BaseGeometry) -> int | None:
+    """How many sheets the panels flow onto (None: a panel alone does not fit)."""
+    rest, count = list(panels), 0
+    while rest:
+        offsets, failed = pack(rest, area)
+        if failed == 0:
+            return None
+        rest = rest[len(offsets):] if failed is not None else []
+        count += 1
+    return count
+
+
+def enlargement(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
+                language: str, fields: Mapping[str, str]) -> float:
+    """The largest of :data:`ENLARGEMENTS` at which the panels ``build(k)`` draws take the fewest
+    sheets (one when they can)."""
+    area = drawing_area(make_frame(size, standard, dict(fields), language=language))
+    best: tuple[int, float] | None = None
+    for k in ENLARGEMENTS:
+        count = _sheets_needed(build(k), area)
+        if count == 1:
+            return k
+        if count is not None and (best is None or count < best[0]):
+            best = (count, k)
+    return best[1] if best is not None else 1.0
+
+
+def fitted_sheets(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
+                  language: str, name: str, fields: Mapping[str, str]) -> list[Sheet]:
+    """Panels drawn at the :func:`enlargement` that fills the sheet, on framed sheets."""
+    k = enlargement(build, size=size, standard=standard, language=language, fields=fields)
+    return framed_sheets(build(k), size=size, standard=standard, language=language, name=name,
+                         fields=fields)

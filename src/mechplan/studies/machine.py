@@ -34,8 +34,9 @@ def _f(x: float, digits: int, lang: str) -> str:
     return number(x, digits, lang)
 
 
-def dynamics_report(d: MachineDynamics, lang: str) -> str:
-    """The text report of the dynamics in ``lang``."""
+def dynamics_report(d: MachineDynamics, lang: str, k: float = 1.0) -> str:
+    """The text report of the dynamics in ``lang`` (paper values for diagrams at enlargement
+    ``k``)."""
     from ..sheet.dynamics import dynamics_scales, table_rows
 
     spec = d.spec
@@ -62,7 +63,7 @@ def dynamics_report(d: MachineDynamics, lang: str) -> str:
         lines.append(message("dynamics.report.method", lang,
                              method=message(f"dynamics.method.{method}", lang),
                              J=_f(J, 5, lang), delta=_f(delta, 6, lang)))
-    tmax, tmin = dynamics_scales(d).tangent_tans(d)
+    tmax, tmin = dynamics_scales(d, k).tangent_tans(d)
     lines.append(message("dynamics.report.tangents", lang, tmax=_f(tmax, 4, lang),
                          tmin=_f(tmin, 4, lang), kl=_f(d.witt.b_max - d.witt.b_min, 3, lang)))
     lines.append(message("dynamics.report.motion", lang, wmax=_f(d.ext.omega_max, 4, lang),
@@ -85,11 +86,12 @@ def dynamics_report(d: MachineDynamics, lang: str) -> str:
     return "\n".join(lines)
 
 
-def dynamics_json(d: MachineDynamics) -> dict[str, Any]:
-    """The ``"dynamics"`` object of ``mechplan solve --json`` (SI units; angles in ``*_deg``)."""
+def dynamics_json(d: MachineDynamics, k: float = 1.0) -> dict[str, Any]:
+    """The ``"dynamics"`` object of ``mechplan solve --json`` (SI units; angles in ``*_deg``;
+    scale factors of the diagrams at enlargement ``k``)."""
     from ..sheet.dynamics import dynamics_scales
 
-    spec, sc = d.spec, dynamics_scales(d)
+    spec, sc = d.spec, dynamics_scales(d, k)
     tmax, tmin = sc.tangent_tans(d)
     positions = []
     for j, i in enumerate(d.drawn):

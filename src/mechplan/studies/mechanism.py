@@ -29,7 +29,8 @@ class MechanismStudy:
             from .machine import dynamics_report
 
             lang = language or self.solution.scene.language
-            text = text.rstrip("\n") + "\n\n" + dynamics_report(self.dynamics, lang) + "\n"
+            text = (text.rstrip("\n") + "\n\n"
+                    + dynamics_report(self.dynamics, lang, self._enlargement()) + "\n")
         return text
 
     def warnings(self, language: str | None = None) -> list[str]:
@@ -45,8 +46,15 @@ class MechanismStudy:
         if self.dynamics is not None:
             from .machine import dynamics_json
 
-            doc["dynamics"] = dynamics_json(self.dynamics)
+            doc["dynamics"] = dynamics_json(self.dynamics, self._enlargement())
         return doc
+
+    def _enlargement(self) -> float:
+        """The enlargement of the dynamics diagrams on the scene's own sheet."""
+        from ..sheet.dynamics import dynamics_enlargement
+
+        assert self.dynamics is not None
+        return dynamics_enlargement(self.dynamics, self.solution.scene)
 
     def sheets(self, size: str | None, standard: str | None, language: str | None,
                name: str) -> list[Sheet]:
