@@ -10,8 +10,9 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction
+from ..construct.ops import Op
 from ..construct.segments import Segment
-from ..construct.step import Kind, Op, Plan
+from ..construct.step import Kind, Plan
 from ..errors import MechplanError
 from .context import (
     SI_UNIT,
@@ -24,7 +25,7 @@ from .context import (
     row_brief,
     seg_exact,
 )
-from .hints import depends_on
+from .hints import depends_on, text_of
 from .labels import PlanKey, plan_key
 from .match import GivenValue, TableSegment
 from .report import (
@@ -123,21 +124,8 @@ def grade_table_segments(ctx: Ctx, k: int, mu_all: dict[Plan, float],
 
 
 def _table_hint(ctx: Ctx, seg: Segment) -> str:
-    from ..construct.protocol import TEXT
-
     st = ctx.c[seg.end]
-    texts = TEXT.get(st.op)
-    base = T("hint.step", op=T(f"op.{st.op.value}"), label=st.label)
-    if texts and st.op in (Op.LINE_LINE,):
-        base = T("hint.meet", label=st.label, a=ctx.c[st.inputs[0]].label,
-                 b=ctx.c[st.inputs[1]].label)
-    elif st.op is Op.NORMAL:
-        base = T("hint.normal", label=st.label)
-    elif st.op is Op.SIMILAR_IMAGE:
-        base = T("hint.similar", label=st.label)
-    elif st.op in (Op.DRIVE_VELOCITY, Op.DRIVE_ACCELERATION):
-        base = T("hint.drive", label=st.label)
-    return base
+    return text_of(st.op.hint(st, ctx.c))          # the hint of its operation (``OpSpec.hint``)
 
 
 # -- named values -------------------------------------------------------------------------------
@@ -226,14 +214,8 @@ def _value_hint(ctx: Ctx, q: Any) -> str:
     c = ctx.c
     if q.step is not None:
         st = c[q.step]
-        if st.op is Op.OMEGA:
-            p, qq, vp, vq = st.inputs
-            return T("hint.omega", label=st.label, p=c[p].label, q=c[qq].label,
-                     a=c[vp].label, b=c[vq].label)
-        if st.op is Op.EPSILON:
-            p, qq, n, aq = st.inputs
-            return T("hint.epsilon", label=st.label, p=c[p].label, q=c[qq].label,
-                     n=c[n].label, a=c[aq].label)
+        if st.op.value_hint is not None:         # ω, ε: the rule of its operation
+            return text_of(st.op.value_hint(st, c))
         return T("hint.value_step", display=q.display, op=T(f"op.{st.op.value}"),
                  label=st.label)
     if q.segment is not None:
