@@ -35,7 +35,8 @@ def test_every_operation_has_one_spec():
             assert (s.evaluate is None) == (s.source is Source.DRIVE), name
     assert {v for v in vars(Op).values() if isinstance(v, OpSpec)} == set(SPECS.values())
     assert spec(Op.LINE_PERP) is Op.LINE_PERP and registered("line_perp") is Op.LINE_PERP
-    assert repr(Op.CIRCLE_CIRCLE) == "Op.CIRCLE_CIRCLE" and Op.CIRCLE_CIRCLE.value == "circle_circle"
+    assert repr(Op.CIRCLE_CIRCLE) == "Op.CIRCLE_CIRCLE"
+    assert Op.CIRCLE_CIRCLE.value == "circle_circle"
     with pytest.raises(KeyError, match="no operation"):
         registered("circle_square")
 

@@ -8,8 +8,10 @@ each output's error estimate and a mask of positions that cannot be built. With 
 without it the numpy path is used (:func:`compile_kernel` raises :class:`KernelUnavailable`, and
 :func:`evaluate_fast` falls back).
 
-Only the kinematic operations have scalar forms; a construction whose outputs need a force step is
-evaluated by the numpy path.
+Only the kinematic operations have scalar forms (``_OPS``); a construction whose outputs need a
+step without one — a force step, or a new operation — raises :class:`KernelUnsupported` and is
+evaluated by the numpy path. A step's error lever is its spec's (``OpSpec.lever_of``), as in
+``construct/estimate.py``.
 """
 
 from __future__ import annotations
