@@ -65,6 +65,9 @@ def test_levers_name_two_point_inputs():
     for s in SPECS.values():
         if isinstance(s.lever, tuple):
             assert len(s.lever) == 2 and set(s.lever) <= set(s.inputs), s.value
+        if s.rate_of is not None:      # a link's rate: its relative vector over the link's length
+            assert isinstance(s.lever, tuple) and set(s.rate_of) <= set(s.inputs), s.value
+    assert {s for s in SPECS.values() if s.rate_of} == {Op.OMEGA, Op.EPSILON}
     with pytest.raises(KeyError, match="has no input"):
         OpSpec("toy", SPECS["omega"].evaluate, None, lever=("p", "nowhere"))
 

@@ -161,7 +161,7 @@ def grade_values(ctx: Ctx, k: int, drawn: list[Drawn], first: dict[PlanKey, Draw
         paper = mu or (ctx.scales.get(plan) if plan else None)
         if seg is not None and paper:
             tol_abs = max(tol_abs, tol.mm * paper)
-        elif q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON) and plan is not None:
+        elif q.step is not None and c[q.step].op.rate_of is not None and plan is not None:
             mu_p = mu_all.get(plan) or ctx.scales.get(plan)
             l = _link_length(ctx, q.step, k)
             if mu_p and l:
@@ -231,9 +231,10 @@ def _absolute_segment(c: Construction, step: str | None) -> Segment | None:
 
 def _link_length(ctx: Ctx, sid: str, k: int) -> float | None:
     st = ctx.c[sid]
-    if st.op not in (Op.OMEGA, Op.EPSILON):
+    lever = st.op.lever_of(st)              # ω, ε: the link's two points
+    if st.op.rate_of is None or lever is None:
         return None
-    p, q = st.inputs[0], st.inputs[1]
+    p, q = lever
     return float(np.hypot(*(exact_at(ctx, q, k) - exact_at(ctx, p, k))))
 
 
@@ -287,7 +288,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return own, T("own.table", seg=seg.name, len=ts.length_mm, mu=m, own=own,
                           unit=unit), max(
                 rel, gv.half_unit, ts.length_half_unit * m)
-    if q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON):
+    if q.step is not None and c[q.step].op.rate_of is not None:     # ω, ε of a link
         st = c[q.step]
         plan_points = [first.get(plan_key(st.plan))]
         if plan_points[0] is not None and plan_points[0].si:
@@ -295,7 +296,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return abs(own), T("own.plan", label=st.label, own=abs(own), unit=unit), max(
                 0.01 * abs(gv.value), gv.half_unit)
         # from a table: the relative segment's length × μ / l
-        _p, _qq, a, b = st.inputs
+        a, b = (st.input(name) for name in st.op.rate_of)
         relseg = next((s for s in c.segments if {s.start, s.end} == {a, b}), None)
         ts = table_len.get(id(relseg)) if relseg is not None else None
         m = (ts.mu if ts else None) or mu

@@ -109,7 +109,8 @@ NORMAL = OpSpec("normal", normal, "protocol.op.normal", Drawn.POINT, Line.THIN, 
 CORIOLIS = OpSpec("coriolis", coriolis, "protocol.op.coriolis", Drawn.POINT, Line.THIN,
                   Grade.POINT, hint_rule=coriolis_hint)
 EPSILON = OpSpec("epsilon", epsilon, "protocol.op.epsilon", grade=Grade.VALUE,
-                 written=Written.RATE, lever=("p", "q"), value_hint=epsilon_value_hint)
+                 written=Written.RATE, lever=("p", "q"), rate_of=("normal_end", "aq"),
+                 value_hint=epsilon_value_hint)
 RIGID_ACCELERATION = OpSpec("rigid_acceleration", rigid_acceleration,
                             "protocol.op.rigid_acceleration", Drawn.POINT, Line.OUTLINE,
                             Grade.POINT, written=Written.MEET, hint_rule=rigid_hint)

@@ -6,7 +6,7 @@ is listed here, so adding an operation to a family adds it here.
 
 from __future__ import annotations
 
-from .acceleration import *  # noqa: F403
-from .force import *  # noqa: F403
-from .position import *  # noqa: F403
-from .velocity import *  # noqa: F403
+from .acceleration import *
+from .force import *
+from .position import *
+from .velocity import *

@@ -8,7 +8,8 @@ its spec (``step.op``), compared with ``is``. Its named inputs are the parameter
 the rest); its protocol sentence is the catalogue message ``message`` (``locale/*/protocol.po``);
 ``draw`` and ``line`` say what a sheet draws for it; ``written`` how the protocol writes its value;
 ``lever`` which two input points a direction or a rate is taken from (their distance divides the
-error estimate); ``grade``, ``hint`` and ``hint_rule`` how the checker grades a submitted point or
+error estimate), ``rate_of`` for a link's ω or ε the two images of the relative vector it is read
+from; ``grade``, ``hint`` and ``hint_rule`` how the checker grades a submitted point or
 line of it and what it tells the student (as :class:`Hint` message ids of ``locale/*/check.po``).
 """
 
@@ -176,6 +177,8 @@ class OpSpec:
     source: Source = Source.INPUTS
     written: Written = Written.PLAIN     # how the protocol writes its value
     lever: Lever | None = None           # two named inputs (points), or a rule giving two ids
+    rate_of: tuple[str, str] | None = None  # a link's ω or ε: the two images of its relative
+    #                                         vector (over the lever's length: the rate)
     hint: StepHint = step_hint           # the checker's hint for a wrong segment ending at it
     value_hint: StepHint | None = None   # the hint for a wrong written value (None: generic)
     hint_rule: HintRule | None = None    # how a submitted point breaks its rule (None: generic)
@@ -194,9 +197,10 @@ class OpSpec:
                     names.append(p.name)
         object.__setattr__(self, "inputs", tuple(names))
         object.__setattr__(self, "rest", rest)
-        if isinstance(self.lever, tuple):
-            for name in self.lever:
-                self.index(name)
+        for pair in (self.lever, self.rate_of):
+            if isinstance(pair, tuple):
+                for name in pair:
+                    self.index(name)
 
     @property
     def name(self) -> str:

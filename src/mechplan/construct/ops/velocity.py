@@ -140,7 +140,7 @@ LINE_PERP = OpSpec("line_perp", line_perp, "protocol.op.line_perp", Drawn.CONSTR
 LINE_PARALLEL = OpSpec("line_parallel", line_parallel, "protocol.op.line_parallel",
                        Drawn.CONSTRUCTION_LINE, Line.DASHED, Grade.DIRECTION)
 OMEGA = OpSpec("omega", omega, "protocol.op.omega", grade=Grade.VALUE, written=Written.RATE,
-               lever=("p", "q"), value_hint=omega_value_hint)
+               lever=("p", "q"), rate_of=("vp", "vq"), value_hint=omega_value_hint)
 RIGID_VELOCITY = OpSpec("rigid_velocity", rigid_velocity, "protocol.op.rigid_velocity",
                         Drawn.POINT, Line.OUTLINE, Grade.POINT, written=Written.MEET,
                         hint_rule=rigid_hint)
