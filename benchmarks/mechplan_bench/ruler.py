@@ -8,7 +8,8 @@ from typing import Any
 import numpy as np
 
 from mechplan.construct.graph import Construction, Evaluation
-from mechplan.construct.step import Kind, Op, Plan
+from mechplan.construct.ops import Op
+from mechplan.construct.step import Kind, Plan
 
 
 class RulerEvaluation(Evaluation):

@@ -10,7 +10,8 @@ import mechplan_bench as bench
 import numpy as np
 import pytest
 
-from mechplan.construct.step import Kind, Op
+from mechplan.construct.ops import Op
+from mechplan.construct.step import Kind
 
 METHODS = ("exact float64", "exact float32", "ruler 0.5 mm", "finite differences", "λ-series",
            "numpy closed form")

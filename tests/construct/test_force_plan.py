@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from mechplan.construct.builder import build_construction
-from mechplan.construct.ops import EVALUATORS
+from mechplan.construct.ops import EVALUATORS, Op
 from mechplan.construct.plans import force
-from mechplan.construct.step import Kind, Op, Plan
+from mechplan.construct.step import Kind, Plan
 from mechplan.construct.terms import Relation
 from mechplan.dynamics import Loading
 from mechplan.model.loads import LoadKind, LoadSpec

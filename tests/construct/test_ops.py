@@ -2,15 +2,17 @@
 
 from __future__ import annotations
 
+import copy
 import inspect
+import pickle
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 from mechplan.construct.builder import build_construction
-from mechplan.construct.ops import SPECS, Source, spec
-from mechplan.construct.step import Op
+from mechplan.construct.ops import FAMILIES, SPECS, Op, OpSpec, Source, registered, spec
+from mechplan.construct.step import Kind, Plan, Role, Step
 from mechplan.dynamics import Loading
 from mechplan.i18n import LANGUAGES, has_message
 from mechplan.model.loads import LoadKind, LoadSpec
@@ -21,18 +23,53 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def test_every_operation_has_one_spec():
-    assert set(SPECS) == set(Op)
-    for op, s in SPECS.items():
-        assert s.op is op
-        assert (s.evaluate is None) == (s.source is Source.DRIVE), op
+    names = [s.value for family in FAMILIES for s in (getattr(family, n) for n in family.__all__)]
+    assert len(names) == len(set(names)) == len(SPECS) == 42
+    for family in FAMILIES:
+        declared = {n for n, v in vars(family).items() if isinstance(v, OpSpec)}
+        assert declared == set(family.__all__), family.__name__      # none left out of Op
+        for name in family.__all__:
+            s = getattr(family, name)
+            assert s.name == name == s.value.upper() and SPECS[s.value] is s
+            assert getattr(Op, name) is s                             # the Op namespace
+            assert (s.evaluate is None) == (s.source is Source.DRIVE), name
+    assert {v for v in vars(Op).values() if isinstance(v, OpSpec)} == set(SPECS.values())
+    assert spec(Op.LINE_PERP) is Op.LINE_PERP and registered("line_perp") is Op.LINE_PERP
+    assert repr(Op.CIRCLE_CIRCLE) == "Op.CIRCLE_CIRCLE"
+    assert Op.CIRCLE_CIRCLE.value == "circle_circle"
+    with pytest.raises(KeyError, match="no operation"):
+        registered("circle_square")
+
+
+def test_specs_are_identities_across_processes():
+    # a step sent to a worker process comes back holding the registry's spec, not a copy
+    step = Step("v.c", Op.LINE_LINE, ("a", "b"), Plan.VELOCITY, Kind.POINT, Role.RESULT, "c")
+    again = pickle.loads(pickle.dumps(step))
+    assert again.op is Op.LINE_LINE and again == step and hash(again) == hash(step)
+    assert copy.deepcopy(Op.OMEGA) is Op.OMEGA and Op.OMEGA != Op.EPSILON
 
 
 def test_every_sentence_is_in_every_catalogue():
     for s in SPECS.values():
+        for lang in LANGUAGES:
+            # the checker names every operation ("check step c: two lines meet")
+            assert has_message(f"check.op.{s.value}", lang), (s.value, lang)
         if s.message is not None:
-            assert s.message == f"protocol.op.{s.op.value}"
+            assert s.message == f"protocol.op.{s.value}"
             for lang in LANGUAGES:
                 assert has_message(s.message, lang), (s.message, lang)
+
+
+def test_levers_name_two_point_inputs():
+    assert Op.SIMILAR_IMAGE.lever == ("pa", "pb") and Op.LINE_PERP.lever == ("p", "q")
+    for s in SPECS.values():
+        if isinstance(s.lever, tuple):
+            assert len(s.lever) == 2 and set(s.lever) <= set(s.inputs), s.value
+        if s.rate_of is not None:      # a link's rate: its relative vector over the link's length
+            assert isinstance(s.lever, tuple) and set(s.rate_of) <= set(s.inputs), s.value
+    assert {s for s in SPECS.values() if s.rate_of} == {Op.OMEGA, Op.EPSILON}
+    with pytest.raises(KeyError, match="has no input"):
+        OpSpec("toy", SPECS["omega"].evaluate, None, lever=("p", "nowhere"))
 
 
 def test_inputs_are_the_parameters_of_the_evaluation():

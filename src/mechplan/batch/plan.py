@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction
-from ..construct.step import Op
+from ..construct.ops import Op
 from ..errors import MechplanError, SceneError
 from ..model.mechanism import GROUND, PairKind
 from ..scene import parse_scene

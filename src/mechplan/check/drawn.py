@@ -7,7 +7,8 @@ import math
 
 import numpy as np
 
-from ..construct.step import Op, Plan
+from ..construct.ops import Op
+from ..construct.step import Plan
 from .context import (
     PLAN_UNIT,
     Ctx,

@@ -16,7 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from ..construct.step import Op, Plan
+from ..construct.ops import Op
+from ..construct.step import Plan
 from ..errors import CheckError, MechplanError
 from ..scene.spec import Scene
 from .context import (

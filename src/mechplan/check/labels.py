@@ -15,7 +15,8 @@ import unicodedata
 from dataclasses import dataclass, field
 
 from ..construct.graph import Construction
-from ..construct.step import Kind, Op, Plan
+from ..construct.ops import Op
+from ..construct.step import Kind, Plan
 from ..model.mechanism import GROUND, Mechanism
 from . import notation
 

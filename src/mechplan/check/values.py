@@ -10,8 +10,9 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction
+from ..construct.ops import Op
 from ..construct.segments import Segment
-from ..construct.step import Kind, Op, Plan
+from ..construct.step import Kind, Plan
 from ..errors import MechplanError
 from .context import (
     SI_UNIT,
@@ -24,7 +25,7 @@ from .context import (
     row_brief,
     seg_exact,
 )
-from .hints import depends_on
+from .hints import depends_on, text_of
 from .labels import PlanKey, plan_key
 from .match import GivenValue, TableSegment
 from .report import (
@@ -123,21 +124,8 @@ def grade_table_segments(ctx: Ctx, k: int, mu_all: dict[Plan, float],
 
 
 def _table_hint(ctx: Ctx, seg: Segment) -> str:
-    from ..construct.protocol import TEXT
-
     st = ctx.c[seg.end]
-    texts = TEXT.get(st.op)
-    base = T("hint.step", op=T(f"op.{st.op.value}"), label=st.label)
-    if texts and st.op in (Op.LINE_LINE,):
-        base = T("hint.meet", label=st.label, a=ctx.c[st.inputs[0]].label,
-                 b=ctx.c[st.inputs[1]].label)
-    elif st.op is Op.NORMAL:
-        base = T("hint.normal", label=st.label)
-    elif st.op is Op.SIMILAR_IMAGE:
-        base = T("hint.similar", label=st.label)
-    elif st.op in (Op.DRIVE_VELOCITY, Op.DRIVE_ACCELERATION):
-        base = T("hint.drive", label=st.label)
-    return base
+    return text_of(st.op.hint(st, ctx.c))          # the hint of its operation (``OpSpec.hint``)
 
 
 # -- named values -------------------------------------------------------------------------------
@@ -173,7 +161,7 @@ def grade_values(ctx: Ctx, k: int, drawn: list[Drawn], first: dict[PlanKey, Draw
         paper = mu or (ctx.scales.get(plan) if plan else None)
         if seg is not None and paper:
             tol_abs = max(tol_abs, tol.mm * paper)
-        elif q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON) and plan is not None:
+        elif q.step is not None and c[q.step].op.rate_of is not None and plan is not None:
             mu_p = mu_all.get(plan) or ctx.scales.get(plan)
             l = _link_length(ctx, q.step, k)
             if mu_p and l:
@@ -226,14 +214,8 @@ def _value_hint(ctx: Ctx, q: Any) -> str:
     c = ctx.c
     if q.step is not None:
         st = c[q.step]
-        if st.op is Op.OMEGA:
-            p, qq, vp, vq = st.inputs
-            return T("hint.omega", label=st.label, p=c[p].label, q=c[qq].label,
-                     a=c[vp].label, b=c[vq].label)
-        if st.op is Op.EPSILON:
-            p, qq, n, aq = st.inputs
-            return T("hint.epsilon", label=st.label, p=c[p].label, q=c[qq].label,
-                     n=c[n].label, a=c[aq].label)
+        if st.op.value_hint is not None:         # ω, ε: the rule of its operation
+            return text_of(st.op.value_hint(st, c))
         return T("hint.value_step", display=q.display, op=T(f"op.{st.op.value}"),
                  label=st.label)
     if q.segment is not None:
@@ -249,9 +231,10 @@ def _absolute_segment(c: Construction, step: str | None) -> Segment | None:
 
 def _link_length(ctx: Ctx, sid: str, k: int) -> float | None:
     st = ctx.c[sid]
-    if st.op not in (Op.OMEGA, Op.EPSILON):
+    lever = st.op.lever_of(st)              # ω, ε: the link's two points
+    if st.op.rate_of is None or lever is None:
         return None
-    p, q = st.inputs[0], st.inputs[1]
+    p, q = lever
     return float(np.hypot(*(exact_at(ctx, q, k) - exact_at(ctx, p, k))))
 
 
@@ -305,7 +288,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return own, T("own.table", seg=seg.name, len=ts.length_mm, mu=m, own=own,
                           unit=unit), max(
                 rel, gv.half_unit, ts.length_half_unit * m)
-    if q.step is not None and c[q.step].op in (Op.OMEGA, Op.EPSILON):
+    if q.step is not None and c[q.step].op.rate_of is not None:     # ω, ε of a link
         st = c[q.step]
         plan_points = [first.get(plan_key(st.plan))]
         if plan_points[0] is not None and plan_points[0].si:
@@ -313,7 +296,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return abs(own), T("own.plan", label=st.label, own=abs(own), unit=unit), max(
                 0.01 * abs(gv.value), gv.half_unit)
         # from a table: the relative segment's length × μ / l
-        _p, _qq, a, b = st.inputs
+        a, b = (st.input(name) for name in st.op.rate_of)
         relseg = next((s for s in c.segments if {s.start, s.end} == {a, b}), None)
         ts = table_len.get(id(relseg)) if relseg is not None else None
         m = (ts.mu if ts else None) or mu

@@ -12,8 +12,9 @@ from ..errors import SceneError
 from ..model.mechanism import GROUND, Guide, Link, Mechanism, Pair, PairKind
 from ..model.structure import Structure
 from .graph import Construction, DriveMap
+from .ops import OpSpec
 from .segments import Segment, SegmentKind
-from .step import Kind, Op, Plan, Role, Step
+from .step import Kind, Plan, Role, Step
 
 
 def vlabel(point: str) -> str:
@@ -71,7 +72,7 @@ class Builder:
         self.bodies: dict[str, Body] = {k: Body(link) for k, link in mech.links.items()}
 
     # -- step helpers ------------------------------------------------------------------------
-    def add(self, id: str, op: Op, inputs: tuple[str, ...], plan: Plan, kind: Kind, role: Role,
+    def add(self, id: str, op: OpSpec, inputs: tuple[str, ...], plan: Plan, kind: Kind, role: Role,
             label: str, group: str = "", subject: tuple[str, ...] = (), **params: Any) -> str:
         """Add a step (or return the existing one with the same id)."""
         if id in self.c:

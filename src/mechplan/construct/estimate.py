@@ -17,14 +17,15 @@ meaningful relative error.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..geom.vec import Array
 from .graph import Construction, Evaluation
-from .step import Kind, Op, Plan, Step
+from .ops import Op
+from .step import Kind, Plan, Step
 
 #: relative error above which a quantity is flagged (settable per call)
 DEFAULT_TOLERANCE = 1e-6
@@ -210,10 +211,10 @@ class _Propagator:
                 rel = self.rel[step.inputs[0]] + u
                 for i in step.inputs[1:]:
                     np.maximum(rel, self.rel[i] + u, out=rel)
-                amplify = _AMPLIFY.get(step.op)
+                lever = step.op.lever_of(step)     # a direction or rate taken from two points
                 with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-                    if amplify is not None:
-                        np.divide(rel, amplify(self, step), out=rel)
+                    if lever is not None:
+                        np.divide(rel, self.distance(*lever), out=rel)
                     sine = self.ev.sines.get(sid)
                     if sine is not None:
                         np.divide(rel, sine, out=rel, casting="same_kind")
@@ -224,40 +225,6 @@ class _Propagator:
             if sid in targets and scale > 0.0:
                 out.results[sid] = self.ev.values[sid]
         return out
-
-
-# -- amplification: what a step divides its inputs' errors by (besides a meet's sine) -----------
-Amplify = Callable[[_Propagator, Step], Array]
-
-
-def _first_two(p: _Propagator, s: Step) -> Array:
-    return p.distance(s.inputs[0], s.inputs[1])
-
-
-def _last_two(p: _Propagator, s: Step) -> Array:
-    return p.distance(s.inputs[-2], s.inputs[-1])
-
-
-def _similar_side(p: _Propagator, s: Step) -> Array:
-    _a, _b, pa, pb, _px = s.inputs
-    return p.distance(pa, pb)
-
-
-def _force_line(p: _Propagator, s: Step) -> Array:
-    if len(s.inputs) == 3:
-        return p.distance(s.inputs[1], s.inputs[2])
-    return np.ones(p.ev.n, p.dtype)
-
-
-_AMPLIFY: dict[Op, Amplify] = {
-    Op.ANGLE_OF: _first_two,            # a direction from two points
-    Op.CARRIER_ANGLE: _first_two,       # the guide through a point seen from its pivot
-    Op.LINE_PERP: _last_two,            # ⊥ a link given by two points
-    Op.OMEGA: _first_two,               # v_rel / l
-    Op.EPSILON: _first_two,             # a^t / l
-    Op.SIMILAR_IMAGE: _similar_side,    # a triangle built on a side of the link
-    Op.FORCE_LINE: _force_line,
-}
 
 
 def _magnitude_divisor(value: Array, scale: float, dtype: type) -> Array:

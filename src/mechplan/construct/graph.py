@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geom.vec import Array
-from .ops import Source, spec
+from .ops import Source
 from .segments import Segment
 from .step import Plan, Step
 from .terms import Row
@@ -241,7 +241,7 @@ class Evaluation:
 
     def _compute(self, step: Step) -> None:
         value: Array
-        op = spec(step.op)
+        op = step.op
         if step.id in self.overrides:
             value, gap, sine = np.asarray(self.overrides[step.id], dtype=self.dtype), None, None
             if value.shape[:1] != (self.n,):

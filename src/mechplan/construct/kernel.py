@@ -8,8 +8,10 @@ each output's error estimate and a mask of positions that cannot be built. With 
 without it the numpy path is used (:func:`compile_kernel` raises :class:`KernelUnavailable`, and
 :func:`evaluate_fast` falls back).
 
-Only the kinematic operations have scalar forms; a construction whose outputs need a force step is
-evaluated by the numpy path.
+Only the kinematic operations have scalar forms (``_OPS``); a construction whose outputs need a
+step without one — a force step, or a new operation — raises :class:`KernelUnsupported` and is
+evaluated by the numpy path. A step's error lever is its spec's (``OpSpec.lever_of``), as in
+``construct/estimate.py``.
 """
 
 from __future__ import annotations
@@ -23,8 +25,9 @@ import numpy as np
 
 from .estimate import ROUNDINGS_PER_STEP, UNBOUNDED, length_scale, plan_sizes, scale_of
 from .graph import Construction
-from .kernel_load import KernelUnavailable, load
-from .step import Kind, Op, Step
+from .kernel_load import KernelUnavailable, KernelUnsupported, load
+from .ops import Op, OpSpec
+from .step import Kind, Step
 from .validity import MAX_CONDITION
 
 
@@ -84,7 +87,7 @@ class _Gen:
         self.idx[s.id] = len(self.idx)
         gen = _OPS.get(s.op)
         if gen is None:
-            raise KernelUnavailable(f"no scalar form for the operation {s.op.value}")
+            raise KernelUnsupported(f"no scalar form for the operation {s.op.value}")
         n = self.name(s.id)
         sine = gen(self, s, n)
         e = self.err(s.id)
@@ -94,9 +97,9 @@ class _Gen:
             self.emit(f"{e} = {self.err(s.inputs[0])} + U")
             for i in s.inputs[1:]:
                 self.emit(f"{e} = max({e}, {self.err(i)} + U)")
-            amplify = _AMPLIFY.get(s.op)
+            amplify = s.op.lever_of(s)      # the spec's lever, as the numpy estimate reads it
             if amplify is not None:
-                self.emit(f"{e} = _div({e}, {self.distance(*amplify(s))})")
+                self.emit(f"{e} = _div({e}, {self.distance(*amplify)})")
             if sine is not None:
                 self.emit(f"{e} = _div({e}, {sine})")
 
@@ -314,7 +317,9 @@ def _difference(g: _Gen, s: Step, n: str) -> None:
     g.emit(f"{n}x = {bx} - {ax}", f"{n}y = {by} - {ay}")
 
 
-_OPS: dict[Op, Gen] = {
+#: the scalar form of each operation that has one (an operation without one makes
+#: :func:`compile_kernel` raise :class:`KernelUnsupported`: the caller uses the numpy path)
+_OPS: dict[OpSpec, Gen] = {
     Op.CRANK_ANGLE: _crank, Op.FIXED_POINT: _fixed, Op.CONSTANT: _constant, Op.POLE: _pole,
     Op.POLAR_POINT: _polar, Op.ANGLE_OF: _angle_of, Op.ANGLE_PLUS: _angle_plus,
     Op.CIRCLE_CIRCLE: _circle_circle, Op.CIRCLE_LINE: _circle_line, Op.LINE_LINE: _line_line,
@@ -327,16 +332,6 @@ _OPS: dict[Op, Gen] = {
     Op.DIFFERENCE: _difference,
 }
 
-
-def _pair(first: int, second: int) -> Callable[[Step], tuple[str, str]]:
-    return lambda s: (s.inputs[first], s.inputs[second])
-
-
-#: the two points whose distance a step's error is divided by (mirrors estimate._AMPLIFY)
-_AMPLIFY: dict[Op, Callable[[Step], tuple[str, str]]] = {
-    Op.ANGLE_OF: _pair(0, 1), Op.CARRIER_ANGLE: _pair(0, 1), Op.LINE_PERP: _pair(-2, -1),
-    Op.OMEGA: _pair(0, 1), Op.EPSILON: _pair(0, 1), Op.SIMILAR_IMAGE: _pair(2, 3),
-}
 
 _HELPERS = '''
 import math
@@ -475,5 +470,5 @@ def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) ->
     return Kernel(targets, kinds, columns, width, source, function, compiled)
 
 
-__all__ = ["CANNOT_TRUST", "OVER_TOLERANCE", "Kernel", "KernelUnavailable", "compile_kernel",
-           "kernel_source"]
+__all__ = ["CANNOT_TRUST", "OVER_TOLERANCE", "Kernel", "KernelUnavailable", "KernelUnsupported",
+           "compile_kernel", "kernel_source"]

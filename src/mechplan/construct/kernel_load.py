@@ -20,6 +20,11 @@ class KernelUnavailable(RuntimeError):
     """The construction (or this installation) has no compiled kernel; use the numpy path."""
 
 
+class KernelUnsupported(KernelUnavailable):
+    """An operation the outputs need has no scalar form in ``construct/kernel.py``; use the numpy
+    path (an internal signal: callers catch :class:`KernelUnavailable`)."""
+
+
 def _cache_dir() -> Path:
     base = os.environ.get("MECHPLAN_CACHE") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"),

@@ -14,13 +14,13 @@ import numpy as np
 
 from ..i18n import message, number
 from .graph import Construction, Evaluation
-from .ops import SPECS, Drawn, Written, spec
+from .ops import SPECS, Drawn, OpSpec, Written
 from .segments import Segment
-from .step import Op, Plan, Step
+from .step import Plan, Step
 from .terms import pole_label
 
 #: operation → message id of its sentence (kept for ``check/``, which asks whether one exists)
-TEXT: dict[Op, str] = {op: s.message for op, s in SPECS.items() if s.message}
+TEXT: dict[OpSpec, str] = {s: s.message for s in SPECS.values() if s.message}
 
 
 def plan_title(plan: Plan, lang: str) -> str:
@@ -48,7 +48,7 @@ def vector_text(value: np.ndarray, lang: str, digits: int = 1, unit: str = "N") 
 
 
 def _scalar_text(step: Step, value: float, lang: str) -> str:
-    written = spec(step.op).written
+    written = step.op.written
     if step.plan is Plan.FORCE:
         if written is Written.OFFSET:
             return f"{number(value * 1000, 1, lang)} {mm(lang)}"
@@ -86,12 +86,12 @@ def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
     else:
         v = ""
     label = pole_label(step.label, lang)
-    msgid = spec(step.op).message
+    msgid = step.op.message
     if msgid is None:
         return f"{label} = {v or m}"
     fields = {
         "label": label,
-        "m": (": " + m) if m and spec(step.op).written is Written.MEET else m,
+        "m": (": " + m) if m and step.op.written is Written.MEET else m,
         "v": v,
         "pole": "p" if step.plan is Plan.VELOCITY else pole_label("π", lang),
         "a": "",
@@ -100,7 +100,7 @@ def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,
         "s1": subject[1],
         "s2": subject[2],
     }
-    if spec(step.op).draw is Drawn.IMAGE_TRIANGLE:     # the two images it is similar to
+    if step.op.draw is Drawn.IMAGE_TRIANGLE:     # the two images it is similar to
         fields.update(a=pole_label(c[step.input("a")].label, lang),
                       b=pole_label(c[step.input("b")].label, lang))
     return message(msgid, lang, **fields)
@@ -111,7 +111,7 @@ def protocol(c: Construction, ev: Evaluation, k: int, lang: str, mu: dict[Plan, 
     """(plan, label, sentence) for every evaluated step of the given plans at position k."""
     out = []
     for step in c:
-        if step.plan in plans and step.id in ev.values and spec(step.op).message is not None:
+        if step.plan in plans and step.id in ev.values and step.op.message is not None:
             out.append(
                 (step.plan, pole_label(step.label, lang), sentence(c, step, ev, k, lang, mu))
             )

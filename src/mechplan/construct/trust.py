@@ -19,7 +19,7 @@ import numpy as np
 from ..errors import MechplanError, SingularError
 from .estimate import UNBOUNDED, ErrorEstimate, estimate_errors
 from .graph import Construction, Evaluation
-from .step import Op
+from .ops import Op
 from .validity import MAX_CONDITION, ensure_valid
 
 

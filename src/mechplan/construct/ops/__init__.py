@@ -1,34 +1,52 @@
 """Every construction operation, declared once (one :class:`OpSpec` each), by family.
 
-To add an operation: a member of :class:`~mechplan.construct.step.Op`, an ``OpSpec`` in the
-family module it belongs to (its evaluate function beside it), and its protocol sentence
-``protocol.op.<name>`` in ``locale/<lang>/protocol.po`` for the four languages.
+To add an operation: its evaluate function and its ``OpSpec`` constant (named ``value.upper()``,
+listed in the module's ``__all__``) in the family module it belongs to, and its protocol sentence
+``protocol.op.<name>`` in ``locale/<lang>/protocol.po`` for the four languages. It is then
+``Op.<NAME>`` and in :data:`SPECS`; without a scalar form in ``construct/kernel.py`` a construction
+that needs it is evaluated by the numpy path.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from ..step import Op, Step
+from ..step import Step
 from . import acceleration, force, position, velocity
-from .spec import Drawn, Grade, Line, OpSpec, Result, Source, Written
+from . import catalog as Op
+from .spec import (
+    Drawn,
+    Grade,
+    Hint,
+    HintView,
+    Joined,
+    Line,
+    OpSpec,
+    Result,
+    Source,
+    Written,
+    registered,
+)
 
-#: the registry: operation → its spec (built once from the family modules' ``SPECS``)
-SPECS: dict[Op, OpSpec] = {s.op: s for family in (position, velocity, acceleration, force)
-                           for s in family.SPECS}
+#: the families, in the order of the plans
+FAMILIES = (position, velocity, acceleration, force)
+
+#: the registry: name → spec, from the families' ``__all__``
+SPECS: dict[str, OpSpec] = {spec.value: spec for family in FAMILIES
+                            for spec in (getattr(family, name) for name in family.__all__)}
 
 
-def spec(op: Op) -> OpSpec:
-    """Return the spec of an operation."""
-    return SPECS[op]
+def spec(op: OpSpec) -> OpSpec:
+    """The spec of an operation: the operation itself (kept for callers that ask for it)."""
+    return op
 
 
-#: operation → evaluate(step, *input values) (kept for ``check/``)
-EVALUATORS: dict[Op, Callable[..., Result]] = {
-    s.op: s.evaluate for s in SPECS.values() if s.source is Source.INPUTS and s.evaluate}
-#: operations whose value depends only on the number of positions (kept for ``check/``)
-SOURCES: dict[Op, Callable[[Step, int], Result]] = {
-    s.op: s.evaluate for s in SPECS.values() if s.source is Source.POSITIONS and s.evaluate}
+#: operation → evaluate(step, *input values)
+EVALUATORS: dict[OpSpec, Callable[..., Result]] = {
+    s: s.evaluate for s in SPECS.values() if s.source is Source.INPUTS and s.evaluate}
+#: operations whose value depends only on the number of positions
+SOURCES: dict[OpSpec, Callable[[Step, int], Result]] = {
+    s: s.evaluate for s in SPECS.values() if s.source is Source.POSITIONS and s.evaluate}
 
-__all__ = ["EVALUATORS", "SOURCES", "SPECS", "Drawn", "Grade", "Line", "OpSpec", "Result",
-           "Source", "Written", "spec"]
+__all__ = ["EVALUATORS", "FAMILIES", "SOURCES", "SPECS", "Drawn", "Grade", "Hint", "HintView",
+           "Joined", "Line", "Op", "OpSpec", "Result", "Source", "Written", "registered", "spec"]

@@ -13,8 +13,21 @@ import numpy as np
 
 from ...geom import meet
 from ...geom.vec import Array, cross, direction, dot, norm, perp, unit
-from ..step import Op, Step
-from .spec import Drawn, Grade, Line, OpSpec, Result, Written
+from ..step import Step
+from .spec import (
+    Drawn,
+    Grade,
+    Hint,
+    HintView,
+    Line,
+    OpSpec,
+    Result,
+    Written,
+    hint,
+    measured,
+    on_lines,
+    point_of,
+)
 
 
 def force_inertia(step: Step, a_centre: Array) -> Result:
@@ -178,31 +191,65 @@ def difference(step: Step, start: Array, end: Array) -> Result:
     return end - start, None, None
 
 
-SPECS = (
-    OpSpec(Op.FORCE_INERTIA, force_inertia, "protocol.op.force_inertia", Drawn.VECTOR,
-           Line.OUTLINE, Grade.VALUE),
-    OpSpec(Op.MOMENT_INERTIA, moment_inertia, "protocol.op.moment_inertia", grade=Grade.VALUE),
-    OpSpec(Op.INERTIA_OFFSET, inertia_offset, "protocol.op.inertia_offset", grade=Grade.VALUE,
-           written=Written.OFFSET),
-    OpSpec(Op.LINE_OF_ACTION, line_of_action, None),
-    OpSpec(Op.FORCE_LOAD, force_load, "protocol.op.force_load", Drawn.VECTOR, Line.OUTLINE),
-    OpSpec(Op.MOMENT_SUM, moment_sum, "protocol.op.moment_sum", grade=Grade.VALUE),
-    OpSpec(Op.MOMENT_ARM_TANGENTIAL, moment_arm_tangential, "protocol.op.moment_arm_tangential",
-           Drawn.VECTOR, Line.OUTLINE, Grade.VALUE),
-    OpSpec(Op.FORCE_SUM, force_sum, "protocol.op.force_sum", Drawn.VERTEX, Line.THIN,
-           Grade.POINT),
-    OpSpec(Op.FORCE_LINE, force_line, "protocol.op.force_line", Drawn.CONSTRUCTION_LINE,
-           Line.DASHED, Grade.DIRECTION),
-    OpSpec(Op.FORCE_CLOSE, force_close, "protocol.op.force_close", Drawn.MEET, Line.NONE,
-           Grade.MEET, "hint.meet", written=Written.MEET),
-    OpSpec(Op.DIFFERENCE, difference, "protocol.op.difference", Drawn.VECTOR, Line.OUTLINE,
-           Grade.VALUE),
-    OpSpec(Op.FORCE_REVERSE, negate, "protocol.op.force_reverse", Drawn.VECTOR, Line.OUTLINE,
-           Grade.VALUE),
-    OpSpec(Op.MOMENT_CLOSE, negate, "protocol.op.moment_close", grade=Grade.VALUE),
-    OpSpec(Op.BALANCING_MOMENT, negate, "protocol.op.balancing_moment", grade=Grade.VALUE),
-    OpSpec(Op.GUIDE_OFFSET, guide_offset, "protocol.op.guide_offset", grade=Grade.VALUE,
-           written=Written.OFFSET),
-    OpSpec(Op.ZHUKOVSKY, zhukovsky, "protocol.op.zhukovsky", Drawn.LEVER, Line.OUTLINE,
-           Grade.VALUE),
-)
+# -- check rules ----------------------------------------------------------------------------------
+def force_sum_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """The next vertex: the previous one plus the force, to scale (or the force left out)."""
+    plan, lbl = step.plan, view.labels
+    prev, force = step.inputs[0], step.inputs[1]
+    exact_len = view.mm(plan, float(np.hypot(*point_of(view.exact(force)))))
+    drawn = view.mm(plan, float(np.hypot(*(at - point_of(view.own(prev))))))
+    name = view.c[force].label
+    if drawn <= tol_mm < exact_len:
+        return hint("rule.load_missing", name=name, prev=lbl(prev), len=exact_len)
+    return measured(hint("rule.load_end", label=lbl(step.id), name=name, prev=lbl(prev),
+                         len=exact_len))
+
+
+def force_close_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """The closing lines of a polygon: the vertex must lie on both."""
+    return measured(hint("rule.closes", label=view.labels(step.id),
+                         parts=on_lines(step, view, at, tol_mm)))
+
+
+def direction_points(step: Step) -> tuple[str, str] | None:
+    """The two points a ``FORCE_LINE``'s direction is taken from (None: from an angle)."""
+    tail = step.rest()
+    return (tail[0], tail[1]) if len(tail) == 2 else None
+
+
+# -- the operations -------------------------------------------------------------------------------
+FORCE_INERTIA = OpSpec("force_inertia", force_inertia, "protocol.op.force_inertia", Drawn.VECTOR,
+                       Line.OUTLINE, Grade.VALUE)
+MOMENT_INERTIA = OpSpec("moment_inertia", moment_inertia, "protocol.op.moment_inertia",
+                        grade=Grade.VALUE)
+INERTIA_OFFSET = OpSpec("inertia_offset", inertia_offset, "protocol.op.inertia_offset",
+                        grade=Grade.VALUE, written=Written.OFFSET)
+LINE_OF_ACTION = OpSpec("line_of_action", line_of_action, None)
+FORCE_LOAD = OpSpec("force_load", force_load, "protocol.op.force_load", Drawn.VECTOR,
+                    Line.OUTLINE)
+MOMENT_SUM = OpSpec("moment_sum", moment_sum, "protocol.op.moment_sum", grade=Grade.VALUE)
+MOMENT_ARM_TANGENTIAL = OpSpec("moment_arm_tangential", moment_arm_tangential,
+                               "protocol.op.moment_arm_tangential", Drawn.VECTOR, Line.OUTLINE,
+                               Grade.VALUE)
+FORCE_SUM = OpSpec("force_sum", force_sum, "protocol.op.force_sum", Drawn.VERTEX, Line.THIN,
+                   Grade.POINT, hint_rule=force_sum_hint)
+FORCE_LINE = OpSpec("force_line", force_line, "protocol.op.force_line", Drawn.CONSTRUCTION_LINE,
+                    Line.DASHED, Grade.DIRECTION, lever=direction_points)
+FORCE_CLOSE = OpSpec("force_close", force_close, "protocol.op.force_close", Drawn.MEET,
+                     Line.NONE, Grade.MEET, written=Written.MEET, hint_rule=force_close_hint)
+DIFFERENCE = OpSpec("difference", difference, "protocol.op.difference", Drawn.VECTOR,
+                    Line.OUTLINE, Grade.VALUE)
+FORCE_REVERSE = OpSpec("force_reverse", negate, "protocol.op.force_reverse", Drawn.VECTOR,
+                       Line.OUTLINE, Grade.VALUE)
+MOMENT_CLOSE = OpSpec("moment_close", negate, "protocol.op.moment_close", grade=Grade.VALUE)
+BALANCING_MOMENT = OpSpec("balancing_moment", negate, "protocol.op.balancing_moment",
+                          grade=Grade.VALUE)
+GUIDE_OFFSET = OpSpec("guide_offset", guide_offset, "protocol.op.guide_offset",
+                      grade=Grade.VALUE, written=Written.OFFSET)
+ZHUKOVSKY = OpSpec("zhukovsky", zhukovsky, "protocol.op.zhukovsky", Drawn.LEVER, Line.OUTLINE,
+                   Grade.VALUE)
+
+__all__ = ["BALANCING_MOMENT", "DIFFERENCE", "FORCE_CLOSE", "FORCE_INERTIA", "FORCE_LINE",
+           "FORCE_LOAD", "FORCE_REVERSE", "FORCE_SUM", "GUIDE_OFFSET", "INERTIA_OFFSET",
+           "LINE_OF_ACTION", "MOMENT_ARM_TANGENTIAL", "MOMENT_CLOSE", "MOMENT_INERTIA",
+           "MOMENT_SUM", "ZHUKOVSKY"]

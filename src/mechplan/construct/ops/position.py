@@ -2,12 +2,33 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ...geom import meet
 from ...geom.vec import Array, angle_of, direction, rotate
-from ..step import Op, Step
-from .spec import Drawn, Grade, Line, OpSpec, Result, Source, Written, line, to_complex, to_real
+from ..step import Step
+from .spec import (
+    Drawn,
+    Grade,
+    Hint,
+    HintView,
+    Line,
+    OpSpec,
+    Result,
+    Source,
+    Written,
+    hint,
+    line,
+    measured,
+    on_lines,
+    to_complex,
+    to_real,
+)
+
+if TYPE_CHECKING:
+    from ..graph import Construction
 
 
 def fixed_point(step: Step, n: int) -> Result:
@@ -98,25 +119,49 @@ def similar_position(step: Step, a: Array, b: Array) -> Result:
     return to_real(za + (zb - za) * step.param("z")), None, None
 
 
-SPECS = (
-    OpSpec(Op.CRANK_ANGLE, None, "protocol.op.crank_angle", source=Source.DRIVE,
-           written=Written.ANGLE),
-    OpSpec(Op.FIXED_POINT, fixed_point, None, Drawn.POINT, source=Source.POSITIONS),
-    OpSpec(Op.CONSTANT, constant, "protocol.op.constant", source=Source.POSITIONS),
-    OpSpec(Op.POLAR_POINT, polar_point, "protocol.op.polar_point", Drawn.POINT, Line.OUTLINE,
-           Grade.POINT),
-    OpSpec(Op.ANGLE_OF, angle_of_segment, "protocol.op.angle_of", written=Written.ANGLE),
-    OpSpec(Op.ANGLE_PLUS, angle_plus, "protocol.op.angle_plus", written=Written.ANGLE),
-    OpSpec(Op.CIRCLE_CIRCLE, circle_circle, "protocol.op.circle_circle", Drawn.POINT,
-           Line.OUTLINE, Grade.POINT),
-    OpSpec(Op.CIRCLE_LINE, circle_line, "protocol.op.circle_line", Drawn.POINT, Line.OUTLINE,
-           Grade.POINT),
-    OpSpec(Op.LINE_LINE, line_line, "protocol.op.line_line", Drawn.MEET, Line.NONE, Grade.MEET,
-           "hint.meet", written=Written.MEET),
-    OpSpec(Op.LOCUS_LINE, locus_line, "protocol.op.locus_line", Drawn.CONSTRUCTION_LINE,
-           Line.DASHED, Grade.DIRECTION),
-    OpSpec(Op.CARRIER_ANGLE, carrier_angle, "protocol.op.carrier_angle", written=Written.ANGLE),
-    OpSpec(Op.PLACE, place, "protocol.op.place", Drawn.POINT, Line.OUTLINE, Grade.POINT),
-    OpSpec(Op.SIMILAR_POSITION, similar_position, "protocol.op.similar_position", Drawn.POINT,
-           Line.OUTLINE, Grade.POINT),
-)
+# -- check rules ----------------------------------------------------------------------------------
+def position_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """A point of the position plan: where the lengths of the links put it."""
+    return measured(hint("rule.position", label=view.labels(step.id)))
+
+
+def line_line_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """A meet of two lines: it must lie on both."""
+    return measured(hint("rule.must_lie", label=view.labels(step.id),
+                         parts=on_lines(step, view, at, tol_mm)))
+
+
+def meet_hint(step: Step, c: Construction) -> Hint:
+    """A wrong meet: which two lines it lies on."""
+    return hint("hint.meet", label=step.label, a=c[step.inputs[0]].label,
+                b=c[step.inputs[1]].label)
+
+
+# -- the operations -------------------------------------------------------------------------------
+CRANK_ANGLE = OpSpec("crank_angle", None, "protocol.op.crank_angle", source=Source.DRIVE,
+                     written=Written.ANGLE)
+FIXED_POINT = OpSpec("fixed_point", fixed_point, None, Drawn.POINT, source=Source.POSITIONS)
+CONSTANT = OpSpec("constant", constant, "protocol.op.constant", source=Source.POSITIONS)
+POLAR_POINT = OpSpec("polar_point", polar_point, "protocol.op.polar_point", Drawn.POINT,
+                     Line.OUTLINE, Grade.POINT, hint_rule=position_hint)
+ANGLE_OF = OpSpec("angle_of", angle_of_segment, "protocol.op.angle_of", written=Written.ANGLE,
+                  lever=("start", "end"))
+ANGLE_PLUS = OpSpec("angle_plus", angle_plus, "protocol.op.angle_plus", written=Written.ANGLE)
+CIRCLE_CIRCLE = OpSpec("circle_circle", circle_circle, "protocol.op.circle_circle", Drawn.POINT,
+                       Line.OUTLINE, Grade.POINT, hint_rule=position_hint)
+CIRCLE_LINE = OpSpec("circle_line", circle_line, "protocol.op.circle_line", Drawn.POINT,
+                     Line.OUTLINE, Grade.POINT, hint_rule=position_hint)
+LINE_LINE = OpSpec("line_line", line_line, "protocol.op.line_line", Drawn.MEET, Line.NONE,
+                   Grade.MEET, written=Written.MEET, hint=meet_hint, hint_rule=line_line_hint)
+LOCUS_LINE = OpSpec("locus_line", locus_line, "protocol.op.locus_line", Drawn.CONSTRUCTION_LINE,
+                    Line.DASHED, Grade.DIRECTION)
+CARRIER_ANGLE = OpSpec("carrier_angle", carrier_angle, "protocol.op.carrier_angle",
+                       written=Written.ANGLE, lever=("pivot", "slider"))
+PLACE = OpSpec("place", place, "protocol.op.place", Drawn.POINT, Line.OUTLINE, Grade.POINT,
+               hint_rule=position_hint)
+SIMILAR_POSITION = OpSpec("similar_position", similar_position, "protocol.op.similar_position",
+                          Drawn.POINT, Line.OUTLINE, Grade.POINT, hint_rule=position_hint)
+
+__all__ = ["ANGLE_OF", "ANGLE_PLUS", "CARRIER_ANGLE", "CIRCLE_CIRCLE", "CIRCLE_LINE",
+           "CONSTANT", "CRANK_ANGLE", "FIXED_POINT", "LINE_LINE", "LOCUS_LINE", "PLACE",
+           "POLAR_POINT", "SIMILAR_POSITION"]

@@ -1,24 +1,34 @@
-"""What one construction operation is: its inputs, evaluation, sentence, drawing and grading.
+"""What one construction operation is: its name, inputs, evaluation, sentence, drawing and checks.
 
-An :class:`OpSpec` is the one home of an operation. Its named inputs are the parameters of its
+An :class:`OpSpec` is the one home of an operation, declared once as a constant of its family
+module (``CIRCLE_CIRCLE = OpSpec("circle_circle", circle_circle, ...)`` in ``position.py``) and
+read everywhere as ``Op.CIRCLE_CIRCLE`` (``from mechplan.construct.ops import Op``); a step holds
+its spec (``step.op``), compared with ``is``. Its named inputs are the parameters of its
 ``evaluate`` function after ``step`` (in the order of ``Step.inputs``; a ``*name`` parameter takes
 the rest); its protocol sentence is the catalogue message ``message`` (``locale/*/protocol.po``);
-``draw`` and ``line`` say what a sheet draws for it; ``grade`` and ``hint`` say how the checker
-grades a submitted point or line of it and which hint it gives; ``written`` how the protocol writes
-its value.
+``draw`` and ``line`` say what a sheet draws for it; ``written`` how the protocol writes its value;
+``lever`` which two input points a direction or a rate is taken from (their distance divides the
+error estimate), ``rate_of`` for a link's ω or ε the two images of the relative vector it is read
+from; ``grade``, ``hint`` and ``hint_rule`` how the checker grades a submitted point or
+line of it and what it tells the student (as :class:`Hint` message ids of ``locale/*/check.po``).
 """
 
 from __future__ import annotations
 
 import enum
 import inspect
+import math
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 
 from ...geom.vec import Array, as_complex, from_complex, norm
-from ..step import Op
+from ..step import Plan, Step
+
+if TYPE_CHECKING:
+    from ..graph import Construction
 
 #: an evaluation: the value, and for a meet its gap and the sine of its crossing angle
 Result = tuple[Array, Array | None, Array | None]
@@ -74,19 +84,104 @@ class Grade(enum.Enum):
     VALUE = "value"  # a scalar written in a table: relative error
 
 
-@dataclass(frozen=True, slots=True)
-class OpSpec:
-    """One construction operation, declared once."""
+# -- what the checker says ------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True, eq=False)
+class Hint:
+    """A sentence of the checker's catalogue: id ``check.<key>`` and its arguments.
 
-    op: Op
+    An argument may itself be a :class:`Hint` or a :class:`Joined` list. ``measured``: the checker
+    follows it with how far the submitted point lies from where the student's own points put it.
+    """
+
+    key: str
+    args: dict[str, Any]
+    measured: bool = False
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class Joined:
+    """Items said one after another with a separator said in each language (" and ")."""
+
+    items: tuple[Any, ...]
+    sep: str = " and "
+
+
+def hint(key: str, /, **args: Any) -> Hint:
+    """The checker's message ``key`` with its arguments."""
+    return Hint(key, args)
+
+
+def measured(body: Hint) -> Hint:
+    """``body`` followed by the distance of the submitted point from the student's own one."""
+    return replace(body, measured=True)
+
+
+class HintView(Protocol):
+    """What a check rule may read at the graded position: the construction, the student's own
+    values of steps (from their earlier points), the exact values, labels and paper millimetres."""
+
+    @property
+    def c(self) -> Construction: ...
+
+    @property
+    def own(self) -> Callable[[str], Array]: ...
+
+    @property
+    def exact(self) -> Callable[[str], Array]: ...
+
+    @property
+    def labels(self) -> Callable[[str], str]: ...
+
+    def mm(self, plan: Plan, length: float) -> float:
+        """A physical length on a plan in mm of paper."""
+        ...
+
+    def link_of(self, *points: str) -> str | None:
+        """The moving link that holds all the named points."""
+        ...
+
+
+#: the checker's hint for a wrong result of a step, from the construction (labels of its inputs)
+StepHint = Callable[[Step, "Construction"], Hint]
+#: what a step's rule is and how a submitted point ``at`` (SI) breaks it: (step, view, at, tol_mm)
+HintRule = Callable[[Step, HintView, Array, float], Hint]
+#: the two input points a step's direction or rate is taken from (see :meth:`OpSpec.lever_of`)
+Lever = tuple[str, str] | Callable[[Step], tuple[str, str] | None]
+
+
+def step_hint(step: Step, c: Construction) -> Hint:
+    """The default hint: "check step <label>: <operation>"."""
+    return hint("hint.step", op=hint(f"op.{step.op.value}"), label=step.label)
+
+
+def labelled(key: str) -> StepHint:
+    """A hint that names only the step's label."""
+    return lambda step, c: hint(key, label=step.label)
+
+
+@dataclass(frozen=True, slots=True, eq=False)
+class OpSpec:
+    """One construction operation, declared once.
+
+    ``value`` is its name (``"circle_circle"``, written in JSON and message ids); its constant in
+    its family module is ``value.upper()``. Specs compare by identity and pickle as references to
+    the registry, so ``step.op is Op.CIRCLE_CIRCLE`` holds in every process.
+    """
+
+    value: str
     evaluate: Callable[..., Result] | None
     message: str | None  # protocol sentence; None: drawn, never written
     draw: Drawn = Drawn.NOTHING
     line: Line = Line.NONE
     grade: Grade = Grade.NOT_GRADED
-    hint: str = "hint.step"  # key of the checker's hint for a wrong result
     source: Source = Source.INPUTS
     written: Written = Written.PLAIN     # how the protocol writes its value
+    lever: Lever | None = None           # two named inputs (points), or a rule giving two ids
+    rate_of: tuple[str, str] | None = None  # a link's ω or ε: the two images of its relative
+    #                                         vector (over the lever's length: the rate)
+    hint: StepHint = step_hint           # the checker's hint for a wrong segment ending at it
+    value_hint: StepHint | None = None   # the hint for a wrong written value (None: generic)
+    hint_rule: HintRule | None = None    # how a submitted point breaks its rule (None: generic)
     inputs: tuple[str, ...] = field(init=False)
     rest: str | None = field(init=False)  # name of a variable tail of inputs, if any
 
@@ -102,6 +197,21 @@ class OpSpec:
                     names.append(p.name)
         object.__setattr__(self, "inputs", tuple(names))
         object.__setattr__(self, "rest", rest)
+        for pair in (self.lever, self.rate_of):
+            if isinstance(pair, tuple):
+                for name in pair:
+                    self.index(name)
+
+    @property
+    def name(self) -> str:
+        """The name of its constant: ``CIRCLE_CIRCLE``."""
+        return self.value.upper()
+
+    def __repr__(self) -> str:
+        return f"Op.{self.name}"
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (registered, (self.value,))
 
     def index(self, name: str) -> int:
         """Position of a named input in ``Step.inputs``."""
@@ -109,8 +219,76 @@ class OpSpec:
             return self.inputs.index(name)
         except ValueError:
             raise KeyError(
-                f"{self.op.value} has no input {name!r} (inputs: {self.inputs})"
+                f"{self.value} has no input {name!r} (inputs: {self.inputs})"
             ) from None
+
+    def lever_of(self, step: Step) -> tuple[str, str] | None:
+        """Ids of the two points whose distance divides the step's error (None: no lever)."""
+        if self.lever is None:
+            return None
+        if isinstance(self.lever, tuple):
+            first, second = self.lever
+            return step.inputs[self.index(first)], step.inputs[self.index(second)]
+        return self.lever(step)
+
+
+def registered(value: str) -> OpSpec:
+    """The registered operation of a name (``"circle_circle"`` → ``Op.CIRCLE_CIRCLE``)."""
+    from . import SPECS  # the registry is built from the family modules, above this one
+
+    try:
+        return SPECS[value]
+    except KeyError:
+        raise KeyError(f"no operation {value!r}") from None
+
+
+# -- helpers shared by the check rules ------------------------------------------------------------
+def point_of(v: Array) -> Array:
+    """The first point of a value (leading axis 1) as a flat (2,) float array."""
+    return np.asarray(v, dtype=float).reshape(-1)[:2]
+
+
+def dist_to_line(p: Array, line_value: Array) -> float:
+    """Distance of a point from a line value (a point and a direction); NaN for no line."""
+    line_value = np.asarray(line_value, dtype=float).reshape(2, 2)
+    o, u = line_value[0], line_value[1]
+    n = math.hypot(*u)
+    if not n or not np.all(np.isfinite(line_value)):
+        return math.nan
+    d = p - o
+    return float(abs(d[0] * u[1] - d[1] * u[0]) / n)
+
+
+def on_lines(step: Step, view: HintView, at: Array, tol_mm: float) -> Joined:
+    """For a meet: on which of its lines the submitted point lies, and how far off the others."""
+    c, plan = view.c, step.plan
+    parts = []
+    for lid in step.inputs:
+        line_step = c[lid]
+        through = view.labels(line_step.inputs[0]) if line_step.inputs else "?"
+        d = view.mm(plan, dist_to_line(at, view.own(lid)))
+        where = hint("rule.on_it") if d <= tol_mm else hint("rule.off_by", d=d)
+        parts.append(hint("rule.on_line", through=through, line=line_step.label, where=where))
+    return Joined(tuple(parts))
+
+
+def drive_hint(step: Step, view: HintView, at: Array, how: str) -> Hint:
+    """The driving vector: its length and direction against the submitted ones."""
+    c, plan = view.c, step.plan
+    pivot, tip = c[step.inputs[0]].label, c[step.inputs[1]].label
+    exact = point_of(view.exact(step.id))
+    length = view.mm(plan, float(np.hypot(*exact)))
+    drawn = view.mm(plan, float(np.hypot(*at)))
+    ang = math.degrees(math.remainder(math.atan2(at[1], at[0]) - math.atan2(exact[1], exact[0]),
+                                      2 * math.pi))
+    return hint("rule.drive", label=view.labels(step.id), how=hint(how, pivot=pivot, tip=tip),
+                len=length, drawn=drawn, ang=ang)
+
+
+def rigid_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """A point of a rigid link from a known image: v_X = v_O + ω × OX (a_X likewise)."""
+    return measured(hint("rule.rigid", label=view.labels(step.id),
+                         X=view.c[step.inputs[-1]].label, o=view.labels(step.inputs[0])))
 
 
 # -- helpers shared by the evaluators -----------------------------------------------------------

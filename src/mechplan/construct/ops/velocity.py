@@ -2,24 +2,38 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 
 from ...geom.vec import Array, cross, dot, perp
-from ..step import Op, Step
+from ..step import Step
 from .spec import (
     Drawn,
     Grade,
+    Hint,
+    HintView,
     Line,
     OpSpec,
     Result,
     Source,
     Written,
+    dist_to_line,
+    drive_hint,
+    hint,
+    labelled,
     line,
+    measured,
+    point_of,
+    rigid_hint,
     scaled,
     to_complex,
     to_real,
     unit,
 )
+
+if TYPE_CHECKING:
+    from ..graph import Construction
 
 
 def pole(step: Step, n: int) -> Result:
@@ -69,18 +83,72 @@ def copy(step: Step, value: Array) -> Result:
     return value, None, None
 
 
-SPECS = (
-    OpSpec(Op.POLE, pole, "protocol.op.pole", Drawn.VERTEX, source=Source.POSITIONS),
-    OpSpec(Op.DRIVE_VELOCITY, drive_velocity, "protocol.op.drive_velocity", Drawn.POINT,
-           Line.OUTLINE, Grade.POINT, "hint.drive"),
-    OpSpec(Op.LINE_PERP, line_perp, "protocol.op.line_perp", Drawn.CONSTRUCTION_LINE,
-           Line.DASHED, Grade.DIRECTION),
-    OpSpec(Op.LINE_PARALLEL, line_parallel, "protocol.op.line_parallel", Drawn.CONSTRUCTION_LINE,
-           Line.DASHED, Grade.DIRECTION),
-    OpSpec(Op.OMEGA, omega, "protocol.op.omega", grade=Grade.VALUE, written=Written.RATE),
-    OpSpec(Op.RIGID_VELOCITY, rigid_velocity, "protocol.op.rigid_velocity", Drawn.POINT,
-           Line.OUTLINE, Grade.POINT, written=Written.MEET),
-    OpSpec(Op.SIMILAR_IMAGE, similar_image, "protocol.op.similar_image", Drawn.IMAGE_TRIANGLE,
-           Line.THIN, Grade.POINT, "hint.similar", written=Written.MEET),
-    OpSpec(Op.COPY, copy, "protocol.op.copy", grade=Grade.VALUE),
-)
+# -- check rules ----------------------------------------------------------------------------------
+def pole_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """The pole: the origin of the plan."""
+    return hint("rule.pole", label=view.labels(step.id))
+
+
+def drive_velocity_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """pb ⊥ AB, of length ω1·l_AB / μv."""
+    return drive_hint(step, view, at, "rule.drive_v")
+
+
+def similar_image_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """The similarity theorem: x on a, b as X on A, B (on the line ab when A, B, X are in line)."""
+    c, plan, lbl = view.c, step.plan, view.labels
+    label = lbl(step.id)
+    ia, ib, pa, pb, px = step.inputs
+    a_l, b_l = lbl(ia), lbl(ib)
+    A, B, X = c[pa].label, c[pb].label, c[px].label
+    link = view.link_of(A, B, X)
+    link_txt = hint("rule.of_link", link=link) if link else ""
+    pts = [point_of(view.exact(s)) for s in (pa, pb, px)]
+    cross_ = (pts[1] - pts[0])[0] * (pts[2] - pts[0])[1] - \
+        (pts[1] - pts[0])[1] * (pts[2] - pts[0])[0]
+    ab = float(np.hypot(*(pts[1] - pts[0])))
+    oa, ob = point_of(view.own(ia)), point_of(view.own(ib))
+    text = hint("rule.similar", label=label, link=link_txt, a=a_l, b=b_l, A=A, B=B, X=X)
+    if ab and abs(cross_) <= 1e-9 * ab * ab:
+        t = float(np.dot(pts[2] - pts[0], pts[1] - pts[0]) / ab ** 2)
+        seg = ob - oa
+        n2 = float(np.dot(seg, seg))
+        if n2 > 0:
+            line_value = np.array([oa, seg])
+            d = view.mm(plan, dist_to_line(at, line_value))
+            yours = float(np.dot(at - oa, seg) / n2)
+            text = hint("rule.similar_line", link=link_txt, label=label, a=a_l, b=b_l, d=d,
+                        A=A, B=B, X=X, t=t, yours=yours)
+    return measured(text)
+
+
+def omega_value_hint(step: Step, c: Construction) -> Hint:
+    """A wrong ω: the relative velocity over the link's length."""
+    p, q, vp, vq = step.inputs
+    return hint("hint.omega", label=step.label, p=c[p].label, q=c[q].label, a=c[vp].label,
+                b=c[vq].label)
+
+
+# -- the operations -------------------------------------------------------------------------------
+POLE = OpSpec("pole", pole, "protocol.op.pole", Drawn.VERTEX, source=Source.POSITIONS,
+              hint_rule=pole_hint)
+DRIVE_VELOCITY = OpSpec("drive_velocity", drive_velocity, "protocol.op.drive_velocity",
+                        Drawn.POINT, Line.OUTLINE, Grade.POINT, hint=labelled("hint.drive"),
+                        hint_rule=drive_velocity_hint)
+LINE_PERP = OpSpec("line_perp", line_perp, "protocol.op.line_perp", Drawn.CONSTRUCTION_LINE,
+                   Line.DASHED, Grade.DIRECTION, lever=("p", "q"))
+LINE_PARALLEL = OpSpec("line_parallel", line_parallel, "protocol.op.line_parallel",
+                       Drawn.CONSTRUCTION_LINE, Line.DASHED, Grade.DIRECTION)
+OMEGA = OpSpec("omega", omega, "protocol.op.omega", grade=Grade.VALUE, written=Written.RATE,
+               lever=("p", "q"), rate_of=("vp", "vq"), value_hint=omega_value_hint)
+RIGID_VELOCITY = OpSpec("rigid_velocity", rigid_velocity, "protocol.op.rigid_velocity",
+                        Drawn.POINT, Line.OUTLINE, Grade.POINT, written=Written.MEET,
+                        hint_rule=rigid_hint)
+SIMILAR_IMAGE = OpSpec("similar_image", similar_image, "protocol.op.similar_image",
+                       Drawn.IMAGE_TRIANGLE, Line.THIN, Grade.POINT, written=Written.MEET,
+                       lever=("pa", "pb"), hint=labelled("hint.similar"),
+                       hint_rule=similar_image_hint)
+COPY = OpSpec("copy", copy, "protocol.op.copy", grade=Grade.VALUE)
+
+__all__ = ["COPY", "DRIVE_VELOCITY", "LINE_PARALLEL", "LINE_PERP", "OMEGA", "POLE",
+           "RIGID_VELOCITY", "SIMILAR_IMAGE"]

@@ -25,8 +25,9 @@ from ...model.mechanism import GROUND, Pair, PairKind
 from ...model.structure import Group, GroupKind
 from ..builder import Builder
 from ..graph import reaction_key
+from ..ops import Op
 from ..segments import SegmentKind
-from ..step import Kind, Op, Plan, Role
+from ..step import Kind, Plan, Role
 from ..terms import UNKNOWN, Row
 from ..terms import parallel as parallel_to
 from ..terms import perp as perp_to

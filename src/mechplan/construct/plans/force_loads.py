@@ -14,7 +14,8 @@ from typing import Any, Protocol
 
 from ...model.mechanism import GROUND
 from ..builder import Builder, alabel
-from ..step import Kind, Op, Plan, Role
+from ..ops import Op, OpSpec
+from ..step import Kind, Plan, Role
 from ..terms import GIVEN, Direction, Relation, from_to
 from ..terms import parallel as parallel_to
 
@@ -58,7 +59,7 @@ class State:
     applied: list[tuple[str, Term]] = field(default_factory=list)
     letters: dict[str, int] = field(default_factory=dict)
 
-    def add(self, id: str, op: Op, inputs: tuple[str, ...], kind: Kind, role: Role, label: str,
+    def add(self, id: str, op: OpSpec, inputs: tuple[str, ...], kind: Kind, role: Role, label: str,
             group: str, subject: tuple[str, ...] = (), **params: Any) -> str:
         return self.b.add(id, op, inputs, F, kind, role, label, group, subject, **params)
 

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from ...model.mechanism import GROUND
 from ..builder import Builder, Image, alabel, vlabel
+from ..ops import Op
 from ..segments import SegmentKind
-from ..step import Kind, Op, Plan, Role
+from ..step import Kind, Plan, Role
 
 
 def known_images(b: Builder, link: str, plan: Plan) -> list[tuple[str, str]]:

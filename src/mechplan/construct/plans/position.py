@@ -7,8 +7,9 @@ import math
 from ...model.mechanism import GROUND, Pair
 from ...model.structure import Group, GroupKind
 from ..builder import Builder
+from ..ops import Op
 from ..segments import SegmentKind
-from ..step import Kind, Op, Plan, Role
+from ..step import Kind, Plan, Role
 
 P = Plan.POSITION
 
