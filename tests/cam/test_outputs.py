@@ -12,7 +12,7 @@ import pytest
 
 from mechplan.cli import main
 from mechplan.i18n import LANGUAGES
-from mechplan.sheet.primitives import Circle, Polyline
+from mechplan.sheet.primitives import Circle, Polyline, Text
 from mechplan.studies import solve_file, solve_text
 
 from .scenes import cam_text
@@ -52,8 +52,14 @@ def test_sheet_draws_the_construction(study):
     assert len(sheets) == 1
     prims = list(sheets[0].flat())
     circles = [p for p in prims if isinstance(p, Circle)]
-    rollers = [c for c in circles if c.radius == pytest.approx(6.0 / 0.5)]   # rr at μl = 0.5 mm/mm
+    # the scale the sheet says it draws the cam at (m per paper mm)
+    said = [p.string for p in prims if isinstance(p, Text) and p.string.startswith("μl = ")]
+    mu = float(said[0].split()[2])
+    assert 1e-3 / mu in (1.0, 2.0, 2.5, 4.0, 5.0, 10.0)   # a standard drawing scale n:1
+    rollers = [c for c in circles if c.radius == pytest.approx(0.006 / mu)]   # rr = 6 mm
     assert len(rollers) == 24                             # one per 15° ray
+    base = [c for c in circles if c.radius == pytest.approx(study.design.geometry.r0 / mu)]
+    assert base                                           # the base circle at the same scale
     closed = [p for p in prims if isinstance(p, Polyline) and p.closed and len(p.points) > 400]
     assert closed                                          # the working profile
 

@@ -53,7 +53,7 @@ def test_when_nothing_fits_one_sheet_the_fewest_sheets_win():
 
 
 def _mu_phi_on(sheet) -> float:
-    texts = [p.text for p in sheet.primitives if isinstance(p, Text) and "μφ" in p.text]
+    texts = [p.string for p in sheet.primitives if isinstance(p, Text) and "μφ" in p.string]
     values = {float(re.search(r"μφ = ([0-9.,]+)", t).group(1).replace(",", ".")) for t in texts}
     assert len(values) == 1, values
     return values.pop()
