@@ -114,23 +114,22 @@ def segments_of(c: Construction, key: PlanKey) -> list[Segment]:
     return out
 
 
+def _off(x: float | None, tol: float | None) -> bool:
+    return x is not None and tol is not None and abs(x) > tol
+
+
 def row_error(r: SegmentRow) -> str:
-    kinds = []
-    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
-        kinds.append("length")
-    if r.direction_deg is not None and r.tolerance_deg is not None and \
-            abs(r.direction_deg) > r.tolerance_deg:
-        kinds.append("direction")
-    return " and ".join(kinds)
+    """"length", "direction" or "length and direction": what is off in a segment row."""
+    return " and ".join(kind for kind, off in (("length", _off(r.error_mm, r.tolerance_mm)), (
+        "direction", _off(r.direction_deg, r.tolerance_deg))) if off)
 
 
 def row_brief(r: SegmentRow) -> str:
     parts = []
-    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
-        parts.append(T("brief.long" if r.error_mm > 0 else "brief.short", name=r.name,
-                       err=abs(r.error_mm)))
-    if r.direction_deg is not None and r.tolerance_deg is not None and \
-            abs(r.direction_deg) > r.tolerance_deg:
+    if _off(r.error_mm, r.tolerance_mm):
+        e = float(r.error_mm or 0.0)
+        parts.append(T("brief.long" if e > 0 else "brief.short", name=r.name, err=abs(e)))
+    if _off(r.direction_deg, r.tolerance_deg):
         parts.append(T("brief.turned", name=r.name, dir=r.direction_deg))
     return join(parts) if parts else T("brief.off", name=r.name)
 
@@ -144,11 +143,7 @@ def roots_of(ctx: Ctx, status: dict[str, str], sid: str) -> list[str]:
 
 
 def labels_fn(ctx: Ctx) -> Any:
-    def label(sid: str) -> str:
-        return ctx.c[sid].label
-    return label
-
-
+    return lambda sid: ctx.c[sid].label
 
 
 def seg_exact(ctx: Ctx, seg: Segment, k: int) -> float:

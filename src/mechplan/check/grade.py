@@ -105,21 +105,11 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         phi_source = T("phi.best_of", n=len(candidates))
     report = reports[best]
     report.phi_source = phi_source
-    report.notes = _dedupe(notes + report.notes)
+    report.notes = list(dict.fromkeys(notes + report.notes))   # each note once
     if sheet is not None:
         report.label_distance_mm = sheet.label_distance
     report.units = sub.units
     return report
-
-
-def _dedupe(notes: list[Note]) -> list[Note]:
-    seen, out = set(), []
-    for n in notes:
-        key = (n.level, n.message, n.where)
-        if key not in seen:
-            seen.add(key)
-            out.append(n)
-    return out
 
 
 def _score(r: CheckReport) -> tuple[float, float]:
@@ -294,15 +284,7 @@ def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, f
             mine = [r for r in rows if r.verdict == WRONG and r.step == sid and r.cause == NEW]
             primary = [r for r in mine if r.end == sid and ctx.c[r.start].op is Op.POLE] or [
                 r for r in mine if r.end == sid] or mine
-            kinds = set()
-            for r in primary[:1]:
-                if r.error_mm is not None and r.tolerance_mm is not None and \
-                        abs(r.error_mm) > r.tolerance_mm:
-                    kinds.add("length")
-                if r.direction_deg is not None and r.tolerance_deg is not None and \
-                        abs(r.direction_deg) > r.tolerance_deg:
-                    kinds.add("direction")
-            error = " and ".join(x for x in ("length", "direction") if x in kinds)
+            error = row_error(primary[0]) if primary else ""
             segtxt = join((row_brief(r) for r in mine), "; ")
             findings.append(Finding(
                 "wrong point", pr.name, labels(sid),

@@ -295,13 +295,35 @@ def _plan_of(plan: str) -> str:
     return plan_word(plan)
 
 
-def _verdict(v: str, cause: str, lang: str = "en") -> str:
-    return verdict_text(v, cause, lang)
+#: columns of the text tables: (title, width, alignment, field, number format)
+_SEGMENT_COLUMNS = (("col.segment", 14, "<", "name", ""), ("col.quantity", 12, "<", "quantity", ""),
+                    ("col.drawn_mm", 9, ">", "submitted_mm", "9.1f"),
+                    ("col.exact_mm", 9, ">", "exact_mm", "9.1f"),
+                    ("col.err_mm", 8, ">", "error_mm", "+8.1f"),
+                    ("col.err_pct", 8, ">", "error_pct", "+8.1f"),
+                    ("col.dir", 7, ">", "direction_deg", "+7.1f"))
+_VALUE_COLUMNS = (("col.name", 12, "<", "name", ""),
+                  ("col.submitted", 12, ">", "submitted", "12.4g"),
+                  ("col.exact", 12, ">", "exact", "12.4g"), ("col.unit", 8, ">", "unit", ""),
+                  ("col.err_pct", 8, ">", "error_pct", "+8.1f"))
 
 
-def _cols(lang: str, *cells: tuple[str, int, str]) -> str:
-    """Column titles: (message id, width, alignment)."""
-    return "".join(pad(T(key).tr(lang), w, a) for key, w, a in cells)
+def _table(lang: str, columns: tuple[tuple[str, int, str, str, str], ...],
+           rows: list[Any]) -> list[str]:
+    """A table of rows with a verdict column, and the hint under each wrong row."""
+    out = ["   " + "".join(pad(T(key).tr(lang), w, a) for key, w, a, _, _ in columns) + "  "
+           + T("col.verdict").tr(lang)]
+    for row in rows:
+        cells = []
+        for _, w, a, name, fmt in columns:
+            x = getattr(row, name)
+            if name == "name" and not getattr(row, "in_construction", True):
+                x = f"{x}*"
+            cells.append(pad(_num(x, fmt, lang) if fmt else x, w, a))
+        out.append("   " + "".join(cells) + f"  {verdict_text(row.verdict, row.cause, lang)}")
+        if row.verdict in (WRONG, SLIP) and row.hint:
+            out.append(f"        → {tr(row.hint, lang)}")
+    return out
 
 
 def render_text(r: CheckReport, lang: str = "en") -> str:
@@ -338,36 +360,13 @@ def render_text(r: CheckReport, lang: str = "en") -> str:
                 T("report.point_off", label=pt.label, err=pt.error_mm,
                   cause=word("cause", pt.cause, lang)) for pt in wrong_pts
                 if pt.error_mm is not None)))
-        out.append("   " + _cols(lang, ("col.segment", 14, "<"), ("col.quantity", 12, "<"),
-                                 ("col.drawn_mm", 9, ">"), ("col.exact_mm", 9, ">"),
-                                 ("col.err_mm", 8, ">"), ("col.err_pct", 8, ">"),
-                                 ("col.dir", 7, ">")) + "  " + say("col.verdict"))
-        for row in p.segments:
-            name = row.name if row.in_construction else f"{row.name}*"
-            out.append(f"   {pad(name, 14)}{pad(row.quantity, 12)}"
-                       f"{pad(_num(row.submitted_mm, '9.1f', lang), 9, '>')}"
-                       f"{pad(_num(row.exact_mm, '9.1f', lang), 9, '>')}"
-                       f"{pad(_num(row.error_mm, '+8.1f', lang), 8, '>')}"
-                       f"{pad(_num(row.error_pct, '+8.1f', lang), 8, '>')}"
-                       f"{pad(_num(row.direction_deg, '+7.1f', lang), 7, '>')}"
-                       f"  {_verdict(row.verdict, row.cause, lang)}")
-            if row.verdict in (WRONG, SLIP) and row.hint:
-                out.append(f"        → {tr(row.hint, lang)}")
+        out.extend(_table(lang, _SEGMENT_COLUMNS, p.segments))
         if any(not row.in_construction for row in p.segments):
             out.append("   " + say("report.not_in_construction"))
     if r.values:
         out.append("")
         out.append(say("report.values"))
-        out.append("   " + _cols(lang, ("col.name", 12, "<"), ("col.submitted", 12, ">"),
-                                 ("col.exact", 12, ">"), ("col.unit", 8, ">"),
-                                 ("col.err_pct", 8, ">")) + "  " + say("col.verdict"))
-        for v in r.values:
-            out.append(f"   {pad(v.name, 12)}{pad(_num(v.submitted, '12.4g', lang), 12, '>')}"
-                       f"{pad(_num(v.exact, '12.4g', lang), 12, '>')}{pad(v.unit, 8, '>')}"
-                       f"{pad(_num(v.error_pct, '+8.1f', lang), 8, '>')}"
-                       f"  {_verdict(v.verdict, v.cause, lang)}")
-            if v.verdict in (WRONG, SLIP) and v.hint:
-                out.append(f"        → {tr(v.hint, lang)}")
+        out.extend(_table(lang, _VALUE_COLUMNS, r.values))
     if r.findings:
         out.append("")
         out.append(say("report.findings"))
