@@ -15,15 +15,13 @@ Nothing here knows the study: the reader returns ``name = text`` items with the 
 from __future__ import annotations
 
 import csv
-import io
 import re
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
-from .submission import Note, _read_text, submitted_file
+from .submission import Note, csv_rows, load_toml, submitted_file
 from .texts import T
 
 _ANGLE_TEXT = re.compile(r"^\s*(?:([^\d\s=:+−-][^=:]*?)\s*[=:]\s*)?([-+−]?\d+(?:[.,]\d+)?)\s*"
@@ -89,20 +87,8 @@ def _value_text(value: Any) -> str | None:
 
 
 def _read_toml(path: Path, is_angle_name: Any) -> AnswerTable:
-    text = _read_text(path)
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
-    lines = text.splitlines()
+    data, where = load_toml(path)
     out = AnswerTable(str(path), [], [])
-
-    def where(key: str) -> str:
-        pat = re.compile(r"^\s*[\"']?" + re.escape(key) + r"[\"']?\s*=")
-        for i, ln in enumerate(lines, start=1):
-            if pat.match(ln):
-                return T("where.line", file=path.name, n=i)
-        return T("where.key", file=path.name, key=key)
 
     def put(key: str, value: Any, phi: float | None, section: str | None, at: str) -> None:
         text_ = _value_text(value)
@@ -139,17 +125,15 @@ def _read_toml(path: Path, is_angle_name: Any) -> AnswerTable:
     return out
 
 
-def _read_csv(path: Path, is_angle_name: Any) -> AnswerTable:
-    text = _read_text(path)
-    if "\x00" in text:
-        raise CheckError(T("error.binary"), file=str(path))
-    sample = "\n".join(text.splitlines()[:20])
+def _dialect(sample: str) -> type[csv.Dialect]:
+    """";" when the sample has about as many as ",", else a tab or ","."""
     delimiter = ";" if sample.count(";") >= max(1, sample.count(",") // 2) else (
         "\t" if "\t" in sample else ",")
-    try:
-        rows = list(csv.reader(io.StringIO(text), delimiter=delimiter))
-    except csv.Error as exc:
-        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
+    return type("Dialect", (csv.excel,), {"delimiter": delimiter})
+
+
+def _read_csv(path: Path, is_angle_name: Any) -> AnswerTable:
+    rows = csv_rows(path, _dialect)
     out = AnswerTable(str(path), [], [])
     header: list[tuple[str, str]] | None = None
     for n, row in enumerate(rows, start=1):
