@@ -9,8 +9,9 @@ from typing import Any
 
 from .. import __version__
 from ..construct.scale import SCALE_KEYS
+from ..i18n import num, pad
 from .submission import Note
-from .texts import T, Text, capitalize, join, num, pad, plan_word, tr, word
+from .texts import T, Text, capitalize, join, plan_word, tr, word
 
 #: verdicts
 OK, WRONG, SLIP, REFERENCE, MISSING, UNCHECKED = ("ok", "wrong", "slip", "reference", "missing",
