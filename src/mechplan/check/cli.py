@@ -95,9 +95,7 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
 
 def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
     """Scale factors given on the command line."""
-    from ..units import parse_quantity
-    from .labels import MU_DIMENSION
-    from .notation import units_ascii
+    from .labels import parse_mu
 
     out: dict[Plan, float] = {}
     for key, plan in (("l", Plan.POSITION), ("v", Plan.VELOCITY), ("a", Plan.ACCELERATION),
@@ -106,7 +104,7 @@ def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
         if text is None:
             continue
         try:
-            value = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
+            value = parse_mu(text, plan)
         except SceneError as exc:
             option = f"--mu-{key.upper() if key == 'f' else key}"
             raise CheckError(T("error.mu_option", option=option,

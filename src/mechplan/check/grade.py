@@ -33,7 +33,7 @@ from .context import (
 )
 from .drawn import classify_points, find_swaps, overrides_of, prepare
 from .hints import HintContext, depends_on, rule
-from .labels import LabelBook, PlanKey, is_angle_name
+from .labels import LabelBook, PlanKey, is_angle_name, parse_angle
 from .match import QuantityIndex, SegmentIndex, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
 from .report import (
@@ -121,23 +121,18 @@ def _score(r: CheckReport) -> tuple[float, float]:
 
 def _angles(scene: Scene, sub: Submission, options: Options,
             notes: list[Note]) -> tuple[list[float], str]:
-    from ..units import parse_quantity
-    from .notation import units_ascii
-
     if options.at_deg is not None:
         return [float(options.at_deg)], T("phi.at")
     for e in sub.entries:
         if is_angle_name(e.name):
             text = e.text or e.value or e.length or ""
             try:
-                value = parse_quantity(units_ascii(text) if any(ch.isalpha() or ch == "°"
-                                                                for ch in text)
-                                       else f"{text} deg", "angle")
+                value = parse_angle(text)
             except MechplanError as exc:
                 notes.append(Note("warning", T("note.crank_angle", name=e.name, text=text,
                                                 detail=exc.detail), e.where))
                 continue
-            return [math.degrees(value)], T("read_from", name=e.name, text=text, where=e.where)
+            return [value], T("read_from", name=e.name, text=text, where=e.where)
     if len(scene.positions.angles) == 1:
         return [math.degrees(scene.positions.angles[0])], T("phi.only")
     from ..solve import build, crank_positions

@@ -10,6 +10,7 @@ reading is; clusters of labels on a sheet then vote for their plan.
 
 from __future__ import annotations
 
+import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
@@ -17,6 +18,7 @@ from dataclasses import dataclass, field
 from ..construct.graph import Construction
 from ..construct.step import Kind, Op, Plan
 from ..model.mechanism import GROUND, Mechanism
+from ..units import parse_quantity
 from . import notation
 
 #: a plan drawn on its own: force polygons are one per group, the other plans one each
@@ -233,6 +235,20 @@ MU_NAMES: dict[str, Plan] = {
 MU_DIMENSION = {Plan.POSITION: "mu_length", Plan.VELOCITY: "mu_velocity",
                 Plan.ACCELERATION: "mu_acceleration", Plan.FORCE: "mu_force"}
 _MU_NAME = re.compile(r"^(?:μ|µ|mu|u|k)[_\s{]*([lsvafprLSVAFPR])[}]?$", re.IGNORECASE)
+
+
+def parse_mu(text: str, plan: Plan) -> float:
+    """A written scale factor of a plan in SI ("0,1 м/с/мм"); a :class:`SceneError` if it is not
+    one."""
+    return parse_quantity(notation.units_ascii(text), MU_DIMENSION[plan])
+
+
+def parse_angle(text: str) -> float:
+    """A written crank angle in degrees ("60", "60°", "1,05 rad"); a :class:`SceneError` if it is
+    not one."""
+    written = notation.units_ascii(text) if any(ch.isalpha() or ch == "°" for ch in text) else (
+        f"{text} deg")
+    return math.degrees(parse_quantity(written, "angle"))
 
 
 def mu_plan(name: str) -> Plan | None:

@@ -15,13 +15,14 @@ from ..model.mechanism import Mechanism
 from ..units import parse_quantity
 from . import notation
 from .labels import (
-    MU_DIMENSION,
     LabelBook,
     PlanKey,
     feature_votes,
     is_angle_name,
     label_key,
     mu_plan,
+    parse_angle,
+    parse_mu,
     plan_key,
 )
 from .notation import units_ascii
@@ -89,7 +90,6 @@ class Interpretation:
     segments: list[TableSegment] = field(default_factory=list)
     values: list[GivenValue] = field(default_factory=list)
     scales: dict[Plan, tuple[float, str]] = field(default_factory=dict)
-    at_deg: tuple[float, str] | None = None
     notes: list[Note] = field(default_factory=list)
 
 
@@ -298,7 +298,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         if text is None:
             return
         try:
-            mu = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
+            mu = parse_mu(text, plan)
         except SceneError as exc:
             notes.append(Note("error", T("note.mu_error", name=e.name, text=text,
                                          detail=exc.detail), e.where))
@@ -317,16 +317,12 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
                 out.scales[plan] = (mu, T("read_from", name=e.name, text=text, where=e.where))
         return
     if is_angle_name(e.name):
-        if text is None:
-            return
-        try:
-            deg = math.degrees(parse_quantity(units_ascii(text) if re.search(r"[a-z°]", text)
-                                              else f"{text} deg", "angle"))
+        try:                    # the angle itself is read by grade._angles
+            if text is not None:
+                parse_angle(text)
         except SceneError as exc:
             notes.append(Note("error", T("note.crank_angle", name=e.name, text=text,
                                          detail=exc.detail), e.where))
-            return
-        out.at_deg = (deg, T("name_text_where", name=e.name, text=text, where=e.where))
         return
     sec = section_plan(e.section)
     length_text = e.length if e.length is not None else (
@@ -351,7 +347,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         row_mu = None
         if e.mu:
             try:
-                row_mu = parse_quantity(units_ascii(e.mu), MU_DIMENSION[seg.plan])
+                row_mu = parse_mu(e.mu, seg.plan)
             except SceneError as exc:
                 notes.append(Note("error", T("note.row_mu_error", mu=e.mu, name=e.name,
                                              detail=exc.detail), e.where))

@@ -27,8 +27,8 @@ from .labels import (
     feature_votes,
     label_key,
     mu_plan,
+    parse_mu,
 )
-from .notation import units_ascii
 from .sketch import Graph, drawn_graph
 from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .texts import T, Text, join, plan_title, with_case
@@ -474,8 +474,6 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
 def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],
               graph: Graph, notes: list[Note]) -> None:
     from ..errors import SceneError
-    from ..units import parse_quantity
-    from .labels import MU_DIMENSION
 
     plan = dp.plan
     if plan in mu_given:
@@ -488,7 +486,7 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
     for e in mine:
         text = e.text or e.value or e.length or ""
         try:
-            dp.mu = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
+            dp.mu = parse_mu(text, plan)
         except SceneError as exc:
             notes.append(Note("warning", T("note.mu_unusable", name=e.name, text=text,
                                            detail=exc.detail), e.where))
