@@ -16,6 +16,8 @@ import statistics
 from dataclasses import dataclass, field
 
 import numpy as np
+import shapely
+from shapely.geometry import MultiPoint
 from scipy.optimize import linear_sum_assignment
 
 from ..construct.step import Plan
@@ -339,13 +341,8 @@ def _fit(book: LabelBook, key: PlanKey, members: list[_Label]) -> float:
 
 def _gap(a: list[_Label], b: list[_Label]) -> float:
     """Distance between the boxes around two sets of labelled points (0 if they overlap)."""
-    pa = np.array([lb.at for lb in a if lb.at is not None])
-    pb = np.array([lb.at for lb in b if lb.at is not None])
-    if not len(pa) or not len(pb):
-        return math.inf
-    dx = max(0.0, pb[:, 0].min() - pa[:, 0].max(), pa[:, 0].min() - pb[:, 0].max())
-    dy = max(0.0, pb[:, 1].min() - pa[:, 1].max(), pa[:, 1].min() - pb[:, 1].max())
-    return math.hypot(dx, dy)
+    boxes = [MultiPoint([lb.at for lb in x if lb.at is not None]).envelope for x in (a, b)]
+    return math.inf if any(box.is_empty for box in boxes) else float(shapely.distance(*boxes))
 
 
 def _nearest_component(at: Point | None, graph: Graph, among: set[int] | None = None) -> int:
