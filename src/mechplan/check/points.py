@@ -17,8 +17,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
-from shapely.geometry import MultiPoint
 from scipy.optimize import linear_sum_assignment
+from shapely.geometry import MultiPoint
 
 from ..construct.step import Plan
 from ..geom.sketch import crossings
