@@ -22,7 +22,7 @@ from typing import Any
 from ..errors import CheckError
 from .answer_keys import Keys, keys_for, valid_sets
 from .answer_table import AnswerItem, read_answers
-from .context import Options
+from .context import Options, swaps
 from .match import _number_and_half, parse_value
 from .notation import catalogue, compact
 from .report import (
@@ -290,19 +290,16 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
     ex = {id(r): float(r.exact) for r in checked if r.exact is not None}
     off = {id(r) for r in checked if abs(r.value - ex[id(r)]) > r.tol}
     # swapped names: two values off by themselves that are right under each other's names
+    wrong = [r for r in checked if id(r) in off]
     swapped: set[int] = set()
-    for a in checked:
-        for b in checked:
-            if (id(a) < id(b) and id(a) in off and id(b) in off and id(a) not in swapped
-                    and id(b) not in swapped and a.item.phi_deg == b.item.phi_deg
-                    and a.spec.dimension == b.spec.dimension
-                    and abs(a.value - ex[id(b)]) <= b.tol and abs(b.value - ex[id(a)]) <= a.tol):
-                swapped |= {id(a), id(b)}
-                hint = T("answers.hint.swapped", a=a.row.name, b=b.row.name)
-                for r in (a, b):
-                    r.row.verdict, r.row.cause, r.row.hint = WRONG, SWAPPED, hint
-                report.findings.append(Finding("swapped labels", kind_text,
-                                               f"{a.row.name} ↔ {b.row.name}", hint))
+    for a, b in swaps(wrong, lambda a, b: a.item.phi_deg == b.item.phi_deg and
+                      a.spec.dimension == b.spec.dimension and abs(a.value - ex[id(b)]) <= b.tol):
+        swapped |= {id(a), id(b)}
+        hint = T("answers.hint.swapped", a=a.row.name, b=b.row.name)
+        for r in (a, b):
+            r.row.verdict, r.row.cause, r.row.hint = WRONG, SWAPPED, hint
+        report.findings.append(Finding("swapped labels", kind_text,
+                                       f"{a.row.name} ↔ {b.row.name}", hint))
     status: dict[tuple[str, float | None], str] = {}
     pending: list[tuple[_Row, Any]] = []
     for r in checked:

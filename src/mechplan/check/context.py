@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -98,6 +99,19 @@ class Drawn:
     own_err: dict[str, float] = field(default_factory=dict)
     tol: dict[str, float] = field(default_factory=dict)
     swapped: dict[str, str] = field(default_factory=dict)
+
+
+def swaps(items: list[Any], fits: Callable[[Any, Any], bool]) -> list[tuple[Any, Any]]:
+    """Pairs of items, in order, each right under the other's name (``fits(a, b)``: a is right as
+    b); an item is in one pair at most."""
+    out: list[tuple[Any, Any]] = []
+    used: set[int] = set()
+    for i, a in enumerate(items):
+        for j in range(i + 1, len(items)):
+            if not {i, j} & used and fits(a, items[j]) and fits(items[j], a):
+                used |= {i, j}
+                out.append((a, items[j]))
+    return out
 
 
 def exact_at(ctx: Ctx, sid: str, k: int) -> np.ndarray:

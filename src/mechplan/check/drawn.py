@@ -15,6 +15,7 @@ from .context import (
     Rederive,
     exact_at,
     segments_of,
+    swaps,
 )
 from .points import DrawnPlan
 from .report import (
@@ -144,14 +145,10 @@ def find_swaps(ctx: Ctx, d: Drawn, k: int) -> None:
         d.errors[sid] = float(np.hypot(*(v - exact_at(ctx, sid, k)))) / d.mu
         if d.errors[sid] > d.tol[sid]:
             wrong.append(sid)
-    for i, a in enumerate(wrong):
-        for b in wrong[i + 1:]:
-            if a in d.swapped or b in d.swapped:
-                continue
-            ab = float(np.hypot(*(d.si[a] - exact_at(ctx, b, k)))) / d.mu
-            ba = float(np.hypot(*(d.si[b] - exact_at(ctx, a, k)))) / d.mu
-            if ab <= d.tol[b] and ba <= d.tol[a]:
-                d.swapped[a], d.swapped[b] = b, a
+    mu = d.mu
+    for a, b in swaps(wrong, lambda a, b: float(np.hypot(*(d.si[a] - exact_at(ctx, b, k)))) / mu
+                      <= d.tol[b]):
+        d.swapped[a], d.swapped[b] = b, a
 
 
 def classify_points(ctx: Ctx, d: Drawn, red: Rederive) -> None:

@@ -194,58 +194,50 @@ def _attach(labels: list[_Label], graph: Graph, lines: list[DrawnLine], tol: flo
             notes: list[Note]) -> None:
     """Give each label a point: line ends nearest to its text box, one label per point where
     possible (a minimum-cost assignment), arrowhead corners only when nothing else is near."""
-    nodes = graph.nodes
-    options: list[list[tuple[float, int]]] = []
-    for lb in labels:
-        near = []
-        for i in range(len(nodes)):
-            d = lb.text.distance((float(nodes[i][0]), float(nodes[i][1])))
-            lb.distance = min(lb.distance, d)
-            if d <= tol:
-                # points of a plan are where lines meet; a loose end of one line (a construction
-                # line drawn past its point, hatching) is taken only when nothing better is near
-                if i in graph.markers:     # a point marked with a dot or a small circle
-                    score = d - MARKER_BONUS * tol
-                else:
-                    score = d + (tol if i in graph.decoration else 0.0) + \
-                        LOOSE_END_COST.get(graph.degree[i], 0.0) * tol
-                near.append((score, i))
-        near.sort()
-        options.append(near[:8])
-    columns = sorted({i for near in options for _, i in near})
-    if columns:
-        col = {n: j for j, n in enumerate(columns)}
-        big = 1e6
-        width = len(columns) + len(labels)
-        cost = []
-        for r, near in enumerate(options):
-            row = [big] * width
-            for d, i in near:
-                row[col[i]] = d
-            # sharing a point with another label (p ≡ o1) costs more than a point of its own
-            row[len(columns) + r] = (near[0][0] + 0.5 * tol) if near else big
-            row = [x + tol for x in row]       # keep costs positive (marker bonus)
-            cost.append(row)
-        rows, cols = linear_sum_assignment(np.asarray(cost))
-        pick = dict(zip(rows.tolist(), cols.tolist()))
-        for r, lb in enumerate(labels):
-            j = pick.get(r, -1)
-            if j < 0 or cost[r][j] >= big:
+    nodes, n, big = graph.nodes, len(graph.nodes), 1e6
+    if n:
+        d = np.stack([lb.text.distance(nodes) for lb in labels])        # labels × points
+        for lb, row in zip(labels, d):
+            lb.distance = float(row.min())
+        # points of a plan are where lines meet; a loose end of one line (a construction line
+        # drawn past its point, hatching) is taken only when nothing better is near; a point
+        # marked with a dot or a small circle is preferred
+        marker = np.isin(np.arange(n), list(graph.markers))
+        deco = np.where(np.isin(np.arange(n), list(graph.decoration)), tol, 0.0)
+        loose = np.array([LOOSE_END_COST.get(k, 0.0) for k in graph.degree]) * tol
+        score = np.where(d <= tol, np.where(marker, d - MARKER_BONUS * tol, d + deco + loose),
+                         np.inf)
+        best = np.argsort(score, axis=1, kind="stable")[:, :8]          # 8 points a label
+        keep = np.zeros(score.shape, dtype=bool)
+        np.put_along_axis(keep, best, True, axis=1)
+        keep &= np.isfinite(score)
+        columns = np.flatnonzero(keep.any(axis=0))
+        k = len(labels)
+        cost = np.full((k, len(columns) + k), big)
+        cost[:, :len(columns)] = np.where(keep[:, columns], score[:, columns], big)
+        # sharing a point with another label (p ≡ o1) costs more than a point of its own
+        first = score[np.arange(k), best[:, 0]]
+        cost[np.arange(k), len(columns) + np.arange(k)] = np.where(
+            np.isfinite(first), first + 0.5 * tol, big)
+        cost += tol                         # keep costs positive (marker bonus)
+        for r, j in zip(*linear_sum_assignment(cost)):
+            if cost[r, j] >= big:
                 continue
-            node = columns[j] if j < len(columns) else options[r][0][1]
-            lb.node = node
-            lb.at = (float(nodes[node][0]), float(nodes[node][1]))
+            lb = labels[r]
+            lb.node = int(columns[j] if j < len(columns) else best[r, 0])
+            lb.at = (float(nodes[lb.node][0]), float(nodes[lb.node][1]))
             lb.distance = lb.text.distance(lb.at)
-            lb.how = T("how.marker") if node in graph.markers else T("how.line_end")
+            lb.how = T("how.marker") if lb.node in graph.markers else T("how.line_end")
     for lb in labels:
         if lb.at is not None:
             continue
         meets = crossings(np.asarray([(ln.start, ln.end) for ln in lines]).reshape(-1, 2, 2),
                          lb.text.centre, tol + max(lb.text.half))
-        found = [(float(x), float(y)) for x, y in meets if lb.text.distance((x, y)) <= tol]
-        if found:
-            p = min(found, key=lb.text.distance)
-            lb.at, lb.how, lb.distance = p, T("how.crossing"), lb.text.distance(p)
+        far = lb.text.distance(meets)
+        if (far <= tol).any():
+            i = int(np.argmin(far))
+            lb.at, lb.how, lb.distance = (float(meets[i][0]), float(meets[i][1])), T(
+                "how.crossing"), float(far[i])
             continue
         notes.append(Note("warning", T("note.label_far", written=lb.written, d=lb.distance,
                                        tol=tol), lb.text.where))

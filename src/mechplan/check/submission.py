@@ -18,7 +18,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from ..errors import CheckError
+from ..geom.sketch import box_distance
 from .texts import T
 
 Point = tuple[float, float]
@@ -64,13 +67,10 @@ class SheetText:
     half: tuple[float, float] = (0.0, 0.0)   # half width and height of the text box (mm)
     rotation: float = 0.0          # degrees
 
-    def distance(self, p: Point) -> float:
-        """Distance from a point to the text's box (0 inside it)."""
-        a = math.radians(self.rotation)
-        dx, dy = p[0] - self.centre[0], p[1] - self.centre[1]
-        u = dx * math.cos(a) + dy * math.sin(a)
-        v = -dx * math.sin(a) + dy * math.cos(a)
-        return math.hypot(max(abs(u) - self.half[0], 0.0), max(abs(v) - self.half[1], 0.0))
+    def distance(self, p: Any) -> Any:
+        """Distance from points (N, 2) to the text's box (0 inside it); a float for one point."""
+        d = box_distance(p, self.centre, self.half, self.rotation)
+        return d if np.ndim(p) > 1 else float(d[0])
 
 
 @dataclass(frozen=True, slots=True)

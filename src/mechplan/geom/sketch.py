@@ -63,3 +63,14 @@ def crossings(segments: NDArray[np.float64], near: tuple[float, float],
     pts = p + t[:, None] * r
     ok &= np.hypot(pts[:, 0] - x, pts[:, 1] - y) <= radius
     return np.asarray(pts[ok], dtype=np.float64)
+
+
+def box_distance(points: NDArray[np.float64], centre: tuple[float, float],
+                 half: tuple[float, float], rotation_deg: float = 0.0) -> NDArray[np.float64]:
+    """Distance (N,) of points (N, 2) from a box of half sizes ``half`` about ``centre``, turned
+    by ``rotation_deg`` (0 inside it)."""
+    a = math.radians(rotation_deg)
+    d = np.asarray(points, dtype=float).reshape(-1, 2) - np.asarray(centre, dtype=float)
+    u = d[:, 0] * math.cos(a) + d[:, 1] * math.sin(a)
+    v = -d[:, 0] * math.sin(a) + d[:, 1] * math.cos(a)
+    return np.hypot(np.maximum(np.abs(u) - half[0], 0.0), np.maximum(np.abs(v) - half[1], 0.0))
