@@ -22,7 +22,7 @@ from typing import Any
 from ..errors import CheckError
 from .answer_keys import Keys, keys_for, valid_sets
 from .answer_table import AnswerItem, read_answers
-from .context import Options, swaps
+from .context import Options, si_unit, swaps
 from .match import _number_and_half, parse_value
 from .notation import catalogue, compact
 from .report import (
@@ -42,9 +42,6 @@ from .texts import T, join
 
 _TABLES = {"dynamics": ("dynamics",), "engine": ("engine",), "cam": ("cam",),
            "gears": ("gears", "gears_pair")}
-_SI = {"inertia": "kg·m²", "angular_velocity": "rad/s", "moment": "N·m", "force": "N",
-       "pressure": "Pa", "length": "m", "angle": "°", "dimensionless": "", "count": ""}
-
 
 @dataclass(frozen=True, slots=True)
 class Spec:
@@ -225,7 +222,7 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
         if spec.magnitude:
             parsed = (abs(parsed[0]), parsed[1])
         name = item.name if item.phi_deg is None else f"{item.name} ({item.phi_deg:g}°)"
-        unit = _SI.get(spec.dimension, "")
+        unit = _unit(spec.dimension)
         rows.append(_Row(item, spec, key, parsed[0], parsed[1],
                          ValueRow(name, key, unit, None, None, where=item.where)))
     written = {(r.key, r.item.phi_deg): r.value for r in rows}
@@ -343,13 +340,17 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
         else:
             r.row.hint = T("answers.hint.wrong", exact=round(shown) if r.spec.integer
                            else _round(shown),
-                           unit=_SI.get(r.spec.dimension, ""),
+                           unit=_unit(r.spec.dimension),
                            pct=100 * (r.value - exact) / exact if abs(exact) > r.tol
                            else math.nan)
         report.findings.append(Finding("wrong value", kind_text, r.row.name, r.row.hint))
     for r in rows:
         if r.exact is None:
             r.row.verdict = UNCHECKED
+
+
+def _unit(dimension: str) -> str:
+    return "°" if dimension == "angle" else si_unit(dimension)   # answers' angles are in degrees
 
 
 def _round(x: float) -> float:

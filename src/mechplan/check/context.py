@@ -12,6 +12,7 @@ from ..construct.graph import Construction, Evaluation
 from ..construct.segments import Segment
 from ..construct.step import Plan
 from ..scene.spec import Scene
+from ..units import DIMENSIONS
 from .labels import LabelBook, PlanKey, plan_key
 from .match import Interpretation, QuantityIndex
 from .points import DrawnPlan, DrawnSheet
@@ -24,10 +25,10 @@ from .report import (
 from .submission import Submission
 from .texts import T, join
 
-SI_UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
-           "angular_acceleration": "rad/s²", "force": "N", "moment": "N·m", "inertia": "kg·m²",
-           "length": "m", "angle": "rad", "mass": "kg", "dimensionless": ""}
-PLAN_UNIT = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
+
+def si_unit(dimension: str) -> str:
+    """The SI unit of a dimension as reports write it ("m/s²", "N·m"; "" for none)."""
+    return DIMENSIONS.get(dimension, ("", ""))[1].replace("**2", "²").replace("*", "·")
 
 
 @dataclass

@@ -9,14 +9,15 @@ import numpy as np
 
 from ..construct.step import Op, Plan
 from .context import (
-    PLAN_UNIT,
     Ctx,
     Drawn,
     Rederive,
     exact_at,
     segments_of,
+    si_unit,
     swaps,
 )
+from .labels import MU_DIMENSION
 from .points import DrawnPlan
 from .report import (
     CARRIED,
@@ -103,7 +104,8 @@ def prepare(ctx: Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> Drawn:
             if drawn > 1e-9 and exact > 0:
                 mu = exact / drawn
                 source = T("mu.inferred_drawn", ref=reference.name, q=reference.quantity,
-                           drawn=drawn, exact=exact, unit=PLAN_UNIT[plan],
+                           drawn=drawn, exact=exact,
+                           unit=si_unit(MU_DIMENSION[plan]).removesuffix("/mm"),
                            plan=plan_title(plan.value, case="gen"))
         if mu is None:
             notes.append(Note("error", T("note.no_mu", plan=with_case(dp.name, "gen"),

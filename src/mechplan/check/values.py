@@ -14,7 +14,6 @@ from ..construct.segments import Segment
 from ..construct.step import Kind, Op, Plan
 from ..errors import MechplanError
 from .context import (
-    SI_UNIT,
     Ctx,
     Drawn,
     Rederive,
@@ -23,6 +22,7 @@ from .context import (
     roots_of,
     row_brief,
     seg_exact,
+    si_unit,
 )
 from .hints import depends_on
 from .labels import PlanKey, plan_key
@@ -151,7 +151,7 @@ def grade_values(ctx: Ctx, k: int, drawn: list[Drawn], first: dict[PlanKey, Draw
     table_len: dict[int, TableSegment] = {id(t.segment): t for t in ctx.interp.segments}
     for gv in ctx.interp.values:
         q = gv.quantity
-        row = ValueRow(gv.written, q.display, SI_UNIT.get(q.dimension, ""), gv.value, None,
+        row = ValueRow(gv.written, q.display, si_unit(q.dimension), gv.value, None,
                        where=gv.where)
         exact = _value_exact(ctx, q, k, report.notes, gv.where)
         if exact is None:
@@ -282,7 +282,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
     """The student's own value of a quantity, its derivation and the arithmetic tolerance."""
     c = ctx.c
     rel = 0.005 * abs(gv.value)
-    unit = SI_UNIT.get(q.dimension, "")
+    unit = si_unit(q.dimension)
     if gv.length_mm is not None:
         m = gv.mu or mu
         if m:
