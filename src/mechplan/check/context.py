@@ -14,7 +14,7 @@ from ..construct.step import Plan
 from ..scene.spec import Scene
 from ..units import DIMENSIONS
 from .labels import LabelBook, PlanKey, plan_key
-from .match import Interpretation, QuantityIndex
+from .match import Interpretation
 from .points import DrawnPlan, DrawnSheet
 from .report import (
     NEW,
@@ -80,7 +80,6 @@ class Ctx:
     c: Construction
     ev: Evaluation
     book: LabelBook
-    qi: QuantityIndex
     sheet: DrawnSheet | None
     interp: Interpretation
     options: Options

@@ -96,7 +96,7 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
         raise CheckError(T("error.nothing_to_check", problems=f": {problems}" if problems else ""),
                          file=sub.path)
-    ctx = Ctx(scene, sub, sol.construction, ev, book, qi, sheet, interp, options, sol.scales)
+    ctx = Ctx(scene, sub, sol.construction, ev, book, sheet, interp, options, sol.scales)
     reports = [_grade(ctx, k) for k in range(len(candidates))]
     if len(reports) == 1:
         best = 0

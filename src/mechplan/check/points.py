@@ -95,8 +95,6 @@ class DrawnSheet:
     plans: list[DrawnPlan]
     notes: list[Note]
     label_distance: float
-    snap: float
-    scale_entries: list[tuple[Plan, Entry]]
     other_entries: list[Entry]
 
 
@@ -154,7 +152,7 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     if not labels:
         if sub.lines:
             raise _no_labels(sub, book)
-        return DrawnSheet([], notes, label_distance or 0.0, snap, scale_entries, other)
+        return DrawnSheet([], notes, label_distance or 0.0, other)
     if label_distance is None:
         heights = [lb.text.height for lb in labels if lb.text.height > 0]
         label_distance = min(10.0, max(3.0, 2.0 * statistics.median(heights))) if heights else 5.0
@@ -168,7 +166,7 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     plans = _group(attached, graph, sub, book, scale_entries, notes)
     for dp in plans:
         _scale_of(dp, scale_entries, mu_given, graph, notes)
-    return DrawnSheet(plans, notes, label_distance, snap, scale_entries, other)
+    return DrawnSheet(plans, notes, label_distance, other)
 
 
 def _no_labels(sub: Submission, book: LabelBook) -> Exception:
