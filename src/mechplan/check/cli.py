@@ -73,7 +73,7 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
                 raise CheckError(T("error.tolerance_plan", spec=spec, plan=m.group(1)))
             plan, body = PLAN_NAMES[name], m.group(2)
         base = out.get(plan) or out.get(None) or Tolerance()
-        mm, pct, deg = base.mm, base.pct, base.deg
+        given = {"mm": base.mm, "%": base.pct, "deg": base.deg}
         parts = [x for x in re.split(r"[,\s;]+", body.strip()) if x]
         if not parts:
             raise CheckError(T("error.tolerance_empty", spec=spec))
@@ -81,15 +81,8 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
             pm = re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(mm|%|deg|°)", part.lower())
             if not pm:
                 raise CheckError(T("error.tolerance_part", spec=spec, part=part))
-            value = float(pm.group(1).replace(",", "."))
-            unit = pm.group(2)
-            if unit == "mm":
-                mm = value
-            elif unit == "%":
-                pct = value
-            else:
-                deg = value
-        out[plan] = Tolerance(mm, pct, deg)
+            given[pm.group(2).replace("°", "deg")] = float(pm.group(1).replace(",", "."))
+        out[plan] = Tolerance(given["mm"], given["%"], given["deg"])
     return out
 
 
