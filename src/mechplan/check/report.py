@@ -197,15 +197,6 @@ class CheckReport:
         Keys and codes (verdict, cause, kind, level, plan …) are the same in every language;
         the sentences (hints, messages, sources, where) are written in ``lang``, and each code
         has its words alongside (``verdict_text``, ``kind_text`` …)."""
-        def clean(x: Any) -> Any:
-            if isinstance(x, float):
-                return None if not math.isfinite(x) else round(x, 6)
-            if isinstance(x, dict):
-                return {k: clean(v) for k, v in x.items()}
-            if isinstance(x, (list, tuple)):
-                return [clean(v) for v in x]
-            return x
-
         def verdict_words(item: Any) -> dict[str, str]:
             return {"verdict_text": verdict_text(item.verdict, item.cause, lang),
                     "cause_text": word("cause", item.cause, lang) if item.cause else ""}
@@ -213,40 +204,29 @@ class CheckReport:
         plans = []
         for p in self.plans:
             d = asdict(p)
-            d.pop("drawn_lines")
-            d.pop("exact_segments")
-            d["mu_unit"] = p.mu_unit
-            d["tolerance"] = asdict(p.tolerance)
-            d["title"] = capitalize(tr(p.name, lang))
-            d["tolerance_text"] = p.tolerance.text(lang)
+            del d["drawn_lines"], d["exact_segments"]
+            d.update(mu_unit=p.mu_unit, title=capitalize(tr(p.name, lang)),
+                     tolerance_text=p.tolerance.text(lang))
             for pt, rd in zip(p.points, d["points"]):
                 rd.update(verdict_words(pt), found_text=tr(pt.found, lang))
             for seg, rd in zip(p.segments, d["segments"]):
                 rd.update(verdict_words(seg))
             plans.append(d)
-        values = []
-        for v in self.values:
-            d = asdict(v)
-            d.update(verdict_words(v))
-            values.append(d)
-        findings = []
-        for f in self.findings:
-            d = asdict(f)
-            d.update(kind_text=word("kind", f.kind, lang), plan_text=tr(_plan_of(f.plan), lang),
-                     error_text=word("error", f.error, lang) if f.error else "")
-            findings.append(d)
-        doc = clean({
+        findings = [asdict(f) | {"kind_text": word("kind", f.kind, lang),
+                                 "plan_text": tr(_plan_of(f.plan), lang),
+                                 "error_text": word("error", f.error, lang) if f.error else ""}
+                    for f in self.findings]
+        return _json({
             "mechplan": __version__, "scene": self.scene, "submission": self.submission,
             "kind": self.kind, "phi_deg": self.phi_deg, "phi_source": self.phi_source,
             "units": self.units, "label_distance_mm": self.label_distance_mm,
             "passed": self.passed, "summary": self.summary(), "plans": plans,
-            "values": values, "findings": findings,
+            "values": [asdict(v) | verdict_words(v) for v in self.values], "findings": findings,
             "notes": [{"level": n.level, "message": n.message, "where": n.where,
                        "level_text": word("level", n.level, lang)} for n in self.notes],
             "lang": lang,
             "result_text": T("report.passed" if self.passed else "report.failed").tr(lang),
-        })
-        return _say(doc, lang)
+        }, lang)
 
     def text(self, lang: str = "en") -> str:
         """The report for a terminal, in a language (en, ru, vi, zh)."""
@@ -259,12 +239,15 @@ PROSE_KEYS = frozenset({"hint", "message", "mu_source", "phi_source", "conventio
                         "where"})
 
 
-def _say(x: Any, lang: str, key: str = "") -> Any:
-    """Sentences of a JSON document in a language; every other Text as its plain English."""
+def _json(x: Any, lang: str, key: str = "") -> Any:
+    """A JSON document: floats rounded (not finite: null), sentences in a language, every other
+    Text as its plain English."""
+    if isinstance(x, float):
+        return None if not math.isfinite(x) else round(x, 6)
     if isinstance(x, dict):
-        return {k: _say(v, lang, k) for k, v in x.items()}
-    if isinstance(x, list):
-        return [_say(v, lang, key) for v in x]
+        return {k: _json(v, lang, k) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_json(v, lang, key) for v in x]
     if isinstance(x, Text):
         return x.tr(lang) if key in PROSE_KEYS else str(x)
     return x
