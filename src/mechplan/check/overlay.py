@@ -4,6 +4,7 @@ green, each wrong segment marked in red with its error — a :class:`Sheet` writ
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -119,18 +120,18 @@ def write_overlay(report: CheckReport, path: str | Path, lang: str = "en") -> Pa
     if suffix not in ("svg", "dxf", "pdf"):
         raise CheckError(T("error.overlay_kind", suffix=suffix or "—"), file=str(p))
     sheet = overlay_sheet(report, lang, p.stem or "overlay")
-    try:
-        return write(sheet, p, (suffix,))[0]
-    except DrawingError as exc:
-        raise CheckError(exc.detail, file=str(p)) from None
-    except OSError as exc:
-        raise CheckError(T("error.write", reason=exc.strerror or str(exc)), file=str(p)) from None
+    return _written(p, lambda: write(sheet, p, (suffix,))[0])
 
 
 def write_bytes(path: Path, data: bytes) -> Path:
     """Write a report file atomically (a failed write leaves the old file)."""
+    return _written(path, lambda: write_atomic(path, data))
+
+
+def _written(path: Path, write_it: Callable[[], Path]) -> Path:
+    """Write a file; a failure is a :class:`CheckError` naming it."""
     try:
-        return write_atomic(path, data)
+        return write_it()
     except DrawingError as exc:
         raise CheckError(exc.detail, file=str(path)) from None
     except OSError as exc:
