@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import re
 import statistics
+from collections import Counter
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -262,30 +263,21 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
     kinds_in_book = {k[0] for k in book.plans}
     decided: list[tuple[PlanKey, int, list[_Label]]] = []
     for comp, members in comps.items():
-        votes: dict[Plan, float] = {}
+        votes: Counter[Plan] = Counter()
         for lb in members:
             plans_here = {c.plan[0]: c.weight for c in reversed(lb.cands)}
-            for plan, w in plans_here.items():
-                votes[plan] = votes.get(plan, 0.0) + w
-            for plan, w in feature_votes(lb.written).items():
-                if plan in plans_here:
-                    votes[plan] = votes.get(plan, 0.0) + w
+            votes.update(plans_here)
+            votes.update({p: w for p, w in feature_votes(lb.written).items() if p in plans_here})
         hint = _hint_of(comp, members, graph, lines_of.get(comp, []), scale_entries, set(comps))
-        force_hint = False
-        for plan in hint:
-            votes[plan] = votes.get(plan, 0.0) + 3.0 * len(members) ** 0.5 + 3.0
-            force_hint |= plan is Plan.FORCE
-        if not force_hint:
+        votes.update(dict.fromkeys(hint, 3.0 * len(members) ** 0.5 + 3.0))
+        if Plan.FORCE not in hint:
             votes.pop(Plan.FORCE, None)
         votes = {p: v for p, v in votes.items() if p in kinds_in_book}
         if not votes:
             continue
         plan = max(votes, key=lambda p: (votes[p], -list(Plan).index(p)))
         keys = [k for k in book.plans if k[0] is plan]
-
-        fits = {k: _fit(book, k, members) for k in keys}
-        key = max(keys, key=fits.__getitem__)
-        decided.append((key, comp, members))
+        decided.append((max(keys, key=lambda k: _fit(book, k, members)), comp, members))
     # merge drawings of one plan unless their labels clash
     plans: list[DrawnPlan] = []
     groups: list[tuple[PlanKey, list[int], list[_Label]]] = []
@@ -299,14 +291,12 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
                 break
         else:
             groups.append((key, [comp], list(members)))
-    counts: dict[PlanKey, int] = {}
-    for key, _, _ in groups:
-        counts[key] = counts.get(key, 0) + 1
-    seen: dict[PlanKey, int] = {}
+    counts = Counter(key for key, _, _ in groups)
+    seen: Counter[PlanKey] = Counter()
     for key, comps_, members in groups:
         dp = DrawnPlan(key)
         if counts[key] > 1:
-            seen[key] = seen.get(key, 0) + 1
+            seen[key] += 1
             dp.number = seen[key]
         for comp in comps_:
             dp.lines.extend(lines_of.get(comp, []))
