@@ -425,22 +425,16 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
         return
     # the pole is where most vectors to labelled points start
     labelled = {tuple(np.round(p.at, 6)) for p in dp.points.values()}
-    count: dict[int, int] = {}
-    for a, b in graph.line_nodes:
-        pa, pb = tuple(np.round(graph.nodes[a], 6)), tuple(np.round(graph.nodes[b], 6))
-        if pa in labelled and pb not in labelled:
-            count[b] = count.get(b, 0) + 1
-        elif pb in labelled and pa not in labelled:
-            count[a] = count.get(a, 0) + 1
+    at_label = [tuple(np.round(p, 6)) in labelled for p in graph.nodes]
+    count = Counter(b if at_label[a] else a for a, b in graph.line_nodes
+                    if at_label[a] != at_label[b])
     if not count:
         return
-    best = max(count.values())
-    tops = [n for n, v in count.items() if v == best]
-    if best < 2 or len(tops) > 1:
+    (n, best), *rest = count.most_common(2)
+    if best < 2 or (rest and rest[0][1] == best):
         notes.append(Note("warning", T("note.pole_unknown", plan=with_case(dp.name, "gen")),
                           sub.path))
         return
-    n = tops[0]
     at = (float(graph.nodes[n][0]), float(graph.nodes[n][1]))
     label = book.label_of(dp.key, pole)
     dp.points[pole] = LabelledPoint(pole, label, "", at, sub.path, 0.0, T("how.inferred"))
