@@ -20,9 +20,10 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
+from ..units import si_unit
 from .answer_keys import Keys, keys_for, valid_sets
 from .answer_table import AnswerItem, read_answers
-from .context import Options, si_unit, swaps
+from .context import Options, swaps
 from .match import _number_and_half, parse_value
 from .notation import catalogue, compact
 from .report import (

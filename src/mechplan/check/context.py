@@ -12,7 +12,6 @@ from ..construct.graph import Construction, Evaluation
 from ..construct.segments import Segment
 from ..construct.step import Plan
 from ..scene.spec import Scene
-from ..units import DIMENSIONS
 from .labels import LabelBook, PlanKey, plan_key
 from .match import Interpretation
 from .points import DrawnPlan, DrawnSheet
@@ -24,11 +23,6 @@ from .report import (
 )
 from .submission import Submission
 from .texts import T, join
-
-
-def si_unit(dimension: str) -> str:
-    """The SI unit of a dimension as reports write it ("m/s²", "N·m"; "" for none)."""
-    return DIMENSIONS.get(dimension, ("", ""))[1].replace("**2", "²").replace("*", "·")
 
 
 @dataclass

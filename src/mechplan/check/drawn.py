@@ -8,13 +8,13 @@ import math
 import numpy as np
 
 from ..construct.step import Op, Plan
+from ..units import si_unit
 from .context import (
     Ctx,
     Drawn,
     Rederive,
     exact_at,
     segments_of,
-    si_unit,
     swaps,
 )
 from .labels import MU_DIMENSION

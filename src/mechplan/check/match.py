@@ -12,7 +12,7 @@ from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
-from ..units import parse_quantity
+from ..units import parse_quantity, si_unit
 from . import notation
 from .labels import (
     LabelBook,
@@ -28,7 +28,7 @@ from .labels import (
 from .notation import units_ascii
 from .points import LAYER_HINTS
 from .submission import Entry, Note
-from .texts import T, has, join, plan_title
+from .texts import T, join, plan_title
 
 _NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?")
 
@@ -263,9 +263,7 @@ def parse_value(text: str, dimension: str, where: str, notes: list[Note],
         notes.append(Note("error", T("note.not_finite", name=name, text=text), where))
         return None
     if bare and number is not None:
-        from ..units import DIMENSIONS
-
-        unit = DIMENSIONS[dimension][1].replace("**2", "²").replace("*", "·") or "1"
+        unit = si_unit(dimension) or "1"
         notes.append(Note("info", T("note.no_unit", name=name, text=text, unit=unit), where))
         return number, half
     try:
@@ -370,10 +368,9 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         if vtext is None:
             return
         if _is_length_text(vtext) and "mm" in vtext.lower() and q.dimension != "length":
-            noun = (T(f"dim.{q.dimension}") if has(f"dim.{q.dimension}") else
-                    f"{'an' if q.dimension[0] in 'aeiou' else 'a'} {q.dimension.replace('_', ' ')}")
             notes.append(Note("error", T("note.length_not_value", name=e.name, text=vtext,
-                                         display=q.display, dim=noun), e.where))
+                                         display=q.display, dim=T(f"dim.{q.dimension}")),
+                              e.where))
             return
         parsed = parse_value(vtext, q.dimension, e.where, notes, e.name)
         if parsed is None:

@@ -13,6 +13,7 @@ from ..construct.graph import Construction
 from ..construct.segments import Segment
 from ..construct.step import Kind, Op, Plan
 from ..errors import MechplanError
+from ..units import si_unit
 from .context import (
     Ctx,
     Drawn,
@@ -22,7 +23,6 @@ from .context import (
     roots_of,
     row_brief,
     seg_exact,
-    si_unit,
 )
 from .hints import depends_on
 from .labels import PlanKey, plan_key
