@@ -8,6 +8,7 @@ import math
 import numpy as np
 
 from ..construct.step import Op, Plan
+from ..geom.vec import rotate
 from ..units import si_unit
 from .context import (
     Ctx,
@@ -69,12 +70,11 @@ def _turned(ctx: Ctx, dp: DrawnPlan, k: int, anchor: str | None) -> float:
 def _turn_back(dp: DrawnPlan, anchor: str, turn: float) -> DrawnPlan:
     from dataclasses import replace
 
-    a = math.radians(-turn)
-    ox, oy = dp.points[anchor].at
+    o = np.asarray(dp.points[anchor].at)
 
     def q(p: tuple[float, float]) -> tuple[float, float]:
-        x, y = p[0] - ox, p[1] - oy
-        return (ox + x * math.cos(a) - y * math.sin(a), oy + x * math.sin(a) + y * math.cos(a))
+        x, y = o + rotate(np.asarray(p) - o, math.radians(-turn))
+        return (float(x), float(y))
 
     out = DrawnPlan(dp.key, {s: replace(p, at=q(p.at)) for s, p in dp.points.items()},
                     [replace(ln, start=q(ln.start), end=q(ln.end)) for ln in dp.lines],

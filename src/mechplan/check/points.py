@@ -131,14 +131,8 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     mu_given = mu_given or {}
     graph = drawn_graph(sub.lines, sub.markers, snap)
     # scale-factor texts and other "name = value" texts
-    scale_entries: list[tuple[Plan, Entry]] = []
-    other: list[Entry] = []
-    for e in sub.entries:
-        plan = mu_plan(e.name)
-        if plan is not None:
-            scale_entries.append((plan, e))
-        else:
-            other.append(e)
+    scale_entries = [(plan, e) for e in sub.entries if (plan := mu_plan(e.name)) is not None]
+    other = [e for e in sub.entries if mu_plan(e.name) is None]
     labels: list[_Label] = []
     for t in sub.texts:
         names = _label_names(t)

@@ -262,13 +262,15 @@ def read_csv(path: Path) -> Submission:
     "name, value[, unit]"; the delimiter may be ",", ";" or a tab; decimal commas are accepted."""
     sub = Submission(str(path), "table")
     rows = csv_rows(path, _sniff)
+    first = next((i for i, row in enumerate(rows, start=1) if any(c.strip() for c in row)
+                  and not row[0].strip().startswith("#")), 0)
     header: dict[str, int] | None = None
     for lineno, row in enumerate(rows, start=1):
         cells = [c.strip() for c in row]
         if not any(cells) or cells[0].startswith("#"):
             continue
         where = T("where.line", file=path.name, n=lineno)
-        if header is None and lineno == _first_line(rows):
+        if header is None and lineno == first:
             header = _header(cells)
             if header is not None:
                 if "name" not in header:
@@ -323,14 +325,6 @@ def _sniff(sample: str) -> Any:
         return csv.Sniffer().sniff(sample, delimiters=",;\t|")
     except csv.Error:
         return _Semicolon if sample.count(";") > sample.count(",") else csv.excel
-
-
-def _first_line(rows: list[list[str]]) -> int:
-    for i, row in enumerate(rows, start=1):
-        cells = [c.strip() for c in row]
-        if any(cells) and not cells[0].startswith("#"):
-            return i
-    return 0
 
 
 def _header(cells: list[str]) -> dict[str, int] | None:
