@@ -73,7 +73,7 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
                 raise CheckError(T("error.tolerance_plan", spec=spec, plan=m.group(1)))
             plan, body = PLAN_NAMES[name], m.group(2)
         base = out.get(plan) or out.get(None) or Tolerance()
-        given = {"mm": base.mm, "%": base.pct, "deg": base.deg}
+        given: dict[str, Any] = {"mm": base.mm, "%": base.pct, "deg": base.deg}
         parts = [x for x in re.split(r"[,\s;]+", body.strip()) if x]
         if not parts:
             raise CheckError(T("error.tolerance_empty", spec=spec))

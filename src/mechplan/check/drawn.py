@@ -73,7 +73,7 @@ def _turn_back(dp: DrawnPlan, anchor: str, turn: float) -> DrawnPlan:
     o = np.asarray(dp.points[anchor].at)
 
     def q(p: tuple[float, float]) -> tuple[float, float]:
-        x, y = o + rotate(np.asarray(p) - o, math.radians(-turn))
+        x, y = o + rotate(np.asarray(p) - o, np.radians(-turn))
         return (float(x), float(y))
 
     out = DrawnPlan(dp.key, {s: replace(p, at=q(p.at)) for s, p in dp.points.items()},

@@ -266,7 +266,7 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
         votes.update(dict.fromkeys(hint, 3.0 * len(members) ** 0.5 + 3.0))
         if Plan.FORCE not in hint:
             votes.pop(Plan.FORCE, None)
-        votes = {p: v for p, v in votes.items() if p in kinds_in_book}
+        votes = Counter({p: v for p, v in votes.items() if p in kinds_in_book})
         if not votes:
             continue
         plan = max(votes, key=lambda p: (votes[p], -list(Plan).index(p)))

@@ -29,8 +29,8 @@ def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: 
     arr = np.asarray(pts, dtype=float).reshape(-1, 2)
     labels = cluster(arr, snap)
     m = int(labels.max()) + 1 if len(labels) else 0
-    nodes = np.stack([np.bincount(labels, arr[:, i], m) for i in (0, 1)], axis=-1).reshape(-1, 2)
-    nodes /= np.maximum(np.bincount(labels, minlength=m), 1)[:, None]     # mean of each cluster
+    nodes = np.stack([np.bincount(labels, arr[:, i], m) for i in (0, 1)], axis=-1).reshape(
+        -1, 2) / np.maximum(np.bincount(labels, minlength=m), 1)[:, None]  # mean of each cluster
     cl = labels.tolist()
     line_nodes = [(cl[2 * i], cl[2 * i + 1]) for i in range(len(lines))]
     marker_nodes = {cl[2 * len(lines) + j]: markers[j][1] for j in range(len(markers))}
