@@ -18,6 +18,7 @@ import numpy as np
 
 from ..construct.step import Op, Plan
 from ..errors import CheckError, MechplanError
+from ..geom.sketch import nearest
 from ..scene.spec import Scene
 from .context import (
     Ctx,
@@ -309,12 +310,9 @@ def _where_label(ctx: Ctx, sid: str, d: Drawn) -> str:
 
 
 def _point_at(dp: DrawnPlan, at: tuple[float, float], snap: float) -> str | None:
-    best, dist = None, snap + 1e-9
-    for sid, p in dp.points.items():
-        dd = math.dist(p.at, at)
-        if dd <= dist:
-            best, dist = sid, dd
-    return best
+    sids = list(dp.points)[::-1]           # the last of equally near points, as they were read
+    i = nearest(np.array([dp.points[s].at for s in sids]), at, snap + 1e-9)
+    return sids[i] if i >= 0 else None
 
 
 def _is_drawn(dp: DrawnPlan, row: SegmentRow, snap: float) -> bool:

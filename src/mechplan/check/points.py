@@ -22,7 +22,7 @@ from scipy.optimize import linear_sum_assignment
 from shapely.geometry import MultiPoint
 
 from ..construct.step import Plan
-from ..geom.sketch import crossings
+from ..geom.sketch import crossings, nearest
 from .labels import (
     Candidate,
     LabelBook,
@@ -320,14 +320,9 @@ def _gap(a: list[_Label], b: list[_Label]) -> float:
 
 
 def _nearest_component(at: Point | None, graph: Graph, among: set[int] | None = None) -> int:
-    if at is None or not len(graph.nodes):
-        return -1
-    d = np.hypot(*(graph.nodes - np.asarray(at)).T)
-    if among is not None:
-        d = np.where(np.isin(graph.component, list(among)), d, np.inf)
-        if not np.isfinite(d).any():
-            return -1
-    return graph.component[int(np.argmin(d))]
+    mask = None if among is None else np.isin(graph.component, list(among))
+    i = -1 if at is None else nearest(graph.nodes, at, mask=mask)
+    return -1 if i < 0 else graph.component[i]
 
 
 def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLine],
