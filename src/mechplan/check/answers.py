@@ -22,7 +22,7 @@ from typing import Any
 from ..errors import CheckError
 from ..units import si_unit
 from .answer_keys import Keys, keys_for, valid_sets
-from .answer_table import AnswerItem, read_answers
+from .answer_table import read_answers
 from .context import Options, swaps
 from .match import _number_and_half, parse_value
 from .notation import catalogue, compact
@@ -38,7 +38,7 @@ from .report import (
     Finding,
     ValueRow,
 )
-from .submission import Note
+from .submission import Entry, Note
 from .texts import T, join
 
 _TABLES = {"dynamics": ("dynamics",), "engine": ("engine",), "cam": ("cam",),
@@ -158,8 +158,8 @@ def maybe_check_answers(scene: Any, submission: Any,
         return None
     keys = keys_for(solve_file(scene))
     read = sum(read_name(i.name, kind, i.section, i.phi_deg is not None, keys) is not None
-               for i in table.items)
-    if 2 * read < len(table.items):
+               for i in table.entries)
+    if 2 * read < len(table.entries):
         return None                     # mostly segments and linkage values (pb, v_B …)
     return check_answers(scene, table, keys, kind, options or Options())
 
@@ -167,7 +167,7 @@ def maybe_check_answers(scene: Any, submission: Any,
 # -- grading ------------------------------------------------------------------------------------
 @dataclass
 class _Row:
-    item: AnswerItem
+    item: Entry
     spec: Spec
     key: str
     value: float
@@ -177,8 +177,8 @@ class _Row:
     tol: float = 0.0
 
 
-def _parse(item: AnswerItem, spec: Spec, notes: list[Note]) -> tuple[float, float] | None:
-    text = item.text.strip()
+def _parse(item: Entry, spec: Spec, notes: list[Note]) -> tuple[float, float] | None:
+    text = (item.text or "").strip()
     dim = spec.dimension
     if dim == "count":
         dim = "dimensionless"
@@ -207,7 +207,7 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
                          T("answers.source", kind=T(f"answers.kind.{kind}")))
     user = options.tolerance.get(None)
     rows: list[_Row] = []
-    for item in table.items:
+    for item in table.entries:
         found = read_name(item.name, kind, item.section, item.phi_deg is not None, keys)
         if found is None:
             notes.append(Note("error", T("answers.not_understood", name=item.name,

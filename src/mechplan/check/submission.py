@@ -91,6 +91,7 @@ class Entry:
     section: str | None = None
     text: str | None = None        # a single uninterpreted value ("67", "2.95 m/s")
     at: Point | None = None        # where the text stands on a sheet (mm)
+    phi_deg: float | None = None   # the angle of an answer table's row (degrees)
 
 
 @dataclass
