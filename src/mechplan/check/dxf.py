@@ -16,8 +16,8 @@ from typing import Any
 from ezdxf import DXFError
 from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 
+from ..drafting.fonts import text_width_mm
 from ..errors import CheckError
-from ..sheet.fonts import text_width_mm
 from .labels import clean_text
 from .notation import decode_legacy
 from .submission import DrawnLine, Note, Point, SheetText, Submission, parse_assignments

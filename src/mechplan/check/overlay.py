@@ -8,10 +8,10 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..drafting.fonts import text_width_mm
+from ..drafting.primitives import Line, Primitive, Role, Sheet, Text
 from ..errors import CheckError, DrawingError
 from ..render import write, write_atomic
-from ..sheet.fonts import text_width_mm
-from ..sheet.primitives import Line, Primitive, Role, Sheet, Text
 from .report import SLIP, WRONG, CheckReport, SegmentRow
 from .texts import T, tr, word
 
