@@ -57,18 +57,25 @@ def marks(report: CheckReport, lang: str = "en") -> list[Mark]:
             out.append(Mark("ERRORS", a, b))
             mid = ((a[0] + b[0]) / 2 + 1.0, (a[1] + b[1]) / 2 + 1.0)
             out.append(Mark("ERRORS", mid, None, _error_text(row, lang), 1.8))
-        xs = [p[0] for m in out[start:] for p in (m.start, m.end) if p is not None] or [0.0]
-        ys = [p[1] for m in out[start:] for p in (m.start, m.end) if p is not None] or [0.0]
         title = (T("overlay.title", plan=plan.name, mu=plan.mu, unit=plan.mu_unit).tr(lang)
                  if plan.mu else tr(plan.name, lang))
-        out.append(Mark("NOTES", (min(xs), max(ys) + 6.0), None, title, 3.5))
+        lo, hi = _extent(out[start:])
+        out.append(Mark("NOTES", (lo[0], hi[1] + 6.0), None, title, 3.5))
     if not out:
         raise CheckError(T("error.overlay_table"), file=report.submission)
-    xs = [p[0] for m in out for p in (m.start, m.end) if p is not None]
-    ys = [p[1] for m in out for p in (m.start, m.end) if p is not None]
-    legend = (min(xs), min(ys) - 8.0)
-    out.append(Mark("NOTES", legend, None, T("overlay.legend").tr(lang), 3.5))
+    lo, _ = _extent(out)
+    out.append(Mark("NOTES", (lo[0], lo[1] - 8.0), None, T("overlay.legend").tr(lang), 3.5))
     return out
+
+
+def _extent(ms: list[Mark], texts: bool = False) -> tuple[Point, Point]:
+    """The lowest and highest x and y the marks reach (with ``texts``: their texts' far corners
+    too)."""
+    pts = [p for m in ms for p in (m.start, m.end) if p is not None] + [
+        (m.start[0] + text_width_mm(m.text, m.height), m.start[1] + m.height)
+        for m in ms if texts and m.end is None]
+    xs, ys = zip(*pts)
+    return (min(xs), min(ys)), (max(xs), max(ys))
 
 
 def _error_text(row: SegmentRow, lang: str = "en") -> str:
@@ -90,14 +97,8 @@ def overlay_sheet(report: CheckReport, lang: str = "en", name: str = "overlay",
     """The overlay as a :class:`Sheet` (roles SUBMISSION, EXACT, ERRORS, TEXT), drawn by any
     ``render`` backend; its size is the drawing's extent plus a margin."""
     ms = marks(report, lang)
-    xs, ys = [], []
-    for m in ms:
-        ends = [m.start] if m.end is None else [m.start, m.end]
-        if m.end is None:
-            ends.append((m.start[0] + text_width_mm(m.text, m.height), m.start[1] + m.height))
-        xs += [p[0] for p in ends]
-        ys += [p[1] for p in ends]
-    x0, y0 = min(xs) - margin, min(ys) - margin
+    lo, hi = _extent(ms, texts=True)
+    x0, y0 = lo[0] - margin, lo[1] - margin
 
     def q(p: Point) -> Point:
         return (p[0] - x0, p[1] - y0)
@@ -109,7 +110,7 @@ def overlay_sheet(report: CheckReport, lang: str = "en", name: str = "overlay",
             prims.append(Line(q(m.start), q(m.end), role))
         else:
             prims.append(Text(q(m.start), m.text, m.height, role=role))
-    return Sheet(max(xs) - x0 + margin, max(ys) - y0 + margin, tuple(prims), language=lang,
+    return Sheet(hi[0] - x0 + margin, hi[1] - y0 + margin, tuple(prims), language=lang,
                  name=name)
 
 
