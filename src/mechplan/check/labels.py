@@ -160,11 +160,9 @@ class LabelBook:
                     own = label_key(point) + prime
                     if own not in by_label:
                         continue
-                    for alias in (label_key(point) + link_id + prime,
-                                  label_key(point) + "_" + link_id + prime):
-                        alias = label_key(alias)
-                        if alias not in by_label:
-                            self._add(key, alias, by_label[own], steps[by_label[own]], 2)
+                    alias = label_key(point + link_id) + prime      # "c2", "c_2", "C2'"
+                    if alias not in by_label:
+                        self._add(key, alias, by_label[own], steps[by_label[own]], 2)
         # normals n_XY and Coriolis points k_XY: reversed names, link numbers, ordinals, bare
         for op, letter in ((Op.NORMAL, "n"), (Op.CORIOLIS, "k")):
             found = [(sid, c[sid]) for sid in steps if c[sid].op is op]
@@ -181,7 +179,7 @@ class LabelBook:
                 if len(found) == 1:
                     self._add(key, letter, sid, label, 2)
 
-    def candidates(self, text: str, group_hint: str | None = None) -> list[Candidate]:
+    def candidates(self, text: str) -> list[Candidate]:
         """All readings of a written label, best first (exact label, usual alias, weak alias)."""
         raw = text.strip()
         alias = label_key(raw)
