@@ -11,9 +11,12 @@ text lives in ``locale/en/`` like every other language. Placeholders are ``str.f
 from __future__ import annotations
 
 import functools
+import math
+import re
 import string
+import unicodedata
 from importlib import resources
-from typing import Any
+from typing import Any, Self
 
 from babel import Locale
 from babel.messages.pofile import read_po
@@ -95,3 +98,97 @@ def grouped(value: float, digits: int, language: str) -> str:
     """Format a number with the language's decimal mark and digit grouping (Babel)."""
     pattern = "#,##0" + ("." + "0" * digits if digits > 0 else "")
     return str(format_decimal(value, format=pattern, locale=_locale(language)))
+
+
+# -- sentences said again in another language -----------------------------------------------------
+class Text(str):
+    """A message of the catalogues: its English sentence as a ``str`` (so it compares, joins and
+    prints as English), which remembers its message id and arguments to be said again in another
+    language with :meth:`tr`. Arguments may be texts, lists (joined) or numbers (written with the
+    language's decimal mark by :func:`num`). A subclass says itself otherwise by overriding
+    :meth:`say` (and :meth:`joined` for list arguments)."""
+
+    key: str
+    args: dict[str, Any]
+
+    def __new__(cls, key: str, args: dict[str, Any] | None = None) -> Self:
+        args = dict(args or {})
+        obj = super().__new__(cls, cls.say(key, args, DEFAULT_LANGUAGE))
+        obj.key, obj.args = key, args
+        return obj
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (type(self), (self.key, self.args))
+
+    def tr(self, language: str) -> str:
+        """The text in a language (en, ru, vi, zh)."""
+        return str(self) if language == DEFAULT_LANGUAGE else self.say(self.key, self.args,
+                                                                       language)
+
+    @classmethod
+    def say(cls, key: str, args: dict[str, Any], language: str) -> str:
+        """Message ``key`` with its arguments in a language (an unknown language: English)."""
+        language = language if language in LANGUAGES else DEFAULT_LANGUAGE
+        return _Formatter(language, cls).vformat(catalogue(language)[key], (), args)
+
+    @classmethod
+    def joined(cls, items: list[Any], sep: str, language: str) -> str:
+        """The items of a list argument in a language, joined by ``sep``."""
+        return sep.join(tr(x, language) if isinstance(x, str) else num(x, "", language)
+                        for x in items)
+
+
+class _Formatter(string.Formatter):
+    def __init__(self, language: str, text: type[Text]) -> None:
+        super().__init__()
+        self.language, self.text = language, text
+
+    def format_field(self, value: Any, format_spec: str) -> str:
+        if isinstance(value, Text):
+            return format(value.tr(self.language), format_spec)
+        if isinstance(value, (list, tuple)):
+            return format(self.text.joined(list(value), ", ", self.language), format_spec)
+        if isinstance(value, str):
+            return format(value, format_spec)
+        return "" if value is None else num(value, format_spec, self.language)
+
+
+def tr(x: Any, language: str) -> str:
+    """Any string in a language: a :class:`Text` is said again, other strings are kept."""
+    if isinstance(x, Text):
+        return x.tr(language)
+    return "" if x is None else str(x)
+
+
+def num(value: Any, spec: str, language: str) -> str:
+    """A number formatted by a format spec with the language's decimal mark; in English exactly
+    ``format(value, spec)``. A spec starting with "~" writes a number that is not finite as "?"."""
+    unknown = spec.startswith("~")
+    spec = spec.removeprefix("~")
+    if isinstance(value, bool) or not hasattr(value, "__float__"):
+        return format(value, spec)
+    if unknown and not math.isfinite(float(value)):
+        return "?"
+    if language == "en" or isinstance(value, int) and not spec:
+        return format(value, spec)
+    m = re.fullmatch(r"([<>^=]?)([+]?)(\d*)\.(\d+)f", spec)
+    if m and math.isfinite(float(value)):
+        text = number(float(value), int(m.group(4)), language)
+        if m.group(2) and not text.startswith("-"):
+            text = "+" + text
+        width_ = int(m.group(3) or 0)
+        return text.ljust(width_) if m.group(1) == "<" else text.rjust(width_)
+    text = format(value, spec)
+    return text.replace(".", ",") if language in ("ru", "vi") else text
+
+
+def width(text: str) -> int:
+    """Columns a string takes in a terminal (East Asian wide characters take two)."""
+    return sum(0 if unicodedata.combining(ch) else
+               2 if unicodedata.east_asian_width(ch) in ("W", "F") else 1 for ch in text)
+
+
+def pad(text: str, size: int, align: str = "<") -> str:
+    """A string padded to ``size`` terminal columns."""
+    fill = " " * max(0, size - width(text))
+    return text + fill if align == "<" else fill + text

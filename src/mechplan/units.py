@@ -35,6 +35,11 @@ DIMENSIONS: dict[str, tuple[str, str]] = {
     "mu_moment": ("[mass]*[length]/[time]**2", "N*m/mm"),
 }
 
+def si_unit(dimension: str) -> str:
+    """The SI unit of a dimension as a reader writes it ("m/s²", "kg·m²"; "" for none)."""
+    return DIMENSIONS.get(dimension, ("", ""))[1].replace("**2", "²").replace("*", "·")
+
+
 _EXAMPLES = {
     "length": '"80 mm" or "0.08 m"',
     "angle": '"60 deg" or "1.047 rad"',

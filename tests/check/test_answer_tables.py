@@ -345,3 +345,35 @@ def test_right_tables_of_every_template_pass(tmp_path, name):
     bad = [(v.name, v.verdict, v.hint) for v in report.values if v.verdict != "ok"]
     assert not bad and len(report.values) >= 5, bad
     assert not [n for n in report.notes if n.level == "error"], report.notes
+
+
+def test_answer_table_toml_forms(tmp_path: Path) -> None:
+    """Every TOML form of an answer table (module docstring of check/answer_table.py) is read with
+    its angle and section; the table's own angle is not an answer; a value of no use is a note."""
+    from mechplan.check.answer_table import read_answers
+    from mechplan.check.answers import is_angle_name
+
+    path = _write(tmp_path, "forms.toml", """"φ" = "60 deg"
+M_mean = { value = 12.5, unit = "N*m" }
+ok = true
+
+["φ = 30°"]
+P = "1200 N"
+
+["60°"]
+T = 300
+
+[pair]
+z1 = 17
+
+[[rows]]
+"φ" = "90°"
+p = "2 MPa"
+N = "-150 N"
+""")
+    table = read_answers(path, is_angle_name)
+    got = [(e.name, e.text or e.value, e.phi_deg, e.section) for e in table.entries]
+    assert got == [("M_mean", "12.5 N*m", None, None), ("P", "1200 N", 30.0, None),
+                   ("T", "300", 60.0, None), ("z1", "17", None, "pair"),
+                   ("p", "2 MPa", 90.0, None), ("N", "-150 N", 90.0, None)]
+    assert [n.level for n in table.notes] == ["error"] and "True" in table.notes[0].message

@@ -15,9 +15,9 @@ from mechplan.check import Options, check
 from mechplan.check.cli import add_parser
 from mechplan.check.overlay import marks
 from mechplan.check.report import CARRIED, NEW, SLIP, WRONG
-from mechplan.check.texts import LANGUAGES, T, num, tr
+from mechplan.check.texts import LANGUAGES, T, tr
 from mechplan.construct.step import Plan
-from mechplan.i18n import catalogue
+from mechplan.i18n import catalogue, num
 
 from .sheets import TEMPLATES, PlanSpec, exact_sheet, move, solved, write_dxf
 

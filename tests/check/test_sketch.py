@@ -1,11 +1,12 @@
-"""geom.sketch (clusters, components, crossings) and legacy Vietnamese text, by hand-made cases."""
+"""geom.sketch (clusters, components, crossings, box distances, nearest points) and legacy
+Vietnamese text, by hand-made cases."""
 
 from __future__ import annotations
 
 import numpy as np
 import pytest
 
-from mechplan.geom.sketch import cluster, components, crossings
+from mechplan.geom.sketch import box_distance, cluster, components, crossings, nearest
 
 
 def test_cluster_is_transitive_and_numbered_by_first_point() -> None:
@@ -26,6 +27,22 @@ def test_crossings() -> None:
     assert got.shape == (1, 2) and got[0] == pytest.approx([5.0, 5.0])
     # nearly parallel lines (< 5°) do not define a point
     assert len(crossings(np.array([[[0, 0], [10, 0]], [[0, -0.2], [10, 0.2]]]), (5, 0), 1)) == 0
+
+
+def test_box_distance() -> None:
+    # a 4 × 2 box about (10, 0): inside, beside, off a corner (3-4-5), and the same box turned 90°
+    pts = np.array([[11.0, 0.5], [10.0, 3.0], [15.0, 5.0]])
+    assert box_distance(pts, (10.0, 0.0), (2.0, 1.0)).tolist() == pytest.approx([0.0, 2.0, 5.0])
+    assert box_distance(np.array([[10.0, 3.0]]), (10.0, 0.0), (2.0, 1.0), 90.0)[0] == \
+        pytest.approx(1.0)
+
+
+def test_nearest() -> None:
+    pts = np.array([[0.0, 0.0], [3.0, 4.0], [1.0, 0.0], [1.0, 0.0]])
+    assert nearest(pts, (1.2, 0.0)) == 2                        # the first of equals
+    assert nearest(pts, (3.0, 3.0), within=0.5) == -1           # 1 mm away: too far
+    assert nearest(pts, (1.2, 0.0), mask=np.array([True, True, False, False])) == 0
+    assert nearest(np.zeros((0, 2)), (0.0, 0.0)) == -1
 
 
 @pytest.mark.parametrize("text, font, expected", [

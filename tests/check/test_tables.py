@@ -202,3 +202,35 @@ def test_csv_rows_that_cannot_be_read_are_reported(tmp_path: Path, four_bar) -> 
     assert "t.csv line 2" in " ".join(n.where for n in report.notes)
     assert "expected 'name, value'" in errors
     assert _verdicts(report) == {"pb": OK}
+
+
+def test_linkage_table_toml_forms(tmp_path: Path) -> None:
+    """The TOML forms of a table of lengths and values (docs/check.md) are read as entries with
+    their section; rows of an array name their segment; a value of no use is a note."""
+    from mechplan.check.submission import read_submission
+
+    path = tmp_path / "forms.toml"
+    path.write_text(""""φ" = 60
+[velocity]
+pb = 67.0
+ab = { mm = 31.5, mu = "0.01 m/s/mm" }
+
+[values]
+v_S2 = "2.95 m/s"
+bad = [1, 2]
+
+[[rows]]
+segment = "pc"
+name = "v_C"
+mm = 12
+value = 0.12
+unit = "m/s"
+""", encoding="utf-8")
+    sub = read_submission(path)
+    got = [(e.name, e.text, e.length, e.mu, e.quantity, e.value, e.section) for e in sub.entries]
+    assert got == [("φ", "60", None, None, None, None, None),
+                   ("pb", "67.0", None, None, None, None, "velocity"),
+                   ("ab", None, "31.5", "0.01 m/s/mm", None, None, "velocity"),
+                   ("v_S2", "2.95 m/s", None, None, None, None, "values"),
+                   ("pc", None, "12", None, "v_C", "0.12 m/s", None)]
+    assert [n.level for n in sub.notes] == ["error"] and "[1, 2]" in sub.notes[0].message

@@ -10,7 +10,7 @@ u by Willis from their own tooth numbers …), with the formula and the names it
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -30,6 +30,7 @@ class Keys:
     any_angle: Any = None                           # cam: φ (deg) → {name: value}
     dimensions: dict[str, str] = field(default_factory=dict)   # where the catalogue's differs
     study: Any = None
+    geometry: Any = None                            # cam: the synthesised geometry
 
     def exact(self, name: str, phi: float | None) -> float | None:
         """The exact value of ``name`` (at ``phi`` degrees for a per-angle quantity)."""
@@ -168,29 +169,24 @@ def _own_engine(k: Keys, name: str, phi: float | None, w: Written) -> Own | None
 
 # -- cam ----------------------------------------------------------------------------------------
 def _cam(study: Any) -> Keys:
-    from ..synthesis.cam.motion import motion
+    from ..synthesis.cam.profile import sample
 
-    des = study.design
+    g = study.design.geometry
     doc = study.to_json()
-    k = Keys("cam", study=doc)
+    k = Keys("cam", study=doc, geometry=g)
     base, pa, rho = doc["base_radius"], doc["pressure_angle_max"], doc["radius_of_curvature_min"]
     k.scalars = {"r0": base["used"], "e": base["offset"], "r_profile": base["working_profile"],
                  "alpha_max_rise": pa["rise"][0], "alpha_max_return": pa["return"][0],
                  "alpha_max": max(pa["rise"][0], pa["return"][0]),
                  "rho_min": abs(rho["profile"][0]), "rho_min_pitch": abs(rho["pitch"][0])}
-    table = doc["table"]
-    for name in ("s", "s1", "s2", "alpha"):
-        k.spans[name] = max(abs(r[name]) for r in table)
-    k.spans["s"] = des.spec.stroke
-    k.spans["alpha"] = math.radians(50.0)
-    sign = _alpha_sign(doc)
+    for name in ("s1", "s2"):
+        k.spans[name] = max(abs(r[name]) for r in doc["table"])
+    k.spans["s"], k.spans["alpha"] = g.stroke, math.radians(50.0)
 
     def at(phi_deg: float) -> dict[str, float]:
-        m = motion(des.spec.phases, des.spec.stroke, math.radians(phi_deg))
+        m = sample(g, math.radians(phi_deg))
         out = {"s": float(m.s[0]), "s1": float(m.s1[0]), "s2": float(m.s2[0])}
-        if sign is not None:
-            out["alpha"] = _alpha(doc, out["s"], out["s1"], base["used"], base["offset"], sign)
-        return out
+        return out | ({"alpha": abs(float(m.alpha[0]))} if _has_alpha(doc) else {})
 
     k.any_angle = at
     if doc["follower"]["motion"] != "translating":       # the follower's s is an angle ψ
@@ -198,37 +194,24 @@ def _cam(study: Any) -> Keys:
     return k
 
 
-def _alpha(doc: dict[str, Any], s: float, s1: float, r0: float, e: float, sign: float) -> float:
-    """Pressure angle of a translating follower: tan α = (s′ − sign·e)/(√(r₀² − e²) + s)."""
-    s0 = math.sqrt(max(r0 * r0 - e * e, 0.0))
-    return math.atan2(abs(s1 - sign * e), s0 + s)
-
-
-def _alpha_sign(doc: dict[str, Any]) -> float | None:
-    """The sign of the offset term that reproduces the study's own pressure angles (None for a
-    follower this formula does not describe)."""
-    f = doc["follower"]
-    if f["motion"] != "translating" or f["contact"] == "flat":
-        return None
-    base = doc["base_radius"]
-    for sign in (1.0, -1.0):
-        if all(abs(_alpha(doc, r["s"], r["s1"], base["used"], base["offset"], sign)
-                   - abs(r["alpha"])) < 1e-6 for r in doc["table"]):
-            return sign
-    return None
+def _has_alpha(doc: dict[str, Any]) -> bool:
+    """Pressure angles per angle are graded for a translating knife or roller follower."""
+    return doc["follower"]["motion"] == "translating" and doc["follower"]["contact"] != "flat"
 
 
 def _own_cam(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
+    from ..synthesis.cam.profile import pressure_angle
+
     doc = k.study
     r0 = w.get(("r0", None)) or doc["base_radius"]["used"]
     if name == "r_profile" and ("r0", None) in w and doc["follower"]["contact"] == "roller":
         return w[("r0", None)] - doc["follower"]["roller_radius"], "r = r₀ − r_р", ("r0",)
-    if name == "alpha" and phi is not None and (sign := _alpha_sign(doc)) is not None:
-        s, s1 = w.get(("s", phi)), w.get(("s1", phi))
-        if s is not None and s1 is not None:
-            e = w.get(("e", None), doc["base_radius"]["offset"])
-            return (_alpha(doc, s, s1, r0, e, sign), "tg α = (s′ ∓ e)/(√(r₀² − e²) + s)",
-                    ("s", "s1"))
+    s, s1 = w.get(("s", phi)), w.get(("s1", phi))
+    if name == "alpha" and phi is not None and _has_alpha(doc) and s is not None and \
+            s1 is not None:       # the engine's pressure angle at the student's own r₀, e, s, s′
+        g = replace(k.geometry, r0=r0, e=w.get(("e", None), doc["base_radius"]["offset"]))
+        alpha = pressure_angle(g, np.array([s]), np.array([s1]), np.zeros(1))
+        return abs(float(alpha[0])), "tg α = (s′ ∓ e)/(√(r₀² − e²) + s)", ("s", "s1")
     return None
 
 

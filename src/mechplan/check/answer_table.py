@@ -15,41 +15,17 @@ Nothing here knows the study: the reader returns ``name = text`` items with the 
 from __future__ import annotations
 
 import csv
-import io
 import re
-import tomllib
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
-from .submission import Note, _read_text, submitted_file
+from .submission import Entry, Note, Submission, csv_rows, load_toml, submitted_file
 from .texts import T
 
 _ANGLE_TEXT = re.compile(r"^\s*(?:([^\d\s=:+−-][^=:]*?)\s*[=:]\s*)?([-+−]?\d+(?:[.,]\d+)?)\s*"
                          r"(?:°|deg|град|độ|度)?\s*$")
 _UNIT_IN_NAME = re.compile(r"^(.*?)\s*[\[(]\s*([^\])]+?)\s*[\])]\s*$")
-
-
-@dataclass(frozen=True, slots=True)
-class AnswerItem:
-    """One written answer: its name, its text ("92,3 kg*m^2"), the angle of its row (degrees)
-    and the section it stands in."""
-
-    name: str
-    text: str
-    where: str
-    phi_deg: float | None = None
-    section: str | None = None
-
-
-@dataclass
-class AnswerTable:
-    """What an answer table holds."""
-
-    path: str
-    items: list[AnswerItem]
-    notes: list[Note]
 
 
 def angle_of(text: str, is_angle_name: Any) -> float | None:
@@ -62,7 +38,7 @@ def angle_of(text: str, is_angle_name: Any) -> float | None:
     return float(m.group(2).replace(",", ".").replace("−", "-"))
 
 
-def read_answers(path: str | Path, is_angle_name: Any) -> AnswerTable:
+def read_answers(path: str | Path, is_angle_name: Any) -> Submission:
     """Read a TOML or CSV answer table; ``is_angle_name(name)`` tells an angle column or key."""
     p = submitted_file(path)
     suffix = p.suffix.lower()
@@ -72,7 +48,7 @@ def read_answers(path: str | Path, is_angle_name: Any) -> AnswerTable:
         table = _read_csv(p, is_angle_name)
     else:
         raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))
-    if not table.items:
+    if not table.entries:
         raise CheckError(T("answers.empty"), file=str(p))
     return table
 
@@ -88,28 +64,16 @@ def _value_text(value: Any) -> str | None:
     return None
 
 
-def _read_toml(path: Path, is_angle_name: Any) -> AnswerTable:
-    text = _read_text(path)
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
-    lines = text.splitlines()
-    out = AnswerTable(str(path), [], [])
-
-    def where(key: str) -> str:
-        pat = re.compile(r"^\s*[\"']?" + re.escape(key) + r"[\"']?\s*=")
-        for i, ln in enumerate(lines, start=1):
-            if pat.match(ln):
-                return T("where.line", file=path.name, n=i)
-        return T("where.key", file=path.name, key=key)
+def _read_toml(path: Path, is_angle_name: Any) -> Submission:
+    data, where = load_toml(path)
+    out = Submission(str(path), "table")
 
     def put(key: str, value: Any, phi: float | None, section: str | None, at: str) -> None:
         text_ = _value_text(value)
         if text_ is None:
             out.notes.append(Note("error", T("note.cannot_use", value=repr(value)), at))
         else:
-            out.items.append(AnswerItem(key, text_, at, phi, section))
+            out.entries.append(Entry(key, at, text=text_, phi_deg=phi, section=section))
 
     def rows(key: str, table: list[dict[str, Any]], section: str | None) -> None:
         for i, row in enumerate(table, start=1):
@@ -139,18 +103,16 @@ def _read_toml(path: Path, is_angle_name: Any) -> AnswerTable:
     return out
 
 
-def _read_csv(path: Path, is_angle_name: Any) -> AnswerTable:
-    text = _read_text(path)
-    if "\x00" in text:
-        raise CheckError(T("error.binary"), file=str(path))
-    sample = "\n".join(text.splitlines()[:20])
+def _dialect(sample: str) -> type[csv.Dialect]:
+    """";" when the sample has about as many as ",", else a tab or ","."""
     delimiter = ";" if sample.count(";") >= max(1, sample.count(",") // 2) else (
         "\t" if "\t" in sample else ",")
-    try:
-        rows = list(csv.reader(io.StringIO(text), delimiter=delimiter))
-    except csv.Error as exc:
-        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
-    out = AnswerTable(str(path), [], [])
+    return type("Dialect", (csv.excel,), {"delimiter": delimiter})
+
+
+def _read_csv(path: Path, is_angle_name: Any) -> Submission:
+    rows = csv_rows(path, _dialect)
+    out = Submission(str(path), "table")
     header: list[tuple[str, str]] | None = None
     for n, row in enumerate(rows, start=1):
         cells = [c.strip() for c in row]
@@ -170,7 +132,7 @@ def _read_csv(path: Path, is_angle_name: Any) -> AnswerTable:
                 continue
             for (name, unit), cell in zip(header[1:], cells[1:]):
                 if name and cell:
-                    out.items.append(AnswerItem(name, f"{cell} {unit}".strip(), at, phi))
+                    out.entries.append(Entry(name, at, text=f"{cell} {unit}".strip(), phi_deg=phi))
             continue
         cells = [c for c in cells if c]
         if len(cells) == 1 and "=" in cells[0]:
@@ -185,5 +147,5 @@ def _read_csv(path: Path, is_angle_name: Any) -> AnswerTable:
         value = cells[1] if len(cells) == 2 or re.search(r"\d", cells[2]) else (
             f"{cells[1]} {cells[2]}")
         phi = angle_of(cells[3], lambda _: True) if len(cells) > 3 else None
-        out.items.append(AnswerItem(cells[0], value, at, phi))
+        out.entries.append(Entry(cells[0], at, text=value, phi_deg=phi))
     return out

@@ -20,9 +20,10 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
+from ..units import si_unit
 from .answer_keys import Keys, keys_for, valid_sets
-from .answer_table import AnswerItem, read_answers
-from .context import Options
+from .answer_table import read_answers
+from .context import Options, swaps
 from .match import _number_and_half, parse_value
 from .notation import catalogue, compact
 from .report import (
@@ -37,14 +38,11 @@ from .report import (
     Finding,
     ValueRow,
 )
-from .submission import Note
+from .submission import Entry, Note
 from .texts import T, join
 
 _TABLES = {"dynamics": ("dynamics",), "engine": ("engine",), "cam": ("cam",),
            "gears": ("gears", "gears_pair")}
-_SI = {"inertia": "kg·m²", "angular_velocity": "rad/s", "moment": "N·m", "force": "N",
-       "pressure": "Pa", "length": "m", "angle": "°", "dimensionless": "", "count": ""}
-
 
 @dataclass(frozen=True, slots=True)
 class Spec:
@@ -160,8 +158,8 @@ def maybe_check_answers(scene: Any, submission: Any,
         return None
     keys = keys_for(solve_file(scene))
     read = sum(read_name(i.name, kind, i.section, i.phi_deg is not None, keys) is not None
-               for i in table.items)
-    if 2 * read < len(table.items):
+               for i in table.entries)
+    if 2 * read < len(table.entries):
         return None                     # mostly segments and linkage values (pb, v_B …)
     return check_answers(scene, table, keys, kind, options or Options())
 
@@ -169,7 +167,7 @@ def maybe_check_answers(scene: Any, submission: Any,
 # -- grading ------------------------------------------------------------------------------------
 @dataclass
 class _Row:
-    item: AnswerItem
+    item: Entry
     spec: Spec
     key: str
     value: float
@@ -179,8 +177,8 @@ class _Row:
     tol: float = 0.0
 
 
-def _parse(item: AnswerItem, spec: Spec, notes: list[Note]) -> tuple[float, float] | None:
-    text = item.text.strip()
+def _parse(item: Entry, spec: Spec, notes: list[Note]) -> tuple[float, float] | None:
+    text = (item.text or "").strip()
     dim = spec.dimension
     if dim == "count":
         dim = "dimensionless"
@@ -209,7 +207,7 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
                          T("answers.source", kind=T(f"answers.kind.{kind}")))
     user = options.tolerance.get(None)
     rows: list[_Row] = []
-    for item in table.items:
+    for item in table.entries:
         found = read_name(item.name, kind, item.section, item.phi_deg is not None, keys)
         if found is None:
             notes.append(Note("error", T("answers.not_understood", name=item.name,
@@ -225,7 +223,7 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
         if spec.magnitude:
             parsed = (abs(parsed[0]), parsed[1])
         name = item.name if item.phi_deg is None else f"{item.name} ({item.phi_deg:g}°)"
-        unit = _SI.get(spec.dimension, "")
+        unit = _unit(spec.dimension)
         rows.append(_Row(item, spec, key, parsed[0], parsed[1],
                          ValueRow(name, key, unit, None, None, where=item.where)))
     written = {(r.key, r.item.phi_deg): r.value for r in rows}
@@ -290,19 +288,16 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
     ex = {id(r): float(r.exact) for r in checked if r.exact is not None}
     off = {id(r) for r in checked if abs(r.value - ex[id(r)]) > r.tol}
     # swapped names: two values off by themselves that are right under each other's names
+    wrong = [r for r in checked if id(r) in off]
     swapped: set[int] = set()
-    for a in checked:
-        for b in checked:
-            if (id(a) < id(b) and id(a) in off and id(b) in off and id(a) not in swapped
-                    and id(b) not in swapped and a.item.phi_deg == b.item.phi_deg
-                    and a.spec.dimension == b.spec.dimension
-                    and abs(a.value - ex[id(b)]) <= b.tol and abs(b.value - ex[id(a)]) <= a.tol):
-                swapped |= {id(a), id(b)}
-                hint = T("answers.hint.swapped", a=a.row.name, b=b.row.name)
-                for r in (a, b):
-                    r.row.verdict, r.row.cause, r.row.hint = WRONG, SWAPPED, hint
-                report.findings.append(Finding("swapped labels", kind_text,
-                                               f"{a.row.name} ↔ {b.row.name}", hint))
+    for a, b in swaps(wrong, lambda a, b: a.item.phi_deg == b.item.phi_deg and
+                      a.spec.dimension == b.spec.dimension and abs(a.value - ex[id(b)]) <= b.tol):
+        swapped |= {id(a), id(b)}
+        hint = T("answers.hint.swapped", a=a.row.name, b=b.row.name)
+        for r in (a, b):
+            r.row.verdict, r.row.cause, r.row.hint = WRONG, SWAPPED, hint
+        report.findings.append(Finding("swapped labels", kind_text,
+                                       f"{a.row.name} ↔ {b.row.name}", hint))
     status: dict[tuple[str, float | None], str] = {}
     pending: list[tuple[_Row, Any]] = []
     for r in checked:
@@ -346,13 +341,17 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
         else:
             r.row.hint = T("answers.hint.wrong", exact=round(shown) if r.spec.integer
                            else _round(shown),
-                           unit=_SI.get(r.spec.dimension, ""),
+                           unit=_unit(r.spec.dimension),
                            pct=100 * (r.value - exact) / exact if abs(exact) > r.tol
                            else math.nan)
         report.findings.append(Finding("wrong value", kind_text, r.row.name, r.row.hint))
     for r in rows:
         if r.exact is None:
             r.row.verdict = UNCHECKED
+
+
+def _unit(dimension: str) -> str:
+    return "°" if dimension == "angle" else si_unit(dimension)   # answers' angles are in degrees
 
 
 def _round(x: float) -> float:

@@ -73,7 +73,7 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
                 raise CheckError(T("error.tolerance_plan", spec=spec, plan=m.group(1)))
             plan, body = PLAN_NAMES[name], m.group(2)
         base = out.get(plan) or out.get(None) or Tolerance()
-        mm, pct, deg = base.mm, base.pct, base.deg
+        given: dict[str, Any] = {"mm": base.mm, "%": base.pct, "deg": base.deg}
         parts = [x for x in re.split(r"[,\s;]+", body.strip()) if x]
         if not parts:
             raise CheckError(T("error.tolerance_empty", spec=spec))
@@ -81,23 +81,14 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
             pm = re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(mm|%|deg|°)", part.lower())
             if not pm:
                 raise CheckError(T("error.tolerance_part", spec=spec, part=part))
-            value = float(pm.group(1).replace(",", "."))
-            unit = pm.group(2)
-            if unit == "mm":
-                mm = value
-            elif unit == "%":
-                pct = value
-            else:
-                deg = value
-        out[plan] = Tolerance(mm, pct, deg)
+            given[pm.group(2).replace("°", "deg")] = float(pm.group(1).replace(",", "."))
+        out[plan] = Tolerance(given["mm"], given["%"], given["deg"])
     return out
 
 
 def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
     """Scale factors given on the command line."""
-    from ..units import parse_quantity
-    from .labels import MU_DIMENSION
-    from .notation import units_ascii
+    from .labels import parse_mu
 
     out: dict[Plan, float] = {}
     for key, plan in (("l", Plan.POSITION), ("v", Plan.VELOCITY), ("a", Plan.ACCELERATION),
@@ -106,7 +97,7 @@ def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
         if text is None:
             continue
         try:
-            value = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
+            value = parse_mu(text, plan)
         except SceneError as exc:
             option = f"--mu-{key.upper() if key == 'f' else key}"
             raise CheckError(T("error.mu_option", option=option,

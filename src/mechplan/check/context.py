@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -12,7 +13,7 @@ from ..construct.segments import Segment
 from ..construct.step import Plan
 from ..scene.spec import Scene
 from .labels import LabelBook, PlanKey, plan_key
-from .match import Interpretation, QuantityIndex
+from .match import Interpretation
 from .points import DrawnPlan, DrawnSheet
 from .report import (
     NEW,
@@ -22,11 +23,6 @@ from .report import (
 )
 from .submission import Submission
 from .texts import T, join
-
-SI_UNIT = {"velocity": "m/s", "acceleration": "m/s²", "angular_velocity": "rad/s",
-           "angular_acceleration": "rad/s²", "force": "N", "moment": "N·m", "inertia": "kg·m²",
-           "length": "m", "angle": "rad", "mass": "kg", "dimensionless": ""}
-PLAN_UNIT = {Plan.POSITION: "m", Plan.VELOCITY: "m/s", Plan.ACCELERATION: "m/s²", Plan.FORCE: "N"}
 
 
 @dataclass
@@ -78,7 +74,6 @@ class Ctx:
     c: Construction
     ev: Evaluation
     book: LabelBook
-    qi: QuantityIndex
     sheet: DrawnSheet | None
     interp: Interpretation
     options: Options
@@ -100,6 +95,19 @@ class Drawn:
     swapped: dict[str, str] = field(default_factory=dict)
 
 
+def swaps(items: list[Any], fits: Callable[[Any, Any], bool]) -> list[tuple[Any, Any]]:
+    """Pairs of items, in order, each right under the other's name (``fits(a, b)``: a is right as
+    b); an item is in one pair at most."""
+    out: list[tuple[Any, Any]] = []
+    used: set[int] = set()
+    for i, a in enumerate(items):
+        for j in range(i + 1, len(items)):
+            if not {i, j} & used and fits(a, items[j]) and fits(items[j], a):
+                used |= {i, j}
+                out.append((a, items[j]))
+    return out
+
+
 def exact_at(ctx: Ctx, sid: str, k: int) -> np.ndarray:
     return np.asarray(ctx.ev[sid][k], dtype=float)
 
@@ -114,23 +122,22 @@ def segments_of(c: Construction, key: PlanKey) -> list[Segment]:
     return out
 
 
+def _off(x: float | None, tol: float | None) -> bool:
+    return x is not None and tol is not None and abs(x) > tol
+
+
 def row_error(r: SegmentRow) -> str:
-    kinds = []
-    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
-        kinds.append("length")
-    if r.direction_deg is not None and r.tolerance_deg is not None and \
-            abs(r.direction_deg) > r.tolerance_deg:
-        kinds.append("direction")
-    return " and ".join(kinds)
+    """"length", "direction" or "length and direction": what is off in a segment row."""
+    return " and ".join(kind for kind, off in (("length", _off(r.error_mm, r.tolerance_mm)), (
+        "direction", _off(r.direction_deg, r.tolerance_deg))) if off)
 
 
 def row_brief(r: SegmentRow) -> str:
     parts = []
-    if r.error_mm is not None and r.tolerance_mm is not None and abs(r.error_mm) > r.tolerance_mm:
-        parts.append(T("brief.long" if r.error_mm > 0 else "brief.short", name=r.name,
-                       err=abs(r.error_mm)))
-    if r.direction_deg is not None and r.tolerance_deg is not None and \
-            abs(r.direction_deg) > r.tolerance_deg:
+    if _off(r.error_mm, r.tolerance_mm):
+        e = float(r.error_mm or 0.0)
+        parts.append(T("brief.long" if e > 0 else "brief.short", name=r.name, err=abs(e)))
+    if _off(r.direction_deg, r.tolerance_deg):
         parts.append(T("brief.turned", name=r.name, dir=r.direction_deg))
     return join(parts) if parts else T("brief.off", name=r.name)
 
@@ -144,11 +151,7 @@ def roots_of(ctx: Ctx, status: dict[str, str], sid: str) -> list[str]:
 
 
 def labels_fn(ctx: Ctx) -> Any:
-    def label(sid: str) -> str:
-        return ctx.c[sid].label
-    return label
-
-
+    return lambda sid: ctx.c[sid].label
 
 
 def seg_exact(ctx: Ctx, seg: Segment, k: int) -> float:

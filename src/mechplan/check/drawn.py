@@ -9,14 +9,17 @@ import numpy as np
 
 from ..construct.ops import Op
 from ..construct.step import Plan
+from ..geom.vec import rotate
+from ..units import si_unit
 from .context import (
-    PLAN_UNIT,
     Ctx,
     Drawn,
     Rederive,
     exact_at,
     segments_of,
+    swaps,
 )
+from .labels import MU_DIMENSION
 from .points import DrawnPlan
 from .report import (
     CARRIED,
@@ -68,12 +71,11 @@ def _turned(ctx: Ctx, dp: DrawnPlan, k: int, anchor: str | None) -> float:
 def _turn_back(dp: DrawnPlan, anchor: str, turn: float) -> DrawnPlan:
     from dataclasses import replace
 
-    a = math.radians(-turn)
-    ox, oy = dp.points[anchor].at
+    o = np.asarray(dp.points[anchor].at)
 
     def q(p: tuple[float, float]) -> tuple[float, float]:
-        x, y = p[0] - ox, p[1] - oy
-        return (ox + x * math.cos(a) - y * math.sin(a), oy + x * math.sin(a) + y * math.cos(a))
+        x, y = o + rotate(np.asarray(p) - o, np.radians(-turn))
+        return (float(x), float(y))
 
     out = DrawnPlan(dp.key, {s: replace(p, at=q(p.at)) for s, p in dp.points.items()},
                     [replace(ln, start=q(ln.start), end=q(ln.end)) for ln in dp.lines],
@@ -103,7 +105,8 @@ def prepare(ctx: Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> Drawn:
             if drawn > 1e-9 and exact > 0:
                 mu = exact / drawn
                 source = T("mu.inferred_drawn", ref=reference.name, q=reference.quantity,
-                           drawn=drawn, exact=exact, unit=PLAN_UNIT[plan],
+                           drawn=drawn, exact=exact,
+                           unit=si_unit(MU_DIMENSION[plan]).removesuffix("/mm"),
                            plan=plan_title(plan.value, case="gen"))
         if mu is None:
             notes.append(Note("error", T("note.no_mu", plan=with_case(dp.name, "gen"),
@@ -145,14 +148,10 @@ def find_swaps(ctx: Ctx, d: Drawn, k: int) -> None:
         d.errors[sid] = float(np.hypot(*(v - exact_at(ctx, sid, k)))) / d.mu
         if d.errors[sid] > d.tol[sid]:
             wrong.append(sid)
-    for i, a in enumerate(wrong):
-        for b in wrong[i + 1:]:
-            if a in d.swapped or b in d.swapped:
-                continue
-            ab = float(np.hypot(*(d.si[a] - exact_at(ctx, b, k)))) / d.mu
-            ba = float(np.hypot(*(d.si[b] - exact_at(ctx, a, k)))) / d.mu
-            if ab <= d.tol[b] and ba <= d.tol[a]:
-                d.swapped[a], d.swapped[b] = b, a
+    mu = d.mu
+    for a, b in swaps(wrong, lambda a, b: float(np.hypot(*(d.si[a] - exact_at(ctx, b, k)))) / mu
+                      <= d.tol[b]):
+        d.swapped[a], d.swapped[b] = b, a
 
 
 def classify_points(ctx: Ctx, d: Drawn, red: Rederive) -> None:

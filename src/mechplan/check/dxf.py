@@ -14,17 +14,16 @@ from pathlib import Path
 from typing import Any
 
 from ezdxf import DXFError
+from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 
+from ..drafting.fonts import text_width_mm
 from ..errors import CheckError
-from ..sheet.fonts import text_width_mm
 from .labels import clean_text
 from .notation import decode_legacy
 from .submission import DrawnLine, Note, Point, SheetText, Submission, parse_assignments
 from .texts import T, has
 
 INSUNITS_MM = {0: 1.0, 1: 25.4, 2: 304.8, 4: 1.0, 5: 10.0, 6: 1000.0, 14: 100.0}
-INSUNITS_NAME = {0: "unitless", 1: "inches", 2: "feet", 4: "millimetres", 5: "centimetres",
-                 6: "metres", 14: "decimetres"}
 
 
 # -- DXF ---------------------------------------------------------------------------------------
@@ -261,46 +260,39 @@ def _add_polyline(sub: Submission, pts: list[Point], closed: bool, scale: float,
         sub.notes.append(Note("info", T("note.arc_chords"), where))
 
 
-_H_FRAC = {"LEFT": 0.0, "CENTER": -0.5, "RIGHT": -1.0, "MIDDLE": -0.5}
-_V_FRAC = {"BASELINE": 0.0, "BOTTOM": 0.0, "MIDDLE": -0.5, "TOP": -1.0}
-
-
 Box = tuple[str, Point, float, Point, tuple[float, float], float]
+#: a TEXT's horizontal alignment flag → where its anchor is along the text (× width from the left)
+_H_FRAC = (0.0, -0.5, -1.0, 0.0, -0.5, 0.0)    # LEFT CENTER RIGHT ALIGNED MIDDLE FIT
+_V_FRAC = (0.0, 0.0, -0.5, -1.0)               # BASELINE BOTTOM MIDDLE TOP
+
+
+def _box(plain: str, anchor: Any, w: float, h: float, total: float, hx: float, vy: float,
+         rot: float, scale: float) -> Box:
+    """The box of a text ``w`` × ``total`` whose anchor is at (hx, vy) of its size from the
+    centre's (−½, −½), turned by ``rot`` (radians)."""
+    lx, ly = (hx + 0.5) * w, (vy + 0.5) * total
+    cx = anchor.x + lx * math.cos(rot) - ly * math.sin(rot)
+    cy = anchor.y + lx * math.sin(rot) + ly * math.cos(rot)
+    return (plain, (cx * scale, cy * scale), h * scale, (anchor.x * scale, anchor.y * scale),
+            (w / 2 * scale, total / 2 * scale), math.degrees(rot))
 
 
 def _text_box(e: Any, scale: float) -> Box:
     plain = clean_text(e.dxf.text, mtext=False)
     h = float(e.dxf.get("height", 2.5)) or 2.5
-    wf = float(e.dxf.get("width", 1.0)) or 1.0
-    rot = math.radians(float(e.dxf.get("rotation", 0.0)))
-    w = text_width_mm(plain or " ", h) * wf
-    align = e.get_align_enum()
-    name = align.name
+    w = text_width_mm(plain or " ", h) * (float(e.dxf.get("width", 1.0)) or 1.0)
+    halign, valign = MAP_TEXT_ENUM_TO_ALIGN_FLAGS[e.get_align_enum()]
     ocs = e.ocs()
     insert = ocs.to_wcs(e.dxf.insert)
-    if name in ("ALIGNED", "FIT") and e.dxf.hasattr("align_point"):
-        end = ocs.to_wcs(e.dxf.align_point)
-        ux, uy = end.x - insert.x, end.y - insert.y
-        n = math.hypot(ux, uy) or 1.0
-        cx = (insert.x + end.x) / 2 - uy / n * h / 2
-        cy = (insert.y + end.y) / 2 + ux / n * h / 2
-        return (plain, (cx * scale, cy * scale), h * scale, (insert.x * scale, insert.y * scale),
-                (n / 2 * scale, h / 2 * scale), math.degrees(math.atan2(uy, ux)))
-    anchor = insert
-    if name != "LEFT" and e.dxf.hasattr("align_point"):
-        anchor = ocs.to_wcs(e.dxf.align_point)
-    if name in ("LEFT", "CENTER", "RIGHT", "ALIGNED", "FIT"):
-        hx, vy = _H_FRAC.get(name, 0.0), 0.0
-    elif name == "MIDDLE":
-        hx, vy = -0.5, -0.5
-    else:
-        v, hname = name.split("_", 1)
-        hx, vy = _H_FRAC[hname], _V_FRAC[v]
-    lx, ly = (hx + 0.5) * w, (vy + 0.5) * h
-    cx = anchor.x + lx * math.cos(rot) - ly * math.sin(rot)
-    cy = anchor.y + lx * math.sin(rot) + ly * math.cos(rot)
-    return (plain, (cx * scale, cy * scale), h * scale, (anchor.x * scale, anchor.y * scale),
-            (w / 2 * scale, h / 2 * scale), math.degrees(rot))
+    if halign in (TextHAlign.ALIGNED, TextHAlign.FIT) and e.dxf.hasattr("align_point"):
+        end = ocs.to_wcs(e.dxf.align_point)      # the text fills insert → align point
+        return _box(plain, insert, (end - insert).magnitude, h, h, 0.0, 0.0,
+                    math.atan2(end.y - insert.y, end.x - insert.x), scale)
+    aligned = (halign, valign) != (TextHAlign.LEFT, 0) and e.dxf.hasattr("align_point")
+    anchor = ocs.to_wcs(e.dxf.align_point) if aligned else insert
+    vy = -0.5 if halign == TextHAlign.MIDDLE else _V_FRAC[valign]
+    return _box(plain, anchor, w, h, h, _H_FRAC[halign], vy,
+                math.radians(float(e.dxf.get("rotation", 0.0))), scale)
 
 
 def _mtext_box(e: Any, scale: float) -> Box:
@@ -308,17 +300,9 @@ def _mtext_box(e: Any, scale: float) -> Box:
     h = float(e.dxf.get("char_height", 2.5)) or 2.5
     lines = plain.splitlines() or [""]
     w = max(text_width_mm(s or " ", h) for s in lines)
-    total = h * (1 + 1.67 * (len(lines) - 1))
-    att = int(e.dxf.get("attachment_point", 1))
-    hx = {0: 0.5, 1: 0.0, 2: -0.5}[(att - 1) % 3]
-    vy = {0: -0.5, 1: 0.0, 2: 0.5}[(att - 1) // 3]
-    rot = math.radians(e.get_rotation())
-    lx, ly = hx * w, vy * total
-    ins = e.dxf.insert
-    cx = ins.x + lx * math.cos(rot) - ly * math.sin(rot)
-    cy = ins.y + lx * math.sin(rot) + ly * math.cos(rot)
-    return (plain, (cx * scale, cy * scale), h * scale, (ins.x * scale, ins.y * scale),
-            (w / 2 * scale, total / 2 * scale), math.degrees(rot))
+    row, col = divmod(int(e.dxf.get("attachment_point", 1)) - 1, 3)     # 1 top left … 9
+    return _box(plain, e.dxf.insert, w, h, h * (1 + 1.67 * (len(lines) - 1)), -col / 2,
+                row / 2 - 1, math.radians(e.get_rotation()), scale)
 
 
 def _add_text(sub: Submission, box: Box, e: Any, via: str) -> None:

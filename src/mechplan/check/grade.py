@@ -19,6 +19,7 @@ import numpy as np
 from ..construct.ops import Op
 from ..construct.step import Plan
 from ..errors import CheckError, MechplanError
+from ..geom.sketch import nearest
 from ..scene.spec import Scene
 from .context import (
     Ctx,
@@ -34,7 +35,7 @@ from .context import (
 )
 from .drawn import classify_points, find_swaps, overrides_of, prepare
 from .hints import HintContext, depends_on, rule
-from .labels import LabelBook, PlanKey, is_angle_name
+from .labels import LabelBook, PlanKey, is_angle_name, parse_angle
 from .match import QuantityIndex, SegmentIndex, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
 from .report import (
@@ -97,7 +98,7 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
         raise CheckError(T("error.nothing_to_check", problems=f": {problems}" if problems else ""),
                          file=sub.path)
-    ctx = Ctx(scene, sub, sol.construction, ev, book, qi, sheet, interp, options, sol.scales)
+    ctx = Ctx(scene, sub, sol.construction, ev, book, sheet, interp, options, sol.scales)
     reports = [_grade(ctx, k) for k in range(len(candidates))]
     if len(reports) == 1:
         best = 0
@@ -106,21 +107,11 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         phi_source = T("phi.best_of", n=len(candidates))
     report = reports[best]
     report.phi_source = phi_source
-    report.notes = _dedupe(notes + report.notes)
+    report.notes = list(dict.fromkeys(notes + report.notes))   # each note once
     if sheet is not None:
         report.label_distance_mm = sheet.label_distance
     report.units = sub.units
     return report
-
-
-def _dedupe(notes: list[Note]) -> list[Note]:
-    seen, out = set(), []
-    for n in notes:
-        key = (n.level, n.message, n.where)
-        if key not in seen:
-            seen.add(key)
-            out.append(n)
-    return out
 
 
 def _score(r: CheckReport) -> tuple[float, float]:
@@ -132,23 +123,18 @@ def _score(r: CheckReport) -> tuple[float, float]:
 
 def _angles(scene: Scene, sub: Submission, options: Options,
             notes: list[Note]) -> tuple[list[float], str]:
-    from ..units import parse_quantity
-    from .notation import units_ascii
-
     if options.at_deg is not None:
         return [float(options.at_deg)], T("phi.at")
     for e in sub.entries:
         if is_angle_name(e.name):
             text = e.text or e.value or e.length or ""
             try:
-                value = parse_quantity(units_ascii(text) if any(ch.isalpha() or ch == "°"
-                                                                for ch in text)
-                                       else f"{text} deg", "angle")
+                value = parse_angle(text)
             except MechplanError as exc:
                 notes.append(Note("warning", T("note.crank_angle", name=e.name, text=text,
                                                 detail=exc.detail), e.where))
                 continue
-            return [math.degrees(value)], T("read_from", name=e.name, text=text, where=e.where)
+            return [value], T("read_from", name=e.name, text=text, where=e.where)
     if len(scene.positions.angles) == 1:
         return [math.degrees(scene.positions.angles[0])], T("phi.only")
     from ..solve import build, crank_positions
@@ -295,15 +281,7 @@ def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, f
             mine = [r for r in rows if r.verdict == WRONG and r.step == sid and r.cause == NEW]
             primary = [r for r in mine if r.end == sid and ctx.c[r.start].op is Op.POLE] or [
                 r for r in mine if r.end == sid] or mine
-            kinds = set()
-            for r in primary[:1]:
-                if r.error_mm is not None and r.tolerance_mm is not None and \
-                        abs(r.error_mm) > r.tolerance_mm:
-                    kinds.add("length")
-                if r.direction_deg is not None and r.tolerance_deg is not None and \
-                        abs(r.direction_deg) > r.tolerance_deg:
-                    kinds.add("direction")
-            error = " and ".join(x for x in ("length", "direction") if x in kinds)
+            error = row_error(primary[0]) if primary else ""
             segtxt = join((row_brief(r) for r in mine), "; ")
             findings.append(Finding(
                 "wrong point", pr.name, labels(sid),
@@ -333,12 +311,9 @@ def _where_label(ctx: Ctx, sid: str, d: Drawn) -> str:
 
 
 def _point_at(dp: DrawnPlan, at: tuple[float, float], snap: float) -> str | None:
-    best, dist = None, snap + 1e-9
-    for sid, p in dp.points.items():
-        dd = math.dist(p.at, at)
-        if dd <= dist:
-            best, dist = sid, dd
-    return best
+    sids = list(dp.points)[::-1]           # the last of equally near points, as they were read
+    i = nearest(np.array([dp.points[s].at for s in sids]), at, snap + 1e-9)
+    return sids[i] if i >= 0 else None
 
 
 def _is_drawn(dp: DrawnPlan, row: SegmentRow, snap: float) -> bool:

@@ -10,6 +10,7 @@ reading is; clusters of labels on a sheet then vote for their plan.
 
 from __future__ import annotations
 
+import math
 import re
 import unicodedata
 from dataclasses import dataclass, field
@@ -18,6 +19,7 @@ from ..construct.graph import Construction
 from ..construct.ops import Op
 from ..construct.step import Kind, Plan
 from ..model.mechanism import GROUND, Mechanism
+from ..units import parse_quantity
 from . import notation
 
 #: a plan drawn on its own: force polygons are one per group, the other plans one each
@@ -159,11 +161,9 @@ class LabelBook:
                     own = label_key(point) + prime
                     if own not in by_label:
                         continue
-                    for alias in (label_key(point) + link_id + prime,
-                                  label_key(point) + "_" + link_id + prime):
-                        alias = label_key(alias)
-                        if alias not in by_label:
-                            self._add(key, alias, by_label[own], steps[by_label[own]], 2)
+                    alias = label_key(point + link_id) + prime      # "c2", "c_2", "C2'"
+                    if alias not in by_label:
+                        self._add(key, alias, by_label[own], steps[by_label[own]], 2)
         # normals n_XY and Coriolis points k_XY: reversed names, link numbers, ordinals, bare
         for op, letter in ((Op.NORMAL, "n"), (Op.CORIOLIS, "k")):
             found = [(sid, c[sid]) for sid in steps if c[sid].op is op]
@@ -180,7 +180,7 @@ class LabelBook:
                 if len(found) == 1:
                     self._add(key, letter, sid, label, 2)
 
-    def candidates(self, text: str, group_hint: str | None = None) -> list[Candidate]:
+    def candidates(self, text: str) -> list[Candidate]:
         """All readings of a written label, best first (exact label, usual alias, weak alias)."""
         raw = text.strip()
         alias = label_key(raw)
@@ -234,6 +234,20 @@ MU_NAMES: dict[str, Plan] = {
 MU_DIMENSION = {Plan.POSITION: "mu_length", Plan.VELOCITY: "mu_velocity",
                 Plan.ACCELERATION: "mu_acceleration", Plan.FORCE: "mu_force"}
 _MU_NAME = re.compile(r"^(?:μ|µ|mu|u|k)[_\s{]*([lsvafprLSVAFPR])[}]?$", re.IGNORECASE)
+
+
+def parse_mu(text: str, plan: Plan) -> float:
+    """A written scale factor of a plan in SI ("0,1 м/с/мм"); a :class:`SceneError` if it is not
+    one."""
+    return parse_quantity(notation.units_ascii(text), MU_DIMENSION[plan])
+
+
+def parse_angle(text: str) -> float:
+    """A written crank angle in degrees ("60", "60°", "1,05 rad"); a :class:`SceneError` if it is
+    not one."""
+    written = notation.units_ascii(text) if any(ch.isalpha() or ch == "°" for ch in text) else (
+        f"{text} deg")
+    return math.degrees(parse_quantity(written, "angle"))
 
 
 def mu_plan(name: str) -> Plan | None:

@@ -12,22 +12,23 @@ from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
-from ..units import parse_quantity
+from ..units import parse_quantity, si_unit
 from . import notation
 from .labels import (
-    MU_DIMENSION,
     LabelBook,
     PlanKey,
     feature_votes,
     is_angle_name,
     label_key,
     mu_plan,
+    parse_angle,
+    parse_mu,
     plan_key,
 )
 from .notation import units_ascii
 from .points import LAYER_HINTS
 from .submission import Entry, Note
-from .texts import T, has, join, plan_title
+from .texts import T, join, plan_title
 
 _NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?")
 
@@ -62,9 +63,7 @@ class TableSegment:
     where: str
     length_mm: float
     length_half_unit: float          # half a unit of the last written digit (mm)
-    reversed: bool = False
     mu: float | None = None          # μ written on the same row
-    value: GivenValue | None = None  # the physical value written with it
 
 
 @dataclass
@@ -89,7 +88,6 @@ class Interpretation:
     segments: list[TableSegment] = field(default_factory=list)
     values: list[GivenValue] = field(default_factory=list)
     scales: dict[Plan, tuple[float, str]] = field(default_factory=dict)
-    at_deg: tuple[float, str] | None = None
     notes: list[Note] = field(default_factory=list)
 
 
@@ -169,7 +167,7 @@ class SegmentIndex:
     """Segments of a construction by the ways their names are written ("pb", "πb'", "b1n2")."""
 
     def __init__(self, c: Construction, book: LabelBook) -> None:
-        self.by_key: dict[str, list[tuple[Segment, PlanKey, bool, int]]] = {}
+        self.by_key: dict[str, list[tuple[Segment, PlanKey, int]]] = {}
         self.exact_case: dict[str, Segment] = {}
         for seg in c.segments:
             key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
@@ -180,24 +178,24 @@ class SegmentIndex:
                       if cand.step == seg.start]
             ends = [(a, cand.weight) for a, cs in table.items() for cand in cs
                     if cand.step == seg.end]
-            self._put(label_key(seg.name), seg, key, False, 4)
+            self._put(label_key(seg.name), seg, key, 4)
             self.exact_case.setdefault(case_key(seg.name), seg)
             for a, wa in starts:
                 for b, wb in ends:
-                    self._put(a + b, seg, key, False, min(wa, wb))
-                    self._put(b + a, seg, key, True, min(wa, wb) - 1)
+                    self._put(a + b, seg, key, min(wa, wb))
+                    self._put(b + a, seg, key, min(wa, wb) - 1)
 
     def names(self) -> list[str]:
         """The construction's segment names, for messages."""
         return sorted({seg.name for seg in self.exact_case.values()})
 
-    def _put(self, k: str, seg: Segment, key: PlanKey, rev: bool, weight: int) -> None:
+    def _put(self, k: str, seg: Segment, key: PlanKey, weight: int) -> None:
         entries = self.by_key.setdefault(k, [])
         if not any(e[0] is seg for e in entries):
-            entries.append((seg, key, rev, weight))
+            entries.append((seg, key, weight))
 
     def find(self, name: str, plan: Plan | None = None,
-             prefer: Plan | None = None) -> tuple[Segment, PlanKey, bool] | None:
+             prefer: Plan | None = None) -> tuple[Segment, PlanKey] | None:
         """The segment a written name stands for (best reading), or None.
 
         ``plan`` restricts the reading to one plan; ``prefer`` breaks ties (the plan of the
@@ -212,11 +210,11 @@ class SegmentIndex:
         exact = self.exact_case.get(case_key(name))
         votes = feature_votes(name.strip())
 
-        def rank(e: tuple[Segment, PlanKey, bool, int]) -> tuple[int, int, int, int]:
-            return (int(e[0] is exact), int(e[1][0] is prefer), e[3], votes.get(e[1][0], 0))
+        def rank(e: tuple[Segment, PlanKey, int]) -> tuple[int, int, int, int]:
+            return (int(e[0] is exact), int(e[1][0] is prefer), e[2], votes.get(e[1][0], 0))
 
         best = max(entries, key=rank)
-        return best[0], best[1], best[2]
+        return best[0], best[1]
 
 
 # -- entries -----------------------------------------------------------------------------------
@@ -265,9 +263,7 @@ def parse_value(text: str, dimension: str, where: str, notes: list[Note],
         notes.append(Note("error", T("note.not_finite", name=name, text=text), where))
         return None
     if bare and number is not None:
-        from ..units import DIMENSIONS
-
-        unit = DIMENSIONS[dimension][1].replace("**2", "²").replace("*", "·") or "1"
+        unit = si_unit(dimension) or "1"
         notes.append(Note("info", T("note.no_unit", name=name, text=text, unit=unit), where))
         return number, half
     try:
@@ -298,7 +294,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         if text is None:
             return
         try:
-            mu = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
+            mu = parse_mu(text, plan)
         except SceneError as exc:
             notes.append(Note("error", T("note.mu_error", name=e.name, text=text,
                                          detail=exc.detail), e.where))
@@ -317,16 +313,12 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
                 out.scales[plan] = (mu, T("read_from", name=e.name, text=text, where=e.where))
         return
     if is_angle_name(e.name):
-        if text is None:
-            return
-        try:
-            deg = math.degrees(parse_quantity(units_ascii(text) if re.search(r"[a-z°]", text)
-                                              else f"{text} deg", "angle"))
+        try:                    # the angle itself is read by grade._angles
+            if text is not None:
+                parse_angle(text)
         except SceneError as exc:
             notes.append(Note("error", T("note.crank_angle", name=e.name, text=text,
                                          detail=exc.detail), e.where))
-            return
-        out.at_deg = (deg, T("name_text_where", name=e.name, text=text, where=e.where))
         return
     sec = section_plan(e.section)
     length_text = e.length if e.length is not None else (
@@ -342,7 +334,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
     if length_text is not None and (notation.read(e.name, qi.mech) is None or _plain(e.name)):
         found = si.find(e.name, sec[0] if sec else None, prefer)
     if found is not None and length_text is not None:
-        seg, key, rev = found
+        seg, key = found
         number, half = _number_and_half(length_text)
         if number is None or not math.isfinite(number) or number < 0:
             notes.append(Note("error", T("note.length_expected", name=e.name, text=length_text),
@@ -351,20 +343,19 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         row_mu = None
         if e.mu:
             try:
-                row_mu = parse_quantity(units_ascii(e.mu), MU_DIMENSION[seg.plan])
+                row_mu = parse_mu(e.mu, seg.plan)
             except SceneError as exc:
                 notes.append(Note("error", T("note.row_mu_error", mu=e.mu, name=e.name,
                                              detail=exc.detail), e.where))
-        ts = TableSegment(seg, key, e.name, e.where, number, half, rev, row_mu)
+        ts = TableSegment(seg, key, e.name, e.where, number, half, row_mu)
         if e.value is not None:
             qname = e.quantity or seg.quantity
             q = qi.find(qname) or qi.find(seg.quantity)
             if q is not None:
                 parsed = parse_value(e.value, q.dimension, e.where, notes, qname)
                 if parsed is not None:
-                    ts.value = GivenValue(qname, q, parsed[0], e.value, e.where, parsed[1],
-                                          number, half, row_mu)
-                    out.values.append(ts.value)
+                    out.values.append(GivenValue(qname, q, parsed[0], e.value, e.where,
+                                                 parsed[1], number, half, row_mu))
             else:
                 notes.append(Note("warning", T("note.unknown_quantity", name=qname), e.where))
         out.segments.append(ts)
@@ -377,10 +368,9 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         if vtext is None:
             return
         if _is_length_text(vtext) and "mm" in vtext.lower() and q.dimension != "length":
-            noun = (T(f"dim.{q.dimension}") if has(f"dim.{q.dimension}") else
-                    f"{'an' if q.dimension[0] in 'aeiou' else 'a'} {q.dimension.replace('_', ' ')}")
             notes.append(Note("error", T("note.length_not_value", name=e.name, text=vtext,
-                                         display=q.display, dim=noun), e.where))
+                                         display=q.display, dim=T(f"dim.{q.dimension}")),
+                              e.where))
             return
         parsed = parse_value(vtext, q.dimension, e.where, notes, e.name)
         if parsed is None:

@@ -93,11 +93,7 @@ def read(name: str, mech: Mechanism | None) -> Reading | None:
     for text in (_DROP.sub("", raw).lower(), compact(name, homo)):
         if text in names:
             return Reading(names[text], dims[names[text]])
-    text, cased = compact(name, homo), compact(name, homo, True)
-    for sym in symbols:
-        if not (cased if sym.case else text).startswith(sym.spelling):
-            continue
-        sub = text[len(sym.spelling):]
+    for sym, sub in _symbols(name, homo, symbols):
         for kind in sym.subscripts:
             canonical = _subscript(sym.canonical, kind, sub, mech)
             if canonical is not None:
@@ -105,16 +101,21 @@ def read(name: str, mech: Mechanism | None) -> Reading | None:
     return None
 
 
+def _symbols(name: str, homo: dict[str, str],
+             symbols: tuple[_Symbol, ...]) -> Iterable[tuple[_Symbol, str]]:
+    """The symbols a name starts with (longest first) and the subscript after each."""
+    text, cased = compact(name, homo), compact(name, homo, True)
+    for sym in symbols:
+        if (cased if sym.case else text).startswith(sym.spelling):
+            yield sym, text[len(sym.spelling):]
+
+
 def dimension(name: str) -> str | None:
     """The dimension a name's symbol says, without a mechanism ("R12" → force), or None."""
     names, homo, symbols, dims = _tables()
-    text, cased = compact(name, homo), compact(name, homo, True)
-    if text in names:
+    if (text := compact(name, homo)) in names:
         return dims[names[text]]
-    for sym in symbols:
-        if not (cased if sym.case else text).startswith(sym.spelling):
-            continue
-        sub = text[len(sym.spelling):]
+    for sym, sub in _symbols(name, homo, symbols):
         kinds = {"numeric" if k in ("link", "links", "force") else "points"
                  for k in sym.subscripts}
         if sub and ("numeric" if sub.isdigit() else "points") in kinds:

@@ -4,13 +4,14 @@ green, each wrong segment marked in red with its error — a :class:`Sheet` writ
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..drafting.fonts import text_width_mm
+from ..drafting.primitives import Line, Primitive, Role, Sheet, Text
 from ..errors import CheckError, DrawingError
 from ..render import write, write_atomic
-from ..sheet.fonts import text_width_mm
-from ..sheet.primitives import Line, Primitive, Role, Sheet, Text
 from .report import SLIP, WRONG, CheckReport, SegmentRow
 from .texts import T, tr, word
 
@@ -56,18 +57,25 @@ def marks(report: CheckReport, lang: str = "en") -> list[Mark]:
             out.append(Mark("ERRORS", a, b))
             mid = ((a[0] + b[0]) / 2 + 1.0, (a[1] + b[1]) / 2 + 1.0)
             out.append(Mark("ERRORS", mid, None, _error_text(row, lang), 1.8))
-        xs = [p[0] for m in out[start:] for p in (m.start, m.end) if p is not None] or [0.0]
-        ys = [p[1] for m in out[start:] for p in (m.start, m.end) if p is not None] or [0.0]
         title = (T("overlay.title", plan=plan.name, mu=plan.mu, unit=plan.mu_unit).tr(lang)
                  if plan.mu else tr(plan.name, lang))
-        out.append(Mark("NOTES", (min(xs), max(ys) + 6.0), None, title, 3.5))
+        lo, hi = _extent(out[start:])
+        out.append(Mark("NOTES", (lo[0], hi[1] + 6.0), None, title, 3.5))
     if not out:
         raise CheckError(T("error.overlay_table"), file=report.submission)
-    xs = [p[0] for m in out for p in (m.start, m.end) if p is not None]
-    ys = [p[1] for m in out for p in (m.start, m.end) if p is not None]
-    legend = (min(xs), min(ys) - 8.0)
-    out.append(Mark("NOTES", legend, None, T("overlay.legend").tr(lang), 3.5))
+    lo, _ = _extent(out)
+    out.append(Mark("NOTES", (lo[0], lo[1] - 8.0), None, T("overlay.legend").tr(lang), 3.5))
     return out
+
+
+def _extent(ms: list[Mark], texts: bool = False) -> tuple[Point, Point]:
+    """The lowest and highest x and y the marks reach (with ``texts``: their texts' far corners
+    too)."""
+    pts = [p for m in ms for p in (m.start, m.end) if p is not None] + [
+        (m.start[0] + text_width_mm(m.text, m.height), m.start[1] + m.height)
+        for m in ms if texts and m.end is None]
+    xs, ys = zip(*pts)
+    return (min(xs), min(ys)), (max(xs), max(ys))
 
 
 def _error_text(row: SegmentRow, lang: str = "en") -> str:
@@ -89,14 +97,8 @@ def overlay_sheet(report: CheckReport, lang: str = "en", name: str = "overlay",
     """The overlay as a :class:`Sheet` (roles SUBMISSION, EXACT, ERRORS, TEXT), drawn by any
     ``render`` backend; its size is the drawing's extent plus a margin."""
     ms = marks(report, lang)
-    xs, ys = [], []
-    for m in ms:
-        ends = [m.start] if m.end is None else [m.start, m.end]
-        if m.end is None:
-            ends.append((m.start[0] + text_width_mm(m.text, m.height), m.start[1] + m.height))
-        xs += [p[0] for p in ends]
-        ys += [p[1] for p in ends]
-    x0, y0 = min(xs) - margin, min(ys) - margin
+    lo, hi = _extent(ms, texts=True)
+    x0, y0 = lo[0] - margin, lo[1] - margin
 
     def q(p: Point) -> Point:
         return (p[0] - x0, p[1] - y0)
@@ -108,7 +110,7 @@ def overlay_sheet(report: CheckReport, lang: str = "en", name: str = "overlay",
             prims.append(Line(q(m.start), q(m.end), role))
         else:
             prims.append(Text(q(m.start), m.text, m.height, role=role))
-    return Sheet(max(xs) - x0 + margin, max(ys) - y0 + margin, tuple(prims), language=lang,
+    return Sheet(hi[0] - x0 + margin, hi[1] - y0 + margin, tuple(prims), language=lang,
                  name=name)
 
 
@@ -119,18 +121,18 @@ def write_overlay(report: CheckReport, path: str | Path, lang: str = "en") -> Pa
     if suffix not in ("svg", "dxf", "pdf"):
         raise CheckError(T("error.overlay_kind", suffix=suffix or "—"), file=str(p))
     sheet = overlay_sheet(report, lang, p.stem or "overlay")
-    try:
-        return write(sheet, p, (suffix,))[0]
-    except DrawingError as exc:
-        raise CheckError(exc.detail, file=str(p)) from None
-    except OSError as exc:
-        raise CheckError(T("error.write", reason=exc.strerror or str(exc)), file=str(p)) from None
+    return _written(p, lambda: write(sheet, p, (suffix,))[0])
 
 
 def write_bytes(path: Path, data: bytes) -> Path:
     """Write a report file atomically (a failed write leaves the old file)."""
+    return _written(path, lambda: write_atomic(path, data))
+
+
+def _written(path: Path, write_it: Callable[[], Path]) -> Path:
+    """Write a file; a failure is a :class:`CheckError` naming it."""
     try:
-        return write_atomic(path, data)
+        return write_it()
     except DrawingError as exc:
         raise CheckError(exc.detail, file=str(path)) from None
     except OSError as exc:

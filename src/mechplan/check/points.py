@@ -13,13 +13,16 @@ from __future__ import annotations
 import math
 import re
 import statistics
+from collections import Counter
 from dataclasses import dataclass, field
 
 import numpy as np
+import shapely
 from scipy.optimize import linear_sum_assignment
+from shapely.geometry import MultiPoint
 
 from ..construct.step import Plan
-from ..geom.sketch import crossings
+from ..geom.sketch import crossings, nearest
 from .labels import (
     Candidate,
     LabelBook,
@@ -27,8 +30,8 @@ from .labels import (
     feature_votes,
     label_key,
     mu_plan,
+    parse_mu,
 )
-from .notation import units_ascii
 from .sketch import Graph, drawn_graph
 from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .texts import T, Text, join, plan_title, with_case
@@ -93,8 +96,6 @@ class DrawnSheet:
     plans: list[DrawnPlan]
     notes: list[Note]
     label_distance: float
-    snap: float
-    scale_entries: list[tuple[Plan, Entry]]
     other_entries: list[Entry]
 
 
@@ -130,14 +131,8 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     mu_given = mu_given or {}
     graph = drawn_graph(sub.lines, sub.markers, snap)
     # scale-factor texts and other "name = value" texts
-    scale_entries: list[tuple[Plan, Entry]] = []
-    other: list[Entry] = []
-    for e in sub.entries:
-        plan = mu_plan(e.name)
-        if plan is not None:
-            scale_entries.append((plan, e))
-        else:
-            other.append(e)
+    scale_entries = [(plan, e) for e in sub.entries if (plan := mu_plan(e.name)) is not None]
+    other = [e for e in sub.entries if mu_plan(e.name) is None]
     labels: list[_Label] = []
     for t in sub.texts:
         names = _label_names(t)
@@ -152,7 +147,7 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     if not labels:
         if sub.lines:
             raise _no_labels(sub, book)
-        return DrawnSheet([], notes, label_distance or 0.0, snap, scale_entries, other)
+        return DrawnSheet([], notes, label_distance or 0.0, other)
     if label_distance is None:
         heights = [lb.text.height for lb in labels if lb.text.height > 0]
         label_distance = min(10.0, max(3.0, 2.0 * statistics.median(heights))) if heights else 5.0
@@ -166,7 +161,7 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     plans = _group(attached, graph, sub, book, scale_entries, notes)
     for dp in plans:
         _scale_of(dp, scale_entries, mu_given, graph, notes)
-    return DrawnSheet(plans, notes, label_distance, snap, scale_entries, other)
+    return DrawnSheet(plans, notes, label_distance, other)
 
 
 def _no_labels(sub: Submission, book: LabelBook) -> Exception:
@@ -192,58 +187,50 @@ def _attach(labels: list[_Label], graph: Graph, lines: list[DrawnLine], tol: flo
             notes: list[Note]) -> None:
     """Give each label a point: line ends nearest to its text box, one label per point where
     possible (a minimum-cost assignment), arrowhead corners only when nothing else is near."""
-    nodes = graph.nodes
-    options: list[list[tuple[float, int]]] = []
-    for lb in labels:
-        near = []
-        for i in range(len(nodes)):
-            d = lb.text.distance((float(nodes[i][0]), float(nodes[i][1])))
-            lb.distance = min(lb.distance, d)
-            if d <= tol:
-                # points of a plan are where lines meet; a loose end of one line (a construction
-                # line drawn past its point, hatching) is taken only when nothing better is near
-                if i in graph.markers:     # a point marked with a dot or a small circle
-                    score = d - MARKER_BONUS * tol
-                else:
-                    score = d + (tol if i in graph.decoration else 0.0) + \
-                        LOOSE_END_COST.get(graph.degree[i], 0.0) * tol
-                near.append((score, i))
-        near.sort()
-        options.append(near[:8])
-    columns = sorted({i for near in options for _, i in near})
-    if columns:
-        col = {n: j for j, n in enumerate(columns)}
-        big = 1e6
-        width = len(columns) + len(labels)
-        cost = []
-        for r, near in enumerate(options):
-            row = [big] * width
-            for d, i in near:
-                row[col[i]] = d
-            # sharing a point with another label (p ≡ o1) costs more than a point of its own
-            row[len(columns) + r] = (near[0][0] + 0.5 * tol) if near else big
-            row = [x + tol for x in row]       # keep costs positive (marker bonus)
-            cost.append(row)
-        rows, cols = linear_sum_assignment(np.asarray(cost))
-        pick = dict(zip(rows.tolist(), cols.tolist()))
-        for r, lb in enumerate(labels):
-            j = pick.get(r, -1)
-            if j < 0 or cost[r][j] >= big:
+    nodes, n, big = graph.nodes, len(graph.nodes), 1e6
+    if n:
+        d = np.stack([lb.text.distance(nodes) for lb in labels])        # labels × points
+        for lb, row in zip(labels, d):
+            lb.distance = float(row.min())
+        # points of a plan are where lines meet; a loose end of one line (a construction line
+        # drawn past its point, hatching) is taken only when nothing better is near; a point
+        # marked with a dot or a small circle is preferred
+        marker = np.isin(np.arange(n), list(graph.markers))
+        deco = np.where(np.isin(np.arange(n), list(graph.decoration)), tol, 0.0)
+        loose = np.array([LOOSE_END_COST.get(k, 0.0) for k in graph.degree]) * tol
+        score = np.where(d <= tol, np.where(marker, d - MARKER_BONUS * tol, d + deco + loose),
+                         np.inf)
+        best = np.argsort(score, axis=1, kind="stable")[:, :8]          # 8 points a label
+        keep = np.zeros(score.shape, dtype=bool)
+        np.put_along_axis(keep, best, True, axis=1)
+        keep &= np.isfinite(score)
+        columns = np.flatnonzero(keep.any(axis=0))
+        k = len(labels)
+        cost = np.full((k, len(columns) + k), big)
+        cost[:, :len(columns)] = np.where(keep[:, columns], score[:, columns], big)
+        # sharing a point with another label (p ≡ o1) costs more than a point of its own
+        first = score[np.arange(k), best[:, 0]]
+        cost[np.arange(k), len(columns) + np.arange(k)] = np.where(
+            np.isfinite(first), first + 0.5 * tol, big)
+        cost += tol                         # keep costs positive (marker bonus)
+        for r, j in zip(*linear_sum_assignment(cost)):
+            if cost[r, j] >= big:
                 continue
-            node = columns[j] if j < len(columns) else options[r][0][1]
-            lb.node = node
-            lb.at = (float(nodes[node][0]), float(nodes[node][1]))
+            lb = labels[r]
+            lb.node = int(columns[j] if j < len(columns) else best[r, 0])
+            lb.at = (float(nodes[lb.node][0]), float(nodes[lb.node][1]))
             lb.distance = lb.text.distance(lb.at)
-            lb.how = T("how.marker") if node in graph.markers else T("how.line_end")
+            lb.how = T("how.marker") if lb.node in graph.markers else T("how.line_end")
     for lb in labels:
         if lb.at is not None:
             continue
         meets = crossings(np.asarray([(ln.start, ln.end) for ln in lines]).reshape(-1, 2, 2),
                          lb.text.centre, tol + max(lb.text.half))
-        found = [(float(x), float(y)) for x, y in meets if lb.text.distance((x, y)) <= tol]
-        if found:
-            p = min(found, key=lb.text.distance)
-            lb.at, lb.how, lb.distance = p, T("how.crossing"), lb.text.distance(p)
+        far = lb.text.distance(meets)
+        if (far <= tol).any():
+            i = int(np.argmin(far))
+            lb.at, lb.how, lb.distance = (float(meets[i][0]), float(meets[i][1])), T(
+                "how.crossing"), float(far[i])
             continue
         notes.append(Note("warning", T("note.label_far", written=lb.written, d=lb.distance,
                                        tol=tol), lb.text.where))
@@ -270,30 +257,21 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
     kinds_in_book = {k[0] for k in book.plans}
     decided: list[tuple[PlanKey, int, list[_Label]]] = []
     for comp, members in comps.items():
-        votes: dict[Plan, float] = {}
+        votes: Counter[Plan] = Counter()
         for lb in members:
             plans_here = {c.plan[0]: c.weight for c in reversed(lb.cands)}
-            for plan, w in plans_here.items():
-                votes[plan] = votes.get(plan, 0.0) + w
-            for plan, w in feature_votes(lb.written).items():
-                if plan in plans_here:
-                    votes[plan] = votes.get(plan, 0.0) + w
+            votes.update(plans_here)
+            votes.update({p: w for p, w in feature_votes(lb.written).items() if p in plans_here})
         hint = _hint_of(comp, members, graph, lines_of.get(comp, []), scale_entries, set(comps))
-        force_hint = False
-        for plan in hint:
-            votes[plan] = votes.get(plan, 0.0) + 3.0 * len(members) ** 0.5 + 3.0
-            force_hint |= plan is Plan.FORCE
-        if not force_hint:
+        votes.update(dict.fromkeys(hint, 3.0 * len(members) ** 0.5 + 3.0))
+        if Plan.FORCE not in hint:
             votes.pop(Plan.FORCE, None)
-        votes = {p: v for p, v in votes.items() if p in kinds_in_book}
+        votes = Counter({p: v for p, v in votes.items() if p in kinds_in_book})
         if not votes:
             continue
         plan = max(votes, key=lambda p: (votes[p], -list(Plan).index(p)))
         keys = [k for k in book.plans if k[0] is plan]
-
-        fits = {k: _fit(book, k, members) for k in keys}
-        key = max(keys, key=fits.__getitem__)
-        decided.append((key, comp, members))
+        decided.append((max(keys, key=lambda k: _fit(book, k, members)), comp, members))
     # merge drawings of one plan unless their labels clash
     plans: list[DrawnPlan] = []
     groups: list[tuple[PlanKey, list[int], list[_Label]]] = []
@@ -307,14 +285,12 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
                 break
         else:
             groups.append((key, [comp], list(members)))
-    counts: dict[PlanKey, int] = {}
-    for key, _, _ in groups:
-        counts[key] = counts.get(key, 0) + 1
-    seen: dict[PlanKey, int] = {}
+    counts = Counter(key for key, _, _ in groups)
+    seen: Counter[PlanKey] = Counter()
     for key, comps_, members in groups:
         dp = DrawnPlan(key)
         if counts[key] > 1:
-            seen[key] = seen.get(key, 0) + 1
+            seen[key] += 1
             dp.number = seen[key]
         for comp in comps_:
             dp.lines.extend(lines_of.get(comp, []))
@@ -339,24 +315,14 @@ def _fit(book: LabelBook, key: PlanKey, members: list[_Label]) -> float:
 
 def _gap(a: list[_Label], b: list[_Label]) -> float:
     """Distance between the boxes around two sets of labelled points (0 if they overlap)."""
-    pa = np.array([lb.at for lb in a if lb.at is not None])
-    pb = np.array([lb.at for lb in b if lb.at is not None])
-    if not len(pa) or not len(pb):
-        return math.inf
-    dx = max(0.0, pb[:, 0].min() - pa[:, 0].max(), pa[:, 0].min() - pb[:, 0].max())
-    dy = max(0.0, pb[:, 1].min() - pa[:, 1].max(), pa[:, 1].min() - pb[:, 1].max())
-    return math.hypot(dx, dy)
+    boxes = [MultiPoint([lb.at for lb in x if lb.at is not None]).envelope for x in (a, b)]
+    return math.inf if any(box.is_empty for box in boxes) else float(shapely.distance(*boxes))
 
 
 def _nearest_component(at: Point | None, graph: Graph, among: set[int] | None = None) -> int:
-    if at is None or not len(graph.nodes):
-        return -1
-    d = np.hypot(*(graph.nodes - np.asarray(at)).T)
-    if among is not None:
-        d = np.where(np.isin(graph.component, list(among)), d, np.inf)
-        if not np.isfinite(d).any():
-            return -1
-    return graph.component[int(np.argmin(d))]
+    mask = None if among is None else np.isin(graph.component, list(among))
+    i = -1 if at is None else nearest(graph.nodes, at, mask=mask)
+    return -1 if i < 0 else graph.component[i]
 
 
 def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLine],
@@ -448,22 +414,16 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
         return
     # the pole is where most vectors to labelled points start
     labelled = {tuple(np.round(p.at, 6)) for p in dp.points.values()}
-    count: dict[int, int] = {}
-    for a, b in graph.line_nodes:
-        pa, pb = tuple(np.round(graph.nodes[a], 6)), tuple(np.round(graph.nodes[b], 6))
-        if pa in labelled and pb not in labelled:
-            count[b] = count.get(b, 0) + 1
-        elif pb in labelled and pa not in labelled:
-            count[a] = count.get(a, 0) + 1
+    at_label = [tuple(np.round(p, 6)) in labelled for p in graph.nodes]
+    count = Counter(b if at_label[a] else a for a, b in graph.line_nodes
+                    if at_label[a] != at_label[b])
     if not count:
         return
-    best = max(count.values())
-    tops = [n for n, v in count.items() if v == best]
-    if best < 2 or len(tops) > 1:
+    (n, best), *rest = count.most_common(2)
+    if best < 2 or (rest and rest[0][1] == best):
         notes.append(Note("warning", T("note.pole_unknown", plan=with_case(dp.name, "gen")),
                           sub.path))
         return
-    n = tops[0]
     at = (float(graph.nodes[n][0]), float(graph.nodes[n][1]))
     label = book.label_of(dp.key, pole)
     dp.points[pole] = LabelledPoint(pole, label, "", at, sub.path, 0.0, T("how.inferred"))
@@ -474,8 +434,6 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
 def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],
               graph: Graph, notes: list[Note]) -> None:
     from ..errors import SceneError
-    from ..units import parse_quantity
-    from .labels import MU_DIMENSION
 
     plan = dp.plan
     if plan in mu_given:
@@ -488,7 +446,7 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
     for e in mine:
         text = e.text or e.value or e.length or ""
         try:
-            dp.mu = parse_quantity(units_ascii(text), MU_DIMENSION[plan])
+            dp.mu = parse_mu(text, plan)
         except SceneError as exc:
             notes.append(Note("warning", T("note.mu_unusable", name=e.name, text=text,
                                            detail=exc.detail), e.where))

@@ -9,8 +9,9 @@ from typing import Any
 
 from .. import __version__
 from ..construct.scale import SCALE_KEYS
+from ..i18n import num, pad
 from .submission import Note
-from .texts import T, Text, capitalize, join, num, pad, plan_word, tr, word
+from .texts import T, Text, capitalize, join, plan_word, tr, word
 
 #: verdicts
 OK, WRONG, SLIP, REFERENCE, MISSING, UNCHECKED = ("ok", "wrong", "slip", "reference", "missing",
@@ -196,15 +197,6 @@ class CheckReport:
         Keys and codes (verdict, cause, kind, level, plan …) are the same in every language;
         the sentences (hints, messages, sources, where) are written in ``lang``, and each code
         has its words alongside (``verdict_text``, ``kind_text`` …)."""
-        def clean(x: Any) -> Any:
-            if isinstance(x, float):
-                return None if not math.isfinite(x) else round(x, 6)
-            if isinstance(x, dict):
-                return {k: clean(v) for k, v in x.items()}
-            if isinstance(x, (list, tuple)):
-                return [clean(v) for v in x]
-            return x
-
         def verdict_words(item: Any) -> dict[str, str]:
             return {"verdict_text": verdict_text(item.verdict, item.cause, lang),
                     "cause_text": word("cause", item.cause, lang) if item.cause else ""}
@@ -212,40 +204,29 @@ class CheckReport:
         plans = []
         for p in self.plans:
             d = asdict(p)
-            d.pop("drawn_lines")
-            d.pop("exact_segments")
-            d["mu_unit"] = p.mu_unit
-            d["tolerance"] = asdict(p.tolerance)
-            d["title"] = capitalize(tr(p.name, lang))
-            d["tolerance_text"] = p.tolerance.text(lang)
+            del d["drawn_lines"], d["exact_segments"]
+            d.update(mu_unit=p.mu_unit, title=capitalize(tr(p.name, lang)),
+                     tolerance_text=p.tolerance.text(lang))
             for pt, rd in zip(p.points, d["points"]):
                 rd.update(verdict_words(pt), found_text=tr(pt.found, lang))
             for seg, rd in zip(p.segments, d["segments"]):
                 rd.update(verdict_words(seg))
             plans.append(d)
-        values = []
-        for v in self.values:
-            d = asdict(v)
-            d.update(verdict_words(v))
-            values.append(d)
-        findings = []
-        for f in self.findings:
-            d = asdict(f)
-            d.update(kind_text=word("kind", f.kind, lang), plan_text=tr(_plan_of(f.plan), lang),
-                     error_text=word("error", f.error, lang) if f.error else "")
-            findings.append(d)
-        doc = clean({
+        findings = [asdict(f) | {"kind_text": word("kind", f.kind, lang),
+                                 "plan_text": tr(_plan_of(f.plan), lang),
+                                 "error_text": word("error", f.error, lang) if f.error else ""}
+                    for f in self.findings]
+        return _json({
             "mechplan": __version__, "scene": self.scene, "submission": self.submission,
             "kind": self.kind, "phi_deg": self.phi_deg, "phi_source": self.phi_source,
             "units": self.units, "label_distance_mm": self.label_distance_mm,
             "passed": self.passed, "summary": self.summary(), "plans": plans,
-            "values": values, "findings": findings,
+            "values": [asdict(v) | verdict_words(v) for v in self.values], "findings": findings,
             "notes": [{"level": n.level, "message": n.message, "where": n.where,
                        "level_text": word("level", n.level, lang)} for n in self.notes],
             "lang": lang,
             "result_text": T("report.passed" if self.passed else "report.failed").tr(lang),
-        })
-        return _say(doc, lang)
+        }, lang)
 
     def text(self, lang: str = "en") -> str:
         """The report for a terminal, in a language (en, ru, vi, zh)."""
@@ -258,12 +239,15 @@ PROSE_KEYS = frozenset({"hint", "message", "mu_source", "phi_source", "conventio
                         "where"})
 
 
-def _say(x: Any, lang: str, key: str = "") -> Any:
-    """Sentences of a JSON document in a language; every other Text as its plain English."""
+def _json(x: Any, lang: str, key: str = "") -> Any:
+    """A JSON document: floats rounded (not finite: null), sentences in a language, every other
+    Text as its plain English."""
+    if isinstance(x, float):
+        return None if not math.isfinite(x) else round(x, 6)
     if isinstance(x, dict):
-        return {k: _say(v, lang, k) for k, v in x.items()}
-    if isinstance(x, list):
-        return [_say(v, lang, key) for v in x]
+        return {k: _json(v, lang, k) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_json(v, lang, key) for v in x]
     if isinstance(x, Text):
         return x.tr(lang) if key in PROSE_KEYS else str(x)
     return x
@@ -295,13 +279,35 @@ def _plan_of(plan: str) -> str:
     return plan_word(plan)
 
 
-def _verdict(v: str, cause: str, lang: str = "en") -> str:
-    return verdict_text(v, cause, lang)
+#: columns of the text tables: (title, width, alignment, field, number format)
+_SEGMENT_COLUMNS = (("col.segment", 14, "<", "name", ""), ("col.quantity", 12, "<", "quantity", ""),
+                    ("col.drawn_mm", 9, ">", "submitted_mm", "9.1f"),
+                    ("col.exact_mm", 9, ">", "exact_mm", "9.1f"),
+                    ("col.err_mm", 8, ">", "error_mm", "+8.1f"),
+                    ("col.err_pct", 8, ">", "error_pct", "+8.1f"),
+                    ("col.dir", 7, ">", "direction_deg", "+7.1f"))
+_VALUE_COLUMNS = (("col.name", 12, "<", "name", ""),
+                  ("col.submitted", 12, ">", "submitted", "12.4g"),
+                  ("col.exact", 12, ">", "exact", "12.4g"), ("col.unit", 8, ">", "unit", ""),
+                  ("col.err_pct", 8, ">", "error_pct", "+8.1f"))
 
 
-def _cols(lang: str, *cells: tuple[str, int, str]) -> str:
-    """Column titles: (message id, width, alignment)."""
-    return "".join(pad(T(key).tr(lang), w, a) for key, w, a in cells)
+def _table(lang: str, columns: tuple[tuple[str, int, str, str, str], ...],
+           rows: list[Any]) -> list[str]:
+    """A table of rows with a verdict column, and the hint under each wrong row."""
+    out = ["   " + "".join(pad(T(key).tr(lang), w, a) for key, w, a, _, _ in columns) + "  "
+           + T("col.verdict").tr(lang)]
+    for row in rows:
+        cells = []
+        for _, w, a, name, fmt in columns:
+            x = getattr(row, name)
+            if name == "name" and not getattr(row, "in_construction", True):
+                x = f"{x}*"
+            cells.append(pad(_num(x, fmt, lang) if fmt else x, w, a))
+        out.append("   " + "".join(cells) + f"  {verdict_text(row.verdict, row.cause, lang)}")
+        if row.verdict in (WRONG, SLIP) and row.hint:
+            out.append(f"        → {tr(row.hint, lang)}")
+    return out
 
 
 def render_text(r: CheckReport, lang: str = "en") -> str:
@@ -338,36 +344,13 @@ def render_text(r: CheckReport, lang: str = "en") -> str:
                 T("report.point_off", label=pt.label, err=pt.error_mm,
                   cause=word("cause", pt.cause, lang)) for pt in wrong_pts
                 if pt.error_mm is not None)))
-        out.append("   " + _cols(lang, ("col.segment", 14, "<"), ("col.quantity", 12, "<"),
-                                 ("col.drawn_mm", 9, ">"), ("col.exact_mm", 9, ">"),
-                                 ("col.err_mm", 8, ">"), ("col.err_pct", 8, ">"),
-                                 ("col.dir", 7, ">")) + "  " + say("col.verdict"))
-        for row in p.segments:
-            name = row.name if row.in_construction else f"{row.name}*"
-            out.append(f"   {pad(name, 14)}{pad(row.quantity, 12)}"
-                       f"{pad(_num(row.submitted_mm, '9.1f', lang), 9, '>')}"
-                       f"{pad(_num(row.exact_mm, '9.1f', lang), 9, '>')}"
-                       f"{pad(_num(row.error_mm, '+8.1f', lang), 8, '>')}"
-                       f"{pad(_num(row.error_pct, '+8.1f', lang), 8, '>')}"
-                       f"{pad(_num(row.direction_deg, '+7.1f', lang), 7, '>')}"
-                       f"  {_verdict(row.verdict, row.cause, lang)}")
-            if row.verdict in (WRONG, SLIP) and row.hint:
-                out.append(f"        → {tr(row.hint, lang)}")
+        out.extend(_table(lang, _SEGMENT_COLUMNS, p.segments))
         if any(not row.in_construction for row in p.segments):
             out.append("   " + say("report.not_in_construction"))
     if r.values:
         out.append("")
         out.append(say("report.values"))
-        out.append("   " + _cols(lang, ("col.name", 12, "<"), ("col.submitted", 12, ">"),
-                                 ("col.exact", 12, ">"), ("col.unit", 8, ">"),
-                                 ("col.err_pct", 8, ">")) + "  " + say("col.verdict"))
-        for v in r.values:
-            out.append(f"   {pad(v.name, 12)}{pad(_num(v.submitted, '12.4g', lang), 12, '>')}"
-                       f"{pad(_num(v.exact, '12.4g', lang), 12, '>')}{pad(v.unit, 8, '>')}"
-                       f"{pad(_num(v.error_pct, '+8.1f', lang), 8, '>')}"
-                       f"  {_verdict(v.verdict, v.cause, lang)}")
-            if v.verdict in (WRONG, SLIP) and v.hint:
-                out.append(f"        → {tr(v.hint, lang)}")
+        out.extend(_table(lang, _VALUE_COLUMNS, r.values))
     if r.findings:
         out.append("")
         out.append(say("report.findings"))

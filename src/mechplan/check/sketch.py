@@ -27,15 +27,11 @@ class Graph:
 def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float) -> Graph:
     pts = [p for ln in lines for p in (ln.start, ln.end)] + [m[0] for m in markers]
     arr = np.asarray(pts, dtype=float).reshape(-1, 2)
-    cl = [int(x) for x in cluster(arr, snap)]
-    m = max(cl) + 1 if cl else 0
-    nodes = np.zeros((m, 2))
-    counts = np.zeros(m)
-    for i, c in enumerate(cl):
-        nodes[c] += arr[i]
-        counts[c] += 1
-    if m:
-        nodes /= counts[:, None]
+    labels = cluster(arr, snap)
+    m = int(labels.max()) + 1 if len(labels) else 0
+    nodes = np.stack([np.bincount(labels, arr[:, i], m) for i in (0, 1)], axis=-1).reshape(
+        -1, 2) / np.maximum(np.bincount(labels, minlength=m), 1)[:, None]  # mean of each cluster
+    cl = labels.tolist()
     line_nodes = [(cl[2 * i], cl[2 * i + 1]) for i in range(len(lines))]
     marker_nodes = {cl[2 * len(lines) + j]: markers[j][1] for j in range(len(markers))}
     at_node: dict[int, list[int]] = {}

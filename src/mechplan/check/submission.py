@@ -13,11 +13,15 @@ import io
 import math
 import re
 import tomllib
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from ..errors import CheckError
+from ..geom.sketch import box_distance
 from .texts import T
 
 Point = tuple[float, float]
@@ -63,13 +67,10 @@ class SheetText:
     half: tuple[float, float] = (0.0, 0.0)   # half width and height of the text box (mm)
     rotation: float = 0.0          # degrees
 
-    def distance(self, p: Point) -> float:
-        """Distance from a point to the text's box (0 inside it)."""
-        a = math.radians(self.rotation)
-        dx, dy = p[0] - self.centre[0], p[1] - self.centre[1]
-        u = dx * math.cos(a) + dy * math.sin(a)
-        v = -dx * math.sin(a) + dy * math.cos(a)
-        return math.hypot(max(abs(u) - self.half[0], 0.0), max(abs(v) - self.half[1], 0.0))
+    def distance(self, p: Any) -> Any:
+        """Distance from points (N, 2) to the text's box (0 inside it); a float for one point."""
+        d = box_distance(p, self.centre, self.half, self.rotation)
+        return d if np.ndim(p) > 1 else float(d[0])
 
 
 @dataclass(frozen=True, slots=True)
@@ -90,6 +91,7 @@ class Entry:
     section: str | None = None
     text: str | None = None        # a single uninterpreted value ("67", "2.95 m/s")
     at: Point | None = None        # where the text stands on a sheet (mm)
+    phi_deg: float | None = None   # the angle of an answer table's row (degrees)
 
 
 @dataclass
@@ -176,19 +178,7 @@ def read_toml(path: Path) -> Submission:
     """Read a TOML table: sections named by plan hold lengths, [values] physical values,
     [scales] scale factors; top-level keys may hold any of them."""
     sub = Submission(str(path), "table")
-    text = _read_text(path)
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
-    lines = text.splitlines()
-
-    def line_of(key: str) -> str:
-        pat = re.compile(r"^\s*[\"']?" + re.escape(key) + r"[\"']?\s*=")
-        for i, ln in enumerate(lines, start=1):
-            if pat.match(ln):
-                return T("where.line", file=path.name, n=i)
-        return T("where.key", file=path.name, key=key)
+    data, line_of = load_toml(path)
 
     def walk(table: dict[str, Any], section: str | None, prefix: str) -> None:
         for key, value in table.items():
@@ -272,25 +262,16 @@ def read_csv(path: Path) -> Submission:
     """Read a CSV table: with a header (segment, mm, mu, quantity, value, unit, plan) or rows of
     "name, value[, unit]"; the delimiter may be ",", ";" or a tab; decimal commas are accepted."""
     sub = Submission(str(path), "table")
-    text = _read_text(path)
-    if "\x00" in text:
-        raise CheckError(T("error.binary"), file=str(path))
-    sample = "\n".join(text.splitlines()[:20])
-    try:
-        dialect: Any = csv.Sniffer().sniff(sample, delimiters=",;\t|")
-    except csv.Error:
-        dialect = _Semicolon if sample.count(";") > sample.count(",") else csv.excel
-    try:
-        rows = list(csv.reader(io.StringIO(text), dialect))
-    except csv.Error as exc:
-        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
+    rows = csv_rows(path, _sniff)
+    first = next((i for i, row in enumerate(rows, start=1) if any(c.strip() for c in row)
+                  and not row[0].strip().startswith("#")), 0)
     header: dict[str, int] | None = None
     for lineno, row in enumerate(rows, start=1):
         cells = [c.strip() for c in row]
         if not any(cells) or cells[0].startswith("#"):
             continue
         where = T("where.line", file=path.name, n=lineno)
-        if header is None and lineno == _first_line(rows):
+        if header is None and lineno == first:
             header = _header(cells)
             if header is not None:
                 if "name" not in header:
@@ -340,12 +321,11 @@ class _Semicolon(csv.excel):
     delimiter = ";"
 
 
-def _first_line(rows: list[list[str]]) -> int:
-    for i, row in enumerate(rows, start=1):
-        cells = [c.strip() for c in row]
-        if any(cells) and not cells[0].startswith("#"):
-            return i
-    return 0
+def _sniff(sample: str) -> Any:
+    try:
+        return csv.Sniffer().sniff(sample, delimiters=",;\t|")
+    except csv.Error:
+        return _Semicolon if sample.count(";") > sample.count(",") else csv.excel
 
 
 def _header(cells: list[str]) -> dict[str, int] | None:
@@ -358,6 +338,34 @@ def _header(cells: list[str]) -> dict[str, int] | None:
     if len(found) >= 2 or (found and not any(re.search(r"\d", c) for c in cells)):
         return found
     return None
+
+
+def load_toml(path: Path) -> tuple[dict[str, Any], Callable[[str], str]]:
+    """A TOML table and the function giving where a key is written (its line, or its name)."""
+    text = _read_text(path)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
+    lines = text.splitlines()
+
+    def where(key: str) -> str:
+        pat = re.compile(r"^\s*[\"']?" + re.escape(key) + r"[\"']?\s*=")
+        n = next((i for i, ln in enumerate(lines, start=1) if pat.match(ln)), None)
+        return T("where.key", file=path.name, key=key) if n is None else T(
+            "where.line", file=path.name, n=n)
+    return data, where
+
+
+def csv_rows(path: Path, dialect: Callable[[str], Any]) -> list[list[str]]:
+    """The rows of a CSV file, its dialect chosen by ``dialect(first 20 lines)``."""
+    text = _read_text(path)
+    if "\x00" in text:
+        raise CheckError(T("error.binary"), file=str(path))
+    try:
+        return list(csv.reader(io.StringIO(text), dialect("\n".join(text.splitlines()[:20]))))
+    except csv.Error as exc:
+        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
 
 
 def _read_text(path: Path) -> str:

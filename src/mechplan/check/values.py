@@ -14,8 +14,8 @@ from ..construct.ops import Op
 from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..errors import MechplanError
+from ..units import si_unit
 from .context import (
-    SI_UNIT,
     Ctx,
     Drawn,
     Rederive,
@@ -139,7 +139,7 @@ def grade_values(ctx: Ctx, k: int, drawn: list[Drawn], first: dict[PlanKey, Draw
     table_len: dict[int, TableSegment] = {id(t.segment): t for t in ctx.interp.segments}
     for gv in ctx.interp.values:
         q = gv.quantity
-        row = ValueRow(gv.written, q.display, SI_UNIT.get(q.dimension, ""), gv.value, None,
+        row = ValueRow(gv.written, q.display, si_unit(q.dimension), gv.value, None,
                        where=gv.where)
         exact = _value_exact(ctx, q, k, report.notes, gv.where)
         if exact is None:
@@ -265,7 +265,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
     """The student's own value of a quantity, its derivation and the arithmetic tolerance."""
     c = ctx.c
     rel = 0.005 * abs(gv.value)
-    unit = SI_UNIT.get(q.dimension, "")
+    unit = si_unit(q.dimension)
     if gv.length_mm is not None:
         m = gv.mu or mu
         if m:

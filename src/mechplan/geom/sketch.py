@@ -63,3 +63,23 @@ def crossings(segments: NDArray[np.float64], near: tuple[float, float],
     pts = p + t[:, None] * r
     ok &= np.hypot(pts[:, 0] - x, pts[:, 1] - y) <= radius
     return np.asarray(pts[ok], dtype=np.float64)
+
+
+def box_distance(points: NDArray[np.float64], centre: tuple[float, float],
+                 half: tuple[float, float], rotation_deg: float = 0.0) -> NDArray[np.float64]:
+    """Distance (N,) of points (N, 2) from a box of half sizes ``half`` about ``centre``, turned
+    by ``rotation_deg`` (0 inside it)."""
+    a = math.radians(rotation_deg)
+    d = np.asarray(points, dtype=float).reshape(-1, 2) - np.asarray(centre, dtype=float)
+    u = d[:, 0] * math.cos(a) + d[:, 1] * math.sin(a)
+    v = -d[:, 0] * math.sin(a) + d[:, 1] * math.cos(a)
+    return np.hypot(np.maximum(np.abs(u) - half[0], 0.0), np.maximum(np.abs(v) - half[1], 0.0))
+
+
+def nearest(points: NDArray[np.float64], at: tuple[float, float], within: float = math.inf,
+            mask: NDArray[np.bool_] | None = None) -> int:
+    """Index of the point (N, 2) nearest to ``at`` (the first of equals), only among ``mask``
+    and not farther than ``within``; −1 when there is none."""
+    d = np.hypot(*(np.asarray(points, dtype=float).reshape(-1, 2) - np.asarray(at)).T)
+    d = np.where((d <= within) & (True if mask is None else mask), d, np.inf)
+    return int(np.argmin(d)) if np.isfinite(d).any() else -1
