@@ -61,14 +61,18 @@ def pack(panels: Sequence[Panel],
     for index, panel in enumerate(panels):
         x0, y0, x1, y1 = panel.bounds()
         w, h = x1 - x0 + GAP, y1 - y0 + GAP
+        if w > ax1 - ax0 or h > ay1 - ay0:
+            return offsets, index
         candidates = {(ax0 + GAP / 2, ay1 - GAP / 2)}
         for r in placed:
             bx0, by0, bx1, by1 = r.bounds
             candidates |= {(bx1, by1), (bx0, by0), (ax0 + GAP / 2, by0), (bx1, ay1 - GAP / 2)}
-        grid = [(ax0 + i * 10.0, ay1 - j * 10.0) for j in range(int((ay1 - ay0) / 10) + 1)
-                for i in range(int((ax1 - ax0) / 10) + 1)]
+        grid = [(ax0 + i * 10.0, ay1 - j * 10.0) for j in range(int((ay1 - ay0 - h) / 10) + 1)
+                for i in range(int((ax1 - ax0 - w) / 10) + 1)]
         best = None
         for cx, cy in sorted(candidates, key=lambda q: (-q[1], q[0])) + grid:
+            if cx + w > ax1 or cy - h < ay0:
+                continue
             rect = box(cx, cy - h, cx + w, cy)
             if inside.contains(rect) and not any(rect.intersects(r) and
                                                  rect.intersection(r).area > 1e-6 for r in placed):
