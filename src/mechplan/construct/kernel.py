@@ -39,14 +39,22 @@ def _f(x: Any) -> str:
 
 
 class _Gen:
-    """Source lines of the loop body, step by step."""
+    """Source lines of the loop body, step by step.
+
+    Two bodies are built side by side: ``lines`` computes the values and every step's error
+    estimate; ``quick`` computes the same values (the same lines) and, instead of the estimates,
+    the product of the divisors below 1 that the estimates are divided by — from which a bound of
+    every estimate follows (see :func:`kernel_source`).
+    """
 
     def __init__(self, c: Construction, length: float) -> None:
         self.c = c
         self.idx: dict[str, int] = {}
         self.lines: list[str] = []
+        self.quick: list[str] = []
         self.length = length
         self.distances: dict[tuple[str, str], str] = {}
+        self.squares: dict[tuple[str, str], str] = {}
 
     def name(self, sid: str) -> str:
         return f"v{self.idx[sid]}"
@@ -62,23 +70,40 @@ class _Gen:
     def err(self, sid: str) -> str:
         return f"e{self.idx[sid]}"
 
+    def _key(self, a: str, b: str) -> tuple[str, str]:
+        return (a, b) if a < b else (b, a)
+
     def distance(self, a: str, b: str) -> str:
         """|b − a| over the mechanism's length, computed once per pair of points.
 
         An error estimate, not a value: like the numpy path's estimates it is √(dx² + dy²),
         which needs no call of hypot.
         """
-        key = (a, b) if a < b else (b, a)
+        key = self._key(a, b)
         name = self.distances.get(key)
         if name is None:
             name = self.distances[key] = f"_l{len(self.distances)}"
             (ax, ay), (bx, by) = self.pt(a), self.pt(b)
-            self.emit(f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
-                      f"{name} = math.sqrt(_ex * _ex + _ey * _ey) / {_f(self.length)}")
+            self.lines.extend((f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
+                               f"{name} = math.sqrt(_ex * _ex + _ey * _ey) / {_f(self.length)}"))
+        return name
+
+    def square(self, a: str, b: str) -> str:
+        """(|b − a| over the mechanism's length)², once per pair (the quick body's divisor)."""
+        key = self._key(a, b)
+        name = self.squares.get(key)
+        if name is None:
+            name = self.squares[key] = f"_m{len(self.squares)}"
+            (ax, ay), (bx, by) = self.pt(a), self.pt(b)
+            inverse = _f(1.0 / (self.length * self.length))
+            self.quick.extend((f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
+                               f"{name} = (_ex * _ex + _ey * _ey) * {inverse}"))
         return name
 
     def emit(self, *lines: str) -> None:
+        """Value lines: the same in both bodies."""
         self.lines.extend(lines)
+        self.quick.extend(lines)
 
     def step(self, s: Step) -> None:
         self.idx[s.id] = len(self.idx)
@@ -89,16 +114,23 @@ class _Gen:
         sine = gen(self, s, n)
         e = self.err(s.id)
         if not s.inputs:
-            self.emit(f"{e} = U")
-        else:
-            self.emit(f"{e} = {self.err(s.inputs[0])} + U")
-            for i in s.inputs[1:]:
-                self.emit(f"{e} = max({e}, {self.err(i)} + U)")
-            amplify = _AMPLIFY.get(s.op)
-            if amplify is not None:
-                self.emit(f"{e} = _div({e}, {self.distance(*amplify(s))})")
-            if sine is not None:
-                self.emit(f"{e} = _div({e}, {sine})")
+            self.lines.append(f"{e} = U")
+            return
+        # max(a + U, b + U) = max(a, b) + U exactly (rounding is monotonic)
+        terms = [self.err(i) for i in dict.fromkeys(s.inputs)]
+        best = terms[0]
+        for t in terms[1:]:
+            best = f"max({best}, {t})"
+        self.lines.append(f"{e} = {best} + U")
+        amplify = _AMPLIFY.get(s.op)
+        if amplify is not None:
+            pair = amplify(s)
+            self.lines.append(f"{e} = _div({e}, {self.distance(*pair)})")
+            m = self.square(*pair)
+            self.quick.append(f"_qa = _qa * (1.0 if {m} >= 1.0 else {m})")
+        if sine is not None:
+            self.lines.append(f"{e} = _div({e}, {sine})")
+            self.quick.append(f"_qs = _qs * (1.0 if {sine} >= 1.0 else {sine})")
 
 
 # -- scalar forms: each mirrors the vectorised evaluator in construct/ops.py ------------------
@@ -338,12 +370,17 @@ _AMPLIFY: dict[Op, Callable[[Step], tuple[str, str]]] = {
     Op.OMEGA: _pair(0, 1), Op.EPSILON: _pair(0, 1), Op.SIMILAR_IMAGE: _pair(2, 3),
 }
 
-_HELPERS = '''
+_HELPERS = """
 import math
+
+import numpy as np
+
+prange = range
 NAN = math.nan
 INF = math.inf
 
 
+#@jit
 def _div(a, b):
     if b == 0.0:
         if a != a or a == 0.0:
@@ -352,16 +389,49 @@ def _div(a, b):
     return a / b
 
 
+#@jit
 def _cdiv(a, b):
     if b == 0.0:
         return complex(NAN, NAN)
     return a / b
 
 
+#@jit
 def _hyp(x, y):
-    return math.hypot(x, y)
+    return math.sqrt(x * x + y * y)
 
-'''
+"""
+
+_DRIVERS = """
+
+#@jit
+def kernel(phi, tol, out, rel, bad, store):
+    if store:
+        return _full(phi, tol, out, rel, bad, True, 0, phi.shape[0])
+    return _quick(phi, tol, out, rel, bad, 0, phi.shape[0])
+
+
+#@parallel
+def kernel_parallel(phi, tol, out, rel, bad, store, chunk):
+    n = phi.shape[0]
+    count = (n + chunk - 1) // chunk
+    each = np.zeros(count, dtype=np.int64)
+    for c in prange(count):
+        lo = c * chunk
+        hi = min(n, lo + chunk)
+        if store:
+            each[c] = _full(phi, tol, out, rel, bad, True, lo, hi)
+        else:
+            each[c] = _quick(phi, tol, out, rel, bad, lo, hi)
+    status = 0
+    for c in range(count):
+        status |= each[c]
+    return status
+"""
+
+#: positions from which a call runs on numba's threads (chunks of CHUNK positions each)
+PARALLEL_FROM = 20_000
+CHUNK = 4096
 
 
 @dataclass(frozen=True)
@@ -373,7 +443,9 @@ class Kernel:
     (``columns[j]`` is target j's slice). While it loops, the kernel also finds whether any position
     cannot be built or has an estimate ≥ 1 (status bit 1, :data:`CANNOT_TRUST`) and whether any
     estimate exceeds the tolerance (status bit 2, :data:`OVER_TOLERANCE`), so the estimate matrix
-    need only be stored when a caller asks for it.
+    need only be stored when a caller asks for it. From :data:`PARALLEL_FROM` positions on, a
+    compiled kernel runs chunks of positions on numba's threads (each chunk writes its own rows and
+    its own status, combined after the loop).
     """
 
     targets: tuple[str, ...]
@@ -383,6 +455,7 @@ class Kernel:
     source: str
     function: Callable[..., int]
     compiled: bool
+    parallel: Callable[..., int] | None = None
 
     def run(self, phi: np.ndarray, tolerance: float = math.inf, store: bool = True
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
@@ -393,7 +466,10 @@ class Kernel:
         block = np.empty((n, self.width))
         rel = np.empty((n if store else 1, len(self.targets)))
         bad = np.empty(n, dtype=np.bool_)
-        status = self.function(phi, tolerance, block, rel, bad, store)
+        if self.parallel is not None and n >= PARALLEL_FROM:
+            status = self.parallel(phi, tolerance, block, rel, bad, store, CHUNK)
+        else:
+            status = self.function(phi, tolerance, block, rel, bad, store)
         return block, rel, bad, int(status)
 
     def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
@@ -426,54 +502,86 @@ def _columns(kinds: Sequence[Kind]) -> tuple[tuple[slice | int, ...], int]:
     return tuple(cols), at
 
 
+def _indent(lines: Sequence[str]) -> list[str]:
+    return ["        " + line for line in lines]
+
+
 def kernel_source(c: Construction, targets: Sequence[str]) -> str:
-    """Generate the source of the kernel that evaluates ``targets`` (and only their ancestors)."""
+    """Generate the source of the kernel that evaluates ``targets`` (and only their ancestors).
+
+    ``_full`` computes the values and every estimate (the relative estimates of the targets are
+    stored when asked for, and checked against 1 and the tolerance). ``_quick`` — a call that
+    does not store the estimates — computes the same values and proves most positions clean
+    without the estimates: a step's estimate is (the largest of its inputs' + U) divided by its
+    divisors (distances over the length, sines), so it is at most depth·U over the product of
+    the divisors below 1 along its ancestors, and every estimate is at most
+    B = steps·U / Π min(1, divisor) over all of them. A position where 2·B is at most both the
+    tolerance and ½ (and every value is finite) has no flag; any other one is evaluated again by
+    ``_full``, which decides it exactly — the same status bits, for fewer operations.
+    """
     for sid in targets:
         if c[sid].kind is Kind.LINE:
             raise KernelUnavailable(f"step {sid} is a line; kernels return points and scalars")
     g = _Gen(c, length_scale(c))
     for sid in c.ancestors(targets):
         g.step(c[sid])
-    body = ["def kernel(phi, tol, out, rel, bad, store):", "    status = 0",
-            "    for i in range(phi.shape[0]):", "        bad_i = False"]
-    body += ["        " + line for line in g.lines]
+    full = ["#@jit", "def _full(phi, tol, out, rel, bad, store, lo, hi):", "    status = 0",
+            "    for i in range(lo, hi):", "        bad_i = False", *_indent(g.lines)]
+    quick = ["#@jit", "def _quick(phi, tol, out, rel, bad, lo, hi):", "    status = 0",
+             "    _thr = tol if tol < 0.5 else 0.5",
+             "    _thr2 = _thr * _thr if _thr > 0.0 else -1.0",
+             "    for i in range(lo, hi):", "        bad_i = False", "        _qa = 1.0",
+             "        _qs = 1.0", *_indent(g.quick)]
     sizes = plan_sizes(c)
     columns, _ = _columns([c[sid].kind for sid in targets])
+    values: list[str] = []
     for j, (sid, col) in enumerate(zip(targets, columns)):
         scale = scale_of(c[sid], sizes)
         if isinstance(col, slice):
             x, y = g.pt(sid)
-            body += [f"        out[i, {col.start}] = {x}", f"        out[i, {col.start + 1}] = {y}"]
+            stores = [f"out[i, {col.start}] = {x}", f"out[i, {col.start + 1}] = {y}"]
             size = f"math.sqrt({x} * {x} + {y} * {y})"
+            values += [x, y]
         else:
-            body.append(f"        out[i, {col}] = {g.name(sid)}")
+            stores = [f"out[i, {col}] = {g.name(sid)}"]
             size = f"abs({g.name(sid)})"
+            values.append(g.name(sid))
+        full += _indent(stores)
+        quick += _indent(stores)
         if scale > 0.0:
             # measured against the larger of the plan's scale and the result's own size
-            body.append(f"        _r = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
+            full.append(f"        _r = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
         else:
-            body.append(f"        _r = {g.err(sid)}")
-        body += ["        if store:", f"            rel[i, {j}] = _r",
+            full.append(f"        _r = {g.err(sid)}")
+        full += ["        if store:", f"            rel[i, {j}] = _r",
                  f"        if not (_r < {_f(UNBOUNDED)}):", f"            status |= {CANNOT_TRUST}",
                  "        if _r > tol:", f"            status |= {OVER_TOLERANCE}"]
-    body += ["        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
+    full += ["        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
              "    return status"]
+    # NaN (or ±inf) in some value: not proven clean, decided by _full
+    quick += [f"        _chk = ({' + '.join(values)}) * 0.0", "        bad[i] = bad_i",
+              "        if bad_i:", f"            status |= {CANNOT_TRUST}",
+              "        if not (NU2 <= _thr2 * (_qa * (_qs * _qs)) + _chk):",
+              "            status |= _full(phi, tol, out, rel, bad, False, i, i + 1)",
+              "    return status"]
+    u = float(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)
     drive = c.drive
-    head = (_HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\n"
-            f"U = {_f(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)}\n"
-            f"MIN_SINE = {_f(1.0 / MAX_CONDITION)}\n\n")
-    return head + "\n".join(body) + "\n"
+    head = (_HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\nU = {_f(u)}\n"
+            f"NU2 = {_f((2.0 * len(g.idx) * u) ** 2)}\n"
+            f"MIN_SINE = {_f(1.0 / MAX_CONDITION)}\n\n\n")
+    return head + "\n".join(full) + "\n\n\n" + "\n".join(quick) + "\n" + _DRIVERS
 
 
 def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) -> Kernel:
     """Compile the kernel of ``targets``; ``jit=False`` runs the generated code as plain Python."""
     targets = tuple(targets)
     source = kernel_source(c, targets)
-    function, compiled = load(source, jit)
+    functions, compiled = load(source, jit)
     kinds = tuple(c[sid].kind for sid in targets)
     columns, width = _columns(kinds)
-    return Kernel(targets, kinds, columns, width, source, function, compiled)
+    return Kernel(targets, kinds, columns, width, source, functions["kernel"], compiled,
+                  functions["kernel_parallel"] if compiled else None)
 
 
-__all__ = ["CANNOT_TRUST", "OVER_TOLERANCE", "Kernel", "KernelUnavailable", "compile_kernel",
-           "kernel_source"]
+__all__ = ["CANNOT_TRUST", "CHUNK", "OVER_TOLERANCE", "PARALLEL_FROM", "Kernel",
+           "KernelUnavailable", "compile_kernel", "kernel_source"]

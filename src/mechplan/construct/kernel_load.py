@@ -29,25 +29,34 @@ def _cache_dir() -> Path:
     return path
 
 
-def load(source: str, jit: bool) -> tuple[Callable[..., int], bool]:
-    """The function ``kernel`` of a generated source, and whether numba compiled it."""
+#: what the markers of the generated source become when numba compiles it
+_JIT = "@numba.njit(cache=True, error_model='numpy')"
+_PARALLEL = "@numba.njit(cache=True, error_model='numpy', parallel=True)"
+
+
+def numba_source(source: str) -> str:
+    """The generated source as numba compiles it: ``#@jit`` / ``#@parallel`` markers become
+    decorators and ``prange`` numba's parallel range."""
+    return (source.replace("#@jit\n", _JIT + "\n").replace("#@parallel\n", _PARALLEL + "\n")
+            .replace("prange = range\n", "from numba import prange\n", 1)
+            .replace("import math\n", "import math\n\nimport numba\n", 1))
+
+
+def load(source: str, jit: bool) -> tuple[dict[str, Callable[..., int]], bool]:
+    """The functions ``kernel`` and ``kernel_parallel`` of a generated source, and whether numba
+    compiled them."""
     digest = hashlib.sha256(source.encode()).hexdigest()[:24]
     name = f"mechplan_kernel_{digest}"
     if not jit:
         namespace: dict[str, Any] = {}
         exec(compile(source, name, "exec"), namespace)   # noqa: S102 - our own generated code
-        return namespace["kernel"], False
+        return {k: namespace[k] for k in ("kernel", "kernel_parallel")}, False
     if importlib.util.find_spec("numba") is None:
         raise KernelUnavailable("numba is not installed (pip install mechplan[fast])") from None
     path = _cache_dir() / f"{name}.py"
     if not path.exists():
         tmp = path.with_suffix(f".{os.getpid()}.tmp")
-        tmp.write_text(source.replace("def _div", "@numba.njit(cache=True, error_model='numpy')\n"
-                                      "def _div").replace(
-            "def _cdiv", "@numba.njit(cache=True, error_model='numpy')\ndef _cdiv").replace(
-            "def _hyp", "@numba.njit(cache=True, error_model='numpy')\ndef _hyp").replace(
-            "def kernel", "@numba.njit(cache=True, error_model='numpy')\ndef kernel").replace(
-            "import math\n", "import math\nimport numba\n", 1), encoding="utf-8")
+        tmp.write_text(numba_source(source), encoding="utf-8")
         os.replace(tmp, path)
     spec = importlib.util.spec_from_file_location(name, path)
     if spec is None or spec.loader is None:
@@ -56,4 +65,4 @@ def load(source: str, jit: bool) -> tuple[Callable[..., int], bool]:
     if name not in sys.modules:
         spec.loader.exec_module(module)
         sys.modules[name] = module
-    return module.kernel, True
+    return {k: getattr(module, k) for k in ("kernel", "kernel_parallel")}, True

@@ -25,8 +25,17 @@ def dot(a: Array, b: Array) -> Array:
 
 
 def norm(v: Array) -> Array:
-    """Return the Euclidean length along the last axis."""
-    return cast(Array, np.hypot(v[..., 0], v[..., 1]))
+    """Return the Euclidean length along the last axis.
+
+    √(x² + y²) rather than hypot: a third of the time, and the same value to within a rounding
+    for any length a mechanism has (hypot only guards against squares beyond the float range).
+    """
+    x, y = v[..., 0], v[..., 1]
+    out = x * x
+    out += y * y
+    if isinstance(out, np.ndarray):
+        return np.sqrt(out, out=out)
+    return cast(Array, np.sqrt(out))
 
 
 def unit(v: Array) -> Array:

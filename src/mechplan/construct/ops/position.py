@@ -79,7 +79,7 @@ def carrier_angle(step: Step, pivot: Array, slider: Array) -> Result:
     rel = slider - pivot
     q0 = np.asarray(step.param("q0"), dtype=rel.dtype)
     d = direction(np.asarray(step.param("dir_angle"), dtype=rel.dtype))
-    radius = np.hypot(rel[..., 0], rel[..., 1])
+    radius = np.sqrt(rel[..., 0] * rel[..., 0] + rel[..., 1] * rel[..., 1])
     # the circle's centre and the guide are the same at every position: pass them once, (1, 2),
     # and let numpy broadcast (same values as (N, 2) copies, without N-sized work on constants)
     origin = np.zeros((1, 2), dtype=rel.dtype)
