@@ -22,7 +22,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..geom.vec import Array
+from ..geom.vec import Array, norm
 from .graph import Construction, Evaluation
 from .step import Kind, Op, Plan, Step
 
@@ -191,9 +191,9 @@ class _Propagator:
         """|b − a| of two point steps, relative to the mechanism's length (memoised per pair)."""
         key = (a, b) if a < b else (b, a)
         if key not in self._distances:
-            d = self.ev.values[b] - self.ev.values[a]
-            d2 = np.einsum("ij,ij->i", d, d) if d.ndim == 2 else np.sum(d * d, axis=-1)
-            self._distances[key] = (np.sqrt(d2) / self.length).astype(self.dtype)
+            length = norm(self.ev.values[b] - self.ev.values[a])
+            length /= self.length
+            self._distances[key] = length.astype(self.dtype)
         return self._distances[key]
 
     def run(self, ids: Iterable[str], targets: frozenset[str]) -> ErrorEstimate:
@@ -207,9 +207,15 @@ class _Propagator:
             if not step.inputs:
                 rel = np.full(n, u, self.dtype)
             else:
-                rel = self.rel[step.inputs[0]] + u
-                for i in step.inputs[1:]:
-                    np.maximum(rel, self.rel[i] + u, out=rel)
+                # max(a + u, b + u) = max(a, b) + u exactly (rounding is monotonic): one sum
+                first, *rest = dict.fromkeys(step.inputs)
+                if rest:
+                    rel = np.maximum(self.rel[first], self.rel[rest[0]])
+                    for i in rest[1:]:
+                        np.maximum(rel, self.rel[i], out=rel)
+                    rel += u
+                else:
+                    rel = self.rel[first] + u
                 amplify = _AMPLIFY.get(step.op)
                 with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
                     if amplify is not None:

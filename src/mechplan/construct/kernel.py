@@ -39,19 +39,18 @@ def _f(x: Any) -> str:
 
 
 class _Gen:
-    """Source lines of the loop body, step by step.
-
-    Two bodies are built side by side: ``lines`` computes the values and every step's error
-    estimate; ``quick`` computes the same values (the same lines) and, instead of the estimates,
-    the product of the divisors below 1 that the estimates are divided by — from which a bound of
-    every estimate follows (see :func:`kernel_source`).
+    """Source lines of the loop body, step by step, in three parts: ``values`` (what the
+    evaluators compute), ``checks`` (the product of the divisors below 1 that the estimates are
+    divided by, from which a bound of every estimate follows: see :func:`kernel_source`) and
+    ``estimates`` (every step's error estimate, evaluated only where the bound does not decide).
     """
 
     def __init__(self, c: Construction, length: float) -> None:
         self.c = c
         self.idx: dict[str, int] = {}
-        self.lines: list[str] = []
-        self.quick: list[str] = []
+        self.values: list[str] = []
+        self.checks: list[str] = []
+        self.estimates: list[str] = []
         self.length = length
         self.distances: dict[tuple[str, str], str] = {}
         self.squares: dict[tuple[str, str], str] = {}
@@ -84,26 +83,26 @@ class _Gen:
         if name is None:
             name = self.distances[key] = f"_l{len(self.distances)}"
             (ax, ay), (bx, by) = self.pt(a), self.pt(b)
-            self.lines.extend((f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
-                               f"{name} = math.sqrt(_ex * _ex + _ey * _ey) / {_f(self.length)}"))
+            self.estimates.extend((
+                f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
+                f"{name} = math.sqrt(_ex * _ex + _ey * _ey) / {_f(self.length)}"))
         return name
 
     def square(self, a: str, b: str) -> str:
-        """(|b − a| over the mechanism's length)², once per pair (the quick body's divisor)."""
+        """(|b − a| over the mechanism's length)², once per pair (for the checks)."""
         key = self._key(a, b)
         name = self.squares.get(key)
         if name is None:
             name = self.squares[key] = f"_m{len(self.squares)}"
             (ax, ay), (bx, by) = self.pt(a), self.pt(b)
             inverse = _f(1.0 / (self.length * self.length))
-            self.quick.extend((f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
-                               f"{name} = (_ex * _ex + _ey * _ey) * {inverse}"))
+            self.checks.extend((f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
+                                f"{name} = (_ex * _ex + _ey * _ey) * {inverse}"))
         return name
 
     def emit(self, *lines: str) -> None:
-        """Value lines: the same in both bodies."""
-        self.lines.extend(lines)
-        self.quick.extend(lines)
+        """Lines that compute values."""
+        self.values.extend(lines)
 
     def step(self, s: Step) -> None:
         self.idx[s.id] = len(self.idx)
@@ -114,23 +113,23 @@ class _Gen:
         sine = gen(self, s, n)
         e = self.err(s.id)
         if not s.inputs:
-            self.lines.append(f"{e} = U")
+            self.estimates.append(f"{e} = U")
             return
         # max(a + U, b + U) = max(a, b) + U exactly (rounding is monotonic)
         terms = [self.err(i) for i in dict.fromkeys(s.inputs)]
         best = terms[0]
         for t in terms[1:]:
             best = f"max({best}, {t})"
-        self.lines.append(f"{e} = {best} + U")
+        self.estimates.append(f"{e} = {best} + U")
         amplify = _AMPLIFY.get(s.op)
         if amplify is not None:
             pair = amplify(s)
-            self.lines.append(f"{e} = _div({e}, {self.distance(*pair)})")
+            self.estimates.append(f"{e} = _div({e}, {self.distance(*pair)})")
             m = self.square(*pair)
-            self.quick.append(f"_qa = _qa * (1.0 if {m} >= 1.0 else {m})")
+            self.checks.append(f"_qa = _qa * (1.0 if {m} >= 1.0 else {m})")
         if sine is not None:
-            self.lines.append(f"{e} = _div({e}, {sine})")
-            self.quick.append(f"_qs = _qs * (1.0 if {sine} >= 1.0 else {sine})")
+            self.estimates.append(f"{e} = _div({e}, {sine})")
+            self.checks.append(f"_qs = _qs * (1.0 if {sine} >= 1.0 else {sine})")
 
 
 # -- scalar forms: each mirrors the vectorised evaluator in construct/ops.py ------------------
@@ -406,9 +405,7 @@ _DRIVERS = """
 
 #@jit
 def kernel(phi, tol, out, rel, bad, store):
-    if store:
-        return _full(phi, tol, out, rel, bad, True, 0, phi.shape[0])
-    return _quick(phi, tol, out, rel, bad, 0, phi.shape[0])
+    return _body(phi, tol, out, rel, bad, store, 0, phi.shape[0])
 
 
 #@parallel
@@ -419,10 +416,7 @@ def kernel_parallel(phi, tol, out, rel, bad, store, chunk):
     for c in prange(count):
         lo = c * chunk
         hi = min(n, lo + chunk)
-        if store:
-            each[c] = _full(phi, tol, out, rel, bad, True, lo, hi)
-        else:
-            each[c] = _quick(phi, tol, out, rel, bad, lo, hi)
+        each[c] = _body(phi, tol, out, rel, bad, store, lo, hi)
     status = 0
     for c in range(count):
         status |= each[c]
@@ -502,22 +496,28 @@ def _columns(kinds: Sequence[Kind]) -> tuple[tuple[slice | int, ...], int]:
     return tuple(cols), at
 
 
-def _indent(lines: Sequence[str]) -> list[str]:
-    return ["        " + line for line in lines]
+def _tree_sum(terms: Sequence[str]) -> str:
+    """A sum as a balanced tree: a short chain of dependent additions."""
+    if len(terms) == 1:
+        return terms[0]
+    half = len(terms) // 2
+    return f"({_tree_sum(terms[:half])} + {_tree_sum(terms[half:])})"
+
+
+def _indent(lines: Sequence[str], depth: int = 2) -> list[str]:
+    return ["    " * depth + line for line in lines]
 
 
 def kernel_source(c: Construction, targets: Sequence[str]) -> str:
     """Generate the source of the kernel that evaluates ``targets`` (and only their ancestors).
 
-    ``_full`` computes the values and every estimate (the relative estimates of the targets are
-    stored when asked for, and checked against 1 and the tolerance). ``_quick`` — a call that
-    does not store the estimates — computes the same values and proves most positions clean
-    without the estimates: a step's estimate is (the largest of its inputs' + U) divided by its
-    divisors (distances over the length, sines), so it is at most depth·U over the product of
-    the divisors below 1 along its ancestors, and every estimate is at most
-    B = steps·U / Π min(1, divisor) over all of them. A position where 2·B is at most both the
-    tolerance and ½ (and every value is finite) has no flag; any other one is evaluated again by
-    ``_full``, which decides it exactly — the same status bits, for fewer operations.
+    Each position's values are computed; the estimates only when stored or when a cheap bound
+    cannot show them small. A step's estimate is (the largest of its inputs' + U) divided by its
+    divisors (distances over the length, sines), so it is at most depth·U over the product of the
+    divisors below 1 along its ancestors, and every estimate is at most B = steps·U / Π min(1,
+    divisor) over all of them. A position where 2·B is at most both the tolerance and ½ (and
+    every value is finite) has no flag; at any other the estimates are evaluated and decide —
+    the same status bits as evaluating them everywhere, for fewer operations.
     """
     for sid in targets:
         if c[sid].kind is Kind.LINE:
@@ -525,13 +525,11 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
     g = _Gen(c, length_scale(c))
     for sid in c.ancestors(targets):
         g.step(c[sid])
-    full = ["#@jit", "def _full(phi, tol, out, rel, bad, store, lo, hi):", "    status = 0",
-            "    for i in range(lo, hi):", "        bad_i = False", *_indent(g.lines)]
-    quick = ["#@jit", "def _quick(phi, tol, out, rel, bad, lo, hi):", "    status = 0",
-             "    _thr = tol if tol < 0.5 else 0.5",
-             "    _thr2 = _thr * _thr if _thr > 0.0 else -1.0",
-             "    for i in range(lo, hi):", "        bad_i = False", "        _qa = 1.0",
-             "        _qs = 1.0", *_indent(g.quick)]
+    body = ["#@jit", "def _body(phi, tol, out, rel, bad, store, lo, hi):", "    status = 0",
+            "    _thr = tol if tol < 0.5 else 0.5",
+            "    _thr2 = _thr * _thr if _thr > 0.0 else -1.0",
+            "    for i in range(lo, hi):", "        bad_i = False", *_indent(g.values)]
+    estimates = list(g.estimates)
     sizes = plan_sizes(c)
     columns, _ = _columns([c[sid].kind for sid in targets])
     values: list[str] = []
@@ -539,37 +537,34 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
         scale = scale_of(c[sid], sizes)
         if isinstance(col, slice):
             x, y = g.pt(sid)
-            stores = [f"out[i, {col.start}] = {x}", f"out[i, {col.start + 1}] = {y}"]
+            body += _indent([f"out[i, {col.start}] = {x}", f"out[i, {col.start + 1}] = {y}"])
             size = f"math.sqrt({x} * {x} + {y} * {y})"
             values += [x, y]
         else:
-            stores = [f"out[i, {col}] = {g.name(sid)}"]
+            body += _indent([f"out[i, {col}] = {g.name(sid)}"])
             size = f"abs({g.name(sid)})"
             values.append(g.name(sid))
-        full += _indent(stores)
-        quick += _indent(stores)
         if scale > 0.0:
             # measured against the larger of the plan's scale and the result's own size
-            full.append(f"        _r = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
+            estimates.append(f"_r = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
         else:
-            full.append(f"        _r = {g.err(sid)}")
-        full += ["        if store:", f"            rel[i, {j}] = _r",
-                 f"        if not (_r < {_f(UNBOUNDED)}):", f"            status |= {CANNOT_TRUST}",
-                 "        if _r > tol:", f"            status |= {OVER_TOLERANCE}"]
-    full += ["        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
+            estimates.append(f"_r = {g.err(sid)}")
+        estimates += ["if store:", f"    rel[i, {j}] = _r", f"if not (_r < {_f(UNBOUNDED)}):",
+                      f"    status |= {CANNOT_TRUST}", "if _r > tol:",
+                      f"    status |= {OVER_TOLERANCE}"]
+    # a NaN (or ±inf) value: not shown clean, the estimates decide
+    body += ["        _qa = 1.0", "        _qs = 1.0", *_indent(g.checks),
+             f"        _chk = {_tree_sum(values)} * 0.0",
+             "        if store or not (NU2 <= _thr2 * (_qa * (_qs * _qs)) + _chk):",
+             *_indent(estimates, 3),
+             "        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
              "    return status"]
-    # NaN (or ±inf) in some value: not proven clean, decided by _full
-    quick += [f"        _chk = ({' + '.join(values)}) * 0.0", "        bad[i] = bad_i",
-              "        if bad_i:", f"            status |= {CANNOT_TRUST}",
-              "        if not (NU2 <= _thr2 * (_qa * (_qs * _qs)) + _chk):",
-              "            status |= _full(phi, tol, out, rel, bad, False, i, i + 1)",
-              "    return status"]
     u = float(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)
     drive = c.drive
     head = (_HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\nU = {_f(u)}\n"
             f"NU2 = {_f((2.0 * len(g.idx) * u) ** 2)}\n"
             f"MIN_SINE = {_f(1.0 / MAX_CONDITION)}\n\n\n")
-    return head + "\n".join(full) + "\n\n\n" + "\n".join(quick) + "\n" + _DRIVERS
+    return head + "\n".join(body) + "\n" + _DRIVERS
 
 
 def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) -> Kernel:
