@@ -23,7 +23,19 @@ def constant(step: Step, n: int) -> Result:
 
 def polar_point(step: Step, centre: Array, angle: Array) -> Result:
     """The crank pin: ``length`` from the centre at the angle (+ ``offset``)."""
-    return centre + step.param("length") * direction(angle + step.param("offset", 0.0)), None, None
+    a = angle + step.param("offset", 0.0)
+    if a.dtype != np.float64 or centre.dtype != np.float64:
+        return centre + step.param("length") * direction(a), None, None
+    # centre + length·(cos, sin), per component and in place: the same values
+    length = float(step.param("length"))
+    out = np.empty(np.broadcast_shapes(centre.shape[:-1], a.shape) + (2,))
+    t = np.cos(a)
+    t *= length
+    np.add(centre[..., 0], t, out=out[..., 0])
+    np.sin(a, out=t)
+    t *= length
+    np.add(centre[..., 1], t, out=out[..., 1])
+    return out, None, None
 
 
 def angle_of_segment(step: Step, start: Array, end: Array) -> Result:
