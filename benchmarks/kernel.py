@@ -51,6 +51,23 @@ def best(run: Callable[[], object], budget_s: float, max_runs: int = 50) -> floa
     return min(times)
 
 
+def load() -> str:
+    """The machine's 1-minute load average (a shared machine: read the ratios)."""
+    return f"{os.getloadavg()[0]:.2f}"
+
+
+def numba_version() -> str:
+    import numba
+
+    return str(numba.__version__)
+
+
+def threads() -> str:
+    import numba
+
+    return f"{numba.get_num_threads()} threads"
+
+
 def peak_mib(run: Callable[[], object]) -> float:
     """Peak traced memory of one run (numpy allocations are traced), MiB."""
     tracemalloc.start()
@@ -71,8 +88,10 @@ def main() -> None:
     budget = 0.5 if args.quick else 2.0
     lines = ["# Compiled construction: the public path against peers", "",
              f"Machine: {platform.machine()}, {os.cpu_count()} cores (shared), Python "
-             f"{platform.python_version()}, numpy {np.__version__}. Times per position in ns "
-             "(N = 1: per call in µs), best of repeated runs in one process.", "",
+             f"{platform.python_version()}, numpy {np.__version__}, numba {numba_version()} "
+             f"({threads()}). Times per position in ns "
+             "(N = 1: per call in µs), best of repeated runs in one process. Load average "
+             "(1 min) at the start of the run: " + load() + "; at its end: LOAD_AT_END.", "",
              "Like with like: numpy and fused are `Mechanism.solve(phi_deg, plans=kinematics, "
              "points=case.points, links=case.links)` — r, v, a of the case's points and angle, "
              "ω, ε of its links, as the closed form and pylinkage compute them (points and links: "
@@ -153,15 +172,20 @@ def main() -> None:
               "public numpy (all) |", "|---|---|---|---|---|---|", *memory_rows,
               "",
               "The fused path allocates only the requested outputs: one (N, width) block "
-              "(two columns a point, one a scalar) and the angles; the estimates are checked in "
-              "the kernel's loop and stored only when some result is flagged. The numpy path keeps "
-              "the values of every step the requested outputs need, and their estimates."]
+              "(two columns a point, one a scalar) and the angles; the estimates are bounded in "
+              "the kernel's loop (one product of the divisors a position's estimates are divided "
+              "by), evaluated only where that bound does not show them below the tolerance, and "
+              "stored only when some result is flagged. From 20 000 positions the kernel runs on "
+              "numba's threads. The numpy path keeps the values of every step the requested "
+              "outputs need; their estimates are propagated only when one bound of them all does "
+              "not show them below the tolerance."]
     if over_budget:
         lines += ["", "Not run (—): over the default memory budget of 2 GB "
                   "(`MECHPLAN_MEMORY_BUDGET`), refused before any work: "
                   + "; ".join(over_budget) + "."]
     out = ROOT / "benchmarks" / "KERNEL_RESULTS.md"
-    out.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    text = "\n".join(lines) + "\n"
+    out.write_text(text.replace("LOAD_AT_END", load()), encoding="utf-8")
     print(f"written {out}")
 
 
