@@ -16,14 +16,25 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from .estimate import ROUNDINGS_PER_STEP, UNBOUNDED, length_scale, plan_sizes, scale_of
 from .graph import Construction
-from .kernel_load import KernelUnavailable, load
+from .kernel_load import (
+    CANNOT_TRUST,
+    CHUNK,
+    DRIVERS,
+    HELPERS,
+    OVER_TOLERANCE,
+    PARALLEL_FROM,
+    Kernel,
+    KernelUnavailable,
+    indent,
+    load,
+    tree_sum,
+)
 from .step import Kind, Op, Step
 from .validity import MAX_CONDITION
 
@@ -369,120 +380,6 @@ _AMPLIFY: dict[Op, Callable[[Step], tuple[str, str]]] = {
     Op.OMEGA: _pair(0, 1), Op.EPSILON: _pair(0, 1), Op.SIMILAR_IMAGE: _pair(2, 3),
 }
 
-_HELPERS = """
-import math
-
-import numpy as np
-
-prange = range
-NAN = math.nan
-INF = math.inf
-
-
-#@jit
-def _div(a, b):
-    if b == 0.0:
-        if a != a or a == 0.0:
-            return NAN
-        return INF if (a > 0.0) == (math.copysign(1.0, b) > 0.0) else -INF
-    return a / b
-
-
-#@jit
-def _cdiv(a, b):
-    if b == 0.0:
-        return complex(NAN, NAN)
-    return a / b
-
-
-#@jit
-def _hyp(x, y):
-    return math.sqrt(x * x + y * y)
-
-"""
-
-_DRIVERS = """
-
-#@jit
-def kernel(phi, tol, out, rel, bad, store):
-    return _body(phi, tol, out, rel, bad, store, 0, phi.shape[0])
-
-
-#@parallel
-def kernel_parallel(phi, tol, out, rel, bad, store, chunk):
-    n = phi.shape[0]
-    count = (n + chunk - 1) // chunk
-    each = np.zeros(count, dtype=np.int64)
-    for c in prange(count):
-        lo = c * chunk
-        hi = min(n, lo + chunk)
-        each[c] = _body(phi, tol, out, rel, bad, store, lo, hi)
-    status = 0
-    for c in range(count):
-        status |= each[c]
-    return status
-"""
-
-#: positions from which a call runs on numba's threads (chunks of CHUNK positions each)
-PARALLEL_FROM = 20_000
-CHUNK = 4096
-
-
-@dataclass(frozen=True)
-class Kernel:
-    """A compiled construction: ``kernel(phi)`` → values and relative error estimates of the
-    outputs.
-
-    The outputs are the columns of one (N, width) block: a point takes two (x, y), a scalar one
-    (``columns[j]`` is target j's slice). While it loops, the kernel also finds whether any position
-    cannot be built or has an estimate ≥ 1 (status bit 1, :data:`CANNOT_TRUST`) and whether any
-    estimate exceeds the tolerance (status bit 2, :data:`OVER_TOLERANCE`), so the estimate matrix
-    need only be stored when a caller asks for it. From :data:`PARALLEL_FROM` positions on, a
-    compiled kernel runs chunks of positions on numba's threads (each chunk writes its own rows and
-    its own status, combined after the loop).
-    """
-
-    targets: tuple[str, ...]
-    kinds: tuple[Kind, ...]
-    columns: tuple[slice | int, ...]
-    width: int
-    source: str
-    function: Callable[..., int]
-    compiled: bool
-    parallel: Callable[..., int] | None = None
-
-    def run(self, phi: np.ndarray, tolerance: float = math.inf, store: bool = True
-            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
-        """Evaluate at φ (rad, float64, 1-D): the (N, width) block of outputs, the (N, targets)
-        relative estimates (stored only when ``store``; else an unused (1, targets) array), the
-        cannot-build mask and the status bits."""
-        n = phi.shape[0]
-        block = np.empty((n, self.width))
-        rel = np.empty((n if store else 1, len(self.targets)))
-        bad = np.empty(n, dtype=np.bool_)
-        if self.parallel is not None and n >= PARALLEL_FROM:
-            status = self.parallel(phi, tolerance, block, rel, bad, store, CHUNK)
-        else:
-            status = self.function(phi, tolerance, block, rel, bad, store)
-        return block, rel, bad, int(status)
-
-    def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
-                                                   np.ndarray]:
-        """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build
-        mask)."""
-        phi = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
-        block, rel, bad, _ = self.run(phi)
-        block.flags.writeable = False
-        values = {sid: block[:, col] for sid, col in zip(self.targets, self.columns)}
-        estimates = {sid: rel[:, j] for j, sid in enumerate(self.targets)}
-        return values, estimates, bad
-
-
-#: status bits of a kernel run
-CANNOT_TRUST = 1
-OVER_TOLERANCE = 2
-
-
 def _columns(kinds: Sequence[Kind]) -> tuple[tuple[slice | int, ...], int]:
     cols: list[slice | int] = []
     at = 0
@@ -494,18 +391,6 @@ def _columns(kinds: Sequence[Kind]) -> tuple[tuple[slice | int, ...], int]:
             cols.append(at)
             at += 1
     return tuple(cols), at
-
-
-def _tree_sum(terms: Sequence[str]) -> str:
-    """A sum as a balanced tree: a short chain of dependent additions."""
-    if len(terms) == 1:
-        return terms[0]
-    half = len(terms) // 2
-    return f"({_tree_sum(terms[:half])} + {_tree_sum(terms[half:])})"
-
-
-def _indent(lines: Sequence[str], depth: int = 2) -> list[str]:
-    return ["    " * depth + line for line in lines]
 
 
 def kernel_source(c: Construction, targets: Sequence[str]) -> str:
@@ -528,7 +413,7 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
     body = ["#@jit", "def _body(phi, tol, out, rel, bad, store, lo, hi):", "    status = 0",
             "    _thr = tol if tol < 0.5 else 0.5",
             "    _thr2 = _thr * _thr if _thr > 0.0 else -1.0",
-            "    for i in range(lo, hi):", "        bad_i = False", *_indent(g.values)]
+            "    for i in range(lo, hi):", "        bad_i = False", *indent(g.values)]
     estimates = list(g.estimates)
     sizes = plan_sizes(c)
     columns, _ = _columns([c[sid].kind for sid in targets])
@@ -537,11 +422,11 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
         scale = scale_of(c[sid], sizes)
         if isinstance(col, slice):
             x, y = g.pt(sid)
-            body += _indent([f"out[i, {col.start}] = {x}", f"out[i, {col.start + 1}] = {y}"])
+            body += indent([f"out[i, {col.start}] = {x}", f"out[i, {col.start + 1}] = {y}"])
             size = f"math.sqrt({x} * {x} + {y} * {y})"
             values += [x, y]
         else:
-            body += _indent([f"out[i, {col}] = {g.name(sid)}"])
+            body += indent([f"out[i, {col}] = {g.name(sid)}"])
             size = f"abs({g.name(sid)})"
             values.append(g.name(sid))
         if scale > 0.0:
@@ -553,18 +438,18 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
                       f"    status |= {CANNOT_TRUST}", "if _r > tol:",
                       f"    status |= {OVER_TOLERANCE}"]
     # a NaN (or ±inf) value: not shown clean, the estimates decide
-    body += ["        _qa = 1.0", "        _qs = 1.0", *_indent(g.checks),
-             f"        _chk = {_tree_sum(values)} * 0.0",
+    body += ["        _qa = 1.0", "        _qs = 1.0", *indent(g.checks),
+             f"        _chk = {tree_sum(values)} * 0.0",
              "        if store or not (NU2 <= _thr2 * (_qa * (_qs * _qs)) + _chk):",
-             *_indent(estimates, 3),
+             *indent(estimates, 3),
              "        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
              "    return status"]
     u = float(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)
     drive = c.drive
-    head = (_HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\nU = {_f(u)}\n"
+    head = (HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\nU = {_f(u)}\n"
             f"NU2 = {_f((2.0 * len(g.idx) * u) ** 2)}\n"
             f"MIN_SINE = {_f(1.0 / MAX_CONDITION)}\n\n\n")
-    return head + "\n".join(body) + "\n" + _DRIVERS
+    return head + "\n".join(body) + "\n" + DRIVERS
 
 
 def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) -> Kernel:
