@@ -173,7 +173,10 @@ def test_threaded_kernel_equals_the_serial_one(tmp_path, monkeypatch):
     # one position exactly through the pivot (cannot be built), in the last chunk
     phi[-5] = np.radians(270.0)
     for tol, store in ((1e-6, False), (1e-6, True), (1e-300, False)):
-        block, rel, bad, status = kernel.run(phi, tol, store)          # on numba's threads
+        block = np.empty((n, kernel.width))
+        rel = np.empty((n if store else 1, len(kernel.targets)))
+        bad = np.empty(n, dtype=np.bool_)
+        status = kernel.parallel(phi, tol, block, rel, bad, store, CHUNK)   # numba's threads
         sb, srel = np.empty_like(block), np.empty_like(rel)
         sbad = np.empty_like(bad)
         serial = kernel.function(phi, tol, sb, srel, sbad, store)
@@ -182,3 +185,15 @@ def test_threaded_kernel_equals_the_serial_one(tmp_path, monkeypatch):
         if store:
             assert np.array_equal(rel, srel, equal_nan=True)
             assert bad[-5] or not (rel[-5] < 1.0).all()
+
+
+def test_threads_only_on_spare_cores(monkeypatch):
+    import os
+
+    from mechplan.construct.kernel_load import spare_cores
+
+    monkeypatch.setattr(os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(os, "getloadavg", lambda: (0.9, 0.0, 0.0))     # only this process
+    assert spare_cores() == 2.0
+    monkeypatch.setattr(os, "getloadavg", lambda: (2.1, 0.0, 0.0))     # and another one
+    assert spare_cores() < 1.5

@@ -83,9 +83,22 @@ def kernel_parallel(phi, tol, out, rel, bad, store, chunk):
     return status
 """
 
-#: positions from which a call runs on numba's threads (chunks of CHUNK positions each)
+#: positions from which a call runs on numba's threads (chunks of CHUNK positions each), when
+#: the machine has a spare core
 PARALLEL_FROM = 20_000
 CHUNK = 4096
+
+
+def spare_cores() -> float:
+    """Cores not busy with other work: the core count less the load average, this process's own
+    share (one core while it computes) given back. Threads on cores busy with other processes
+    make a run slower than one thread, not faster."""
+    count = os.cpu_count() or 1
+    try:
+        busy = os.getloadavg()[0]
+    except OSError:                   # no load average on this system: trust the core count
+        return float(count)
+    return count - max(busy - 1.0, 0.0)
 
 
 def tree_sum(terms: Sequence[str]) -> str:
@@ -132,8 +145,16 @@ class Kernel:
         block = np.empty((n, self.width))
         rel = np.empty((n if store else 1, len(self.targets)))
         bad = np.empty(n, dtype=np.bool_)
-        if self.parallel is not None and n >= PARALLEL_FROM:
-            status = self.parallel(phi, tolerance, block, rel, bad, store, CHUNK)
+        if self.parallel is not None and n >= PARALLEL_FROM and spare_cores() >= 1.5:
+            import numba
+
+            # dynamic scheduling, one chunk at a time: a thread that shares its core with another
+            # process takes fewer chunks (set from here: inside, it would keep numba from caching)
+            previous = numba.set_parallel_chunksize(1)
+            try:
+                status = self.parallel(phi, tolerance, block, rel, bad, store, CHUNK)
+            finally:
+                numba.set_parallel_chunksize(previous)
         else:
             status = self.function(phi, tolerance, block, rel, bad, store)
         return block, rel, bad, int(status)
