@@ -34,6 +34,8 @@ from mechplan_bench.model import Model
 from mechplan_bench.peers import installed, pylinkage_runner
 
 import mechplan
+from mechplan.construct.kernel import PARALLEL_FROM
+from mechplan.construct.kernel_load import spare_cores
 from mechplan.fast import numba_available
 from mechplan.limits import LimitError
 
@@ -96,7 +98,9 @@ def main() -> None:
              "points=case.points, links=case.links)` — r, v, a of the case's points and angle, "
              "ω, ε of its links, as the closed form and pylinkage compute them (points and links: "
              "`benchmarks/mechplan_bench/config.py` CASES). The \"all\" columns are the default "
-             "`solve()`: every point and link of the template.", "",
+             "`solve()`: every point and link of the template. ‡: the fused kernel ran on "
+             "numba's threads (from 20 000 positions, when the load average left a spare core "
+             "as the row began); unmarked rows ran on one thread.", "",
              "| mechanism | N | public numpy | public fused | public numpy (all) | "
              "public fused (all) | closed form (numpy) | pylinkage+numba | fused / closed form "
              "| fused / pylinkage | numpy / closed form |",
@@ -138,6 +142,7 @@ def main() -> None:
                     runs[k] = None
                     over_budget.append(f"{name}, N = {n:,}: public {k.replace('_', ' (')}"
                                        f"{')' if '_' in k else ''}")
+            threaded = n >= PARALLEL_FROM and spare_cores() >= 1.5
             t = {k: (best(r, budget) if r is not None else math.nan) for k, r in runs.items()}
             scale = 1e6 if n == 1 else 1e9 / n
             unit = " µs" if n == 1 else ""
@@ -149,8 +154,9 @@ def main() -> None:
 
             def ratio(a: float, b: float) -> str:
                 return "—" if math.isnan(a) or math.isnan(b) else f"{a / b:.2f}×"
-            lines.append(f"| {name} | {n:,} | {cell(t['numpy'])} | {cell(t['fused'])} | "
-                         f"{cell(t['numpy_all'])} | {cell(t['fused_all'])} | "
+            mark = " ‡" if threaded else ""
+            lines.append(f"| {name} | {n:,} | {cell(t['numpy'])} | {cell(t['fused'])}{mark} | "
+                         f"{cell(t['numpy_all'])} | {cell(t['fused_all'])}{mark} | "
                          f"{cell(t['closed'])} | {cell(t['pylinkage'])} | "
                          f"{ratio(t['fused'], t['closed'])} | {ratio(t['fused'], t['pylinkage'])} "
                          f"| {ratio(t['numpy'], t['closed'])} |")
