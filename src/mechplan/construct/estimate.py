@@ -231,7 +231,7 @@ class _Propagator:
         done = [sid for sid in ids if sid in self.ev.values]
         n = self.ev.n
         product = np.ones(n)
-        clipped: dict[int, tuple[Array, Array]] = {}
+        clipped = np.empty(n)                   # one buffer: min(1, divisor), NaN stays NaN
         with np.errstate(invalid="ignore"):
             for sid in done:
                 step = self.c[sid]
@@ -247,9 +247,8 @@ class _Propagator:
                 if sine is not None:
                     divisors.append(sine)
                 for d in divisors:
-                    if id(d) not in clipped:
-                        clipped[id(d)] = (d, np.minimum(d, 1.0))    # NaN stays NaN
-                    product *= clipped[id(d)][1]
+                    np.minimum(d, 1.0, out=clipped)
+                    product *= clipped
             with np.errstate(divide="ignore"):
                 out._all = float(np.max(2.0 * len(done) * self.u / product)) if n else 0.0
         out._ids = frozenset(done)
