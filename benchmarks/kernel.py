@@ -182,7 +182,7 @@ def main() -> None:
               "the kernel's loop (one product of the divisors a position's estimates are divided "
               "by), evaluated only where that bound does not show them below the tolerance, and "
               "stored only when some result is flagged. From 20 000 positions the kernel runs on "
-              "numba's threads. The numpy path keeps the values of every step the requested "
+              "numba's threads when the load leaves a spare core (‡). The numpy path keeps the values of every step the requested "
               "outputs need; their estimates are propagated only when one bound of them all does "
               "not show them below the tolerance."]
     if over_budget:
