@@ -34,6 +34,8 @@ from mechplan_bench.model import Model
 from mechplan_bench.peers import installed, pylinkage_runner
 
 import mechplan
+from mechplan.construct.kernel import PARALLEL_FROM
+from mechplan.construct.kernel_load import spare_cores
 from mechplan.fast import numba_available
 from mechplan.limits import LimitError
 
@@ -49,6 +51,23 @@ def best(run: Callable[[], object], budget_s: float, max_runs: int = 50) -> floa
         run()
         times.append(time.perf_counter() - t0)
     return min(times)
+
+
+def load() -> str:
+    """The machine's 1-minute load average (a shared machine: read the ratios)."""
+    return f"{os.getloadavg()[0]:.2f}"
+
+
+def numba_version() -> str:
+    import numba
+
+    return str(numba.__version__)
+
+
+def threads() -> str:
+    import numba
+
+    return f"{numba.get_num_threads()} threads"
 
 
 def peak_mib(run: Callable[[], object]) -> float:
@@ -71,13 +90,17 @@ def main() -> None:
     budget = 0.5 if args.quick else 2.0
     lines = ["# Compiled construction: the public path against peers", "",
              f"Machine: {platform.machine()}, {os.cpu_count()} cores (shared), Python "
-             f"{platform.python_version()}, numpy {np.__version__}. Times per position in ns "
-             "(N = 1: per call in µs), best of repeated runs in one process.", "",
+             f"{platform.python_version()}, numpy {np.__version__}, numba {numba_version()} "
+             f"({threads()}). Times per position in ns "
+             "(N = 1: per call in µs), best of repeated runs in one process. Load average "
+             "(1 min) at the start of the run: " + load() + "; at its end: LOAD_AT_END.", "",
              "Like with like: numpy and fused are `Mechanism.solve(phi_deg, plans=kinematics, "
              "points=case.points, links=case.links)` — r, v, a of the case's points and angle, "
              "ω, ε of its links, as the closed form and pylinkage compute them (points and links: "
              "`benchmarks/mechplan_bench/config.py` CASES). The \"all\" columns are the default "
-             "`solve()`: every point and link of the template.", "",
+             "`solve()`: every point and link of the template. ‡: the fused kernel ran on "
+             "numba's threads (from 20 000 positions, when the load average left a spare core "
+             "as the row began); unmarked rows ran on one thread.", "",
              "| mechanism | N | public numpy | public fused | public numpy (all) | "
              "public fused (all) | closed form (numpy) | pylinkage+numba | fused / closed form "
              "| fused / pylinkage | numpy / closed form |",
@@ -119,6 +142,7 @@ def main() -> None:
                     runs[k] = None
                     over_budget.append(f"{name}, N = {n:,}: public {k.replace('_', ' (')}"
                                        f"{')' if '_' in k else ''}")
+            threaded = n >= PARALLEL_FROM and spare_cores() >= 1.5
             t = {k: (best(r, budget) if r is not None else math.nan) for k, r in runs.items()}
             scale = 1e6 if n == 1 else 1e9 / n
             unit = " µs" if n == 1 else ""
@@ -130,8 +154,9 @@ def main() -> None:
 
             def ratio(a: float, b: float) -> str:
                 return "—" if math.isnan(a) or math.isnan(b) else f"{a / b:.2f}×"
-            lines.append(f"| {name} | {n:,} | {cell(t['numpy'])} | {cell(t['fused'])} | "
-                         f"{cell(t['numpy_all'])} | {cell(t['fused_all'])} | "
+            mark = " ‡" if threaded else ""
+            lines.append(f"| {name} | {n:,} | {cell(t['numpy'])} | {cell(t['fused'])}{mark} | "
+                         f"{cell(t['numpy_all'])} | {cell(t['fused_all'])}{mark} | "
                          f"{cell(t['closed'])} | {cell(t['pylinkage'])} | "
                          f"{ratio(t['fused'], t['closed'])} | {ratio(t['fused'], t['pylinkage'])} "
                          f"| {ratio(t['numpy'], t['closed'])} |")
@@ -153,15 +178,20 @@ def main() -> None:
               "public numpy (all) |", "|---|---|---|---|---|---|", *memory_rows,
               "",
               "The fused path allocates only the requested outputs: one (N, width) block "
-              "(two columns a point, one a scalar) and the angles; the estimates are checked in "
-              "the kernel's loop and stored only when some result is flagged. The numpy path keeps "
-              "the values of every step the requested outputs need, and their estimates."]
+              "(two columns a point, one a scalar) and the angles; the estimates are bounded in "
+              "the kernel's loop (one product of the divisors a position's estimates are divided "
+              "by), evaluated only where that bound does not show them below the tolerance, and "
+              "stored only when some result is flagged. From 20 000 positions the kernel runs on "
+              "numba's threads when the load leaves a spare core (‡). The numpy path keeps the values of every step the requested "
+              "outputs need; their estimates are propagated only when one bound of them all does "
+              "not show them below the tolerance."]
     if over_budget:
         lines += ["", "Not run (—): over the default memory budget of 2 GB "
                   "(`MECHPLAN_MEMORY_BUDGET`), refused before any work: "
                   + "; ".join(over_budget) + "."]
     out = ROOT / "benchmarks" / "KERNEL_RESULTS.md"
-    out.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    text = "\n".join(lines) + "\n"
+    out.write_text(text.replace("LOAD_AT_END", load()), encoding="utf-8")
     print(f"written {out}")
 
 

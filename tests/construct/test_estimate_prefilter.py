@@ -63,3 +63,34 @@ def test_bound_says_no_for_a_regular_mechanism_far_below_the_threshold():
     ev.evaluate_all(targets)
     est = estimate_errors(c, ev, targets)
     assert not any(est.may_exceed(sid, 1e-6) for sid in targets)
+
+
+@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+def test_one_bound_of_every_bound_holds_and_spares_the_propagation(path):
+    # _all bounds every step's bound at every position; for a regular mechanism it is far below
+    # the default tolerance, so flags and refusals need no propagation at all
+    scene = load_scene(path)
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    ev = c.evaluate(np.radians(np.arange(0.0, 360.0, 5.0)))
+    ev.evaluate_all(targets)
+    est = estimate_errors(c, ev, targets)
+    assert not any(est.may_exceed(sid, 1e-6) for sid in targets)
+    assert est._fill is not None                        # nothing propagated
+    assert 0.0 < est._all < 1e-6
+    worst = max(float(np.max(est.relative(sid))) for sid in targets)
+    assert est._fill is None
+    assert worst <= est._all / 2.0 * (1.0 + 1e-5), (worst, est._all)
+    every = max(float(np.max(rel)) for rel in est.relative_of.values())
+    assert every <= est._all / 2.0 * (1.0 + 1e-5)
+
+
+def test_one_bound_at_a_singular_position_is_not_finite_or_large():
+    scene = parse_scene(SLOTTED_THROUGH_PIVOT, "pivot.toml")
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    ev = c.evaluate(np.radians([200.0, 270.0]))
+    ev.evaluate_all(targets)
+    est = estimate_errors(c, ev, targets)
+    assert not est._all <= 1.0
+    assert any(est.may_exceed(sid, 1.0) for sid in targets)

@@ -13,7 +13,12 @@ from construct.test_error_estimates import SLOTTED_THROUGH_PIVOT
 from scenes import TEMPLATES
 
 from mechplan.construct.estimate import estimate_errors
-from mechplan.construct.kernel import KernelUnavailable, compile_kernel
+from mechplan.construct.kernel import (
+    CANNOT_TRUST,
+    OVER_TOLERANCE,
+    KernelUnavailable,
+    compile_kernel,
+)
 from mechplan.construct.trust import failures
 from mechplan.scene import load_scene, parse_scene
 from mechplan.solve import build, targets_for
@@ -107,3 +112,88 @@ def test_status_bits_say_what_the_stored_estimates_say():
         assert block.shape == (len(deg), kernel.width)
         seen |= status
     assert seen == CANNOT_TRUST | OVER_TOLERANCE          # both bits were exercised
+
+
+def _statuses(kernel, phi, tol):
+    """(block, bad, status) of the quick body (estimates not stored) and of the full body."""
+    quick = kernel.run(phi, tol, store=False)
+    full = kernel.run(phi, tol, store=True)
+    return quick, full
+
+
+@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+def test_quick_body_decides_like_the_full_body(path):
+    # the quick body skips the estimates where a bound proves them small; every status bit and
+    # value must be the full body's, at a tolerance that nothing meets (every position falls
+    # back), one that everything meets, and one in between
+    scene = load_scene(path)
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    kernel = compile_kernel(c, targets, jit=False)
+    phi = PHI[::4]
+    _, full_rel, _, _ = kernel.run(phi, 1e-6, store=True)
+    middle = float(np.median(full_rel))
+    for tol in (1e-300, 1e-6, middle, np.inf):
+        (qb, qbad, qs), (fb, fbad, fs) = ((b, bad, s) for b, _, bad, s in _statuses(kernel, phi,
+                                                                                      tol))
+        assert qs == fs, (tol, qs, fs)
+        assert np.array_equal(qbad, fbad)
+        assert np.array_equal(qb, fb, equal_nan=True)
+
+
+def test_quick_body_at_singular_positions_and_odd_tolerances():
+    scene = parse_scene(SLOTTED_THROUGH_PIVOT, "pivot.toml")
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    kernel = compile_kernel(c, targets, jit=False)
+    phi = np.radians(np.concatenate((np.arange(0.0, 360.0, 7.0), [270.0, 269.9999, 270.1])))
+    seen = 0
+    for tol in (-1.0, 0.0, 1e-12, 1e-6, 0.7, np.nan, np.inf):
+        (qb, qbad, qs), (fb, fbad, fs) = ((b, bad, s) for b, _, bad, s in _statuses(kernel, phi,
+                                                                                      tol))
+        assert qs == fs, (tol, qs, fs)
+        assert np.array_equal(qbad, fbad)
+        assert np.array_equal(qb, fb, equal_nan=True)
+        seen |= qs
+    assert seen == CANNOT_TRUST | OVER_TOLERANCE
+
+
+def test_threaded_kernel_equals_the_serial_one(tmp_path, monkeypatch):
+    pytest.importorskip("numba", reason="the fast extra (numba) is optional")
+    from mechplan.construct.kernel import CHUNK, PARALLEL_FROM
+
+    monkeypatch.setenv("MECHPLAN_CACHE", str(tmp_path))
+    scene = parse_scene(SLOTTED_THROUGH_PIVOT, "pivot.toml")
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    kernel = compile_kernel(c, targets)
+    assert kernel.parallel is not None
+    n = PARALLEL_FROM + CHUNK // 3                      # a last chunk shorter than the others
+    phi = np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
+    # one position exactly through the pivot (cannot be built), in the last chunk
+    phi[-5] = np.radians(270.0)
+    for tol, store in ((1e-6, False), (1e-6, True), (1e-300, False)):
+        block = np.empty((n, kernel.width))
+        rel = np.empty((n if store else 1, len(kernel.targets)))
+        bad = np.empty(n, dtype=np.bool_)
+        status = kernel.parallel(phi, tol, block, rel, bad, store, CHUNK)   # numba's threads
+        sb, srel = np.empty_like(block), np.empty_like(rel)
+        sbad = np.empty_like(bad)
+        serial = kernel.function(phi, tol, sb, srel, sbad, store)
+        assert status == serial and status & CANNOT_TRUST
+        assert np.array_equal(block, sb, equal_nan=True) and np.array_equal(bad, sbad)
+        if store:
+            assert np.array_equal(rel, srel, equal_nan=True)
+            assert bad[-5] or not (rel[-5] < 1.0).all()
+
+
+def test_threads_only_on_spare_cores(monkeypatch):
+    import os
+
+    from mechplan.construct.kernel_load import spare_cores
+
+    monkeypatch.setattr(os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(os, "getloadavg", lambda: (0.9, 0.0, 0.0))     # only this process
+    assert spare_cores() == 2.0
+    monkeypatch.setattr(os, "getloadavg", lambda: (2.1, 0.0, 0.0))     # and another one
+    assert spare_cores() < 1.5

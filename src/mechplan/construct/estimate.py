@@ -17,12 +17,12 @@ meaningful relative error.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..geom.vec import Array
+from ..geom.vec import Array, norm
 from .graph import Construction, Evaluation
 from .ops import Op
 from .step import Kind, Plan, Step
@@ -39,7 +39,11 @@ ROUNDINGS_PER_STEP = 2.0
 @dataclass
 class ErrorEstimate:
     """Relative error bounds per step id (float32, NaN/inf where no bound exists) and their
-    scales."""
+    scales.
+
+    The bounds are propagated when first needed: one bound of all of them, computed with the
+    values (:meth:`may_exceed`), usually shows that none can exceed a threshold.
+    """
 
     relative_of: dict[str, Array] = field(default_factory=dict)
     scale: dict[str, float] = field(default_factory=dict)
@@ -50,9 +54,20 @@ class ErrorEstimate:
     _divisor: dict[str, Array] = field(default_factory=dict, repr=False)    # memo of divisor()
     _relative: dict[str, Array] = field(default_factory=dict, repr=False)   # memo of relative()
     _bound: dict[str, float] = field(default_factory=dict, repr=False)      # of may_exceed()
+    #: the step ids that have a bound, a bound of all their bounds at every position (see
+    #: _Propagator.run), and what fills relative_of when first needed
+    _ids: frozenset[str] = field(default_factory=frozenset, repr=False)
+    _all: float = field(default=math.nan, repr=False)
+    _fill: Callable[[], None] | None = field(default=None, repr=False)
 
     def __contains__(self, step_id: str) -> bool:
-        return step_id in self.relative_of
+        return step_id in self._ids or step_id in self.relative_of
+
+    def _ensure(self) -> None:
+        """Propagate the bounds (once)."""
+        if self._fill is not None:
+            fill, self._fill = self._fill, None
+            fill()
 
     def divisor(self, step_id: str) -> Array | None:
         """max(1, |value| / scale) of a result at every position (None: not a result)."""
@@ -70,6 +85,7 @@ class ErrorEstimate:
         """
         if step_id in self._relative:
             return self._relative[step_id]
+        self._ensure()
         rel = self.relative_of[step_id].astype(float)
         divisor = self.divisor(step_id)
         if divisor is not None:
@@ -86,18 +102,23 @@ class ErrorEstimate:
         Cheap: the divisor is at least 1 (or NaN, from a NaN value), so the relative error is at
         most the bound against the plan's scale alone, and is computed only when that can exceed.
         """
+        value = self.results.get(step_id)
+        finite = value is None or not value.size or math.isfinite(float(value.sum()))
+        if finite and self._all <= threshold:
+            return False        # below the bound of every step's bound (NaN: not known)
         bound = self._bound.get(step_id)
         if bound is None:
+            self._ensure()
             rel = self.relative_of[step_id]
             bound = float(rel.max()) if rel.size else 0.0      # NaN when some bound is NaN
-            value = self.results.get(step_id)
-            if value is not None and value.size and not math.isfinite(float(value.sum())):
+            if not finite:
                 bound = math.inf      # a NaN value (or an infinite one): look position by position
             self._bound[step_id] = bound
         return not bound <= threshold
 
     def absolute(self, step_id: str) -> Array:
         """Estimated absolute error of a step in its own units (m, m/s, rad/s, N …)."""
+        self._ensure()
         rel = self.relative_of[step_id].astype(float)
         return np.where(np.isnan(rel), np.inf, rel) * self.scale[step_id]
 
@@ -192,25 +213,67 @@ class _Propagator:
         """|b − a| of two point steps, relative to the mechanism's length (memoised per pair)."""
         key = (a, b) if a < b else (b, a)
         if key not in self._distances:
-            d = self.ev.values[b] - self.ev.values[a]
-            d2 = np.einsum("ij,ij->i", d, d) if d.ndim == 2 else np.sum(d * d, axis=-1)
-            self._distances[key] = (np.sqrt(d2) / self.length).astype(self.dtype)
+            length = norm(self.ev.values[b] - self.ev.values[a])
+            length /= self.length
+            self._distances[key] = length.astype(self.dtype)
         return self._distances[key]
 
     def run(self, ids: Iterable[str], targets: frozenset[str]) -> ErrorEstimate:
+        """The estimate of the evaluated ``ids``: scales and results now, bounds when needed.
+
+        A step's bound is (the largest of its inputs' bounds + u) divided by its divisors (the
+        distance of its spec's lever, a meet's sine), so it is at most depth·u over the product
+        of the divisors below 1 along its ancestors, and every bound at a position is at most
+        steps·u / Π min(1, divisor) over all the steps. Twice that (for the roundings of float32)
+        is ``_all``'s value at the position; :meth:`ErrorEstimate.may_exceed` compares its
+        largest value with the threshold before propagating anything.
+        """
         out = ErrorEstimate(dtype=self.dtype)
+        done = [sid for sid in ids if sid in self.ev.values]
+        n = self.ev.n
+        product = np.ones(n)
+        clipped = np.empty(n)                   # one buffer: min(1, divisor), NaN stays NaN
+        with np.errstate(invalid="ignore"):
+            for sid in done:
+                step = self.c[sid]
+                scale = self.scale_of(step)
+                out.scale[sid] = scale
+                if sid in targets and scale > 0.0:
+                    out.results[sid] = self.ev.values[sid]
+                if not step.inputs:
+                    continue
+                lever = step.op.lever_of(step)     # a direction or rate taken from two points
+                divisors = [] if lever is None else [self.distance(*lever)]
+                sine = self.ev.sines.get(sid)
+                if sine is not None:
+                    divisors.append(sine)
+                for d in divisors:
+                    np.minimum(d, 1.0, out=clipped)
+                    product *= clipped
+            with np.errstate(divide="ignore"):
+                out._all = float(np.max(2.0 * len(done) * self.u / product)) if n else 0.0
+        out._ids = frozenset(done)
+        out._fill = lambda: self._propagate(done, out)
+        return out
+
+    def _propagate(self, ids: list[str], out: ErrorEstimate) -> None:
+        """Every step's bound, in construction order."""
         n, u = self.ev.n, self.dtype(self.u)
         for sid in ids:
-            if sid not in self.ev.values:
-                continue
             step = self.c[sid]
             rel: Array
             if not step.inputs:
                 rel = np.full(n, u, self.dtype)
             else:
-                rel = self.rel[step.inputs[0]] + u
-                for i in step.inputs[1:]:
-                    np.maximum(rel, self.rel[i] + u, out=rel)
+                # max(a + u, b + u) = max(a, b) + u exactly (rounding is monotonic): one sum
+                first, *rest = dict.fromkeys(step.inputs)
+                if rest:
+                    rel = np.maximum(self.rel[first], self.rel[rest[0]])
+                    for i in rest[1:]:
+                        np.maximum(rel, self.rel[i], out=rel)
+                    rel += u
+                else:
+                    rel = self.rel[first] + u
                 lever = step.op.lever_of(step)     # a direction or rate taken from two points
                 with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
                     if lever is not None:
@@ -219,12 +282,7 @@ class _Propagator:
                     if sine is not None:
                         np.divide(rel, sine, out=rel, casting="same_kind")
             self.rel[sid] = rel
-            scale = self.scale_of(step)
             out.relative_of[sid] = rel
-            out.scale[sid] = scale
-            if sid in targets and scale > 0.0:
-                out.results[sid] = self.ev.values[sid]
-        return out
 
 
 def _magnitude_divisor(value: Array, scale: float, dtype: type) -> Array:

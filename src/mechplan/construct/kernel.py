@@ -18,14 +18,26 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from .estimate import ROUNDINGS_PER_STEP, UNBOUNDED, length_scale, plan_sizes, scale_of
 from .graph import Construction
-from .kernel_load import KernelUnavailable, KernelUnsupported, load
+from .kernel_load import (
+    CANNOT_TRUST,
+    CHUNK,
+    DRIVERS,
+    HELPERS,
+    OVER_TOLERANCE,
+    PARALLEL_FROM,
+    Kernel,
+    KernelUnavailable,
+    KernelUnsupported,
+    indent,
+    load,
+    tree_sum,
+)
 from .ops import Op, OpSpec
 from .step import Kind, Step
 from .validity import MAX_CONDITION
@@ -42,14 +54,21 @@ def _f(x: Any) -> str:
 
 
 class _Gen:
-    """Source lines of the loop body, step by step."""
+    """Source lines of the loop body, step by step, in three parts: ``values`` (what the
+    evaluators compute), ``checks`` (the product of the divisors below 1 that the estimates are
+    divided by, from which a bound of every estimate follows: see :func:`kernel_source`) and
+    ``estimates`` (every step's error estimate, evaluated only where the bound does not decide).
+    """
 
     def __init__(self, c: Construction, length: float) -> None:
         self.c = c
         self.idx: dict[str, int] = {}
-        self.lines: list[str] = []
+        self.values: list[str] = []
+        self.checks: list[str] = []
+        self.estimates: list[str] = []
         self.length = length
         self.distances: dict[tuple[str, str], str] = {}
+        self.squares: dict[tuple[str, str], str] = {}
 
     def name(self, sid: str) -> str:
         return f"v{self.idx[sid]}"
@@ -65,23 +84,40 @@ class _Gen:
     def err(self, sid: str) -> str:
         return f"e{self.idx[sid]}"
 
+    def _key(self, a: str, b: str) -> tuple[str, str]:
+        return (a, b) if a < b else (b, a)
+
     def distance(self, a: str, b: str) -> str:
         """|b − a| over the mechanism's length, computed once per pair of points.
 
         An error estimate, not a value: like the numpy path's estimates it is √(dx² + dy²),
         which needs no call of hypot.
         """
-        key = (a, b) if a < b else (b, a)
+        key = self._key(a, b)
         name = self.distances.get(key)
         if name is None:
             name = self.distances[key] = f"_l{len(self.distances)}"
             (ax, ay), (bx, by) = self.pt(a), self.pt(b)
-            self.emit(f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
-                      f"{name} = math.sqrt(_ex * _ex + _ey * _ey) / {_f(self.length)}")
+            self.estimates.extend((
+                f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
+                f"{name} = math.sqrt(_ex * _ex + _ey * _ey) / {_f(self.length)}"))
+        return name
+
+    def square(self, a: str, b: str) -> str:
+        """(|b − a| over the mechanism's length)², once per pair (for the checks)."""
+        key = self._key(a, b)
+        name = self.squares.get(key)
+        if name is None:
+            name = self.squares[key] = f"_m{len(self.squares)}"
+            (ax, ay), (bx, by) = self.pt(a), self.pt(b)
+            inverse = _f(1.0 / (self.length * self.length))
+            self.checks.extend((f"_ex = {bx} - {ax}", f"_ey = {by} - {ay}",
+                                f"{name} = (_ex * _ex + _ey * _ey) * {inverse}"))
         return name
 
     def emit(self, *lines: str) -> None:
-        self.lines.extend(lines)
+        """Lines that compute values."""
+        self.values.extend(lines)
 
     def step(self, s: Step) -> None:
         self.idx[s.id] = len(self.idx)
@@ -92,16 +128,22 @@ class _Gen:
         sine = gen(self, s, n)
         e = self.err(s.id)
         if not s.inputs:
-            self.emit(f"{e} = U")
-        else:
-            self.emit(f"{e} = {self.err(s.inputs[0])} + U")
-            for i in s.inputs[1:]:
-                self.emit(f"{e} = max({e}, {self.err(i)} + U)")
-            amplify = s.op.lever_of(s)      # the spec's lever, as the numpy estimate reads it
-            if amplify is not None:
-                self.emit(f"{e} = _div({e}, {self.distance(*amplify)})")
-            if sine is not None:
-                self.emit(f"{e} = _div({e}, {sine})")
+            self.estimates.append(f"{e} = U")
+            return
+        # max(a + U, b + U) = max(a, b) + U exactly (rounding is monotonic)
+        terms = [self.err(i) for i in dict.fromkeys(s.inputs)]
+        best = terms[0]
+        for t in terms[1:]:
+            best = f"max({best}, {t})"
+        self.estimates.append(f"{e} = {best} + U")
+        pair = s.op.lever_of(s)      # the spec's lever, as the numpy estimate reads it
+        if pair is not None:
+            self.estimates.append(f"{e} = _div({e}, {self.distance(*pair)})")
+            m = self.square(*pair)
+            self.checks.append(f"_qa = _qa * (1.0 if {m} >= 1.0 else {m})")
+        if sine is not None:
+            self.estimates.append(f"{e} = _div({e}, {sine})")
+            self.checks.append(f"_qs = _qs * (1.0 if {sine} >= 1.0 else {sine})")
 
 
 # -- scalar forms: each mirrors the vectorised evaluator in construct/ops.py ------------------
@@ -333,80 +375,6 @@ _OPS: dict[OpSpec, Gen] = {
 }
 
 
-_HELPERS = '''
-import math
-NAN = math.nan
-INF = math.inf
-
-
-def _div(a, b):
-    if b == 0.0:
-        if a != a or a == 0.0:
-            return NAN
-        return INF if (a > 0.0) == (math.copysign(1.0, b) > 0.0) else -INF
-    return a / b
-
-
-def _cdiv(a, b):
-    if b == 0.0:
-        return complex(NAN, NAN)
-    return a / b
-
-
-def _hyp(x, y):
-    return math.hypot(x, y)
-
-'''
-
-
-@dataclass(frozen=True)
-class Kernel:
-    """A compiled construction: ``kernel(phi)`` → values and relative error estimates of the
-    outputs.
-
-    The outputs are the columns of one (N, width) block: a point takes two (x, y), a scalar one
-    (``columns[j]`` is target j's slice). While it loops, the kernel also finds whether any position
-    cannot be built or has an estimate ≥ 1 (status bit 1, :data:`CANNOT_TRUST`) and whether any
-    estimate exceeds the tolerance (status bit 2, :data:`OVER_TOLERANCE`), so the estimate matrix
-    need only be stored when a caller asks for it.
-    """
-
-    targets: tuple[str, ...]
-    kinds: tuple[Kind, ...]
-    columns: tuple[slice | int, ...]
-    width: int
-    source: str
-    function: Callable[..., int]
-    compiled: bool
-
-    def run(self, phi: np.ndarray, tolerance: float = math.inf, store: bool = True
-            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
-        """Evaluate at φ (rad, float64, 1-D): the (N, width) block of outputs, the (N, targets)
-        relative estimates (stored only when ``store``; else an unused (1, targets) array), the
-        cannot-build mask and the status bits."""
-        n = phi.shape[0]
-        block = np.empty((n, self.width))
-        rel = np.empty((n if store else 1, len(self.targets)))
-        bad = np.empty(n, dtype=np.bool_)
-        status = self.function(phi, tolerance, block, rel, bad, store)
-        return block, rel, bad, int(status)
-
-    def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
-                                                   np.ndarray]:
-        """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build
-        mask)."""
-        phi = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
-        block, rel, bad, _ = self.run(phi)
-        block.flags.writeable = False
-        values = {sid: block[:, col] for sid, col in zip(self.targets, self.columns)}
-        estimates = {sid: rel[:, j] for j, sid in enumerate(self.targets)}
-        return values, estimates, bad
-
-
-#: status bits of a kernel run
-CANNOT_TRUST = 1
-OVER_TOLERANCE = 2
-
 
 def _columns(kinds: Sequence[Kind]) -> tuple[tuple[slice | int, ...], int]:
     cols: list[slice | int] = []
@@ -422,53 +390,74 @@ def _columns(kinds: Sequence[Kind]) -> tuple[tuple[slice | int, ...], int]:
 
 
 def kernel_source(c: Construction, targets: Sequence[str]) -> str:
-    """Generate the source of the kernel that evaluates ``targets`` (and only their ancestors)."""
+    """Generate the source of the kernel that evaluates ``targets`` (and only their ancestors).
+
+    Each position's values are computed; the estimates only when stored or when a cheap bound
+    cannot show them small. A step's estimate is (the largest of its inputs' + U) divided by its
+    divisors (distances over the length, sines), so it is at most depth·U over the product of the
+    divisors below 1 along its ancestors, and every estimate is at most B = steps·U / Π min(1,
+    divisor) over all of them. A position where 2·B is at most both the tolerance and ½ (and
+    every value is finite) has no flag; at any other the estimates are evaluated and decide —
+    the same status bits as evaluating them everywhere, for fewer operations.
+    """
     for sid in targets:
         if c[sid].kind is Kind.LINE:
             raise KernelUnavailable(f"step {sid} is a line; kernels return points and scalars")
     g = _Gen(c, length_scale(c))
     for sid in c.ancestors(targets):
         g.step(c[sid])
-    body = ["def kernel(phi, tol, out, rel, bad, store):", "    status = 0",
-            "    for i in range(phi.shape[0]):", "        bad_i = False"]
-    body += ["        " + line for line in g.lines]
+    body = ["#@jit", "def _body(phi, tol, out, rel, bad, store, lo, hi):", "    status = 0",
+            "    _thr = tol if tol < 0.5 else 0.5",
+            "    _thr2 = _thr * _thr if _thr > 0.0 else -1.0",
+            "    for i in range(lo, hi):", "        bad_i = False", *indent(g.values)]
+    estimates = list(g.estimates)
     sizes = plan_sizes(c)
     columns, _ = _columns([c[sid].kind for sid in targets])
+    values: list[str] = []
     for j, (sid, col) in enumerate(zip(targets, columns)):
         scale = scale_of(c[sid], sizes)
         if isinstance(col, slice):
             x, y = g.pt(sid)
-            body += [f"        out[i, {col.start}] = {x}", f"        out[i, {col.start + 1}] = {y}"]
+            body += indent([f"out[i, {col.start}] = {x}", f"out[i, {col.start + 1}] = {y}"])
             size = f"math.sqrt({x} * {x} + {y} * {y})"
+            values += [x, y]
         else:
-            body.append(f"        out[i, {col}] = {g.name(sid)}")
+            body += indent([f"out[i, {col}] = {g.name(sid)}"])
             size = f"abs({g.name(sid)})"
+            values.append(g.name(sid))
         if scale > 0.0:
             # measured against the larger of the plan's scale and the result's own size
-            body.append(f"        _r = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
+            estimates.append(f"_r = _div({g.err(sid)}, max({size} / {_f(scale)}, 1.0))")
         else:
-            body.append(f"        _r = {g.err(sid)}")
-        body += ["        if store:", f"            rel[i, {j}] = _r",
-                 f"        if not (_r < {_f(UNBOUNDED)}):", f"            status |= {CANNOT_TRUST}",
-                 "        if _r > tol:", f"            status |= {OVER_TOLERANCE}"]
-    body += ["        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
+            estimates.append(f"_r = {g.err(sid)}")
+        estimates += ["if store:", f"    rel[i, {j}] = _r", f"if not (_r < {_f(UNBOUNDED)}):",
+                      f"    status |= {CANNOT_TRUST}", "if _r > tol:",
+                      f"    status |= {OVER_TOLERANCE}"]
+    # a NaN (or ±inf) value: not shown clean, the estimates decide
+    body += ["        _qa = 1.0", "        _qs = 1.0", *indent(g.checks),
+             f"        _chk = {tree_sum(values)} * 0.0",
+             "        if store or not (NU2 <= _thr2 * (_qa * (_qs * _qs)) + _chk):",
+             *indent(estimates, 3),
+             "        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
              "    return status"]
+    u = float(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)
     drive = c.drive
-    head = (_HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\n"
-            f"U = {_f(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)}\n"
-            f"MIN_SINE = {_f(1.0 / MAX_CONDITION)}\n\n")
-    return head + "\n".join(body) + "\n"
+    head = (HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\nU = {_f(u)}\n"
+            f"NU2 = {_f((2.0 * len(g.idx) * u) ** 2)}\n"
+            f"MIN_SINE = {_f(1.0 / MAX_CONDITION)}\n\n\n")
+    return head + "\n".join(body) + "\n" + DRIVERS
 
 
 def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) -> Kernel:
     """Compile the kernel of ``targets``; ``jit=False`` runs the generated code as plain Python."""
     targets = tuple(targets)
     source = kernel_source(c, targets)
-    function, compiled = load(source, jit)
+    functions, compiled = load(source, jit)
     kinds = tuple(c[sid].kind for sid in targets)
     columns, width = _columns(kinds)
-    return Kernel(targets, kinds, columns, width, source, function, compiled)
+    return Kernel(targets, kinds, columns, width, source, functions["kernel"], compiled,
+                  functions["kernel_parallel"] if compiled else None)
 
 
-__all__ = ["CANNOT_TRUST", "OVER_TOLERANCE", "Kernel", "KernelUnavailable", "KernelUnsupported",
-           "compile_kernel", "kernel_source"]
+__all__ = ["CANNOT_TRUST", "CHUNK", "OVER_TOLERANCE", "PARALLEL_FROM", "Kernel",
+           "KernelUnavailable", "KernelUnsupported", "compile_kernel", "kernel_source"]

@@ -1,4 +1,5 @@
-"""Loading a generated kernel: plain Python, or JIT-compiled with numba and cached on disk.
+"""The fixed parts of a generated kernel's source, and loading it: plain Python, or JIT-compiled
+with numba and cached on disk.
 
 The source is written to the cache folder (``MECHPLAN_CACHE``, default
 ``~/.cache/mechplan/kernels``) under the hash of its text and compiled with
@@ -9,11 +10,17 @@ from __future__ import annotations
 
 import hashlib
 import importlib.util
+import math
 import os
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+import numpy as np
+
+from .step import Kind
 
 
 class KernelUnavailable(RuntimeError):
@@ -25,6 +32,155 @@ class KernelUnsupported(KernelUnavailable):
     path (an internal signal: callers catch :class:`KernelUnavailable`)."""
 
 
+#: the helpers every generated source starts with (``#@jit``: compiled by numba)
+HELPERS = """
+import math
+
+import numpy as np
+
+prange = range
+NAN = math.nan
+INF = math.inf
+
+
+#@jit
+def _div(a, b):
+    if b == 0.0:
+        if a != a or a == 0.0:
+            return NAN
+        return INF if (a > 0.0) == (math.copysign(1.0, b) > 0.0) else -INF
+    return a / b
+
+
+#@jit
+def _cdiv(a, b):
+    if b == 0.0:
+        return complex(NAN, NAN)
+    return a / b
+
+
+#@jit
+def _hyp(x, y):
+    return math.sqrt(x * x + y * y)
+
+"""
+
+#: the entry points: serial, and chunks of positions on numba's threads (``#@parallel``)
+DRIVERS = """
+
+#@jit
+def kernel(phi, tol, out, rel, bad, store):
+    return _body(phi, tol, out, rel, bad, store, 0, phi.shape[0])
+
+
+#@parallel
+def kernel_parallel(phi, tol, out, rel, bad, store, chunk):
+    n = phi.shape[0]
+    count = (n + chunk - 1) // chunk
+    each = np.zeros(count, dtype=np.int64)
+    for c in prange(count):
+        lo = c * chunk
+        hi = min(n, lo + chunk)
+        each[c] = _body(phi, tol, out, rel, bad, store, lo, hi)
+    status = 0
+    for c in range(count):
+        status |= each[c]
+    return status
+"""
+
+#: positions from which a call runs on numba's threads (chunks of CHUNK positions each), when
+#: the machine has a spare core
+PARALLEL_FROM = 20_000
+CHUNK = 4096
+
+
+def spare_cores() -> float:
+    """Cores not busy with other work: the core count less the load average, this process's own
+    share (one core while it computes) given back. Threads on cores busy with other processes
+    make a run slower than one thread, not faster."""
+    count = os.cpu_count() or 1
+    try:
+        busy = os.getloadavg()[0]
+    except OSError:                   # no load average on this system: trust the core count
+        return float(count)
+    return count - max(busy - 1.0, 0.0)
+
+
+def tree_sum(terms: Sequence[str]) -> str:
+    """A sum as a balanced tree: a short chain of dependent additions."""
+    if len(terms) == 1:
+        return terms[0]
+    half = len(terms) // 2
+    return f"({tree_sum(terms[:half])} + {tree_sum(terms[half:])})"
+
+
+def indent(lines: Sequence[str], depth: int = 2) -> list[str]:
+    return ["    " * depth + line for line in lines]
+
+
+@dataclass(frozen=True)
+class Kernel:
+    """A compiled construction: ``kernel(phi)`` → values and relative error estimates of the
+    outputs.
+
+    The outputs are the columns of one (N, width) block: a point takes two (x, y), a scalar one
+    (``columns[j]`` is target j's slice). While it loops, the kernel also finds whether any position
+    cannot be built or has an estimate ≥ 1 (status bit 1, :data:`CANNOT_TRUST`) and whether any
+    estimate exceeds the tolerance (status bit 2, :data:`OVER_TOLERANCE`), so the estimate matrix
+    need only be stored when a caller asks for it. From :data:`PARALLEL_FROM` positions on, a
+    compiled kernel runs chunks of positions on numba's threads (each chunk writes its own rows and
+    its own status, combined after the loop).
+    """
+
+    targets: tuple[str, ...]
+    kinds: tuple[Kind, ...]
+    columns: tuple[slice | int, ...]
+    width: int
+    source: str
+    function: Callable[..., int]
+    compiled: bool
+    parallel: Callable[..., int] | None = None
+
+    def run(self, phi: np.ndarray, tolerance: float = math.inf, store: bool = True
+            ) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
+        """Evaluate at φ (rad, float64, 1-D): the (N, width) block of outputs, the (N, targets)
+        relative estimates (stored only when ``store``; else an unused (1, targets) array), the
+        cannot-build mask and the status bits."""
+        n = phi.shape[0]
+        block = np.empty((n, self.width))
+        rel = np.empty((n if store else 1, len(self.targets)))
+        bad = np.empty(n, dtype=np.bool_)
+        if self.parallel is not None and n >= PARALLEL_FROM and spare_cores() >= 1.5:
+            import numba
+
+            # dynamic scheduling, one chunk at a time: a thread that shares its core with another
+            # process takes fewer chunks (set from here: inside, it would keep numba from caching)
+            previous = numba.set_parallel_chunksize(1)
+            try:
+                status = self.parallel(phi, tolerance, block, rel, bad, store, CHUNK)
+            finally:
+                numba.set_parallel_chunksize(previous)
+        else:
+            status = self.function(phi, tolerance, block, rel, bad, store)
+        return block, rel, bad, int(status)
+
+    def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
+                                                   np.ndarray]:
+        """Evaluate at crank angles φ (rad); return (values, relative estimates, cannot-build
+        mask)."""
+        phi = np.ascontiguousarray(np.atleast_1d(np.asarray(phi, dtype=np.float64)))
+        block, rel, bad, _ = self.run(phi)
+        block.flags.writeable = False
+        values = {sid: block[:, col] for sid, col in zip(self.targets, self.columns)}
+        estimates = {sid: rel[:, j] for j, sid in enumerate(self.targets)}
+        return values, estimates, bad
+
+
+#: status bits of a kernel run
+CANNOT_TRUST = 1
+OVER_TOLERANCE = 2
+
+
 def _cache_dir() -> Path:
     base = os.environ.get("MECHPLAN_CACHE") or os.path.join(
         os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache"),
@@ -34,25 +190,34 @@ def _cache_dir() -> Path:
     return path
 
 
-def load(source: str, jit: bool) -> tuple[Callable[..., int], bool]:
-    """The function ``kernel`` of a generated source, and whether numba compiled it."""
+#: what the markers of the generated source become when numba compiles it
+_JIT = "@numba.njit(cache=True, error_model='numpy')"
+_PARALLEL = "@numba.njit(cache=True, error_model='numpy', parallel=True)"
+
+
+def numba_source(source: str) -> str:
+    """The generated source as numba compiles it: ``#@jit`` / ``#@parallel`` markers become
+    decorators and ``prange`` numba's parallel range."""
+    return (source.replace("#@jit\n", _JIT + "\n").replace("#@parallel\n", _PARALLEL + "\n")
+            .replace("prange = range\n", "from numba import prange\n", 1)
+            .replace("import math\n", "import math\n\nimport numba\n", 1))
+
+
+def load(source: str, jit: bool) -> tuple[dict[str, Callable[..., int]], bool]:
+    """The functions ``kernel`` and ``kernel_parallel`` of a generated source, and whether numba
+    compiled them."""
     digest = hashlib.sha256(source.encode()).hexdigest()[:24]
     name = f"mechplan_kernel_{digest}"
     if not jit:
         namespace: dict[str, Any] = {}
         exec(compile(source, name, "exec"), namespace)   # noqa: S102 - our own generated code
-        return namespace["kernel"], False
+        return {k: namespace[k] for k in ("kernel", "kernel_parallel")}, False
     if importlib.util.find_spec("numba") is None:
         raise KernelUnavailable("numba is not installed (pip install mechplan[fast])") from None
     path = _cache_dir() / f"{name}.py"
     if not path.exists():
         tmp = path.with_suffix(f".{os.getpid()}.tmp")
-        tmp.write_text(source.replace("def _div", "@numba.njit(cache=True, error_model='numpy')\n"
-                                      "def _div").replace(
-            "def _cdiv", "@numba.njit(cache=True, error_model='numpy')\ndef _cdiv").replace(
-            "def _hyp", "@numba.njit(cache=True, error_model='numpy')\ndef _hyp").replace(
-            "def kernel", "@numba.njit(cache=True, error_model='numpy')\ndef kernel").replace(
-            "import math\n", "import math\nimport numba\n", 1), encoding="utf-8")
+        tmp.write_text(numba_source(source), encoding="utf-8")
         os.replace(tmp, path)
     spec = importlib.util.spec_from_file_location(name, path)
     if spec is None or spec.loader is None:
@@ -61,4 +226,4 @@ def load(source: str, jit: bool) -> tuple[Callable[..., int], bool]:
     if name not in sys.modules:
         spec.loader.exec_module(module)
         sys.modules[name] = module
-    return module.kernel, True
+    return {k: getattr(module, k) for k in ("kernel", "kernel_parallel")}, True

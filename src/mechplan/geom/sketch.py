@@ -73,7 +73,8 @@ def box_distance(points: NDArray[np.float64], centre: tuple[float, float],
     d = np.asarray(points, dtype=float).reshape(-1, 2) - np.asarray(centre, dtype=float)
     u = d[:, 0] * math.cos(a) + d[:, 1] * math.sin(a)
     v = -d[:, 0] * math.sin(a) + d[:, 1] * math.cos(a)
-    return np.hypot(np.maximum(np.abs(u) - half[0], 0.0), np.maximum(np.abs(v) - half[1], 0.0))
+    out = np.hypot(np.maximum(np.abs(u) - half[0], 0.0), np.maximum(np.abs(v) - half[1], 0.0))
+    return np.asarray(out, dtype=np.float64)
 
 
 def nearest(points: NDArray[np.float64], at: tuple[float, float], within: float = math.inf,

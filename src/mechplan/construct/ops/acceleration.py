@@ -34,7 +34,10 @@ def drive_acceleration(step: Step, pivot: Array, tip: Array) -> Result:
     """π b′: the crank's normal component −ω²·AB plus its tangential component ε × AB."""
     r = tip - pivot
     omega, eps = step.param("omega"), step.param("epsilon", 0.0)
-    return eps * perp(r) - omega * omega * r, None, None
+    out = perp(r)                       # eps·perp(r) − ω²·r, in place: the same values
+    out *= eps
+    out -= omega * omega * r
+    return out, None, None
 
 
 def normal(step: Step, start: Array, omega: Array, p: Array, q: Array) -> Result:
@@ -50,7 +53,9 @@ def coriolis(step: Step, start: Array, omega: Array, v_from: Array, v_to: Array)
 def epsilon(step: Step, p: Array, q: Array, normal_end: Array, aq: Array) -> Result:
     """ε of the link pq from its tangential component: (pq × a^t) / |pq|²."""
     r = q - p
-    return cross(r, aq - normal_end) / dot(r, r), None, None
+    out = cross(r, aq - normal_end)
+    out /= dot(r, r)
+    return out, None, None
 
 
 def rigid_acceleration(step: Step, origin: Array, omega: Array, eps: Array, p_origin: Array,

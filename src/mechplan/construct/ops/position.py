@@ -44,7 +44,19 @@ def constant(step: Step, n: int) -> Result:
 
 def polar_point(step: Step, centre: Array, angle: Array) -> Result:
     """The crank pin: ``length`` from the centre at the angle (+ ``offset``)."""
-    return centre + step.param("length") * direction(angle + step.param("offset", 0.0)), None, None
+    a = angle + step.param("offset", 0.0)
+    if a.dtype != np.float64 or centre.dtype != np.float64:
+        return centre + step.param("length") * direction(a), None, None
+    # centre + length·(cos, sin), per component and in place: the same values
+    length = float(step.param("length"))
+    out = np.empty(np.broadcast_shapes(centre.shape[:-1], a.shape) + (2,))
+    t = np.cos(a)
+    t *= length
+    np.add(centre[..., 0], t, out=out[..., 0])
+    np.sin(a, out=t)
+    t *= length
+    np.add(centre[..., 1], t, out=out[..., 1])
+    return out, None, None
 
 
 def angle_of_segment(step: Step, start: Array, end: Array) -> Result:
@@ -100,7 +112,7 @@ def carrier_angle(step: Step, pivot: Array, slider: Array) -> Result:
     rel = slider - pivot
     q0 = np.asarray(step.param("q0"), dtype=rel.dtype)
     d = direction(np.asarray(step.param("dir_angle"), dtype=rel.dtype))
-    radius = np.hypot(rel[..., 0], rel[..., 1])
+    radius = np.sqrt(rel[..., 0] * rel[..., 0] + rel[..., 1] * rel[..., 1])
     # the circle's centre and the guide are the same at every position: pass them once, (1, 2),
     # and let numpy broadcast (same values as (N, 2) copies, without N-sized work on constants)
     origin = np.zeros((1, 2), dtype=rel.dtype)

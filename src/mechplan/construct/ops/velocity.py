@@ -59,7 +59,9 @@ def line_parallel(step: Step, through: Array, guide: Array) -> Result:
 def omega(step: Step, p: Array, q: Array, vp: Array, vq: Array) -> Result:
     """ω of the link pq from the velocities of its two points: (pq × v_qp) / |pq|²."""
     r = q - p
-    return cross(r, vq - vp) / dot(r, r), None, None
+    out = cross(r, vq - vp)
+    out /= dot(r, r)
+    return out, None, None
 
 
 def rigid_velocity(
