@@ -21,6 +21,7 @@ import tempfile
 import time
 import tracemalloc
 from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -94,16 +95,16 @@ def main() -> None:
              f"({threads()}). Times per position in ns "
              "(N = 1: per call in µs), best of repeated runs in one process. Load average "
              "(1 min) at the start of the run: " + load() + "; at its end: LOAD_AT_END.", "",
-             "Like with like: numpy and fused are `Mechanism.solve(phi_deg, plans=kinematics, "
+             ("Like with like: numpy and fused are `Mechanism.solve(phi_deg, plans=kinematics, "
              "points=case.points, links=case.links)` — r, v, a of the case's points and angle, "
              "ω, ε of its links, as the closed form and pylinkage compute them (points and links: "
              "`benchmarks/mechplan_bench/config.py` CASES). The \"all\" columns are the default "
              "`solve()`: every point and link of the template. ‡: the fused kernel ran on "
              "numba's threads (from 20 000 positions, when the load average left a spare core "
-             "as the row began); unmarked rows ran on one thread.", "",
-             "| mechanism | N | public numpy | public fused | public numpy (all) | "
+             "as the row began); unmarked rows ran on one thread."), "",
+             ("| mechanism | N | public numpy | public fused | public numpy (all) | "
              "public fused (all) | closed form (numpy) | pylinkage+numba | fused / closed form "
-             "| fused / pylinkage | numpy / closed form |",
+             "| fused / pylinkage | numpy / closed form |"),
              "|---|---|---|---|---|---|---|---|---|---|---|"]
     compile_rows = []
     memory_rows = []
@@ -126,10 +127,10 @@ def main() -> None:
             phi_deg = np.degrees(phi)
             few = {"points": case.points, "links": case.links}
             runs: dict[str, Callable[[], object] | None] = {
-                "numpy": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=False, **few),
-                "fused": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=True, **few),
-                "numpy_all": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=False),
-                "fused_all": lambda: m.solve(phi_deg=phi_deg, plans=KINEMATIC, fast=True),
+                "numpy": partial(m.solve, phi_deg=phi_deg, plans=KINEMATIC, fast=False, **few),
+                "fused": partial(m.solve, phi_deg=phi_deg, plans=KINEMATIC, fast=True, **few),
+                "numpy_all": partial(m.solve, phi_deg=phi_deg, plans=KINEMATIC, fast=False),
+                "fused_all": partial(m.solve, phi_deg=phi_deg, plans=KINEMATIC, fast=True),
                 "closed": closed_form(model, phi),
                 "pylinkage": pylinkage_runner(model, phi) if installed("pylinkage") and n > 1
                 else None,
@@ -147,7 +148,7 @@ def main() -> None:
             scale = 1e6 if n == 1 else 1e9 / n
             unit = " µs" if n == 1 else ""
 
-            def cell(x: float) -> str:
+            def cell(x: float, scale: float = scale, unit: str = unit, n: int = n) -> str:
                 if math.isnan(x):
                     return "—"
                 return f"{x * scale:.1f}{unit}" if n == 1 else f"{x * scale:.0f}"
@@ -169,22 +170,23 @@ def main() -> None:
               ("| mechanism | first call (JIT compile) "
                "| new process, same mechanism (on-disk cache) |"),
               "|---|---|---|", *compile_rows,
-              "", "The kernel source is written to the cache folder (`MECHPLAN_CACHE`, default "
+              "", ("The kernel source is written to the cache folder (`MECHPLAN_CACHE`, default "
               "`~/.cache/mechplan/kernels`) and compiled with `numba.njit(cache=True)`, so other "
               "processes load it instead of compiling; the table's second column is a fresh "
-              "`Mechanism` in the same process reading that cache.",
+              "`Mechanism` in the same process reading that cache."),
               "", "## Peak memory at the largest N (tracemalloc)", "",
-              "| mechanism | N | public fused | public numpy | public fused (all) | "
-              "public numpy (all) |", "|---|---|---|---|---|---|", *memory_rows,
+              ("| mechanism | N | public fused | public numpy | public fused (all) | "
+              "public numpy (all) |"), "|---|---|---|---|---|---|", *memory_rows,
               "",
-              "The fused path allocates only the requested outputs: one (N, width) block "
+              ("The fused path allocates only the requested outputs: one (N, width) block "
               "(two columns a point, one a scalar) and the angles; the estimates are bounded in "
               "the kernel's loop (one product of the divisors a position's estimates are divided "
               "by), evaluated only where that bound does not show them below the tolerance, and "
               "stored only when some result is flagged. From 20 000 positions the kernel runs on "
-              "numba's threads when the load leaves a spare core (‡). The numpy path keeps the values of every step the requested "
+              "numba's threads when the load leaves a spare core (‡). The numpy path keeps the "
+              "values of every step the requested "
               "outputs need; their estimates are propagated only when one bound of them all does "
-              "not show them below the tolerance."]
+              "not show them below the tolerance.")]
     if over_budget:
         lines += ["", "Not run (—): over the default memory budget of 2 GB "
                   "(`MECHPLAN_MEMORY_BUDGET`), refused before any work: "

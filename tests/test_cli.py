@@ -67,7 +67,7 @@ def test_scene_error_exits_2_with_one_message(tmp_path):
     bad.write_text((ROOT / "templates" / "slider_crank.toml").read_text().replace(
         'OA = "100 mm"', 'OA = "100 kg"'))
     proc = subprocess.run([sys.executable, "-m", "mechplan.cli", "solve", str(bad)],
-                          capture_output=True, text=True)
+                          check=False, capture_output=True, text=True)
     assert proc.returncode == 2
     assert "Traceback" not in proc.stderr
     lines = proc.stderr.strip().splitlines()
@@ -101,7 +101,7 @@ def test_new_copies_a_template(tmp_path, capsys):
 
 
 def test_solve_json_carries_forces_and_reduced_values(capsys):
-    code, out, _ = run(["solve", str(ROOT / "templates" / "v_engine.toml"), "--json"], capsys)
+    _code, out, _ = run(["solve", str(ROOT / "templates" / "v_engine.toml"), "--json"], capsys)
     pos = json.loads(out)["positions"][0]
     forces = pos["forces"]
     assert set(forces) == {"inertia", "reactions", "guide_reactions", "balancing_moment",

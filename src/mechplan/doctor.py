@@ -21,7 +21,7 @@ VIEWERS = (("librecad", "DXF viewer (LibreCAD)"), ("chromium", "SVG/PDF viewer (
 
 def report() -> str:
     """Return the report as text, one finding a line."""
-    from .sheet.fonts import BUNDLED_DIR, SheetFont, font_path
+    from .drafting.fonts import BUNDLED_DIR, SheetFont, font_path
 
     head = (f"mechplan {__version__} (Python {platform.python_version()}, {sys.platform}, "
             f"{sys.executable})")

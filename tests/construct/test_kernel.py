@@ -48,7 +48,7 @@ def _assert_same(targets, ev, est, values, rel):
 
 @pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
 def test_generated_code_equals_the_numpy_path(path):
-    c, targets, ev, est, (values, rel, bad) = _both(load_scene(path), PHI, jit=False)
+    _c, targets, ev, est, (values, rel, bad) = _both(load_scene(path), PHI, jit=False)
     _assert_same(targets, ev, est, values, rel)
     assert not bad.any()
 
@@ -81,7 +81,7 @@ def test_numba_kernel_equals_the_numpy_path(name, tmp_path, monkeypatch):
     pytest.importorskip("numba", reason="the fast extra (numba) is optional")
     monkeypatch.setenv("MECHPLAN_CACHE", str(tmp_path))
     path = next(p for p in TEMPLATES if p.stem == name)
-    c, targets, ev, est, (values, rel, bad) = _both(load_scene(path), PHI, jit=True)
+    _c, targets, ev, est, (values, rel, _bad) = _both(load_scene(path), PHI, jit=True)
     _assert_same(targets, ev, est, values, rel)
     assert any(tmp_path.rglob("*.py"))                 # the kernel is cached on disk
 

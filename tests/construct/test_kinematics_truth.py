@@ -66,8 +66,8 @@ def test_velocities_and_accelerations_are_derivatives_of_positions(path):
     ev = c.evaluate(PHI)
     for p in [p for lk in scene.mechanism.links.values() if lk.id != "0" for p in lk.points]:
         # d/dt = ω d/dθ and θ = ref + sense·φ
-        pos = lambda phi: c.evaluate(phi)[f"pos.{p}"]
-        vel = lambda phi: c.evaluate(phi)[c.results[f"v_{p}"]]
+        pos = lambda phi, p=p: c.evaluate(phi)[c.position(p)]
+        vel = lambda phi, p=p: c.evaluate(phi)[c.velocity_image(p)]
         v_fd = _fd(pos, PHI, h) * omega * sense
         a_fd = _fd(vel, PHI, h) * omega * sense
         scale_v = max(np.max(np.abs(ev[c.results[f"v_{p}"]])), abs(omega) * 1e-3)

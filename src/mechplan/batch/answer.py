@@ -105,8 +105,8 @@ def answer_pdf(key: dict[str, Any], language: str) -> bytes:
     """Return the printable answer key: A4 landscape pages of the key's table."""
     from matplotlib.backends.backend_pdf import PdfPages
 
+    from ..drafting.primitives import HAlign, Sheet, Table, Text
     from ..render.mpl import figure, render_context
-    from ..sheet.primitives import HAlign, Sheet, Table, Text
 
     rows = key["rows"]
     phi = key["phi_deg"] or [None]

@@ -109,7 +109,7 @@ def _solve_and_write(job: ClassJob, variant: Variant, scene: str, scene_file: st
     study = solve_text(scene, scene_file)
     solution = getattr(study, "solution", None)
     failures = getattr(solution, "failures", ())
-    if failures:      # an assignment must be buildable at every position a student draws
+    if failures and solution is not None:   # an assignment must be buildable at every position
         first = failures[0]
         raise MechplanError(f"{len(failures)} of {solution.positions} positions cannot be built; "
                             f"φ = {first.phi_deg:g}°: {first.reason}", file=scene_file)

@@ -288,7 +288,8 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return own, T("own.table", seg=seg.name, len=ts.length_mm, mu=m, own=own,
                           unit=unit), max(
                 rel, gv.half_unit, ts.length_half_unit * m)
-    if q.step is not None and c[q.step].op.rate_of is not None:     # ω, ε of a link
+    rate_of = c[q.step].op.rate_of if q.step is not None else None
+    if q.step is not None and rate_of is not None:     # ω, ε of a link
         st = c[q.step]
         plan_points = [first.get(plan_key(st.plan))]
         if plan_points[0] is not None and plan_points[0].si:
@@ -296,7 +297,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return abs(own), T("own.plan", label=st.label, own=abs(own), unit=unit), max(
                 0.01 * abs(gv.value), gv.half_unit)
         # from a table: the relative segment's length × μ / l
-        a, b = (st.input(name) for name in st.op.rate_of)
+        a, b = (st.input(name) for name in rate_of)
         relseg = next((s for s in c.segments if {s.start, s.end} == {a, b}), None)
         ts = table_len.get(id(relseg)) if relseg is not None else None
         m = (ts.mu if ts else None) or mu

@@ -10,17 +10,27 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..construct.scale import round_scale
+from ..drafting.primitives import (
+    Circle,
+    HAlign,
+    Line,
+    Polyline,
+    Primitive,
+    Role,
+    Table,
+    Text,
+    VAlign,
+)
 from ..i18n import message, number
 from ..model.cam import Contact, Motion
 from ..synthesis.cam.profile import follower_positions
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
 from .layout import enlargement, framed_sheets
 from .panels import Panel
-from .primitives import Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
 
 if TYPE_CHECKING:
+    from ..drafting.primitives import Sheet
     from ..synthesis.cam import CamDesign
-    from .primitives import Sheet
 
 DIAGRAM_W = 180.0      # mm, the φ axis of a full turn
 DIAGRAM_H = 45.0       # mm

@@ -15,9 +15,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..construct.scale import round_scale
+from ..drafting.primitives import Arrow, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
 from ..i18n import number
 from .panels import Panel
-from .primitives import Arrow, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
 
 TEXT_H = 2.5        # mm, axis names and annotations
 TITLE_H = 3.5       # mm, diagram title

@@ -8,16 +8,16 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from ..drafting.primitives import HAlign, Role, Text, VAlign
 from ..i18n import message, number
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
 from .layout import enlargement, fitted_sheets
 from .panels import Panel, table
-from .primitives import HAlign, Role, Text, VAlign
 
 if TYPE_CHECKING:
+    from ..drafting.primitives import Sheet
     from ..dynamics.machine import MachineDynamics
     from ..scene.spec import Scene
-    from .primitives import Sheet
 
 PHI_MM = 180.0        # length of the φ axis for the whole cycle (at enlargement 1)
 

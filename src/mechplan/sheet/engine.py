@@ -9,6 +9,18 @@ from typing import Protocol
 import numpy as np
 
 from ..construct.scale import round_scale
+from ..drafting.primitives import (
+    Arc,
+    Circle,
+    HAlign,
+    Line,
+    Polyline,
+    Role,
+    Sheet,
+    Table,
+    Text,
+    VAlign,
+)
 from ..dynamics.engine.analysis import Checks, EngineResult
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
@@ -16,7 +28,6 @@ from ..scene.engine import EngineScene
 from .diagram import TEXT_H, Axis, Curve, Diagram, Marker, diagram_panel, mu_text
 from .layout import fitted_sheets
 from .panels import Panel
-from .primitives import Arc, Circle, HAlign, Line, Polyline, Role, Sheet, Table, Text, VAlign
 
 
 class EngineData(Protocol):

@@ -7,14 +7,14 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
+from ..drafting.fonts import text_width_mm
+from ..drafting.primitives import HAlign, Primitive, Sheet, Table, Text
 from ..i18n import message, number
 from ..synthesis.gears.involute import TIP_MIN, Pair
 from ..synthesis.gears.solve import GearSolution, PlanetaryResult
 from ..synthesis.gears.train import Conditions
-from .fonts import text_width_mm
 from .layout import fitted_sheets
 from .panels import Panel
-from .primitives import HAlign, Primitive, Sheet, Table, Text
 
 TEXT_H = 2.5
 TITLE_H = 3.5

@@ -8,12 +8,22 @@ import math
 import numpy as np
 
 from ..construct.scale import round_scale
+from ..drafting.primitives import (
+    Circle,
+    HAlign,
+    Line,
+    Polyline,
+    Primitive,
+    Role,
+    Table,
+    Text,
+    VAlign,
+)
 from ..i18n import message, number
 from ..synthesis.gears.involute import Pair, flank, tooth_outline
 from ..synthesis.gears.solve import PlanetaryResult
 from .diagram import Axis, Curve, diagram_panel
 from .panels import Panel
-from .primitives import Circle, HAlign, Line, Polyline, Primitive, Role, Table, Text, VAlign
 
 TEXT_H = 2.5
 TITLE_H = 3.5

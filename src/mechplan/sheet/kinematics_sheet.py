@@ -15,12 +15,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..drafting.primitives import Primitive, Role, Table, Text
 from ..i18n import message, number
 from ..model.mechanism import GROUND, Mechanism, PairKind
 from ..solve import Solution
 from .diagram import Axis, Curve, diagram_panel
 from .panels import TABLE_H, TITLE_H, Panel
-from .primitives import Primitive, Role, Table, Text
 from .scales import Room
 
 SWEEP = 361            # samples of an exact curve over one turn

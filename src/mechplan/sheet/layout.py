@@ -13,10 +13,10 @@ from shapely import box
 from shapely.geometry.base import BaseGeometry
 from shapely.prepared import prep
 
+from ..drafting.frame import FrameLayout, make_frame
+from ..drafting.primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 from ..errors import DrawingError
-from .frame import FrameLayout, make_frame
 from .panels import Panel
-from .primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 
 GAP = 8.0          # mm between panels
 

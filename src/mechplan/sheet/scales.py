@@ -19,8 +19,8 @@ import numpy as np
 from ..construct.graph import Construction, Evaluation
 from ..construct.scale import round_scale
 from ..construct.step import Kind, Plan
+from ..drafting.frame import make_frame
 from ..scene.spec import Scene
-from .frame import make_frame
 
 #: scale-factor key of each plan in ``[drawing.scales]``
 KEYS = {Plan.POSITION: "mu_l", Plan.VELOCITY: "mu_v", Plan.ACCELERATION: "mu_a",

@@ -15,7 +15,7 @@ from ..errors import SceneError
 from ..scene.document import parse_toml, read_text, scene_kind
 
 if TYPE_CHECKING:
-    from ..sheet.primitives import Sheet
+    from ..drafting.primitives import Sheet
 
 
 class Study(Protocol):

@@ -15,7 +15,7 @@ from ..sheet.cam import table_rows, units_of
 from ..synthesis.cam import CamDesign, design, profile_table
 
 if TYPE_CHECKING:
-    from ..sheet.primitives import Sheet
+    from ..drafting.primitives import Sheet
 
 
 def law_text(phase_law: Law | None, blend: float, lang: str) -> str:

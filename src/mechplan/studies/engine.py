@@ -27,7 +27,7 @@ from ..scene.engine import EngineScene, parse_engine_scene
 from ..sheet.engine import COLUMNS, table_cells
 
 if TYPE_CHECKING:
-    from ..sheet.primitives import Sheet
+    from ..drafting.primitives import Sheet
 
 def solve_engine_text(text: str, file: str) -> EngineStudy:
     """Parse and solve an engine scene; write its CSV if the scene's [output] asks for one."""

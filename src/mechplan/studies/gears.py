@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 from ..i18n import message, number
 
 if TYPE_CHECKING:
-    from ..sheet.primitives import Sheet
+    from ..drafting.primitives import Sheet
     from ..synthesis.gears.solve import GearSolution
     from ..synthesis.gears.train import Conditions
 

@@ -6,8 +6,8 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from ..drafting.primitives import Sheet
     from ..dynamics.machine import MachineDynamics
-    from ..sheet.primitives import Sheet
     from ..solve import Solution
 
 
