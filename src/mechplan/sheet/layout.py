@@ -92,19 +92,13 @@ def framed_sheets(panels: Sequence[Panel], *, size: str, standard: str, language
 
     Raise :class:`DrawingError` when one panel alone is larger than the sheet's drawing area.
     """
-    groups: list[tuple[list[Panel], list[tuple[float, float]]]] = []
-    rest = list(panels)
-    while rest:
-        frame = make_frame(size, standard, dict(fields), language=language)
-        offsets, failed = pack(rest, drawing_area(frame))
-        if failed == 0:
-            x0, y0, x1, y1 = rest[0].bounds()
-            raise DrawingError(f"the panel '{rest[0].name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) "
-                               f"does not fit on an {size} sheet; use a larger sheet "
-                               "(--sheet A1 or A0)")
-        n = len(offsets) if failed is not None else len(rest)
-        groups.append((rest[:n], offsets))
-        rest = rest[n:]
+    area = drawing_area(make_frame(size, standard, dict(fields), language=language))
+    groups = _flow(panels, area)
+    if isinstance(groups, Panel):
+        x0, y0, x1, y1 = groups.bounds()
+        raise DrawingError(f"the panel '{groups.name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) "
+                           f"does not fit on an {size} sheet; use a larger sheet "
+                           "(--sheet A1 or A0)")
     sheets: list[Sheet] = []
     for i, (part, offsets) in enumerate(groups):
         f = dict(fields)
@@ -119,16 +113,22 @@ def framed_sheets(panels: Sequence[Panel], *, size: str, standard: str, language
     return sheets
 
 
-def _sheets_needed(panels: Sequence[Panel], area: BaseGeometry) -> int | None:
-    """How many sheets the panels flow onto (None: a panel alone does not fit)."""
-    rest, count = list(panels), 0
+Groups = list[tuple[list[Panel], list[tuple[float, float]]]]
+
+
+def _flow(panels: Sequence[Panel], area: BaseGeometry) -> Groups | Panel:
+    """The panels, in order, packed sheet after sheet: (panels, offsets) per sheet — or the first
+    panel that does not fit on a sheet alone."""
+    groups: Groups = []
+    rest = list(panels)
     while rest:
         offsets, failed = pack(rest, area)
         if failed == 0:
-            return None
-        rest = rest[len(offsets):] if failed is not None else []
-        count += 1
-    return count
+            return rest[0]
+        n = len(offsets) if failed is not None else len(rest)
+        groups.append((rest[:n], offsets))
+        rest = rest[n:]
+    return groups
 
 
 def enlargement(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
@@ -138,11 +138,13 @@ def enlargement(build: Callable[[float], Sequence[Panel]], *, size: str, standar
     area = drawing_area(make_frame(size, standard, dict(fields), language=language))
     best: tuple[int, float] | None = None
     for k in ENLARGEMENTS:
-        count = _sheets_needed(build(k), area)
-        if count == 1:
+        groups = _flow(build(k), area)
+        if isinstance(groups, Panel):
+            continue                           # a panel alone is larger than the sheet
+        if len(groups) == 1:
             return k
-        if count is not None and (best is None or count < best[0]):
-            best = (count, k)
+        if best is None or len(groups) < best[0]:
+            best = (len(groups), k)
     return best[1] if best is not None else 1.0
 
 
