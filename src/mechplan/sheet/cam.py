@@ -24,7 +24,7 @@ from ..drafting.primitives import (
 from ..i18n import message, number
 from ..model.cam import Contact, Motion
 from ..synthesis.cam.profile import follower_positions
-from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
+from .diagram import Axis, Curve, Marker, diagram_panel, mu_number, mu_text, scale_for
 from .layout import enlargement, framed_sheets
 from .panels import Panel
 
@@ -195,9 +195,7 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
     top = max(y for p in prims if isinstance(p, Circle) for y in (p.center[1] + p.radius,))
     left = -CAM_R * scale
     prims.append(Text((left, top + 14.0), message("cam.sheet.inversion", lang), 3.5))
-    digits = max(4, 3 - math.floor(math.log10(mu)))      # every significant digit of a round μ
-    mu_said = number(mu, digits, lang).rstrip("0").rstrip(",.")
-    prims.append(Text((left, top + 8.0), message("cam.sheet.scale", lang, mu=mu_said) +
+    prims.append(Text((left, top + 8.0), message("cam.sheet.scale", lang, mu=mu_number(mu, lang)) +
                       ";  " + message("cam.sheet.base", lang, r0=number(g.r0 * 1e3, 2, lang)), 2.5))
     prims.append(Text((left, top + 3.0), "— " + message("cam.sheet.working", lang) + ";  - - " +
                       message("cam.sheet.pitch", lang), 2.5))

@@ -99,12 +99,18 @@ def _digits(step: float) -> int:
     return max(0, -math.floor(math.log10(step) + 1e-9)) if step > 0 else 0
 
 
-def mu_text(symbol: str, mu: float, unit: str, language: str) -> str:
-    """"μM = 2,5 N·m/mm" with the language's decimal mark."""
+def mu_number(mu: float, language: str) -> str:
+    """A round scale factor with every significant digit ("0,00025", "2,5", "20")."""
     digits = max(0, -math.floor(math.log10(mu)) + 3) if mu > 0 else 3
     num = number(mu, digits, language)
     if "," in num or "." in num:
         num = num.rstrip("0").rstrip(",.")
+    return num
+
+
+def mu_text(symbol: str, mu: float, unit: str, language: str) -> str:
+    """"μM = 2,5 N·m/mm" with the language's decimal mark."""
+    num = mu_number(mu, language)
     return f"{symbol} = {num} {unit}/mm" if unit else f"{symbol} = {num} 1/mm"
 
 
