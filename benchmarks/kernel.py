@@ -29,6 +29,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
+from _common import RESULTS, write_section
 from mechplan_bench.config import CASES
 from mechplan_bench.formulas import closed_form
 from mechplan_bench.model import Model
@@ -43,15 +44,30 @@ from mechplan.limits import LimitError
 KINEMATIC = ("position", "velocity", "acceleration")
 
 
-def best(run: Callable[[], object], budget_s: float, max_runs: int = 50) -> float:
-    """Best wall time of repeated runs within a time budget (at least 3 runs)."""
-    times: list[float] = []
+def best_of_rounds(runs: dict[str, Callable[[], object] | None], budget_s: float,
+                   max_rounds: int = 50) -> dict[str, float]:
+    """Each method's best wall time over rounds in which every method runs once, in an order
+    turned by one each round, until the budget (per method) is spent (at least 5 rounds).
+
+    Side by side rather than one method after the other: a drift of the machine's load or of
+    the allocator's state (freed memory returned and faulted in again) then touches every
+    method alike instead of whichever happened to run during it.
+    """
+    live = [k for k, r in runs.items() if r is not None]
+    times: dict[str, list[float]] = {k: [] for k in live}
     start = time.perf_counter()
-    while len(times) < 3 or (time.perf_counter() - start < budget_s and len(times) < max_runs):
-        t0 = time.perf_counter()
-        run()
-        times.append(time.perf_counter() - t0)
-    return min(times)
+    rounds = 0
+    while live and (rounds < 5 or (time.perf_counter() - start < budget_s * len(live)
+                                   and rounds < max_rounds)):
+        turn = rounds % len(live)
+        for k in live[turn:] + live[:turn]:
+            run = runs[k]
+            assert run is not None
+            t0 = time.perf_counter()
+            run()
+            times[k].append(time.perf_counter() - t0)
+        rounds += 1
+    return {k: (min(times[k]) if k in times else math.nan) for k in runs}
 
 
 def load() -> str:
@@ -93,7 +109,8 @@ def main() -> None:
              f"Machine: {platform.machine()}, {os.cpu_count()} cores (shared), Python "
              f"{platform.python_version()}, numpy {np.__version__}, numba {numba_version()} "
              f"({threads()}). Times per position in ns "
-             "(N = 1: per call in µs), best of repeated runs in one process. Load average "
+             "(N = 1: per call in µs), best of rounds in one process (each round runs every method "
+             "once, in turn). Load average "
              "(1 min) at the start of the run: " + load() + "; at its end: LOAD_AT_END.", "",
              ("Like with like: numpy and fused are `Mechanism.solve(phi_deg, plans=kinematics, "
              "points=case.points, links=case.links)` — r, v, a of the case's points and angle, "
@@ -144,7 +161,7 @@ def main() -> None:
                     over_budget.append(f"{name}, N = {n:,}: public {k.replace('_', ' (')}"
                                        f"{')' if '_' in k else ''}")
             threaded = n >= PARALLEL_FROM and spare_cores() >= 1.5
-            t = {k: (best(r, budget) if r is not None else math.nan) for k, r in runs.items()}
+            t = best_of_rounds(runs, budget)
             scale = 1e6 if n == 1 else 1e9 / n
             unit = " µs" if n == 1 else ""
 
@@ -192,9 +209,12 @@ def main() -> None:
                   "(`MECHPLAN_MEMORY_BUDGET`), refused before any work: "
                   + "; ".join(over_budget) + "."]
     out = ROOT / "benchmarks" / "KERNEL_RESULTS.md"
-    text = "\n".join(lines) + "\n"
-    out.write_text(text.replace("LOAD_AT_END", load()), encoding="utf-8")
-    print(f"written {out}")
+    text = ("\n".join(lines) + "\n").replace("LOAD_AT_END", load())
+    out.write_text(text, encoding="utf-8")
+    # the same figures as a section of RESULTS.md, beside the other benchmarks
+    write_section("kernel", "Compiled construction: the public path against peers",
+                  text.split("\n", 1)[1].replace("\n## ", "\n### "))
+    print(f"written {out} and the section of {RESULTS}")
 
 
 if __name__ == "__main__":

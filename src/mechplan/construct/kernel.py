@@ -29,12 +29,14 @@ from .kernel_load import (
     CHUNK,
     DRIVERS,
     HELPERS,
+    LANES,
     OVER_TOLERANCE,
     PARALLEL_FROM,
     Kernel,
     KernelUnavailable,
     KernelUnsupported,
     indent,
+    interleave,
     load,
     tree_sum,
 )
@@ -69,6 +71,7 @@ class _Gen:
         self.length = length
         self.distances: dict[tuple[str, str], str] = {}
         self.squares: dict[tuple[str, str], str] = {}
+        self.shared: dict[tuple[str, ...], str] = {}
 
     def name(self, sid: str) -> str:
         return f"v{self.idx[sid]}"
@@ -119,6 +122,16 @@ class _Gen:
         """Lines that compute values."""
         self.values.extend(lines)
 
+    def once(self, key: tuple[str, ...], lines: Callable[[str], Sequence[str]]) -> str:
+        """The name of a value several steps use (the unit normal of a link, a similarity
+        ratio, |r|²): its ``lines(name)`` are emitted the first time only, by the same
+        expression the steps computed each, so every value stays bit for bit the same."""
+        name = self.shared.get(key)
+        if name is None:
+            name = self.shared[key] = f"_k{len(self.shared)}"
+            self.emit(*lines(name))
+        return name
+
     def step(self, s: Step) -> None:
         self.idx[s.id] = len(self.idx)
         gen = _OPS.get(s.op)
@@ -140,10 +153,10 @@ class _Gen:
         if pair is not None:
             self.estimates.append(f"{e} = _div({e}, {self.distance(*pair)})")
             m = self.square(*pair)
-            self.checks.append(f"_qa = _qa * (1.0 if {m} >= 1.0 else {m})")
+            self.checks.append(f"_qa = _qa * _below1({m})")
         if sine is not None:
             self.estimates.append(f"{e} = _div({e}, {sine})")
-            self.checks.append(f"_qs = _qs * (1.0 if {sine} >= 1.0 else {sine})")
+            self.checks.append(f"_qs = _qs * _below1({sine})")
 
 
 # -- scalar forms: each mirrors the vectorised evaluator in construct/ops.py ------------------
@@ -191,12 +204,11 @@ def _circle_circle(g: _Gen, s: Step, n: str) -> str:
            f"_a = _div({r1} * {r1} - {r2} * {r2} + _d * _d, 2.0 * _d)",
            f"_h2 = _div((({r1} + {r2}) ** 2 - _d * _d) * (_d * _d - ({r1} - {r2}) ** 2), "
            "4.0 * _d * _d)",
-           "_h = math.sqrt(_h2) if _h2 >= 0.0 else NAN",
-           "_h = 0.0 if (_h2 < 0.0 and _gap <= 0.0) else _h",
+           "_h = _height(_h2, _gap)",
            "_ux = _div(_dx, _d)", "_uy = _div(_dy, _d)", f"_sh = {sigma} * _h",
            f"{n}x = {ax} + _a * _ux - _sh * _uy", f"{n}y = {ay} + _a * _uy + _sh * _ux",
            f"sn{n} = abs(_div(_h * _d, {r1} * {r2}))",
-           f"if _gap > 0.0 or not (_gap <= 0.0) or sn{n} < MIN_SINE:", "    bad_i = True")
+           f"bad_i = bad_i | (not (_gap <= 0.0)) | (sn{n} < MIN_SINE)")
     return f"sn{n}"
 
 
@@ -205,12 +217,11 @@ def _circle_line_core(g: _Gen, n: str, cx: str, cy: str, r: str, px: str, py: st
     g.emit(f"_w = {ux} * ({cy} - {py}) - {uy} * ({cx} - {px})",
            f"_along = ({cx} - {px}) * {ux} + ({cy} - {py}) * {uy}",
            f"_gap = abs(_w) - {r}", f"_h2 = ({r} - _w) * ({r} + _w)",
-           "_h = math.sqrt(_h2) if _h2 >= 0.0 else NAN",
-           "_h = 0.0 if (_h2 < 0.0 and _gap <= 0.0) else _h", f"_sh = {sigma} * _h",
+           "_h = _height(_h2, _gap)", f"_sh = {sigma} * _h",
            f"_fx = {px} + _along * {ux}", f"_fy = {py} + _along * {uy}",
            f"{n}x = _fx + _sh * {ux}", f"{n}y = _fy + _sh * {uy}",
            f"sn{n} = abs(_div(_h, {r}))",
-           f"if _gap > 0.0 or not (_gap <= 0.0) or sn{n} < MIN_SINE:", "    bad_i = True")
+           f"bad_i = bad_i | (not (_gap <= 0.0)) | (sn{n} < MIN_SINE)")
 
 
 def _circle_line(g: _Gen, s: Step, n: str) -> str:
@@ -222,9 +233,9 @@ def _circle_line(g: _Gen, s: Step, n: str) -> str:
 def _line_line(g: _Gen, s: Step, n: str) -> str:
     (ax, ay, au, av), (bx, by, bu, bv) = g.line(s.inputs[0]), g.line(s.inputs[1])
     g.emit(f"_s = {au} * {bv} - {av} * {bu}",
-           f"_t = NAN if _s == 0.0 else _div(({bx} - {ax}) * {bv} - ({by} - {ay}) * {bu}, _s)",
+           f"_t = _div_nz(({bx} - {ax}) * {bv} - ({by} - {ay}) * {bu}, _s)",
            f"{n}x = {ax} + _t * {au}", f"{n}y = {ay} + _t * {av}", f"sn{n} = abs(_s)",
-           f"if not (sn{n} >= MIN_SINE):", "    bad_i = True")
+           f"bad_i = bad_i | (not (sn{n} >= MIN_SINE))")
     return f"sn{n}"
 
 
@@ -277,9 +288,10 @@ def _similar_position(g: _Gen, s: Step, n: str) -> None:
 
 def _similar_image(g: _Gen, s: Step, n: str) -> None:
     (ax, ay), (bx, by), (pax, pay), (pbx, pby), (pxx, pxy) = (g.pt(i) for i in s.inputs)
-    g.emit(f"_q = complex({pbx}, {pby}) - complex({pax}, {pay})",
-           f"_ratio = _cdiv(complex({pxx}, {pxy}) - complex({pax}, {pay}), _q)",
-           f"_z = complex({ax}, {ay}) + (complex({bx}, {by}) - complex({ax}, {ay})) * _ratio",
+    ratio = g.once(("ratio", *s.inputs[2:]), lambda r: (
+        f"_q = complex({pbx}, {pby}) - complex({pax}, {pay})",
+        f"{r} = _cdiv(complex({pxx}, {pxy}) - complex({pax}, {pay}), _q)"))
+    g.emit(f"_z = complex({ax}, {ay}) + (complex({bx}, {by}) - complex({ax}, {ay})) * {ratio}",
            f"{n}x = _z.real", f"{n}y = _z.imag")
 
 
@@ -312,8 +324,10 @@ def _drive_acceleration(g: _Gen, s: Step, n: str) -> None:
 
 def _line_perp(g: _Gen, s: Step, n: str) -> None:
     (tx, ty), (px, py), (qx, qy) = (g.pt(i) for i in s.inputs)
-    g.emit(f"_vx = -({qy} - {py})", f"_vy = {qx} - {px}", "_nn = _hyp(_vx, _vy)",
-           f"{n}px = {tx}", f"{n}py = {ty}", f"{n}ux = _div(_vx, _nn)", f"{n}uy = _div(_vy, _nn)")
+    unit = g.once(("perp", *s.inputs[1:]), lambda u: (
+        f"_vx = -({qy} - {py})", f"_vy = {qx} - {px}", "_nn = _hyp(_vx, _vy)",
+        f"{u}x = _div(_vx, _nn)", f"{u}y = _div(_vy, _nn)"))
+    g.emit(f"{n}px = {tx}", f"{n}py = {ty}", f"{n}ux = {unit}x", f"{n}uy = {unit}y")
 
 
 def _line_parallel(g: _Gen, s: Step, n: str) -> None:
@@ -323,8 +337,9 @@ def _line_parallel(g: _Gen, s: Step, n: str) -> None:
 
 def _omega(g: _Gen, s: Step, n: str) -> None:
     (px, py), (qx, qy), (ax, ay), (bx, by) = (g.pt(i) for i in s.inputs)
-    g.emit(f"_rx = {qx} - {px}", f"_ry = {qy} - {py}", f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}",
-           f"{n} = _div(_rx * _dy - _ry * _dx, _rx * _rx + _ry * _ry)")
+    g.emit(f"_rx = {qx} - {px}", f"_ry = {qy} - {py}")
+    rr = g.once(("rr", *s.inputs[:2]), lambda r: (f"{r} = _rx * _rx + _ry * _ry",))
+    g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", f"{n} = _div(_rx * _dy - _ry * _dx, {rr})")
 
 
 _epsilon = _omega      # ε = (r × (a_q − n)) / r·r has the form of ω = (r × (v_q − v_p)) / r·r
@@ -406,23 +421,20 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
     g = _Gen(c, length_scale(c))
     for sid in c.ancestors(targets):
         g.step(c[sid])
-    body = ["#@jit", "def _body(phi, tol, out, rel, bad, store, lo, hi):", "    status = 0",
-            "    _thr = tol if tol < 0.5 else 0.5",
-            "    _thr2 = _thr * _thr if _thr > 0.0 else -1.0",
-            "    for i in range(lo, hi):", "        bad_i = False", *indent(g.values)]
     estimates = list(g.estimates)
     sizes = plan_sizes(c)
     columns, _ = _columns([c[sid].kind for sid in targets])
     values: list[str] = []
+    writes: list[str] = []
     for j, (sid, col) in enumerate(zip(targets, columns)):
         scale = scale_of(c[sid], sizes)
         if isinstance(col, slice):
             x, y = g.pt(sid)
-            body += indent([f"out[i, {col.start}] = {x}", f"out[i, {col.start + 1}] = {y}"])
+            writes += [f"out[i, {col.start}] = {x}", f"out[i, {col.start + 1}] = {y}"]
             size = f"math.sqrt({x} * {x} + {y} * {y})"
             values += [x, y]
         else:
-            body += indent([f"out[i, {col}] = {g.name(sid)}"])
+            writes += [f"out[i, {col}] = {g.name(sid)}"]
             size = f"abs({g.name(sid)})"
             values.append(g.name(sid))
         if scale > 0.0:
@@ -434,18 +446,37 @@ def kernel_source(c: Construction, targets: Sequence[str]) -> str:
                       f"    status |= {CANNOT_TRUST}", "if _r > tol:",
                       f"    status |= {OVER_TOLERANCE}"]
     # a NaN (or ±inf) value: not shown clean, the estimates decide
-    body += ["        _qa = 1.0", "        _qs = 1.0", *indent(g.checks),
-             f"        _chk = {tree_sum(values)} * 0.0",
-             "        if store or not (NU2 <= _thr2 * (_qa * (_qs * _qs)) + _chk):",
-             *indent(estimates, 3),
-             "        bad[i] = bad_i", "        if bad_i:", f"            status |= {CANNOT_TRUST}",
+    checks = ["_qa = 1.0", "_qs = 1.0", *g.checks, f"_chk = {tree_sum(values)} * 0.0"]
+    clean = "NU2 <= _thr2 * (_qa * (_qs * _qs)) + _chk"
+    start = ["status = 0", "_thr = tol if tol < 0.5 else 0.5",
+             "_thr2 = _thr * _thr if _thr > 0.0 else -1.0"]
+    body = ["#@typed", "def _body(phi, tol, out, rel, bad, store, lo, hi):", *indent(start, 1),
+            "    for i in range(lo, hi):",
+            *indent(["bad_i = False", *g.values, *writes, *checks, f"if store or not ({clean}):"]),
+            *indent(estimates, 3),
+            *indent(["bad[i] = bad_i", "if bad_i:", f"    status |= {CANNOT_TRUST}"]),
+            "    return status"]
+    # the quick loop: LANES positions side by side; the positions the bound does not show clean
+    # are evaluated again after the loop, one by one, by _body (which computes their estimates)
+    decide = [f"if {clean}:", "    bad[i] = bad_i", "    if bad_i:",
+              f"        status |= {CANNOT_TRUST}",
+              "elif redo_n == 0 or redo[redo_n - 1] != i:", "    redo[redo_n] = i",
+              "    redo_n += 1"]
+    lanes = [f"i{k} = i + {k} if i + {k} < hi else hi - 1" for k in range(LANES)]
+    quick = ["", "", "#@typed", "def _quick(phi, tol, out, rel, bad, store, lo, hi):", *indent(start, 1),
+             "    redo = np.empty(hi - lo, dtype=np.int64)", "    redo_n = 0",
+             f"    for i in range(lo, hi, {LANES}):",
+             *indent([*lanes, *interleave(["bad_i = False", *g.values],
+                                           [*writes, *checks, *decide])]),
+             "    for k in range(redo_n):",
+             "        status |= _body(phi, tol, out, rel, bad, store, redo[k], redo[k] + 1)",
              "    return status"]
     u = float(np.finfo(np.float64).eps * ROUNDINGS_PER_STEP)
     drive = c.drive
     head = (HELPERS + f"REF = {_f(drive.ref)}\nSENSE = {_f(drive.sense)}\nU = {_f(u)}\n"
             f"NU2 = {_f((2.0 * len(g.idx) * u) ** 2)}\n"
             f"MIN_SINE = {_f(1.0 / MAX_CONDITION)}\n\n\n")
-    return head + "\n".join(body) + "\n" + DRIVERS
+    return head + "\n".join(body + quick) + "\n" + DRIVERS
 
 
 def compile_kernel(c: Construction, targets: Sequence[str], jit: bool = True) -> Kernel:

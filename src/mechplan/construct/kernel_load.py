@@ -8,6 +8,8 @@ The source is written to the cache folder (``MECHPLAN_CACHE``, default
 
 from __future__ import annotations
 
+import ast
+import copy
 import hashlib
 import importlib.util
 import math
@@ -63,14 +65,37 @@ def _cdiv(a, b):
 def _hyp(x, y):
     return math.sqrt(x * x + y * y)
 
+
+#@jit
+def _div_nz(a, b):
+    return NAN if b == 0.0 else _div(a, b)
+
+
+#@jit
+def _height(h2, gap):
+    # the half-chord of two circles or of a circle and a line: 0 where they just touch (h² < 0
+    # by rounding), NaN where they do not meet or a value is NaN
+    if h2 < 0.0:
+        return 0.0 if gap <= 0.0 else NAN
+    return math.sqrt(h2)
+
+
+#@jit
+def _below1(x):
+    return 1.0 if x >= 1.0 else x
+
 """
 
-#: the entry points: serial, and chunks of positions on numba's threads (``#@parallel``)
+#: the entry points: serial, and chunks of positions on numba's threads (``#@parallel``); without
+#: stored estimates each runs the interleaved ``_quick`` loop, which hands a position to the full
+#: ``_body`` only when its cheap bound does not decide
 DRIVERS = """
 
 #@jit
 def kernel(phi, tol, out, rel, bad, store):
-    return _body(phi, tol, out, rel, bad, store, 0, phi.shape[0])
+    if store:
+        return _body(phi, tol, out, rel, bad, store, 0, phi.shape[0])
+    return _quick(phi, tol, out, rel, bad, store, 0, phi.shape[0])
 
 
 #@parallel
@@ -81,12 +106,85 @@ def kernel_parallel(phi, tol, out, rel, bad, store, chunk):
     for c in prange(count):
         lo = c * chunk
         hi = min(n, lo + chunk)
-        each[c] = _body(phi, tol, out, rel, bad, store, lo, hi)
+        if store:
+            each[c] = _body(phi, tol, out, rel, bad, store, lo, hi)
+        else:
+            each[c] = _quick(phi, tol, out, rel, bad, store, lo, hi)
     status = 0
     for c in range(count):
         status |= each[c]
     return status
 """
+
+#: positions computed side by side in one pass of the quick loop: independent chains of
+#: dependent divisions and square roots overlap (bit for bit the same values)
+LANES = 2
+#: names the lanes share (the loop's status, the positions left for the full body)
+SHARED = frozenset({"status", "redo", "redo_n"})
+
+
+def single_assignment(stmts: list[ast.stmt]) -> list[ast.stmt]:
+    """``stmts`` with every reassigned temporary given a new name at each assignment (``_dx``,
+    ``_dx__1`` …), so that numba has no variable of several definitions to reconcile (its SSA
+    pass grows quickly with them). Names assigned inside ``if`` blocks keep theirs."""
+    nested = {n.id for stmt in stmts if not isinstance(stmt, (ast.Assign, ast.AugAssign))
+              for n in ast.walk(stmt) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
+    current: dict[str, str] = {}
+    count: dict[str, int] = {}
+
+    def load(node: ast.AST) -> None:
+        for n in ast.walk(node):
+            if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load) and n.id in current:
+                n.id = current[n.id]
+
+    out = []
+    for stmt in stmts:
+        stmt = copy.deepcopy(stmt)
+        if isinstance(stmt, ast.AugAssign) and isinstance(stmt.target, ast.Name) \
+                and stmt.target.id not in nested:
+            name = stmt.target.id
+            stmt = ast.Assign([ast.Name(name, ast.Store())],
+                              ast.BinOp(ast.Name(name, ast.Load()), stmt.op, stmt.value), lineno=0)
+        if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 \
+                and isinstance(stmt.targets[0], ast.Name) and stmt.targets[0].id not in nested:
+            load(stmt.value)
+            target = stmt.targets[0]
+            base = target.id
+            if base in count:
+                count[base] += 1
+                current[base] = target.id = f"{base}__{count[base]}"
+            else:
+                count[base] = 0
+                current[base] = base
+        else:
+            load(stmt)
+        out.append(stmt)
+    return out
+
+
+def interleave(values: Sequence[str], rest: Sequence[str], lanes: int = LANES) -> list[str]:
+    """The loop body of ``lanes`` positions ``i0 … i{lanes-1}``: the statements of ``values``
+    interleaved lane by lane (each lane's locals renamed ``name_k``), then each lane's ``rest``;
+    every temporary assigned once (:func:`single_assignment`)."""
+    head = len(ast.parse("\n".join(values)).body)
+    stmts = single_assignment(ast.parse("\n".join([*values, *rest])).body)
+    trees = [stmts[:head], stmts[head:]]
+    local = {n.id for stmt in stmts for n in ast.walk(stmt)
+             if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)} - SHARED
+
+    def lane(stmt: ast.stmt, k: int) -> list[str]:
+        stmt = copy.deepcopy(stmt)
+        for node in ast.walk(stmt):
+            if isinstance(node, ast.Name):
+                if node.id == "i":
+                    node.id = f"i{k}"
+                elif node.id in local:
+                    node.id = f"{node.id}_{k}"
+        return ast.unparse(ast.fix_missing_locations(stmt)).split("\n")
+
+    out = [line for stmt in trees[0] for k in range(lanes) for line in lane(stmt, k)]
+    return out + [line for k in range(lanes) for stmt in trees[1] for line in lane(stmt, k)]
+
 
 #: positions from which a call runs on numba's threads (chunks of CHUNK positions each), when
 #: the machine has a spare core
@@ -193,12 +291,17 @@ def _cache_dir() -> Path:
 #: what the markers of the generated source become when numba compiles it
 _JIT = "@numba.njit(cache=True, error_model='numpy')"
 _PARALLEL = "@numba.njit(cache=True, error_model='numpy', parallel=True)"
+#: ``#@typed``: the loops, compiled once for the one signature every caller uses (without it a
+#: call with a constant argument, ``store`` or ``lo = 0``, would compile a loop once more)
+_TYPED = ("@numba.njit('int64(float64[::1], float64, float64[:, ::1], float64[:, ::1], "
+          "boolean[::1], boolean, int64, int64)', cache=True, error_model='numpy')")
 
 
 def numba_source(source: str) -> str:
-    """The generated source as numba compiles it: ``#@jit`` / ``#@parallel`` markers become
-    decorators and ``prange`` numba's parallel range."""
-    return (source.replace("#@jit\n", _JIT + "\n").replace("#@parallel\n", _PARALLEL + "\n")
+    """The generated source as numba compiles it: ``#@jit`` / ``#@typed`` / ``#@parallel``
+    markers become decorators and ``prange`` numba's parallel range."""
+    return (source.replace("#@jit\n", _JIT + "\n").replace("#@typed\n", _TYPED + "\n")
+            .replace("#@parallel\n", _PARALLEL + "\n")
             .replace("prange = range\n", "from numba import prange\n", 1)
             .replace("import math\n", "import math\n\nimport numba\n", 1))
 
@@ -222,8 +325,14 @@ def load(source: str, jit: bool) -> tuple[dict[str, Callable[..., int]], bool]:
     spec = importlib.util.spec_from_file_location(name, path)
     if spec is None or spec.loader is None:
         raise KernelUnavailable(f"cannot load the kernel module {path}")
-    module = sys.modules.get(name) or importlib.util.module_from_spec(spec)
-    if name not in sys.modules:
-        spec.loader.exec_module(module)
-        sys.modules[name] = module
+    module = sys.modules.get(name)
+    if module is None:
+        # registered before it runs: its typed loops compile (or load from the cache) as the
+        # module executes, and numba finds their globals through sys.modules
+        module = sys.modules[name] = importlib.util.module_from_spec(spec)
+        try:
+            spec.loader.exec_module(module)
+        except BaseException:
+            del sys.modules[name]
+            raise
     return {k: getattr(module, k) for k in ("kernel", "kernel_parallel")}, True
