@@ -173,15 +173,17 @@ def test_threaded_kernel_equals_the_serial_one(tmp_path, monkeypatch):
     # one position exactly through the pivot (cannot be built), in the last chunk
     phi[-5] = np.radians(270.0)
     for tol, store in ((1e-6, False), (1e-6, True), (1e-300, False)):
-        block = np.empty((n, kernel.width))
+        block = np.empty((n, kernel.width), order="F")
+        xs = np.empty((n, len(kernel.deferred)), order="F")
         rel = np.empty((n if store else 1, len(kernel.targets)))
         bad = np.empty(n, dtype=np.bool_)
-        status = kernel.parallel(phi, tol, block, rel, bad, store, CHUNK)   # numba's threads
-        sb, srel = np.empty_like(block), np.empty_like(rel)
+        status = kernel.parallel(phi, tol, block, xs, rel, bad, store, CHUNK)   # threads
+        sb, sxs, srel = np.empty_like(block), np.empty_like(xs), np.empty_like(rel)
         sbad = np.empty_like(bad)
-        serial = kernel.function(phi, tol, sb, srel, sbad, store)
+        serial = kernel.function(phi, tol, sb, sxs, srel, sbad, store)
         assert status == serial and status & CANNOT_TRUST
         assert np.array_equal(block, sb, equal_nan=True) and np.array_equal(bad, sbad)
+        assert np.array_equal(xs, sxs, equal_nan=True)
         if store:
             assert np.array_equal(rel, srel, equal_nan=True)
             assert bad[-5] or not (rel[-5] < 1.0).all()
@@ -197,3 +199,20 @@ def test_threads_only_on_spare_cores(monkeypatch):
     assert spare_cores() == 2.0
     monkeypatch.setattr(os, "getloadavg", lambda: (2.1, 0.0, 0.0))     # and another one
     assert spare_cores() < 1.5
+
+
+def test_lanes_rename_locals_and_drop_dead_values():
+    from mechplan.construct.kernel_load import interleave
+
+    values = ["_t = phi[i] * 2.0", "_t = _t + 1.0", "v1 = _t * _t", "v2 = math.atan2(_t, 1.0)"]
+    rest = ["out[i, 0] = v1", "status |= 1 if v1 > 10.0 else 0"]
+    lines = interleave(values, rest, lanes=3)
+    text = "\n".join(lines)
+    assert "atan2" not in text                         # v2: nothing reads it
+    assert "_t__1_2" in text and "_t_0 " in text       # one name per assignment and lane
+    phi = np.array([0.5, 1.0, 2.0, 3.0])
+    out = np.zeros((4, 1))
+    scope = {"phi": phi, "out": out, "status": 0, "i0": 0, "i1": 2, "i2": 3, "math": np}
+    exec("\n".join(lines), scope)                      # noqa: S102 - the generated lines
+    assert out[:, 0].tolist() == [4.0, 0.0, 25.0, 49.0]
+    assert scope["status"] == 1

@@ -92,14 +92,14 @@ def _below1(x):
 DRIVERS = """
 
 #@jit
-def kernel(phi, tol, out, rel, bad, store):
+def kernel(phi, tol, out, xs, rel, bad, store):
     if store:
-        return _body(phi, tol, out, rel, bad, store, 0, phi.shape[0])
-    return _quick(phi, tol, out, rel, bad, store, 0, phi.shape[0])
+        return _body(phi, tol, out, xs, rel, bad, store, 0, phi.shape[0])
+    return _quick(phi, tol, out, xs, rel, bad, store, 0, phi.shape[0])
 
 
 #@parallel
-def kernel_parallel(phi, tol, out, rel, bad, store, chunk):
+def kernel_parallel(phi, tol, out, xs, rel, bad, store, chunk):
     n = phi.shape[0]
     count = (n + chunk - 1) // chunk
     each = np.zeros(count, dtype=np.int64)
@@ -107,9 +107,9 @@ def kernel_parallel(phi, tol, out, rel, bad, store, chunk):
         lo = c * chunk
         hi = min(n, lo + chunk)
         if store:
-            each[c] = _body(phi, tol, out, rel, bad, store, lo, hi)
+            each[c] = _body(phi, tol, out, xs, rel, bad, store, lo, hi)
         else:
-            each[c] = _quick(phi, tol, out, rel, bad, store, lo, hi)
+            each[c] = _quick(phi, tol, out, xs, rel, bad, store, lo, hi)
     status = 0
     for c in range(count):
         status |= each[c]
@@ -144,7 +144,8 @@ def single_assignment(stmts: list[ast.stmt]) -> list[ast.stmt]:
                 and stmt.target.id not in nested:
             name = stmt.target.id
             stmt = ast.Assign([ast.Name(name, ast.Store())],
-                              ast.BinOp(ast.Name(name, ast.Load()), stmt.op, stmt.value), lineno=0)
+                              ast.BinOp(ast.Name(name, ast.Load()), stmt.op, stmt.value),
+                              lineno=stmt.lineno)
         if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 \
                 and isinstance(stmt.targets[0], ast.Name) and stmt.targets[0].id not in nested:
             load(stmt.value)
@@ -162,13 +163,33 @@ def single_assignment(stmts: list[ast.stmt]) -> list[ast.stmt]:
     return out
 
 
+def without_dead(stmts: list[ast.stmt]) -> list[ast.stmt]:
+    """``stmts`` (in single assignment) without the assignments of names nothing reads after
+    them — e.g. an angle whose atan2 is left to numpy. Every generated expression is free of
+    side effects; stores into arrays and ``if`` blocks stay."""
+    live: set[str] = set()
+    kept: list[ast.stmt] = []
+    for stmt in reversed(stmts):
+        if isinstance(stmt, ast.Assign) and len(stmt.targets) == 1 \
+                and isinstance(stmt.targets[0], ast.Name) \
+                and stmt.targets[0].id not in live | SHARED:
+            continue
+        live |= {n.id for n in ast.walk(stmt) if isinstance(n, ast.Name)
+                 and isinstance(n.ctx, ast.Load)}
+        kept.append(stmt)
+    return kept[::-1]
+
+
 def interleave(values: Sequence[str], rest: Sequence[str], lanes: int = LANES) -> list[str]:
     """The loop body of ``lanes`` positions ``i0 … i{lanes-1}``: the statements of ``values``
     interleaved lane by lane (each lane's locals renamed ``name_k``), then each lane's ``rest``;
-    every temporary assigned once (:func:`single_assignment`)."""
+    every temporary assigned once (:func:`single_assignment`), none that nothing reads."""
+    parsed = ast.parse("\n".join([*values, *rest])).body
     head = len(ast.parse("\n".join(values)).body)
-    stmts = single_assignment(ast.parse("\n".join([*values, *rest])).body)
-    trees = [stmts[:head], stmts[head:]]
+    for k, stmt in enumerate(parsed):
+        stmt.lineno = k              # the position survives the passes: values come first
+    stmts = without_dead(single_assignment(parsed))
+    trees = [[t for t in stmts if t.lineno < head], [t for t in stmts if t.lineno >= head]]
     local = {n.id for stmt in stmts for n in ast.walk(stmt)
              if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)} - SHARED
 
@@ -238,6 +259,9 @@ class Kernel:
     function: Callable[..., int]
     compiled: bool
     parallel: Callable[..., int] | None = None
+    #: angle outputs computed after the loop: (column, column of the x arguments, angle
+    #: subtracted); the loop leaves y in the column and x in the column of ``xs``
+    deferred: tuple[tuple[int, int, float], ...] = ()
 
     def run(self, phi: np.ndarray, tolerance: float = math.inf, store: bool = True
             ) -> tuple[np.ndarray, np.ndarray, np.ndarray, int]:
@@ -245,7 +269,9 @@ class Kernel:
         relative estimates (stored only when ``store``; else an unused (1, targets) array), the
         cannot-build mask and the status bits."""
         n = phi.shape[0]
-        block = np.empty((n, self.width))
+        # column by column (Fortran order): each result is one contiguous array
+        block = np.empty((n, self.width), order="F")
+        xs = np.empty((n, len(self.deferred)), order="F")
         rel = np.empty((n if store else 1, len(self.targets)))
         bad = np.empty(n, dtype=np.bool_)
         if self.parallel is not None and n >= PARALLEL_FROM and spare_cores() >= 1.5:
@@ -255,11 +281,16 @@ class Kernel:
             # process takes fewer chunks (set from here: inside, it would keep numba from caching)
             previous = numba.set_parallel_chunksize(1)
             try:
-                status = self.parallel(phi, tolerance, block, rel, bad, store, CHUNK)
+                status = self.parallel(phi, tolerance, block, xs, rel, bad, store, CHUNK)
             finally:
                 numba.set_parallel_chunksize(previous)
         else:
-            status = self.function(phi, tolerance, block, rel, bad, store)
+            status = self.function(phi, tolerance, block, xs, rel, bad, store)
+        for col, j, minus in self.deferred:
+            angle = block[:, col]
+            np.arctan2(angle, xs[:, j], out=angle)
+            if minus != 0.0:
+                angle -= minus
         return block, rel, bad, int(status)
 
     def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
@@ -293,8 +324,9 @@ _JIT = "@numba.njit(cache=True, error_model='numpy')"
 _PARALLEL = "@numba.njit(cache=True, error_model='numpy', parallel=True)"
 #: ``#@typed``: the loops, compiled once for the one signature every caller uses (without it a
 #: call with a constant argument, ``store`` or ``lo = 0``, would compile a loop once more)
-_TYPED = ("@numba.njit('int64(float64[::1], float64, float64[:, ::1], float64[:, ::1], "
-          "boolean[::1], boolean, int64, int64)', cache=True, error_model='numpy')")
+_TYPED = ("@numba.njit('int64(float64[::1], float64, float64[:, :], float64[:, :], "
+          "float64[:, ::1], boolean[::1], boolean, int64, int64)', cache=True, "
+          "error_model='numpy')")
 
 
 def numba_source(source: str) -> str:
