@@ -34,55 +34,25 @@ class KernelUnsupported(KernelUnavailable):
     path (an internal signal: callers catch :class:`KernelUnavailable`)."""
 
 
-#: the helpers every generated source starts with (``#@jit``: compiled by numba)
-HELPERS = """
+def _helpers_digest() -> str:
+    """The digest of ``kernel_helpers.py`` (read, not imported: importing it imports numba)."""
+    path = Path(__file__).with_name("kernel_helpers.py")
+    return hashlib.sha256(path.read_bytes()).hexdigest()[:16]
+
+
+#: what every generated source starts with: the shared helpers (``kernel_helpers``, compiled once
+#: per machine) and the digest of their version
+HELPERS = f"""
 import math
 
 import numpy as np
 
+from mechplan.construct.kernel_helpers import _below1, _cdiv, _div, _div_nz, _height, _hyp
+
+# helpers {_helpers_digest()}
 prange = range
 NAN = math.nan
 INF = math.inf
-
-
-#@jit
-def _div(a, b):
-    if b == 0.0:
-        if a != a or a == 0.0:
-            return NAN
-        return INF if (a > 0.0) == (math.copysign(1.0, b) > 0.0) else -INF
-    return a / b
-
-
-#@jit
-def _cdiv(a, b):
-    if b == 0.0:
-        return complex(NAN, NAN)
-    return a / b
-
-
-#@jit
-def _hyp(x, y):
-    return math.sqrt(x * x + y * y)
-
-
-#@jit
-def _div_nz(a, b):
-    return NAN if b == 0.0 else _div(a, b)
-
-
-#@jit
-def _height(h2, gap):
-    # the half-chord of two circles or of a circle and a line: 0 where they just touch (h² < 0
-    # by rounding), NaN where they do not meet or a value is NaN
-    if h2 < 0.0:
-        return 0.0 if gap <= 0.0 else NAN
-    return math.sqrt(h2)
-
-
-#@jit
-def _below1(x):
-    return 1.0 if x >= 1.0 else x
 
 """
 
