@@ -33,7 +33,7 @@ except ImportError:                      # the fast extra is optional
 def _div(a: float, b: float) -> float:
     """a / b with IEEE results for b = 0 (±inf, NaN for 0/0), also in plain Python."""
     if b == 0.0:
-        if a != a or a == 0.0:
+        if math.isnan(a) or a == 0.0:
             return NAN
         return INF if (a > 0.0) == (math.copysign(1.0, b) > 0.0) else -INF
     return a / b
