@@ -49,6 +49,9 @@ class Construction:
     results: dict[str, str] = field(default_factory=dict)
     #: constants derived once from the whole construction (e.g. its length scale)
     derived: dict[str, float] = field(default_factory=dict)
+    #: ancestor closures asked for so far (targets → steps in order); cleared when steps change
+    _closures: dict[tuple[str, ...], tuple[str, ...]] = field(
+        default_factory=dict, repr=False, compare=False)
 
     def add(self, step: Step) -> str:
         """Add a step whose inputs are already present; return its id."""
@@ -58,6 +61,7 @@ class Construction:
         if missing:
             raise ValueError(f"step {step.id!r} needs unknown inputs {missing}")
         self.steps[step.id] = step
+        self._closures.clear()
         return step.id
 
     def replace(self, step: Step) -> None:
@@ -65,6 +69,7 @@ class Construction:
         if any(step.id in s.inputs for s in self.steps.values()):
             raise ValueError(f"step {step.id!r} already has dependants")
         self.steps[step.id] = step
+        self._closures.clear()
 
     def __contains__(self, step_id: str) -> bool:
         return step_id in self.steps
@@ -178,15 +183,19 @@ class Construction:
 
     def ancestors(self, targets: Iterable[str]) -> list[str]:
         """Return the targets and everything they depend on, in construction order."""
-        needed: set[str] = set()
-        stack = list(targets)
-        while stack:
-            sid = stack.pop()
-            if sid in needed:
-                continue
-            needed.add(sid)
-            stack.extend(self.steps[sid].inputs)
-        return [sid for sid in self.steps if sid in needed]
+        key = tuple(targets)
+        closure = self._closures.get(key)
+        if closure is None:
+            needed: set[str] = set()
+            stack = list(key)
+            while stack:
+                sid = stack.pop()
+                if sid in needed:
+                    continue
+                needed.add(sid)
+                stack.extend(self.steps[sid].inputs)
+            closure = self._closures[key] = tuple(sid for sid in self.steps if sid in needed)
+        return list(closure)
 
     def of_plan(self, plan: Plan) -> list[Step]:
         """Return the steps of one plan in order."""
