@@ -7,7 +7,7 @@ import math
 
 import numpy as np
 
-from ..construct.ops import Op
+from ..construct.ops import Grade
 from ..construct.step import Plan
 from ..geom.vec import rotate
 from ..units import si_unit
@@ -42,7 +42,7 @@ def anchor_of(ctx: Ctx, dp: DrawnPlan) -> str | None:
     anchor = min(dp.points, key=order.index)
     if dp.plan is Plan.POSITION:
         segs = segments_of(c, dp.key)
-        fixed = [s for s in dp.points if c[s].op is Op.FIXED_POINT]
+        fixed = [s for s in dp.points if c[s].op.grade is Grade.GIVEN]
         pivot = segs[0].start if segs else None
         anchor = pivot if pivot in dp.points else (fixed[0] if fixed else anchor)
     return anchor

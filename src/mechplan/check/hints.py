@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction
-from ..construct.ops import Hint, Joined, Op
+from ..construct.ops import Grade, Hint, Joined
 from ..construct.ops.spec import hint, measured, point_of
 from ..construct.step import Kind, Plan, Step
 from ..model.mechanism import GROUND, Mechanism
@@ -86,11 +86,11 @@ def depends_on(c: Construction, sid: str, present: set[str], labels: Callable[[s
         st = c[x]
         if x in present:
             out.append(labels(x))
-        elif st.kind is Kind.SCALAR and st.op in (Op.OMEGA, Op.EPSILON, Op.COPY):
+        elif st.kind is Kind.SCALAR and st.op.grade is Grade.RATE:
             out.append(st.label)
         elif st.plan is Plan.POSITION and st.kind is Kind.POINT:
             continue
-        elif st.kind is Kind.POINT and st.op is Op.POLE:
+        elif st.kind is Kind.POINT and st.op.grade is Grade.ORIGIN:
             out.append(labels(x))
         else:
             stack.extend(st.inputs)

@@ -16,7 +16,7 @@ import unicodedata
 from dataclasses import dataclass, field
 
 from ..construct.graph import Construction
-from ..construct.ops import Op
+from ..construct.ops import Grade
 from ..construct.step import Kind, Plan
 from ..model.mechanism import GROUND, Mechanism
 from ..units import parse_quantity
@@ -104,14 +104,15 @@ class LabelBook:
         for step in c:
             if step.kind is not Kind.POINT:
                 continue
-            if step.plan is not Plan.POSITION and step.op is not Op.POLE and step.id not in ends:
+            origin = step.op.grade is Grade.ORIGIN
+            if step.plan is not Plan.POSITION and not origin and step.id not in ends:
                 continue
             key = plan_key(step.plan, step.group)
             book.plans.setdefault(key, {})
             if step.label in book.plans[key].values():
                 continue        # an earlier step already carries this label on this plan
             book.plans[key][step.id] = step.label
-            if step.op is Op.POLE:
+            if origin:
                 book.poles[key] = step.id
         for key, steps in book.plans.items():
             table: dict[str, list[Candidate]] = {}
@@ -165,9 +166,13 @@ class LabelBook:
                     if alias not in by_label:
                         self._add(key, alias, by_label[own], steps[by_label[own]], 2)
         # normals n_XY and Coriolis points k_XY: reversed names, link numbers, ordinals, bare
-        for op, letter in ((Op.NORMAL, "n"), (Op.CORIOLIS, "k")):
-            found = [(sid, c[sid]) for sid in steps if c[sid].op is op]
-            for i, (sid, step) in enumerate(found, start=1):
+        by_letter: dict[str, list[str]] = {}    # the operation's letter (``OpSpec.alias``)
+        for sid in steps:
+            if (letter := c[sid].op.alias) is not None:
+                by_letter.setdefault(letter, []).append(sid)
+        for letter, found in by_letter.items():
+            for i, sid in enumerate(found, start=1):
+                step = c[sid]
                 label = steps[sid]
                 sub = label_key(label)[1:]
                 names = notation.points(sub, mech) if mech is not None else None

@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction
-from ..construct.ops import Op
+from ..construct.ops import Grade
 from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..errors import MechplanError
@@ -226,7 +226,8 @@ def _value_hint(ctx: Ctx, q: Any) -> str:
 def _absolute_segment(c: Construction, step: str | None) -> Segment | None:
     if step is None:
         return None
-    return next((s for s in c.segments if s.end == step and c[s.start].op is Op.POLE), None)
+    return next((s for s in c.segments
+                 if s.end == step and c[s.start].op.grade is Grade.ORIGIN), None)
 
 
 def _link_length(ctx: Ctx, sid: str, k: int) -> float | None:
