@@ -17,8 +17,10 @@ from dataclasses import dataclass, field
 
 from ..construct.graph import Construction
 from ..construct.ops import Grade
+from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..model.mechanism import GROUND, Mechanism
+from ..scene.loader import SCALE_KEYS
 from ..units import parse_quantity
 from . import notation
 
@@ -178,8 +180,9 @@ class LabelBook:
                 names = notation.points(sub, mech) if mech is not None else None
                 if names and len(names) == 2:
                     self._add(key, letter + label_key(names[1] + names[0]), sid, label, 2)
-                link_no = _link_of_omega(step.inputs[1]) if len(step.inputs) > 1 else None
-                if link_no:
+                rate = c.quantity_of(step.inputs[1]) if len(step.inputs) > 1 else None
+                if rate is not None and rate[0] == "omega":   # n2: the normal of link 2
+                    link_no = rate[1]
                     self._add(key, f"{letter}{link_no}", sid, label, 2, "link")
                 self._add(key, f"{letter}{i}", sid, label, 2, "ordinal")
                 if len(found) == 1:
@@ -209,6 +212,11 @@ def plan_key(plan: Plan, group: str = "") -> PlanKey:
     return (plan, group if plan is Plan.FORCE else "")
 
 
+def segment_key(seg: Segment) -> PlanKey:
+    """The key of the plan a measured segment is drawn on (its force group's polygon)."""
+    return plan_key(seg.plan, seg.group)
+
+
 def feature_votes(text: str) -> dict[Plan, int]:
     """What the look of a label says about its plan: primes and π → acceleration, capitals →
     position, lower case → velocity."""
@@ -227,24 +235,17 @@ def feature_votes(text: str) -> dict[Plan, int]:
     return {Plan.VELOCITY: 1}
 
 
-def _link_of_omega(step_id: str) -> str | None:
-    m = re.fullmatch(r"vel\.omega\.(\w+)", step_id)
-    return m.group(1) if m else None
-
-
 MU_NAMES: dict[str, Plan] = {
     "l": Plan.POSITION, "s": Plan.POSITION, "v": Plan.VELOCITY, "a": Plan.ACCELERATION,
     "f": Plan.FORCE, "p": Plan.FORCE, "r": Plan.FORCE,
 }
-MU_DIMENSION = {Plan.POSITION: "mu_length", Plan.VELOCITY: "mu_velocity",
-                Plan.ACCELERATION: "mu_acceleration", Plan.FORCE: "mu_force"}
 _MU_NAME = re.compile(r"^(?:μ|µ|mu|u|k)[_\s{]*([lsvafprLSVAFPR])[}]?$", re.IGNORECASE)
 
 
 def parse_mu(text: str, plan: Plan) -> float:
     """A written scale factor of a plan in SI ("0,1 м/с/мм"); a :class:`SceneError` if it is not
     one."""
-    return parse_quantity(notation.units_ascii(text), MU_DIMENSION[plan])
+    return parse_quantity(notation.units_ascii(text), SCALE_KEYS[plan.scale_key])
 
 
 def parse_angle(text: str) -> float:

@@ -26,7 +26,7 @@ from .context import (
     seg_exact,
 )
 from .hints import depends_on, text_of
-from .labels import PlanKey, plan_key
+from .labels import PlanKey, plan_key, segment_key
 from .match import GivenValue, TableSegment
 from .report import (
     CARRIED,
@@ -274,7 +274,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return own, T("own.length", len=gv.length_mm, mu=m, own=own, unit=unit), max(
                 rel, gv.half_unit, gv.length_half_unit * m)
     if seg is not None:
-        key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
+        key = segment_key(seg)
         d = first.get(key)
         if d is not None and d.mu and seg.start in d.dp.points and seg.end in d.dp.points:
             length = math.dist(d.dp.points[seg.start].at, d.dp.points[seg.end].at)
