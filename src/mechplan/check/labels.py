@@ -28,7 +28,6 @@ from . import notation
 PlanKey = tuple[Plan, str]
 
 PRIMES = "′'’`´ʹ‘‛＇"
-_SUB = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _SUP = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹ⁿᵗᵏʳ", "0123456789ntkr")
 
 # -- MTEXT and TEXT formatting -----------------------------------------------------------------
@@ -68,7 +67,7 @@ def label_key(text: str) -> str:
     ``"b′"``, ``"b'"`` and ``"B’"`` → ``"b'"``; ``"n_{CB}"`` and ``"nCB"`` → ``"ncb"``;
     ``"π′"`` → ``"π'"``; ``"s₂"`` → ``"s2"``.
     """
-    t = text.strip().translate(_SUB).translate(_SUP)
+    t = text.strip().translate(notation.SUBSCRIPTS).translate(_SUP)
     for ch in PRIMES:
         t = t.replace(ch, "'")
     t = t.replace("″", "''")
