@@ -14,9 +14,10 @@ from ..errors import CheckError, SceneError
 from .report import Tolerance
 from .texts import LANGUAGES, T, Text
 
-PLAN_NAMES = {"position": Plan.POSITION, "velocity": Plan.VELOCITY,
-              "acceleration": Plan.ACCELERATION, "force": Plan.FORCE, "l": Plan.POSITION,
-              "v": Plan.VELOCITY, "a": Plan.ACCELERATION, "f": Plan.FORCE}
+#: a plan by its name or the letter of its scale factor ("velocity", "v")
+PLAN_NAMES = {name: p for p in Plan for name in (p.value, p.scale_key[3:].lower())}
+_MU_EXAMPLES = {Plan.POSITION: "'0.002 m/mm'", Plan.VELOCITY: "'0.1 m/s/mm'",
+                Plan.ACCELERATION: "'2 (m/s^2)/mm'", Plan.FORCE: "'100 N/mm'"}
 TEXT_SUFFIXES = (".txt", ".md", ".log", ".text")
 
 
@@ -37,12 +38,11 @@ def add_parser(subparsers: Any) -> None:
     p.add_argument("--tolerance", action="append", default=[], metavar="[PLAN=]SPEC",
                    help="allowed error: '1mm', '2%%', '1mm,2%%', '1.5deg'; per plan with "
                    "'velocity=0.5mm,1%%' (default ±1 mm or ±2 %%, whichever is larger)")
-    for key, plan in (("l", "position"), ("v", "velocity"), ("a", "acceleration"),
-                      ("F", "force")):
-        p.add_argument(f"--mu-{key}", metavar="MU", dest=f"mu_{key.lower()}",
-                       help=f"scale factor of the {plan} plan per mm of paper, e.g. "
-                       + {"l": "'0.002 m/mm'", "v": "'0.1 m/s/mm'", "a": "'2 (m/s^2)/mm'",
-                          "F": "'100 N/mm'"}[key] + " (overrides the sheet)")
+    for plan, example in _MU_EXAMPLES.items():
+        p.add_argument("--" + plan.scale_key.replace("_", "-"), metavar="MU",
+                       dest=plan.scale_key.lower(),
+                       help=f"scale factor of the {plan.value} plan per mm of paper, e.g. "
+                       f"{example} (overrides the sheet)")
     p.add_argument("--label-distance", type=float, metavar="MM",
                    help="how far (mm) a label may stand from its point (default: twice the "
                    "text height, 3…10 mm)")
@@ -91,19 +91,17 @@ def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
     from .labels import parse_mu
 
     out: dict[Plan, float] = {}
-    for key, plan in (("l", Plan.POSITION), ("v", Plan.VELOCITY), ("a", Plan.ACCELERATION),
-                      ("f", Plan.FORCE)):
-        text = getattr(args, f"mu_{key}", None)
+    for plan in Plan:
+        text, option = getattr(args, plan.scale_key.lower(), None), f"--mu-{plan.scale_key[3:]}"
         if text is None:
             continue
         try:
             value = parse_mu(text, plan)
         except SceneError as exc:
-            option = f"--mu-{key.upper() if key == 'f' else key}"
             raise CheckError(T("error.mu_option", option=option,
                                text=text, detail=exc.detail)) from None
         if not value > 0:
-            raise CheckError(T("error.positive", option=f"--mu-{key}", value=text))
+            raise CheckError(T("error.positive", option=option, value=text))
         out[plan] = value
     return out
 

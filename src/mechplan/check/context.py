@@ -12,7 +12,7 @@ from ..construct.graph import Construction, Evaluation
 from ..construct.segments import Segment
 from ..construct.step import Plan
 from ..scene.spec import Scene
-from .labels import LabelBook, PlanKey, plan_key
+from .labels import LabelBook, PlanKey, plan_key, segment_key
 from .match import Interpretation
 from .points import DrawnPlan, DrawnSheet
 from .report import (
@@ -113,13 +113,8 @@ def exact_at(ctx: Ctx, sid: str, k: int) -> np.ndarray:
 
 
 def segments_of(c: Construction, key: PlanKey) -> list[Segment]:
-    out = []
-    for s in c.segments:
-        group = c[s.start].group if s.plan is Plan.FORCE else ""
-        if plan_key(s.plan, group) == key or (s.plan is Plan.FORCE
-                                                and plan_key(s.plan, c[s.end].group) == key):
-            out.append(s)
-    return out
+    return [s for s in c.segments if segment_key(s) == key or (
+        s.plan is Plan.FORCE and plan_key(s.plan, c[s.end].group) == key)]
 
 
 def _off(x: float | None, tol: float | None) -> bool:

@@ -7,10 +7,9 @@ import math
 
 import numpy as np
 
-from ..construct.ops import Op
+from ..construct.ops import Grade
 from ..construct.step import Plan
 from ..geom.vec import rotate
-from ..units import si_unit
 from .context import (
     Ctx,
     Drawn,
@@ -19,7 +18,6 @@ from .context import (
     segments_of,
     swaps,
 )
-from .labels import MU_DIMENSION
 from .points import DrawnPlan
 from .report import (
     CARRIED,
@@ -42,7 +40,7 @@ def anchor_of(ctx: Ctx, dp: DrawnPlan) -> str | None:
     anchor = min(dp.points, key=order.index)
     if dp.plan is Plan.POSITION:
         segs = segments_of(c, dp.key)
-        fixed = [s for s in dp.points if c[s].op is Op.FIXED_POINT]
+        fixed = [s for s in dp.points if c[s].op.grade is Grade.GIVEN]
         pivot = segs[0].start if segs else None
         anchor = pivot if pivot in dp.points else (fixed[0] if fixed else anchor)
     return anchor
@@ -106,7 +104,7 @@ def prepare(ctx: Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> Drawn:
                 mu = exact / drawn
                 source = T("mu.inferred_drawn", ref=reference.name, q=reference.quantity,
                            drawn=drawn, exact=exact,
-                           unit=si_unit(MU_DIMENSION[plan]).removesuffix("/mm"),
+                           unit=plan.unit,
                            plan=plan_title(plan.value, case="gen"))
         if mu is None:
             notes.append(Note("error", T("note.no_mu", plan=with_case(dp.name, "gen"),

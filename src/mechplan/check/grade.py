@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from ..construct.ops import Op
+from ..construct.ops import Grade
 from ..construct.step import Plan
 from ..errors import CheckError, MechplanError
 from ..geom.sketch import nearest
@@ -279,8 +279,8 @@ def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, f
     for sid, cause in d.status.items():
         if cause == NEW:
             mine = [r for r in rows if r.verdict == WRONG and r.step == sid and r.cause == NEW]
-            primary = [r for r in mine if r.end == sid and ctx.c[r.start].op is Op.POLE] or [
-                r for r in mine if r.end == sid] or mine
+            ends = [r for r in mine if r.end == sid]
+            primary = [r for r in ends if c[r.start].op.grade is Grade.ORIGIN] or ends or mine
             error = row_error(primary[0]) if primary else ""
             segtxt = join((row_brief(r) for r in mine), "; ")
             findings.append(Finding(

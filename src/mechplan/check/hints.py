@@ -11,10 +11,10 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction
-from ..construct.ops import Hint, Joined, Op
+from ..construct.ops import Grade, Hint, Joined
 from ..construct.ops.spec import hint, measured, point_of
 from ..construct.step import Kind, Plan, Step
-from ..model.mechanism import GROUND, Mechanism
+from ..model.mechanism import Mechanism
 from .texts import T, Text, join
 
 Value = Callable[[str], np.ndarray]      # the student's own value of a step (leading axis 1)
@@ -37,15 +37,9 @@ class HintContext:
 
     def link_of(self, *points: str) -> str | None:
         """The moving link that holds all the named points."""
-        return link_of_points(self.mech, *points)
-
-
-def link_of_points(mech: Mechanism, *points: str) -> str | None:
-    """The moving link that holds all the named points."""
-    for lid, link in mech.links.items():
-        if lid != GROUND and all(p in link.points for p in points):
-            return lid
-    return None
+        links = self.mech.links
+        return next((k for k in self.mech.moving if all(p in links[k].points for p in points)),
+                    None)
 
 
 def text_of(h: Any) -> Any:
@@ -86,11 +80,11 @@ def depends_on(c: Construction, sid: str, present: set[str], labels: Callable[[s
         st = c[x]
         if x in present:
             out.append(labels(x))
-        elif st.kind is Kind.SCALAR and st.op in (Op.OMEGA, Op.EPSILON, Op.COPY):
+        elif st.kind is Kind.SCALAR and st.op.grade is Grade.RATE:
             out.append(st.label)
         elif st.plan is Plan.POSITION and st.kind is Kind.POINT:
             continue
-        elif st.kind is Kind.POINT and st.op is Op.POLE:
+        elif st.kind is Kind.POINT and st.op.grade is Grade.ORIGIN:
             out.append(labels(x))
         else:
             stack.extend(st.inputs)

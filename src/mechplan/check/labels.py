@@ -16,9 +16,11 @@ import unicodedata
 from dataclasses import dataclass, field
 
 from ..construct.graph import Construction
-from ..construct.ops import Op
+from ..construct.ops import Grade
+from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..model.mechanism import GROUND, Mechanism
+from ..scene.loader import SCALE_KEYS
 from ..units import parse_quantity
 from . import notation
 
@@ -26,7 +28,6 @@ from . import notation
 PlanKey = tuple[Plan, str]
 
 PRIMES = "′'’`´ʹ‘‛＇"
-_SUB = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _SUP = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹ⁿᵗᵏʳ", "0123456789ntkr")
 
 # -- MTEXT and TEXT formatting -----------------------------------------------------------------
@@ -66,7 +67,7 @@ def label_key(text: str) -> str:
     ``"b′"``, ``"b'"`` and ``"B’"`` → ``"b'"``; ``"n_{CB}"`` and ``"nCB"`` → ``"ncb"``;
     ``"π′"`` → ``"π'"``; ``"s₂"`` → ``"s2"``.
     """
-    t = text.strip().translate(_SUB).translate(_SUP)
+    t = text.strip().translate(notation.SUBSCRIPTS).translate(_SUP)
     for ch in PRIMES:
         t = t.replace(ch, "'")
     t = t.replace("″", "''")
@@ -104,14 +105,15 @@ class LabelBook:
         for step in c:
             if step.kind is not Kind.POINT:
                 continue
-            if step.plan is not Plan.POSITION and step.op is not Op.POLE and step.id not in ends:
+            origin = step.op.grade is Grade.ORIGIN
+            if step.plan is not Plan.POSITION and not origin and step.id not in ends:
                 continue
             key = plan_key(step.plan, step.group)
             book.plans.setdefault(key, {})
             if step.label in book.plans[key].values():
                 continue        # an earlier step already carries this label on this plan
             book.plans[key][step.id] = step.label
-            if step.op is Op.POLE:
+            if origin:
                 book.poles[key] = step.id
         for key, steps in book.plans.items():
             table: dict[str, list[Candidate]] = {}
@@ -165,16 +167,21 @@ class LabelBook:
                     if alias not in by_label:
                         self._add(key, alias, by_label[own], steps[by_label[own]], 2)
         # normals n_XY and Coriolis points k_XY: reversed names, link numbers, ordinals, bare
-        for op, letter in ((Op.NORMAL, "n"), (Op.CORIOLIS, "k")):
-            found = [(sid, c[sid]) for sid in steps if c[sid].op is op]
-            for i, (sid, step) in enumerate(found, start=1):
+        by_letter: dict[str, list[str]] = {}    # the operation's letter (``OpSpec.alias``)
+        for sid in steps:
+            if (letter := c[sid].op.alias) is not None:
+                by_letter.setdefault(letter, []).append(sid)
+        for letter, found in by_letter.items():
+            for i, sid in enumerate(found, start=1):
+                step = c[sid]
                 label = steps[sid]
                 sub = label_key(label)[1:]
                 names = notation.points(sub, mech) if mech is not None else None
                 if names and len(names) == 2:
                     self._add(key, letter + label_key(names[1] + names[0]), sid, label, 2)
-                link_no = _link_of_omega(step.inputs[1]) if len(step.inputs) > 1 else None
-                if link_no:
+                rate = c.quantity_of(step.inputs[1]) if len(step.inputs) > 1 else None
+                if rate is not None and rate[0] == "omega":   # n2: the normal of link 2
+                    link_no = rate[1]
                     self._add(key, f"{letter}{link_no}", sid, label, 2, "link")
                 self._add(key, f"{letter}{i}", sid, label, 2, "ordinal")
                 if len(found) == 1:
@@ -204,6 +211,11 @@ def plan_key(plan: Plan, group: str = "") -> PlanKey:
     return (plan, group if plan is Plan.FORCE else "")
 
 
+def segment_key(seg: Segment) -> PlanKey:
+    """The key of the plan a measured segment is drawn on (its force group's polygon)."""
+    return plan_key(seg.plan, seg.group)
+
+
 def feature_votes(text: str) -> dict[Plan, int]:
     """What the look of a label says about its plan: primes and π → acceleration, capitals →
     position, lower case → velocity."""
@@ -222,24 +234,17 @@ def feature_votes(text: str) -> dict[Plan, int]:
     return {Plan.VELOCITY: 1}
 
 
-def _link_of_omega(step_id: str) -> str | None:
-    m = re.fullmatch(r"vel\.omega\.(\w+)", step_id)
-    return m.group(1) if m else None
-
-
 MU_NAMES: dict[str, Plan] = {
     "l": Plan.POSITION, "s": Plan.POSITION, "v": Plan.VELOCITY, "a": Plan.ACCELERATION,
     "f": Plan.FORCE, "p": Plan.FORCE, "r": Plan.FORCE,
 }
-MU_DIMENSION = {Plan.POSITION: "mu_length", Plan.VELOCITY: "mu_velocity",
-                Plan.ACCELERATION: "mu_acceleration", Plan.FORCE: "mu_force"}
 _MU_NAME = re.compile(r"^(?:μ|µ|mu|u|k)[_\s{]*([lsvafprLSVAFPR])[}]?$", re.IGNORECASE)
 
 
 def parse_mu(text: str, plan: Plan) -> float:
     """A written scale factor of a plan in SI ("0,1 м/с/мм"); a :class:`SceneError` if it is not
     one."""
-    return parse_quantity(notation.units_ascii(text), MU_DIMENSION[plan])
+    return parse_quantity(notation.units_ascii(text), SCALE_KEYS[plan.scale_key])
 
 
 def parse_angle(text: str) -> float:

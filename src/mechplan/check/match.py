@@ -24,6 +24,7 @@ from .labels import (
     parse_angle,
     parse_mu,
     plan_key,
+    segment_key,
 )
 from .notation import units_ascii
 from .points import LAYER_HINTS
@@ -170,7 +171,7 @@ class SegmentIndex:
         self.by_key: dict[str, list[tuple[Segment, PlanKey, int]]] = {}
         self.exact_case: dict[str, Segment] = {}
         for seg in c.segments:
-            key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
+            key = segment_key(seg)
             if key not in book.aliases:
                 key = plan_key(seg.plan, c[seg.end].group)
             table = book.aliases.get(key, {})

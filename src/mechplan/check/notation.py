@@ -19,7 +19,7 @@ from typing import Any
 
 from ..model.mechanism import Mechanism
 
-_SUB = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
+SUBSCRIPTS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _SUP_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
 _SUP_MARK = {"ⁿ": "^n", "ᵗ": "^t", "ᵏ": "^k", "ʳ": "^r", "ᶜ": "^c"}
 _TRAILING_MARK = re.compile(r"^([^\W\d_]+)_?\{?(\w+)\}?\^\{?([ntkrτ])\}?$")
@@ -68,7 +68,7 @@ def _tables() -> tuple[dict[str, str], dict[str, str], tuple[_Symbol, ...], dict
 def compact(name: str, homo: dict[str, str] | None = None, case: bool = False) -> str:
     """A name with scripts, look-alike letters and decoration normalised (lower case unless
     ``case``)."""
-    t = unicodedata.normalize("NFC", name.strip()).translate(_SUB)
+    t = unicodedata.normalize("NFC", name.strip()).translate(SUBSCRIPTS)
     for ch, rep in _SUP_MARK.items():
         t = t.replace(ch, rep)
     t = t.translate(_SUP_DIGITS)
@@ -89,7 +89,7 @@ def key(canonical: str) -> str:
 def read(name: str, mech: Mechanism | None) -> Reading | None:
     """The quantity a written name stands for, or None when it is not understood."""
     names, homo, symbols, dims = _tables()
-    raw = unicodedata.normalize("NFC", name.strip()).translate(_SUB)
+    raw = unicodedata.normalize("NFC", name.strip()).translate(SUBSCRIPTS)
     for text in (_DROP.sub("", raw).lower(), compact(name, homo)):
         if text in names:
             return Reading(names[text], dims[names[text]])

@@ -10,7 +10,7 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction
-from ..construct.ops import Op
+from ..construct.ops import Grade
 from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..errors import MechplanError
@@ -26,7 +26,7 @@ from .context import (
     seg_exact,
 )
 from .hints import depends_on, text_of
-from .labels import PlanKey, plan_key
+from .labels import PlanKey, plan_key, segment_key
 from .match import GivenValue, TableSegment
 from .report import (
     CARRIED,
@@ -226,7 +226,8 @@ def _value_hint(ctx: Ctx, q: Any) -> str:
 def _absolute_segment(c: Construction, step: str | None) -> Segment | None:
     if step is None:
         return None
-    return next((s for s in c.segments if s.end == step and c[s.start].op is Op.POLE), None)
+    return next((s for s in c.segments
+                 if s.end == step and c[s.start].op.grade is Grade.ORIGIN), None)
 
 
 def _link_length(ctx: Ctx, sid: str, k: int) -> float | None:
@@ -273,7 +274,7 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
             return own, T("own.length", len=gv.length_mm, mu=m, own=own, unit=unit), max(
                 rel, gv.half_unit, gv.length_half_unit * m)
     if seg is not None:
-        key = plan_key(seg.plan, c[seg.start].group if seg.plan is Plan.FORCE else "")
+        key = segment_key(seg)
         d = first.get(key)
         if d is not None and d.mu and seg.start in d.dp.points and seg.end in d.dp.points:
             length = math.dist(d.dp.points[seg.start].at, d.dp.points[seg.end].at)

@@ -110,10 +110,10 @@ DRIVE_ACCELERATION = OpSpec("drive_acceleration", drive_acceleration,
                             Grade.POINT, hint=labelled("hint.drive"),
                             hint_rule=drive_acceleration_hint)
 NORMAL = OpSpec("normal", normal, "protocol.op.normal", Drawn.POINT, Line.THIN, Grade.POINT,
-                hint=labelled("hint.normal"), hint_rule=normal_hint)
+                hint=labelled("hint.normal"), hint_rule=normal_hint, alias="n")
 CORIOLIS = OpSpec("coriolis", coriolis, "protocol.op.coriolis", Drawn.POINT, Line.THIN,
-                  Grade.POINT, hint_rule=coriolis_hint)
-EPSILON = OpSpec("epsilon", epsilon, "protocol.op.epsilon", grade=Grade.VALUE,
+                  Grade.POINT, hint_rule=coriolis_hint, alias="k")
+EPSILON = OpSpec("epsilon", epsilon, "protocol.op.epsilon", grade=Grade.RATE,
                  written=Written.RATE, lever=("p", "q"), rate_of=("normal_end", "aq"),
                  value_hint=epsilon_value_hint)
 RIGID_ACCELERATION = OpSpec("rigid_acceleration", rigid_acceleration,

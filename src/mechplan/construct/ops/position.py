@@ -152,7 +152,8 @@ def meet_hint(step: Step, c: Construction) -> Hint:
 # -- the operations -------------------------------------------------------------------------------
 CRANK_ANGLE = OpSpec("crank_angle", None, "protocol.op.crank_angle", source=Source.DRIVE,
                      written=Written.ANGLE)
-FIXED_POINT = OpSpec("fixed_point", fixed_point, None, Drawn.POINT, source=Source.POSITIONS)
+FIXED_POINT = OpSpec("fixed_point", fixed_point, None, Drawn.POINT, grade=Grade.GIVEN,
+                     source=Source.POSITIONS)
 CONSTANT = OpSpec("constant", constant, "protocol.op.constant", source=Source.POSITIONS)
 POLAR_POINT = OpSpec("polar_point", polar_point, "protocol.op.polar_point", Drawn.POINT,
                      Line.OUTLINE, Grade.POINT, hint_rule=position_hint)

@@ -10,7 +10,8 @@ the rest); its protocol sentence is the catalogue message ``message`` (``locale/
 ``lever`` which two input points a direction or a rate is taken from (their distance divides the
 error estimate), ``rate_of`` for a link's ω or ε the two images of the relative vector it is read
 from; ``grade``, ``hint`` and ``hint_rule`` how the checker grades a submitted point or
-line of it and what it tells the student (as :class:`Hint` message ids of ``locale/*/check.po``).
+line of it and what it tells the student (as :class:`Hint` message ids of ``locale/*/check.po``),
+``alias`` the letter by which textbooks also name its points (the checker reads those names).
 """
 
 from __future__ import annotations
@@ -78,10 +79,13 @@ class Grade(enum.Enum):
     """How the checker grades what a student submits for a step of this operation."""
 
     NOT_GRADED = "not_graded"  # given data or a value never drawn
+    GIVEN = "given"  # a given point: a position plan without its drive pivot is placed by it
+    ORIGIN = "origin"  # a plan's pole: the plan is placed by it, segments from it are absolute
     POINT = "point"  # the submitted point against the exact one, in paper mm
     MEET = "meet"  # a point found by two lines: graded as a point, lines by direction
     DIRECTION = "direction"  # a construction line: its direction through its point
     VALUE = "value"  # a scalar written in a table: relative error
+    RATE = "rate"  # a link's ω or ε, graded as a value; hints name it among a point's inputs
 
 
 # -- what the checker says ------------------------------------------------------------------------
@@ -182,6 +186,7 @@ class OpSpec:
     hint: StepHint = step_hint           # the checker's hint for a wrong segment ending at it
     value_hint: StepHint | None = None   # the hint for a wrong written value (None: generic)
     hint_rule: HintRule | None = None    # how a submitted point breaks its rule (None: generic)
+    alias: str | None = None             # the letter of its points' textbook names (n_XY, n2, n)
     inputs: tuple[str, ...] = field(init=False)
     rest: str | None = field(init=False)  # name of a variable tail of inputs, if any
 

@@ -132,8 +132,8 @@ def omega_value_hint(step: Step, c: Construction) -> Hint:
 
 
 # -- the operations -------------------------------------------------------------------------------
-POLE = OpSpec("pole", pole, "protocol.op.pole", Drawn.VERTEX, source=Source.POSITIONS,
-              hint_rule=pole_hint)
+POLE = OpSpec("pole", pole, "protocol.op.pole", Drawn.VERTEX, grade=Grade.ORIGIN,
+              source=Source.POSITIONS, hint_rule=pole_hint)
 DRIVE_VELOCITY = OpSpec("drive_velocity", drive_velocity, "protocol.op.drive_velocity",
                         Drawn.POINT, Line.OUTLINE, Grade.POINT, hint=labelled("hint.drive"),
                         hint_rule=drive_velocity_hint)
@@ -141,7 +141,7 @@ LINE_PERP = OpSpec("line_perp", line_perp, "protocol.op.line_perp", Drawn.CONSTR
                    Line.DASHED, Grade.DIRECTION, lever=("p", "q"))
 LINE_PARALLEL = OpSpec("line_parallel", line_parallel, "protocol.op.line_parallel",
                        Drawn.CONSTRUCTION_LINE, Line.DASHED, Grade.DIRECTION)
-OMEGA = OpSpec("omega", omega, "protocol.op.omega", grade=Grade.VALUE, written=Written.RATE,
+OMEGA = OpSpec("omega", omega, "protocol.op.omega", grade=Grade.RATE, written=Written.RATE,
                lever=("p", "q"), rate_of=("vp", "vq"), value_hint=omega_value_hint)
 RIGID_VELOCITY = OpSpec("rigid_velocity", rigid_velocity, "protocol.op.rigid_velocity",
                         Drawn.POINT, Line.OUTLINE, Grade.POINT, written=Written.MEET,
@@ -150,7 +150,7 @@ SIMILAR_IMAGE = OpSpec("similar_image", similar_image, "protocol.op.similar_imag
                        Drawn.IMAGE_TRIANGLE, Line.THIN, Grade.POINT, written=Written.MEET,
                        lever=("pa", "pb"), hint=labelled("hint.similar"),
                        hint_rule=similar_image_hint)
-COPY = OpSpec("copy", copy, "protocol.op.copy", grade=Grade.VALUE)
+COPY = OpSpec("copy", copy, "protocol.op.copy", grade=Grade.RATE)
 
 __all__ = ["COPY", "DRIVE_VELOCITY", "LINE_PARALLEL", "LINE_PERP", "OMEGA", "POLE",
            "RIGID_VELOCITY", "SIMILAR_IMAGE"]
