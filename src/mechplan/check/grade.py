@@ -38,6 +38,7 @@ from .hints import HintContext, depends_on, rule
 from .labels import LabelBook, PlanKey, is_angle_name, parse_angle
 from .match import QuantityIndex, SegmentIndex, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
+from .positions import grade_per_plan, several_positions
 from .report import (
     ACCUMULATED,
     CARRIED,
@@ -106,6 +107,9 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         best = min(range(len(reports)), key=lambda i: _score(reports[i]))
         phi_source = T("phi.best_of", n=len(candidates))
     report = reports[best]
+    if len(reports) > 1 and several_positions(ctx):
+        report = grade_per_plan(ctx, reports, best, _grade)
+        phi_source = report.phi_source
     report.phi_source = phi_source
     report.notes = list(dict.fromkeys(notes + report.notes))   # each note once
     if sheet is not None:

@@ -145,6 +145,8 @@ class PlanReport:
     #: exact segments on the sheet (mm): (name, start, end)
     exact_segments: list[tuple[str, tuple[float, float], tuple[float, float]]] = field(
         default_factory=list)
+    #: the plan's own crank angle (°) when the sheet's plans are of several positions
+    phi_deg: float | None = None
 
     @property
     def mu_unit(self) -> str:
@@ -331,6 +333,8 @@ def render_text(r: CheckReport, lang: str = "en") -> str:
         out.append("")
         mu = (T("report.mu", mu=p.mu, unit=p.mu_unit) if p.mu else T("report.mu_unknown"))
         title = capitalize(tr(p.name, lang))
+        if p.phi_deg is not None:
+            title = say("report.plan_at", title=title, phi=p.phi_deg)
         out.append(say("report.plan_source", title=title, mu=mu, source=p.mu_source)
                    if p.mu_source else say("report.plan", title=title, mu=mu))
         tol = p.tolerance.text(lang)
