@@ -96,9 +96,11 @@ SHARED = frozenset({"status", "redo", "redo_n"})
 def single_assignment(stmts: list[ast.stmt]) -> list[ast.stmt]:
     """``stmts`` with every reassigned temporary given a new name at each assignment (``_dx``,
     ``_dx__1`` …), so that numba has no variable of several definitions to reconcile (its SSA
-    pass grows quickly with them). Names assigned inside ``if`` blocks keep theirs."""
+    pass grows quickly with them). Names assigned inside ``if`` blocks, and the names the lanes
+    share, keep theirs."""
     nested = {n.id for stmt in stmts if not isinstance(stmt, (ast.Assign, ast.AugAssign))
               for n in ast.walk(stmt) if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Store)}
+    nested |= SHARED
     current: dict[str, str] = {}
     count: dict[str, int] = {}
 
