@@ -27,11 +27,11 @@ TEXT_COLUMN_MIN = 40.0
 
 
 def lines_of(text: str | Sequence[str], height_mm: float, width_mm: float,
-             sep: str = ";   ") -> list[str]:
-    """``text`` wrapped to ``width_mm`` (at least :data:`MEASURE_MIN`); a sequence of parts (scale
+             sep: str = ";   ", measure_min: float = MEASURE_MIN) -> list[str]:
+    """``text`` wrapped to ``width_mm`` (at least ``measure_min``); a sequence of parts (scale
     factors, say) is joined by ``sep`` on as few lines as fit, a part wider than the measure
     itself wrapped."""
-    width = max(width_mm, MEASURE_MIN)
+    width = max(width_mm, measure_min)
     if isinstance(text, str):
         return wrap(text, height_mm, width)
     out: list[str] = []
@@ -50,10 +50,12 @@ def lines_of(text: str | Sequence[str], height_mm: float, width_mm: float,
 
 def text_block(origin: tuple[float, float], text: str | Sequence[str], height_mm: float,
                width_mm: float, *, upward: bool = False, valign: VAlign = VAlign.BASELINE,
-               halign: HAlign = HAlign.LEFT, pitch: float | None = None) -> list[Text]:
-    """``text`` wrapped to ``width_mm`` as lines from ``origin`` down — or up (``upward``: the last
-    line at ``origin``, so a title stays just above its drawing however many lines it takes)."""
-    lines = lines_of(text, height_mm, width_mm)
+               halign: HAlign = HAlign.LEFT, pitch: float | None = None,
+               measure_min: float = MEASURE_MIN) -> list[Text]:
+    """``text`` wrapped to ``width_mm`` (at least ``measure_min``) as lines from ``origin`` down —
+    or up (``upward``: the last line at ``origin``, so a title stays just above its drawing
+    however many lines it takes)."""
+    lines = lines_of(text, height_mm, width_mm, measure_min=measure_min)
     step = pitch or LINE_SPACING * height_mm
     n = len(lines)
     x, y = origin
@@ -155,14 +157,7 @@ def _split(rows: list[list[str]], widths: list[float], style: TableStyle, max_w:
             for r in rows:
                 r[j] = "\n".join(wrap(r[j], style.text_h, target))
             widths[j] = column_widths([[r[j]] for r in rows], style)[0]
-    groups: list[list[int]] = []
-    cur = list(range(key))
-    for c in range(key, len(widths)):
-        if len(cur) > key and sum(widths[i] for i in cur) + widths[c] > max_w:
-            groups.append(cur)
-            cur = list(range(key))
-        cur.append(c)
-    groups.append(cur)
+    groups = _column_groups(widths, key, max_w)
     heights = _row_heights(rows, style)
     parts: list[tuple[list[list[str]], list[float]]] = []
     for g in groups:
@@ -180,6 +175,30 @@ def _split(rows: list[list[str]], widths: list[float], style: TableStyle, max_w:
         if len(sub) == 1:
             parts.append((sub, gw))
     return parts
+
+
+def _column_groups(widths: Sequence[float], key: int, max_w: float) -> list[list[int]]:
+    """Columns in as few groups as fit ``max_w`` with the ``key`` columns repeated, balanced: the
+    widest group as narrow as that number of groups allows."""
+    def greedy(limit: float) -> list[list[int]]:
+        groups: list[list[int]] = [[]]
+        used = 0.0
+        for c in range(key, len(widths)):
+            if groups[-1] and used + widths[c] > limit:
+                groups.append([])
+                used = 0.0
+            groups[-1].append(c)
+            used += widths[c]
+        return groups
+
+    room = max_w - sum(widths[:key])
+    widest = max(widths[key:], default=0.0)
+    n = len(greedy(room))
+    lo, hi = widest, max(room, widest)
+    for _ in range(30):
+        mid = (lo + hi) / 2
+        lo, hi = (lo, mid) if len(greedy(mid)) <= n else (mid, hi)
+    return [list(range(key)) + g for g in greedy(hi)]
 
 
 def text_panel(name: str, title: str, paragraphs: Sequence[str], *, title_h: float = 3.5,

@@ -101,7 +101,8 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
     sx = min(1.0, max(scale, 0.5))           # the diagram narrows on a small sheet
     dia.panel.primitives.extend(_scheme(res, mu_l, sx))
     dia.panel.primitives.extend(text_block((-95.0 * sx, -8.0), message("gears.sheet.scheme", lang),
-                                           TITLE_H, 95.0 * sx, valign=VAlign.TOP))
+                                           TITLE_H, 95.0 * sx - 4.0, valign=VAlign.TOP,
+                                           measure_min=0.0))     # clear of the scale factors
     # angular velocity plan: rays from the pole P parallel to the plan's lines cut the reference
     # line
     w = {n: p.omega[n] for n in p.names}
