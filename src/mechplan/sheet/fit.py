@@ -206,8 +206,8 @@ def text_panel(name: str, title: str, paragraphs: Sequence[str], *, title_h: flo
     """A title over sentences, one line each; the layout rewraps them to the width of a sheet
     narrower than the longest."""
     def drawn(width: float) -> Panel:
-        prims: list[Primitive | Table] = text_block((0.0, 0.0), title, title_h, width,
-                                                    upward=True)
+        prims: list[Primitive | Table] = [*text_block((0.0, 0.0), title, title_h, width,
+                                                      upward=True)]
         y = -6.0
         for para in paragraphs:
             block = text_block((0.0, y), para, text_h, width, pitch=1.8 * text_h)
