@@ -127,6 +127,9 @@ def test_wrap_breaks_words_and_cjk_and_keeps_values_whole():
     assert all(text_width_mm(s, 3.5) <= 40.0 for s in lines)
     assert not any(s.startswith("，") for s in lines)           # no line starts with a comma
     assert wrap("a;   b", 2.5, 100.0) == ["a;   b"]               # what fits is kept as it is
+    pole = "图解积分：极距 H = 10 mm；μA = μM·μφ·H = 69.8132 J/mm"
+    lines = wrap(pole, 2.5, 90.0)
+    assert len(lines) == 2 and lines[-1].endswith("= 69.8132 J/mm")    # a value keeps its unit
 
 
 def test_wide_table_is_split_into_column_groups_repeating_the_key_columns():

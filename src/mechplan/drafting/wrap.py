@@ -52,12 +52,14 @@ def wrap(text: str, height_mm: float, width_mm: float) -> list[str]:
     tokens = _tokens(text)
     # glue tokens that must not be separated into units
     units: list[tuple[str, bool]] = []
+    last = ""
     for tok, spaced in tokens:
-        if units and not _may_break(units[-1][0], tok):
+        if units and not _may_break(last, tok):
             prev, prev_spaced = units[-1]
             units[-1] = (prev + (" " if spaced else "") + tok, prev_spaced)
         else:
             units.append((tok, spaced))
+        last = tok
     lines: list[str] = []
     line = ""
     for unit, spaced in units:
