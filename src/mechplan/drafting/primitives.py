@@ -19,6 +19,9 @@ from mechplan.i18n import LANGUAGES
 
 Point = tuple[float, float]
 
+#: Baseline pitch of lines of text, in capital heights (ISO 3098-0 type B: at least 1.43 h).
+LINE_SPACING = 1.6
+
 #: Lettering heights of ISO 3098-0 (capital height in mm).
 ISO_3098_HEIGHTS_MM: tuple[float, ...] = (1.8, 2.5, 3.5, 5.0, 7.0, 10.0, 14.0, 20.0)
 
@@ -351,7 +354,8 @@ class Table:
     """A grid of text cells; `expand()` turns it into lines and texts.
 
     `origin` is the top-left corner; rows run downwards. `cells[r][c]` is the text of a cell ("" for
-    none). The outer border uses `border_role`, inner lines `grid_role`.
+    none; lines separated by "\n" are drawn one under the other, :data:`LINE_SPACING` apart, centred
+    in the row). The outer border uses `border_role`, inner lines `grid_role`.
     """
 
     origin: Point
@@ -397,18 +401,19 @@ class Table:
         out += [Line((xs[0], y), (xs[-1], y), self.grid_role) for y in ys[1:-1]]
         for r, row in enumerate(self.cells):
             ym = (ys[r] + ys[r + 1]) / 2.0
-            for c, s in enumerate(row):
-                if not s:
-                    continue
-                if self.halign is HAlign.LEFT:
-                    x = xs[c] + 1.0
-                elif self.halign is HAlign.RIGHT:
-                    x = xs[c + 1] - 1.0
-                else:
-                    x = (xs[c] + xs[c + 1]) / 2.0
-                out.append(
-                    Text((x, ym), s, self.text_height_mm, halign=self.halign, valign=VAlign.MIDDLE)
-                )
+            for c, cell in enumerate(row):
+                lines = [ln for ln in cell.split("\n") if ln]
+                pitch = LINE_SPACING * self.text_height_mm
+                for i, s in enumerate(lines):
+                    y = ym + pitch * ((len(lines) - 1) / 2.0 - i)
+                    if self.halign is HAlign.LEFT:
+                        x = xs[c] + 1.0
+                    elif self.halign is HAlign.RIGHT:
+                        x = xs[c + 1] - 1.0
+                    else:
+                        x = (xs[c] + xs[c + 1]) / 2.0
+                    out.append(Text((x, y), s, self.text_height_mm, halign=self.halign,
+                                    valign=VAlign.MIDDLE))
         return tuple(out)
 
 

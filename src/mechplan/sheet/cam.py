@@ -25,7 +25,8 @@ from ..i18n import message, number
 from ..model.cam import Contact, Motion
 from ..synthesis.cam.profile import follower_positions
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_number, mu_text, scale_for
-from .layout import enlargement, framed_sheets
+from .fit import TableStyle, table_panel, text_block, text_panel
+from .layout import fitted_layout
 from .panels import Panel
 
 if TYPE_CHECKING:
@@ -112,10 +113,10 @@ def _motion_diagrams(d: CamDesign, lang: str, scale: float) -> list[Panel]:
         if i > 0:
             # pole distance of the graphical differentiation from the diagram above
             H = mus[i - 1] / (mus[i] * mu_phi)
-            x0, y0, _, _ = dg.panel.bounds()
-            dg.panel.primitives.append(Text((x0, y0 - 4.0), message("cam.sheet.pole", lang,
-                                                                    H=number(H, 1, lang)), 2.5,
-                                            valign=VAlign.TOP))
+            x0, y0, x1, _ = dg.panel.bounds()
+            dg.panel.primitives.extend(text_block(
+                (x0, y0 - 4.0), message("cam.sheet.pole", lang, H=number(H, 1, lang)), 2.5,
+                x1 - x0, valign=VAlign.TOP))
         out.append(dg.panel)
     return out
 
@@ -193,27 +194,28 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
         prims.append(Text((float(lbl[0]), float(lbl[1])), str(i), 2.5, halign=HAlign.CENTER,
                           valign=VAlign.MIDDLE))
     top = max(y for p in prims if isinstance(p, Circle) for y in (p.center[1] + p.radius,))
-    left = -CAM_R * scale
-    prims.append(Text((left, top + 14.0), message("cam.sheet.inversion", lang), 3.5))
-    prims.append(Text((left, top + 8.0), message("cam.sheet.scale", lang, mu=mu_number(mu, lang)) +
-                      ";  " + message("cam.sheet.base", lang, r0=number(g.r0 * 1e3, 2, lang)), 2.5))
-    prims.append(Text((left, top + 3.0), "— " + message("cam.sheet.working", lang) + ";  - - " +
-                      message("cam.sheet.pitch", lang), 2.5))
+    left, _, right, _ = Panel("", prims).bounds()
+    y = top + 3.0
+    for text, height, gap in (
+            (["— " + message("cam.sheet.working", lang), "- - " + message("cam.sheet.pitch", lang)],
+             2.5, 5.0),
+            ([message("cam.sheet.scale", lang, mu=mu_number(mu, lang)),
+              message("cam.sheet.base", lang, r0=number(g.r0 * 1e3, 2, lang))], 2.5, 6.0),
+            (message("cam.sheet.inversion", lang), 3.5, 0.0)):
+        block = text_block((left, y), text, height, right - left, upward=True)
+        prims.extend(block)
+        y = block[0].position[1] + gap
     return Panel("cam-inversion", list(prims)), mu
 
 
 def _results(keep: list[str], lang: str) -> Panel:
-    prims: list[Primitive | Table] = [Text((0.0, 0.0), message("cam.sheet.results", lang), 3.5)]
-    for i, ln in enumerate(keep):
-        prims.append(Text((0.0, -6.0 - 4.5 * i), ln, 2.5))
-    return Panel("cam-results", prims)
+    return text_panel("cam-results", message("cam.sheet.results", lang), keep)
 
 
 def _table(head: list[str], rows: list[list[str]], lang: str) -> Panel:
     widths = (12.0, 14.0, 14.0, 16.0, 13.0, 15.0, 14.0, 15.0, 15.0)
-    cells = (tuple(head),) + tuple(tuple(r) for r in rows)
-    table = Table((0.0, 0.0), widths, (6.0,) + (4.5,) * len(rows), cells, text_height_mm=1.8)
-    return Panel("cam-table", [Text((0.0, 3.0), message("cam.sheet.table", lang), 3.5), table])
+    return table_panel("cam-table", message("cam.sheet.table", lang), [head, *rows],
+                       TableStyle(text_h=1.8, row_h=4.5, head_h=6.0), widths=widths)
 
 
 def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[list[str]]],
@@ -232,13 +234,11 @@ def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[li
 
     fields = {"title": spec.title}
     fields.update({k: v for k, v in spec.drawing.title_block.items() if v})
-    k = enlargement(lambda scale: build(scale)[0], size=size, standard=standard, language=lang,
-                    fields=fields)
-    panels, mu = build(k)
-    r = mu * 1000.0
+    lay = fitted_layout(lambda scale: build(scale)[0], size=size, standard=standard,
+                        language=lang, fields=fields)
+    r = _inversion(d, lang, lay.k)[1] * 1000.0
     fields.setdefault("scale", f"1:{r:g}" if r >= 1 else f"{1 / r:g}:1")
-    return framed_sheets(panels, size=size, standard=standard, language=lang, name=name,
-                         fields=fields)
+    return lay.sheets(language=lang, name=name, fields=fields)
 
 
 __all__ = ["Units", "cam_sheets", "mu_text", "scale_for", "table_rows", "units_of"]

@@ -17,6 +17,7 @@ import numpy as np
 from ..construct.scale import round_scale
 from ..drafting.primitives import Arrow, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
 from ..i18n import number
+from .fit import drawing_right, text_block
 from .panels import Panel
 
 TEXT_H = 2.5        # mm, axis names and annotations
@@ -207,7 +208,9 @@ def diagram_panel(name: str, title: str, curves: Sequence[Curve], x_axis: Axis, 
     mux = x_axis.mu_symbol or f"μ{x_axis.symbol}"
     muy = y_axis.mu_symbol or f"μ{y_axis.symbol}"
     y_note = min(Y0, oy) - 9.0
-    prims.append(Text((X0, y_note), f"{mu_text(mux, mu_x, x_axis.unit, language)};   "
-                      f"{mu_text(muy, mu_y, y_axis.unit, language)}", TEXT_H, valign=VAlign.TOP))
-    prims.append(Text((X0, Y1 + 14.0), title, TITLE_H))
+    width = drawing_right(prims) - X0         # title and scale factors wrap to the drawing
+    prims.extend(text_block((X0, y_note), [mu_text(mux, mu_x, x_axis.unit, language),
+                                           mu_text(muy, mu_y, y_axis.unit, language)],
+                            TEXT_H, width, valign=VAlign.TOP))
+    prims.extend(text_block((X0, Y1 + 14.0), title, TITLE_H, width, upward=True))
     return Diagram(Panel(name, list(prims)), mu_x, mu_y)

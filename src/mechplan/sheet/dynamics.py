@@ -8,11 +8,12 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..drafting.primitives import HAlign, Role, Text, VAlign
+from ..drafting.primitives import Role, VAlign
 from ..i18n import message, number
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
+from .fit import TableStyle, table_panel, text_block
 from .layout import enlargement, fitted_sheets
-from .panels import Panel, table
+from .panels import Panel
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
@@ -59,8 +60,9 @@ def pole_distance(d: MachineDynamics, mu_M: float, mu_phi: float, height_mm: flo
 
 
 def _note(panel: Panel, text: str) -> None:
-    x0, y0, _, _ = panel.bounds()
-    panel.primitives.append(Text((x0, y0 - 2.0), text, 2.5, valign=VAlign.TOP))
+    """A note under a diagram, wrapped to the diagram's width."""
+    x0, y0, x1, _ = panel.bounds()
+    panel.primitives.extend(text_block((x0, y0 - 2.0), text, 2.5, x1 - x0, valign=VAlign.TOP))
 
 
 def dynamics_panels(d: MachineDynamics, lang: str, scale: float = 1.0) -> list[Panel]:
@@ -137,10 +139,9 @@ def table_rows(d: MachineDynamics, lang: str) -> list[tuple[str, ...]]:
 
 
 def _table(d: MachineDynamics, lang: str, sc: DynamicsScales) -> Panel:
-    panel = Panel("dynamics.table", [table(table_rows(d, lang), (0.0, 0.0))])
-    panel.primitives.append(Text((0.0, 2.0), mu_text("μM", sc.mu_M, "N·m", lang),
-                                 2.5, halign=HAlign.LEFT, valign=VAlign.BOTTOM))
-    return panel
+    """The table of values at the drawn positions, № and φ repeated in each part when split."""
+    return table_panel("dynamics.table", mu_text("μM", sc.mu_M, "N·m", lang), table_rows(d, lang),
+                       TableStyle(title_h=2.5, key_columns=2))
 
 
 def dynamics_sheets(d: MachineDynamics, scene: Scene, size: str, standard: str, lang: str,

@@ -17,7 +17,6 @@ from ..drafting.primitives import (
     Polyline,
     Role,
     Sheet,
-    Table,
     Text,
     VAlign,
 )
@@ -26,6 +25,7 @@ from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene
 from .diagram import TEXT_H, Axis, Curve, Diagram, Marker, diagram_panel, mu_text
+from .fit import TableStyle, table_panel, text_block
 from .layout import fitted_sheets
 from .panels import Panel
 
@@ -134,10 +134,11 @@ def indicator_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
         prims.append(Line((px, py), (px, 0.0), Role.DASHED))
         prims.append(Text((px, py - 1.0), f"{30 * k}°", 1.8, halign=HAlign.CENTER,
                           valign=VAlign.TOP))
-    prims.append(Text((cx - r_mm, cy - r_mm - 4.0),
-                      message("engine.label.brix", lang,
-                              shift=_num(spec.R * lam / 2.0 * 1e3, lang)),
-                      TEXT_H, valign=VAlign.TOP))
+    x1 = dia.panel.bounds()[2]
+    prims.extend(text_block((cx - r_mm, cy - r_mm - 4.0),
+                            message("engine.label.brix", lang,
+                                    shift=_num(spec.R * lam / 2.0 * 1e3, lang)),
+                            TEXT_H, x1 - (cx - r_mm), valign=VAlign.TOP))
     return dia.panel
 
 
@@ -245,25 +246,30 @@ def wear_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     ux, uy = -math.sin(rays[best]), math.cos(rays[best])
     prims.append(Line((radius * ux, radius * uy), (radius * 1.25 * ux, radius * 1.25 * uy),
                       Role.OUTLINE))
-    prims.append(Text((-radius, -radius - 6.0), mu_text("μw", mu, "kN", lang), TEXT_H,
-                      valign=VAlign.TOP))
-    prims.append(Text((-radius, -radius - 11.0), message("engine.label.oil_hole", lang,
-                      angle=f"{math.degrees(float(rays[best])):.0f}"), TEXT_H, valign=VAlign.TOP))
-    prims.append(Text((-radius, radius + 14.0), message("engine.diagram.wear", lang), 3.5))
-    return Panel("wear", prims)
+    x0, _, x1, _ = Panel("", prims).bounds()
+    notes: list = []
+    y = -radius - 6.0
+    for note in (mu_text("μw", mu, "kN", lang),
+                 message("engine.label.oil_hole", lang,
+                         angle=f"{math.degrees(float(rays[best])):.0f}")):
+        block = text_block((x0, y), note, TEXT_H, x1 - x0, valign=VAlign.TOP)
+        notes += block
+        y = block[-1].position[1] - 5.0
+    title = text_block((x0, radius + 14.0), message("engine.diagram.wear", lang), 3.5, x1 - x0,
+                       upward=True)
+    return Panel("wear", [*prims, *notes, *title])
 
 
 def table_panels(study: EngineData, lang: str) -> list[Panel]:
-    """The per-angle table of every cylinder."""
+    """The per-angle table of every cylinder (φ repeated in each part when it is split)."""
     out = []
     for c in study.scene.engine.cylinders:
         cells = table_cells(study.table, lang, c.number)
-        widths = tuple(max(14.0, 2.0 + 1.6 * max(len(r[j]) for r in cells))
-                       for j in range(len(cells[0])))
-        title = message("engine.diagram.table", lang, number=c.number)
-        table = Table((0.0, 0.0), widths, (6.0,) + (4.0,) * (len(cells) - 1),
-                      tuple(tuple(r) for r in cells), text_height_mm=1.8)
-        out.append(Panel(f"table{c.number}", [Text((0.0, 4.0), title, 3.5), table]))
+        widths = [max(14.0, 2.0 + 1.6 * max(len(r[j]) for r in cells))
+                  for j in range(len(cells[0]))]
+        out.append(table_panel(f"table{c.number}",
+                               message("engine.diagram.table", lang, number=c.number), cells,
+                               TableStyle(text_h=1.8, row_h=4.0, head_h=6.0), widths=widths))
     return out
 
 

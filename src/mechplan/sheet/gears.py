@@ -7,18 +7,20 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from ..drafting.fonts import text_width_mm
-from ..drafting.primitives import HAlign, Primitive, Sheet, Table, Text
+from ..drafting.primitives import HAlign, Sheet
 from ..i18n import message, number
 from ..synthesis.gears.involute import TIP_MIN, Pair
 from ..synthesis.gears.solve import GearSolution, PlanetaryResult
 from ..synthesis.gears.train import Conditions
+from .fit import TableStyle
+from .fit import table_panel as fitted_table
 from .layout import fitted_sheets
 from .panels import Panel
 
 TEXT_H = 2.5
 TITLE_H = 3.5
 ROW = 6.0
+GEAR_TABLE = TableStyle(text_h=TEXT_H, row_h=ROW, pad=4.0, halign=HAlign.LEFT, title_h=TITLE_H)
 
 
 def _mm(x: float, lang: str, digits: int = 3) -> str:
@@ -112,18 +114,8 @@ def pair_lines(pair: Pair, lang: str) -> list[str]:
 
 def table_panel(name: str, title: str, head: tuple[str, ...], rows: Sequence[tuple[str, ...]],
                 notes: tuple[str, ...] = ()) -> Panel:
-    """A titled table whose columns fit their texts."""
-    cells = [head, *rows]
-    widths = tuple(max(text_width_mm(r[c], TEXT_H) for r in cells) + 4.0
-                   for c in range(len(head)))
-    prims: list[Primitive | Table] = [Text((0.0, 4.0), title, TITLE_H)]
-    prims.append(Table((0.0, 0.0), widths, (ROW,) * len(cells), tuple(cells), TEXT_H,
-                       halign=HAlign.LEFT))
-    y = -ROW * len(cells) - 5.0
-    for note in notes:
-        prims.append(Text((0.0, y), note, TEXT_H))
-        y -= 4.5
-    return Panel(name, prims)
+    """A titled table whose columns fit their texts, with notes under it."""
+    return fitted_table(name, title, [head, *rows], GEAR_TABLE, notes=notes)
 
 
 def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, language: str | None,

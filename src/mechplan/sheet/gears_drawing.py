@@ -23,6 +23,7 @@ from ..i18n import message, number
 from ..synthesis.gears.involute import Pair, flank, tooth_outline
 from ..synthesis.gears.solve import PlanetaryResult
 from .diagram import Axis, Curve, diagram_panel
+from .fit import drawing_right, text_block
 from .panels import Panel
 
 TEXT_H = 2.5
@@ -30,19 +31,21 @@ TITLE_H = 3.5
 PLAN_MM = 130.0        # paper height of the largest radius, width of the largest velocity
 
 
-def _scheme(res: PlanetaryResult, mu_l: float) -> list[Primitive]:
-    """Upper half of the train in section: gears as lines across their pitch diameters."""
+def _scheme(res: PlanetaryResult, mu_l: float, sx: float = 1.0) -> list[Primitive]:
+    """Upper half of the train in section: gears as lines across their pitch diameters; the
+    gears' places along the axis ``sx`` times the usual 95 mm."""
     p = res.plan
     sch = res.spec.scheme
     names = sch.gear_names
     int1, int2 = sch.internal
     y = {n: p.radius[n] / mu_l for n in names}
     aw = p.a_w / mu_l
-    prims: list[Primitive] = [Line((-95.0, 0.0), (-5.0, 0.0), Role.CHAIN)]
+    prims: list[Primitive] = [Line((-95.0 * sx, 0.0), (-5.0 * sx, 0.0), Role.CHAIN)]
     two = sch.two_row
-    xs = {names[0]: -80.0, names[1]: -62.0, names[-1]: -22.0 if two else -42.0}
+    xs = {names[0]: -80.0 * sx, names[1]: -62.0 * sx,
+          names[-1]: (-22.0 if two else -42.0) * sx}
     if two:
-        xs[names[2]] = -42.0
+        xs[names[2]] = -42.0 * sx
     for n in names:
         x = xs[n]
         central = n in (names[0], names[-1])
@@ -60,17 +63,18 @@ def _scheme(res: PlanetaryResult, mu_l: float) -> list[Primitive]:
                 prims.append(Line((x - 4.0 + 2.0 * j, y1 + 3.0), (x - 2.0 + 2.0 * j, y1 + 5.0),
                                   Role.THIN))
     # shafts of the central links, the planet axle and the carrier
-    prims.append(Line((-92.0, 0.6), (xs[names[0]], 0.6), Role.OUTLINE))
-    prims.append(Line((xs[names[-1]], -0.6), (-8.0, -0.6), Role.OUTLINE))
+    prims.append(Line((-92.0 * sx, 0.6), (xs[names[0]], 0.6), Role.OUTLINE))
+    prims.append(Line((xs[names[-1]], -0.6), (-8.0 * sx, -0.6), Role.OUTLINE))
     x_pl = [xs[n] for n in names[1:-1]]
     prims.append(Line((min(x_pl) - 4.0, aw), (max(x_pl) + 4.0, aw), Role.OUTLINE))
     prims.append(Polyline(((max(x_pl) + 4.0, aw), (max(x_pl) + 8.0, aw),
-                           (max(x_pl) + 8.0, -2.0), (-8.0, -2.0)), Role.OUTLINE))
+                           (max(x_pl) + 8.0, -2.0), (-8.0 * sx, -2.0)), Role.OUTLINE))
     prims.append(Text((max(x_pl) + 9.0, aw / 2), "h", TEXT_H))
     for label, yy in (("A", p.pitch_points["A"] / mu_l), ("B", p.pitch_points["B"] / mu_l),
                       ("O", aw)):
-        prims.append(Line((-95.0, yy), (0.0, yy), Role.DASHED))
-        prims.append(Text((-98.0, yy), label, TEXT_H, halign=HAlign.RIGHT, valign=VAlign.MIDDLE))
+        prims.append(Line((-95.0 * sx, yy), (0.0, yy), Role.DASHED))
+        prims.append(Text((-95.0 * sx - 3.0, yy), label, TEXT_H, halign=HAlign.RIGHT,
+                          valign=VAlign.MIDDLE))
     return prims
 
 
@@ -94,9 +98,11 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
     dia = diagram_panel("velocity", message("gears.sheet.velocity", lang), curves,
                         Axis("v", "m/s", size, mu_v), Axis("r", "m", size, mu_l, mu_symbol="μl"),
                         lang)
-    dia.panel.primitives.extend(_scheme(res, mu_l))
-    dia.panel.primitives.append(Text((-95.0, -8.0), message("gears.sheet.scheme", lang),
-                                     TITLE_H, valign=VAlign.TOP))
+    sx = min(1.0, max(scale, 0.5))           # the diagram narrows on a small sheet
+    dia.panel.primitives.extend(_scheme(res, mu_l, sx))
+    dia.panel.primitives.extend(text_block((-95.0 * sx, -8.0), message("gears.sheet.scheme", lang),
+                                           TITLE_H, 95.0 * sx - 4.0, valign=VAlign.TOP,
+                                           measure_min=0.0))     # clear of the scale factors
     # angular velocity plan: rays from the pole P parallel to the plan's lines cut the reference
     # line
     w = {n: p.omega[n] for n in p.names}
@@ -119,12 +125,14 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
                           halign=HAlign.CENTER))
     x_in, x_out = xs[res.spec.input], xs[res.spec.output]
     read = x_in / x_out if x_out else math.inf
-    prims.append(Text((lo - 10.0, -H - 8.0),
-                      f"u_{res.spec.input}{res.spec.output} = {number(x_in, 2, lang)} / "
-                      f"{number(x_out, 2, lang)} = {number(read, 4, lang)}", TEXT_H))
-    prims.append(Text((lo - 10.0, 14.0), message("gears.sheet.angular", lang,
-                                                 H=number(H, 0, lang),
-                                                 mu=number(mu_w, 4, lang)), TITLE_H))
+    width = drawing_right(prims) - (lo - 10.0)
+    prims.extend(text_block((lo - 10.0, -H - 8.0),
+                            f"u_{res.spec.input}{res.spec.output} = {number(x_in, 2, lang)} / "
+                            f"{number(x_out, 2, lang)} = {number(read, 4, lang)}", TEXT_H, width))
+    prims.extend(text_block((lo - 10.0, 14.0), message("gears.sheet.angular", lang,
+                                                       H=number(H, 0, lang),
+                                                       mu=number(mu_w, 4, lang)), TITLE_H, width,
+                            upward=True))
     return [dia.panel, Panel("angular", prims)]
 
 
@@ -202,8 +210,11 @@ def mesh_panel(pair: Pair, lang: str, scale: float = 1.0) -> Panel:
     top = max(p for q in prims if isinstance(q, Polyline) for _, p in q.points)
     left = min(p for q in prims if isinstance(q, Polyline) for p, _ in q.points)
     rho = sp.clearance * sp.module / (1 - math.sin(sp.alpha))
-    prims.append(Text((left, top + 12.0), message("gears.sheet.mesh", lang,
-                                                  scale=number(S / 1000.0, 1, lang)), TITLE_H))
-    prims.append(Text((left, top + 6.0), message("gears.sheet.fillet", lang,
-                                                 rho=number(rho * 1000, 2, lang)), TEXT_H))
-    return Panel("mesh", prims)
+    width = drawing_right(prims) - left
+    fillet = text_block((left, top + 6.0), message("gears.sheet.fillet", lang,
+                                                   rho=number(rho * 1000, 2, lang)), TEXT_H,
+                        width, upward=True)
+    title = text_block((left, fillet[0].position[1] + 6.0),
+                       message("gears.sheet.mesh", lang, scale=number(S / 1000.0, 1, lang)),
+                       TITLE_H, width, upward=True)
+    return Panel("mesh", [*prims, *fillet, *title])

@@ -8,7 +8,7 @@ and decides line kinds, labels and table cells.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -48,11 +48,17 @@ ROW = 5.0
 
 @dataclass
 class Panel:
-    """Primitives in panel millimetres with the box they occupy."""
+    """Primitives in panel millimetres with the box they occupy.
+
+    ``refit(width, height)``, when given, redraws the panel as one or more panels each at most
+    ``width`` × ``height`` mm (a table split into column or row groups, text wrapped to the
+    width); the layout calls it only for a panel larger than the sheet's drawing area.
+    """
 
     name: str
     primitives: list[Primitive | Table] = field(default_factory=list)
     plan: Plan | None = None        # the plan a panel of plans shows (None: a diagram, a table)
+    refit: Callable[[float, float], list[Panel]] | None = None
 
     def bounds(self) -> tuple[float, float, float, float]:
         """(x0, y0, x1, y1) of everything drawn."""
