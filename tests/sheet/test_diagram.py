@@ -44,3 +44,12 @@ def test_panels_flow_onto_numbered_sheets():
         framed_sheets([diagram_panel("w", "W", [Curve(x * 10, x)], Axis("φ", "°", 900.0),
                                      Axis("W", "J", 50.0), "en").panel],
                       size="A4", standard="iso", language="en", name="w", fields={})
+
+
+def test_scale_factor_text_keeps_its_unit_whole_and_in_one_script():
+    assert mu_text("μM", 2.5, "N·m", "en") == "μM = 2.5 N·m/mm"
+    assert mu_text("μv", 0.2, "m/s", "ru") == "μv = 0,2 (m/s)/mm"        # not "m/s/mm"
+    assert mu_text("μa", 10.0, "m/s²", "en") == "μa = 10 (m/s²)/mm"
+    assert mu_text("μs", 0.25, "мм", "ru") == "μs = 0,25 мм/мм"          # not "мм/mm"
+    assert mu_text("μv", 0.02, "м/с", "ru") == "μv = 0,02 (м/с)/мм"
+    assert mu_text("μk", 0.5, "", "en") == "μk = 0.5 1/mm"

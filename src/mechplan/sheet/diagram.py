@@ -110,9 +110,16 @@ def mu_number(mu: float, language: str) -> str:
 
 
 def mu_text(symbol: str, mu: float, unit: str, language: str) -> str:
-    """"μM = 2,5 N·m/mm" with the language's decimal mark."""
+    """"μM = 2,5 N·m/mm", "μv = 0,2 (m/s)/mm", "μs = 0,25 мм/мм" with the language's decimal
+    mark: a compound unit in parentheses, the millimetre of paper in the script of the unit
+    (a Russian sheet's "мм" is not divided by a Latin "mm")."""
     num = mu_number(mu, language)
-    return f"{symbol} = {num} {unit}/mm" if unit else f"{symbol} = {num} 1/mm"
+    if not unit:
+        return f"{symbol} = {num} 1/mm"
+    per_mm = "мм" if any("\u0400" <= ch <= "\u04ff" for ch in unit) else "mm"
+    if "/" in unit:
+        unit = f"({unit})"
+    return f"{symbol} = {num} {unit}/{per_mm}"
 
 
 def _polylines(xs: np.ndarray, ys: np.ndarray, role: Role, closed: bool) -> list[Primitive]:
