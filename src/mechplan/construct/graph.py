@@ -224,6 +224,8 @@ class Evaluation:
         self.values: dict[str, Array] = {}
         self.gaps: dict[str, Array] = {}
         self.sines: dict[str, Array] = {}
+        #: parts several steps compute alike, by the first of them (see ``OpSpec.shares``)
+        self.shared: dict[tuple[str, ...], Array] = {}
 
     @property
     def evaluated(self) -> int:
@@ -266,7 +268,10 @@ class Evaluation:
         else:
             assert op.evaluate is not None
             args = [self.values[i] for i in step.inputs]
-            value, gap, sine = op.evaluate(step, *args)
+            if op.shares:
+                value, gap, sine = op.evaluate(step, *args, shared=self.shared)
+            else:
+                value, gap, sine = op.evaluate(step, *args)
         stored: Array = np.asarray(value)
         stored.flags.writeable = False
         self.values[step.id] = stored

@@ -189,19 +189,26 @@ class OpSpec:
     alias: str | None = None             # the letter of its points' textbook names (n_XY, n2, n)
     inputs: tuple[str, ...] = field(init=False)
     rest: str | None = field(init=False)  # name of a variable tail of inputs, if any
+    #: its evaluator takes ``shared=``: a dict of one evaluation, for a part several steps
+    #: compute alike (a link's unit normal, a similarity ratio), computed by the first of them
+    shares: bool = field(init=False)
 
     def __post_init__(self) -> None:
         names: list[str] = []
         rest = None
+        shares = False
         if self.evaluate is not None and self.source is Source.INPUTS:
             params = list(inspect.signature(self.evaluate).parameters.values())[1:]
             for p in params:
                 if p.kind is inspect.Parameter.VAR_POSITIONAL:
                     rest = p.name
+                elif p.kind is inspect.Parameter.KEYWORD_ONLY:
+                    shares = shares or p.name == "shared"
                 else:
                     names.append(p.name)
         object.__setattr__(self, "inputs", tuple(names))
         object.__setattr__(self, "rest", rest)
+        object.__setattr__(self, "shares", shares)
         for pair in (self.lever, self.rate_of):
             if isinstance(pair, tuple):
                 for name in pair:

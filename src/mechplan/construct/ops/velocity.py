@@ -46,9 +46,17 @@ def drive_velocity(step: Step, pivot: Array, tip: Array) -> Result:
     return step.param("omega") * perp(tip - pivot), None, None
 
 
-def line_perp(step: Step, through: Array, p: Array, q: Array) -> Result:
-    """Through an image, a line ⊥ the link segment pq."""
-    return line(through, unit(perp(q - p))), None, None
+def line_perp(step: Step, through: Array, p: Array, q: Array, *,
+              shared: dict[tuple[str, ...], Array] | None = None) -> Result:
+    """Through an image, a line ⊥ the link segment pq (its unit normal computed once for the
+    velocity and the acceleration plan)."""
+    key = ("normal", step.input("p"), step.input("q"))
+    u = None if shared is None else shared.get(key)
+    if u is None:
+        u = unit(perp(q - p))
+        if shared is not None:
+            shared[key] = u
+    return line(through, u), None, None
 
 
 def line_parallel(step: Step, through: Array, guide: Array) -> Result:
@@ -71,12 +79,19 @@ def rigid_velocity(
     return origin + scaled(omega, perp(p_point - p_origin)), None, None
 
 
-def similar_image(step: Step, a: Array, b: Array, pa: Array, pb: Array, px: Array) -> Result:
-    """Similarity theorem: image x on the images a, b, as X is on A, B of the position plan."""
+def similar_image(step: Step, a: Array, b: Array, pa: Array, pb: Array, px: Array, *,
+                  shared: dict[tuple[str, ...], Array] | None = None) -> Result:
+    """Similarity theorem: image x on the images a, b, as X is on A, B of the position plan (the
+    ratio of the triangle computed once for the velocity and the acceleration plan)."""
     za, zb = to_complex(a), to_complex(b)
-    zpa = to_complex(pa)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        ratio = (to_complex(px) - zpa) / (to_complex(pb) - zpa)
+    key = ("ratio", step.input("pa"), step.input("pb"), step.input("px"))
+    ratio = None if shared is None else shared.get(key)
+    if ratio is None:
+        zpa = to_complex(pa)
+        with np.errstate(invalid="ignore", divide="ignore"):
+            ratio = (to_complex(px) - zpa) / (to_complex(pb) - zpa)
+        if shared is not None:
+            shared[key] = ratio
     return to_real(za + (zb - za) * ratio), None, None
 
 
