@@ -17,7 +17,16 @@ from mechplan.check.submission import DrawnLine
 from mechplan.construct.step import Plan
 from mechplan.drafting.fonts import text_width_mm
 from mechplan.drafting.labels import OWN_MARGIN_MM, LabelPlacer
-from mechplan.drafting.primitives import Arrow, Circle, Line, Role, Sheet, Text
+from mechplan.drafting.primitives import (
+    Arrow,
+    Circle,
+    HAlign,
+    Line,
+    Role,
+    Sheet,
+    Text,
+    VAlign,
+)
 from mechplan.render import write
 
 from .sheets import solved
@@ -25,17 +34,42 @@ from .sheets import solved
 H = 3.5
 #: a velocity plan of the four-bar squeezed: b, c, e about 2 mm apart, p 20 mm off
 POINTS = {"p": (50.0, 50.0), "b": (70.0, 52.0), "c": (71.5, 53.3), "e": (72.9, 51.9)}
+STEPS = {"p": "vel.p", "b": "vel.B", "c": "vel.C", "e": "vel.E"}
 
 
-def _crowded(with_points: bool = True) -> list:
-    p = POINTS["p"]
-    prims: list = [Arrow(p, POINTS[n], Role.OUTLINE, head_length_mm=3.5, head_width_mm=1.2)
+def _squeezed(gap: float, deg: float) -> dict[str, tuple[float, float]]:
+    """p, and b, c, e ``gap`` mm apart: b → c at ``deg``, c → e turned 109° clockwise."""
+    a, b = math.radians(deg), (70.0, 52.0)
+    c = (b[0] + gap * math.cos(a), b[1] + gap * math.sin(a))
+    e = (c[0] + gap * math.cos(a - 1.9), c[1] + gap * math.sin(a - 1.9))
+    return {"p": (50.0, 50.0), "b": b, "c": c, "e": e}
+
+
+def _crowded(pts: dict[str, tuple[float, float]] = POINTS, with_points: bool = True) -> list:
+    p = pts["p"]
+    prims: list = [Arrow(p, pts[n], Role.OUTLINE, head_length_mm=3.5, head_width_mm=1.2)
                    for n in "bce"]
-    prims += [Line(POINTS["b"], POINTS["c"], Role.THIN), Line(POINTS["c"], POINTS["e"], Role.THIN)]
-    placer = LabelPlacer(prims, H, list(POINTS.values()) if with_points else ())
-    prims += [Circle(xy, 0.5, Role.OUTLINE) for xy in POINTS.values()]
-    prims += [placer.place(xy, name) for name, xy in POINTS.items()]
+    prims += [Line(pts["b"], pts["c"], Role.THIN), Line(pts["c"], pts["e"], Role.THIN)]
+    placer = LabelPlacer(prims, H, list(pts.values()) if with_points else ())
+    prims += [Circle(xy, 0.5, Role.OUTLINE) for xy in pts.values()]
+    prims += [placer.place(xy, name) for name, xy in pts.items()]
     return prims
+
+
+def _read_right(prims: list, pts: dict[str, tuple[float, float]], book: LabelBook,
+                tmp_path) -> bool:
+    """True if the checker's reader gives every label of the drawn plan to its own point."""
+    (path,) = write(Sheet(150.0, 100.0, tuple(prims), name="crowded"), tmp_path, ["dxf"])
+    found = find_plans(read_submission(path), book)
+    (plan,) = [p for p in found.plans if p.plan is Plan.VELOCITY]
+    return all(STEPS[n] in plan.points and math.dist(plan.points[STEPS[n]].at, xy) < 1e-6
+               for n, xy in pts.items())
+
+
+@pytest.fixture(scope="module")
+def book() -> LabelBook:
+    scene, sol = solved("four_bar", 60)
+    return LabelBook.build(sol.construction, scene.mechanism)
 
 
 def _box(t: Text) -> object:
@@ -53,15 +87,34 @@ def test_each_label_is_nearer_its_own_point_than_any_other() -> None:
         assert d[t.string] < 5.0, (t.string, d)                            # still beside it
 
 
-def test_the_reader_reads_the_crowded_plan_back(tmp_path) -> None:
-    scene, sol = solved("four_bar", 60)
-    book = LabelBook.build(sol.construction, scene.mechanism)
-    (path,) = write(Sheet(150.0, 100.0, tuple(_crowded()), name="crowded"), tmp_path, ["dxf"])
-    found = find_plans(read_submission(path), book)
-    (plan,) = [p for p in found.plans if p.plan is Plan.VELOCITY]
-    steps = {"p": "vel.p", "b": "vel.B", "c": "vel.C", "e": "vel.E"}
-    for name, xy in POINTS.items():
-        assert plan.points[steps[name]].at == pytest.approx(xy, abs=1e-6), name
+def test_the_reader_reads_the_crowded_plan_back(book, tmp_path) -> None:
+    assert _read_right(_crowded(), POINTS, book, tmp_path)
+
+
+def test_squeezed_plans_are_read_back_right_and_were_not_before(book, tmp_path) -> None:
+    """Points 1.2–1.8 mm apart in five directions: every plan labelled by the placer that
+    knows the plan's points reads right; placed as before (lines only), some were misread."""
+    before = []
+    for gap in (1.2, 1.5, 1.8):
+        for deg in (0, 30, 60, 90, 120):
+            pts = _squeezed(gap, deg)
+            assert _read_right(_crowded(pts), pts, book, tmp_path / f"{gap}-{deg}"), (gap, deg)
+            before.append(_read_right(_crowded(pts, with_points=False), pts, book,
+                                      tmp_path / f"old-{gap}-{deg}"))
+    assert not all(before)
+
+
+def test_a_label_beside_an_arrowheads_base_is_the_tips(book, tmp_path) -> None:
+    """A label written 0.9 mm from where the shaft p → b ends (the head's base) and 4.2 mm from
+    b itself names b, the tip, as a reader of the drawing understands it."""
+    p, b, c = (50.0, 50.0), (70.0, 50.0), (50.0, 70.0)
+    prims = [Arrow(p, b, Role.OUTLINE, head_length_mm=3.5, head_width_mm=1.2),
+             Arrow(p, c, Role.OUTLINE, head_length_mm=3.5, head_width_mm=1.2),
+             *(Circle(xy, 0.5, Role.OUTLINE) for xy in (p, b, c)),
+             Text((65.0, 47.6), "b", H, halign=HAlign.CENTER, valign=VAlign.MIDDLE),
+             Text((47.5, 52.5), "p", H, halign=HAlign.CENTER, valign=VAlign.MIDDLE),
+             Text((52.5, 72.5), "c", H, halign=HAlign.CENTER, valign=VAlign.MIDDLE)]
+    assert _read_right(prims, {"p": p, "b": b, "c": c}, book, tmp_path)
 
 
 def _arrow_graph(heads: bool):
