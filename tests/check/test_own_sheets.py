@@ -19,8 +19,6 @@ from .sheets import ROOT, TEMPLATES
 
 LINKAGES = {t.stem for t in LINKAGE_TEMPLATES}          # sheets of linkages (kind = "mechanism")
 SHEETS = sorted(p for p in (ROOT / "drawings").glob("*.dxf") if p.stem in LINKAGES)
-#: sheets with velocity plans whose labels the checker misreads, and how many such plans
-CROWDED = {"shaper": 1, "shaper_flywheel": 3}
 
 
 def test_every_template_has_its_sheet() -> None:
@@ -46,16 +44,9 @@ def test_own_sheet_passes(sheet) -> None:
         assert None not in {p.phi_deg for p in plans}
         assert len({p.phi_deg for p in velocity}) > 1
     misread = [p for p in velocity if not _exact(p)]
-    if sheet.stem in CROWDED:
-        # known: on the shaper's crowded velocity plans (points 1–4 mm apart) some labels are
-        # given to the wrong points — see the xfail test below; the others must be exact
-        assert len(misread) <= CROWDED[sheet.stem], [p.name for p in misread]
-    else:
-        assert not misread, [p.name for p in misread]
+    assert not misread, [p.name for p in misread]
     checked = 0
     for p in plans:
-        if p in misread:
-            continue
         spots = [pt.at_mm for pt in p.points]
         merged = {pt.step for pt in p.points if spots.count(pt.at_mm) > 1}   # "c≡d"
         for s in p.segments:
@@ -140,8 +131,6 @@ def test_a_wrong_point_on_one_plan_of_sheet_one_is_found_on_that_plan_only(tmp_p
     assert not report.passed
 
 
-@pytest.mark.xfail(strict=True, reason="known defect: on the shaper's crowded velocity plans "
-                   "(p and a3 3.8 mm apart at φ = 190.5°) the labels are given to the wrong points")
 def test_crowded_velocity_plans_of_the_shaper_are_read_right() -> None:
     report = check(TEMPLATES / "shaper.toml", ROOT / "drawings" / "shaper.dxf", Options())
     assert all(_exact(p) for p in report.plans if p.plan == "velocity")

@@ -234,6 +234,7 @@ def _add_arrowhead(sub: Submission, e: Any, scale: float, where: str) -> None:
     base = ((b1[0] + b2[0]) / 2, (b1[1] + b2[1]) / 2)
     _add_line(sub, tip, base, scale, where, e.dxf.get("layer", ""))
     sub.markers.append(((tip[0] * scale, tip[1] * scale), where))
+    sub.heads.append(((tip[0] * scale, tip[1] * scale), (base[0] * scale, base[1] * scale)))
 
 
 def _finite(*values: float) -> bool:

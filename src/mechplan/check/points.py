@@ -129,7 +129,7 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     """Find the labelled points of a sheet and group them into plans."""
     notes: list[Note] = []
     mu_given = mu_given or {}
-    graph = drawn_graph(sub.lines, sub.markers, snap)
+    graph = drawn_graph(sub.lines, sub.markers, snap, sub.heads)
     # scale-factor texts and other "name = value" texts
     scale_entries = [(plan, e) for e in sub.entries if (plan := mu_plan(e.name)) is not None]
     other = [e for e in sub.entries if mu_plan(e.name) is None]

@@ -3,6 +3,7 @@ separate drawings (components) of a sheet."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -24,7 +25,10 @@ class Graph:
     degree: list[int]                  # line ends at each node
 
 
-def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float) -> Graph:
+def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float,
+                heads: Sequence[tuple[Point, Point]] = ()) -> Graph:
+    """The graph of a drawing; ``heads`` are the arrowheads (tip, middle of the base): where
+    a vector's shaft ends at the base of its head is no point of its own — the point is the tip."""
     pts = [p for ln in lines for p in (ln.start, ln.end)] + [m[0] for m in markers]
     arr = np.asarray(pts, dtype=float).reshape(-1, 2)
     labels = cluster(arr, snap)
@@ -58,6 +62,7 @@ def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: 
             if deg == 1 and end not in marker_nodes and _overshoot(nodes, end, other, at_node,
                                                                    snap):
                 decoration.add(end)
+    decoration |= _head_bases(nodes, heads, marker_nodes, degree_of, snap)
     ends = np.asarray(line_nodes, dtype=np.int64).reshape(-1, 2)
     component = [int(x) for x in components(m, ends[:, 0], ends[:, 1])]
     degree = [len(at_node.get(i, ())) for i in range(m)]
@@ -79,3 +84,16 @@ def _overshoot(nodes: np.ndarray, end: int, other: int, at_node: dict[int, list[
     across = np.abs(rel[:, 0] * u[1] - rel[:, 1] * u[0])
     hits = np.nonzero((along > snap) & (along < min(reach, length - snap)) & (across <= snap))[0]
     return any(len(at_node.get(int(k), ())) >= 2 for k in hits)
+
+
+def _head_bases(nodes: np.ndarray, heads: Sequence[tuple[Point, Point]],
+                marker_nodes: dict[int, str],
+                degree_of: dict[int, int], snap: float) -> set[int]:
+    """Nodes at the base of an arrowhead where only the shaft and the head meet: the shaft
+    ends there because the head is drawn over its last millimetres, the point is the tip."""
+    if not heads or not len(nodes):
+        return set()
+    bases = np.asarray([h[1] for h in heads], dtype=float).reshape(-1, 2)
+    near = np.hypot(*(nodes[:, None, :] - bases[None, :, :]).transpose(2, 0, 1)).min(axis=1)
+    return {int(n) for n in np.flatnonzero(near <= snap)
+            if n not in marker_nodes and degree_of.get(int(n), 0) <= 2}

@@ -102,6 +102,7 @@ class Submission:
     kind: str                                  # "dxf" or "table"
     lines: list[DrawnLine] = field(default_factory=list)
     markers: list[tuple[Point, str]] = field(default_factory=list)   # POINT / small CIRCLE
+    heads: list[tuple[Point, Point]] = field(default_factory=list)   # arrowheads: tip, base
     texts: list[SheetText] = field(default_factory=list)
     entries: list[Entry] = field(default_factory=list)
     notes: list[Note] = field(default_factory=list)

@@ -1,11 +1,13 @@
-"""Label placement: try positions around a point, keep the one that crosses the fewest lines."""
+"""Label placement: try positions around a point, keep the one that crosses the fewest lines and
+that a reader gives to its own point (nearer to it than to any other point of the plan)."""
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
 
-from shapely import STRtree, box
+import numpy as np
+from shapely import STRtree, box, distance, points
 from shapely.geometry import LineString
 
 from .fonts import text_width_mm
@@ -13,12 +15,18 @@ from .primitives import Arrow, HAlign, Line, Polyline, Primitive, Text, VAlign
 
 #: candidate directions (degrees), right-above first as draftsmen usually write
 _DIRECTIONS = (45, 135, 315, 225, 0, 90, 180, 270, 22, 158, 338, 202)
+#: a label's box must be this much (mm) nearer its own point than any other point of the plan
+OWN_MARGIN_MM = 0.8
+#: the cost of a spot where a reader could give the label to another point
+AMBIGUOUS_COST = 50.0
 
 
 class LabelPlacer:
     """Place labels near anchors avoiding the given lines and each other."""
 
-    def __init__(self, obstacles: Sequence[Primitive], height_mm: float) -> None:
+    def __init__(self, obstacles: Sequence[Primitive], height_mm: float,
+                 points_mm: Sequence[tuple[float, float]] = ()) -> None:
+        """``points_mm``: the points of the plan (markers) a reader attaches labels to."""
         geoms = []
         for p in obstacles:
             if isinstance(p, (Line, Arrow)):
@@ -30,6 +38,8 @@ class LabelPlacer:
         self.tree = STRtree(geoms) if geoms else None
         self.placed: list = []
         self.h = height_mm
+        self.xy = np.asarray(points_mm, dtype=float).reshape(-1, 2)
+        self.points = points(self.xy)
 
     def _cost(self, rect) -> float:
         cost = 0.0
@@ -40,6 +50,16 @@ class LabelPlacer:
             if other.intersects(rect):
                 cost += 100.0 + other.intersection(rect).area
         return cost
+
+    def _ambiguity(self, rect, anchor: tuple[float, float]) -> float:
+        """How much nearer (mm) the box is to another point than to its own, plus the margin."""
+        if not len(self.points):
+            return 0.0
+        d = distance(rect, self.points)
+        own = float(distance(rect, points(anchor)))
+        mine = np.hypot(*(self.xy - anchor).T) < 0.3
+        others = d[~mine]
+        return max(0.0, own + OWN_MARGIN_MM - float(others.min())) if len(others) else 0.0
 
     def place(self, anchor: tuple[float, float], text: str) -> Text:
         """Return the label as a Text at the best free spot around ``anchor``."""
@@ -52,6 +72,9 @@ class LabelPlacer:
                 cy = anchor[1] + math.sin(a) * (gap + self.h / 2)
                 rect = box(cx - w / 2, cy - self.h / 2 - 0.3, cx + w / 2, cy + self.h / 2 + 0.3)
                 cost = self._cost(rect) + 0.05 * gap
+                worse = self._ambiguity(rect, anchor)
+                if worse > 0:
+                    cost += AMBIGUOUS_COST + worse
                 if best is None or cost < best[0]:
                     best = (cost, cx, cy, rect)
             if best is not None and best[0] < 0.2:

@@ -41,6 +41,8 @@ from ..i18n import number as format_number
 #: line style of an operation's drawing rule → layer role
 ROLES = {LineStyle.DASHED: Role.DASHED, LineStyle.THIN: Role.THIN, LineStyle.OUTLINE: Role.OUTLINE}
 LABEL_H = 3.5
+#: points of a plan closer than this (mm) are drawn as one point with one label ("c≡d")
+SAME_POINT_MM = 0.5
 TITLE_H = 5.0
 TABLE_H = 2.5
 ROW = 5.0
@@ -211,18 +213,21 @@ def vector_plan(
                 head_width_mm=1.2 if thick else 1.0,
             )
         )
-    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
-    seen: dict[tuple[int, int], list[str]] = {}
+    # points closer than SAME_POINT_MM are one point on paper, with one label "c≡d"
+    seen: list[tuple[tuple[float, float], list[str]]] = []
     for s in steps:
         if s.id not in pts or s.kind is not Kind.POINT:
             continue
-        key = (round(pts[s.id][0] * 2), round(pts[s.id][1] * 2))
-        seen.setdefault(key, []).append(pole_label(s.label, lang))
+        here = next((names for xy, names in seen if math.dist(xy, pts[s.id]) < SAME_POINT_MM),
+                    None)
+        if here is None:
+            seen.append((pts[s.id], here := []))
+        here.append(pole_label(s.label, lang))
         prims.append(Circle(pts[s.id], 0.5, Role.OUTLINE))
-    for key, labels in seen.items():
-        text = "≡".join(dict.fromkeys(labels))
-        anchor = (key[0] / 2, key[1] / 2)
-        prims.append(placer.place(anchor, text))
+    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H,
+                         [xy for xy, _ in seen])
+    for anchor, labels in seen:
+        prims.append(placer.place(anchor, "≡".join(dict.fromkeys(labels))))
     _title_and_tables(panel, c, ev, k, plan, mu, lang, title, segments, group)
     return panel
 
