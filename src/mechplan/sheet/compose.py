@@ -13,7 +13,7 @@ from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
 from ..construct.step import Plan
 from ..drafting.frame import make_frame
-from ..drafting.primitives import Primitive, Sheet, Table, Text
+from ..drafting.primitives import Sheet, Text
 from ..errors import DrawingError, MechplanError
 from ..i18n import decimal_mark, message
 from ..model.mechanism import GROUND, PairKind
@@ -25,7 +25,7 @@ from .kinematics_sheet import (
     small_plan,
     tables_of,
 )
-from .layout import drawing_area, moved
+from .layout import drawing_area, framed
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -266,16 +266,7 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
                     file=scene.path)
             groups.append([(p, o) for p, o in zip(rest, offsets) if o is not None])
             rest = [p for p, o in zip(rest, offsets) if o is None]
-    sheets: list[Sheet] = []
-    for i, placed in enumerate(groups):
-        fields = dict(base, sheet_number=str(i + 1), sheets_total=str(len(groups)))
-        frame = make_frame(size, standard, fields, language=lang)
-        prims: list[Primitive] = []
-        for panel, (dx, dy) in placed:
-            for p in panel.primitives:
-                m = moved(p, dx, dy)
-                prims.extend(m.expand() if isinstance(m, Table) else (m,))
-        sheets.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
+    sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)
     return Composition(sheets, groups, mu, size, standard)
 
 

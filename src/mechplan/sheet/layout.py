@@ -103,18 +103,26 @@ class Layout:
 
     def sheets(self, *, language: str, name: str, fields: Mapping[str, str]) -> list[Sheet]:
         """The framed sheets ``name``, ``name-2``, … with their numbers in the title block."""
-        out: list[Sheet] = []
-        for i, placed in enumerate(self.placements):
-            f = dict(fields)
-            f.update({"sheet_number": str(i + 1), "sheets_total": str(len(self.placements))})
-            frame = make_frame(self.size, self.standard, f, language=language)
-            prims: list[Primitive] = []
-            for panel, (dx, dy) in placed:
-                for p in panel.primitives:
-                    m = moved(p, dx, dy)
-                    prims.extend(m.expand() if isinstance(m, Table) else (m,))
-            out.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
-        return out
+        return framed(self.placements, size=self.size, standard=self.standard,
+                      language=language, name=name, fields=fields)
+
+
+def framed(placements: Sequence[Sequence[tuple[Panel, tuple[float, float]]]], *, size: str,
+           standard: str, language: str, name: str, fields: Mapping[str, str]) -> list[Sheet]:
+    """Panels moved to their places, one framed sheet per group: ``name``, ``name-2``, … with
+    the sheet's number and the count in the title block."""
+    out: list[Sheet] = []
+    for i, placed in enumerate(placements):
+        f = dict(fields)
+        f.update({"sheet_number": str(i + 1), "sheets_total": str(len(placements))})
+        frame = make_frame(size, standard, f, language=language)
+        prims: list[Primitive] = []
+        for panel, (dx, dy) in placed:
+            for p in panel.primitives:
+                m = moved(p, dx, dy)
+                prims.extend(m.expand() if isinstance(m, Table) else (m,))
+        out.append(frame.sheet(prims, name if i == 0 else f"{name}-{i + 1}"))
+    return out
 
 
 def framed_sheets(panels: Sequence[Panel], *, size: str, standard: str, language: str, name: str,
