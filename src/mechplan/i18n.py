@@ -72,6 +72,20 @@ def has_message(msgid: str, language: str = DEFAULT_LANGUAGE) -> bool:
     return msgid in catalogue(language)
 
 
+_UNIT_SYMBOL = re.compile(r"[A-Za-z]+")
+
+
+def unit(expression: str, language: str) -> str:
+    """Write a unit given in SI symbols as ``language`` writes it, symbol by symbol.
+
+    ``unit("(m/s²)/mm", "ru")`` is "(м/с²)/мм", ``unit("kg·m²", "ru")`` "кг·м²"; each symbol
+    comes from the catalogue entry ``unit.<symbol>`` (locale/<lang>/units.po); one without an
+    entry stays as written. Only units go through here, never names or sentences.
+    """
+    table = catalogue(language)
+    return _UNIT_SYMBOL.sub(lambda m: table.get(f"unit.{m.group()}", m.group()), expression)
+
+
 @functools.cache
 def _locale(language: str) -> Locale:
     return Locale.parse(language)

@@ -9,7 +9,7 @@ import numpy as np
 from .construct.protocol import mm, plan_title, protocol, sense_text, vector_text
 from .construct.step import Plan
 from .construct.terms import pole_label
-from .i18n import message
+from .i18n import message, unit
 from .i18n import number as format_number
 from .solve import Solution, segment_table
 from .trust_report import summary_lines
@@ -45,9 +45,9 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         steps = protocol(sol.construction, sol.ev, k, lang, sol.scales, plans)
         for plan in plans:
             mu = sol.scales.get(plan, 1.0)
-            unit = plan.scale_unit
+            scale_unit = unit(plan.scale_unit, lang)
             num = format_number(mu, 6, lang).rstrip('0').rstrip(',.')
-            out += ["", f"### {plan_title(plan, lang)} (μ = {num} {unit})"]
+            out += ["", f"### {plan_title(plan, lang)} (μ = {num} {scale_unit})"]
             for (p, group), (eq, rows) in sol.construction.equations.items():
                 if p is plan:
                     out.append(f"{w['equation']} {group}: {eq}")
@@ -85,8 +85,9 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
         parts = [f"{p:<4}"]
         if c.has_position(p) and c.position(p) in ev.values:
             x, y = ev[c.position(p)][k] * 1000
-            parts.append(f"r = ({format_number(x, 2, lang)}; {format_number(y, 2, lang)}) mm")
-        for sym, unit, image in (
+            parts.append(f"r = ({format_number(x, 2, lang)}; {format_number(y, 2, lang)}) "
+                         f"{unit('mm', lang)}")
+        for sym, si_unit, image in (
             ("v", "m/s", c.velocity_image),
             ("a", "m/s²", c.acceleration_image),
         ):
@@ -94,7 +95,7 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
             if sid in ev.values:
                 vec = ev[sid][k]
                 mag = float(np.hypot(*vec))
-                text = f"{sym} = {format_number(mag, 4, lang)} {unit}"
+                text = f"{sym} = {format_number(mag, 4, lang)} {unit(si_unit, lang)}"
                 if float(f"{mag:.4f}") != 0:
                     text += (
                         f" ∠ {format_number(math.degrees(math.atan2(vec[1], vec[0])), 1, lang)}°"
@@ -103,11 +104,12 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
         lines.append("  " + "   ".join(parts))
     for lid in sol.scene.mechanism.moving:
         parts = []
-        for key, sym, unit, of in (("omega", "ω", "rad/s", c.omega),
+        for key, sym, si_unit, of in (("omega", "ω", "rad/s", c.omega),
                                    ("epsilon", "ε", "rad/s²", c.epsilon)):
             sid = of(lid) if c.has_result(key, lid) else None
             if sid in ev.values:
-                parts.append(f"{sym}{lid} = {format_number(float(ev[sid][k]), 4, lang)} {unit}")
+                parts.append(f"{sym}{lid} = {format_number(float(ev[sid][k]), 4, lang)} "
+                             f"{unit(si_unit, lang)}")
         if parts:
             lines.append("  " + "   ".join(parts))
     return lines
@@ -128,17 +130,18 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
         out.append(f"### {w[1]} {', '.join(r.point for r in fa.guide_reactions.values())}")
     for r in fa.guide_reactions.values():
         d = float(r.offset[k]) if r.offset is not None else math.nan
-        where = (
-            f"d = {format_number(d * 1000, 2, lang)} mm ({r.guide})" if math.isfinite(d) else w[10]
-        )
+        where = (f"d = {format_number(d * 1000, 2, lang)} {unit('mm', lang)} ({r.guide})"
+                 if math.isfinite(d) else w[10])
         out.append(f"  R_{r.key} = {vector_text(r.force[k], lang, 2)};  {where}")
     mb, mz = float(fa.balancing_moment[k]), float(fa.zhukovsky_moment[k])
     role = w[3] if fa.driving(k) else w[4]
     link = sol.scene.mechanism.drive.link
     sense = sense_text(mb, lang)
-    out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} N·m ({sense}; {role})")
-    out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} N·m; {w[6]} "
+    nm = unit("N·m", lang)
+    out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} {nm} ({sense}; {role})")
+    out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} {nm}; {w[6]} "
                f"{float(fa.difference_percent[k]):.2e} %")
-    out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} N·m")
-    out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} kg·m²")
+    out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {nm}")
+    out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
+               f"{unit('kg·m²', lang)}")
     return out

@@ -29,7 +29,8 @@ def test_nan_breaks_the_curve_and_ru_uses_decimal_comma():
     assert len([p for p in d.panel.primitives if isinstance(p, Polyline)]) == 2
     texts = [p.string for p in d.panel.primitives if isinstance(p, Text)]
     assert any("0,1" in t for t in texts) and not any("0.1" in t for t in texts)
-    assert mu_text("μM", 2.5, "N·m", "ru") == "μM = 2,5 N·m/mm"
+    assert mu_text("μM", 2.5, "N·m", "ru") == "μM = 2,5 Н·м/мм"
+    assert "A, Дж" in texts and "φ, рад" in texts          # a Russian sheet writes Russian units
 
 
 def test_panels_flow_onto_numbered_sheets():
@@ -48,7 +49,9 @@ def test_panels_flow_onto_numbered_sheets():
 
 def test_scale_factor_text_keeps_its_unit_whole_and_in_one_script():
     assert mu_text("μM", 2.5, "N·m", "en") == "μM = 2.5 N·m/mm"
-    assert mu_text("μv", 0.2, "m/s", "ru") == "μv = 0,2 (m/s)/mm"        # not "m/s/mm"
+    assert mu_text("μv", 0.2, "m/s", "en") == "μv = 0.2 (m/s)/mm"        # not "m/s/mm"
+    assert mu_text("μv", 0.2, "m/s", "ru") == "μv = 0,2 (м/с)/мм"        # Russian unit symbols
+    assert mu_text("μJ", 0.002, "kg·m²", "vi") == "μJ = 0,002 kg·m²/mm"  # vi, zh: SI symbols
     assert mu_text("μa", 10.0, "m/s²", "en") == "μa = 10 (m/s²)/mm"
     assert mu_text("μs", 0.25, "мм", "ru") == "μs = 0,25 мм/мм"          # not "мм/mm"
     assert mu_text("μv", 0.02, "м/с", "ru") == "μv = 0,02 (м/с)/мм"

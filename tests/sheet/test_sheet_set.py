@@ -15,6 +15,7 @@ from shapely import box
 from mechplan.cli import main
 from mechplan.construct.protocol import mm
 from mechplan.construct.step import Plan
+from mechplan.i18n import unit
 from mechplan.scene import load_scene
 from mechplan.sheet.compose import compose, packing_area
 from mechplan.sheet.frame import make_frame
@@ -55,7 +56,7 @@ def test_solve_prints_the_scale_factors_and_segments_of_the_sheet(path, capsys):
     k = sol.scene.drawing.plan_positions[0] if sol.scene.drawing.plan_positions else (
         0 if sol.scene.positions.angles else 1)
     section = re.split(r"^## ", report, flags=re.MULTILINE)[1 + k]
-    plans = [part for part in section.split("### ")[1:] if " m/mm)" not in part.split("\n")[0]]
+    plans = [part for part in section.split("### ")[1:] if f" {unit('m/mm', sol.scene.language)})" not in part.split("\n")[0]]
     mm_word = re.escape(mm(sol.scene.language))
     rows = [r for part in plans
             for r in re.findall(rf"^    (\S+)\s+(-?[0-9.,]+) {mm_word}", part, re.MULTILINE)]

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from ..i18n import message, number
+from ..i18n import message, number, unit
 from .graph import Construction, Evaluation
 from .ops import SPECS, Drawn, OpSpec, Written
 from .segments import Segment
@@ -35,13 +35,13 @@ def sense_text(value: float, lang: str) -> str:
 
 def mm(lang: str) -> str:
     """The millimetre symbol of a language (мм in Russian)."""
-    return message("protocol.unit.mm", lang)
+    return unit("mm", lang)
 
 
-def vector_text(value: np.ndarray, lang: str, digits: int = 1, unit: str = "N") -> str:
+def vector_text(value: np.ndarray, lang: str, digits: int = 1, si_unit: str = "N") -> str:
     """"1459,8 N ∠ -120,0°": magnitude and direction (no angle for a zero vector)."""
     mag = float(np.hypot(*value))
-    text = f"{number(mag, digits, lang)} {unit}"
+    text = f"{number(mag, digits, lang)} {unit(si_unit, lang)}"
     if float(f"{mag:.{digits}f}") != 0:
         text += f" ∠ {number(math.degrees(math.atan2(value[1], value[0])), digits, lang)}°"
     return text
@@ -52,11 +52,11 @@ def _scalar_text(step: Step, value: float, lang: str) -> str:
     if step.plan is Plan.FORCE:
         if written is Written.OFFSET:
             return f"{number(value * 1000, 1, lang)} {mm(lang)}"
-        return f"{number(value, 2, lang)} N·m"
+        return f"{number(value, 2, lang)} {unit('N·m', lang)}"
     if written is Written.ANGLE or step.label.startswith("θ"):
         return f"{number(math.degrees(value), 2, lang)}°"
-    unit = "rad/s" if step.plan is Plan.VELOCITY else "rad/s²"
-    text = f"{number(value, 3, lang)} {unit}"
+    rate = "rad/s" if step.plan is Plan.VELOCITY else "rad/s²"
+    text = f"{number(value, 3, lang)} {unit(rate, lang)}"
     if float(number(value, 3, "en")) != 0 and written is Written.RATE:
         text += f" ({sense_text(value, lang)})"
     return text
@@ -69,7 +69,7 @@ def measured(seg: Segment, ev: Evaluation, k: int, mu: float, lang: str) -> str:
     if seg.plan is Plan.POSITION:
         return f"{seg.name} = {number(length / mu, 1, lang)} {mm(lang)}"
     return (f"{pole_label(seg.name, lang)} = {number(length / mu, 1, lang)} {mm(lang)} → "
-            f"{seg.quantity} = {number(length, 3, lang)} {seg.plan.unit}")
+            f"{seg.quantity} = {number(length, 3, lang)} {unit(seg.plan.unit, lang)}")
 
 
 def sentence(c: Construction, step: Step, ev: Evaluation, k: int, lang: str,

@@ -21,7 +21,7 @@ from ..drafting.primitives import (
     Text,
     VAlign,
 )
-from ..i18n import message, number
+from ..i18n import message, number, unit
 from ..model.cam import Contact, Motion
 from ..synthesis.cam.profile import follower_positions
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_number, mu_text, scale_for
@@ -52,10 +52,14 @@ class Units:
     ua: str
 
 
+_SI = {"mm": "mm", "deg": "°", "m_s": "m/s", "m_s2": "m/s²", "rad": "rad", "rad_rad": "rad/rad",
+       "per_rad": "1/rad", "rad_s": "rad/s", "rad_s2": "rad/s²"}
+
+
 def units_of(d: CamDesign, lang: str) -> Units:
     """Millimetres for a translating follower, degrees and radians for an oscillating one."""
     def u(name: str) -> str:
-        return message(f"cam.unit.{name}", lang)
+        return unit(_SI[name], lang)
     if d.spec.follower.motion is Motion.TRANSLATING:
         return Units(1e3, 1e3, u("mm"), u("mm"), u("mm"), u("m_s"), u("m_s2"))
     return Units(180.0 / math.pi, 1.0, u("deg"), u("rad_rad"), u("per_rad"), u("rad_s"),
@@ -93,8 +97,8 @@ def _motion_diagrams(d: CamDesign, lang: str, scale: float) -> list[Panel]:
     x_axis = Axis("φ", "°", 360.0 / mu_deg, mu=mu_deg)
     panels = []
     mus = []
-    for name, values, unit, f in (("s", d.dense.s, u.u0, u.f0), ("s1", d.dense.s1, u.u1, u.f1),
-                                  ("s2", d.dense.s2, u.u2, u.f1)):
+    for name, values, u_y, f in (("s", d.dense.s, u.u0, u.f0), ("s1", d.dense.s1, u.u1, u.f1),
+                                 ("s2", d.dense.s2, u.u2, u.f1)):
         y = closed(values, f)
         curves = [Curve(phi_deg, y)]
         for c in d.comparisons:        # the graphical differentiation (chords), dashed
@@ -104,7 +108,7 @@ def _motion_diagrams(d: CamDesign, lang: str, scale: float) -> list[Panel]:
                 curves.append(Curve(np.degrees(c.inner_nodes), c.s2_by_chords * f, Role.DASHED))
         symbol = {"s": "s", "s1": "s′", "s2": "s″"}[name]
         dg = diagram_panel(f"cam-{name}", message(f"cam.sheet.{name}", lang),
-                           curves, x_axis, Axis(symbol, unit, DIAGRAM_H * scale), lang)
+                           curves, x_axis, Axis(symbol, u_y, DIAGRAM_H * scale), lang)
         panels.append(dg)
         mus.append(dg.mu_y / f)             # SI per mm
     mu_phi = math.radians(mu_deg)
@@ -141,8 +145,8 @@ def _ss1_diagram(d: CamDesign, lang: str, scale: float) -> Panel | None:
     span = max(float(np.ptp(np.append(s1, cx))), float(np.ptp(np.append(s, low))))
     mu = round_scale(span / (110.0 * scale))
     dg = diagram_panel("cam-ss1", message("cam.sheet.ss1", lang), curves,
-                       Axis("s′", message("cam.unit.mm", lang), 110.0 * scale, mu=mu),
-                       Axis("s", message("cam.unit.mm", lang), 110.0 * scale, mu=mu), lang,
+                       Axis("s′", "mm", 110.0 * scale, mu=mu),
+                       Axis("s", "mm", 110.0 * scale, mu=mu), lang,
                        markers=[Marker(cx, cy, "O")])
     zx, zy = dg.to_mm(cx, cy * 1.1 - 1.0)
     dg.panel.primitives.append(Text((zx, zy), message("cam.sheet.zone", lang), 2.5,

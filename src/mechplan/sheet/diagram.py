@@ -16,7 +16,7 @@ import numpy as np
 
 from ..construct.scale import round_scale
 from ..drafting.primitives import Arrow, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
-from ..i18n import number
+from ..i18n import number, unit
 from .fit import drawing_right, text_block
 from .panels import Panel
 
@@ -28,7 +28,8 @@ SMALL_H = 1.8       # mm, tick labels (ISO 3098)
 
 @dataclass(frozen=True)
 class Axis:
-    """One axis: its symbol and unit as written on the sheet, and its scale factor (units per mm).
+    """One axis: its symbol and SI unit ("N·m", written in the sheet's language by
+    :func:`mechplan.i18n.unit`), and its scale factor (units per mm).
 
     ``mu`` None: a round scale factor is chosen so the data fill ``length_mm``.
     """
@@ -38,6 +39,10 @@ class Axis:
     length_mm: float
     mu: float | None = None
     mu_symbol: str = ""            # e.g. "μφ"; default "μ" + symbol
+
+    def title(self, language: str) -> str:
+        """"M, Н·м": the axis' symbol and unit as the sheet writes them."""
+        return f"{self.symbol}, {unit(self.unit, language)}" if self.unit else self.symbol
 
 
 @dataclass(frozen=True)
@@ -109,17 +114,13 @@ def mu_number(mu: float, language: str) -> str:
     return num
 
 
-def mu_text(symbol: str, mu: float, unit: str, language: str) -> str:
-    """"μM = 2,5 N·m/mm", "μv = 0,2 (m/s)/mm", "μs = 0,25 мм/мм" with the language's decimal
-    mark: a compound unit in parentheses, the millimetre of paper in the script of the unit
-    (a Russian sheet's "мм" is not divided by a Latin "mm")."""
+def mu_text(symbol: str, mu: float, si_unit: str, language: str) -> str:
+    """"μM = 2,5 N·m/mm", "μv = 0,2 (m/s)/mm", "μs = 0,25 мм/мм" in the language's decimal mark
+    and unit symbols (:func:`mechplan.i18n.unit`): a compound unit in parentheses."""
     num = mu_number(mu, language)
-    if not unit:
-        return f"{symbol} = {num} 1/mm"
-    per_mm = "мм" if any("\u0400" <= ch <= "\u04ff" for ch in unit) else "mm"
-    if "/" in unit:
-        unit = f"({unit})"
-    return f"{symbol} = {num} {unit}/{per_mm}"
+    if "/" in si_unit:
+        si_unit = f"({si_unit})"
+    return f"{symbol} = {num} {unit(f'{si_unit or 1}/mm', language)}"
 
 
 def _polylines(xs: np.ndarray, ys: np.ndarray, role: Role, closed: bool) -> list[Primitive]:
@@ -169,10 +170,8 @@ def diagram_panel(name: str, title: str, curves: Sequence[Curve], x_axis: Axis, 
     ox, oy = ax_x / mu_x, ax_y / mu_y
     prims.append(Arrow((X0 - 2.0, oy), (X1 + 8.0, oy), Role.THIN, 3.0, 1.0))
     prims.append(Arrow((ox, Y0 - 2.0), (ox, Y1 + 8.0), Role.THIN, 3.0, 1.0))
-    prims.append(Text((X1 + 9.0, oy - 1.0), f"{x_axis.symbol}, {x_axis.unit}" if x_axis.unit
-                      else x_axis.symbol, TEXT_H, valign=VAlign.TOP))
-    prims.append(Text((ox + 1.5, Y1 + 9.0), f"{y_axis.symbol}, {y_axis.unit}" if y_axis.unit
-                      else y_axis.symbol, TEXT_H, valign=VAlign.TOP))
+    prims.append(Text((X1 + 9.0, oy - 1.0), x_axis.title(language), TEXT_H, valign=VAlign.TOP))
+    prims.append(Text((ox + 1.5, Y1 + 9.0), y_axis.title(language), TEXT_H, valign=VAlign.TOP))
     for lo, hi, mu, horizontal in ((x_lo, x_hi, mu_x, True), (y_lo, y_hi, mu_y, False)):
         step = _tick_step(mu)
         digits = _digits(step)

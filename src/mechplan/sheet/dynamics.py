@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..drafting.primitives import Role, VAlign
-from ..i18n import message, number
+from ..i18n import message, number, unit
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
 from .fit import TableStyle, table_panel, text_block
 from .layout import enlargement, fitted_sheets
@@ -125,8 +125,10 @@ def dynamics_panels(d: MachineDynamics, lang: str, scale: float = 1.0) -> list[P
 
 def table_rows(d: MachineDynamics, lang: str) -> list[tuple[str, ...]]:
     """Heading and rows of values at the drawn positions (the last row closes the cycle)."""
-    head = (message("dynamics.col.no", lang), "φ, °", "M_d, N·m", "M_c, N·m", "A_d, J", "A_c, J",
-            "ΔT, J", "ΔT*, J", "J_red, kg·m²", "dJ/dφ, kg·m²", "ω, rad/s", "ε, rad/s²")
+    head = (message("dynamics.col.no", lang), *(
+        f"{symbol}, {unit(si_unit, lang)}" for symbol, si_unit in (
+            ("φ", "°"), ("M_d", "N·m"), ("M_c", "N·m"), ("A_d", "J"), ("A_c", "J"), ("ΔT", "J"),
+            ("ΔT*", "J"), ("J_red", "kg·m²"), ("dJ/dφ", "kg·m²"), ("ω", "rad/s"), ("ε", "rad/s²"))))
     rows: list[tuple[str, ...]] = [head]
     for j, i in enumerate(d.drawn):
         rows.append((str(j), number(math.degrees(d.theta[i]), 0, lang),

@@ -8,7 +8,7 @@ import math
 from collections.abc import Sequence
 
 from ..drafting.primitives import HAlign, Sheet
-from ..i18n import message, number
+from ..i18n import message, number, unit
 from ..synthesis.gears.involute import TIP_MIN, Pair
 from ..synthesis.gears.solve import GearSolution, PlanetaryResult
 from ..synthesis.gears.train import Conditions
@@ -37,7 +37,7 @@ def condition_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, bool
     c: Conditions = res.chosen
     s = res.spec
     n = (lambda x, d=3: number(x, d, lang))
-    mm = message("gears.unit.mm", lang)
+    mm = unit("mm", lang)
     names = s.scheme.gear_names
     rows = [(message("gears.cond.ratio", lang),
              (f"i_{names[0]}{names[-1]}^h = {n(res.willis_i, 4)};  u_{s.input}{s.output} = "
@@ -45,8 +45,8 @@ def condition_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, bool
              f"Δu = {n(c.ratio_error * 100, 2)} %"), c.ratio_ok)]
     second = f"{names[-2]}–{names[-1]}"
     rows.append((message("gears.cond.coaxial", lang),
-                 (f"a_w({names[0]}–{names[1]}) = {_mm(c.a_w[0], lang)} mm;  a_w({second}) = "
-                 f"{_mm(c.a_w[1], lang)} mm"), c.coaxial))
+                 (f"a_w({names[0]}–{names[1]}) = {_mm(c.a_w[0], lang)} {mm};  a_w({second}) = "
+                 f"{_mm(c.a_w[1], lang)} {mm}"), c.coaxial))
     k = s.planets
     if c.assembly_p is not None:
         total = c.assembly_value * (1 + k * c.assembly_p)
@@ -152,8 +152,8 @@ def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:
         if others:
             panels.append(table_panel("others",
                                       message("gears.sheet.others", lang, count=res.found),
-                                      ("z", f"D, {message('gears.unit.mm', lang)}", "u"), others))
-        per_s = message("gears.unit.per_s", lang)
+                                      ("z", f"D, {unit('mm', lang)}", "u"), others))
+        per_s = unit("1/s", lang)
         panels.append(table_panel("omega", message("gears.report.omega", lang),
                                   (message("gears.col.link", lang), f"ω, {per_s}",
                                    f"ω − ω_h, {per_s}"),

@@ -13,7 +13,7 @@ from ..construct.segments import SegmentKind
 from ..construct.step import Plan
 from ..drafting.labels import LabelPlacer
 from ..drafting.primitives import Arrow, Circle, Line, Role, Text
-from ..i18n import message
+from ..i18n import message, unit
 from ..i18n import number as format_number
 from .panels import LABEL_H, TABLE_H, TITLE_H, Panel, _finite, mu_text
 
@@ -53,7 +53,8 @@ def zhukovsky_lever(
             forces.append((turned(ev[term.first][k]), ev[term.second][k], c[term.second].label))
         else:
             couples.append(
-                f"{c[term.first].label} = {format_number(float(ev[term.first][k]), 2, lang)} N·m"
+                f"{c[term.first].label} = {format_number(float(ev[term.first][k]), 2, lang)} "
+                f"{unit('N·m', lang)}"
             )
     largest = max((float(np.hypot(*f)) for _, f, _ in forces), default=0.0)
     if largest > 0:
@@ -82,7 +83,7 @@ def zhukovsky_lever(
         )
         y = y0 - 6.0
         for line in couples + [
-            f"{lever.label} = {format_number(float(ev[lever.id][k]), 2, lang)} N·m"
+            f"{lever.label} = {format_number(float(ev[lever.id][k]), 2, lang)} {unit('N·m', lang)}"
         ]:
             prims.append(Text((x0, y), line, TABLE_H))
             y -= 4.5

@@ -35,7 +35,7 @@ from ..drafting.primitives import (
     Text,
     VAlign,
 )
-from ..i18n import message
+from ..i18n import message, unit
 from ..i18n import number as format_number
 
 #: line style of an operation's drawing rule → layer role
@@ -100,10 +100,10 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
 
 def mu_text(plan: Plan, mu: float, lang: str) -> str:
     """ "μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
-    sym, unit = plan.scale_symbol, plan.scale_unit
+    sym, si_unit = plan.scale_symbol, plan.scale_unit
     digits = max(0, -math.floor(math.log10(mu)) + 3) if mu > 0 else 3
     num = format_number(mu, digits, lang).rstrip("0").rstrip(",.")
-    return f"{sym} = {num} {unit}"
+    return f"{sym} = {num} {unit(si_unit, lang)}"
 
 
 def table(rows: Sequence[tuple[str, ...]], origin: tuple[float, float]) -> Table:
@@ -257,7 +257,7 @@ def _title_and_tables(
             head("segment"),
             f"{head('on_paper')}, {mm(lang)}",
             head("quantity"),
-            f"{head('value')}, {plan.unit}",
+            f"{head('value')}, {unit(plan.unit, lang)}",
         )
     ]
     for seg in segments:

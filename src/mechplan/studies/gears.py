@@ -6,7 +6,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from ..i18n import message, number
+from ..i18n import message, number, unit
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
@@ -56,11 +56,11 @@ class GearStudy:
             out.append(message("gears.report.others", lang))
             for c in res.others:
                 out.append(f"  {', '.join(map(str, c.z))};  D = {number(c.size * 1000, 1, lang)} "
-                           f"{message('gears.unit.mm', lang)};  u = {n(c.ratio)}")
+                           f"{unit('mm', lang)};  u = {n(c.ratio)}")
             if not res.others:
                 out.append("  " + message("gears.report.none_other", lang))
             out.append(message("gears.report.omega", lang))
-            per_s = message("gears.unit.per_s", lang)
+            per_s = unit("1/s", lang)
             for link, w, rel in omega_rows(res, lang):
                 out.append(f"  {link}:  ω = {w} {per_s};  ω − ω_h = {rel} {per_s}")
             for link, w5 in sol.ordinary_omega.items():
