@@ -12,8 +12,6 @@ from shapely import box, distance, points
 from mechplan.check import read_submission
 from mechplan.check.labels import LabelBook
 from mechplan.check.points import find_plans
-from mechplan.check.sketch import drawn_graph
-from mechplan.check.submission import DrawnLine
 from mechplan.construct.step import Plan
 from mechplan.drafting.fonts import text_width_mm
 from mechplan.drafting.labels import OWN_MARGIN_MM, LabelPlacer
@@ -28,6 +26,8 @@ from mechplan.drafting.primitives import (
     VAlign,
 )
 from mechplan.render import write
+from mechplan.submission.read import DrawnLine
+from mechplan.submission.sketch import drawn_graph
 
 from .sheets import solved
 

@@ -4,16 +4,12 @@ from __future__ import annotations
 
 import pytest
 
-from mechplan.check import notation
-from mechplan.check.labels import (
-    LabelBook,
-    clean_text,
-    is_angle_name,
-    label_key,
-    mu_plan,
-)
+from mechplan.check.labels import LabelBook, mu_plan
 from mechplan.construct.step import Plan
 from mechplan.scene import load_scene
+from mechplan.submission import notation
+from mechplan.submission.dxf import clean_text
+from mechplan.submission.written import is_angle_name, label_key
 
 from .sheets import TEMPLATES, solved
 

@@ -54,6 +54,6 @@ def test_nearest() -> None:
     ("Hoïa ñoà vaän toác", "VNI-Times", ("Hoïa ñoà vaän toác", "vni")),
 ])
 def test_legacy_vietnamese(text: str, font: str, expected: tuple[str, str | None]) -> None:
-    from mechplan.check.notation import decode_legacy
+    from mechplan.submission.notation import decode_legacy
 
     assert decode_legacy(text, font) == expected

@@ -207,7 +207,7 @@ def test_csv_rows_that_cannot_be_read_are_reported(tmp_path: Path, four_bar) -> 
 def test_linkage_table_toml_forms(tmp_path: Path) -> None:
     """The TOML forms of a table of lengths and values (docs/check.md) are read as entries with
     their section; rows of an array name their segment; a value of no use is a note."""
-    from mechplan.check.submission import read_submission
+    from mechplan.submission.read import read_submission
 
     path = tmp_path / "forms.toml"
     path.write_text(""""φ" = 60

@@ -9,7 +9,6 @@ import ezdxf
 import pytest
 from scenes import ROOT
 
-from mechplan.check.labels import clean_text
 from mechplan.drafting.typography import mtext, plain, runs
 from mechplan.render import dxf as dxf_backend
 from mechplan.render import mpl as mpl_backend
@@ -18,6 +17,7 @@ from mechplan.scene import load_scene
 from mechplan.sheet.compose import compose, scale_field
 from mechplan.sheet.primitives import Sheet, Text
 from mechplan.solve import solve
+from mechplan.submission.dxf import clean_text
 
 
 def test_runs_raise_and_lower_the_marked_parts():

@@ -7,9 +7,9 @@ hint) and the root causes found (new errors, swapped labels, arithmetic slips).
 catalogue of messages: :mod:`mechplan.check.texts`); the report's own fields stay in English.
 """
 
+from ..submission.read import Submission, read_submission
 from .grade import Options, check
 from .report import CheckReport, Finding, PlanReport, PointRow, SegmentRow, Tolerance, ValueRow
-from .submission import Submission, read_submission
 
 __all__ = ["CheckReport", "Finding", "Options", "PlanReport", "PointRow", "SegmentRow",
            "Submission", "Tolerance", "ValueRow", "check", "read_submission"]

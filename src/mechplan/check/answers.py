@@ -20,12 +20,13 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
+from ..submission.answer_table import read_answers
+from ..submission.notation import catalogue, compact
+from ..submission.read import Entry, Note
+from ..submission.written import number_and_half, parse_value
 from ..units import si_unit
 from .answer_keys import Keys, keys_for, valid_sets
-from .answer_table import read_answers
 from .context import Options, swaps
-from .match import _number_and_half, parse_value
-from .notation import catalogue, compact
 from .report import (
     CARRIED,
     NEW,
@@ -38,7 +39,6 @@ from .report import (
     Finding,
     ValueRow,
 )
-from .submission import Entry, Note
 from .texts import T, join
 
 _TABLES = {"dynamics": ("dynamics",), "engine": ("engine",), "cam": ("cam",),
@@ -183,7 +183,7 @@ def _parse(item: Entry, spec: Spec, notes: list[Note]) -> tuple[float, float] | 
     if dim == "count":
         dim = "dimensionless"
     if dim == "dimensionless" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
-        value, half = _number_and_half(text)     # a tooth number or a ratio needs no unit
+        value, half = number_and_half(text)     # a tooth number or a ratio needs no unit
         return (value, half) if value is not None else None
     if dim == "angle" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
         text += " deg"                       # pressure angles are written in degrees

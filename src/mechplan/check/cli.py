@@ -9,10 +9,11 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from .. import i18n
 from ..construct.step import Plan
 from ..errors import CheckError, SceneError
 from .report import Tolerance
-from .texts import LANGUAGES, T, Text
+from .texts import LANGUAGES, T
 
 #: a plan by its name or the letter of its scale factor ("velocity", "v")
 PLAN_NAMES = {name: p for p in Plan for name in (p.value, p.scale_key[3:].lower())}
@@ -114,7 +115,7 @@ def run(args: argparse.Namespace) -> int:
     try:
         return _run(args, said)
     except CheckError as exc:
-        if isinstance(exc.detail, Text) and said["lang"] != "en":
+        if isinstance(exc.detail, i18n.Text) and said["lang"] != "en":
             raise CheckError(exc.detail.tr(said["lang"]), file=exc.file, key=exc.key) from None
         raise
 

@@ -12,6 +12,7 @@ from ..construct.graph import Construction, Evaluation
 from ..construct.segments import Segment
 from ..construct.step import Plan
 from ..scene.spec import Scene
+from ..submission.read import Submission
 from .labels import LabelBook, PlanKey, plan_key, segment_key
 from .match import Interpretation
 from .points import DrawnPlan, DrawnSheet
@@ -21,7 +22,6 @@ from .report import (
     SegmentRow,
     Tolerance,
 )
-from .submission import Submission
 from .texts import T, join
 
 

@@ -10,6 +10,7 @@ import numpy as np
 from ..construct.ops import Grade
 from ..construct.step import Plan
 from ..geom.vec import rotate
+from ..submission.read import Note
 from .context import (
     Ctx,
     Drawn,
@@ -24,7 +25,6 @@ from .report import (
     NEW,
     SWAPPED,
 )
-from .submission import Note
 from .texts import T, plan_title, with_case
 
 

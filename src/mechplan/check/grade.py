@@ -21,6 +21,8 @@ from ..construct.step import Plan
 from ..errors import CheckError, MechplanError
 from ..geom.sketch import nearest
 from ..scene.spec import Scene
+from ..submission.read import Note, Submission, read_submission
+from ..submission.written import is_angle_name, parse_angle
 from .context import (
     Ctx,
     Drawn,
@@ -35,7 +37,7 @@ from .context import (
 )
 from .drawn import classify_points, find_swaps, overrides_of, prepare
 from .hints import HintContext, depends_on, rule
-from .labels import LabelBook, PlanKey, is_angle_name, parse_angle
+from .labels import LabelBook, PlanKey
 from .match import QuantityIndex, SegmentIndex, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
 from .positions import grade_per_plan, several_positions
@@ -57,7 +59,6 @@ from .report import (
     SegmentRow,
     Tolerance,
 )
-from .submission import Note, Submission, read_submission
 from .texts import T, join, plan_title
 from .values import grade_table_segments, grade_values
 
@@ -149,8 +150,8 @@ def _angles(scene: Scene, sub: Submission, options: Options,
 
 
 def _wants_force(sub: Submission) -> bool:
+    from ..submission.notation import dimension
     from .labels import mu_plan
-    from .notation import dimension
     from .points import _layer_plan
 
     for e in sub.entries:

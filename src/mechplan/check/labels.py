@@ -10,9 +10,7 @@ reading is; clusters of labels on a sheet then vote for their plan.
 
 from __future__ import annotations
 
-import math
 import re
-import unicodedata
 from dataclasses import dataclass, field
 
 from ..construct.graph import Construction
@@ -21,59 +19,12 @@ from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..model.mechanism import GROUND, Mechanism
 from ..scene.loader import SCALE_KEYS
+from ..submission import notation
+from ..submission.written import label_key
 from ..units import parse_quantity
-from . import notation
 
 #: a plan drawn on its own: force polygons are one per group, the other plans one each
 PlanKey = tuple[Plan, str]
-
-PRIMES = "′'’`´ʹ‘‛＇"
-_SUP = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹ⁿᵗᵏʳ", "0123456789ntkr")
-
-# -- MTEXT and TEXT formatting -----------------------------------------------------------------
-_MTEXT_STACK = re.compile(r"\\S([^;^/#]*)[\^/#]([^;]*);")
-_MTEXT_CODE = re.compile(r"\\[fFcCHhWwQqTtAap][^;]*;|\\[LlOoKkNX~]")
-_TEXT_CODE = re.compile(r"%%([dDpPcCuUoOkK%]|\d{3})")
-_TEXT_SPECIAL = {"d": "°", "p": "±", "c": "Ø", "%": "%"}
-_UNICODE_CODE = re.compile(r"\\U\+([0-9A-Fa-f]{4})")
-
-
-def clean_text(raw: str, mtext: bool = False) -> str:
-    """Strip DXF formatting codes and return the plain text (lines joined by newlines)."""
-    text = raw
-    if mtext:
-        text = text.replace("\\P", "\n").replace("\\~", " ")
-        text = _MTEXT_STACK.sub(lambda m: f"{m.group(1)}{m.group(2)}", text)
-        text = _MTEXT_CODE.sub("", text)
-        text = text.replace("\\\\", "\x00").replace("\\{", "\x01").replace("\\}", "\x02")
-        text = text.replace("{", "").replace("}", "")
-        text = text.replace("\x00", "\\").replace("\x01", "{").replace("\x02", "}")
-
-    def special(m: re.Match[str]) -> str:
-        code = m.group(1)
-        if code.isdigit():
-            return chr(int(code))
-        return _TEXT_SPECIAL.get(code.lower(), "")
-
-    text = _TEXT_CODE.sub(special, text)
-    text = _UNICODE_CODE.sub(lambda m: chr(int(m.group(1), 16)), text)
-    text = unicodedata.normalize("NFC", text)
-    return "\n".join(line.strip() for line in text.splitlines()).strip()
-
-
-def label_key(text: str) -> str:
-    """Return the comparison key of a written label: lower case, one prime mark, no decoration.
-
-    ``"b′"``, ``"b'"`` and ``"B’"`` → ``"b'"``; ``"n_{CB}"`` and ``"nCB"`` → ``"ncb"``;
-    ``"π′"`` → ``"π'"``; ``"s₂"`` → ``"s2"``.
-    """
-    t = text.strip().translate(notation.SUBSCRIPTS).translate(_SUP)
-    for ch in PRIMES:
-        t = t.replace(ch, "'")
-    t = t.replace("″", "''")
-    t = re.sub(r"[\s_{}^$\\]", "", t)
-    t = t.replace("Π", "π")
-    return t.lower()
 
 
 @dataclass(frozen=True, slots=True)
@@ -247,14 +198,6 @@ def parse_mu(text: str, plan: Plan) -> float:
     return parse_quantity(notation.units_ascii(text), SCALE_KEYS[plan.scale_key])
 
 
-def parse_angle(text: str) -> float:
-    """A written crank angle in degrees ("60", "60°", "1,05 rad"); a :class:`SceneError` if it is
-    not one."""
-    written = notation.units_ascii(text) if any(ch.isalpha() or ch == "°" for ch in text) else (
-        f"{text} deg")
-    return math.degrees(parse_quantity(written, "angle"))
-
-
 def mu_plan(name: str) -> Plan | None:
     """The plan of a scale-factor name: "μv", "mu_v", "μ_a", "mu_F", "μl" (None otherwise)."""
     m = _MU_NAME.match(name.strip())
@@ -263,9 +206,3 @@ def mu_plan(name: str) -> Plan | None:
     return MU_NAMES[m.group(1).lower()]
 
 
-_PHI_NAME = re.compile(r"^(?:φ|ϕ|phi|fi|at|angle|crank[_ ]?angle)[_\s]*1?$", re.IGNORECASE)
-
-
-def is_angle_name(name: str) -> bool:
-    """True for the name of the crank angle of the submission ("φ", "φ1", "phi", "at")."""
-    return bool(_PHI_NAME.match(name.strip()))

@@ -12,26 +12,28 @@ from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
-from ..units import parse_quantity, si_unit
-from . import notation
+from ..submission import notation
+from ..submission.read import Entry, Note
+from ..submission.written import (
+    case_key,
+    is_angle_name,
+    is_length_text,
+    label_key,
+    number_and_half,
+    parse_angle,
+    parse_value,
+)
 from .labels import (
     LabelBook,
     PlanKey,
     feature_votes,
-    is_angle_name,
-    label_key,
     mu_plan,
-    parse_angle,
     parse_mu,
     plan_key,
     segment_key,
 )
-from .notation import units_ascii
 from .points import LAYER_HINTS
-from .submission import Entry, Note
 from .texts import T, join, plan_title
-
-_NUMBER = re.compile(r"[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?")
 
 
 @dataclass(frozen=True, slots=True)
@@ -154,16 +156,6 @@ def _reversed_quantity(seg: Segment, mech: Mechanism | None) -> str | None:
     return f"{m.group(1)}_{names[1]}{names[0]}"
 
 
-# -- segments ----------------------------------------------------------------------------------
-def case_key(text: str) -> str:
-    """Like :func:`label_key` but keeping upper and lower case ("BC" ≠ "bc")."""
-    low = label_key(text)
-    t = "".join(ch for ch in text if not ch.isspace() and ch not in "_{}^$\\")
-    if len(t) != len(low):
-        return low
-    return "".join(a.upper() if b.isupper() else a for a, b in zip(low, t))
-
-
 class SegmentIndex:
     """Segments of a construction by the ways their names are written ("pb", "πb'", "b1n2")."""
 
@@ -236,47 +228,6 @@ def section_plan(section: str | None) -> PlanKey | None:
     return None
 
 
-def _number_and_half(text: str) -> tuple[float | None, float]:
-    m = _NUMBER.search(text)
-    if not m:
-        return None, 0.0
-    s = m.group(0).replace("−", "-").replace(",", ".")
-    mant = re.split("[eE]", s)[0]
-    decimals = len(mant.split(".")[1]) if "." in mant else 0
-    exp = int(re.split("[eE]", s)[1]) if re.search("[eE]", s) else 0
-    value = float(s)
-    if not math.isfinite(value) or abs(exp - decimals) > 300:
-        return None, 0.0
-    return value, 0.5 * 10.0 ** (exp - decimals)
-
-
-def _is_length_text(text: str) -> bool:
-    t = text.strip().lower()
-    return bool(re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?\s*(mm|мм)?", t))
-
-
-def parse_value(text: str, dimension: str, where: str, notes: list[Note],
-                name: str) -> tuple[float, float] | None:
-    """(SI value, half a unit of the last digit in SI) of a written value, or None with a note."""
-    number, half = _number_and_half(text)
-    bare = bool(re.fullmatch(r"\s*[-+−]?\d+(?:[.,]\d+)?(?:[eE][-+]?\d+)?\s*", text))
-    if bare and number is None:
-        notes.append(Note("error", T("note.not_finite", name=name, text=text), where))
-        return None
-    if bare and number is not None:
-        unit = si_unit(dimension) or "1"
-        notes.append(Note("info", T("note.no_unit", name=name, text=text, unit=unit), where))
-        return number, half
-    try:
-        value = parse_quantity(units_ascii(text), dimension)
-    except SceneError as exc:
-        notes.append(Note("error", T("note.value_error", name=name, text=text,
-                                     detail=exc.detail), where))
-        return None
-    ratio = value / number if number else 1.0
-    return value, abs(half * ratio)
-
-
 def interpret(entries: list[Entry], qi: QuantityIndex, si: SegmentIndex,
               from_sheet: bool) -> Interpretation:
     """Sort entries into scale factors, the crank angle, drawn lengths and physical values."""
@@ -323,7 +274,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         return
     sec = section_plan(e.section)
     length_text = e.length if e.length is not None else (
-        e.text if e.text is not None and _is_length_text(e.text) else None)
+        e.text if e.text is not None and is_length_text(e.text) else None)
     prefer = None
     if e.quantity:
         qq = qi.find(e.quantity)
@@ -336,7 +287,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         found = si.find(e.name, sec[0] if sec else None, prefer)
     if found is not None and length_text is not None:
         seg, key = found
-        number, half = _number_and_half(length_text)
+        number, half = number_and_half(length_text)
         if number is None or not math.isfinite(number) or number < 0:
             notes.append(Note("error", T("note.length_expected", name=e.name, text=length_text),
                               e.where))
@@ -368,7 +319,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         vtext = e.value if e.value is not None else text
         if vtext is None:
             return
-        if _is_length_text(vtext) and "mm" in vtext.lower() and q.dimension != "length":
+        if is_length_text(vtext) and "mm" in vtext.lower() and q.dimension != "length":
             notes.append(Note("error", T("note.length_not_value", name=e.name, text=vtext,
                                          display=q.display, dim=T(f"dim.{q.dimension}")),
                               e.where))
@@ -378,7 +329,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
             return
         gv = GivenValue(e.name, q, parsed[0], vtext, e.where, parsed[1])
         if e.length is not None and e.value is not None:
-            number, half = _number_and_half(e.length)
+            number, half = number_and_half(e.length)
             gv.length_mm, gv.length_half_unit = number, half
         out.values.append(gv)
         return

@@ -23,17 +23,17 @@ from shapely.geometry import MultiPoint
 
 from ..construct.step import Plan
 from ..geom.sketch import crossings, nearest
+from ..submission.read import DrawnLine, Entry, Note, Point, SheetText, Submission
+from ..submission.sketch import Graph, drawn_graph
+from ..submission.written import label_key
 from .labels import (
     Candidate,
     LabelBook,
     PlanKey,
     feature_votes,
-    label_key,
     mu_plan,
     parse_mu,
 )
-from .sketch import Graph, drawn_graph
-from .submission import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .texts import T, Text, join, plan_title, with_case
 
 #: words in layer names that say which plan a drawing is (acceleration before velocity: 加速度)

@@ -7,10 +7,10 @@ import math
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
-from .. import __version__
+from .. import __version__, i18n
 from ..construct.scale import SCALE_KEYS
 from ..i18n import num, pad
-from .submission import Note
+from ..submission.read import Note
 from .texts import T, Text, capitalize, join, plan_word, tr, word
 
 #: verdicts
@@ -250,7 +250,7 @@ def _json(x: Any, lang: str, key: str = "") -> Any:
         return {k: _json(v, lang, k) for k, v in x.items()}
     if isinstance(x, (list, tuple)):
         return [_json(v, lang, key) for v in x]
-    if isinstance(x, Text):
+    if isinstance(x, i18n.Text):
         return x.tr(lang) if key in PROSE_KEYS else str(x)
     return x
 

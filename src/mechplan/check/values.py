@@ -14,6 +14,7 @@ from ..construct.ops import Grade
 from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
 from ..errors import MechplanError
+from ..submission.read import Note
 from ..units import si_unit
 from .context import (
     Ctx,
@@ -43,7 +44,6 @@ from .report import (
     SegmentRow,
     ValueRow,
 )
-from .submission import Note
 from .texts import T, join, plan_title, plan_word
 
 

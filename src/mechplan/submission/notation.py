@@ -45,8 +45,8 @@ class _Symbol:
 
 @functools.cache
 def catalogue() -> dict[str, Any]:
-    """The notation catalogue (package data ``check/notation.toml``)."""
-    with (resources.files("mechplan.check") / "notation.toml").open("rb") as fh:
+    """The notation catalogue (package data ``submission/notation.toml``)."""
+    with (resources.files("mechplan.submission") / "notation.toml").open("rb") as fh:
         return tomllib.load(fh)
 
 

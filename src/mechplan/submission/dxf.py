@@ -8,6 +8,7 @@ import itertools
 import logging
 import math
 import re
+import unicodedata
 from collections.abc import Iterable
 from dataclasses import replace
 from pathlib import Path
@@ -18,9 +19,8 @@ from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 
 from ..drafting.fonts import text_width_mm
 from ..errors import CheckError
-from .labels import clean_text
 from .notation import decode_legacy
-from .submission import DrawnLine, Note, Point, SheetText, Submission, parse_assignments
+from .read import DrawnLine, Note, Point, SheetText, Submission, parse_assignments
 from .texts import T, has
 
 INSUNITS_MM = {0: 1.0, 1: 25.4, 2: 304.8, 4: 1.0, 5: 10.0, 6: 1000.0, 14: 100.0}
@@ -345,3 +345,32 @@ def _add_dimension(sub: Submission, e: Any, scale: float, via: str) -> None:
         (mid.x * scale, mid.y * scale), (text_width_mm(name, h) / 2 * scale, h / 2 * scale))))
 
 
+# -- MTEXT and TEXT formatting -----------------------------------------------------------------
+_MTEXT_STACK = re.compile(r"\\S([^;^/#]*)[\^/#]([^;]*);")
+_MTEXT_CODE = re.compile(r"\\[fFcCHhWwQqTtAap][^;]*;|\\[LlOoKkNX~]")
+_TEXT_CODE = re.compile(r"%%([dDpPcCuUoOkK%]|\d{3})")
+_TEXT_SPECIAL = {"d": "°", "p": "±", "c": "Ø", "%": "%"}
+_UNICODE_CODE = re.compile(r"\\U\+([0-9A-Fa-f]{4})")
+
+
+def clean_text(raw: str, mtext: bool = False) -> str:
+    """Strip DXF formatting codes and return the plain text (lines joined by newlines)."""
+    text = raw
+    if mtext:
+        text = text.replace("\\P", "\n").replace("\\~", " ")
+        text = _MTEXT_STACK.sub(lambda m: f"{m.group(1)}{m.group(2)}", text)
+        text = _MTEXT_CODE.sub("", text)
+        text = text.replace("\\\\", "\x00").replace("\\{", "\x01").replace("\\}", "\x02")
+        text = text.replace("{", "").replace("}", "")
+        text = text.replace("\x00", "\\").replace("\x01", "{").replace("\x02", "}")
+
+    def special(m: re.Match[str]) -> str:
+        code = m.group(1)
+        if code.isdigit():
+            return chr(int(code))
+        return _TEXT_SPECIAL.get(code.lower(), "")
+
+    text = _TEXT_CODE.sub(special, text)
+    text = _UNICODE_CODE.sub(lambda m: chr(int(m.group(1), 16)), text)
+    text = unicodedata.normalize("NFC", text)
+    return "\n".join(line.strip() for line in text.splitlines()).strip()

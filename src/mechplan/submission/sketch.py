@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..geom.sketch import cluster, components
-from .submission import DrawnLine, Point
+from .read import DrawnLine, Point
 
 #: strokes shorter than this (mm) may be arrowhead barbs, hatching or ticks
 BARB_MAX_MM = 8.0

@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
-from .submission import Entry, Note, Submission, csv_rows, load_toml, submitted_file
+from .read import Entry, Note, Submission, csv_rows, load_toml, submitted_file
 from .texts import T
 
 _ANGLE_TEXT = re.compile(r"^\s*(?:([^\d\s=:+−-][^=:]*?)\s*[=:]\s*)?([-+−]?\d+(?:[.,]\d+)?)\s*"
