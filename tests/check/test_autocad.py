@@ -16,8 +16,8 @@ import ezdxf
 import numpy as np
 import pytest
 
+from mechplan.batch.check_class import check_class, variant_of
 from mechplan.check import Options, check, read_submission
-from mechplan.check.klass import check_class, variant_of
 from mechplan.check.report import CARRIED, NEW, OK, REFERENCE, SLIP, WRONG
 from mechplan.construct.step import Plan
 from mechplan.errors import CheckError

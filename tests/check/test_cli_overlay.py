@@ -10,8 +10,8 @@ from pathlib import Path
 import ezdxf
 import pytest
 
-from mechplan.check.cli import add_parser, parse_tolerances
 from mechplan.check.report import Tolerance
+from mechplan.cli.check import add_parser, parse_tolerances
 from mechplan.construct.step import Plan
 from mechplan.errors import CheckError, MechplanError
 

@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 from mechplan.check import Options, check
-from mechplan.check.cli import add_parser
 from mechplan.check.overlay import marks
 from mechplan.check.report import CARRIED, NEW, SLIP, WRONG
 from mechplan.check.texts import LANGUAGES, T, tr
+from mechplan.cli.check import add_parser
 from mechplan.construct.step import Plan
 from mechplan.i18n import catalogue, num
 

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 
 import mechplan.check
-from mechplan.check.cli import PLAN_NAMES, add_parser, parse_scales
+from mechplan.cli.check import PLAN_NAMES, add_parser, parse_scales
 from mechplan.construct.ops import SPECS, Grade
 from mechplan.construct.step import Plan
 from mechplan.errors import CheckError

@@ -56,7 +56,9 @@ def test_solve_prints_the_scale_factors_and_segments_of_the_sheet(path, capsys):
     k = sol.scene.drawing.plan_positions[0] if sol.scene.drawing.plan_positions else (
         0 if sol.scene.positions.angles else 1)
     section = re.split(r"^## ", report, flags=re.MULTILINE)[1 + k]
-    plans = [part for part in section.split("### ")[1:] if f" {unit('m/mm', sol.scene.language)})" not in part.split("\n")[0]]
+    position_scale = f" {unit('m/mm', sol.scene.language)})"
+    plans = [part for part in section.split("### ")[1:]
+             if position_scale not in part.split("\n")[0]]
     mm_word = re.escape(mm(sol.scene.language))
     rows = [r for part in plans
             for r in re.findall(rf"^    (\S+)\s+(-?[0-9.,]+) {mm_word}", part, re.MULTILINE)]

@@ -8,8 +8,8 @@ import sys
 from importlib import resources
 from pathlib import Path
 
-from . import __version__
-from .errors import MechplanError
+from .. import __version__
+from ..errors import MechplanError
 
 #: exit code of a run that completed but flagged results or left positions out (see README)
 FLAGGED = 3
@@ -30,13 +30,13 @@ def _positive_int(text: str) -> int:
 
 
 def _solve(args: argparse.Namespace) -> int:
-    from .studies import solve_file
-    from .studies.mechanism import MechanismStudy
+    from ..studies import solve_file
+    from ..studies.mechanism import MechanismStudy
 
     study = solve_file(args.scene, at_deg=args.at, count=args.positions)
     if isinstance(study, MechanismStudy) and (args.sheet or args.standard):
         # the scale factors (μ, segment lengths) of the sheet `mechplan draw --sheet` draws
-        from .solve import choose_scales
+        from ..solve import choose_scales
 
         sol = study.solution
         sol.scales = choose_scales(sol.scene, sol.construction, sol.ev, sol.plans, args.sheet,
@@ -63,9 +63,9 @@ def _solve(args: argparse.Namespace) -> int:
 
 def _draw(args: argparse.Namespace) -> int:
     """Draw every scene; a failing one is reported and the others are still drawn."""
-    from .outputs import prepare_dir
-    from .render import FORMATS, write
-    from .studies import solve_file
+    from ..outputs import prepare_dir
+    from ..render import FORMATS, write
+    from ..studies import solve_file
 
     formats = [f.strip().lower() for f in args.format.split(",") if f.strip()]
     unknown = [f for f in formats if f not in FORMATS]
@@ -128,7 +128,7 @@ def _new(args: argparse.Namespace) -> int:
         dest = dest / f"{args.template.removesuffix('.toml')}.toml"
     if dest.exists():
         raise MechplanError(f"{dest} exists already; choose another name with -o")
-    from .render.atomic import write_atomic
+    from ..render.atomic import write_atomic
 
     write_atomic(dest, text.encode("utf-8"))
     print(dest)
@@ -136,14 +136,14 @@ def _new(args: argparse.Namespace) -> int:
 
 
 def _doctor(args: argparse.Namespace) -> int:
-    from .doctor import report
+    from ..doctor import report
 
     print(report())
     return 0
 
 
 def _completion(args: argparse.Namespace) -> int:
-    from .completion import bash_script
+    from ..completion import bash_script
 
     print(bash_script(parser(), template_names()))
     return 0
@@ -183,8 +183,8 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--lang", choices=LANGUAGE_CHOICES)
     d.add_argument("--standard", choices=STANDARDS)
     d.set_defaults(func=_draw)
-    from .batch.cli import add_parser as add_batch
-    from .check.cli import add_parser as add_check
+    from .batch import add_parser as add_batch
+    from .check import add_parser as add_check
 
     add_check(sub)
     add_batch(sub)
@@ -222,6 +222,3 @@ def main(argv: list[str] | None = None) -> int:
         print("mechplan: interrupted", file=sys.stderr)
         return 130
 
-
-if __name__ == "__main__":
-    raise SystemExit(main())

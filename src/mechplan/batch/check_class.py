@@ -1,5 +1,5 @@
 """A class at once: every submission of a folder checked against its variant, one report per
-student and a summary table (``summary.csv``), in parallel with joblib."""
+student and a summary table (``summary.csv``), on the batch engine (joblib workers)."""
 
 from __future__ import annotations
 
@@ -12,11 +12,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from joblib import Parallel, delayed
-
+from ..check.grade import Options, check
+from ..check.texts import T
 from ..errors import CheckError, MechplanError
-from .grade import Options, check
-from .texts import T
+from ..render.atomic import write_atomic
+from .engine import run_tasks
 
 SUFFIXES = (".dxf", ".toml", ".csv", ".tsv")
 COLUMNS = ("student", "submission", "scene", "phi_deg", "passed", "checked", "ok", "wrong", "new",
@@ -54,25 +54,26 @@ def students(scene: Path, folder: Path) -> list[Student]:
     return [Student(p.stem, p, variant_of(p, scenes)) for p in subs]
 
 
-def _one(st: Student, options: Options, lang: str, out: Path) -> dict[str, Any]:
+def _one(i: int, st: Student, options: Options, lang: str,
+         out: Path) -> tuple[int, dict[str, Any]]:
     row: dict[str, Any] = {"student": st.name, "submission": st.submission.name,
                            "scene": st.scene.name if st.scene else ""}
     if st.scene is None:
         row["error"] = T("class.no_variant", name=st.submission.name).tr(lang)
-        return row
+        return i, row
     try:
         report = check(st.scene, st.submission, options)
     except MechplanError as exc:      # an unusable submission is a row of the summary
         row["error"] = str(exc)
-        return row
-    (out / f"{st.name}.txt").write_text(report.text(lang) + "\n", encoding="utf-8")
-    (out / f"{st.name}.json").write_text(
-        json.dumps(report.to_json(lang), ensure_ascii=False, indent=1) + "\n", encoding="utf-8")
+        return i, row
+    write_atomic(out / f"{st.name}.txt", (report.text(lang) + "\n").encode("utf-8"))
+    write_atomic(out / f"{st.name}.json", (json.dumps(report.to_json(lang), ensure_ascii=False,
+                                                      indent=1) + "\n").encode("utf-8"))
     summary = report.summary()
     phi = round(report.phi_deg, 4) if math.isfinite(report.phi_deg) else ""   # answer tables
     row |= {"phi_deg": phi, "passed": report.passed,
             **{k: summary.get(k, "") for k in COLUMNS if k in summary}}
-    return row
+    return i, row
 
 
 def check_class(scene: Path, folder: Path, out: Path, options: Options, lang: str = "en",
@@ -81,10 +82,12 @@ def check_class(scene: Path, folder: Path, out: Path, options: Options, lang: st
     ``out/summary.csv``; return the summary rows."""
     class_ = students(scene, folder)
     out.mkdir(parents=True, exist_ok=True)
-    rows = Parallel(n_jobs=jobs)(delayed(_one)(st, options, lang, out) for st in class_)
+    calls = [(i, st, options, lang, out) for i, st in enumerate(class_)]
+    done = dict(run_tasks(_one, calls, workers=jobs if jobs > 0 else None, progress=False))
+    rows = [done[i] for i in range(len(calls))]
     buf = io.StringIO()
     writer = csv.DictWriter(buf, fieldnames=COLUMNS, restval="", lineterminator="\n")
     writer.writeheader()
     writer.writerows(rows)
-    (out / "summary.csv").write_text(buf.getvalue(), encoding="utf-8")
+    write_atomic(out / "summary.csv", buf.getvalue().encode("utf-8"))
     return list(rows)

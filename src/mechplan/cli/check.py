@@ -10,10 +10,10 @@ from pathlib import Path
 from typing import Any
 
 from .. import i18n
+from ..check.report import Tolerance
+from ..check.texts import LANGUAGES, T
 from ..construct.step import Plan
 from ..errors import CheckError, SceneError
-from .report import Tolerance
-from .texts import LANGUAGES, T
 
 #: a plan by its name or the letter of its scale factor ("velocity", "v")
 PLAN_NAMES = {name: p for p in Plan for name in (p.value, p.scale_key[3:].lower())}
@@ -89,7 +89,7 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
 
 def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
     """Scale factors given on the command line."""
-    from .labels import parse_mu
+    from ..check.labels import parse_mu
 
     out: dict[Plan, float] = {}
     for plan in Plan:
@@ -121,8 +121,8 @@ def run(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
-    from .grade import Options, check
-    from .overlay import write_overlay
+    from ..check.grade import Options, check
+    from ..check.overlay import write_overlay
 
     outputs = [Path(o) for o in args.output]
     for o in outputs if not Path(args.submission).is_dir() else ():
@@ -136,8 +136,8 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
     if Path(args.submission).is_dir():
         return _run_class(args, options)
+    from ..check.answers import maybe_check_answers, scene_kind_of
     from ..scene import load_scene
-    from .answers import maybe_check_answers, scene_kind_of
 
     found = scene_kind_of(args.scene)
     if found is not None:                   # a dynamics, engine, cam or gear study
@@ -171,7 +171,7 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
 
 def _run_class(args: argparse.Namespace, options: Any) -> int:
     """Check a folder of submissions; one report per student and summary.csv."""
-    from .klass import check_class
+    from ..batch.check_class import check_class
 
     folder = Path(args.submission)
     out = Path(args.output[0]) if args.output else folder / "checked"
@@ -189,6 +189,6 @@ def _run_class(args: argparse.Namespace, options: Any) -> int:
 
 
 def _write(path: Path, data: bytes) -> None:
-    from .overlay import write_bytes
+    from ..check.overlay import write_bytes
 
     write_bytes(path, data)

@@ -64,8 +64,8 @@ def _interrupted() -> int:
 
 
 def _batch(args: argparse.Namespace) -> int:
-    from .klass import run_class
-    from .variants import read_variants
+    from ..batch.klass import run_class
+    from ..batch.variants import read_variants
 
     if args.workers is not None and args.workers < 1:
         raise MechplanError(f"--workers must be at least 1 (got {args.workers})")
@@ -84,8 +84,8 @@ def _batch(args: argparse.Namespace) -> int:
 
 
 def _sweep(args: argparse.Namespace) -> int:
-    from .plan import parse_vary
-    from .sweep import run_sweep
+    from ..batch.plan import parse_vary
+    from ..batch.sweep import run_sweep
 
     if args.workers is not None and args.workers < 1:
         raise MechplanError(f"--workers must be at least 1 (got {args.workers})")
