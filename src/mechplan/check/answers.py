@@ -4,7 +4,7 @@ Names are read through the ``[answers.<kind>]`` sections of the notation catalog
 (``notation.toml``); every value is graded with its error: *ok* within the quantity's tolerance
 (± pct % of the exact value, ± an absolute floor, or ± span_pct % of its diagram's extent,
 whichever is largest; tooth numbers exactly); a *slip* when it does not follow from the student's
-own other answers by the course's formula (:mod:`mechplan.check.answer_keys`); *wrong* and
+own other answers by the course's formula (:mod:`mechplan.studies.answers`); *wrong* and
 *carried* when it follows from their own wrong inputs; *swapped* when two names hold each other's
 values; *new* otherwise. The result is a :class:`CheckReport` with value rows only.
 """
@@ -20,12 +20,12 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
+from ..studies.answers import Keys, keys_for, valid_sets
 from ..submission.answer_table import read_answers
 from ..submission.notation import catalogue, compact
 from ..submission.read import Entry, Note
 from ..submission.written import number_and_half, parse_value
 from ..units import si_unit
-from .answer_keys import Keys, keys_for, valid_sets
 from .context import Options, swaps
 from .report import (
     CARRIED,

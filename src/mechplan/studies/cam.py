@@ -1,9 +1,9 @@
-"""A cam scene solved: report, JSON with the tables, the cam sheet and the profile DXF."""
+"""A cam scene solved: report, JSON with the tables, the cam sheet, the profile DXF, its answers."""
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -13,6 +13,7 @@ from ..i18n import message, number
 from ..model.cam import Contact, Law, Motion, PhaseKind
 from ..sheet.cam import table_rows, units_of
 from ..synthesis.cam import CamDesign, design, profile_table
+from .answers import Keys, Own, Written
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
@@ -197,6 +198,33 @@ class CamStudy:
             "notes": [k for k, _ in d.notes],
         }
 
+    def answers(self) -> Keys:
+        """The exact answers: radii, extreme angles, and s, s′, s″, α at any cam angle."""
+        from ..synthesis.cam.profile import sample
+
+        g = self.design.geometry
+        doc = self.to_json()
+        k = Keys("cam", study=doc, geometry=g, formulas=_own_cam)
+        base, pa = doc["base_radius"], doc["pressure_angle_max"]
+        rho = doc["radius_of_curvature_min"]
+        k.scalars = {"r0": base["used"], "e": base["offset"], "r_profile": base["working_profile"],
+                     "alpha_max_rise": pa["rise"][0], "alpha_max_return": pa["return"][0],
+                     "alpha_max": max(pa["rise"][0], pa["return"][0]),
+                     "rho_min": abs(rho["profile"][0]), "rho_min_pitch": abs(rho["pitch"][0])}
+        for name in ("s1", "s2"):
+            k.spans[name] = max(abs(r[name]) for r in doc["table"])
+        k.spans["s"], k.spans["alpha"] = g.stroke, math.radians(50.0)
+
+        def at(phi_deg: float) -> dict[str, float]:
+            m = sample(g, math.radians(phi_deg))
+            out = {"s": float(m.s[0]), "s1": float(m.s1[0]), "s2": float(m.s2[0])}
+            return out | ({"alpha": abs(float(m.alpha[0]))} if _has_alpha(doc) else {})
+
+        k.any_angle = at
+        if doc["follower"]["motion"] != "translating":       # the follower's s is an angle ψ
+            k.dimensions = {"s": "angle", "s1": "dimensionless", "s2": "dimensionless"}
+        return k
+
     def sheets(self, size: str | None, standard: str | None, language: str | None,
                name: str) -> list[Sheet]:
         """The cam sheet(s)."""
@@ -226,6 +254,29 @@ def solve_cam(text: str, file: str) -> CamStudy:
     from ..scene.cam import parse_cam
 
     return CamStudy(design(parse_cam(text, file)))
+
+
+# -- answers ------------------------------------------------------------------------------------
+def _has_alpha(doc: dict[str, Any]) -> bool:
+    """Pressure angles per angle are graded for a translating knife or roller follower."""
+    return doc["follower"]["motion"] == "translating" and doc["follower"]["contact"] != "flat"
+
+
+def _own_cam(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
+    """The working radius and the pressure angle from the student's own r₀, e, s, s′."""
+    from ..synthesis.cam.profile import pressure_angle
+
+    doc = k.study
+    r0 = w.get(("r0", None)) or doc["base_radius"]["used"]
+    if name == "r_profile" and ("r0", None) in w and doc["follower"]["contact"] == "roller":
+        return w[("r0", None)] - doc["follower"]["roller_radius"], "r = r₀ − r_р", ("r0",)
+    s, s1 = w.get(("s", phi)), w.get(("s1", phi))
+    if name == "alpha" and phi is not None and _has_alpha(doc) and s is not None and \
+            s1 is not None:       # the engine's pressure angle at the student's own r₀, e, s, s′
+        g = replace(k.geometry, r0=r0, e=w.get(("e", None), doc["base_radius"]["offset"]))
+        alpha = pressure_angle(g, np.array([s]), np.array([s1]), np.zeros(1))
+        return abs(float(alpha[0])), "tg α = (s′ ∓ e)/(√(r₀² − e²) + s)", ("s", "s1")
+    return None
 
 
 __all__ = ["CamStudy", "PhaseKind", "solve_cam"]

@@ -1,4 +1,4 @@
-"""An engine scene solved: report, JSON, CSV of the per-angle table and the sheets."""
+"""An engine scene solved: report, JSON, CSV of the per-angle table, the sheets and its answers."""
 
 from __future__ import annotations
 
@@ -25,6 +25,7 @@ from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene, parse_engine_scene
 from ..sheet.engine import COLUMNS, table_cells
+from .answers import Keys, Own, Written, span, written_all
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
@@ -219,6 +220,21 @@ class EngineStudy:
 
         write_atomic(path, self.to_csv(dense).encode("utf-8"))
 
+    def answers(self) -> Keys:
+        """The exact answers: the first cylinder's per-angle table, the total torque."""
+        doc = self.to_json()
+        k = Keys("engine", study=doc, formulas=_own_engine)
+        first = str(doc["cylinders"][0]["number"])
+        for name in _ANSWER_COLUMNS:
+            k.columns[name] = {float(a["phi_deg"]): float(a["cylinders"][first][name])
+                               for a in doc["angles"]}
+        k.columns["M_total"] = {float(a["phi_deg"]): float(a["M_total"]) for a in doc["angles"]}
+        for name, col in k.columns.items():
+            k.spans[name] = span(col)
+        k.scalars = {"M_mean": doc["torque"]["mean"], "M_max": doc["torque"]["max"],
+                     "M_min": doc["torque"]["min"]}
+        return k
+
     def sheets(self, size: str | None, standard: str | None, language: str | None,
                name: str) -> list[Sheet]:
         from ..sheet.engine import engine_sheets
@@ -234,3 +250,36 @@ def _g(v: float) -> str:
 
 def _clean(d: dict[str, float]) -> dict[str, float | None]:
     return {k: (v if math.isfinite(v) else None) for k, v in d.items()}
+
+
+# -- answers ------------------------------------------------------------------------------------
+_ANSWER_COLUMNS = ("p", "Pk", "Pj", "P", "N", "S", "T", "Z", "M", "beta")
+
+
+def _own_engine(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
+    """P_г, P, M and (central slider-crank) N, S, T, Z from the student's own values at φ."""
+    if phi is None:
+        return None
+    e = k.study["engine"]
+    pressure = written_all(w, phi, "p")
+    if name == "Pk" and pressure:
+        return (pressure[0] - e["p0"]) * e["F_p"], "P_г = (p − p₀)·F_п", ("p",)
+    parts = written_all(w, phi, "Pk", "Pj")
+    if name == "P" and parts:
+        return parts[0] + parts[1], "P = P_г + P_j", ("Pk", "Pj")
+    tangential = written_all(w, phi, "T")
+    if name == "M" and tangential:
+        return tangential[0] * e["R"], "M = T·R", ("T",)
+    beta = w.get(("beta", phi))
+    if beta is None:
+        beta = k.exact("beta", phi)
+    if beta is None or len(k.study["cylinders"]) > 1:
+        return None                 # the formulas below are those of a central slider-crank
+    a = math.radians(phi)
+    force = written_all(w, phi, "P")
+    rule = {"N": (math.tan(beta), "N = P·tg β"), "S": (1 / math.cos(beta), "S = P/cos β"),
+            "T": (math.sin(a + beta) / math.cos(beta), "T = P·sin(φ+β)/cos β"),
+            "Z": (math.cos(a + beta) / math.cos(beta), "Z = P·cos(φ+β)/cos β")}.get(name)
+    if rule and force:
+        return force[0] * rule[0], rule[1], ("P",)
+    return None

@@ -1,4 +1,5 @@
-"""A gear scene solved: planetary synthesis, the velocity plan of the train, the involute pair."""
+"""A gear scene solved: planetary synthesis, the velocity plan of the train, the involute pair,
+its answers."""
 
 from __future__ import annotations
 
@@ -6,7 +7,10 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from ..i18n import message, number, unit
+from .answers import Keys, Own, Written
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
@@ -114,6 +118,25 @@ class GearStudy:
             }
         return doc
 
+    def answers(self) -> Keys:
+        """The exact answers: the chosen tooth numbers and their train, the involute pair."""
+        sol = self.solution
+        k = Keys("gears", study=sol, formulas=_own_gears)
+        if sol.planetary is not None:
+            c = sol.planetary.chosen
+            k.scalars |= {f"z{i}": float(z) for i, z in enumerate(c.z, start=1)}
+            k.scalars |= {"k": float(sol.planetary.spec.planets), "u": c.ratio, "a_w": c.a_w[0],
+                          "assembly": c.assembly_value}
+        if sol.pair is not None:
+            p = sol.pair
+            spec = p.spec
+            k.scalars |= {"pair.z1": float(p.gears[0].z), "pair.z2": float(p.gears[1].z),
+                          "pair.m": spec.module, "pair.x1": p.x1, "pair.x2": p.x2,
+                          "pair.a_w": p.a_w, "pair.alpha_w": p.alpha_w, "pair.eps_alpha": p.eps,
+                          "pair.r_b1": p.gears[0].r_b,
+                          "pair.r_b2": p.gears[1].r_b, "pair.y": p.y}
+        return k
+
     def sheets(self, size: str | None, standard: str | None, language: str | None,
                name: str) -> list[Sheet]:
         from ..sheet.gears import gear_sheets
@@ -127,3 +150,61 @@ def solve_gear_text(text: str, file: str) -> GearStudy:
     from ..synthesis.gears.solve import solve_gears
 
     return GearStudy(solve_gears(parse_gears(text, file)))
+
+
+# -- answers ------------------------------------------------------------------------------------
+def _own_gears(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
+    """u (Willis), a_w and the assembly condition from the student's own tooth numbers."""
+    from ..synthesis.gears import train
+
+    sol = k.study
+    if name.startswith("pair."):
+        return _own_pair(sol, name.removeprefix("pair."), w)
+    if sol.planetary is None:
+        return None
+    spec = sol.planetary.spec
+    n = len(sol.planetary.chosen.z)
+    zs = [w.get((f"z{i}", None)) for i in range(1, n + 1)]
+    if any(z is None for z in zs):
+        return None
+    z = np.array([round(v) for v in zs if v is not None])
+    used = tuple(f"z{i}" for i in range(1, n + 1))
+    if name == "u":
+        i = train.willis_i(spec.scheme, z)
+        u = float(train.ratio_from_i(i, spec.scheme, spec.fixed, spec.input, spec.output))
+        sign = "−" if train.willis_sign(spec.scheme) < 0 else ""
+        i_text = "z3/z1" if len(z) == 3 else "z2·z4/(z1·z3)"
+        return u, f"Willis: i^h = {sign}{i_text}", used
+    if name == "a_w":
+        return float(train.centre_distance(spec, z)[0]), "a_w = m(z₁ ± z₂)/2", used
+    if name == "assembly":
+        a, b = train.assembly_terms(spec, z)
+        planets = w.get(("k", None)) or spec.planets
+        return float(a) / float(b) / planets, "z₁·u₁ₕ/k", used
+    return None
+
+
+def _own_pair(sol: Any, name: str, w: Written) -> Own | None:
+    """r_b, α_w and a_w of the involute pair from the student's own m, z and x."""
+    from ..synthesis.gears.involute import inv, inv_inverse
+
+    spec = sol.pair.spec
+    m = w.get(("pair.m", None)) or spec.module
+    alpha = spec.alpha
+    z1, z2 = w.get(("pair.z1", None)), w.get(("pair.z2", None))
+    if z1 is None or z2 is None:
+        z1, z2 = float(sol.pair.gears[0].z), float(sol.pair.gears[1].z)
+    if name in ("r_b1", "r_b2"):
+        z = z1 if name == "r_b1" else z2
+        return m * z * math.cos(alpha) / 2, "r_b = m·z·cos α/2", ("pair.m",)
+    x1, x2 = w.get(("pair.x1", None)), w.get(("pair.x2", None))
+    if x1 is None or x2 is None:
+        return None
+    inv_w = float(inv(alpha)) + 2 * (x1 + x2) * math.tan(alpha) / (z1 + z2)
+    alpha_w = inv_inverse(inv_w)
+    if name == "alpha_w":
+        return alpha_w, "inv α_w = inv α + 2(x₁+x₂)tg α/(z₁+z₂)", ("pair.x1", "pair.x2")
+    if name == "a_w":
+        return (m * (z1 + z2) / 2 * math.cos(alpha) / math.cos(alpha_w),
+                "a_w = m(z₁+z₂)/2·cos α/cos α_w", ("pair.x1", "pair.x2"))
+    return None

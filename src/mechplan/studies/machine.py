@@ -1,4 +1,4 @@
-"""The machine-dynamics part of a mechanism study: solve ``[dynamics]``, report it, JSON."""
+"""The machine-dynamics part of a mechanism study: solve ``[dynamics]``, report, JSON, answers."""
 
 from __future__ import annotations
 
@@ -10,6 +10,7 @@ import numpy as np
 from ..errors import SceneError
 from ..i18n import message, number
 from ..model.dynamics import DynamicsSpec, Unknown
+from .answers import Keys, Own, Written, span, written_all
 
 if TYPE_CHECKING:
     from ..dynamics.machine import MachineDynamics
@@ -143,4 +144,47 @@ def dynamics_json(d: MachineDynamics, k: float = 1.0) -> dict[str, Any]:
     return out
 
 
-__all__ = ["Unknown", "dynamics_json", "dynamics_report", "solve_dynamics"]
+def dynamics_answers(d: dict[str, Any]) -> Keys:
+    """The exact answers of the dynamics from its ``"dynamics"`` JSON object."""
+    fly, motion = d["flywheel"], d["motion"]
+    k = Keys("dynamics", study=d, formulas=_own_dynamics)
+    k.scalars = {"J_fly": fly["exact"]["J"], "J_W": fly["wittenbauer"]["J"],
+                 "J_Mer": fly["merkalov"]["J"], "J_I": fly["merkalov"]["J_I"],
+                 "delta": d["delta"], "omega_m": d["omega_m"],
+                 "omega_max": motion["omega_max"], "omega_min": motion["omega_min"],
+                 "M_const": d["constant_moment"], "A_d": d["work_driving"],
+                 "A_c": d["work_resisting"],
+                 "dT_max": fly["exact"]["J"] * d["delta"] * d["omega_m"] ** 2}
+    for name, key in (("J_red", "J_red"), ("M_d", "M_d"), ("M_c", "M_c"), ("A_d_phi", "A_d"),
+                      ("A_c_phi", "A_c"), ("dT", "dT"), ("omega", "omega")):
+        k.columns[name] = {float(p["phi_deg"]): float(p[key]) for p in d["positions"]}
+        k.spans[name] = span(k.columns[name])
+    k.spans["omega"] = motion["omega_max"] - motion["omega_min"]
+    return k
+
+
+def _own_dynamics(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
+    """δ, ω_m, J, M from the student's own ω_max/ω_min, ΔT_max, J_I and works."""
+    d = k.study
+    wm = w.get(("omega_m", None)) or d["omega_m"]
+    extremes = written_all(w, None, "omega_max", "omega_min")
+    if name == "delta" and extremes:
+        return ((extremes[0] - extremes[1]) / wm, "δ = (ω_max − ω_min)/ω_m",
+                ("omega_max", "omega_min"))
+    if name == "omega_m" and extremes:
+        return ((extremes[0] + extremes[1]) / 2, "ω_m = (ω_max + ω_min)/2",
+                ("omega_max", "omega_min"))
+    dT = written_all(w, None, "dT_max")
+    if name in ("J_fly", "J_W") and dT:            # δ and ω_m are given data
+        return (dT[0] / (d["delta"] * d["omega_m"] ** 2), "J = ΔT_max/(δ·ω_m²)", ("dT_max",))
+    j1 = written_all(w, None, "J_I")
+    if name in ("J_fly", "J_Mer") and j1:
+        return j1[0] - d["J_present"], "J = J_I − J_const", ("J_I",)
+    work_name = "A_c" if d["unknown"] == "driving" else "A_d"
+    work = written_all(w, None, work_name)
+    if name == "M_const" and work:
+        return work[0] / math.radians(d["cycle_deg"]), "M = A/φ_cycle", (work_name,)
+    return None
+
+
+__all__ = ["Unknown", "dynamics_answers", "dynamics_json", "dynamics_report", "solve_dynamics"]

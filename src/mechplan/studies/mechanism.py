@@ -9,6 +9,7 @@ if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
     from ..dynamics.machine import MachineDynamics
     from ..solve import Solution
+    from .answers import Keys
 
 
 @dataclass(frozen=True)
@@ -48,6 +49,12 @@ class MechanismStudy:
 
             doc["dynamics"] = dynamics_json(self.dynamics, self._enlargement())
         return doc
+
+    def answers(self) -> Keys:
+        """The exact answers of the machine's dynamics (the scene must have ``[dynamics]``)."""
+        from .machine import dynamics_answers
+
+        return dynamics_answers(self.to_json()["dynamics"])
 
     def _enlargement(self) -> float:
         """The enlargement of the dynamics diagrams on the scene's own sheet."""
