@@ -1,18 +1,16 @@
 """Check the answer table of a dynamics, engine, cam or gear study against its exact results.
 
 Names are read through the ``[answers.<kind>]`` sections of the notation catalogue
-(``notation.toml``); every value is graded with its error: *ok* within the quantity's tolerance
-(± pct % of the exact value, ± an absolute floor, or ± span_pct % of its diagram's extent,
-whichever is largest; tooth numbers exactly); a *slip* when it does not follow from the student's
-own other answers by the course's formula (:mod:`mechplan.studies.answers`); *wrong* and
-*carried* when it follows from their own wrong inputs; *swapped* when two names hold each other's
-values; *new* otherwise. The result is a :class:`CheckReport` with value rows only.
+(:mod:`mechplan.submission.notation`); every value is graded with its error: *ok* within the
+quantity's tolerance (± pct % of the exact value, ± an absolute floor, or ± span_pct % of its
+diagram's extent, whichever is largest; tooth numbers exactly); a *slip* when it does not follow
+from the student's own other answers by the course's formula (:mod:`mechplan.studies.answers`);
+*wrong* and *carried* when it follows from their own wrong inputs; *swapped* when two names hold
+each other's values; *new* otherwise. The result is a :class:`CheckReport` with value rows only.
 """
 
 from __future__ import annotations
 
-import difflib
-import functools
 import math
 import re
 from dataclasses import dataclass, replace
@@ -22,7 +20,14 @@ from typing import Any
 from ..errors import CheckError
 from ..studies.answers import Keys, keys_for, valid_sets
 from ..submission.answer_table import read_answers
-from ..submission.notation import catalogue, compact
+from ..submission.notation import (
+    ANSWER_TABLES,
+    AnswerSpec,
+    answer_section,
+    closest_answers,
+    is_angle_column,
+    read_answer,
+)
 from ..submission.read import Entry, Note
 from ..submission.written import number_and_half, parse_value
 from ..units import si_unit
@@ -41,86 +46,18 @@ from .report import (
 )
 from .texts import T, join
 
-_TABLES = {"dynamics": ("dynamics",), "engine": ("engine",), "cam": ("cam",),
-           "gears": ("gears", "gears_pair")}
-
-@dataclass(frozen=True, slots=True)
-class Spec:
-    """An answer quantity of the catalogue."""
-
-    canonical: str
-    dimension: str
-    pct: float = 0.0
-    floor: str | None = None
-    span_pct: float = 0.0
-    per_angle: bool = False
-    integer: bool = False
-    magnitude: bool = False
-
-
-@functools.cache
-def _notation() -> dict[str, dict[str, list[Spec]]]:
-    """table → compact spelling → the quantities it may mean."""
-    data = catalogue()["answers"]
-    out: dict[str, dict[str, list[Spec]]] = {}
-    for table in ("dynamics", "engine", "cam", "gears", "gears_pair"):
-        names: dict[str, list[Spec]] = {}
-        for canonical, e in data[table].items():
-            spec = Spec(canonical, e["dimension"], float(e.get("pct", 0)), e.get("floor"),
-                        float(e.get("span_pct", 0)), bool(e.get("per_angle", False)),
-                        bool(e.get("integer", False)), bool(e.get("magnitude", False)))
-            for sp in [canonical, *e["spellings"]]:
-                names.setdefault(compact(sp), []).append(spec)
-                names.setdefault("=" + compact(sp, case=True), []).append(spec)
-        out[table] = names
-    return out
-
-
-def _section_kind(section: str | None) -> str | None:
-    if not section:
-        return None
-    low = section.strip().lower()
-    for kind, names in catalogue()["answers"]["sections"].items():
-        if low in names:
-            return str(kind)
-    return None
-
-
-def is_angle_name(name: str) -> bool:
-    """True for the name of an angle column or key (φ, phi, угол, góc …)."""
-    key = compact(_strip_unit(name))
-    return any(s.canonical == "phi" for t in _notation().values() for s in t.get(key, []))
-
-
-def _strip_unit(name: str) -> str:
-    return re.sub(r"\s*[\[(].*[\])]\s*$", "", name)
-
 
 def read_name(name: str, kind: str, section: str | None, has_angle: bool,
-              keys: Keys) -> tuple[Spec, str] | None:
+              keys: Keys) -> tuple[AnswerSpec, str] | None:
     """The quantity an answer's name means (its spec and its key in ``keys``), or None."""
-    tables = _TABLES[kind]
+    tables = ANSWER_TABLES[kind]
     if kind == "gears":
-        sk = _section_kind(section)
+        sk = answer_section(section)
         if sk == "pair" or keys.study.planetary is None:
             tables = ("gears_pair",)
         elif sk == "planetary" or keys.study.pair is None:
             tables = ("gears",)
-    for table in tables:
-        names = _notation()[table]
-        exact_case = names.get("=" + compact(name, case=True), [])
-        for spec in exact_case + names.get(compact(name), []):
-            if spec.canonical == "phi" or spec.per_angle != has_angle:
-                continue
-            return spec, ("pair." if table == "gears_pair" else "") + spec.canonical
-    return None
-
-
-def _closest(name: str, kind: str) -> list[str]:
-    pool = {k: specs[0].canonical for t in _TABLES[kind] for k, specs in _notation()[t].items()
-            if not k.startswith("=")}
-    hits = difflib.get_close_matches(compact(name), list(pool), n=6, cutoff=0.3)
-    return list(dict.fromkeys(pool[h] for h in hits))[:4]
+    return read_answer(name, tables, has_angle)
 
 
 # -- entry points -------------------------------------------------------------------------------
@@ -150,10 +87,10 @@ def maybe_check_answers(scene: Any, submission: Any,
 
     kind = found[0]
     if kind != "dynamics":
-        table = read_answers(submission, is_angle_name)
+        table = read_answers(submission, is_angle_column)
         return check_answers(scene, table, keys_for(solve_file(scene)), kind, options or Options())
     try:                                # a linkage table of the same scene is checked elsewhere
-        table = read_answers(submission, is_angle_name)
+        table = read_answers(submission, is_angle_column)
     except CheckError:
         return None
     keys = keys_for(solve_file(scene))
@@ -168,7 +105,7 @@ def maybe_check_answers(scene: Any, submission: Any,
 @dataclass
 class _Row:
     item: Entry
-    spec: Spec
+    spec: AnswerSpec
     key: str
     value: float
     half: float
@@ -177,7 +114,7 @@ class _Row:
     tol: float = 0.0
 
 
-def _parse(item: Entry, spec: Spec, notes: list[Note]) -> tuple[float, float] | None:
+def _parse(item: Entry, spec: AnswerSpec, notes: list[Note]) -> tuple[float, float] | None:
     text = (item.text or "").strip()
     dim = spec.dimension
     if dim == "count":
@@ -190,7 +127,7 @@ def _parse(item: Entry, spec: Spec, notes: list[Note]) -> tuple[float, float] | 
     return parse_value(text, dim, item.where, notes, item.name)
 
 
-def _floor(spec: Spec) -> float:
+def _floor(spec: AnswerSpec) -> float:
     if not spec.floor:
         return 0.0
     from ..units import parse_quantity
@@ -212,7 +149,7 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
         if found is None:
             notes.append(Note("error", T("answers.not_understood", name=item.name,
                                          kind=T(f"answers.kind.{kind}"),
-                                         known=join(_closest(item.name, kind))), item.where))
+                                         known=join(closest_answers(item.name, kind))), item.where))
             continue
         spec, key = found
         if key in keys.dimensions:

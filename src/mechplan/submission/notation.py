@@ -232,3 +232,85 @@ def units_ascii(text: str) -> str:
     for written, read_as in catalogue()["units"].items():
         text = text.replace(written, read_as)
     return text
+
+
+# -- answers of the dynamics, engine, cam and gear studies ---------------------------------------
+#: the catalogue's answer tables of each study kind
+ANSWER_TABLES = {"dynamics": ("dynamics",), "engine": ("engine",), "cam": ("cam",),
+                 "gears": ("gears", "gears_pair")}
+
+
+@dataclass(frozen=True, slots=True)
+class AnswerSpec:
+    """An answer quantity of a study in the catalogue: its dimension and how it is graded."""
+
+    canonical: str
+    dimension: str
+    pct: float = 0.0
+    floor: str | None = None
+    span_pct: float = 0.0
+    per_angle: bool = False
+    integer: bool = False
+    magnitude: bool = False
+
+
+@functools.cache
+def answer_names() -> dict[str, dict[str, list[AnswerSpec]]]:
+    """table → compact spelling → the quantities it may mean."""
+    data = catalogue()["answers"]
+    out: dict[str, dict[str, list[AnswerSpec]]] = {}
+    for table in ("dynamics", "engine", "cam", "gears", "gears_pair"):
+        names: dict[str, list[AnswerSpec]] = {}
+        for canonical, e in data[table].items():
+            spec = AnswerSpec(canonical, e["dimension"], float(e.get("pct", 0)), e.get("floor"),
+                        float(e.get("span_pct", 0)), bool(e.get("per_angle", False)),
+                        bool(e.get("integer", False)), bool(e.get("magnitude", False)))
+            for sp in [canonical, *e["spellings"]]:
+                names.setdefault(compact(sp), []).append(spec)
+                names.setdefault("=" + compact(sp, case=True), []).append(spec)
+        out[table] = names
+    return out
+
+
+def answer_section(section: str | None) -> str | None:
+    """The part of a gear study a table's section names (\"planetary\", \"pair\"), or None."""
+    if not section:
+        return None
+    low = section.strip().lower()
+    for kind, names in catalogue()["answers"]["sections"].items():
+        if low in names:
+            return str(kind)
+    return None
+
+
+def is_angle_column(name: str) -> bool:
+    """True for the name of an angle column or key (φ, phi, угол, góc …)."""
+    key = compact(_without_unit(name))
+    return any(s.canonical == "phi" for t in answer_names().values() for s in t.get(key, []))
+
+
+def _without_unit(name: str) -> str:
+    return re.sub(r"\s*[\[(].*[\])]\s*$", "", name)
+
+
+def read_answer(name: str, tables: tuple[str, ...],
+                has_angle: bool) -> tuple[AnswerSpec, str] | None:
+    """The answer quantity a written name means in the first of ``tables`` that knows it, and
+    its key (``"pair."`` before the gear pair's names); a name written with the exact case of a
+    spelling wins (the engine's pressure ``p`` and force ``P``)."""
+    for table in tables:
+        names = answer_names()[table]
+        exact_case = names.get("=" + compact(name, case=True), [])
+        for spec in exact_case + names.get(compact(name), []):
+            if spec.canonical == "phi" or spec.per_angle != has_angle:
+                continue
+            return spec, ("pair." if table == "gears_pair" else "") + spec.canonical
+    return None
+
+
+def closest_answers(name: str, kind: str) -> list[str]:
+    """Up to four answer names of a study kind that look like ``name`` (to suggest)."""
+    pool = {k: specs[0].canonical for t in ANSWER_TABLES[kind]
+            for k, specs in answer_names()[t].items() if not k.startswith("=")}
+    hits = difflib.get_close_matches(compact(name), list(pool), n=6, cutoff=0.3)
+    return list(dict.fromkeys(pool[h] for h in hits))[:4]
