@@ -1,12 +1,17 @@
-"""geom.sketch (clusters, components, crossings, box distances, nearest points) and legacy
-Vietnamese text, by hand-made cases."""
+"""geom.sketch (clusters, components, crossings, box distances, nearest points, gaps),
+submission.sketch (labels given their points) and legacy Vietnamese text, by hand-made cases."""
 
 from __future__ import annotations
+
+import math
 
 import numpy as np
 import pytest
 
-from mechplan.geom.sketch import box_distance, cluster, components, crossings, nearest
+from mechplan.geom.sketch import box_distance, box_gap, cluster, components, crossings, nearest
+from mechplan.submission.read import DrawnLine, SheetText
+from mechplan.submission.sketch import drawn_graph, place_labels
+from mechplan.submission.written import label_names
 
 
 def test_cluster_is_transitive_and_numbered_by_first_point() -> None:
@@ -43,6 +48,39 @@ def test_nearest() -> None:
     assert nearest(pts, (3.0, 3.0), within=0.5) == -1           # 1 mm away: too far
     assert nearest(pts, (1.2, 0.0), mask=np.array([True, True, False, False])) == 0
     assert nearest(np.zeros((0, 2)), (0.0, 0.0)) == -1
+
+
+def test_box_gap() -> None:
+    assert box_gap([(0.0, 0.0), (2.0, 1.0)], [(5.0, 0.0), (6.0, 1.0)]) == pytest.approx(3.0)
+    assert box_gap([(0.0, 0.0), (2.0, 2.0)], [(1.0, 1.0)]) == 0.0          # overlapping boxes
+    assert box_gap([], [(1.0, 1.0)]) == math.inf
+
+
+def test_label_names() -> None:
+    assert label_names(" p≡c ") == ["p", "c"] and label_names("p, o1") == ["p", "o1"]
+    assert label_names("μv = 0,1") == [] and label_names("42") == []
+
+
+def _label(text: str, x: float, y: float) -> SheetText:
+    return SheetText(text, (x, y), 1.5, text, half=(0.5, 0.75))
+
+
+def test_labels_take_points_of_their_own() -> None:
+    # two vectors from the pole (0, 0) to b (20, 0) and c (20, 3); two lines crossing at (50, 50)
+    lines = [DrawnLine((0.0, 0.0), (20.0, 0.0), "1"), DrawnLine((0.0, 0.0), (20.0, 3.0), "2"),
+             DrawnLine((40.0, 40.0), (60.0, 60.0), "3"), DrawnLine((40.0, 60.0), (60.0, 40.0), "4")]
+    graph = drawn_graph(lines, [], 0.2)
+    texts = [_label("b", 21.5, -1.5), _label("c", 21.5, 1.0), _label("k", 51.5, 50.0),
+             _label("z", 70.0, 60.0)]
+    b, c, k, z = place_labels(texts, graph, lines, 3.0)
+    # "c" is nearer b's end than its own, but each label takes a point of its own
+    assert b.at == (20.0, 0.0) and c.at == (20.0, 3.0) and b.node >= 0 and c.node >= 0
+    assert k.node == -1 and k.at == pytest.approx((50.0, 50.0))      # a crossing of two lines
+    assert z.at is None and z.distance == pytest.approx(9.5)         # no point within 3 mm
+    assert graph.nearest_component((1.0, 1.0)) == graph.component[b.node] == 0
+    assert graph.nearest_component((1.0, 1.0), among=[1]) == 1       # only drawing 1
+    pole = graph.ends_from([(20.0, 0.0), (20.0, 3.0)])      # where the vectors to b and c start
+    assert list(pole.items()) == [(0, 2)] and graph.nodes[0].tolist() == [0.0, 0.0]
 
 
 @pytest.mark.parametrize("text, font, expected", [

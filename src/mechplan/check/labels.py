@@ -10,6 +10,7 @@ reading is; clusters of labels on a sheet then vote for their plan.
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 
@@ -17,14 +18,20 @@ from ..construct.graph import Construction
 from ..construct.ops import Grade
 from ..construct.segments import Segment
 from ..construct.step import Kind, Plan
+from ..errors import SceneError
 from ..model.mechanism import GROUND, Mechanism
 from ..scene.loader import SCALE_KEYS
 from ..submission import notation
+from ..submission.read import Entry, Note
 from ..submission.written import label_key
 from ..units import parse_quantity
+from .texts import T
 
 #: a plan drawn on its own: force polygons are one per group, the other plans one each
 PlanKey = tuple[Plan, str]
+#: how textbooks also write the pole of the velocity and the acceleration plan (usual readings)
+POLE_ALIASES = {Plan.VELOCITY: ("p", "pv"),
+                Plan.ACCELERATION: ("π", "π'", "p'", "pi", "pi'", "p1", "π1")}
 
 
 @dataclass(frozen=True, slots=True)
@@ -47,7 +54,7 @@ class LabelBook:
     poles: dict[PlanKey, str] = field(default_factory=dict)
 
     @classmethod
-    def build(cls, c: Construction, mech: Mechanism | None = None) -> LabelBook:
+    def build(cls, c: Construction, mech: Mechanism) -> LabelBook:
         """Collect the point steps of every plan with the ways people write their labels."""
         book = cls()
         # points of a plan are the ends of its segments and its pole (a force's own vector, a
@@ -60,63 +67,50 @@ class LabelBook:
             if step.plan is not Plan.POSITION and not origin and step.id not in ends:
                 continue
             key = plan_key(step.plan, step.group)
-            book.plans.setdefault(key, {})
-            if step.label in book.plans[key].values():
+            steps = book.plans.setdefault(key, {})
+            if step.label in steps.values():
                 continue        # an earlier step already carries this label on this plan
-            book.plans[key][step.id] = step.label
+            steps[step.id] = step.label
             if origin:
                 book.poles[key] = step.id
         for key, steps in book.plans.items():
-            table: dict[str, list[Candidate]] = {}
-            book.aliases[key] = table
+            book.aliases[key] = {}
             for sid, label in steps.items():
-                book._add(key, label_key(label), sid, label, 3)
+                book._add(key, label_key(label), sid, 3)
             book._add_plan_aliases(c, mech, key)
         return book
 
-    def _add(self, key: PlanKey, alias: str, sid: str, label: str, weight: int,
-             convention: str = "") -> None:
-        table = self.aliases[key]
-        entries = table.setdefault(alias, [])
-        if any(e.step == sid and e.convention == convention for e in entries):
-            return
-        entries.append(Candidate(key, sid, label, weight, convention))
+    def _add(self, key: PlanKey, alias: str, sid: str, weight: int, convention: str = "") -> None:
+        entries = self.aliases[key].setdefault(alias, [])
+        if not any(e.step == sid and e.convention == convention for e in entries):
+            entries.append(Candidate(key, sid, self.plans[key][sid], weight, convention))
 
-    def _add_plan_aliases(self, c: Construction, mech: Mechanism | None, key: PlanKey) -> None:
+    def _add_plan_aliases(self, c: Construction, mech: Mechanism, key: PlanKey) -> None:
         plan = key[0]
         steps = self.plans[key]
+        prime = "'" if plan is Plan.ACCELERATION else ""
         pole = self.poles.get(key)
-        if pole is not None:
-            label = steps[pole]
-            if plan is Plan.VELOCITY:
-                for alias in ("p", "pv"):
-                    self._add(key, alias, pole, label, 2)
-            elif plan is Plan.ACCELERATION:
-                for alias in ("π", "π'", "p'", "pi", "pi'", "p1", "π1"):
-                    self._add(key, alias, pole, label, 2 if alias[0] in "πp" else 1)
-            if mech is not None and plan in (Plan.VELOCITY, Plan.ACCELERATION):
-                # the images of frame points are the pole itself ("p ≡ o1 ≡ o3")
-                prime = "'" if plan is Plan.ACCELERATION else ""
-                for point in mech.links[GROUND].points:
-                    self._add(key, label_key(point) + prime, pole, label, 1)
+        if pole is not None and plan in POLE_ALIASES:
+            for alias in POLE_ALIASES[plan]:
+                self._add(key, alias, pole, 2)
+            # the images of frame points are the pole itself ("p ≡ o1 ≡ o3")
+            for point in mech.links[GROUND].points:
+                self._add(key, label_key(point) + prime, pole, 1)
         if plan is Plan.ACCELERATION:
             for sid, label in steps.items():
                 base = label_key(label)
                 if base.endswith("'") and not base[:-1][-1:].isdigit():
-                    self._add(key, base[:-1] + "1", sid, label, 1)  # Russian "b1" for b′
-        if mech is not None and plan in (Plan.VELOCITY, Plan.ACCELERATION):
-            prime = "'" if plan is Plan.ACCELERATION else ""
+                    self._add(key, base[:-1] + "1", sid, 1)     # Russian "b1" for b′
+        if plan in (Plan.VELOCITY, Plan.ACCELERATION):
             by_label = {label_key(lbl): sid for sid, lbl in steps.items()}
-            for link_id, link in mech.links.items():
-                if link_id == GROUND:
-                    continue
-                for point in link.points:
+            for link_id in mech.moving:
+                for point in mech.links[link_id].points:
                     own = label_key(point) + prime
                     if own not in by_label:
                         continue
                     alias = label_key(point + link_id) + prime      # "c2", "c_2", "C2'"
                     if alias not in by_label:
-                        self._add(key, alias, by_label[own], steps[by_label[own]], 2)
+                        self._add(key, alias, by_label[own], 2)
         # normals n_XY and Coriolis points k_XY: reversed names, link numbers, ordinals, bare
         by_letter: dict[str, list[str]] = {}    # the operation's letter (``OpSpec.alias``)
         for sid in steps:
@@ -124,19 +118,15 @@ class LabelBook:
                 by_letter.setdefault(letter, []).append(sid)
         for letter, found in by_letter.items():
             for i, sid in enumerate(found, start=1):
-                step = c[sid]
-                label = steps[sid]
-                sub = label_key(label)[1:]
-                names = notation.points(sub, mech) if mech is not None else None
-                if names and len(names) == 2:
-                    self._add(key, letter + label_key(names[1] + names[0]), sid, label, 2)
-                rate = c.quantity_of(step.inputs[1]) if len(step.inputs) > 1 else None
+                other_way = notation.reversed_points(label_key(steps[sid])[1:], mech)
+                if other_way is not None:
+                    self._add(key, letter + label_key(other_way), sid, 2)
+                rate = c.quantity_of(c[sid].input("omega"))
                 if rate is not None and rate[0] == "omega":   # n2: the normal of link 2
-                    link_no = rate[1]
-                    self._add(key, f"{letter}{link_no}", sid, label, 2, "link")
-                self._add(key, f"{letter}{i}", sid, label, 2, "ordinal")
+                    self._add(key, f"{letter}{rate[1]}", sid, 2, "link")
+                self._add(key, f"{letter}{i}", sid, 2, "ordinal")
                 if len(found) == 1:
-                    self._add(key, letter, sid, label, 2)
+                    self._add(key, letter, sid, 2)
 
     def candidates(self, text: str) -> list[Candidate]:
         """All readings of a written label, best first (exact label, usual alias, weak alias)."""
@@ -151,10 +141,6 @@ class LabelBook:
                     out.append(Candidate(key, pole, self.plans[key][pole], 2))
         out.sort(key=lambda cnd: -cnd.weight)
         return out
-
-    def label_of(self, key: PlanKey, sid: str) -> str:
-        """The construction's label of a step."""
-        return self.plans[key][sid]
 
 
 def plan_key(plan: Plan, group: str = "") -> PlanKey:
@@ -196,6 +182,21 @@ def parse_mu(text: str, plan: Plan) -> float:
     """A written scale factor of a plan in SI ("0,1 м/с/мм"); a :class:`SceneError` if it is not
     one."""
     return parse_quantity(notation.units_ascii(text), SCALE_KEYS[plan.scale_key])
+
+
+def written_mu(e: Entry, text: str, plan: Plan, notes: list[Note], level: str,
+               unusable: str) -> float | None:
+    """The scale factor ``text`` written as ``e`` in SI, or None with a note at ``level`` (the
+    message ``unusable`` when the text is no scale factor of the plan)."""
+    try:
+        mu = parse_mu(text, plan)
+    except SceneError as exc:
+        notes.append(Note(level, T(unusable, name=e.name, text=text, detail=exc.detail), e.where))
+        return None
+    if not (mu > 0 and math.isfinite(mu)):
+        notes.append(Note(level, T("note.mu_positive", name=e.name, text=text), e.where))
+        return None
+    return mu
 
 
 def mu_plan(name: str) -> Plan | None:

@@ -31,8 +31,9 @@ from .labels import (
     parse_mu,
     plan_key,
     segment_key,
+    written_mu,
 )
-from .points import LAYER_HINTS
+from .points import _layer_plan
 from .texts import T, join, plan_title
 
 
@@ -98,7 +99,7 @@ class Interpretation:
 class QuantityIndex:
     """Quantities of a construction, found by the names students write (``notation.toml``)."""
 
-    def __init__(self, c: Construction, mech: Mechanism | None, with_dynamics: bool) -> None:
+    def __init__(self, c: Construction, mech: Mechanism, with_dynamics: bool) -> None:
         self.mech = mech
         self.by_key: dict[str, Quantity] = {}
         for name, sid in c.results.items():
@@ -107,9 +108,13 @@ class QuantityIndex:
                 continue
             if name.startswith("K_"):
                 continue                  # a point of a line of action, not a value
-            dim = ("moment" if step.kind is Kind.SCALAR else "force") if name.startswith(
-                "load_") else "force" if step.plan is Plan.FORCE and step.kind is Kind.POINT \
-                else notation.dimension(name)
+            dim: str | None
+            if name.startswith("load_"):           # a given force or couple
+                dim = "moment" if step.kind is Kind.SCALAR else "force"
+            elif step.plan is Plan.FORCE and step.kind is Kind.POINT:
+                dim = "force"
+            else:
+                dim = notation.dimension(name)
             if dim is not None:
                 self._put(name, Quantity(name, dim, step.plan, step=sid))
         for seg in c.segments:
@@ -121,7 +126,7 @@ class QuantityIndex:
             rev = _reversed_quantity(seg, mech)
             if rev:
                 self._put(rev, q)
-        self.has_force = any(st.plan is Plan.FORCE for st in c)
+        self.has_force = bool(c.of_plan(Plan.FORCE))
         if with_dynamics:
             self._put("J_red", Quantity("J_red", "inertia", None, extra="J_red"))
             self._put("M_red", Quantity("M_red", "moment", None, extra="M_red"))
@@ -134,7 +139,7 @@ class QuantityIndex:
         reading = notation.read(name, self.mech)
         if reading is None:
             return None
-        if reading.canonical.startswith("F@") and self.mech is not None:
+        if reading.canonical.startswith("F@"):
             link = self.mech.links[reading.canonical[2:]]
             return next((self.by_key[k] for p in link.points
                          if (k := notation.key(f"F_{p}")) in self.by_key), None)
@@ -145,15 +150,11 @@ class QuantityIndex:
         return sorted({q.display for q in self.by_key.values()})
 
 
-def _reversed_quantity(seg: Segment, mech: Mechanism | None) -> str | None:
+def _reversed_quantity(seg: Segment, mech: Mechanism) -> str | None:
     """v_CB ≡ v_BC, a^n_CB ≡ a^n_BC: the same magnitude named from the other end."""
     m = re.fullmatch(r"(v|a\^n|a\^t|a\^k|a\^r|a)_(\w+)", seg.quantity)
-    if not m or mech is None:
-        return None
-    names = notation.points(m.group(2).lower(), mech)
-    if not names or len(names) != 2:
-        return None
-    return f"{m.group(1)}_{names[1]}{names[0]}"
+    other_way = notation.reversed_points(m.group(2).lower(), mech) if m else None
+    return f"{m.group(1)}_{other_way}" if m and other_way else None
 
 
 class SegmentIndex:
@@ -197,7 +198,7 @@ class SegmentIndex:
         """
         entries = self.by_key.get(label_key(name), [])
         if plan is not None:
-            entries = [e for e in entries if e[1][0] is plan] or []
+            entries = [e for e in entries if e[1][0] is plan]
         if not entries:
             return None
         exact = self.exact_case.get(case_key(name))
@@ -222,10 +223,8 @@ def section_plan(section: str | None) -> PlanKey | None:
             group = section.strip()[len(word):].strip() if plan is Plan.FORCE else ""
             group = group.lstrip("s").strip() if group.startswith("s ") else group
             return plan_key(plan, group)
-    for plan, words in LAYER_HINTS:
-        if any(w in low for w in words):
-            return plan_key(plan)
-    return None
+    layer = _layer_plan(section)
+    return None if layer is None else plan_key(layer)
 
 
 def interpret(entries: list[Entry], qi: QuantityIndex, si: SegmentIndex,
@@ -243,26 +242,16 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
     text = e.text if e.text is not None else (e.length if e.length is not None else e.value)
     plan = mu_plan(e.name)
     if plan is not None:
-        if text is None:
+        mu = None if text is None else written_mu(e, text, plan, notes, "error", "note.mu_error")
+        if mu is None or from_sheet:
             return
-        try:
-            mu = parse_mu(text, plan)
-        except SceneError as exc:
-            notes.append(Note("error", T("note.mu_error", name=e.name, text=text,
-                                         detail=exc.detail), e.where))
-            return
-        if not (mu > 0 and math.isfinite(mu)):
-            notes.append(Note("error", T("note.mu_positive", name=e.name, text=text),
-                              e.where))
-            return
-        if not from_sheet:
-            prev = out.scales.get(plan)
-            if prev and abs(prev[0] - mu) > 1e-12 * mu:
-                notes.append(Note("warning", T("note.mu_second",
-                                               plan=plan_title(plan.value, case="gen"),
-                                               name=e.name, text=text), e.where))
-            else:
-                out.scales[plan] = (mu, T("read_from", name=e.name, text=text, where=e.where))
+        prev = out.scales.get(plan)
+        if prev and abs(prev[0] - mu) > 1e-12 * mu:
+            notes.append(Note("warning", T("note.mu_second",
+                                           plan=plan_title(plan.value, case="gen"),
+                                           name=e.name, text=text), e.where))
+        else:
+            out.scales[plan] = (mu, T("read_from", name=e.name, text=text, where=e.where))
         return
     if is_angle_name(e.name):
         try:                    # the angle itself is read by grade._angles
@@ -275,46 +264,17 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
     sec = section_plan(e.section)
     length_text = e.length if e.length is not None else (
         e.text if e.text is not None and is_length_text(e.text) else None)
-    prefer = None
-    if e.quantity:
-        qq = qi.find(e.quantity)
-        prefer = qq.plan if qq is not None else None
-    named = qi.find(e.name)
-    found = None
+    given = qi.find(e.quantity) if e.quantity else None     # the quantity written with it
     # a name of plan points ("pb", "ab", "πc'") is a segment; a quantity's name ("aC2", "as2",
     # "VC2B2") is never read as a segment (its length in mm is reported below)
     if length_text is not None and (notation.read(e.name, qi.mech) is None or _plain(e.name)):
-        found = si.find(e.name, sec[0] if sec else None, prefer)
-    if found is not None and length_text is not None:
-        seg, key = found
-        number, half = number_and_half(length_text)
-        if number is None or not math.isfinite(number) or number < 0:
-            notes.append(Note("error", T("note.length_expected", name=e.name, text=length_text),
-                              e.where))
+        found = si.find(e.name, sec[0] if sec else None, given.plan if given else None)
+        if found is not None:
+            _table_segment(e, found[0], found[1], length_text, out, qi)
             return
-        row_mu = None
-        if e.mu:
-            try:
-                row_mu = parse_mu(e.mu, seg.plan)
-            except SceneError as exc:
-                notes.append(Note("error", T("note.row_mu_error", mu=e.mu, name=e.name,
-                                             detail=exc.detail), e.where))
-        ts = TableSegment(seg, key, e.name, e.where, number, half, row_mu)
-        if e.value is not None:
-            qname = e.quantity or seg.quantity
-            q = qi.find(qname) or qi.find(seg.quantity)
-            if q is not None:
-                parsed = parse_value(e.value, q.dimension, e.where, notes, qname)
-                if parsed is not None:
-                    out.values.append(GivenValue(qname, q, parsed[0], e.value, e.where,
-                                                 parsed[1], number, half, row_mu))
-            else:
-                notes.append(Note("warning", T("note.unknown_quantity", name=qname), e.where))
-        out.segments.append(ts)
-        return
-    q = named
-    if q is None and e.quantity:
-        q = qi.find(e.quantity)
+    q = qi.find(e.name)
+    if q is None:
+        q = given
     if q is not None:
         vtext = e.value if e.value is not None else text
         if vtext is None:
@@ -343,6 +303,35 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
     near = notation.closest(e.name, [*qi.names(), *si.names()])
     notes.append(Note(level, T("note.unknown_name", name=e.name) if from_sheet else
                       T("note.unknown_name_known", name=e.name, known=join(near)), e.where))
+
+
+def _table_segment(e: Entry, seg: Segment, key: PlanKey, length_text: str, out: Interpretation,
+                   qi: QuantityIndex) -> None:
+    """A drawn length written for a segment, with the value and μ written on its row."""
+    notes = out.notes
+    number, half = number_and_half(length_text)
+    if number is None or not math.isfinite(number) or number < 0:
+        notes.append(Note("error", T("note.length_expected", name=e.name, text=length_text),
+                          e.where))
+        return
+    row_mu = None
+    if e.mu:
+        try:
+            row_mu = parse_mu(e.mu, seg.plan)
+        except SceneError as exc:
+            notes.append(Note("error", T("note.row_mu_error", mu=e.mu, name=e.name,
+                                         detail=exc.detail), e.where))
+    if e.value is not None:
+        qname = e.quantity or seg.quantity
+        q = qi.find(qname) or qi.find(seg.quantity)
+        if q is not None:
+            parsed = parse_value(e.value, q.dimension, e.where, notes, qname)
+            if parsed is not None:
+                out.values.append(GivenValue(qname, q, parsed[0], e.value, e.where,
+                                             parsed[1], number, half, row_mu))
+        else:
+            notes.append(Note("warning", T("note.unknown_quantity", name=qname), e.where))
+    out.segments.append(TableSegment(seg, key, e.name, e.where, number, half, row_mu))
 
 
 def _plain(name: str) -> bool:

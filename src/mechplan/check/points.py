@@ -11,29 +11,19 @@ name. Drawings of one plan whose labels do not clash are one plan.
 from __future__ import annotations
 
 import math
-import re
 import statistics
 from collections import Counter
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
-import shapely
-from scipy.optimize import linear_sum_assignment
-from shapely.geometry import MultiPoint
 
 from ..construct.step import Plan
-from ..geom.sketch import crossings, nearest
+from ..errors import CheckError
+from ..geom.sketch import box_gap
 from ..submission.read import DrawnLine, Entry, Note, Point, SheetText, Submission
-from ..submission.sketch import Graph, drawn_graph
-from ..submission.written import label_key
-from .labels import (
-    Candidate,
-    LabelBook,
-    PlanKey,
-    feature_votes,
-    mu_plan,
-    parse_mu,
-)
+from ..submission.sketch import Graph, drawn_graph, place_labels
+from ..submission.written import label_key, label_names
+from .labels import Candidate, LabelBook, PlanKey, feature_votes, mu_plan, written_mu
 from .texts import T, Text, join, plan_title, with_case
 
 #: words in layer names that say which plan a drawing is (acceleration before velocity: 加速度)
@@ -43,12 +33,6 @@ LAYER_HINTS: tuple[tuple[Plan, tuple[str, ...]], ...] = (
     (Plan.FORCE, ("force", "сил", "lực", "luc", "力")),
     (Plan.POSITION, ("pos", "mech", "полож", "vị trí", "vi tri", "位置", "机构")),
 )
-#: extra cost (× the label distance) of giving a label to a point where only 1 or 2 line ends
-#: meet: points of a plan are where vectors meet; a construction line drawn past its point ends
-#: loose, and the label is often nearer to that end
-LOOSE_END_COST = {0: 0.45, 1: 0.45, 2: 0.15}
-#: a point marked on the sheet (POINT, a small CIRCLE) is preferred by this much (× distance)
-MARKER_BONUS = 0.2
 #: drawings of one plan whose lines do not join are one plan when they are this close (mm)
 MERGE_GAP_MM = 30.0
 
@@ -63,7 +47,7 @@ class LabelledPoint:
     at: Point           # the point (mm of paper)
     where: str          # the text entity of the label
     distance: float     # label → point (mm)
-    how: str = T("how.line_end")   # "line end", "point marker", "crossing of two lines", "inferred"
+    how: str            # "line end", "point marker", "crossing of two lines", "inferred"
 
 
 @dataclass
@@ -105,23 +89,11 @@ class _Label:
     text: SheetText
     written: str
     cands: list[Candidate]
-    node: int = -1          # -1: a crossing or nothing
-    at: Point | None = None
+    same: list[tuple[str, list[Candidate]]] = field(default_factory=list)  # "p≡c"
+    at: Point | None = None     # None: no point near it
     distance: float = math.inf
     how: str = ""
-    same: list[tuple[str, list[Candidate]]] = field(default_factory=list)  # "p≡c"
-
-
-_SAME_POINT = re.compile(r"\s*(?:≡|,|;)\s*")
-
-
-def _label_names(t: SheetText) -> list[str]:
-    """The names a label text gives its point: "c", or several for one point ("p≡c", "p, o1")."""
-    s = t.text.strip()
-    if "\n" in s or "=" in s or ":" in s or s.replace(",", "").replace(".", "").isdigit():
-        return []
-    names = [n for n in _SAME_POINT.split(s) if n]
-    return [n for n in names if 0 < len(label_key(n)) <= 9]
+    component: int = -1         # the drawing it labels
 
 
 def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | None = None,
@@ -135,13 +107,11 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     other = [e for e in sub.entries if mu_plan(e.name) is None]
     labels: list[_Label] = []
     for t in sub.texts:
-        names = _label_names(t)
+        names = label_names(t.text)
         readings = [(n, book.candidates(n)) for n in names]
         readings = [(n, cands) for n, cands in readings if cands]
         if readings:
-            lb = _Label(t, readings[0][0], readings[0][1])
-            lb.same = readings[1:]
-            labels.append(lb)
+            labels.append(_Label(t, *readings[0], same=readings[1:]))
         elif len(names) == 1 and len(label_key(names[0])) <= 3 and names[0].isalpha():
             notes.append(Note("info", T("note.not_label", text=t.text.strip()), t.where))
     if not labels:
@@ -154,19 +124,17 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
     _attach(labels, graph, sub.lines, label_distance, notes)
     for lb in list(labels):        # "p≡c": one point, several names
         for written, cands in lb.same:
-            labels.append(_Label(lb.text, written, cands, lb.node, lb.at, lb.distance, lb.how))
+            labels.append(replace(lb, written=written, cands=cands, same=[]))
     attached = [lb for lb in labels if lb.at is not None]
     if not attached:
         raise _far_labels(sub, labels, label_distance)
     plans = _group(attached, graph, sub, book, scale_entries, notes)
     for dp in plans:
-        _scale_of(dp, scale_entries, mu_given, graph, notes)
+        _scale_of(dp, scale_entries, mu_given, notes)
     return DrawnSheet(plans, notes, label_distance, other)
 
 
 def _no_labels(sub: Submission, book: LabelBook) -> Exception:
-    from ..errors import CheckError
-
     known = sorted({lbl for steps in book.plans.values() for lbl in steps.values()})
     sample = ", ".join(known[:14]) + (" …" if len(known) > 14 else "")
     texts = [t.text for t in sub.texts][:6]
@@ -176,8 +144,6 @@ def _no_labels(sub: Submission, book: LabelBook) -> Exception:
 
 
 def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
-    from ..errors import CheckError
-
     worst = ", ".join(f"'{lb.written}' ({lb.text.where}, {lb.distance:.1f} mm)"
                       for lb in labels[:5])
     return CheckError(T("error.labels_far", tol=tol, worst=worst), file=sub.path)
@@ -185,55 +151,18 @@ def _far_labels(sub: Submission, labels: list[_Label], tol: float) -> Exception:
 
 def _attach(labels: list[_Label], graph: Graph, lines: list[DrawnLine], tol: float,
             notes: list[Note]) -> None:
-    """Give each label a point: line ends nearest to its text box, one label per point where
-    possible (a minimum-cost assignment), arrowhead corners only when nothing else is near."""
-    nodes, n, big = graph.nodes, len(graph.nodes), 1e6
-    if n:
-        d = np.stack([lb.text.distance(nodes) for lb in labels])        # labels × points
-        for lb, row in zip(labels, d):
-            lb.distance = float(row.min())
-        # points of a plan are where lines meet; a loose end of one line (a construction line
-        # drawn past its point, hatching) is taken only when nothing better is near; a point
-        # marked with a dot or a small circle is preferred
-        marker = np.isin(np.arange(n), list(graph.markers))
-        deco = np.where(np.isin(np.arange(n), list(graph.decoration)), tol, 0.0)
-        loose = np.array([LOOSE_END_COST.get(k, 0.0) for k in graph.degree]) * tol
-        score = np.where(d <= tol, np.where(marker, d - MARKER_BONUS * tol, d + deco + loose),
-                         np.inf)
-        best = np.argsort(score, axis=1, kind="stable")[:, :8]          # 8 points a label
-        keep = np.zeros(score.shape, dtype=bool)
-        np.put_along_axis(keep, best, True, axis=1)
-        keep &= np.isfinite(score)
-        columns = np.flatnonzero(keep.any(axis=0))
-        k = len(labels)
-        cost = np.full((k, len(columns) + k), big)
-        cost[:, :len(columns)] = np.where(keep[:, columns], score[:, columns], big)
-        # sharing a point with another label (p ≡ o1) costs more than a point of its own
-        first = score[np.arange(k), best[:, 0]]
-        cost[np.arange(k), len(columns) + np.arange(k)] = np.where(
-            np.isfinite(first), first + 0.5 * tol, big)
-        cost += tol                         # keep costs positive (marker bonus)
-        for r, j in zip(*linear_sum_assignment(cost)):
-            if cost[r, j] >= big:
-                continue
-            lb = labels[r]
-            lb.node = int(columns[j] if j < len(columns) else best[r, 0])
-            lb.at = (float(nodes[lb.node][0]), float(nodes[lb.node][1]))
-            lb.distance = lb.text.distance(lb.at)
-            lb.how = T("how.marker") if lb.node in graph.markers else T("how.line_end")
-    for lb in labels:
-        if lb.at is not None:
-            continue
-        meets = crossings(np.asarray([(ln.start, ln.end) for ln in lines]).reshape(-1, 2, 2),
-                         lb.text.centre, tol + max(lb.text.half))
-        far = lb.text.distance(meets)
-        if (far <= tol).any():
-            i = int(np.argmin(far))
-            lb.at, lb.how, lb.distance = (float(meets[i][0]), float(meets[i][1])), T(
-                "how.crossing"), float(far[i])
-            continue
-        notes.append(Note("warning", T("note.label_far", written=lb.written, d=lb.distance,
-                                       tol=tol), lb.text.where))
+    """Give each label its point on the sheet (:func:`place_labels`) and the drawing it labels."""
+    for lb, spot in zip(labels, place_labels([lb.text for lb in labels], graph, lines, tol)):
+        lb.at, lb.distance = spot.at, spot.distance
+        if spot.node >= 0:
+            lb.how = T("how.marker") if spot.node in graph.markers else T("how.line_end")
+            lb.component = graph.component[spot.node]
+        elif spot.at is not None:
+            lb.how = T("how.crossing")
+            lb.component = graph.nearest_component(spot.at)
+        else:
+            notes.append(Note("warning", T("note.label_far", written=lb.written, d=lb.distance,
+                                           tol=tol), lb.text.where))
 
 
 def _layer_plan(layer: str) -> Plan | None:
@@ -246,11 +175,9 @@ def _layer_plan(layer: str) -> Plan | None:
 
 def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
            scale_entries: list[tuple[Plan, Entry]], notes: list[Note]) -> list[DrawnPlan]:
-    comp_of = lambda lb: graph.component[lb.node] if lb.node >= 0 else _nearest_component(
-        lb.at, graph)
     comps: dict[int, list[_Label]] = {}
     for lb in labels:
-        comps.setdefault(comp_of(lb), []).append(lb)
+        comps.setdefault(lb.component, []).append(lb)
     lines_of: dict[int, list[DrawnLine]] = {}
     for i, (a, _) in enumerate(graph.line_nodes):
         lines_of.setdefault(graph.component[a], []).append(sub.lines[i])
@@ -276,10 +203,10 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
     plans: list[DrawnPlan] = []
     groups: list[tuple[PlanKey, list[int], list[_Label]]] = []
     for key, comp, members in decided:
-        steps = {_resolve_one(lb, key) for lb in members} - {None}
+        steps = _steps(members, key)
         for g in groups:
-            if g[0] == key and not (steps & {_resolve_one(lb, key) for lb in g[2]} - {None}) \
-                    and _gap(members, g[2]) <= MERGE_GAP_MM:
+            if g[0] == key and not steps & _steps(g[2], key) \
+                    and box_gap(_points_of(members), _points_of(g[2])) <= MERGE_GAP_MM:
                 g[1].append(comp)
                 g[2].extend(members)
                 break
@@ -313,16 +240,8 @@ def _fit(book: LabelBook, key: PlanKey, members: list[_Label]) -> float:
     return len(found) / (len(book.plans[key]) + len(members) - len(found))
 
 
-def _gap(a: list[_Label], b: list[_Label]) -> float:
-    """Distance between the boxes around two sets of labelled points (0 if they overlap)."""
-    boxes = [MultiPoint([lb.at for lb in x if lb.at is not None]).envelope for x in (a, b)]
-    return math.inf if any(box.is_empty for box in boxes) else float(shapely.distance(*boxes))
-
-
-def _nearest_component(at: Point | None, graph: Graph, among: set[int] | None = None) -> int:
-    mask = None if among is None else np.isin(graph.component, list(among))
-    i = -1 if at is None else nearest(graph.nodes, at, mask=mask)
-    return -1 if i < 0 else graph.component[i]
+def _points_of(labels: list[_Label]) -> list[Point]:
+    return [lb.at for lb in labels if lb.at is not None]
 
 
 def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLine],
@@ -330,21 +249,26 @@ def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLi
     hints: set[Plan] = set()
     layers = [_layer_plan(ln.layer) for ln in lines] + [_layer_plan(lb.text.layer)
                                                          for lb in members]
-    named = [p for p in layers if p is not None]
-    if named and named.count(max(set(named), key=named.count)) > len(named) / 2:
-        hints.add(max(set(named), key=named.count))
+    named = Counter(p for p in layers if p is not None)
+    for plan, n in named.most_common(1):    # the plan most layers name, if more than half do
+        if n > named.total() / 2:
+            hints.add(plan)
     # a scale-factor text belongs to the labelled drawing nearest to it
     for plan, entry in scale_entries:
-        if entry.at is not None and _nearest_component(entry.at, graph, labelled) == comp:
+        if entry.at is not None and graph.nearest_component(entry.at, labelled) == comp:
             hints.add(plan)
     return hints
 
 
-def _resolve_one(lb: _Label, key: PlanKey) -> str | None:
-    for c in lb.cands:
-        if c.plan == key and not c.convention:
-            return c.step
-    return None
+def _reading(lb: _Label, key: PlanKey, convention: str = "") -> Candidate | None:
+    """The best reading of a label as a point of one plan, under a numbering convention of normals
+    and Coriolis points ("link", "ordinal"; "" for a reading without one)."""
+    return next((c for c in lb.cands if c.plan == key and c.convention == convention), None)
+
+
+def _steps(labels: list[_Label], key: PlanKey) -> set[str]:
+    """The steps of one plan labels are read as without a numbering convention."""
+    return {c.step for lb in labels if (c := _reading(lb, key)) is not None}
 
 
 def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[Note]) -> None:
@@ -352,11 +276,10 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
     chosen: dict[int, Candidate] = {}
     numbered: list[int] = []
     for i, lb in enumerate(members):
-        mine = [c for c in lb.cands if c.plan == key]
-        plain = [c for c in mine if not c.convention]
-        if plain:
-            chosen[i] = plain[0]
-        elif mine:
+        plain = _reading(lb, key)
+        if plain is not None:
+            chosen[i] = plain
+        elif any(c.plan == key for c in lb.cands):
             numbered.append(i)
         else:
             known = ", ".join(sorted(book.plans[key].values()))
@@ -365,20 +288,14 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
                                            known=known), lb.text.where))
     if numbered:
         for convention in ("link", "ordinal"):
-            picks = {}
-            for i in numbered:
-                c = next((c for c in members[i].cands if c.plan == key
-                          and c.convention == convention), None)
-                if c is None:
-                    break
-                picks[i] = c
-            else:
-                if len({c.step for c in picks.values()}) == len(picks):
-                    chosen.update(picks)
-                    how = T("convention.link" if convention == "link" else "convention.ordinal")
-                    written = join(members[i].written for i in numbered)
-                    dp.convention = T("convention.numbered", written=written, how=how)
-                    break
+            picks = {i: c for i in numbered
+                     if (c := _reading(members[i], key, convention)) is not None}
+            if len(picks) == len(numbered) and len({c.step for c in picks.values()}) == len(picks):
+                chosen.update(picks)
+                how = T("convention.link" if convention == "link" else "convention.ordinal")
+                written = join(members[i].written for i in numbered)
+                dp.convention = T("convention.numbered", written=written, how=how)
+                break
         else:
             for i in numbered:
                 notes.append(Note("warning", T("note.ambiguous_numbered",
@@ -392,14 +309,14 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
         if len(spots) > 1:
             where = join((T("note.where_at", where=members[i].text.where, xy=_xy(members[i].at))
                           for i in idx), "; ")
-            notes.append(Note("error", T("note.label_repeated", label=book.label_of(key, sid),
+            notes.append(Note("error", T("note.label_repeated", label=book.plans[key][sid],
                                          n=len(idx), where=where,
                                          plan=plan_title(key[0].value, key[1], case="loc")),
                               members[idx[0]].text.where))
             continue
         lb = min((members[i] for i in idx), key=lambda m: m.distance)
         assert lb.at is not None
-        dp.points[sid] = LabelledPoint(sid, book.label_of(key, sid), lb.written, lb.at,
+        dp.points[sid] = LabelledPoint(sid, book.plans[key][sid], lb.written, lb.at,
                                        lb.text.where, lb.distance, lb.how)
 
 
@@ -413,10 +330,7 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
     if pole is None or pole in dp.points or len(dp.points) < 2:
         return
     # the pole is where most vectors to labelled points start
-    labelled = {tuple(np.round(p.at, 6)) for p in dp.points.values()}
-    at_label = [tuple(np.round(p, 6)) in labelled for p in graph.nodes]
-    count = Counter(b if at_label[a] else a for a, b in graph.line_nodes
-                    if at_label[a] != at_label[b])
+    count = graph.ends_from(p.at for p in dp.points.values())
     if not count:
         return
     (n, best), *rest = count.most_common(2)
@@ -425,16 +339,14 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
                           sub.path))
         return
     at = (float(graph.nodes[n][0]), float(graph.nodes[n][1]))
-    label = book.label_of(dp.key, pole)
+    label = book.plans[dp.key][pole]
     dp.points[pole] = LabelledPoint(pole, label, "", at, sub.path, 0.0, T("how.inferred"))
     notes.append(Note("info", T("note.pole_inferred", label=label, plan=with_case(dp.name, "gen"),
                                 xy=_xy(at), n=best), sub.path))
 
 
 def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],
-              graph: Graph, notes: list[Note]) -> None:
-    from ..errors import SceneError
-
+              notes: list[Note]) -> None:
     plan = dp.plan
     if plan in mu_given:
         dp.mu, dp.mu_source = mu_given[plan], T("mu.cli")
@@ -445,16 +357,7 @@ def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: 
         mine.sort(key=lambda e: math.inf if e.at is None else math.dist(e.at, centre))
     for e in mine:
         text = e.text or e.value or e.length or ""
-        try:
-            dp.mu = parse_mu(text, plan)
-        except SceneError as exc:
-            notes.append(Note("warning", T("note.mu_unusable", name=e.name, text=text,
-                                           detail=exc.detail), e.where))
-            continue
-        if not (dp.mu > 0 and math.isfinite(dp.mu)):
-            notes.append(Note("warning", T("note.mu_positive", name=e.name, text=text),
-                              e.where))
-            dp.mu = None
-            continue
-        dp.mu_source = T("mu.text", name=e.name, text=text, where=e.where)
-        return
+        dp.mu = written_mu(e, text, plan, notes, "warning", "note.mu_unusable")
+        if dp.mu is not None:
+            dp.mu_source = T("mu.text", name=e.name, text=text, where=e.where)
+            return

@@ -1,4 +1,5 @@
-"""Geometry of hand-drawn sketches: points that are one point, joined drawings, line crossings.
+"""Geometry of hand-drawn sketches: points that are one point, joined drawings, line crossings,
+gaps between groups of points.
 
 Vectorised over all points or segments of a drawing (numpy, shapely's STRtree, scipy's sparse
 graphs); used to read a student's drawing.
@@ -7,6 +8,7 @@ graphs); used to read a student's drawing.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 import numpy as np
 import shapely
@@ -14,6 +16,7 @@ from numpy.typing import NDArray
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 from shapely import STRtree
+from shapely.geometry import MultiPoint
 
 #: lines crossing at less than this angle do not define a point
 MIN_CROSSING_DEG = 5.0
@@ -84,3 +87,10 @@ def nearest(points: NDArray[np.float64], at: tuple[float, float], within: float 
     d = np.hypot(*(np.asarray(points, dtype=float).reshape(-1, 2) - np.asarray(at)).T)
     d = np.where((d <= within) & (True if mask is None else mask), d, np.inf)
     return int(np.argmin(d)) if np.isfinite(d).any() else -1
+
+
+def box_gap(a: Sequence[tuple[float, float]], b: Sequence[tuple[float, float]]) -> float:
+    """Distance between the boxes around two sets of points (0 if they overlap, infinite if one
+    set is empty)."""
+    boxes = [MultiPoint(points).envelope for points in (a, b)]
+    return math.inf if any(box.is_empty for box in boxes) else float(shapely.distance(*boxes))

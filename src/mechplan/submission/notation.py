@@ -180,6 +180,13 @@ def points(sub: str, mech: Mechanism) -> list[str] | None:
     return split(sub)
 
 
+def reversed_points(sub: str, mech: Mechanism) -> str | None:
+    """Two points of a subscript named from the other end ("cb" → "BC"), or None when the
+    subscript is not two points."""
+    names = points(sub, mech)
+    return names[1] + names[0] if names and len(names) == 2 else None
+
+
 def closest(name: str, candidates: Iterable[str], n: int = 4) -> list[str]:
     """The candidate names closest to a written name (for "not understood" notes)."""
     everything = list(candidates)

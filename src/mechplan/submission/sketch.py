@@ -1,18 +1,27 @@
 """A drawing as a graph: line ends that are one point, arrowhead corners and loose ends, the
-separate drawings (components) of a sheet."""
+separate drawings (components) of a sheet, and the points its label texts stand for."""
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import math
+from collections import Counter
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from scipy.optimize import linear_sum_assignment
 
-from ..geom.sketch import cluster, components
-from .read import DrawnLine, Point
+from ..geom.sketch import cluster, components, crossings, nearest
+from .read import DrawnLine, Point, SheetText
 
 #: strokes shorter than this (mm) may be arrowhead barbs, hatching or ticks
 BARB_MAX_MM = 8.0
+#: extra cost (× the label distance) of giving a label to a point where only 1 or 2 line ends
+#: meet: points of a plan are where vectors meet; a construction line drawn past its point ends
+#: loose, and the label is often nearer to that end
+LOOSE_END_COST = {0: 0.45, 1: 0.45, 2: 0.15}
+#: a point marked on the sheet (POINT, a small CIRCLE) is preferred by this much (× distance)
+MARKER_BONUS = 0.2
 
 
 @dataclass
@@ -23,6 +32,20 @@ class Graph:
     decoration: set[int]               # arrowhead corners: labels go elsewhere first
     component: list[int]               # node → drawing
     degree: list[int]                  # line ends at each node
+
+    def nearest_component(self, at: Point, among: Iterable[int] | None = None) -> int:
+        """The drawing whose node is nearest to ``at`` (only drawings ``among``); −1 if none."""
+        mask = None if among is None else np.isin(self.component, list(among))
+        i = nearest(self.nodes, at, mask=mask)
+        return -1 if i < 0 else self.component[i]
+
+    def ends_from(self, points: Iterable[Point]) -> Counter[int]:
+        """Nodes at the far end of lines from ``points`` (the line's other end not one of them),
+        with how many such lines end there: where vectors to those points start."""
+        chosen = {tuple(np.round(p, 6)) for p in points}
+        at_chosen = [tuple(np.round(p, 6)) in chosen for p in self.nodes]
+        return Counter(b if at_chosen[a] else a for a, b in self.line_nodes
+                       if at_chosen[a] != at_chosen[b])
 
 
 def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: float,
@@ -97,3 +120,66 @@ def _head_bases(nodes: np.ndarray, heads: Sequence[tuple[Point, Point]],
     near = np.hypot(*(nodes[:, None, :] - bases[None, :, :]).transpose(2, 0, 1)).min(axis=1)
     return {int(n) for n in np.flatnonzero(near <= snap)
             if n not in marker_nodes and degree_of.get(int(n), 0) <= 2}
+
+
+@dataclass(frozen=True, slots=True)
+class Spot:
+    """The point a label text stands for: a node of the graph, a crossing of two lines (``node``
+    −1) or none within reach (``at`` None); ``distance`` from the text's box to it (mm), or to the
+    nearest node when there is none."""
+
+    node: int
+    at: Point | None
+    distance: float
+
+
+def place_labels(texts: Sequence[SheetText], graph: Graph, lines: Sequence[DrawnLine],
+                 tol: float) -> list[Spot]:
+    """Give each label text a point within ``tol`` mm: line ends nearest to its text box, one label
+    per point where possible (a minimum-cost assignment), arrowhead corners only when nothing else
+    is near, a crossing of two lines when no line end is."""
+    nodes, n, big = graph.nodes, len(graph.nodes), 1e6
+    k = len(texts)
+    node = [-1] * k
+    nearest_mm = [math.inf] * k
+    if n:
+        d = np.stack([t.distance(nodes) for t in texts])        # labels × points
+        nearest_mm = [float(row.min()) for row in d]
+        # points of a plan are where lines meet; a loose end of one line (a construction line
+        # drawn past its point, hatching) is taken only when nothing better is near; a point
+        # marked with a dot or a small circle is preferred
+        marker = np.isin(np.arange(n), list(graph.markers))
+        deco = np.where(np.isin(np.arange(n), list(graph.decoration)), tol, 0.0)
+        loose = np.array([LOOSE_END_COST.get(deg, 0.0) for deg in graph.degree]) * tol
+        score = np.where(d <= tol, np.where(marker, d - MARKER_BONUS * tol, d + deco + loose),
+                         np.inf)
+        best = np.argsort(score, axis=1, kind="stable")[:, :8]          # 8 points a label
+        keep = np.zeros(score.shape, dtype=bool)
+        np.put_along_axis(keep, best, True, axis=1)
+        keep &= np.isfinite(score)
+        columns = np.flatnonzero(keep.any(axis=0))
+        cost = np.full((k, len(columns) + k), big)
+        cost[:, :len(columns)] = np.where(keep[:, columns], score[:, columns], big)
+        # sharing a point with another label (p ≡ o1) costs more than a point of its own
+        first = score[np.arange(k), best[:, 0]]
+        cost[np.arange(k), len(columns) + np.arange(k)] = np.where(
+            np.isfinite(first), first + 0.5 * tol, big)
+        cost += tol                         # keep costs positive (marker bonus)
+        for r, j in zip(*linear_sum_assignment(cost)):
+            if cost[r, j] < big:
+                node[r] = int(columns[j] if j < len(columns) else best[r, 0])
+    segments = np.asarray([(ln.start, ln.end) for ln in lines]).reshape(-1, 2, 2)
+    spots: list[Spot] = []
+    for t, i, far in zip(texts, node, nearest_mm):
+        if i >= 0:
+            at = (float(nodes[i][0]), float(nodes[i][1]))
+            spots.append(Spot(i, at, t.distance(at)))
+            continue
+        meets = crossings(segments, t.centre, tol + max(t.half))
+        to_meets = t.distance(meets)
+        if (to_meets <= tol).any():
+            m = int(np.argmin(to_meets))
+            spots.append(Spot(-1, (float(meets[m][0]), float(meets[m][1])), float(to_meets[m])))
+        else:
+            spots.append(Spot(-1, None, far))
+    return spots

@@ -1,9 +1,10 @@
 """Labels, names, numbers and units as students write them: the text of a submission read
 before it means anything (no construction here).
 
-``label_key("b′")`` → ``"b'"`` (the comparison key of a point label); ``parse_value("0,25 м/с",
-"velocity", …)`` → (0.25, 0.005) with half a unit of the last written digit; ``parse_angle("60°")``
-→ 60.0; ``is_angle_name("φ1")`` → True.
+``label_key("b′")`` → ``"b'"`` (the comparison key of a point label); ``label_names("p≡c")`` →
+``["p", "c"]`` (the names one label gives its point); ``parse_value("0,25 м/с", "velocity", …)`` →
+(0.25, 0.005) with half a unit of the last written digit; ``parse_angle("60°")`` → 60.0;
+``is_angle_name("φ1")`` → True.
 """
 
 from __future__ import annotations
@@ -37,6 +38,19 @@ def label_key(text: str) -> str:
     t = re.sub(r"[\s_{}^$\\]", "", t)
     t = t.replace("Π", "π")
     return t.lower()
+
+
+_SAME_POINT = re.compile(r"\s*(?:≡|,|;)\s*")
+
+
+def label_names(text: str) -> list[str]:
+    """The names a label text gives its point: "c", or several for one point ("p≡c", "p, o1");
+    none for a text that is no label ("μv = 0,1", "42")."""
+    s = text.strip()
+    if "\n" in s or "=" in s or ":" in s or s.replace(",", "").replace(".", "").isdigit():
+        return []
+    names = [n for n in _SAME_POINT.split(s) if n]
+    return [n for n in names if 0 < len(label_key(n)) <= 9]
 
 
 def parse_angle(text: str) -> float:
