@@ -12,12 +12,12 @@ each other's values; *new* otherwise. The result is a :class:`CheckReport` with 
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
+from ..scene.document import study_kind
 from ..studies.answers import Keys, keys_for, valid_sets
 from ..submission.answer_table import read_answers
 from ..submission.notation import (
@@ -29,7 +29,7 @@ from ..submission.notation import (
     read_answer,
 )
 from ..submission.read import Entry, Note
-from ..submission.written import number_and_half, parse_value
+from ..submission.written import parse_answer
 from ..units import si_unit
 from .context import Options, swaps
 from .report import (
@@ -61,17 +61,6 @@ def read_name(name: str, kind: str, section: str | None, has_angle: bool,
 
 
 # -- entry points -------------------------------------------------------------------------------
-def scene_kind_of(scene: str | Path) -> tuple[str, dict[str, Any]] | None:
-    """The answer kind a scene file asks for (None for a linkage without [dynamics])."""
-    from ..scene.document import parse_toml, read_text, scene_kind
-
-    data = parse_toml(read_text(scene), str(scene))
-    kind = scene_kind(data, str(scene))
-    if kind == "mechanism":
-        return ("dynamics", data) if "dynamics" in data else None
-    return kind, data
-
-
 def maybe_check_answers(scene: Any, submission: Any,
                         options: Options | None = None) -> CheckReport | None:
     """Check an answer table when the scene is a dynamics, engine, cam or gear study and the
@@ -80,7 +69,7 @@ def maybe_check_answers(scene: Any, submission: Any,
         return None
     if Path(submission).suffix.lower() not in (".toml", ".csv", ".tsv", ".txt"):
         return None
-    found = scene_kind_of(scene)
+    found = study_kind(scene)
     if found is None:
         return None
     from ..studies import solve_file
@@ -114,28 +103,6 @@ class _Row:
     tol: float = 0.0
 
 
-def _parse(item: Entry, spec: AnswerSpec, notes: list[Note]) -> tuple[float, float] | None:
-    text = (item.text or "").strip()
-    dim = spec.dimension
-    if dim == "count":
-        dim = "dimensionless"
-    if dim == "dimensionless" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
-        value, half = number_and_half(text)     # a tooth number or a ratio needs no unit
-        return (value, half) if value is not None else None
-    if dim == "angle" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
-        text += " deg"                       # pressure angles are written in degrees
-    return parse_value(text, dim, item.where, notes, item.name)
-
-
-def _floor(spec: AnswerSpec) -> float:
-    if not spec.floor:
-        return 0.0
-    from ..units import parse_quantity
-
-    dim = "dimensionless" if re.fullmatch(r"[\d.]+", spec.floor) else spec.dimension
-    return parse_quantity(spec.floor, dim)
-
-
 def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
                   options: Options) -> CheckReport:
     """Grade every answer of a table against the study's exact results."""
@@ -154,7 +121,7 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
         spec, key = found
         if key in keys.dimensions:
             spec = replace(spec, dimension=keys.dimensions[key])
-        parsed = _parse(item, spec, notes)
+        parsed = parse_answer(item.text or "", spec.dimension, item.where, notes, item.name)
         if parsed is None:
             continue
         if spec.magnitude:
@@ -178,7 +145,7 @@ def check_answers(scene: Any, table: Any, keys: Keys, kind: str,
             continue
         s = r.spec
         pct = user.pct if user is not None and not s.integer else s.pct
-        r.tol = 0.5 if s.integer else max(pct / 100 * abs(r.exact), _floor(s),
+        r.tol = 0.5 if s.integer else max(pct / 100 * abs(r.exact), s.floor_value(),
                                           s.span_pct / 100 * keys.spans.get(r.key, 0.0), r.half)
     _grade(rows, keys, written, report)
 
@@ -244,7 +211,7 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
         own = keys.own(r.key, r.item.phi_deg, written)
         if own is not None:
             r.row.own = own[0]
-            arith = max(0.01 * abs(own[0]), r.half, 0.25 * _floor(r.spec), 0.2
+            arith = max(0.01 * abs(own[0]), r.half, 0.25 * r.spec.floor_value(), 0.2
                         * r.spec.span_pct / 100 * keys.spans.get(r.key, 0.0), 1e-9)
             if abs(r.value - own[0]) > arith:
                 r.row.verdict, r.row.cause = SLIP, NEW

@@ -136,10 +136,11 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
     if Path(args.submission).is_dir():
         return _run_class(args, options)
-    from ..check.answers import maybe_check_answers, scene_kind_of
+    from ..check.answers import maybe_check_answers
     from ..scene import load_scene
+    from ..scene.document import study_kind
 
-    found = scene_kind_of(args.scene)
+    found = study_kind(args.scene)
     if found is not None:                   # a dynamics, engine, cam or gear study
         lang = getattr(args, "lang", None) or str(found[1].get("language", "en"))
         said["lang"] = lang if lang in LANGUAGES else "en"

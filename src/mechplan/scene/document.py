@@ -22,6 +22,16 @@ def read_text(path: str | Path) -> str:
         raise SceneError("the scene file is not UTF-8 text", file=str(path)) from None
 
 
+def study_kind(path: str | Path) -> tuple[str, dict[str, Any]] | None:
+    """The study a scene file asks for — its kind (``"dynamics"`` for a mechanism with
+    ``[dynamics]``) and its parsed data — or None for a plain linkage."""
+    data = parse_toml(read_text(path), str(path))
+    kind = scene_kind(data, str(path))
+    if kind == "mechanism":
+        return ("dynamics", data) if "dynamics" in data else None
+    return kind, data
+
+
 def parse_toml(text: str, file: str) -> dict[str, Any]:
     """Parse TOML text; a syntax error names the file."""
     try:

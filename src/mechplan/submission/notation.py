@@ -18,6 +18,7 @@ from importlib import resources
 from typing import Any
 
 from ..model.mechanism import Mechanism
+from ..units import parse_quantity
 
 SUBSCRIPTS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _SUP_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
@@ -259,6 +260,13 @@ class AnswerSpec:
     per_angle: bool = False
     integer: bool = False
     magnitude: bool = False
+
+    def floor_value(self) -> float:
+        """The absolute floor of the tolerance in SI (0 when the catalogue gives none)."""
+        if not self.floor:
+            return 0.0
+        dim = "dimensionless" if re.fullmatch(r"[\d.]+", self.floor) else self.dimension
+        return parse_quantity(self.floor, dim)
 
 
 @functools.cache

@@ -99,6 +99,20 @@ def is_length_text(text: str) -> bool:
     return bool(re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?\s*(mm|мм)?", t))
 
 
+def parse_answer(text: str, dimension: str, where: str, notes: list[Note],
+                 name: str) -> tuple[float, float] | None:
+    """(SI value, half a unit of the last digit) of a study's written answer: a tooth number or a
+    ratio ("count", "dimensionless") needs no unit, a bare angle is in degrees."""
+    text = text.strip()
+    dim = "dimensionless" if dimension == "count" else dimension
+    if dim == "dimensionless" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
+        value, half = number_and_half(text)
+        return (value, half) if value is not None else None
+    if dim == "angle" and re.fullmatch(r"[-+−]?\d+(?:[.,]\d+)?", text):
+        text += " deg"
+    return parse_value(text, dim, where, notes, name)
+
+
 def parse_value(text: str, dimension: str, where: str, notes: list[Note],
                 name: str) -> tuple[float, float] | None:
     """(SI value, half a unit of the last digit in SI) of a written value, or None with a note."""
