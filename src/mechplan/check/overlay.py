@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..drafting.fonts import text_width_mm
-from ..drafting.primitives import Line, Primitive, Role, Sheet, Text
+from ..drafting.primitives import Line, Role, Sheet, Text
 from ..errors import CheckError, DrawingError
 from ..render import write, write_atomic
 from .report import SLIP, WRONG, CheckReport, SegmentRow
@@ -20,6 +20,8 @@ Point = tuple[float, float]
 #: the role of each layer of marks
 ROLES = {"SUBMISSION": Role.SUBMISSION, "EXACT": Role.EXACT, "ERRORS": Role.ERRORS,
          "NOTES": Role.TEXT}
+#: blank paper around the overlay's drawing (mm)
+MARGIN_MM = 10.0
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,23 +42,17 @@ def marks(report: CheckReport, lang: str = "en") -> list[Mark]:
         if not plan.drawn_lines and not plan.exact_segments:
             continue
         start = len(out)
-        for a, b in plan.drawn_lines:
-            out.append(Mark("SUBMISSION", a, b))
-        for _, a, b in plan.exact_segments:
-            out.append(Mark("EXACT", a, b))
-        for label, at in plan.exact_mm.items():
-            out.append(Mark("EXACT", (at[0] - 3.0, at[1] - 3.5), None, label, 1.8))
+        out += [Mark("SUBMISSION", a, b) for a, b in plan.drawn_lines]
+        out += [Mark("EXACT", a, b) for _, a, b in plan.exact_segments]
+        out += [Mark("EXACT", (at[0] - 3.0, at[1] - 3.5), None, label, 1.8)
+                for label, at in plan.exact_mm.items()]
         points = {p.step: p.at_mm for p in plan.points}
         for row in plan.segments:
-            if row.verdict not in (WRONG, SLIP):
+            a, b = points.get(row.start), points.get(row.end)
+            if row.verdict not in (WRONG, SLIP) or a is None or b is None:
                 continue
-            pa, pb = points.get(row.start), points.get(row.end)
-            if pa is None or pb is None:
-                continue
-            a, b = pa, pb
-            out.append(Mark("ERRORS", a, b))
             mid = ((a[0] + b[0]) / 2 + 1.0, (a[1] + b[1]) / 2 + 1.0)
-            out.append(Mark("ERRORS", mid, None, _error_text(row, lang), 1.8))
+            out += [Mark("ERRORS", a, b), Mark("ERRORS", mid, None, _error_text(row, lang), 1.8)]
         title = (T("overlay.title", plan=plan.name, mu=plan.mu, unit=plan.mu_unit).tr(lang)
                  if plan.mu else tr(plan.name, lang))
         lo, hi = _extent(out[start:])
@@ -92,26 +88,20 @@ def _error_text(row: SegmentRow, lang: str = "en") -> str:
     return " ".join(parts)
 
 
-def overlay_sheet(report: CheckReport, lang: str = "en", name: str = "overlay",
-                  margin: float = 10.0) -> Sheet:
+def overlay_sheet(report: CheckReport, lang: str = "en", name: str = "overlay") -> Sheet:
     """The overlay as a :class:`Sheet` (roles SUBMISSION, EXACT, ERRORS, TEXT), drawn by any
     ``render`` backend; its size is the drawing's extent plus a margin."""
     ms = marks(report, lang)
     lo, hi = _extent(ms, texts=True)
-    x0, y0 = lo[0] - margin, lo[1] - margin
+    x0, y0 = lo[0] - MARGIN_MM, lo[1] - MARGIN_MM
 
     def q(p: Point) -> Point:
         return (p[0] - x0, p[1] - y0)
 
-    prims: list[Primitive] = []
-    for m in ms:
-        role = ROLES[m.layer]
-        if m.end is not None:
-            prims.append(Line(q(m.start), q(m.end), role))
-        else:
-            prims.append(Text(q(m.start), m.text, m.height, role=role))
-    return Sheet(hi[0] - x0 + margin, hi[1] - y0 + margin, tuple(prims), language=lang,
-                 name=name)
+    # a mark with an end is a line, one without is a text
+    prims = tuple(Line(q(m.start), q(m.end), ROLES[m.layer]) if m.end is not None
+                  else Text(q(m.start), m.text, m.height, role=ROLES[m.layer]) for m in ms)
+    return Sheet(hi[0] - x0 + MARGIN_MM, hi[1] - y0 + MARGIN_MM, prims, language=lang, name=name)
 
 
 def write_overlay(report: CheckReport, path: str | Path, lang: str = "en") -> Path:

@@ -11,7 +11,7 @@ from .. import __version__, i18n
 from ..construct.scale import SCALE_KEYS
 from ..i18n import num, pad
 from ..submission.read import Note
-from .texts import T, Text, capitalize, join, plan_word, tr, word
+from .texts import T, capitalize, join, tr, word
 
 #: verdicts
 OK, WRONG, SLIP, REFERENCE, MISSING, UNCHECKED = ("ok", "wrong", "slip", "reference", "missing",
@@ -40,9 +40,8 @@ class Tolerance:
 
     def text(self, lang: str = "en") -> str:
         """"±1 mm or ±2 %" (in a language: en, ru, vi, zh)."""
-        if self.deg:
-            return T("tolerance_deg", mm=self.mm, pct=self.pct, deg=self.deg).tr(lang)
-        return T("tolerance", mm=self.mm, pct=self.pct).tr(lang)
+        key = "tolerance_deg" if self.deg else "tolerance"
+        return T(key, mm=self.mm, pct=self.pct, deg=self.deg).tr(lang)
 
 
 @dataclass
@@ -215,7 +214,7 @@ class CheckReport:
                 rd.update(verdict_words(seg))
             plans.append(d)
         findings = [asdict(f) | {"kind_text": word("kind", f.kind, lang),
-                                 "plan_text": tr(_plan_of(f.plan), lang),
+                                 "plan_text": tr(f.plan, lang),
                                  "error_text": word("error", f.error, lang) if f.error else ""}
                     for f in self.findings]
         return _json({
@@ -224,15 +223,65 @@ class CheckReport:
             "units": self.units, "label_distance_mm": self.label_distance_mm,
             "passed": self.passed, "summary": self.summary(), "plans": plans,
             "values": [asdict(v) | verdict_words(v) for v in self.values], "findings": findings,
-            "notes": [{"level": n.level, "message": n.message, "where": n.where,
-                       "level_text": word("level", n.level, lang)} for n in self.notes],
+            "notes": [asdict(n) | {"level_text": word("level", n.level, lang)} for n in self.notes],
             "lang": lang,
             "result_text": T("report.passed" if self.passed else "report.failed").tr(lang),
         }, lang)
 
     def text(self, lang: str = "en") -> str:
-        """The report for a terminal, in a language (en, ru, vi, zh)."""
-        return render_text(self, lang)
+        """The report for a terminal, in a language (en, ru, vi, zh): per plan a table of
+        segments, then values, findings, notes."""
+        def say(key: str, **args: Any) -> str:
+            return T(key, **args).tr(lang)
+
+        out = [say("report.title", submission=self.submission),
+               say("report.scene", scene=self.scene),
+               say("report.phi", phi=self.phi_deg, source=self.phi_source)
+               if math.isfinite(self.phi_deg) else tr(self.phi_source, lang)]
+        if self.units:
+            out.append(say("report.units", units=self.units))
+        if self.label_distance_mm is not None:
+            out.append(say("report.label_distance", d=self.label_distance_mm))
+        # the summary's counts fill the sentence's fields; counts it does not name are left out
+        out.append(say("report.result",
+                       verdict=T("report.passed" if self.passed else "report.failed"),
+                       **self.summary()))
+        for p in self.plans:
+            out.append("")
+            mu = T("report.mu", mu=p.mu, unit=p.mu_unit) if p.mu else T("report.mu_unknown")
+            title = capitalize(tr(p.name, lang))
+            if p.phi_deg is not None:
+                title = say("report.plan_at", title=title, phi=p.phi_deg)
+            out.append(say("report.plan_source" if p.mu_source else "report.plan", title=title,
+                           mu=mu, source=p.mu_source))
+            out.append("   " + say("report.tolerance_anchor" if p.anchor else "report.tolerance",
+                                   tol=p.tolerance.text(lang), anchor=p.anchor))
+            if p.convention:
+                out.append(f"   {tr(p.convention, lang)}")
+            wrong_pts = [pt for pt in p.points if pt.verdict == WRONG]
+            if wrong_pts:
+                out.append("   " + say("report.points_off", points=join(
+                    T("report.point_off", label=pt.label, err=pt.error_mm,
+                      cause=word("cause", pt.cause, lang)) for pt in wrong_pts
+                    if pt.error_mm is not None)))
+            out.extend(_table(lang, _SEGMENT_COLUMNS, p.segments))
+            if any(not row.in_construction for row in p.segments):
+                out.append("   " + say("report.not_in_construction"))
+        if self.values:
+            out += ["", say("report.values"), *_table(lang, _VALUE_COLUMNS, self.values)]
+        if self.findings:
+            out += ["", say("report.findings")]
+            for i, f in enumerate(self.findings, start=1):
+                out.append("   " + say("report.finding", i=i, kind=word("kind", f.kind, lang),
+                                       plan=f.plan, subject=f.subject, message=f.message))
+        if self.notes:
+            out += ["", say("report.notes")]
+            for n in self.notes:
+                note = (say("report.note_where", where=n.where, message=n.message) if n.where
+                        else tr(n.message, lang))
+                out.append("   " + say("report.note", level=word("level", n.level, lang),
+                                       note=note))
+        return "\n".join(out)
 
 
 #: JSON keys whose values are sentences, written in the report's language; every other string
@@ -257,12 +306,10 @@ def _json(x: Any, lang: str, key: str = "") -> Any:
 
 def verdict_text(v: str, cause: str, lang: str = "en") -> str:
     """"ok", "WRONG (new)", "SLIP" in a language."""
-    if v in (WRONG, SLIP):
-        w = word("verdict", v, lang)
-        if cause and v == WRONG:
-            return T("report.verdict_cause", word=w, cause=word("cause", cause, lang)).tr(lang)
-        return w
-    return word("verdict", v, lang)
+    w = word("verdict", v, lang)
+    if v == WRONG and cause:
+        return T("report.verdict_cause", word=w, cause=word("cause", cause, lang)).tr(lang)
+    return w
 
 
 def _num(x: float | None, fmt: str, lang: str = "en") -> str:
@@ -272,13 +319,6 @@ def _num(x: float | None, fmt: str, lang: str = "en") -> str:
         return num(x, fmt, lang)        # format_number: "0,0", never "-0,0"
     text = format(x, fmt)
     return text.replace("-", "+") if text.strip().lstrip("-+").strip("0.") == "" else text
-
-
-def _plan_of(plan: str) -> str:
-    """A finding's plan as a text to translate: a plan title, or a bare kind ("velocity")."""
-    if isinstance(plan, Text) or plan not in ("position", "velocity", "acceleration", "force"):
-        return plan
-    return plan_word(plan)
 
 
 #: columns of the text tables: (title, width, alignment, field, number format)
@@ -310,63 +350,3 @@ def _table(lang: str, columns: tuple[tuple[str, int, str, str, str], ...],
         if row.verdict in (WRONG, SLIP) and row.hint:
             out.append(f"        → {tr(row.hint, lang)}")
     return out
-
-
-def render_text(r: CheckReport, lang: str = "en") -> str:
-    """The report as plain text: per plan a table of segments, then values, findings, notes."""
-    def say(key: str, **args: Any) -> str:
-        return T(key, **args).tr(lang)
-
-    s = r.summary()
-    out = [say("report.title", submission=r.submission),
-           say("report.scene", scene=r.scene),
-           say("report.phi", phi=r.phi_deg, source=r.phi_source) if math.isfinite(r.phi_deg)
-           else tr(r.phi_source, lang)]
-    if r.units:
-        out.append(say("report.units", units=r.units))
-    if r.label_distance_mm is not None:
-        out.append(say("report.label_distance", d=r.label_distance_mm))
-    out.append(say("report.result", verdict=T("report.passed" if r.passed else "report.failed"),
-                   **{k: s[k] for k in ("checked", "ok", "wrong", "new", "carried", "swapped",
-                                        "accumulated", "slip", "missing")}))
-    for p in r.plans:
-        out.append("")
-        mu = (T("report.mu", mu=p.mu, unit=p.mu_unit) if p.mu else T("report.mu_unknown"))
-        title = capitalize(tr(p.name, lang))
-        if p.phi_deg is not None:
-            title = say("report.plan_at", title=title, phi=p.phi_deg)
-        out.append(say("report.plan_source", title=title, mu=mu, source=p.mu_source)
-                   if p.mu_source else say("report.plan", title=title, mu=mu))
-        tol = p.tolerance.text(lang)
-        out.append("   " + (say("report.tolerance_anchor", tol=tol, anchor=p.anchor)
-                            if p.anchor else say("report.tolerance", tol=tol)))
-        if p.convention:
-            out.append(f"   {tr(p.convention, lang)}")
-        wrong_pts = [pt for pt in p.points if pt.verdict == WRONG]
-        if wrong_pts:
-            out.append("   " + say("report.points_off", points=join(
-                T("report.point_off", label=pt.label, err=pt.error_mm,
-                  cause=word("cause", pt.cause, lang)) for pt in wrong_pts
-                if pt.error_mm is not None)))
-        out.extend(_table(lang, _SEGMENT_COLUMNS, p.segments))
-        if any(not row.in_construction for row in p.segments):
-            out.append("   " + say("report.not_in_construction"))
-    if r.values:
-        out.append("")
-        out.append(say("report.values"))
-        out.extend(_table(lang, _VALUE_COLUMNS, r.values))
-    if r.findings:
-        out.append("")
-        out.append(say("report.findings"))
-        for i, f in enumerate(r.findings, start=1):
-            out.append("   " + say("report.finding", i=i, kind=word("kind", f.kind, lang),
-                                   plan=_plan_of(f.plan), subject=f.subject,
-                                   message=f.message))
-    if r.notes:
-        out.append("")
-        out.append(say("report.notes"))
-        for n in r.notes:
-            note = (say("report.note_where", where=n.where, message=n.message) if n.where
-                    else tr(n.message, lang))
-            out.append("   " + say("report.note", level=word("level", n.level, lang), note=note))
-    return "\n".join(out)

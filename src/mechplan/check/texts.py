@@ -27,7 +27,6 @@ __all__ = ["LANGUAGES", "T", "Text", "capitalize", "has", "join", "plan_title", 
 
 _DECIMAL_COMMA = re.compile(r"\d,\d")
 _SEPARATORS = {", ": "comma", "; ": "semicolon", " and ": "and"}
-_PLANS = ("position", "velocity", "acceleration", "force")
 
 
 def _id(key: str) -> str:
@@ -48,7 +47,7 @@ class Text(i18n.Text):
         """The text in a language: "_join" and "_plan" are said here, the rest by the catalogue."""
         lang = language if language in LANGUAGES else "en"
         if key == "_join":
-            return cls.joined(args["items"], args.get("sep", ", "), lang)
+            return cls.joined(args["items"], args["sep"], lang)
         if key == "_plan":
             return _say_plan(args, lang)
         return super().say(_id(key), args, lang)
@@ -83,13 +82,12 @@ def plan_title(plan: str, group: str = "", number: int = 0, table: bool = False,
     """"velocity plan", "force II(2,3) plan #2", "velocity plan (table)"; in Russian in the case
     the sentence needs (nom, gen, loc)."""
     return Text("_plan", {"plan": plan, "group": group, "number": number, "table": table,
-                          "case": case, "bare": False})
+                          "case": case})
 
 
 def plan_word(plan: str) -> Text:
     """The kind of a plan: "velocity" in English, "план скоростей" in Russian."""
-    return Text("_plan", {"plan": plan, "group": "", "number": 0, "table": False,
-                          "case": "nom", "bare": True})
+    return Text("_plan", {"plan": plan, "bare": True})
 
 
 def with_case(text: Any, case: str) -> Any:
@@ -112,13 +110,11 @@ def capitalize(text: str) -> str:
 
 
 def _say_plan(args: dict[str, Any], lang: str) -> str:
-    plan, group, number = args["plan"], args.get("group", ""), args.get("number", 0)
-    if plan not in _PLANS:
-        return str(plan)
+    messages, plan = catalogue(lang), args["plan"]
     if args.get("bare"):
-        return catalogue(lang)[_id(f"plan.{plan}.word")]
-    text = " ".join(catalogue(lang)[_id(f"plan.{plan}.{args.get('case', 'nom')}")]
-                    .format(group=group).split())
-    if number:
-        text += f" #{number}"
-    return text + (catalogue(lang)[_id("plan.table")] if args.get("table") else "")
+        return messages[_id(f"plan.{plan}.word")]
+    text = " ".join(messages[_id(f"plan.{plan}.{args['case']}")].format(group=args["group"])
+                    .split())
+    if args["number"]:
+        text += f" #{args['number']}"
+    return text + (messages[_id("plan.table")] if args["table"] else "")
