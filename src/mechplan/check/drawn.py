@@ -8,6 +8,7 @@ import math
 import numpy as np
 
 from ..construct.ops import Grade
+from ..construct.ops.spec import point_of
 from ..construct.step import Plan
 from ..geom.vec import rotate
 from ..submission.read import Note
@@ -16,6 +17,8 @@ from .context import (
     Drawn,
     Rederive,
     exact_at,
+    exact_length,
+    given_mu,
     segments_of,
     swaps,
 )
@@ -34,16 +37,14 @@ def anchor_of(ctx: Ctx, dp: DrawnPlan) -> str | None:
     pole = ctx.book.poles.get(dp.key)
     if pole in dp.points:
         return pole
-    if not dp.points:
-        return None
-    order = list(c.steps)
-    anchor = min(dp.points, key=order.index)
     if dp.plan is Plan.POSITION:
         segs = segments_of(c, dp.key)
+        if segs and segs[0].start in dp.points:
+            return segs[0].start
         fixed = [s for s in dp.points if c[s].op.grade is Grade.GIVEN]
-        pivot = segs[0].start if segs else None
-        anchor = pivot if pivot in dp.points else (fixed[0] if fixed else anchor)
-    return anchor
+        if fixed:
+            return fixed[0]
+    return next((s for s in c.steps if s in dp.points), None)
 
 
 def _turned(ctx: Ctx, dp: DrawnPlan, k: int, anchor: str | None) -> float:
@@ -84,33 +85,30 @@ def _turn_back(dp: DrawnPlan, anchor: str, turn: float) -> DrawnPlan:
 
 
 def prepare(ctx: Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> Drawn:
-    c = ctx.c
+    """A drawn plan placed on the exact one: its anchor, turn, scale factor and points in SI."""
     plan = dp.plan
     anchor = anchor_of(ctx, dp)
     turn = _turned(ctx, dp, k, anchor)
     if turn and anchor is not None:
         dp = _turn_back(dp, anchor, turn)
-    mu, source = dp.mu, dp.mu_source
-    if mu is None and plan in ctx.interp.scales:
-        mu, source = ctx.interp.scales[plan]
-    segs = segments_of(c, dp.key)
-    reference = next((s for s in segs if s.start in dp.points and s.end in dp.points), None)
+    mu, source = dp.mu, dp.mu_source        # given on the command line or beside the plan
     if mu is None:
+        mu, source = given_mu(ctx, plan) or (None, source)
+    reference = None
+    if mu is None:      # the first segment drawn is taken at its exact length
+        reference = next((s for s in segments_of(ctx.c, dp.key)
+                          if s.start in dp.points and s.end in dp.points), None)
         if reference is not None:
-            exact = float(np.hypot(*(exact_at(ctx, reference.end, k)
-                                     - exact_at(ctx, reference.start, k))))
+            exact = exact_length(ctx, reference.start, reference.end, k)
             drawn = math.dist(dp.points[reference.end].at, dp.points[reference.start].at)
             if drawn > 1e-9 and exact > 0:
                 mu = exact / drawn
                 source = T("mu.inferred_drawn", ref=reference.name, q=reference.quantity,
-                           drawn=drawn, exact=exact,
-                           unit=plan.unit,
+                           drawn=drawn, exact=exact, unit=plan.unit,
                            plan=plan_title(plan.value, case="gen"))
         if mu is None:
             notes.append(Note("error", T("note.no_mu", plan=with_case(dp.name, "gen"),
                                          v=plan.value[0]), ctx.sub.path))
-    else:
-        reference = None
     si: dict[str, np.ndarray] = {}
     if mu is not None and anchor is not None:
         base = exact_at(ctx, anchor, k)
@@ -129,30 +127,29 @@ def overrides_of(drawn: list[Drawn]) -> dict[str, np.ndarray]:
     return out
 
 
-def _point_tol(ctx: Ctx, d: Drawn, sid: str, k: int) -> float:
-    tol = ctx.options.tol(d.dp.plan)
-    if d.anchor is None or d.mu is None:
-        return tol.mm
-    dist = float(np.hypot(*(exact_at(ctx, sid, k) - exact_at(ctx, d.anchor, k)))) / d.mu
-    return tol.allowed_mm(dist)
-
-
 def find_swaps(ctx: Ctx, d: Drawn, k: int) -> None:
-    if d.mu is None:
+    """Each point's tolerance and total error (mm), and pairs of wrong points with their labels
+    exchanged."""
+    mu, anchor = d.mu, d.anchor
+    if mu is None or anchor is None:        # not placed: no point is in SI
         return
+
+    def off(at: np.ndarray, sid: str) -> float:
+        """How far a point (SI) is from a step's exact point, in mm of paper."""
+        return float(np.hypot(*(at - exact_at(ctx, sid, k)))) / mu
+
+    tol = ctx.options.tol(d.dp.plan)
     wrong = []
     for sid, v in d.si.items():
-        d.tol[sid] = _point_tol(ctx, d, sid, k)
-        d.errors[sid] = float(np.hypot(*(v - exact_at(ctx, sid, k)))) / d.mu
+        d.tol[sid] = tol.allowed_mm(exact_length(ctx, anchor, sid, k) / mu)
+        d.errors[sid] = off(v, sid)
         if d.errors[sid] > d.tol[sid]:
             wrong.append(sid)
-    mu = d.mu
-    for a, b in swaps(wrong, lambda a, b: float(np.hypot(*(d.si[a] - exact_at(ctx, b, k)))) / mu
-                      <= d.tol[b]):
+    for a, b in swaps(wrong, lambda a, b: off(d.si[a], b) <= d.tol[b]):
         d.swapped[a], d.swapped[b] = b, a
 
 
-def classify_points(ctx: Ctx, d: Drawn, red: Rederive) -> None:
+def classify_points(d: Drawn, red: Rederive) -> None:
     """Total error of each point, and for wrong ones whether the error is new or carried."""
     for sid in d.dp.points:
         err = d.errors.get(sid)
@@ -161,7 +158,7 @@ def classify_points(ctx: Ctx, d: Drawn, red: Rederive) -> None:
         if sid in d.swapped:
             d.status[sid] = SWAPPED
             continue
-        own = np.asarray(red.own(sid)).reshape(-1)[:2]
+        own = point_of(red.own(sid))
         own_err = (float(np.hypot(*(d.si[sid] - own))) / d.mu if d.mu and
                    np.all(np.isfinite(own)) else math.inf)
         d.own_err[sid] = own_err
