@@ -109,14 +109,9 @@ def swaps(items: list[Any], fits: Callable[[Any, Any], bool]) -> list[tuple[Any,
     return out
 
 
-def exact_at(ctx: Ctx, sid: str, k: int) -> np.ndarray:
-    """The exact value of a step at position k."""
-    return np.asarray(ctx.ev[sid][k], dtype=float)
-
-
 def exact_length(ctx: Ctx, start: str, end: str, k: int) -> float:
     """The exact distance between two point steps at position k (SI)."""
-    return float(np.hypot(*(exact_at(ctx, end, k) - exact_at(ctx, start, k))))
+    return float(np.hypot(*(ctx.ev[end][k] - ctx.ev[start][k])))
 
 
 def given_mu(ctx: Ctx, plan: Plan) -> tuple[float, str] | None:

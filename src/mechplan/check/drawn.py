@@ -4,6 +4,7 @@ its scale factor; swapped labels; each wrong point new or carried from earlier o
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -16,7 +17,6 @@ from .context import (
     Ctx,
     Drawn,
     Rederive,
-    exact_at,
     exact_length,
     given_mu,
     segments_of,
@@ -52,10 +52,10 @@ def _turned(ctx: Ctx, dp: DrawnPlan, k: int, anchor: str | None) -> float:
     if dp.plan is not Plan.VELOCITY or anchor is None:
         return 0.0
     a_at = np.asarray(dp.points[anchor].at)
-    base = exact_at(ctx, anchor, k)
+    base = ctx.ev[anchor][k]
     diffs = []
     for sid, p in dp.points.items():
-        v, e = np.asarray(p.at) - a_at, exact_at(ctx, sid, k) - base
+        v, e = np.asarray(p.at) - a_at, ctx.ev[sid][k] - base
         if sid != anchor and np.hypot(*v) > 1e-6 and np.hypot(*e) > 0:
             diffs.append(math.degrees(math.remainder(
                 math.atan2(v[1], v[0]) - math.atan2(e[1], e[0]), 2 * math.pi)))
@@ -68,20 +68,17 @@ def _turned(ctx: Ctx, dp: DrawnPlan, k: int, anchor: str | None) -> float:
 
 
 def _turn_back(dp: DrawnPlan, anchor: str, turn: float) -> DrawnPlan:
-    from dataclasses import replace
-
+    """A drawn plan turned back by ``turn`` degrees about its anchor (the convention says so)."""
     o = np.asarray(dp.points[anchor].at)
 
     def q(p: tuple[float, float]) -> tuple[float, float]:
         x, y = o + rotate(np.asarray(p) - o, np.radians(-turn))
         return (float(x), float(y))
 
-    out = DrawnPlan(dp.key, {s: replace(p, at=q(p.at)) for s, p in dp.points.items()},
-                    [replace(ln, start=q(ln.start), end=q(ln.end)) for ln in dp.lines],
-                    dp.number, dp.mu, dp.mu_source, dp.convention)
     note = T("convention.turned", turn=turn, label=dp.points[anchor].label)
-    out.convention = T("pair", a=dp.convention, b=note) if dp.convention else note
-    return out
+    return replace(dp, points={s: replace(p, at=q(p.at)) for s, p in dp.points.items()},
+                   lines=[replace(ln, start=q(ln.start), end=q(ln.end)) for ln in dp.lines],
+                   convention=T("pair", a=dp.convention, b=note) if dp.convention else note)
 
 
 def prepare(ctx: Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> Drawn:
@@ -110,21 +107,17 @@ def prepare(ctx: Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> Drawn:
             notes.append(Note("error", T("note.no_mu", plan=with_case(dp.name, "gen"),
                                          v=plan.value[0]), ctx.sub.path))
     si: dict[str, np.ndarray] = {}
-    if mu is not None and anchor is not None:
-        base = exact_at(ctx, anchor, k)
+    if mu is not None and anchor is not None:   # in SI, the anchor on its exact point
         a_at = np.asarray(dp.points[anchor].at)
-        for sid, p in dp.points.items():
-            si[sid] = base + (np.asarray(p.at) - a_at) * mu
+        si = {sid: ctx.ev[anchor][k] + (np.asarray(p.at) - a_at) * mu
+              for sid, p in dp.points.items()}
     return Drawn(dp, mu, source, anchor, si, reference)
 
 
 def overrides_of(drawn: list[Drawn]) -> dict[str, np.ndarray]:
-    out: dict[str, np.ndarray] = {}
-    for d in drawn:
-        for sid, v in d.si.items():
-            other = d.swapped.get(sid)
-            out[sid] = d.si[other] if other else v
-    return out
+    """The submitted points (SI) as engine overrides; a point with swapped labels is taken where
+    its partner's label stands."""
+    return {sid: d.si[d.swapped.get(sid, sid)] for d in drawn for sid in d.si}
 
 
 def find_swaps(ctx: Ctx, d: Drawn, k: int) -> None:
@@ -136,7 +129,7 @@ def find_swaps(ctx: Ctx, d: Drawn, k: int) -> None:
 
     def off(at: np.ndarray, sid: str) -> float:
         """How far a point (SI) is from a step's exact point, in mm of paper."""
-        return float(np.hypot(*(at - exact_at(ctx, sid, k)))) / mu
+        return float(np.hypot(*(at - ctx.ev[sid][k]))) / mu
 
     tol = ctx.options.tol(d.dp.plan)
     wrong = []

@@ -29,7 +29,6 @@ from .context import (
     Drawn,
     Options,
     Rederive,
-    exact_at,
     roots_of,
     row_brief,
     row_error,
@@ -41,7 +40,7 @@ from .hints import HintContext, depends_on, rule
 from .labels import LabelBook, PlanKey
 from .match import QuantityIndex, SegmentIndex, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
-from .positions import grade_per_plan, several_positions
+from .positions import fit_score, grade_per_plan, several_positions
 from .report import (
     ACCUMULATED,
     CARRIED,
@@ -49,7 +48,6 @@ from .report import (
     NEW,
     OK,
     REFERENCE,
-    SLIP,
     SWAPPED,
     UNCHECKED,
     WRONG,
@@ -102,7 +100,7 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
                          file=sub.path)
     ctx = Ctx(scene, sub, c, ev, book, sheet, interp, options, sol.scales)
     reports = [_grade(ctx, k) for k in range(len(candidates))]
-    best = min(range(len(reports)), key=lambda i: _score(reports[i]))
+    best = min(range(len(reports)), key=lambda i: fit_score(reports[i].rows))
     report = reports[best]
     report.phi_source = phi_source
     if len(reports) > 1:
@@ -114,13 +112,6 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         report.label_distance_mm = sheet.label_distance
     report.units = sub.units
     return report
-
-
-def _score(r: CheckReport) -> tuple[float, float]:
-    """How badly a report fits its position: wrong rows, then the median relative error."""
-    errs = [abs(row.error_pct) for row in r.rows if row.error_pct is not None]
-    wrong = sum(1 for row in r.rows if row.verdict in (WRONG, SLIP))
-    return (wrong, float(np.median(errs)) if errs else math.inf)
 
 
 def _angles(scene: Scene, sub: Submission, options: Options,
@@ -253,10 +244,10 @@ def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, f
     pr.drawn_lines = [(ln.start, ln.end) for ln in dp.lines]
     if d.mu and d.anchor is not None:
         a_at = np.asarray(dp.points[d.anchor].at)
-        base = exact_at(ctx, d.anchor, k)
+        base = ctx.ev[d.anchor][k]
         place = {}
         for sid in ctx.book.plans.get(dp.key, {}):
-            v = a_at + (exact_at(ctx, sid, k) - base) / d.mu
+            v = a_at + (ctx.ev[sid][k] - base) / d.mu
             if np.all(np.isfinite(v)):
                 place[sid] = (float(v[0]), float(v[1]))
                 pr.exact_mm[c[sid].label] = place[sid]
@@ -318,7 +309,7 @@ def _segment_row(ctx: Ctx, d: Drawn, k: int, hctx: HintContext, status: dict[str
     ones, its verdict, and when wrong why."""
     c, dp = ctx.c, d.dp
     tol = ctx.options.tol(dp.plan)
-    exact_vec = exact_at(ctx, end, k) - exact_at(ctx, start, k)
+    exact_vec = ctx.ev[end][k] - ctx.ev[start][k]
     exact_value = float(np.hypot(*exact_vec))
     exact_mm = exact_value / d.mu if d.mu else None
     row = SegmentRow(name, quantity, kind, end, None, exact_mm, exact_value=exact_value,

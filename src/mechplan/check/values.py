@@ -20,7 +20,6 @@ from .context import (
     Ctx,
     Drawn,
     Rederive,
-    exact_at,
     exact_length,
     given_mu,
     roots_of,
@@ -223,7 +222,7 @@ def _rate_length(ctx: Ctx, sid: str | None, k: int) -> float | None:
 
 def _value_exact(ctx: Ctx, q: Any, k: int, notes: list[Note], where: str) -> float | None:
     if q.step is not None:
-        v = exact_at(ctx, q.step, k)
+        v = ctx.ev[q.step][k]
         return float(np.hypot(*v)) if v.ndim == 1 and v.shape[0] == 2 else float(v)
     if q.segment is not None:
         return exact_length(ctx, q.segment.start, q.segment.end, k)
