@@ -143,7 +143,8 @@ def find_swaps(ctx: Ctx, d: Drawn, k: int) -> None:
 
 
 def classify_points(d: Drawn, red: Rederive) -> None:
-    """Total error of each point, and for wrong ones whether the error is new or carried."""
+    """Why each wrong point is wrong: swapped labels, or an error carried from earlier points
+    (it lies where the student's own earlier points put it) or new at this step."""
     for sid in d.dp.points:
         err = d.errors.get(sid)
         if err is None or err <= d.tol[sid]:

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any
+from collections.abc import Callable
 
 import numpy as np
 
@@ -27,7 +27,7 @@ from .context import (
 )
 from .hints import depends_on, text_of
 from .labels import PlanKey, plan_key, segment_key
-from .match import GivenValue, TableSegment
+from .match import GivenValue, Quantity, TableSegment
 from .report import (
     CARRIED,
     NEW,
@@ -189,7 +189,7 @@ def grade_values(ctx: Ctx, k: int, first: dict[PlanKey, Drawn], red: Rederive,
                     if row.error_pct is not None else row.hint, q.step or ""))
 
 
-def _value_hint(ctx: Ctx, q: Any) -> str:
+def _value_hint(ctx: Ctx, q: Quantity) -> str:
     c = ctx.c
     if q.step is not None:
         st = c[q.step]
@@ -220,7 +220,7 @@ def _rate_length(ctx: Ctx, sid: str | None, k: int) -> float | None:
     return exact_length(ctx, *lever, k)
 
 
-def _value_exact(ctx: Ctx, q: Any, k: int, notes: list[Note], where: str) -> float | None:
+def _value_exact(ctx: Ctx, q: Quantity, k: int, notes: list[Note], where: str) -> float | None:
     if q.step is not None:
         v = ctx.ev[q.step][k]
         return float(np.hypot(*v)) if v.ndim == 1 and v.shape[0] == 2 else float(v)
@@ -315,12 +315,12 @@ def _table_length(table_len: dict[int, TableSegment], seg: Segment | None,
     return (ts, m) if m else None
 
 
-def _written(ctx: Ctx, which: Any) -> GivenValue | None:
+def _written(ctx: Ctx, which: Callable[[GivenValue], bool]) -> GivenValue | None:
     """The first value the student wrote for a quantity (``which(value) → bool``)."""
     return next((w for w in ctx.interp.values if which(w)), None)
 
 
-def _inertia_link(q: Any) -> str | None:
+def _inertia_link(q: Quantity) -> str | None:
     """The link of an inertia force Q_k (a result "Q_2" or a force-plan segment "Q2")."""
     m = re.fullmatch(r"Q_?(\w+)", q.name)
     return m.group(1) if m else None
