@@ -19,6 +19,7 @@ from .points import DrawnPlan, DrawnSheet
 from .report import (
     NEW,
     SWAPPED,
+    Finding,
     SegmentRow,
     Tolerance,
 )
@@ -108,11 +109,21 @@ def swaps(items: list[Any], fits: Callable[[Any, Any], bool]) -> list[tuple[Any,
     return out
 
 
-def exact_at(ctx: Ctx, sid: str, k: int) -> np.ndarray:
-    return np.asarray(ctx.ev[sid][k], dtype=float)
+def exact_length(ctx: Ctx, start: str, end: str, k: int) -> float:
+    """The exact distance between two point steps at position k (SI)."""
+    return float(np.hypot(*(ctx.ev[end][k] - ctx.ev[start][k])))
+
+
+def given_mu(ctx: Ctx, plan: Plan) -> tuple[float, str] | None:
+    """A plan's scale factor given on the command line, else written on the submission, and
+    where it comes from (None: neither)."""
+    if plan in ctx.options.mu:
+        return ctx.options.mu[plan], T("mu.cli")
+    return ctx.interp.scales.get(plan)
 
 
 def segments_of(c: Construction, key: PlanKey) -> list[Segment]:
+    """The construction's segments on one plan (a force polygon of one group)."""
     return [s for s in c.segments if segment_key(s) == key or (
         s.plan is Plan.FORCE and plan_key(s.plan, c[s.end].group) == key)]
 
@@ -128,6 +139,7 @@ def row_error(r: SegmentRow) -> str:
 
 
 def row_brief(r: SegmentRow) -> str:
+    """What is off in a segment row, in a few words ("pb is 3.1 mm too long")."""
     parts = []
     if _off(r.error_mm, r.tolerance_mm):
         e = float(r.error_mm or 0.0)
@@ -137,17 +149,15 @@ def row_brief(r: SegmentRow) -> str:
     return join(parts) if parts else T("brief.off", name=r.name)
 
 
-def roots_of(ctx: Ctx, status: dict[str, str], sid: str) -> list[str]:
-    """Wrong points with a new error (or swapped labels) that a step is built from."""
-    anc = set(ctx.c.ancestors([sid])) - {sid}
-    order = list(ctx.c.steps)
-    return sorted((s for s in anc if status.get(s) in (NEW, SWAPPED)), key=order.index)
+def segment_finding(plan: str, r: SegmentRow) -> Finding:
+    """The finding of a wrong segment whose error is new: what is off, and the hint."""
+    return Finding("wrong segment", plan, r.name, T("colon", a=row_brief(r), b=r.hint), r.step,
+                   row_error(r))
 
 
-
-def labels_fn(ctx: Ctx) -> Any:
-    return lambda sid: ctx.c[sid].label
-
-
-def seg_exact(ctx: Ctx, seg: Segment, k: int) -> float:
-    return float(np.hypot(*(exact_at(ctx, seg.end, k) - exact_at(ctx, seg.start, k))))
+def roots_of(ctx: Ctx, status: dict[str, str], sid: str, also: str | None = None) -> list[str]:
+    """Wrong points with a new error (or swapped labels) that a step is built from, in
+    construction order; ``also`` (a segment's own end or start) first when it is one itself."""
+    built_from = [s for s in ctx.c.ancestors([sid]) if s != sid]
+    candidates = built_from if also is None else [also, *built_from]
+    return list(dict.fromkeys(s for s in candidates if status.get(s) in (NEW, SWAPPED)))

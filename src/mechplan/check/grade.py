@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from ..construct.ops import Grade
+from ..construct.ops.spec import point_of
 from ..construct.step import Plan
 from ..errors import CheckError, MechplanError
 from ..geom.sketch import nearest
@@ -28,11 +29,10 @@ from .context import (
     Drawn,
     Options,
     Rederive,
-    exact_at,
-    labels_fn,
     roots_of,
     row_brief,
     row_error,
+    segment_finding,
     segments_of,
 )
 from .drawn import classify_points, find_swaps, overrides_of, prepare
@@ -40,7 +40,7 @@ from .hints import HintContext, depends_on, rule
 from .labels import LabelBook, PlanKey
 from .match import QuantityIndex, SegmentIndex, interpret
 from .points import DrawnPlan, DrawnSheet, find_plans
-from .positions import grade_per_plan, several_positions
+from .positions import fit_score, grade_per_plan, several_positions
 from .report import (
     ACCUMULATED,
     CARRIED,
@@ -48,7 +48,6 @@ from .report import (
     NEW,
     OK,
     REFERENCE,
-    SLIP,
     SWAPPED,
     UNCHECKED,
     WRONG,
@@ -57,7 +56,6 @@ from .report import (
     PlanReport,
     PointRow,
     SegmentRow,
-    Tolerance,
 )
 from .texts import T, join, plan_title
 from .values import grade_table_segments, grade_values
@@ -100,30 +98,20 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
         raise CheckError(T("error.nothing_to_check", problems=f": {problems}" if problems else ""),
                          file=sub.path)
-    ctx = Ctx(scene, sub, sol.construction, ev, book, sheet, interp, options, sol.scales)
+    ctx = Ctx(scene, sub, c, ev, book, sheet, interp, options, sol.scales)
     reports = [_grade(ctx, k) for k in range(len(candidates))]
-    if len(reports) == 1:
-        best = 0
-    else:
-        best = min(range(len(reports)), key=lambda i: _score(reports[i]))
-        phi_source = T("phi.best_of", n=len(candidates))
+    best = min(range(len(reports)), key=lambda i: fit_score(reports[i].rows))
     report = reports[best]
-    if len(reports) > 1 and several_positions(ctx):
-        report = grade_per_plan(ctx, reports, best, _grade)
-        phi_source = report.phi_source
     report.phi_source = phi_source
+    if len(reports) > 1:
+        report.phi_source = T("phi.best_of", n=len(candidates))
+        if several_positions(ctx):
+            report = grade_per_plan(ctx, reports, best, _grade)
     report.notes = list(dict.fromkeys(notes + report.notes))   # each note once
     if sheet is not None:
         report.label_distance_mm = sheet.label_distance
     report.units = sub.units
     return report
-
-
-def _score(r: CheckReport) -> tuple[float, float]:
-    errs = [abs(s.error_pct) for p in r.plans for s in p.segments if s.error_pct is not None]
-    errs += [abs(v.error_pct) for v in r.values if v.error_pct is not None]
-    wrong = sum(1 for row in r.rows if row.verdict in (WRONG, SLIP))
-    return (wrong, float(np.median(errs)) if errs else math.inf)
 
 
 def _angles(scene: Scene, sub: Submission, options: Options,
@@ -176,16 +164,15 @@ def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]
 
         loading = Loading.from_scene(scene)
         if not loading.is_empty:
-            sol = solve(scene, at_deg=at_deg, plans=tuple(dict.fromkeys((*plans, "force"))),
-                        loading=loading)
-            sol.extras["loading"] = loading
-            return sol
+            return solve(scene, at_deg=at_deg, plans=tuple(dict.fromkeys((*plans, "force"))),
+                         loading=loading)
         notes.append(Note("info", T("note.no_loads"), scene.path or ""))
     plans = tuple(p for p in plans if p != "force")
     return solve(scene, at_deg=at_deg, plans=plans)
 
 
 def _grade(ctx: Ctx, k: int) -> CheckReport:
+    """Grade the submission at candidate position k."""
     phi = math.degrees(float(ctx.ev.phi[k]))
     report = CheckReport(str(ctx.scene.path or ""), ctx.sub.path, ctx.sub.kind, round(phi, 10),
                          "")
@@ -197,21 +184,15 @@ def _grade(ctx: Ctx, k: int) -> CheckReport:
     for d in drawn:
         find_swaps(ctx, d, k)
     overrides = overrides_of(list(first.values()))
-    mu_all = {d.dp.plan: d.mu for d in first.values() if d.mu}
-    for plan, (mu, _) in ctx.interp.scales.items():
-        mu_all.setdefault(plan, mu)
-    for plan, mu in ctx.options.mu.items():
-        mu_all[plan] = mu
-    reds = []
-    for d in drawn:
-        over = dict(overrides)
-        over.update(overrides_of([d]))
-        red = Rederive(ctx.c, ctx.ev, k, over)
-        reds.append(red)
-        classify_points(ctx, d, red)
-    status: dict[str, str] = {}
-    for d in reversed(drawn):           # the first drawing of a plan wins
-        status.update(d.status)
+    # μ of each plan: given on the command line, else of its first drawing, else written
+    mu_all = {plan: mu for plan, (mu, _) in ctx.interp.scales.items()}
+    mu_all.update({d.dp.plan: d.mu for d in first.values() if d.mu})
+    mu_all.update(ctx.options.mu)
+    reds = [Rederive(ctx.c, ctx.ev, k, {**overrides, **overrides_of([d])}) for d in drawn]
+    for d, red in zip(drawn, reds):
+        classify_points(d, red)
+    # the first drawing of a plan wins
+    status = {sid: cause for d in reversed(drawn) for sid, cause in d.status.items()}
     for d in drawn:
         for sid, cause in list(d.status.items()):
             if cause == CARRIED and not roots_of(ctx, status, sid):
@@ -219,25 +200,22 @@ def _grade(ctx: Ctx, k: int) -> CheckReport:
                 status[sid] = ACCUMULATED if status.get(sid) == CARRIED else status[sid]
     for d, red in zip(drawn, reds):
         report.plans.append(_grade_drawn(ctx, d, k, red, mu_all, report.findings, status))
-    global_red = Rederive(ctx.c, ctx.ev, k, overrides)
-    table_reports = grade_table_segments(ctx, k, mu_all, report)
-    report.plans.extend(table_reports)
-    grade_values(ctx, k, drawn, first, global_red, mu_all, report)
+    report.plans.extend(grade_table_segments(ctx, k, report))
+    grade_values(ctx, k, first, Rederive(ctx.c, ctx.ev, k, overrides), mu_all, report)
     return report
 
 
 def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, float],
                  findings: list[Finding], status: dict[str, str]) -> PlanReport:
+    """Grade one drawn plan: its points, segments and drawn lines, and a finding per root cause."""
     c, dp = ctx.c, d.dp
-    tol = ctx.options.tol(dp.plan)
-    pr = PlanReport(dp.name, dp.plan.value, dp.key[1], d.mu, d.mu_source, tol,
-                    anchor=c[d.anchor].label if d.anchor else "", convention=dp.convention)
-    labels = labels_fn(ctx)
+    pr = PlanReport(dp.name, dp.plan.value, dp.key[1], d.mu, d.mu_source,
+                    ctx.options.tol(dp.plan), anchor=c[d.anchor].label if d.anchor else "",
+                    convention=dp.convention)
     mu_map = {p: m for p, m in mu_all.items() if m}
     if d.mu:
         mu_map[dp.plan] = d.mu
-    hctx = HintContext(c, ctx.scene.mechanism, lambda s: red.own(s), red.exact, mu_map, labels)
-    present = set(d.si)
+    hctx = HintContext(c, ctx.scene.mechanism, red.own, red.exact, mu_map)
     for sid, p in dp.points.items():
         err = d.errors.get(sid)
         verdict = UNCHECKED if err is None else (OK if err <= d.tol[sid] else WRONG)
@@ -246,37 +224,33 @@ def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, f
                                   p.where))
     # segments of the construction, then drawn lines between labelled points
     segs = segments_of(c, dp.key)
-    pairs = {(s.start, s.end) for s in segs} | {(s.end, s.start) for s in segs}
-    rows: list[SegmentRow] = []
-    for s in segs:
-        rows.append(_segment_row(ctx, d, k, s.start, s.end, s.name, s.quantity, s.kind.value,
-                                 tol, hctx, present, s is d.reference, red, status))
-    seen: set[tuple[str, str]] = set()
+    rows = [_segment_row(ctx, d, k, hctx, status, s.start, s.end, s.name, s.quantity,
+                         s.kind.value, s is d.reference) for s in segs]
+    seen = {(s.start, s.end) for s in segs} | {(s.end, s.start) for s in segs}
     for line in dp.lines:
         a = _point_at(dp, line.start, ctx.options.snap)
         b = _point_at(dp, line.end, ctx.options.snap)
-        if a is None or b is None or a == b or (a, b) in pairs or (a, b) in seen or (b, a) in seen:
+        if a is None or b is None or a == b or (a, b) in seen:
             continue
-        seen.add((a, b))
-        row = _segment_row(ctx, d, k, a, b, labels(a) + labels(b), "", "drawn", tol, hctx,
-                           present, False, red, status)
+        seen |= {(a, b), (b, a)}
+        row = _segment_row(ctx, d, k, hctx, status, a, b, c[a].label + c[b].label, "", "drawn")
         row.in_construction = False
         row.drawn = True
         rows.append(row)
     for row in rows:
         if row.drawn is None and row.submitted_mm is not None:
-            row.drawn = _is_drawn(dp, row, ctx.options.snap)
+            row.drawn = _is_drawn(dp, row.start, row.end, ctx.options.snap)
     pr.segments = rows
     pr.drawn_lines = [(ln.start, ln.end) for ln in dp.lines]
     if d.mu and d.anchor is not None:
         a_at = np.asarray(dp.points[d.anchor].at)
-        base = exact_at(ctx, d.anchor, k)
+        base = ctx.ev[d.anchor][k]
         place = {}
         for sid in ctx.book.plans.get(dp.key, {}):
-            v = a_at + (exact_at(ctx, sid, k) - base) / d.mu
+            v = a_at + (ctx.ev[sid][k] - base) / d.mu
             if np.all(np.isfinite(v)):
                 place[sid] = (float(v[0]), float(v[1]))
-                pr.exact_mm[labels(sid)] = place[sid]
+                pr.exact_mm[c[sid].label] = place[sid]
         for s in segs:
             if s.start in place and s.end in place:
                 pr.exact_segments.append((s.name, place[s.start], place[s.end]))
@@ -289,8 +263,8 @@ def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, f
             error = row_error(primary[0]) if primary else ""
             segtxt = join((row_brief(r) for r in mine), "; ")
             findings.append(Finding(
-                "wrong point", pr.name, labels(sid),
-                T("finding.wrong_point", label=labels(sid), err=d.errors[sid],
+                "wrong point", pr.name, c[sid].label,
+                T("finding.wrong_point", label=c[sid].label, err=d.errors[sid],
                   own=d.own_err[sid], segments=T("paren", x=segtxt) if mine else "",
                   rule=rule(hctx, c[sid], d.si[sid], d.tol[sid])), sid, error))
     done: set[str] = set()
@@ -298,13 +272,12 @@ def _grade_drawn(ctx: Ctx, d: Drawn, k: int, red: Rederive, mu_all: dict[Plan, f
         if a in done:
             continue
         done |= {a, b}
-        findings.append(Finding("swapped labels", pr.name, f"{labels(a)}/{labels(b)}",
-                                T("finding.swapped", a=labels(a), b=labels(b)), a))
+        findings.append(Finding("swapped labels", pr.name, f"{c[a].label}/{c[b].label}",
+                                T("finding.swapped", a=c[a].label, b=c[b].label), a))
     for r in rows:
         if r.verdict == WRONG and r.cause == NEW and r.step not in d.status and \
                 not any(f.step == r.step for f in findings):
-            findings.append(Finding("wrong segment", pr.name, r.name,
-                                    T("colon", a=row_brief(r), b=r.hint), r.step, row_error(r)))
+            findings.append(segment_finding(pr.name, r))
     return pr
 
 
@@ -316,32 +289,32 @@ def _where_label(ctx: Ctx, sid: str, d: Drawn) -> str:
 
 
 def _point_at(dp: DrawnPlan, at: tuple[float, float], snap: float) -> str | None:
+    """The labelled point of a drawn plan at a line's end (None: no point there)."""
     sids = list(dp.points)[::-1]           # the last of equally near points, as they were read
     i = nearest(np.array([dp.points[s].at for s in sids]), at, snap + 1e-9)
     return sids[i] if i >= 0 else None
 
 
-def _is_drawn(dp: DrawnPlan, row: SegmentRow, snap: float) -> bool:
-    a = dp.points.get(row.start)
-    b = dp.points.get(row.end)
-    if a is None or b is None:
-        return False
-    for ln in dp.lines:
-        for p, q in ((ln.start, ln.end), (ln.end, ln.start)):
-            if math.dist(p, a.at) <= snap and math.dist(q, b.at) <= snap:
-                return True
-    return False
+def _is_drawn(dp: DrawnPlan, start: str, end: str, snap: float) -> bool:
+    """Whether a drawn line joins two labelled points of a plan."""
+    a, b = dp.points[start].at, dp.points[end].at
+    return any(math.dist(p, a) <= snap and math.dist(q, b) <= snap
+               for ln in dp.lines for p, q in ((ln.start, ln.end), (ln.end, ln.start)))
 
 
-def _segment_row(ctx: Ctx, d: Drawn, k: int, start: str, end: str, name: str, quantity: str,
-                 kind: str, tol: Tolerance, hctx: HintContext, present: set[str],
-                 is_reference: bool, red: Rederive, status: dict[str, str]) -> SegmentRow:
+def _segment_row(ctx: Ctx, d: Drawn, k: int, hctx: HintContext, status: dict[str, str],
+                 start: str, end: str, name: str, quantity: str, kind: str,
+                 is_reference: bool = False) -> SegmentRow:
+    """A segment between two points of a drawn plan: its length and direction against the exact
+    ones, its verdict, and when wrong why."""
     c, dp = ctx.c, d.dp
-    exact_vec = exact_at(ctx, end, k) - exact_at(ctx, start, k)
-    exact_mm = float(np.hypot(*exact_vec)) / d.mu if d.mu else None
-    row = SegmentRow(name, quantity, kind, end, None, exact_mm,
-                     exact_value=float(np.hypot(*exact_vec)), start=start, end=end)
-    row.depends_on = depends_on(c, end, present, hctx.labels)
+    tol = ctx.options.tol(dp.plan)
+    exact_vec = ctx.ev[end][k] - ctx.ev[start][k]
+    exact_value = float(np.hypot(*exact_vec))
+    exact_mm = exact_value / d.mu if d.mu else None
+    row = SegmentRow(name, quantity, kind, end, None, exact_mm, exact_value=exact_value,
+                     start=start, end=end)
+    row.depends_on = depends_on(c, end, d.si)
     if start not in dp.points or end not in dp.points:
         row.verdict = MISSING
         missing = [c[s].label for s in (start, end) if s not in dp.points]
@@ -356,24 +329,21 @@ def _segment_row(ctx: Ctx, d: Drawn, k: int, start: str, end: str, name: str, qu
     ref_len = exact_mm if exact_mm is not None else row.submitted_mm
     row.tolerance_mm = tol.allowed_mm(ref_len)
     row.tolerance_deg = tol.allowed_deg(ref_len)
-    if np.hypot(*exact_vec) > 0 and row.submitted_mm > 1e-9:
+    if exact_value > 0 and row.submitted_mm > 1e-9:
         row.direction_deg = math.degrees(math.remainder(
             math.atan2(vec[1], vec[0]) - math.atan2(exact_vec[1], exact_vec[0]), 2 * math.pi))
-    len_ok = dir_ok = True
     if exact_mm is not None:
         row.error_mm = row.submitted_mm - exact_mm
         row.error_pct = 100.0 * row.error_mm / exact_mm if exact_mm > 0 else None
-        len_ok = abs(row.error_mm) <= row.tolerance_mm
-    if row.direction_deg is not None:
-        dir_ok = abs(row.direction_deg) <= row.tolerance_deg
-    if is_reference:
-        len_ok = True
-    if exact_mm is None:
-        row.verdict = WRONG if not dir_ok else UNCHECKED
-    elif len_ok and dir_ok:
-        row.verdict = REFERENCE if is_reference else OK
-    else:
+    # the reference segment fixes μ: only its direction is graded
+    len_ok = is_reference or row.error_mm is None or abs(row.error_mm) <= row.tolerance_mm
+    dir_ok = row.direction_deg is None or abs(row.direction_deg) <= row.tolerance_deg
+    if not (len_ok and dir_ok):
         row.verdict = WRONG
+    elif exact_mm is None:
+        row.verdict = UNCHECKED
+    else:
+        row.verdict = REFERENCE if is_reference else OK
     if is_reference:
         row.hint = T("hint.reference")
     if row.verdict != WRONG:
@@ -390,17 +360,13 @@ def _segment_row(ctx: Ctx, d: Drawn, k: int, start: str, end: str, name: str, qu
         x = end if status.get(end) == NEW else start
         row.cause = NEW
         row.step = x
-        row.hint = rule(hctx, c[x], d.si[x], d.tol.get(x, tol.mm))
+        row.hint = rule(hctx, c[x], d.si[x], d.tol[x])
         return row
     # does the student's own construction from their earlier points give this segment?
-    own_end = np.asarray(red.own(end)).reshape(-1)[:2]
-    own_vec = (own_end - d.si[start]) / d.mu if d.mu else vec
+    own_vec = (point_of(hctx.own(end)) - d.si[start]) / d.mu if d.mu else vec
     explained = bool(np.all(np.isfinite(own_vec))) and \
         float(np.hypot(*(vec - own_vec))) <= row.tolerance_mm
-    roots = roots_of(ctx, status, end)
-    if start in status and status[start] in (NEW, SWAPPED):
-        roots = [start, *roots]
-    roots = list(dict.fromkeys(roots))
+    roots = roots_of(ctx, status, end, also=start)
     if explained and roots:
         row.cause = CARRIED
         row.carried_from = [_where_label(ctx, r, d) for r in roots]
@@ -412,5 +378,5 @@ def _segment_row(ctx: Ctx, d: Drawn, k: int, start: str, end: str, name: str, qu
         row.hint = T("hint.accumulated", errs=errs)
     else:
         row.cause = NEW
-        row.hint = rule(hctx, c[end], d.si[end], d.tol.get(end, tol.mm))
+        row.hint = rule(hctx, c[end], d.si[end], d.tol[end])
     return row

@@ -4,7 +4,7 @@ of it the submission breaks, measured from the student's own earlier points."""
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Container
 from dataclasses import dataclass
 from typing import Any
 
@@ -29,7 +29,10 @@ class HintContext:
     own: Value                      # value of a step from the student's points (not the step's own)
     exact: Value                    # exact value of a step
     mu: dict[Plan, float]
-    labels: Callable[[str], str]    # label of a step as written on the plans
+
+    def labels(self, sid: str) -> str:
+        """The label of a step as written on the plans."""
+        return self.c[sid].label
 
     def mm(self, plan: Plan, length: float) -> float:
         """A physical length on a plan in mm of paper."""
@@ -66,9 +69,9 @@ def rule(ctx: HintContext, step: Step, at: np.ndarray, tol_mm: float) -> Text:
     return T("rule.tail", body=body, off=off) if said.measured else body
 
 
-def depends_on(c: Construction, sid: str, present: set[str], labels: Callable[[str], str]
-               ) -> list[str]:
-    """Labels of the earlier points (present on the submission) and ω/ε a step is built from."""
+def depends_on(c: Construction, sid: str, present: Container[str]) -> list[str]:
+    """Labels of the earlier points (present on the submission), poles and ω/ε a step is built
+    from."""
     out: list[str] = []
     seen: set[str] = set()
     stack = list(c[sid].inputs)
@@ -78,14 +81,8 @@ def depends_on(c: Construction, sid: str, present: set[str], labels: Callable[[s
             continue
         seen.add(x)
         st = c[x]
-        if x in present:
-            out.append(labels(x))
-        elif st.kind is Kind.SCALAR and st.op.grade is Grade.RATE:
+        if x in present or st.op.grade in (Grade.RATE, Grade.ORIGIN):
             out.append(st.label)
-        elif st.plan is Plan.POSITION and st.kind is Kind.POINT:
-            continue
-        elif st.kind is Kind.POINT and st.op.grade is Grade.ORIGIN:
-            out.append(labels(x))
-        else:
+        elif not (st.plan is Plan.POSITION and st.kind is Kind.POINT):   # given to the plans
             stack.extend(st.inputs)
     return list(dict.fromkeys(out))

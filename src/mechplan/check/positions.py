@@ -11,13 +11,12 @@ from __future__ import annotations
 
 import dataclasses
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 
 import numpy as np
 
 from .context import Ctx
-from .points import DrawnSheet
-from .report import SLIP, WRONG, CheckReport, PlanReport
+from .report import SLIP, WRONG, CheckReport, PlanReport, PointRow, SegmentRow, ValueRow
 from .texts import T
 
 Grader = Callable[[Ctx, int], CheckReport]
@@ -31,17 +30,18 @@ def several_positions(ctx: Ctx) -> bool:
     return len(set(kinds)) < len(kinds)
 
 
-def plan_score(p: PlanReport) -> tuple[float, float]:
-    """How badly a plan fits a position: wrong rows, then the median relative error."""
-    wrong = sum(1 for row in p.segments if row.verdict in (WRONG, SLIP))
-    wrong += sum(1 for pt in p.points if pt.verdict == WRONG)
-    errs = [abs(s.error_pct) for s in p.segments if s.error_pct is not None]
+def fit_score(rows: Sequence[SegmentRow | ValueRow],
+              points: Sequence[PointRow] = ()) -> tuple[float, float]:
+    """How badly rows (and points) fit a position: wrong ones, then the median relative error."""
+    wrong = sum(1 for row in [*rows, *points] if row.verdict in (WRONG, SLIP))
+    errs = [abs(row.error_pct) for row in rows if row.error_pct is not None]
     return (wrong, float(np.median(errs)) if errs else math.inf)
 
 
 def _best_position(reports: list[CheckReport], j: int) -> int:
     """The candidate position at which drawn plan ``j`` fits best."""
-    return min(range(len(reports)), key=lambda k: plan_score(reports[k].plans[j]))
+    plans = [r.plans[j] for r in reports]
+    return min(range(len(plans)), key=lambda k: fit_score(plans[k].segments, plans[k].points))
 
 
 def grade_per_plan(ctx: Ctx, reports: list[CheckReport], best: int,
@@ -62,8 +62,7 @@ def grade_per_plan(ctx: Ctx, reports: list[CheckReport], best: int,
     out = CheckReport(base.scene, base.submission, base.kind, base.phi_deg,
                       T("phi.per_plan", n=len(reports)))
     for k, members in groups.items():
-        sheet = DrawnSheet([drawn[j] for j in members], ctx.sheet.notes,
-                           ctx.sheet.label_distance, ctx.sheet.other_entries)
+        sheet = dataclasses.replace(ctx.sheet, plans=[drawn[j] for j in members])
         rep = grade(dataclasses.replace(ctx, sheet=sheet), k)
         mine = {drawn[j].name for j in members}
         for j, pr in zip(members, rep.plans):

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import math
 import re
-from typing import Any
+from collections.abc import Callable
 
 import numpy as np
 
@@ -20,22 +20,20 @@ from .context import (
     Ctx,
     Drawn,
     Rederive,
-    exact_at,
-    labels_fn,
+    exact_length,
+    given_mu,
     roots_of,
-    row_brief,
-    seg_exact,
+    segment_finding,
 )
 from .hints import depends_on, text_of
 from .labels import PlanKey, plan_key, segment_key
-from .match import GivenValue, TableSegment
+from .match import GivenValue, Quantity, TableSegment
 from .report import (
     CARRIED,
     NEW,
     OK,
     REFERENCE,
     SLIP,
-    SWAPPED,
     UNCHECKED,
     WRONG,
     CheckReport,
@@ -48,169 +46,150 @@ from .texts import T, join, plan_title, plan_word
 
 
 # -- tables of lengths -------------------------------------------------------------------------
-def grade_table_segments(ctx: Ctx, k: int, mu_all: dict[Plan, float],
-                          report: CheckReport) -> list[PlanReport]:
-    c = ctx.c
+def grade_table_segments(ctx: Ctx, k: int, report: CheckReport) -> list[PlanReport]:
+    """A plan report per plan of a table of lengths, rows in construction order."""
     by_key: dict[PlanKey, list[TableSegment]] = {}
-    for ts in ctx.interp.segments:
-        if ctx.sheet is not None:
-            continue     # lengths written on a drawn sheet are checked against the drawing below
-        by_key.setdefault(ts.key, []).append(ts)
-    out = []
-    order = {id(s): i for i, s in enumerate(c.segments)}
-    for key, items in by_key.items():
-        plan = key[0]
-        tol = ctx.options.tol(plan)
-        items.sort(key=lambda t: order.get(id(t.segment), 0))
-        mu, source = None, ""
-        if plan in ctx.options.mu:
-            mu, source = ctx.options.mu[plan], T("mu.cli")
-        elif plan in ctx.interp.scales:
-            mu, source = ctx.interp.scales[plan]
-        elif any(t.mu for t in items):
-            t0 = next(t for t in items if t.mu)
-            mu, source = t0.mu, T("mu.row", written=t0.written, where=t0.where)
-        reference = None
-        if mu is None and items:
-            reference = items[0]
-            exact = seg_exact(ctx, reference.segment, k)
-            if reference.length_mm > 0:
-                mu = exact / reference.length_mm
-                source = T("mu.inferred_table", written=reference.written,
-                           q=reference.segment.quantity, plan=plan_title(plan.value, case="gen"))
-        pr = PlanReport(plan_title(plan.value, key[1], table=True), plan.value, key[1], mu,
-                        source, tol)
-        wrong_ends: dict[str, str] = {}
-        for ts in items:
-            seg = ts.segment
-            row_mu = ts.mu or mu
-            exact_val = seg_exact(ctx, seg, k)
-            exact_mm = exact_val / row_mu if row_mu else None
-            row = SegmentRow(seg.name, seg.quantity, seg.kind.value, seg.end, ts.length_mm,
-                             exact_mm, exact_value=exact_val, where=ts.where, start=seg.start,
-                             end=seg.end)
-            row.submitted_value = ts.length_mm * row_mu if row_mu else None
-            if exact_mm is None:
-                row.verdict = UNCHECKED
-                row.hint = T("hint.no_mu")
+    if ctx.sheet is None:   # lengths written on a drawn sheet are checked against the drawing
+        for ts in ctx.interp.segments:
+            by_key.setdefault(ts.key, []).append(ts)
+    order = {id(s): i for i, s in enumerate(ctx.c.segments)}
+    return [_grade_table(ctx, k, key, sorted(items, key=lambda t: order.get(id(t.segment), 0)),
+                         report) for key, items in by_key.items()]
+
+
+def _grade_table(ctx: Ctx, k: int, key: PlanKey, items: list[TableSegment],
+                 report: CheckReport) -> PlanReport:
+    """The lengths of one plan at the student's μ (given, written on a row, or fixed by the first
+    row taken at its exact length); a wrong one is new, or carried from an earlier wrong row."""
+    c, plan = ctx.c, key[0]
+    tol = ctx.options.tol(plan)
+    mu, source = given_mu(ctx, plan) or (None, "")
+    with_mu = next((t for t in items if t.mu), None)
+    reference = None
+    if mu is None and with_mu is not None:
+        mu, source = with_mu.mu, T("mu.row", written=with_mu.written, where=with_mu.where)
+    elif mu is None:
+        reference = items[0]
+        if reference.length_mm > 0:
+            seg = reference.segment
+            mu = exact_length(ctx, seg.start, seg.end, k) / reference.length_mm
+            source = T("mu.inferred_table", written=reference.written, q=seg.quantity,
+                       plan=plan_title(plan.value, case="gen"))
+    pr = PlanReport(plan_title(plan.value, key[1], table=True), plan.value, key[1], mu, source,
+                    tol)
+    present = {t.segment.end for t in items} | {t.segment.start for t in items}
+    wrong_ends: dict[str, str] = {}
+    for ts in items:
+        seg = ts.segment
+        row_mu = ts.mu or mu
+        exact_value = exact_length(ctx, seg.start, seg.end, k)
+        exact_mm = exact_value / row_mu if row_mu else None
+        row = SegmentRow(seg.name, seg.quantity, seg.kind.value, seg.end, ts.length_mm,
+                         exact_mm, exact_value=exact_value, where=ts.where, start=seg.start,
+                         end=seg.end)
+        row.submitted_value = ts.length_mm * row_mu if row_mu else None
+        row.depends_on = depends_on(c, seg.end, present)
+        if exact_mm is None:
+            row.verdict = UNCHECKED
+            row.hint = T("hint.no_mu")
+        else:
+            row.tolerance_mm = tol.allowed_mm(exact_mm)
+            row.error_mm = ts.length_mm - exact_mm
+            row.error_pct = 100 * row.error_mm / exact_mm if exact_mm else None
+            if ts is reference:
+                row.verdict = REFERENCE
+                row.hint = T("hint.reference")
             else:
-                row.tolerance_mm = tol.allowed_mm(exact_mm)
-                row.error_mm = ts.length_mm - exact_mm
-                row.error_pct = 100 * row.error_mm / exact_mm if exact_mm else None
-                if ts is reference:
-                    row.verdict = REFERENCE
-                    row.hint = T("hint.reference")
-                else:
-                    row.verdict = OK if abs(row.error_mm) <= row.tolerance_mm else WRONG
-            present = {t.segment.end for t in items} | {t.segment.start for t in items}
-            row.depends_on = depends_on(c, seg.end, present, labels_fn(ctx))
-            if row.verdict == WRONG:
-                anc = set(c.ancestors([seg.end])) - {seg.end}
-                earlier = [name for sid, name in wrong_ends.items() if sid in anc]
-                if earlier:
-                    row.cause = CARRIED
-                    row.carried_from = earlier
-                    row.hint = T("hint.may_carried_segment", earlier=join(earlier))
-                else:
-                    row.cause = NEW
-                    row.hint = _table_hint(ctx, seg)
-                    report.findings.append(Finding("wrong segment", pr.name, seg.name,
-                                                   T("colon", a=row_brief(row), b=row.hint),
-                                                   seg.end, "length"))
-                wrong_ends[seg.end] = seg.name
-            pr.segments.append(row)
-        out.append(pr)
-    return out
-
-
-def _table_hint(ctx: Ctx, seg: Segment) -> str:
-    st = ctx.c[seg.end]
-    return text_of(st.op.hint(st, ctx.c))          # the hint of its operation (``OpSpec.hint``)
+                row.verdict = OK if abs(row.error_mm) <= row.tolerance_mm else WRONG
+        if row.verdict == WRONG:
+            built_from = set(c.ancestors([seg.end])) - {seg.end}
+            earlier = [name for sid, name in wrong_ends.items() if sid in built_from]
+            if earlier:
+                row.cause = CARRIED
+                row.carried_from = earlier
+                row.hint = T("hint.may_carried_segment", earlier=join(earlier))
+            else:
+                row.cause = NEW
+                end = c[seg.end]
+                row.hint = text_of(end.op.hint(end, c))     # the hint of its operation
+                report.findings.append(segment_finding(pr.name, row))
+            wrong_ends[seg.end] = seg.name
+        pr.segments.append(row)
+    return pr
 
 
 # -- named values -------------------------------------------------------------------------------
-def grade_values(ctx: Ctx, k: int, drawn: list[Drawn], first: dict[PlanKey, Drawn],
-                  red: Rederive, mu_all: dict[Plan, float], report: CheckReport) -> None:
+def grade_values(ctx: Ctx, k: int, first: dict[PlanKey, Drawn], red: Rederive,
+                 mu_all: dict[Plan, float], report: CheckReport) -> None:
+    """Grade each written value against the exact one and the student's own numbers."""
     c = ctx.c
-    status: dict[str, str] = {}
-    for d in first.values():
-        for sid, cause in d.status.items():
-            status[sid] = cause
+    status = {sid: cause for d in first.values() for sid, cause in d.status.items()}
     table_len: dict[int, TableSegment] = {id(t.segment): t for t in ctx.interp.segments}
     for gv in ctx.interp.values:
         q = gv.quantity
         row = ValueRow(gv.written, q.display, si_unit(q.dimension), gv.value, None,
                        where=gv.where)
+        report.values.append(row)
         exact = _value_exact(ctx, q, k, report.notes, gv.where)
         if exact is None:
             row.verdict = UNCHECKED
-            report.values.append(row)
             continue
-        scalar = q.step is not None and ctx.c[q.step].kind is Kind.SCALAR
-        signed = scalar and gv.value < 0
+        signed = q.step is not None and c[q.step].kind is Kind.SCALAR and gv.value < 0
         exact_cmp = exact if signed else abs(exact)
         sub_cmp = gv.value if signed else abs(gv.value)
         row.exact = exact_cmp
         plan = q.plan
+        plan_name = plan_word(plan.value) if plan else ""
         tol = ctx.options.tol(plan)
         mu = mu_all.get(plan) if plan else None
         seg = q.segment or _absolute_segment(c, q.step)
+        rate_length = _rate_length(ctx, q.step, k)
         tol_abs = tol.pct / 100 * abs(exact_cmp)
-        # a value is right within the paper tolerance of its segment, at the student's μ or
-        # (when they gave none) at the scene's: a short segment is not held to ±2 %
+        # a value is right within the paper tolerance of its segment (ω, ε: of their relative
+        # segment over the link's length), at the student's μ or (when they gave none) at the
+        # scene's: a short segment is not held to ±2 %
         paper = mu or (ctx.scales.get(plan) if plan else None)
         if seg is not None and paper:
             tol_abs = max(tol_abs, tol.mm * paper)
-        elif q.step is not None and c[q.step].op.rate_of is not None and plan is not None:
-            mu_p = mu_all.get(plan) or ctx.scales.get(plan)
-            l = _link_length(ctx, q.step, k)
-            if mu_p and l:
-                tol_abs = max(tol_abs, tol.mm * mu_p / l)
-        tol_abs = max(tol_abs, gv.half_unit)      # "0.00" is right for anything below 0.005
-        row.tolerance = tol_abs
+        elif rate_length and paper:
+            tol_abs = max(tol_abs, tol.mm * paper / rate_length)
+        row.tolerance = max(tol_abs, gv.half_unit)      # "0.00" is right for anything below 0.005
         row.error_pct = 100 * (sub_cmp - exact_cmp) / exact_cmp if exact_cmp else None
         # what the student's own drawing or lengths give
-        own, own_text, arith = _own_value(ctx, gv, seg, q, k, red, first, table_len, mu)
+        own, own_text, arith = _own_value(ctx, gv, seg, rate_length, red, first, table_len, mu)
         row.own = own
         if own is not None and abs(sub_cmp - (own if signed else abs(own))) > arith:
             row.verdict = SLIP
             row.cause = NEW
             row.hint = T("hint.slip", own=own_text, written=gv.written, text=gv.text)
-            report.findings.append(Finding("arithmetic slip", plan_word(plan.value) if plan else "",
-                                           gv.written, row.hint, q.step or ""))
-        elif abs(sub_cmp - exact_cmp) <= tol_abs:
+            report.findings.append(Finding("arithmetic slip", plan_name, gv.written, row.hint,
+                                           q.step or ""))
+        elif abs(sub_cmp - exact_cmp) <= row.tolerance:
             row.verdict = OK
         else:
             row.verdict = WRONG
-            roots = []
-            if seg is not None:
-                roots = [c[s].label for s in roots_of(ctx, status, seg.end)]
-                if status.get(seg.end) in (NEW, SWAPPED):
-                    roots.insert(0, c[seg.end].label)
-            elif q.step is not None:
-                roots = [c[s].label for s in roots_of(ctx, status, q.step)]
+            if seg is not None:     # its segment's end first, when that point is wrong itself
+                roots = roots_of(ctx, status, seg.end, also=seg.end)
+            else:
+                roots = roots_of(ctx, status, q.step) if q.step is not None else []
+            root_labels = join(dict.fromkeys(c[s].label for s in roots))
             if own is not None:
                 row.cause = CARRIED
-                row.hint = (T("hint.own_carried", own=own_text, roots=join(dict.fromkeys(roots)))
+                row.hint = (T("hint.own_carried", own=own_text, roots=root_labels)
                             if roots else T("hint.own", own=own_text))
             elif roots:
                 row.cause = CARRIED
-                row.hint = T("hint.may_carried", roots=join(dict.fromkeys(roots)))
+                row.hint = T("hint.may_carried", roots=root_labels)
             else:
                 row.cause = NEW
                 row.hint = _value_hint(ctx, q)
-                report.findings.append(Finding("wrong value",
-                                               plan_word(plan.value) if plan else "",
-                                               gv.written, T("finding.wrong_value",
-                                                             written=gv.written, text=gv.text,
-                                                             exact=exact_cmp, unit=row.unit,
-                                                             pct=row.error_pct, hint=row.hint)
-                                               if row.error_pct is not None else row.hint,
-                                               q.step or ""))
-        report.values.append(row)
+                report.findings.append(Finding("wrong value", plan_name, gv.written, T(
+                    "finding.wrong_value", written=gv.written, text=gv.text, exact=exact_cmp,
+                    unit=row.unit, pct=row.error_pct, hint=row.hint)
+                    if row.error_pct is not None else row.hint, q.step or ""))
 
 
-def _value_hint(ctx: Ctx, q: Any) -> str:
+def _value_hint(ctx: Ctx, q: Quantity) -> str:
     c = ctx.c
     if q.step is not None:
         st = c[q.step]
@@ -230,21 +209,23 @@ def _absolute_segment(c: Construction, step: str | None) -> Segment | None:
                  if s.end == step and c[s.start].op.grade is Grade.ORIGIN), None)
 
 
-def _link_length(ctx: Ctx, sid: str, k: int) -> float | None:
+def _rate_length(ctx: Ctx, sid: str | None, k: int) -> float | None:
+    """The length of the link a rate (ω, ε) is read over (None: the step is no rate)."""
+    if sid is None:
+        return None
     st = ctx.c[sid]
     lever = st.op.lever_of(st)              # ω, ε: the link's two points
     if st.op.rate_of is None or lever is None:
         return None
-    p, q = lever
-    return float(np.hypot(*(exact_at(ctx, q, k) - exact_at(ctx, p, k))))
+    return exact_length(ctx, *lever, k)
 
 
-def _value_exact(ctx: Ctx, q: Any, k: int, notes: list[Note], where: str) -> float | None:
+def _value_exact(ctx: Ctx, q: Quantity, k: int, notes: list[Note], where: str) -> float | None:
     if q.step is not None:
-        v = exact_at(ctx, q.step, k)
+        v = ctx.ev[q.step][k]
         return float(np.hypot(*v)) if v.ndim == 1 and v.shape[0] == 2 else float(v)
     if q.segment is not None:
-        return seg_exact(ctx, q.segment, k)
+        return exact_length(ctx, q.segment.start, q.segment.end, k)
     if q.extra in ("J_red", "M_red"):
         try:
             from ..dynamics import Loading
@@ -260,60 +241,57 @@ def _value_exact(ctx: Ctx, q: Any, k: int, notes: list[Note], where: str) -> flo
     return None
 
 
-def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, red: Rederive,
-               first: dict[PlanKey, Drawn], table_len: dict[int, TableSegment],
+def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, rate_length: float | None,
+               red: Rederive, first: dict[PlanKey, Drawn], table_len: dict[int, TableSegment],
                mu: float | None) -> tuple[float | None, str, float]:
     """The student's own value of a quantity, its derivation and the arithmetic tolerance."""
-    c = ctx.c
-    rel = 0.005 * abs(gv.value)
+    c, q = ctx.c, gv.quantity
     unit = si_unit(q.dimension)
-    if gv.length_mm is not None:
-        m = gv.mu or mu
-        if m:
-            own = gv.length_mm * m
-            return own, T("own.length", len=gv.length_mm, mu=m, own=own, unit=unit), max(
-                rel, gv.half_unit, gv.length_half_unit * m)
+
+    def slack(rel: float, reading: float = 0.0) -> float:
+        """What the arithmetic may be off by: ``rel`` of the value, half its last written digit,
+        or what the reading it comes from is written to."""
+        return max(rel * abs(gv.value), gv.half_unit, reading)
+
+    if gv.length_mm is not None and (m := gv.mu or mu):
+        own = gv.length_mm * m
+        return own, T("own.length", len=gv.length_mm, mu=m, own=own, unit=unit), slack(
+            0.005, gv.length_half_unit * m)
     if seg is not None:
-        key = segment_key(seg)
-        d = first.get(key)
+        d = first.get(segment_key(seg))
         if d is not None and d.mu and seg.start in d.dp.points and seg.end in d.dp.points:
             length = math.dist(d.dp.points[seg.start].at, d.dp.points[seg.end].at)
             own = length * d.mu
             return own, T("own.drawn", seg=seg.name, len=length, mu=d.mu, own=own,
-                          unit=unit), max(
-                rel, gv.half_unit, 0.5 * d.mu)
-        ts = table_len.get(id(seg))
-        m = (ts.mu if ts else None) or mu
-        if ts is not None and m:
+                          unit=unit), slack(0.005, 0.5 * d.mu)
+        measured = _table_length(table_len, seg, mu)
+        if measured is not None:
+            ts, m = measured
             own = ts.length_mm * m
             return own, T("own.table", seg=seg.name, len=ts.length_mm, mu=m, own=own,
-                          unit=unit), max(
-                rel, gv.half_unit, ts.length_half_unit * m)
+                          unit=unit), slack(0.005, ts.length_half_unit * m)
     rate_of = c[q.step].op.rate_of if q.step is not None else None
     if q.step is not None and rate_of is not None:     # ω, ε of a link
         st = c[q.step]
-        plan_points = [first.get(plan_key(st.plan))]
-        if plan_points[0] is not None and plan_points[0].si:
-            own = float(np.asarray(red.own(q.step)).reshape(-1)[0])
-            return abs(own), T("own.plan", label=st.label, own=abs(own), unit=unit), max(
-                0.01 * abs(gv.value), gv.half_unit)
+        d = first.get(plan_key(st.plan))
+        if d is not None and d.si:
+            own = abs(float(red.own(q.step)[0]))
+            return own, T("own.plan", label=st.label, own=own, unit=unit), slack(0.01)
         # from a table: the relative segment's length × μ / l
         a, b = (st.input(name) for name in rate_of)
         relseg = next((s for s in c.segments if {s.start, s.end} == {a, b}), None)
-        ts = table_len.get(id(relseg)) if relseg is not None else None
-        m = (ts.mu if ts else None) or mu
-        l = _link_length(ctx, q.step, k)
-        if ts is not None and m and l:
-            own = ts.length_mm * m / l
-            return own, T("own.omega", seg=relseg.name,  # type: ignore[union-attr]
-                          len=ts.length_mm, mu=m, l=l, own=own, unit=unit), max(
-                0.01 * abs(gv.value), gv.half_unit)
+        measured = _table_length(table_len, relseg, mu)
+        if measured is not None and rate_length:
+            ts, m = measured
+            own = ts.length_mm * m / rate_length
+            return own, T("own.omega", seg=ts.segment.name, len=ts.length_mm, mu=m,
+                          l=rate_length, own=own, unit=unit), slack(0.01)
         written_rel = _written(ctx, lambda w: relseg is not None and w.quantity.segment is relseg)
-        if written_rel is not None and l:
-            own = abs(written_rel.value) / l
-            return own, T("own.ratio", a=written_rel.written, text=written_rel.text, l=l, own=own,
-                          unit=unit), \
-                max(0.005 * abs(gv.value), gv.half_unit, written_rel.half_unit / l)
+        if written_rel is not None and rate_length:
+            own = abs(written_rel.value) / rate_length
+            return own, T("own.ratio", a=written_rel.written, text=written_rel.text,
+                          l=rate_length, own=own, unit=unit), slack(
+                0.005, written_rel.half_unit / rate_length)
     link = _inertia_link(q)
     spec = ctx.scene.masses.get(link) if link else None
     if spec is not None and spec.mass > 0:
@@ -322,17 +300,27 @@ def _own_value(ctx: Ctx, gv: GivenValue, seg: Segment | None, q: Any, k: int, re
         if a_gv is not None:
             own = spec.mass * abs(a_gv.value)
             return own, T("own.product", m=spec.mass, a=a_gv.written, text=a_gv.text, own=own,
-                          unit=unit), max(0.005 * abs(gv.value), gv.half_unit,
-                                          spec.mass * a_gv.half_unit)
+                          unit=unit), slack(0.005, spec.mass * a_gv.half_unit)
     return None, "", 0.0
 
 
-def _written(ctx: Ctx, which: Any) -> GivenValue | None:
+def _table_length(table_len: dict[int, TableSegment], seg: Segment | None,
+                  mu: float | None) -> tuple[TableSegment, float] | None:
+    """A segment's length written in a table and the μ it is multiplied by (its row's, else the
+    plan's); None when there is no such row or no μ."""
+    ts = table_len.get(id(seg)) if seg is not None else None
+    if ts is None:
+        return None
+    m = ts.mu or mu
+    return (ts, m) if m else None
+
+
+def _written(ctx: Ctx, which: Callable[[GivenValue], bool]) -> GivenValue | None:
     """The first value the student wrote for a quantity (``which(value) → bool``)."""
     return next((w for w in ctx.interp.values if which(w)), None)
 
 
-def _inertia_link(q: Any) -> str | None:
+def _inertia_link(q: Quantity) -> str | None:
     """The link of an inertia force Q_k (a result "Q_2" or a force-plan segment "Q2")."""
     m = re.fullmatch(r"Q_?(\w+)", q.name)
     return m.group(1) if m else None
