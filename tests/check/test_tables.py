@@ -111,6 +111,21 @@ def test_csv_with_header_decimal_comma_and_semicolons(tmp_path: Path, four_bar) 
     assert "no unit; read in SI" in _notes(report, "info")
 
 
+def test_a_rows_scale_factor_must_be_positive(tmp_path: Path, four_bar) -> None:
+    """A row's own μ of zero or below is no scale factor: a note says so and the row is graded
+    at the table's μ (here inferred from the other row), as a μ written on a sheet would be."""
+    scene, sol = four_bar
+    pb, bc = (_exact(sol, n) / 0.01 for n in ("pb", "bc"))
+    path = tmp_path / "t.csv"
+    path.write_text(f"segment;mm;mu\npb;{pb:.1f};-0,01\nbc;{bc:.1f};0\n", encoding="utf-8")
+    report = check(scene, path, Options(at_deg=60))
+    errors = _notes(report, "error")
+    assert "'pb = -0,01' must be positive" in errors and "'bc = 0' must be positive" in errors
+    rows = {s.name: s for p in report.plans for s in p.segments}
+    assert rows["pb"].verdict == REFERENCE and rows["bc"].verdict == OK
+    assert rows["bc"].exact_mm == pytest.approx(bc, rel=2e-3)     # at μ = 0.01 from pb's row
+
+
 def test_csv_without_header(tmp_path: Path, four_bar) -> None:
     scene, sol = four_bar
     w3 = abs(float(sol.ev["vel.omega.3"][0]))

@@ -321,6 +321,9 @@ def _table_segment(e: Entry, seg: Segment, key: PlanKey, length_text: str, out: 
         except SceneError as exc:
             notes.append(Note("error", T("note.row_mu_error", mu=e.mu, name=e.name,
                                          detail=exc.detail), e.where))
+        if row_mu is not None and not (row_mu > 0 and math.isfinite(row_mu)):
+            notes.append(Note("error", T("note.mu_positive", name=e.name, text=e.mu), e.where))
+            row_mu = None           # as a scale factor written on a sheet: not used
     if e.value is not None:
         qname = e.quantity or seg.quantity
         q = qi.find(qname) or qi.find(seg.quantity)
