@@ -16,6 +16,7 @@ from scipy.optimize import brentq
 
 from mechplan.check import check
 from mechplan.check.answers import maybe_check_answers
+from mechplan.errors import CheckError
 from mechplan.studies import solve_file
 
 TEMPLATES = Path(__file__).resolve().parents[2] / "src" / "mechplan" / "templates"
@@ -260,6 +261,21 @@ def test_flywheel_table_russian_and_english(tmp_path):
 def test_linkage_table_of_a_dynamics_scene_is_not_an_answer_table(tmp_path):
     p = _write(tmp_path, "t.toml", '"φ" = "30°"\n[velocity]\npb = 67.0\n')
     assert maybe_check_answers(TEMPLATES / "machine_unit.toml", p) is None
+
+
+@pytest.mark.parametrize("name", ["cam_cycloidal", "planetary_single_row"])
+def test_a_study_is_not_checked_from_a_drawing(tmp_path, name):
+    """A cam or gear study has no plans to draw: a DXF is refused with what to hand in instead
+    (the CLI exits 2 with the message), never read as a linkage scene."""
+    from mechplan.cli import main
+
+    drawing = tmp_path / "sheet.dxf"
+    drawing.write_text("0\nEOF\n", encoding="utf-8")
+    with pytest.raises(CheckError, match=r"answers are checked from a table \(\.toml, \.csv"):
+        check(TEMPLATES / f"{name}.toml", drawing)
+    assert main(["check", str(TEMPLATES / f"{name}.toml"), str(drawing)]) == 2
+    # a linkage scene with [dynamics] still has its plans checked from a drawing
+    assert maybe_check_answers(TEMPLATES / "machine_unit.toml", drawing) is None
 
 
 @pytest.mark.parametrize("lang", ["en", "ru", "vi", "zh"])

@@ -60,6 +60,10 @@ def read_name(name: str, kind: str, section: str | None, has_angle: bool,
     return read_answer(name, tables, has_angle)
 
 
+#: the files an answer table may be
+TABLE_SUFFIXES = (".toml", ".csv", ".tsv", ".txt")
+
+
 # -- entry points -------------------------------------------------------------------------------
 def maybe_check_answers(scene: Any, submission: Any,
                         options: Options | None = None) -> CheckReport | None:
@@ -67,11 +71,14 @@ def maybe_check_answers(scene: Any, submission: Any,
     submission a TOML/CSV table of its answers; None when it is a linkage check."""
     if not isinstance(scene, (str, Path)) or not isinstance(submission, (str, Path)):
         return None
-    if Path(submission).suffix.lower() not in (".toml", ".csv", ".tsv", ".txt"):
-        return None
     found = study_kind(scene)
     if found is None:
         return None
+    if Path(submission).suffix.lower() not in TABLE_SUFFIXES:
+        if found[0] == "dynamics":
+            return None                 # the plans of the linkage are checked elsewhere
+        raise CheckError(T("answers.table_needed", kind=T(f"answers.kind.{found[0]}"),
+                           suffixes=join(TABLE_SUFFIXES)), file=str(submission))
     from ..studies import solve_file
 
     kind = found[0]
