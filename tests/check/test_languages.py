@@ -29,8 +29,8 @@ WORDS = {
            "## Values", "## Findings (root causes)", "[wrong segment] velocity plan (table): pc:",
            "[arithmetic slip] velocity: v_E: arithmetic slip:", "is 3.0 mm too long",
            "follows from your own drawing"],
-    "ru": ["итог: НЕ ЗАЧТЕНО", "## План скоростей (таблица): μ = 0,01 (m/s)/mm",
-           "допуск ±1 мм или ±2 %", "отрезок", "величина", "оценка", "НЕВЕРНО (новая ошибка)",
+    "ru": ["итог: НЕ ЗАЧТЕНО", "## План скоростей (таблица): μ = 0,01 (м/с)/мм",
+           "допуск ±1 мм или ±2 %", "= 0,599 м/с, а записано v_E", "отрезок", "величина", "оценка", "НЕВЕРНО (новая ошибка)",
            "НЕВЕРНО (перенесена)", "ОШИБКА СЧЁТА", "## Величины", "## Найденные ошибки",
            "[неверный отрезок] план скоростей (таблица): pc:",
            "[арифметическая ошибка] план скоростей: v_E: арифметическая ошибка:",
@@ -101,7 +101,8 @@ def test_report_in_each_language(report, table, lang: str) -> None:
     for symbol in ("pb", "bc", "pc", "pe", "v_B", "v_C", "v_E", "μ", "⊥BC", "⊥DC", "m/s"):
         assert symbol in text, (lang, symbol)
     drawn_pc = f"{table[1]['pc'] + 3:.1f}"
-    slip = re.search(r"v_E.*?(\d+[.,]\d) (?:mm|мм) × 0[.,]01 = (\d[.,]\d+) m/s", text)
+    # units follow the language, as on the sheets: "м/с" in Russian
+    slip = re.search(r"v_E.*?(\d+[.,]\d) (?:mm|мм) × 0[.,]01 = (\d[.,]\d+) (?:m/s|м/с)", text)
     assert slip is not None, text
     if lang in ("ru", "vi"):
         assert drawn_pc.replace(".", ",") in text

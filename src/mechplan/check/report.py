@@ -345,6 +345,8 @@ def _table(lang: str, columns: tuple[tuple[str, int, str, str, str], ...],
             x = getattr(row, name)
             if name == "name" and not getattr(row, "in_construction", True):
                 x = f"{x}*"
+            elif name == "unit":
+                x = i18n.unit(x, lang)          # "м/с" on a Russian report
             cells.append(pad(_num(x, fmt, lang) if fmt else x, w, a))
         out.append("   " + "".join(cells) + f"  {verdict_text(row.verdict, row.cause, lang)}")
         if row.verdict in (WRONG, SLIP) and row.hint:

@@ -44,12 +44,15 @@ class Text(i18n.Text):
 
     @classmethod
     def say(cls, key: str, args: dict[str, Any], language: str) -> str:
-        """The text in a language: "_join" and "_plan" are said here, the rest by the catalogue."""
+        """The text in a language: "_join" and "_plan" are said here, the rest by the catalogue
+        (an argument ``unit`` is a unit in SI symbols, written as the language writes it)."""
         lang = language if language in LANGUAGES else "en"
         if key == "_join":
             return cls.joined(args["items"], args["sep"], lang)
         if key == "_plan":
             return _say_plan(args, lang)
+        if isinstance(args.get("unit"), str):
+            args = {**args, "unit": i18n.unit(args["unit"], lang)}
         return super().say(_id(key), args, lang)
 
     @classmethod
