@@ -79,6 +79,8 @@ class Ctx:
     interp: Interpretation
     options: Options
     scales: dict[Plan, float]          # the scene's own scale factors (paper tolerance fallback)
+    #: reduced moment and inertia over all positions, computed once when a value asks for them
+    reduced: dict[str, np.ndarray] = field(default_factory=dict)
 
 
 @dataclass

@@ -231,9 +231,11 @@ def _value_exact(ctx: Ctx, q: Quantity, k: int, notes: list[Note], where: str) -
             from ..dynamics import Loading
             from ..dynamics.reduced import reduced_of
 
-            loading = Loading.from_scene(ctx.scene)
-            m_red, j_red = reduced_of(ctx.c, ctx.ev, ctx.scene.mechanism, loading)
-            return float((j_red if q.extra == "J_red" else m_red)[k])
+            if not ctx.reduced:
+                loading = Loading.from_scene(ctx.scene)
+                m_red, j_red = reduced_of(ctx.c, ctx.ev, ctx.scene.mechanism, loading)
+                ctx.reduced.update(M_red=m_red, J_red=j_red)
+            return float(ctx.reduced[q.extra][k])
         except MechplanError as exc:
             notes.append(Note("warning", T("note.not_computable", extra=q.extra,
                                            error=exc.detail), where))
