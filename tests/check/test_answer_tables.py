@@ -364,8 +364,9 @@ def test_right_tables_of_every_template_pass(tmp_path, name):
 
 
 def test_answer_table_toml_forms(tmp_path: Path) -> None:
-    """Every TOML form of an answer table (module docstring of check/answer_table.py) is read with
-    its angle and section; the table's own angle is not an answer; a value of no use is a note."""
+    """Every TOML form of an answer table (module docstring of submission/answer_table.py) is
+    read with its angle and section; the table's own angle is not an answer; a value of no use is
+    a note."""
     from mechplan.submission.answer_table import read_answers
     from mechplan.submission.notation import is_angle_column as is_angle_name
 
