@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from mechplan import cli
-from mechplan.construct.step import Plan
 from mechplan.dynamics.loading import Loading
+from mechplan.model.plans import Plan
 from mechplan.scene import load_scene, parse_scene
 from mechplan.solve import build, solve
 

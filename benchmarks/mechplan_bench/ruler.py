@@ -9,7 +9,8 @@ import numpy as np
 
 from mechplan.construct.graph import Construction, Evaluation
 from mechplan.construct.ops import Op
-from mechplan.construct.step import Kind, Plan
+from mechplan.construct.step import Kind
+from mechplan.model.plans import Plan
 
 
 class RulerEvaluation(Evaluation):

@@ -15,6 +15,7 @@ import math
 import re
 import string
 import unicodedata
+from collections.abc import Iterable
 from importlib import resources
 from typing import Any, Self
 
@@ -141,8 +142,14 @@ class Text(str):
 
     @classmethod
     def say(cls, key: str, args: dict[str, Any], language: str) -> str:
-        """Message ``key`` with its arguments in a language (an unknown language: English)."""
+        """Message ``key`` with its arguments in a language (an unknown language: English); the
+        keys ``_join`` and ``_plan`` are a list (:func:`join`) and a plan's title
+        (:func:`plan_title`)."""
         language = language if language in LANGUAGES else DEFAULT_LANGUAGE
+        if key == "_join":
+            return listed(args["items"], args["sep"], language)
+        if key == "_plan":
+            return _say_plan(args, language)
         return _Formatter(language, cls).vformat(catalogue(language)[key], (), args)
 
     @classmethod
@@ -165,6 +172,56 @@ class _Formatter(string.Formatter):
         if isinstance(value, str):
             return format(value, format_spec)
         return "" if value is None else num(value, format_spec, self.language)
+
+
+_DECIMAL_COMMA = re.compile(r"\d,\d")
+_SEPARATORS = {", ": "comma", "; ": "semicolon", " and ": "and"}
+
+
+def listed(items: list[Any], sep: str, language: str) -> str:
+    """Items said in a language and joined by a separator said in it (", " is "、" in Chinese;
+    a comma between numbers with a decimal comma is a semicolon)."""
+    said = [tr(x, language) if isinstance(x, str) else num(x, "", language) for x in items]
+    if sep == ", " and language in ("ru", "vi") and any(_DECIMAL_COMMA.search(x) for x in said):
+        sep = "; "          # "b 0,6 мм; c 0,9 мм", not "b 0,6 мм, c 0,9 мм"
+    name = _SEPARATORS.get(sep)
+    return (catalogue(language)[f"core.sep.{name}"] if name else sep).join(said)
+
+
+def join(items: Iterable[Any], sep: str = ", ") -> Text:
+    """Items joined by a separator said in each language (:func:`listed`)."""
+    return Text("_join", {"items": list(items), "sep": sep})
+
+
+def plan_title(plan: str, group: str = "", number: int = 0, table: bool = False,
+               case: str = "nom") -> Text:
+    """"velocity plan", "force II(2,3) plan #2", "velocity plan (table)" (``plan``: a
+    ``Plan`` value); in Russian in the case the sentence needs (nom, gen, loc)."""
+    return Text("_plan", {"plan": plan, "group": group, "number": number, "table": table,
+                          "case": case})
+
+
+def plan_word(plan: str) -> Text:
+    """The kind of a plan: "velocity" in English, "план скоростей" in Russian."""
+    return Text("_plan", {"plan": plan, "bare": True})
+
+
+def with_case(text: Any, case: str) -> Any:
+    """A plan title in another grammatical case (other texts are returned as they are)."""
+    if isinstance(text, Text) and text.key == "_plan":
+        return Text("_plan", {**text.args, "case": case})
+    return text
+
+
+def _say_plan(args: dict[str, Any], language: str) -> str:
+    messages, plan = catalogue(language), args["plan"]
+    if args.get("bare"):
+        return messages[f"core.plan.{plan}.word"]
+    text = " ".join(messages[f"core.plan.{plan}.{args['case']}"].format(group=args["group"])
+                    .split())
+    if args["number"]:
+        text += f" #{args['number']}"
+    return text + (messages["core.plan.table"] if args["table"] else "")
 
 
 def tr(x: Any, language: str) -> str:

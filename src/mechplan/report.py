@@ -7,10 +7,10 @@ import math
 import numpy as np
 
 from .construct.protocol import mm, plan_title, protocol, sense_text, vector_text
-from .construct.step import Plan
 from .construct.terms import pole_label
 from .i18n import message, unit
 from .i18n import number as format_number
+from .model.plans import Plan
 from .solve import Solution, segment_table
 from .trust_report import summary_lines
 

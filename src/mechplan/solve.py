@@ -16,12 +16,12 @@ from .construct.extremes import extreme_positions
 from .construct.graph import Construction, Evaluation
 from .construct.scale import SCALE_KEYS
 from .construct.segments import SegmentKind
-from .construct.step import Plan
 from .construct.trust import Failure, Flag, failures, flags, refuse_unbounded
 from .construct.validity import MAX_CONDITION, ensure_valid
 from .errors import SceneError
 from .limits import ensure_within_budget
 from .model.mechanism import GROUND
+from .model.plans import Plan
 from .model.structure import Structure, analyse
 from .scene.spec import Scene
 

@@ -14,7 +14,8 @@ from pathlib import Path
 import ezdxf
 import numpy as np
 
-from mechplan.construct.step import Kind, Plan
+from mechplan.construct.step import Kind
+from mechplan.model.plans import Plan
 from mechplan.scene import load_scene
 from mechplan.solve import solve
 

@@ -19,8 +19,8 @@ import pytest
 from mechplan.batch.check_class import check_class, variant_of
 from mechplan.check import Options, check, read_submission
 from mechplan.check.report import CARRIED, NEW, OK, REFERENCE, SLIP, WRONG
-from mechplan.construct.step import Plan
 from mechplan.errors import CheckError
+from mechplan.model.plans import Plan
 
 from .sheets import TEMPLATES, PlanSpec, exact_sheet, move, segments, solved, write_dxf
 

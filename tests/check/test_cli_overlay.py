@@ -12,8 +12,8 @@ import pytest
 
 from mechplan.check.report import Tolerance
 from mechplan.cli.check import add_parser, parse_tolerances
-from mechplan.construct.step import Plan
 from mechplan.errors import CheckError, MechplanError
+from mechplan.model.plans import Plan
 
 from .sheets import TEMPLATES, PlanSpec, exact_sheet, move, solved, write_dxf
 

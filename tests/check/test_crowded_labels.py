@@ -10,9 +10,7 @@ import pytest
 from shapely import box, distance, points
 
 from mechplan.check import read_submission
-from mechplan.check.labels import LabelBook
-from mechplan.check.points import find_plans
-from mechplan.construct.step import Plan
+from mechplan.check.labels import label_book
 from mechplan.drafting.fonts import text_width_mm
 from mechplan.drafting.labels import OWN_MARGIN_MM, LabelPlacer
 from mechplan.drafting.primitives import (
@@ -25,7 +23,10 @@ from mechplan.drafting.primitives import (
     Text,
     VAlign,
 )
+from mechplan.model.plans import Plan
 from mechplan.render import write
+from mechplan.submission.drawn_plans import find_plans
+from mechplan.submission.labels import LabelBook
 from mechplan.submission.read import DrawnLine
 from mechplan.submission.sketch import drawn_graph
 
@@ -69,7 +70,7 @@ def _read_right(prims: list, pts: dict[str, tuple[float, float]], book: LabelBoo
 @pytest.fixture(scope="module")
 def book() -> LabelBook:
     scene, sol = solved("four_bar", 60)
-    return LabelBook.build(sol.construction, scene.mechanism)
+    return label_book(sol.construction, scene.mechanism)
 
 
 def _box(t: Text) -> object:

@@ -8,8 +8,8 @@ import pytest
 
 from mechplan.check import Options, check, read_submission
 from mechplan.check.report import OK, REFERENCE
-from mechplan.construct.step import Plan
 from mechplan.errors import CheckError
+from mechplan.model.plans import Plan
 from mechplan.sheet.fonts import text_width_mm
 
 from .sheets import PlanSpec, exact_sheet, solved, write_dxf

@@ -6,8 +6,8 @@ import pytest
 
 from mechplan.check import Options, check
 from mechplan.check.report import CARRIED, NEW, OK, REFERENCE, WRONG
-from mechplan.construct.step import Plan
 from mechplan.dynamics import Loading
+from mechplan.model.plans import Plan
 from mechplan.scene import load_scene
 from mechplan.solve import solve
 

@@ -10,7 +10,7 @@ import pytest
 
 from mechplan.check import Options, Tolerance, check
 from mechplan.check.report import CARRIED, NEW, OK, REFERENCE, SLIP, SWAPPED, WRONG
-from mechplan.construct.step import Plan
+from mechplan.model.plans import Plan
 from mechplan.solve import build, crank_positions
 
 from .sheets import PlanSpec, exact_sheet, move, rotate_about, solved, swap, write_dxf

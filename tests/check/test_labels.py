@@ -4,11 +4,12 @@ from __future__ import annotations
 
 import pytest
 
-from mechplan.check.labels import LabelBook, mu_plan
-from mechplan.construct.step import Plan
+from mechplan.check.labels import label_book
+from mechplan.model.plans import Plan
 from mechplan.scene import load_scene
 from mechplan.submission import notation
 from mechplan.submission.dxf import clean_text
+from mechplan.submission.labels import LabelBook, mu_plan
 from mechplan.submission.written import is_angle_name, label_key
 
 from .sheets import TEMPLATES, solved
@@ -69,7 +70,7 @@ def _reads(book: LabelBook, text: str, plan: Plan) -> set[str]:
 
 def test_book_reads_the_four_notations() -> None:
     scene, sol = solved("four_bar", 60)
-    book = LabelBook.build(sol.construction, scene.mechanism)
+    book = label_book(sol.construction, scene.mechanism)
     A, V = Plan.ACCELERATION, Plan.VELOCITY
     for pole in ("π", "π′", "p′", "p'", "pi", "P"):
         assert _reads(book, pole, A) == {"π"}, pole
@@ -86,7 +87,7 @@ def test_book_reads_the_four_notations() -> None:
 
 def test_book_coriolis_and_coincident_points() -> None:
     scene, sol = solved("shaper", 60)
-    book = LabelBook.build(sol.construction, scene.mechanism)
+    book = label_book(sol.construction, scene.mechanism)
     A, V = Plan.ACCELERATION, Plan.VELOCITY
     assert _reads(book, "k", A) == {"k_A3A2"}          # the only Coriolis point
     assert _reads(book, "kA3A2", A) == {"k_A3A2"}

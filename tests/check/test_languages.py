@@ -16,8 +16,8 @@ from mechplan.check.overlay import marks
 from mechplan.check.report import CARRIED, NEW, SLIP, WRONG
 from mechplan.check.texts import LANGUAGES, T, tr
 from mechplan.cli.check import add_parser
-from mechplan.construct.step import Plan
 from mechplan.i18n import catalogue, num
+from mechplan.model.plans import Plan
 
 from .sheets import TEMPLATES, PlanSpec, exact_sheet, move, solved, write_dxf
 

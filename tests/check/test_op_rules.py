@@ -11,8 +11,8 @@ import pytest
 import mechplan.check
 from mechplan.cli.check import PLAN_NAMES, add_parser, parse_scales
 from mechplan.construct.ops import SPECS, Grade
-from mechplan.construct.step import Plan
 from mechplan.errors import CheckError
+from mechplan.model.plans import Plan
 
 CHECK = Path(mechplan.check.__file__).parent
 

@@ -11,10 +11,11 @@ import pytest
 from mechplan.construct.builder import build_construction
 from mechplan.construct.ops import EVALUATORS, Op
 from mechplan.construct.plans import force
-from mechplan.construct.step import Kind, Plan
+from mechplan.construct.step import Kind
 from mechplan.construct.terms import Relation
 from mechplan.dynamics import Loading
 from mechplan.model.loads import LoadKind, LoadSpec
+from mechplan.model.plans import Plan
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene
 

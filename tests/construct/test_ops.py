@@ -12,10 +12,11 @@ import pytest
 
 from mechplan.construct.builder import build_construction
 from mechplan.construct.ops import FAMILIES, SPECS, Op, OpSpec, Source, registered, spec
-from mechplan.construct.step import Kind, Plan, Role, Step
+from mechplan.construct.step import Kind, Role, Step
 from mechplan.dynamics import Loading
 from mechplan.i18n import LANGUAGES, has_message
 from mechplan.model.loads import LoadKind, LoadSpec
+from mechplan.model.plans import Plan
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene
 

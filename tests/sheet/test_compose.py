@@ -13,7 +13,7 @@ from scenes import ROOT, TEMPLATES
 from shapely import box
 
 from mechplan.cli import main
-from mechplan.construct.step import Plan
+from mechplan.model.plans import Plan
 from mechplan.render import dxf as dxf_backend
 from mechplan.render import mpl as mpl_backend
 from mechplan.render import svg as svg_backend

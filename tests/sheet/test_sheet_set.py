@@ -14,8 +14,8 @@ from shapely import box
 
 from mechplan.cli import main
 from mechplan.construct.protocol import mm
-from mechplan.construct.step import Plan
 from mechplan.i18n import unit
+from mechplan.model.plans import Plan
 from mechplan.scene import load_scene
 from mechplan.sheet.compose import compose, packing_area
 from mechplan.sheet.frame import make_frame

@@ -18,7 +18,7 @@ from typing import Any
 
 from ..errors import CheckError
 from ..scene.document import study_kind
-from ..studies.answers import Keys, keys_for, valid_sets
+from ..studies.answers import Keys, valid_sets
 from ..submission.answer_table import read_answers
 from ..submission.notation import (
     ANSWER_TABLES,
@@ -84,12 +84,12 @@ def maybe_check_answers(scene: Any, submission: Any,
     kind = found[0]
     if kind != "dynamics":
         table = read_answers(submission, is_angle_column)
-        return check_answers(scene, table, keys_for(solve_file(scene)), kind, options or Options())
+        return check_answers(scene, table, solve_file(scene).answers(), kind, options or Options())
     try:                                # a linkage table of the same scene is checked elsewhere
         table = read_answers(submission, is_angle_column)
     except CheckError:
         return None
-    keys = keys_for(solve_file(scene))
+    keys = solve_file(scene).answers()
     read = sum(read_name(i.name, kind, i.section, i.phi_deg is not None, keys) is not None
                for i in table.entries)
     if 2 * read < len(table.entries):

@@ -10,12 +10,13 @@ import numpy as np
 
 from ..construct.graph import Construction, Evaluation
 from ..construct.segments import Segment
-from ..construct.step import Plan
+from ..model.plans import Plan
 from ..scene.spec import Scene
+from ..submission.drawn_plans import DrawnPlan, DrawnSheet
+from ..submission.labels import LabelBook, PlanKey, plan_key
 from ..submission.read import Submission
-from .labels import LabelBook, PlanKey, plan_key, segment_key
+from .labels import segment_key
 from .match import Interpretation
-from .points import DrawnPlan, DrawnSheet
 from .report import (
     NEW,
     SWAPPED,

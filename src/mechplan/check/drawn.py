@@ -10,8 +10,9 @@ import numpy as np
 
 from ..construct.ops import Grade
 from ..construct.ops.spec import point_of
-from ..construct.step import Plan
 from ..geom.vec import rotate
+from ..model.plans import Plan
+from ..submission.drawn_plans import DrawnPlan
 from ..submission.read import Note
 from .context import (
     Ctx,
@@ -22,7 +23,6 @@ from .context import (
     segments_of,
     swaps,
 )
-from .points import DrawnPlan
 from .report import (
     CARRIED,
     NEW,
@@ -88,7 +88,7 @@ def prepare(ctx: Ctx, dp: DrawnPlan, k: int, notes: list[Note]) -> Drawn:
     turn = _turned(ctx, dp, k, anchor)
     if turn and anchor is not None:
         dp = _turn_back(dp, anchor, turn)
-    mu, source = dp.mu, dp.mu_source        # given on the command line or beside the plan
+    mu, source = dp.mu, dp.mu_source        # written beside the plan (none when given otherwise)
     if mu is None:
         mu, source = given_mu(ctx, plan) or (None, source)
     reference = None

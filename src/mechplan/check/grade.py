@@ -18,10 +18,12 @@ import numpy as np
 
 from ..construct.ops import Grade
 from ..construct.ops.spec import point_of
-from ..construct.step import Plan
 from ..errors import CheckError, MechplanError
 from ..geom.sketch import nearest
+from ..model.plans import Plan
 from ..scene.spec import Scene
+from ..submission.drawn_plans import DrawnPlan, DrawnSheet, find_plans
+from ..submission.labels import PlanKey, asks_for_forces
 from ..submission.read import Note, Submission, read_submission
 from ..submission.written import is_angle_name, parse_angle
 from .context import (
@@ -37,9 +39,8 @@ from .context import (
 )
 from .drawn import classify_points, find_swaps, overrides_of, prepare
 from .hints import HintContext, depends_on, rule
-from .labels import LabelBook, PlanKey
+from .labels import label_book
 from .match import QuantityIndex, SegmentIndex, interpret
-from .points import DrawnPlan, DrawnSheet, find_plans
 from .positions import fit_score, grade_per_plan, several_positions
 from .report import (
     ACCUMULATED,
@@ -79,12 +80,13 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
     candidates, phi_source = _angles(scene, sub, options, notes)
     sol = _solve(scene, sub, candidates, notes)
     c, ev = sol.construction, sol.ev
-    book = LabelBook.build(c, scene.mechanism)
+    book = label_book(c, scene.mechanism)
     qi = QuantityIndex(c, scene.mechanism, with_dynamics=True)
     si = SegmentIndex(c, book)
     sheet: DrawnSheet | None = None
     if sub.kind == "dxf":
-        sheet = find_plans(sub, book, options.mu, options.label_distance, options.snap)
+        sheet = find_plans(sub, book, options.label_distance, options.snap,
+                           mu_elsewhere=options.mu)
         notes.extend(sheet.notes)
         interp = interpret(sheet.other_entries, qi, si, from_sheet=True)
     else:
@@ -137,29 +139,11 @@ def _angles(scene: Scene, sub: Submission, options: Options,
     return [float(math.degrees(p)) for p in phi], T("phi.best")
 
 
-def _wants_force(sub: Submission) -> bool:
-    from ..submission.notation import dimension
-    from .labels import mu_plan
-    from .points import _layer_plan
-
-    for e in sub.entries:
-        plan = mu_plan(e.name)
-        if plan is not None or is_angle_name(e.name):
-            if plan is Plan.FORCE:
-                return True
-            continue
-        if dimension(e.name) in ("force", "moment") or (
-                e.section and "force" in e.section.lower()):
-            return True
-    return any(_layer_plan(t.layer) is Plan.FORCE for t in sub.texts) or any(
-        _layer_plan(ln.layer) is Plan.FORCE for ln in sub.lines)
-
-
 def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]) -> Any:
     from ..solve import solve
 
     plans = tuple(dict.fromkeys(("position", "velocity", "acceleration", *scene.plans)))
-    if "force" in plans or _wants_force(sub):
+    if "force" in plans or asks_for_forces(sub):
         from ..dynamics import Loading
 
         loading = Loading.from_scene(scene)

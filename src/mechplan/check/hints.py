@@ -13,8 +13,9 @@ import numpy as np
 from ..construct.graph import Construction
 from ..construct.ops import Grade, Hint, Joined
 from ..construct.ops.spec import hint, measured, point_of
-from ..construct.step import Kind, Plan, Step
+from ..construct.step import Kind, Step
 from ..model.mechanism import Mechanism
+from ..model.plans import Plan
 from .texts import T, Text, join
 
 Value = Callable[[str], np.ndarray]      # the student's own value of a step (leading axis 1)

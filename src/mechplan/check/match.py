@@ -9,10 +9,20 @@ from dataclasses import dataclass, field
 
 from ..construct.graph import Construction
 from ..construct.segments import Segment
-from ..construct.step import Kind, Plan
+from ..construct.step import Kind
 from ..errors import SceneError
 from ..model.mechanism import Mechanism
+from ..model.plans import Plan
 from ..submission import notation
+from ..submission.labels import (
+    LabelBook,
+    PlanKey,
+    feature_votes,
+    mu_plan,
+    plan_key,
+    section_plan,
+    written_mu,
+)
 from ..submission.read import Entry, Note
 from ..submission.written import (
     case_key,
@@ -23,17 +33,7 @@ from ..submission.written import (
     parse_angle,
     parse_value,
 )
-from .labels import (
-    LabelBook,
-    PlanKey,
-    feature_votes,
-    mu_plan,
-    parse_mu,
-    plan_key,
-    segment_key,
-    written_mu,
-)
-from .points import _layer_plan
+from .labels import segment_key
 from .texts import T, join, plan_title
 
 
@@ -212,21 +212,6 @@ class SegmentIndex:
 
 
 # -- entries -----------------------------------------------------------------------------------
-def section_plan(section: str | None) -> PlanKey | None:
-    """The plan named by a table section or a CSV plan column ("velocity", "план ускорений")."""
-    if not section:
-        return None
-    low = section.lower().strip()
-    for word, plan in (("position", Plan.POSITION), ("velocit", Plan.VELOCITY),
-                       ("acceleration", Plan.ACCELERATION), ("force", Plan.FORCE)):
-        if low.startswith(word):
-            group = section.strip()[len(word):].strip() if plan is Plan.FORCE else ""
-            group = group.lstrip("s").strip() if group.startswith("s ") else group
-            return plan_key(plan, group)
-    layer = _layer_plan(section)
-    return None if layer is None else plan_key(layer)
-
-
 def interpret(entries: list[Entry], qi: QuantityIndex, si: SegmentIndex,
               from_sheet: bool) -> Interpretation:
     """Sort entries into scale factors, the crank angle, drawn lengths and physical values."""
@@ -314,16 +299,8 @@ def _table_segment(e: Entry, seg: Segment, key: PlanKey, length_text: str, out: 
         notes.append(Note("error", T("note.length_expected", name=e.name, text=length_text),
                           e.where))
         return
-    row_mu = None
-    if e.mu:
-        try:
-            row_mu = parse_mu(e.mu, seg.plan)
-        except SceneError as exc:
-            notes.append(Note("error", T("note.row_mu_error", mu=e.mu, name=e.name,
-                                         detail=exc.detail), e.where))
-        if row_mu is not None and not (row_mu > 0 and math.isfinite(row_mu)):
-            notes.append(Note("error", T("note.mu_positive", name=e.name, text=e.mu), e.where))
-            row_mu = None           # as a scale factor written on a sheet: not used
+    # a μ written on the row that is no scale factor is not used (as one written on a sheet)
+    row_mu = written_mu(e, e.mu, seg.plan, notes, "error", "note.row_mu_error") if e.mu else None
     if e.value is not None:
         qname = e.quantity or seg.quantity
         q = qi.find(qname) or qi.find(seg.quantity)

@@ -12,8 +12,10 @@ import numpy as np
 from ..construct.graph import Construction
 from ..construct.ops import Grade
 from ..construct.segments import Segment
-from ..construct.step import Kind, Plan
+from ..construct.step import Kind
 from ..errors import MechplanError
+from ..model.plans import Plan
+from ..submission.labels import PlanKey, plan_key
 from ..submission.read import Note
 from ..units import si_unit
 from .context import (
@@ -26,7 +28,7 @@ from .context import (
     segment_finding,
 )
 from .hints import depends_on, text_of
-from .labels import PlanKey, plan_key, segment_key
+from .labels import segment_key
 from .match import GivenValue, Quantity, TableSegment
 from .report import (
     CARRIED,

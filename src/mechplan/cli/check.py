@@ -12,8 +12,8 @@ from typing import Any
 from .. import i18n
 from ..check.report import Tolerance
 from ..check.texts import LANGUAGES, T
-from ..construct.step import Plan
 from ..errors import CheckError, SceneError
+from ..model.plans import Plan
 
 #: a plan by its name or the letter of its scale factor ("velocity", "v")
 PLAN_NAMES = {name: p for p in Plan for name in (p.value, p.scale_key[3:].lower())}
@@ -89,7 +89,7 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
 
 def parse_scales(args: argparse.Namespace) -> dict[Plan, float]:
     """Scale factors given on the command line."""
-    from ..check.labels import parse_mu
+    from ..submission.labels import parse_mu
 
     out: dict[Plan, float] = {}
     for plan in Plan:

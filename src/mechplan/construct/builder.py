@@ -10,11 +10,12 @@ import numpy as np
 
 from ..errors import SceneError
 from ..model.mechanism import GROUND, Guide, Link, Mechanism, Pair, PairKind
+from ..model.plans import Plan
 from ..model.structure import Structure
 from .graph import Construction, DriveMap
 from .ops import OpSpec
 from .segments import Segment, SegmentKind
-from .step import Kind, Plan, Role, Step
+from .step import Kind, Role, Step
 
 
 def vlabel(point: str) -> str:

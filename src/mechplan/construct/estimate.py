@@ -23,9 +23,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geom.vec import Array, norm
+from ..model.plans import Plan
 from .graph import Construction, Evaluation
 from .ops import Op
-from .step import Kind, Plan, Step
+from .step import Kind, Step
 
 #: relative error above which a quantity is flagged (settable per call)
 DEFAULT_TOLERANCE = 1e-6

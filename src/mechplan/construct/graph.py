@@ -8,9 +8,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..geom.vec import Array
+from ..model.plans import Plan
 from .ops import Source
 from .segments import Segment
-from .step import Plan, Step
+from .step import Step
 from .terms import Row
 
 

@@ -13,10 +13,11 @@ import math
 import numpy as np
 
 from ..i18n import message, number, unit
+from ..model.plans import Plan
 from .graph import Construction, Evaluation
 from .ops import SPECS, Drawn, OpSpec, Written
 from .segments import Segment
-from .step import Plan, Step
+from .step import Step
 from .terms import pole_label
 
 #: operation → message id of its sentence (kept for ``check/``, which asks whether one exists)

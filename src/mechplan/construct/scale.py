@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 
-from .step import Plan
+from ..model.plans import Plan
 
 ROUND_MANTISSAS = (1.0, 2.0, 2.5, 4.0, 5.0, 10.0)
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
-from .step import Plan
+from ..model.plans import Plan
 
 
 class SegmentKind(enum.Enum):

@@ -6,41 +6,10 @@ import enum
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from ..model.plans import Plan
+
 if TYPE_CHECKING:
     from .ops.spec import OpSpec
-
-
-class Plan(enum.Enum):
-    """Which plan a step belongs to."""
-
-    POSITION = "position"
-    VELOCITY = "velocity"
-    ACCELERATION = "acceleration"
-    FORCE = "force"
-
-    @property
-    def unit(self) -> str:
-        """SI unit of the plan's vectors: ``m``, ``m/s``, ``m/s²``, ``N``."""
-        return _PLAN_UNITS[self][0]
-
-    @property
-    def scale_key(self) -> str:
-        """Key of the plan's scale factor in scene files and JSON: ``mu_l``, ``mu_v``, …"""
-        return _PLAN_UNITS[self][1]
-
-    @property
-    def scale_symbol(self) -> str:
-        """Symbol of the plan's scale factor on sheets: ``μl``, ``μv``, ``μa``, ``μF``."""
-        return _PLAN_UNITS[self][2]
-
-    @property
-    def scale_unit(self) -> str:
-        """Unit of the scale factor: physical units per paper millimetre (``(m/s)/mm``)."""
-        return f"{self.unit}/mm" if "/" not in self.unit else f"({self.unit})/mm"
-
-
-_PLAN_UNITS = {Plan.POSITION: ("m", "mu_l", "μl"), Plan.VELOCITY: ("m/s", "mu_v", "μv"),
-               Plan.ACCELERATION: ("m/s²", "mu_a", "μa"), Plan.FORCE: ("N", "mu_F", "μF")}
 
 
 class Role(enum.Enum):

@@ -11,12 +11,12 @@ from shapely.prepared import prep
 
 from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
-from ..construct.step import Plan
 from ..drafting.frame import make_frame
 from ..drafting.primitives import Sheet, Text
 from ..errors import DrawingError, MechplanError
 from ..i18n import decimal_mark, message
 from ..model.mechanism import GROUND, PairKind
+from ..model.plans import Plan
 from ..solve import Solution
 from .kinematics_sheet import (
     balancing_diagram,

@@ -10,11 +10,11 @@ from ..construct.graph import Construction, Evaluation
 from ..construct.ops import Drawn, spec
 from ..construct.ops.force import lever_terms
 from ..construct.segments import SegmentKind
-from ..construct.step import Plan
 from ..drafting.labels import LabelPlacer
 from ..drafting.primitives import Arrow, Circle, Line, Role, Text
 from ..i18n import message, unit
 from ..i18n import number as format_number
+from ..model.plans import Plan
 from .panels import LABEL_H, TABLE_H, TITLE_H, Panel, _finite, mu_text
 
 

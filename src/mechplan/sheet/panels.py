@@ -19,7 +19,7 @@ from ..construct.ops import Line as LineStyle
 from ..construct.protocol import mm
 from ..construct.protocol import plan_title as plan_name
 from ..construct.segments import SegmentKind
-from ..construct.step import Kind, Plan
+from ..construct.step import Kind
 from ..construct.terms import pole_label
 from ..drafting.fonts import text_width_mm
 from ..drafting.labels import LabelPlacer
@@ -37,6 +37,7 @@ from ..drafting.primitives import (
 )
 from ..i18n import message, unit
 from ..i18n import number as format_number
+from ..model.plans import Plan
 
 #: line style of an operation's drawing rule → layer role
 ROLES = {LineStyle.DASHED: Role.DASHED, LineStyle.THIN: Role.THIN, LineStyle.OUTLINE: Role.OUTLINE}

@@ -18,8 +18,9 @@ import numpy as np
 
 from ..construct.graph import Construction, Evaluation
 from ..construct.scale import round_scale
-from ..construct.step import Kind, Plan
+from ..construct.step import Kind
 from ..drafting.frame import make_frame
+from ..model.plans import Plan
 from ..scene.spec import Scene
 
 #: scale-factor key of each plan in ``[drawing.scales]``

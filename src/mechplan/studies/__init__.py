@@ -16,6 +16,7 @@ from ..scene.document import parse_toml, read_text, scene_kind
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
+    from .answers import Keys
 
 
 class Study(Protocol):
@@ -32,6 +33,11 @@ class Study(Protocol):
     def sheets(self, size: str | None, standard: str | None, language: str | None,
                name: str) -> list[Sheet]:
         """Return the drawing sheets."""
+        ...
+
+    def answers(self) -> Keys:
+        """Return the study's named answers and the course formulas between them (what an
+        answer table is checked against; a linkage study: those of its ``[dynamics]``)."""
         ...
 
 

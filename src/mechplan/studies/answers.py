@@ -1,6 +1,6 @@
 """The exact answers of a study and the student's own arithmetic between their answers.
 
-``keys_for(study)`` gives a :class:`Keys` of one kind (dynamics, engine, cam, gears): ``exact(name,
+``study.answers()`` gives a :class:`Keys` of one kind (dynamics, engine, cam, gears): ``exact(name,
 phi)`` is the study's value (SI) and the magnitude a diagram of it spans (for the tolerance floor);
 ``own(name, phi, written)`` is what the student's own other answers give by the course's formula
 (δ = (ω_max − ω_min)/ω_m, P = P_г + P_j, T = P·sin(φ+β)/cos β, M = T·R, tan α = s′/(s₀ + s),
@@ -50,13 +50,6 @@ class Keys:
         """What the student's own other answers give for ``name``, or None."""
         fn = self.formulas
         return fn(self, name, phi, w) if fn else None
-
-
-def keys_for(study: Any) -> Keys:
-    """The exact answers of a solved study (a MechanismStudy with dynamics, an engine, a cam or a
-    gear study)."""
-    answers: Keys = study.answers()
-    return answers
 
 
 def span(col: dict[float, float]) -> float:

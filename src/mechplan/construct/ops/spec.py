@@ -26,7 +26,8 @@ from typing import TYPE_CHECKING, Any, Protocol
 import numpy as np
 
 from ...geom.vec import Array, as_complex, from_complex, norm
-from ..step import Plan, Step
+from ...model.plans import Plan
+from ..step import Step
 
 if TYPE_CHECKING:
     from ..graph import Construction

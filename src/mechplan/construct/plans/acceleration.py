@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 from ...model.mechanism import GROUND
+from ...model.plans import Plan
 from ...model.structure import Group, GroupKind
 from ..builder import Builder, alabel
 from ..ops import Op
 from ..segments import SegmentKind
-from ..step import Kind, Plan, Role
+from ..step import Kind, Role
 from ..terms import GIVEN, from_to, parallel, perp
 from .images import (
     absolute,

@@ -22,12 +22,13 @@ action of the single equivalent inertia force, |S K| = |h|).
 from __future__ import annotations
 
 from ...model.mechanism import GROUND, Pair, PairKind
+from ...model.plans import Plan
 from ...model.structure import Group, GroupKind
 from ..builder import Builder
 from ..graph import reaction_key
 from ..ops import Op
 from ..segments import SegmentKind
-from ..step import Kind, Plan, Role
+from ..step import Kind, Role
 from ..terms import UNKNOWN, Row
 from ..terms import parallel as parallel_to
 from ..terms import perp as perp_to

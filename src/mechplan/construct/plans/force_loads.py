@@ -13,9 +13,10 @@ from string import ascii_lowercase
 from typing import Any, Protocol
 
 from ...model.mechanism import GROUND
+from ...model.plans import Plan
 from ..builder import Builder, alabel
 from ..ops import Op, OpSpec
-from ..step import Kind, Plan, Role
+from ..step import Kind, Role
 from ..terms import GIVEN, Direction, Relation, from_to
 from ..terms import parallel as parallel_to
 

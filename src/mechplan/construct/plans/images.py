@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 from ...model.mechanism import GROUND
+from ...model.plans import Plan
 from ..builder import Builder, Image, alabel, vlabel
 from ..ops import Op
 from ..segments import SegmentKind
-from ..step import Kind, Plan, Role
+from ..step import Kind, Role
 
 
 def known_images(b: Builder, link: str, plan: Plan) -> list[tuple[str, str]]:

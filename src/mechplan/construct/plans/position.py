@@ -5,11 +5,12 @@ from __future__ import annotations
 import math
 
 from ...model.mechanism import GROUND, Pair
+from ...model.plans import Plan
 from ...model.structure import Group, GroupKind
 from ..builder import Builder
 from ..ops import Op
 from ..segments import SegmentKind
-from ..step import Kind, Plan, Role
+from ..step import Kind, Role
 
 P = Plan.POSITION
 

@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 from ...model.mechanism import GROUND
+from ...model.plans import Plan
 from ...model.structure import Group, GroupKind
 from ..builder import Builder, Image, vlabel
 from ..ops import Op
 from ..segments import SegmentKind
-from ..step import Kind, Plan, Role
+from ..step import Kind, Role
 from ..terms import GIVEN, parallel, perp
 from .images import (
     absolute,

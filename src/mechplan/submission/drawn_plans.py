@@ -13,26 +13,21 @@ from __future__ import annotations
 import math
 import statistics
 from collections import Counter
+from collections.abc import Collection
 from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from ..construct.step import Plan
 from ..errors import CheckError
 from ..geom.sketch import box_gap
-from ..submission.read import DrawnLine, Entry, Note, Point, SheetText, Submission
-from ..submission.sketch import Graph, drawn_graph, place_labels
-from ..submission.written import label_key, label_names
-from .labels import Candidate, LabelBook, PlanKey, feature_votes, mu_plan, written_mu
-from .texts import T, Text, join, plan_title, with_case
+from ..i18n import Text, join, plan_title, with_case
+from ..model.plans import Plan
+from .labels import Candidate, LabelBook, PlanKey, feature_votes, layer_plan, mu_plan, written_mu
+from .read import DrawnLine, Entry, Note, Point, SheetText, Submission
+from .sketch import Graph, drawn_graph, place_labels
+from .texts import T
+from .written import label_key, label_names
 
-#: words in layer names that say which plan a drawing is (acceleration before velocity: 加速度)
-LAYER_HINTS: tuple[tuple[Plan, tuple[str, ...]], ...] = (
-    (Plan.ACCELERATION, ("acc", "ускор", "gia tốc", "gia toc", "加速度")),
-    (Plan.VELOCITY, ("vel", "скор", "vận tốc", "van toc", "速度")),
-    (Plan.FORCE, ("force", "сил", "lực", "luc", "力")),
-    (Plan.POSITION, ("pos", "mech", "полож", "vị trí", "vi tri", "位置", "机构")),
-)
 #: drawings of one plan whose lines do not join are one plan when they are this close (mm)
 MERGE_GAP_MM = 30.0
 
@@ -96,11 +91,11 @@ class _Label:
     component: int = -1         # the drawing it labels
 
 
-def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | None = None,
-               label_distance: float | None = None, snap: float = 0.2) -> DrawnSheet:
-    """Find the labelled points of a sheet and group them into plans."""
+def find_plans(sub: Submission, book: LabelBook, label_distance: float | None = None,
+               snap: float = 0.2, mu_elsewhere: Collection[Plan] = ()) -> DrawnSheet:
+    """Find the labelled points of a sheet and group them into plans, each with the scale factor
+    written beside it (not for the plans in ``mu_elsewhere``, whose μ is given otherwise)."""
     notes: list[Note] = []
-    mu_given = mu_given or {}
     graph = drawn_graph(sub.lines, sub.markers, snap, sub.heads)
     # scale-factor texts and other "name = value" texts
     scale_entries = [(plan, e) for e in sub.entries if (plan := mu_plan(e.name)) is not None]
@@ -130,7 +125,8 @@ def find_plans(sub: Submission, book: LabelBook, mu_given: dict[Plan, float] | N
         raise _far_labels(sub, labels, label_distance)
     plans = _group(attached, graph, sub, book, scale_entries, notes)
     for dp in plans:
-        _scale_of(dp, scale_entries, mu_given, notes)
+        if dp.plan not in mu_elsewhere:
+            _scale_of(dp, scale_entries, notes)
     return DrawnSheet(plans, notes, label_distance, other)
 
 
@@ -163,14 +159,6 @@ def _attach(labels: list[_Label], graph: Graph, lines: list[DrawnLine], tol: flo
         else:
             notes.append(Note("warning", T("note.label_far", written=lb.written, d=lb.distance,
                                            tol=tol), lb.text.where))
-
-
-def _layer_plan(layer: str) -> Plan | None:
-    low = layer.lower()
-    for plan, words in LAYER_HINTS:
-        if any(w in low for w in words):
-            return plan
-    return None
 
 
 def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
@@ -247,7 +235,7 @@ def _points_of(labels: list[_Label]) -> list[Point]:
 def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLine],
              scale_entries: list[tuple[Plan, Entry]], labelled: set[int]) -> set[Plan]:
     hints: set[Plan] = set()
-    layers = [_layer_plan(ln.layer) for ln in lines] + [_layer_plan(lb.text.layer)
+    layers = [layer_plan(ln.layer) for ln in lines] + [layer_plan(lb.text.layer)
                                                          for lb in members]
     named = Counter(p for p in layers if p is not None)
     for plan, n in named.most_common(1):    # the plan most layers name, if more than half do
@@ -345,12 +333,8 @@ def _pole(dp: DrawnPlan, book: LabelBook, graph: Graph, sub: Submission,
                                 xy=_xy(at), n=best), sub.path))
 
 
-def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], mu_given: dict[Plan, float],
-              notes: list[Note]) -> None:
+def _scale_of(dp: DrawnPlan, scale_entries: list[tuple[Plan, Entry]], notes: list[Note]) -> None:
     plan = dp.plan
-    if plan in mu_given:
-        dp.mu, dp.mu_source = mu_given[plan], T("mu.cli")
-        return
     mine = [e for p, e in scale_entries if p is plan]
     if len(mine) > 1 and dp.points:
         centre = np.mean([p.at for p in dp.points.values()], axis=0)
