@@ -19,10 +19,6 @@ from collections.abc import Iterable
 from importlib import resources
 from typing import Any, Self
 
-from babel import Locale
-from babel.messages.pofile import read_po
-from babel.numbers import format_decimal
-
 LANGUAGES: tuple[str, ...] = ("en", "ru", "vi", "zh")
 """The languages of protocols, sheets and reports (ISO 639-1)."""
 
@@ -38,6 +34,8 @@ def catalogue(language: str) -> dict[str, str]:
     """Return every message of one language: id → text, merged over all its ``.po`` files."""
     if language not in LANGUAGES:
         raise ValueError(f"language must be one of {LANGUAGES} (got {language!r})")
+    from babel.messages.pofile import read_po  # Babel is imported when first needed
+
     messages: dict[str, str] = {}
     folder = resources.files("mechplan") / "locale" / language
     for entry in sorted(folder.iterdir(), key=lambda e: e.name):
@@ -88,7 +86,9 @@ def unit(expression: str, language: str) -> str:
 
 
 @functools.cache
-def _locale(language: str) -> Locale:
+def _locale(language: str) -> Any:
+    from babel import Locale
+
     return Locale.parse(language)
 
 
@@ -111,6 +111,8 @@ def number(value: float, digits: int, language: str) -> str:
 
 def grouped(value: float, digits: int, language: str) -> str:
     """Format a number with the language's decimal mark and digit grouping (Babel)."""
+    from babel.numbers import format_decimal
+
     pattern = "#,##0" + ("." + "0" * digits if digits > 0 else "")
     return str(format_decimal(value, format=pattern, locale=_locale(language)))
 

@@ -9,14 +9,13 @@ from importlib import resources
 from pathlib import Path
 
 from .. import __version__
+from ..drafting.fields import SHEETS, STANDARDS
 from ..errors import MechplanError
+from ..i18n import LANGUAGES
 
 #: exit code of a run that completed but flagged results or left positions out (see README)
 FLAGGED = 3
 
-LANGUAGE_CHOICES = ("en", "ru", "vi", "zh")
-SHEETS = ("A0", "A1", "A2", "A3", "A4")
-STANDARDS = ("iso", "gost", "tcvn")
 
 
 def _positive_int(text: str) -> int:
@@ -162,7 +161,7 @@ def parser() -> argparse.ArgumentParser:
                        help="crank angles φ in degrees")
     where.add_argument("--positions", type=_positive_int, metavar="N",
                        help="N ≥ 1 equal steps from the scene's start")
-    s.add_argument("--lang", choices=LANGUAGE_CHOICES)
+    s.add_argument("--lang", choices=LANGUAGES)
     s.add_argument("--json", action="store_true", help="one JSON document, SI units")
     s.add_argument("--stats", action="store_true", help="print step counts to stderr")
     s.add_argument("--csv", metavar="PATH",
@@ -180,7 +179,7 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("-o", "--output", default=".", help="output folder (default: .)")
     d.add_argument("--format", default="dxf,svg,pdf", help="comma-separated: dxf,svg,pdf,png")
     d.add_argument("--sheet", choices=SHEETS)
-    d.add_argument("--lang", choices=LANGUAGE_CHOICES)
+    d.add_argument("--lang", choices=LANGUAGES)
     d.add_argument("--standard", choices=STANDARDS)
     d.set_defaults(func=_draw)
     from .batch import add_parser as add_batch

@@ -7,8 +7,7 @@ import sys
 from typing import Any
 
 from ..errors import MechplanError
-
-LANGUAGES = ("en", "ru", "vi", "zh")
+from ..i18n import LANGUAGES
 
 
 def _engine_options(p: argparse.ArgumentParser) -> None:

@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import SceneError
+from ..i18n import LANGUAGES
 from ..model.engine import (
     ArticulatedSpec,
     CylinderSpec,
@@ -50,7 +51,7 @@ def parse_engine_scene(text: str, file: str = "<scene>") -> EngineScene:
 
     top = Table(parse_toml(text, file), "", file)
     top.check_keys(TOP_KEYS)
-    language = top.string("language", "en", choices=("en", "ru", "vi", "zh")) or "en"
+    language = top.string("language", "en", choices=LANGUAGES) or "en"
     title = top.string("title", "") or ""
     e = top.table("engine", required=True)
     assert e is not None

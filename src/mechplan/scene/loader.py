@@ -6,7 +6,7 @@ import math
 import tomllib
 from pathlib import Path
 
-from ..drafting.fields import TITLE_BLOCK_FIELDS
+from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
 from ..errors import SceneError, TopologyError
 from ..i18n import LANGUAGES
 from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
@@ -26,8 +26,6 @@ TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly",
             "analysis", "gravity", "loads", "drawing", "title_block", "description", "dynamics")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
-SHEETS = ("A0", "A1", "A2", "A3", "A4")
-STANDARDS = ("iso", "gost", "tcvn")
 SCALE_KEYS = {"mu_l": "mu_length", "mu_v": "mu_velocity", "mu_a": "mu_acceleration",
               "mu_F": "mu_force", "mu_M": "mu_moment"}
 
