@@ -11,6 +11,7 @@ from .construct.terms import pole_label
 from .i18n import message, unit
 from .i18n import number as format_number
 from .model.plans import Plan
+from .scene.spec import PLANS
 from .solve import Solution, segment_table
 from .trust_report import summary_lines
 
@@ -19,8 +20,6 @@ def _w(key: str, lang: str) -> str:
     return message(f"report.{key}", lang)
 
 _KEYS = ("dof", "structure", "cls", "position", "equation", "segments", "results", "crank", "fromx")
-PLANS = {"position": Plan.POSITION, "velocity": Plan.VELOCITY, "acceleration": Plan.ACCELERATION,
-         "force": Plan.FORCE}
 
 def text_report(sol: Solution, lang: str | None = None) -> str:
     """The full report: structure, then per position the plans' protocols, tables and results."""
@@ -32,7 +31,7 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
            f"{w['structure']}: {st.formula}  ({w['cls']} {st.mechanism_class})"]
     for g in st.groups:
         out.append(f"  {g.name}: {g.kind}")
-    plans = tuple(PLANS[p] for p in sol.plans if p in PLANS)
+    plans = tuple(Plan(p) for p in sol.plans if p in PLANS)
     theta = sol.construction.drive.absolute(sol.phi)
     failed = {f.k: f for f in sol.failures}
     for k in range(sol.positions):

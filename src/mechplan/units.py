@@ -35,6 +35,11 @@ DIMENSIONS: dict[str, tuple[str, str]] = {
     "mu_moment": ("[mass]*[length]/[time]**2", "N*m/mm"),
 }
 
+def example(dimension: str) -> str:
+    """How a value of a dimension may be written (``'"0.1 (m/s)/mm"'``), for messages."""
+    return _EXAMPLES[dimension]
+
+
 def si_unit(dimension: str) -> str:
     """The SI unit of a dimension as a reader writes it ("m/s²", "kg·m²"; "" for none)."""
     return DIMENSIONS.get(dimension, ("", ""))[1].replace("**2", "²").replace("*", "·")

@@ -118,9 +118,8 @@ class QuantityIndex:
             if dim is not None:
                 self._put(name, Quantity(name, dim, step.plan, step=sid))
         for seg in c.segments:
-            dim = "force" if seg.plan is Plan.FORCE else notation.dimension(seg.quantity) or {
-                Plan.POSITION: "length", Plan.VELOCITY: "velocity",
-                Plan.ACCELERATION: "acceleration"}[seg.plan]
+            dim = ("force" if seg.plan is Plan.FORCE else notation.dimension(seg.quantity)
+                   or seg.plan.dimension)
             q = Quantity(seg.quantity, dim, seg.plan, segment=seg)
             self._put(seg.quantity, q)
             rev = _reversed_quantity(seg, mech)

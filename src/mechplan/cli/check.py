@@ -14,11 +14,10 @@ from ..check.report import Tolerance
 from ..check.texts import LANGUAGES, T
 from ..errors import CheckError, SceneError
 from ..model.plans import Plan
+from ..units import example
 
 #: a plan by its name or the letter of its scale factor ("velocity", "v")
 PLAN_NAMES = {name: p for p in Plan for name in (p.value, p.scale_key[3:].lower())}
-_MU_EXAMPLES = {Plan.POSITION: "'0.002 m/mm'", Plan.VELOCITY: "'0.1 m/s/mm'",
-                Plan.ACCELERATION: "'2 (m/s^2)/mm'", Plan.FORCE: "'100 N/mm'"}
 TEXT_SUFFIXES = (".txt", ".md", ".log", ".text")
 
 
@@ -39,11 +38,11 @@ def add_parser(subparsers: Any) -> None:
     p.add_argument("--tolerance", action="append", default=[], metavar="[PLAN=]SPEC",
                    help="allowed error: '1mm', '2%%', '1mm,2%%', '1.5deg'; per plan with "
                    "'velocity=0.5mm,1%%' (default ±1 mm or ±2 %%, whichever is larger)")
-    for plan, example in _MU_EXAMPLES.items():
+    for plan in Plan:
         p.add_argument("--" + plan.scale_key.replace("_", "-"), metavar="MU",
                        dest=plan.scale_key.lower(),
                        help=f"scale factor of the {plan.value} plan per mm of paper, e.g. "
-                       f"{example} (overrides the sheet)")
+                       f"{example(plan.scale_dimension)} (overrides the sheet)")
     p.add_argument("--label-distance", type=float, metavar="MM",
                    help="how far (mm) a label may stand from its point (default: twice the "
                    "text height, 3…10 mm)")

@@ -24,10 +24,9 @@ from ..model.dynamics import DynamicsSpec, IndicatorSpec
 from ..model.loads import LoadKind, LoadSpec
 from ..model.mechanism import GROUND
 from ..model.structure import analyse
-from ..scene.spec import Scene
+from ..scene.spec import PLANS, Scene
 from .loading import Loading
 
-PLANS = ("position", "velocity", "acceleration", "force")
 _UNIT_TABLE = ((0.0, 1.0), (2.0 * math.pi, 1.0))
 
 

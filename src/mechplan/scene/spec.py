@@ -6,8 +6,10 @@ from dataclasses import dataclass, field
 
 from ..model.loads import Gravity, LoadSpec, MassSpec
 from ..model.mechanism import Mechanism
+from ..model.plans import Plan
 
-PLANS = ("position", "velocity", "acceleration", "force")
+#: the plans a scene may ask for, by name
+PLANS = tuple(plan.value for plan in Plan)
 
 
 @dataclass(frozen=True, slots=True)

@@ -29,7 +29,6 @@ from .layout import drawing_area, framed
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
-    KEYS,
     MAX_DRAWN_POSITIONS,
     Room,
     chosen_positions,
@@ -268,9 +267,6 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
             rest = [p for p, o in zip(rest, offsets) if o is None]
     sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)
     return Composition(sheets, groups, mu, size, standard)
-
-
-FIXED = KEYS
 
 
 @dataclasses.dataclass(frozen=True)

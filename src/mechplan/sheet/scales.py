@@ -23,9 +23,6 @@ from ..drafting.frame import make_frame
 from ..model.plans import Plan
 from ..scene.spec import Scene
 
-#: scale-factor key of each plan in ``[drawing.scales]``
-KEYS = {Plan.POSITION: "mu_l", Plan.VELOCITY: "mu_v", Plan.ACCELERATION: "mu_a",
-        Plan.FORCE: "mu_F"}
 #: default number of positions whose acceleration (and force) plans are drawn, angles given
 MAX_PLAN_POSITIONS = 2
 #: up to this many positions are drawn on the position plan (beyond: trajectories only)
@@ -150,9 +147,9 @@ def decide_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[st
         out[plan] = _fit(extent, side, side)
     # the scene's own values hold on its own sheet; on another sheet they shrink if they must
     own = size == scene.drawing.sheet and standard == scene.drawing.standard
-    for plan, key in KEYS.items():
-        if key in scene.drawing.scales:
-            fixed = scene.drawing.scales[key]
+    for plan in Plan:
+        if plan.scale_key in scene.drawing.scales:
+            fixed = scene.drawing.scales[plan.scale_key]
             out[plan] = fixed if own else max(fixed, out[plan])
     return out
 
@@ -162,5 +159,5 @@ def drawable(c: Construction, ev: Evaluation, plan: Plan) -> bool:
     return any(s.plan is plan and s.start in ev.values for s in c.segments)
 
 
-__all__ = ["KEYS", "Room", "chosen_positions", "decide_scales", "drawable", "room",
+__all__ = ["Room", "chosen_positions", "decide_scales", "drawable", "room",
            "velocity_positions"]
