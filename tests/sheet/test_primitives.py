@@ -122,4 +122,3 @@ def test_block_and_sheet_validation() -> None:
         sheet.width_mm = 1  # type: ignore[misc]
     with pytest.raises(TypeError):
         sheet.attributes["title"] = "x"  # type: ignore[index]
-    assert len(sheet.with_primitives([Line((0, 0), (2, 2))]).primitives) == 3

@@ -8,7 +8,7 @@ ISO 128 line width and line type, so a backend never decides how a line looks.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, field
 from enum import Enum
 from types import MappingProxyType
@@ -457,14 +457,3 @@ class Sheet:
                 yield from p.primitives
             else:
                 yield p
-
-    def with_primitives(self, extra: Iterable[Primitive]) -> Sheet:
-        """Return a copy with `extra` primitives appended."""
-        return Sheet(
-            self.width_mm,
-            self.height_mm,
-            self.primitives + tuple(extra),
-            dict(self.attributes),
-            self.language,
-            self.name,
-        )

@@ -114,7 +114,3 @@ class Mechanism:
     def pairs_of(self, link: str) -> list[Pair]:
         """Return the pairs touching a link."""
         return [p for p in self.pairs if p.joins(link)]
-
-    def links_at(self, point: str) -> list[str]:
-        """Return the links carrying a named point."""
-        return [k for k, link in self.links.items() if point in link.points]

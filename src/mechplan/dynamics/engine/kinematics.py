@@ -54,10 +54,6 @@ class SliderCrank:
         """λ-series travel R[(1 − cos φ) + (λ/4)(1 − cos 2φ)]."""
         return self.R * ((1.0 - np.cos(phi)) + self.lam / 4.0 * (1.0 - np.cos(2.0 * phi)))
 
-    def v_series(self, phi: Array, omega: float) -> Array:
-        """λ-series velocity Rω(sin φ + (λ/2) sin 2φ)."""
-        return self.R * omega * (np.sin(phi) + self.lam / 2.0 * np.sin(2.0 * phi))
-
     def a_series(self, phi: Array, omega: float) -> Array:
         """λ-series acceleration Rω²(cos φ + λ cos 2φ)."""
         return self.R * omega ** 2 * (np.cos(phi) + self.lam * np.cos(2.0 * phi))
