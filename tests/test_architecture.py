@@ -187,3 +187,48 @@ def test_modules_are_small(package):
     for path in sorted((SRC / package).rglob("*.py")):
         lines = path.read_text(encoding="utf-8").count("\n")
         assert lines <= 500, f"{path.relative_to(SRC)} has {lines} lines"
+
+
+# -- named inputs ---------------------------------------------------------------------------------
+def _iterates_inputs(node: ast.expr) -> bool:
+    """A comprehension or generator over ``….inputs`` (``(g.pt(i) for i in s.inputs)``)."""
+    return isinstance(node, ast.GeneratorExp | ast.ListComp) and any(
+        isinstance(gen.iter, ast.Attribute) and gen.iter.attr == "inputs"
+        for gen in node.generators)
+
+
+def _positional_inputs(tree: ast.AST) -> list[int]:
+    """Lines that read a step's inputs by position: ``x.inputs[0]``, ``x.inputs[2:]``, or
+    ``a, b = x.inputs`` (also from a generator over them)."""
+    lines = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Attribute) \
+                and node.value.attr == "inputs":
+            index = node.slice
+            if isinstance(index, ast.UnaryOp):  # inputs[-1]
+                index = index.operand
+            if isinstance(index, ast.Constant | ast.Slice):
+                lines.append(node.lineno)
+        elif isinstance(node, ast.Assign) and any(isinstance(t, ast.Tuple) for t in node.targets):
+            value = node.value
+            if isinstance(value, ast.Attribute) and value.attr == "inputs" \
+                    or _iterates_inputs(value):
+                lines.append(node.lineno)
+    return sorted(lines)
+
+
+def test_the_positional_input_finder_finds_them():
+    source = ("a, b = step.inputs\n*_, x = s.inputs\ny = s.inputs[0]\nz = s.inputs[-1]\n"
+              "w = s.inputs[2:]\n(p, q), r = (g.pt(i) for i in s.inputs)\n"
+              "ok = [v[i] for i in step.inputs]\nfirst, *rest = dict.fromkeys(step.inputs)\n")
+    assert _positional_inputs(ast.parse(source)) == [1, 2, 3, 4, 5, 6]
+
+
+def test_inputs_are_read_by_name():
+    """An operation's inputs are read by name (``step.input("start")``, ``step.rest()``), never by
+    position; construct/step.py defines those two by the positions the spec gives."""
+    allowed = SRC / "construct" / "step.py"
+    found = [f"{path.relative_to(SRC)}:{line}" for path in sorted(SRC.rglob("*.py"))
+             if path != allowed
+             for line in _positional_inputs(ast.parse(path.read_text(encoding="utf-8")))]
+    assert not found, "inputs read by position: " + ", ".join(found)

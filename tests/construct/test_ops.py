@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from mechplan.construct.builder import build_construction
-from mechplan.construct.ops import FAMILIES, SPECS, Op, OpSpec, Source, registered, spec
+from mechplan.construct.ops import FAMILIES, SPECS, Drawn, Op, OpSpec, Source, registered, spec
 from mechplan.construct.step import Kind, Role, Step
 from mechplan.dynamics import Loading
 from mechplan.i18n import LANGUAGES, has_message
@@ -71,6 +71,13 @@ def test_levers_name_two_point_inputs():
     assert {s for s in SPECS.values() if s.rate_of} == {Op.OMEGA, Op.EPSILON}
     with pytest.raises(KeyError, match="has no input"):
         OpSpec("toy", SPECS["omega"].evaluate, None, lever=("p", "nowhere"))
+
+
+def test_construction_lines_name_the_point_they_are_drawn_through():
+    lines = {s for s in SPECS.values() if s.draw is Drawn.CONSTRUCTION_LINE}
+    assert {s for s in SPECS.values() if s.through} == lines
+    assert all(s.through in s.inputs for s in lines)
+    assert Op.LOCUS_LINE.through == "base" and Op.LINE_PERP.through == "through"
 
 
 def test_inputs_are_the_parameters_of_the_evaluation():

@@ -157,14 +157,14 @@ def _pole(g: ScalarGen, s: Step, n: str) -> None:
 
 
 def _polar(g: ScalarGen, s: Step, n: str) -> None:
-    (cx, cy), a = g.pt(s.inputs[0]), g.name(s.inputs[1])
+    (cx, cy), a = g.pt(s.input("centre")), g.name(s.input("angle"))
     length, offset = literal(s.param("length")), literal(s.param("offset", 0.0))
     g.emit(f"_a = {a} + {offset}", f"{n}x = {cx} + {length} * math.cos(_a)",
            f"{n}y = {cy} + {length} * math.sin(_a)")
 
 
 def _angle_of(g: ScalarGen, s: Step, n: str) -> None:
-    (px, py), (qx, qy) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    (px, py), (qx, qy) = g.pt(s.input("start")), g.pt(s.input("end"))
     minus = literal(s.param("minus", 0.0))
     g.emit(f"_ay{n} = {qy} - {py}", f"_ax{n} = {qx} - {px}",
            f"{n} = math.atan2(_ay{n}, _ax{n}) - {minus}")
@@ -172,11 +172,11 @@ def _angle_of(g: ScalarGen, s: Step, n: str) -> None:
 
 
 def _angle_plus(g: ScalarGen, s: Step, n: str) -> None:
-    g.emit(f"{n} = {g.name(s.inputs[0])} + {literal(s.param('delta'))}")
+    g.emit(f"{n} = {g.name(s.input('angle'))} + {literal(s.param('delta'))}")
 
 
 def _circle_circle(g: ScalarGen, s: Step, n: str) -> str:
-    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    (ax, ay), (bx, by) = g.pt(s.input("centre1")), g.pt(s.input("centre2"))
     r1, r2, sigma = literal(s.param("r1")), literal(s.param("r2")), literal(s.param("sigma"))
     g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", "_d = _hyp(_dx, _dy)",
            f"_gap = max(_d - ({r1} + {r2}), abs({r1} - {r2}) - _d)",
@@ -204,14 +204,14 @@ def _circle_line_core(g: ScalarGen, n: str, cx: str, cy: str, r: str, px: str, p
 
 
 def _circle_line(g: ScalarGen, s: Step, n: str) -> str:
-    (cx, cy), (px, py, ux, uy) = g.pt(s.inputs[0]), g.line(s.inputs[1])
+    (cx, cy), (px, py, ux, uy) = g.pt(s.input("centre")), g.line(s.input("guide"))
     _circle_line_core(g, n, cx, cy, literal(s.param("r")), px, py, ux, uy,
                       literal(s.param("sigma")))
     return f"sn{n}"
 
 
 def _line_line(g: ScalarGen, s: Step, n: str) -> str:
-    (ax, ay, au, av), (bx, by, bu, bv) = g.line(s.inputs[0]), g.line(s.inputs[1])
+    (ax, ay, au, av), (bx, by, bu, bv) = g.line(s.input("line1")), g.line(s.input("line2"))
     g.emit(f"_s = {au} * {bv} - {av} * {bu}",
            f"_t = _div_nz(({bx} - {ax}) * {bv} - ({by} - {ay}) * {bu}, _s)",
            f"{n}x = {ax} + _t * {au}", f"{n}y = {ay} + _t * {av}", f"sn{n} = abs(_s)",
@@ -220,17 +220,18 @@ def _line_line(g: ScalarGen, s: Step, n: str) -> str:
 
 
 def _locus_line(g: ScalarGen, s: Step, n: str) -> None:
-    (bx, by) = g.pt(s.inputs[0])
+    (bx, by) = g.pt(s.input("base"))
+    angle = s.rest()   # none: a guide of the frame
     ox, oy = (literal(v) for v in s.param("offset"))
     dir_angle = float(s.param("dir_angle"))
-    if len(s.inputs) == 1:
+    if not angle:
         # rotate(offset, 0) and direction(0 + dir_angle), as the vectorised path computes them
         g.emit(f"{n}px = {bx} + (1.0 * {ox} - 0.0 * {oy})",
                f"{n}py = {by} + (0.0 * {ox} + 1.0 * {oy})",
                f"{n}ux = math.cos(0.0 + {literal(dir_angle)})",
                f"{n}uy = math.sin(0.0 + {literal(dir_angle)})")
         return
-    th = g.name(s.inputs[1])
+    th = g.name(angle[0])
     g.emit(f"_c = math.cos({th})", f"_s = math.sin({th})",
            f"{n}px = {bx} + (_c * {ox} - _s * {oy})", f"{n}py = {by} + (_s * {ox} + _c * {oy})")
     if dir_angle == 0.0:
@@ -241,7 +242,7 @@ def _locus_line(g: ScalarGen, s: Step, n: str) -> None:
 
 
 def _carrier_angle(g: ScalarGen, s: Step, n: str) -> str:
-    (cx, cy), (px, py) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    (cx, cy), (px, py) = g.pt(s.input("pivot")), g.pt(s.input("slider"))
     qx, qy = (literal(v) for v in s.param("q0"))
     g.emit(f"_rx = {px} - {cx}", f"_ry = {py} - {cy}", "_rad = _hyp(_rx, _ry)",
            f"_dux = math.cos({literal(s.param('dir_angle'))})",
@@ -253,22 +254,24 @@ def _carrier_angle(g: ScalarGen, s: Step, n: str) -> str:
 
 
 def _place(g: ScalarGen, s: Step, n: str) -> None:
-    (ox, oy), a = g.pt(s.inputs[0]), g.name(s.inputs[1])
+    (ox, oy), a = g.pt(s.input("origin")), g.name(s.input("angle"))
     vx, vy = (literal(v) for v in s.param("offset"))
     g.emit(f"_c = math.cos({a})", f"_s = math.sin({a})",
            f"{n}x = {ox} + (_c * {vx} - _s * {vy})", f"{n}y = {oy} + (_s * {vx} + _c * {vy})")
 
 
 def _similar_position(g: ScalarGen, s: Step, n: str) -> None:
-    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    (ax, ay), (bx, by) = g.pt(s.input("a")), g.pt(s.input("b"))
     z = complex(s.param("z"))
     g.emit(f"_z = complex({ax}, {ay}) + (complex({bx}, {by}) - complex({ax}, {ay})) * "
            f"complex({literal(z.real)}, {literal(z.imag)})", f"{n}x = _z.real", f"{n}y = _z.imag")
 
 
 def _similar_image(g: ScalarGen, s: Step, n: str) -> None:
-    (ax, ay), (bx, by), (pax, pay), (pbx, pby), (pxx, pxy) = (g.pt(i) for i in s.inputs)
-    ratio = g.once(("ratio", *s.inputs[2:]), lambda r: (
+    (ax, ay), (bx, by) = g.pt(s.input("a")), g.pt(s.input("b"))
+    pa, pb, px = s.input("pa"), s.input("pb"), s.input("px")
+    (pax, pay), (pbx, pby), (pxx, pxy) = g.pt(pa), g.pt(pb), g.pt(px)
+    ratio = g.once(("ratio", pa, pb, px), lambda r: (
         f"_q = complex({pbx}, {pby}) - complex({pax}, {pay})",
         f"{r} = _cdiv(complex({pxx}, {pxy}) - complex({pax}, {pay}), _q)"))
     g.emit(f"_z = complex({ax}, {ay}) + (complex({bx}, {by}) - complex({ax}, {ay})) * {ratio}",
@@ -276,71 +279,79 @@ def _similar_image(g: ScalarGen, s: Step, n: str) -> None:
 
 
 def _rigid_velocity(g: ScalarGen, s: Step, n: str) -> None:
-    (ox, oy), w, (pox, poy), (pxx, pxy) = (g.pt(s.inputs[0]), g.name(s.inputs[1]),
-                                           g.pt(s.inputs[2]), g.pt(s.inputs[3]))
+    (ox, oy), w = g.pt(s.input("origin")), g.name(s.input("omega"))
+    (pox, poy), (pxx, pxy) = g.pt(s.input("p_origin")), g.pt(s.input("p_point"))
     g.emit(f"{n}x = {ox} + {w} * (-({pxy} - {poy}))", f"{n}y = {oy} + {w} * ({pxx} - {pox})")
 
 
 def _rigid_acceleration(g: ScalarGen, s: Step, n: str) -> None:
-    (ox, oy), w, e, (pox, poy), (pxx, pxy) = (g.pt(s.inputs[0]), g.name(s.inputs[1]),
-                                              g.name(s.inputs[2]), g.pt(s.inputs[3]),
-                                              g.pt(s.inputs[4]))
+    (ox, oy), w, e = g.pt(s.input("origin")), g.name(s.input("omega")), g.name(s.input("eps"))
+    (pox, poy), (pxx, pxy) = g.pt(s.input("p_origin")), g.pt(s.input("p_point"))
     g.emit(f"_rx = {pxx} - {pox}", f"_ry = {pxy} - {poy}", f"_w2 = {w} * {w}",
            f"{n}x = {ox} + {e} * (-_ry) - _w2 * _rx", f"{n}y = {oy} + {e} * _rx - _w2 * _ry")
 
 
 def _drive_velocity(g: ScalarGen, s: Step, n: str) -> None:
-    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    (ax, ay), (bx, by) = g.pt(s.input("pivot")), g.pt(s.input("tip"))
     w = literal(s.param("omega"))
     g.emit(f"{n}x = {w} * (-({by} - {ay}))", f"{n}y = {w} * ({bx} - {ax})")
 
 
 def _drive_acceleration(g: ScalarGen, s: Step, n: str) -> None:
-    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    (ax, ay), (bx, by) = g.pt(s.input("pivot")), g.pt(s.input("tip"))
     w, e = literal(s.param("omega")), literal(s.param("epsilon", 0.0))
     g.emit(f"_rx = {bx} - {ax}", f"_ry = {by} - {ay}",
            f"{n}x = {e} * (-_ry) - {w} * {w} * _rx", f"{n}y = {e} * _rx - {w} * {w} * _ry")
 
 
 def _line_perp(g: ScalarGen, s: Step, n: str) -> None:
-    (tx, ty), (px, py), (qx, qy) = (g.pt(i) for i in s.inputs)
-    unit = g.once(("perp", *s.inputs[1:]), lambda u: (
+    p, q = s.input("p"), s.input("q")
+    (tx, ty), (px, py), (qx, qy) = g.pt(s.input("through")), g.pt(p), g.pt(q)
+    unit = g.once(("perp", p, q), lambda u: (
         f"_vx = -({qy} - {py})", f"_vy = {qx} - {px}", "_nn = _hyp(_vx, _vy)",
         f"{u}x = _div(_vx, _nn)", f"{u}y = _div(_vy, _nn)"))
     g.emit(f"{n}px = {tx}", f"{n}py = {ty}", f"{n}ux = {unit}x", f"{n}uy = {unit}y")
 
 
 def _line_parallel(g: ScalarGen, s: Step, n: str) -> None:
-    (tx, ty), (_, _, ux, uy) = g.pt(s.inputs[0]), g.line(s.inputs[1])
+    (tx, ty), (_, _, ux, uy) = g.pt(s.input("through")), g.line(s.input("guide"))
     g.emit(f"{n}px = {tx}", f"{n}py = {ty}", f"{n}ux = {ux}", f"{n}uy = {uy}")
 
 
-def _omega(g: ScalarGen, s: Step, n: str) -> None:
-    (px, py), (qx, qy), (ax, ay), (bx, by) = (g.pt(i) for i in s.inputs)
+def _rate(g: ScalarGen, s: Step, n: str, first: str, second: str) -> None:
+    """A link's ω or ε: (r × (second − first)) / r·r, r = q − p (the inputs named so)."""
+    p, q = s.input("p"), s.input("q")
+    (px, py), (qx, qy) = g.pt(p), g.pt(q)
+    (ax, ay), (bx, by) = g.pt(s.input(first)), g.pt(s.input(second))
     g.emit(f"_rx = {qx} - {px}", f"_ry = {qy} - {py}")
-    rr = g.once(("rr", *s.inputs[:2]), lambda r: (f"{r} = _rx * _rx + _ry * _ry",))
+    rr = g.once(("rr", p, q), lambda r: (f"{r} = _rx * _rx + _ry * _ry",))
     g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", f"{n} = _div(_rx * _dy - _ry * _dx, {rr})")
 
 
-_epsilon = _omega      # ε = (r × (a_q − n)) / r·r has the form of ω = (r × (v_q − v_p)) / r·r
+def _omega(g: ScalarGen, s: Step, n: str) -> None:
+    _rate(g, s, n, "vp", "vq")          # ω = (r × (v_q − v_p)) / r·r
+
+
+def _epsilon(g: ScalarGen, s: Step, n: str) -> None:
+    _rate(g, s, n, "normal_end", "aq")  # ε = (r × (a_q − n)) / r·r
 
 
 def _normal(g: ScalarGen, s: Step, n: str) -> None:
-    (ax, ay), w, (px, py), (qx, qy) = (g.pt(s.inputs[0]), g.name(s.inputs[1]), g.pt(s.inputs[2]),
-                                       g.pt(s.inputs[3]))
+    (ax, ay), w = g.pt(s.input("start")), g.name(s.input("omega"))
+    (px, py), (qx, qy) = g.pt(s.input("p")), g.pt(s.input("q"))
     g.emit(f"_w2 = {w} * {w}", f"{n}x = {ax} - _w2 * ({qx} - {px})",
            f"{n}y = {ay} - _w2 * ({qy} - {py})")
 
 
 def _coriolis(g: ScalarGen, s: Step, n: str) -> None:
-    (sx, sy), w, (fx, fy), (tx, ty) = (g.pt(s.inputs[0]), g.name(s.inputs[1]), g.pt(s.inputs[2]),
-                                       g.pt(s.inputs[3]))
+    (sx, sy), w = g.pt(s.input("start")), g.name(s.input("omega"))
+    (fx, fy), (tx, ty) = g.pt(s.input("v_from")), g.pt(s.input("v_to"))
     g.emit(f"_k = 2.0 * {w}", f"{n}x = {sx} + _k * (-({ty} - {fy}))",
            f"{n}y = {sy} + _k * ({tx} - {fx})")
 
 
 def _copy(g: ScalarGen, s: Step, n: str) -> None:
-    src = s.inputs[0]
+    src = s.input("value")
     kind = s.kind
     if kind is Kind.POINT:
         x, y = g.pt(src)
@@ -350,7 +361,7 @@ def _copy(g: ScalarGen, s: Step, n: str) -> None:
 
 
 def _difference(g: ScalarGen, s: Step, n: str) -> None:
-    (ax, ay), (bx, by) = g.pt(s.inputs[0]), g.pt(s.inputs[1])
+    (ax, ay), (bx, by) = g.pt(s.input("start")), g.pt(s.input("end"))
     g.emit(f"{n}x = {bx} - {ax}", f"{n}y = {by} - {ay}")
 
 

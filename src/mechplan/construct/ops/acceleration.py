@@ -74,7 +74,8 @@ def drive_acceleration_hint(step: Step, view: HintView, at: Array, tol_mm: float
 def normal_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
     """The normal component: from the image of P, ∥ QP, of length ω²·l_PQ (with the student's ω)."""
     c, plan = view.c, step.plan
-    ap, omega_, p, q = step.inputs
+    ap, omega_ = step.input("start"), step.input("omega")
+    p, q = step.input("p"), step.input("q")
     own_w = float(np.asarray(view.own(omega_)).reshape(-1)[0])
     exact_w = float(np.asarray(view.exact(omega_)).reshape(-1)[0])
     length = float(np.hypot(*(point_of(view.exact(q)) - point_of(view.exact(p)))))
@@ -90,7 +91,7 @@ def normal_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
 
 def coriolis_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
     """The Coriolis component: 2ω × v_rel laid off from an image."""
-    start, omega_, _, _ = step.inputs
+    start, omega_ = step.input("start"), step.input("omega")
     length = view.mm(step.plan, float(np.hypot(*(point_of(view.exact(step.id))
                                                  - point_of(view.exact(start))))))
     return measured(hint("rule.coriolis", label=view.labels(step.id), w=view.c[omega_].label,
@@ -99,9 +100,8 @@ def coriolis_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
 
 def epsilon_value_hint(step: Step, c: Construction) -> Hint:
     """A wrong ε: the tangential component over the link's length."""
-    p, q, n, aq = step.inputs
-    return hint("hint.epsilon", label=step.label, p=c[p].label, q=c[q].label, n=c[n].label,
-                a=c[aq].label)
+    p, q, n, aq = (c[step.input(name)].label for name in ("p", "q", "normal_end", "aq"))
+    return hint("hint.epsilon", label=step.label, p=p, q=q, n=n, a=aq)
 
 
 # -- the operations -------------------------------------------------------------------------------

@@ -195,7 +195,7 @@ def difference(step: Step, start: Array, end: Array) -> Result:
 def force_sum_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
     """The next vertex: the previous one plus the force, to scale (or the force left out)."""
     plan, lbl = step.plan, view.labels
-    prev, force = step.inputs[0], step.inputs[1]
+    prev, force = step.input("previous"), step.input("force")
     exact_len = view.mm(plan, float(np.hypot(*point_of(view.exact(force)))))
     drawn = view.mm(plan, float(np.hypot(*(at - point_of(view.own(prev))))))
     name = view.c[force].label
@@ -234,7 +234,7 @@ MOMENT_ARM_TANGENTIAL = OpSpec("moment_arm_tangential", moment_arm_tangential,
 FORCE_SUM = OpSpec("force_sum", force_sum, "protocol.op.force_sum", Drawn.VERTEX, Line.THIN,
                    Grade.POINT, hint_rule=force_sum_hint)
 FORCE_LINE = OpSpec("force_line", force_line, "protocol.op.force_line", Drawn.CONSTRUCTION_LINE,
-                    Line.DASHED, Grade.DIRECTION, lever=direction_points)
+                    Line.DASHED, Grade.DIRECTION, lever=direction_points, through="through")
 FORCE_CLOSE = OpSpec("force_close", force_close, "protocol.op.force_close", Drawn.MEET,
                      Line.NONE, Grade.MEET, written=Written.MEET, hint_rule=force_close_hint)
 DIFFERENCE = OpSpec("difference", difference, "protocol.op.difference", Drawn.VECTOR,

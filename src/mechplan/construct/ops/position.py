@@ -145,8 +145,8 @@ def line_line_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint
 
 def meet_hint(step: Step, c: Construction) -> Hint:
     """A wrong meet: which two lines it lies on."""
-    return hint("hint.meet", label=step.label, a=c[step.inputs[0]].label,
-                b=c[step.inputs[1]].label)
+    return hint("hint.meet", label=step.label, a=c[step.input("line1")].label,
+                b=c[step.input("line2")].label)
 
 
 # -- the operations -------------------------------------------------------------------------------
@@ -167,7 +167,7 @@ CIRCLE_LINE = OpSpec("circle_line", circle_line, "protocol.op.circle_line", Draw
 LINE_LINE = OpSpec("line_line", line_line, "protocol.op.line_line", Drawn.MEET, Line.NONE,
                    Grade.MEET, written=Written.MEET, hint=meet_hint, hint_rule=line_line_hint)
 LOCUS_LINE = OpSpec("locus_line", locus_line, "protocol.op.locus_line", Drawn.CONSTRUCTION_LINE,
-                    Line.DASHED, Grade.DIRECTION)
+                    Line.DASHED, Grade.DIRECTION, through="base")
 CARRIER_ANGLE = OpSpec("carrier_angle", carrier_angle, "protocol.op.carrier_angle",
                        written=Written.ANGLE, lever=("pivot", "slider"))
 PLACE = OpSpec("place", place, "protocol.op.place", Drawn.POINT, Line.OUTLINE, Grade.POINT,

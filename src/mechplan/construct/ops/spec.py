@@ -11,7 +11,8 @@ the rest); its protocol sentence is the catalogue message ``message`` (``locale/
 error estimate), ``rate_of`` for a link's ω or ε the two images of the relative vector it is read
 from; ``grade``, ``hint`` and ``hint_rule`` how the checker grades a submitted point or
 line of it and what it tells the student (as :class:`Hint` message ids of ``locale/*/check.po``),
-``alias`` the letter by which textbooks also name its points (the checker reads those names).
+``alias`` the letter by which textbooks also name its points (the checker reads those names),
+``through`` for a construction line the input point it is drawn through.
 """
 
 from __future__ import annotations
@@ -188,6 +189,8 @@ class OpSpec:
     value_hint: StepHint | None = None   # the hint for a wrong written value (None: generic)
     hint_rule: HintRule | None = None    # how a submitted point breaks its rule (None: generic)
     alias: str | None = None             # the letter of its points' textbook names (n_XY, n2, n)
+    through: str | None = None           # a construction line: the input point it is drawn
+    #                                      through (a meet's hint names the line by it)
     inputs: tuple[str, ...] = field(init=False)
     rest: str | None = field(init=False)  # name of a variable tail of inputs, if any
     #: its evaluator takes ``shared=``: a dict of one evaluation, for a part several steps
@@ -214,6 +217,8 @@ class OpSpec:
             if isinstance(pair, tuple):
                 for name in pair:
                     self.index(name)
+        if self.through is not None:
+            self.index(self.through)
 
     @property
     def name(self) -> str:
@@ -241,7 +246,7 @@ class OpSpec:
             return None
         if isinstance(self.lever, tuple):
             first, second = self.lever
-            return step.inputs[self.index(first)], step.inputs[self.index(second)]
+            return step.input(first), step.input(second)
         return self.lever(step)
 
 
@@ -278,7 +283,8 @@ def on_lines(step: Step, view: HintView, at: Array, tol_mm: float) -> Joined:
     parts = []
     for lid in step.inputs:
         line_step = c[lid]
-        through = view.labels(line_step.inputs[0]) if line_step.inputs else "?"
+        point = line_step.op.through
+        through = view.labels(line_step.input(point)) if point else "?"
         d = view.mm(plan, dist_to_line(at, view.own(lid)))
         where = hint("rule.on_it") if d <= tol_mm else hint("rule.off_by", d=d)
         parts.append(hint("rule.on_line", through=through, line=line_step.label, where=where))
@@ -286,9 +292,10 @@ def on_lines(step: Step, view: HintView, at: Array, tol_mm: float) -> Joined:
 
 
 def drive_hint(step: Step, view: HintView, at: Array, how: str) -> Hint:
-    """The driving vector: its length and direction against the submitted ones."""
+    """The driving vector (inputs ``pivot``, ``tip``): its length and direction against the
+    submitted ones."""
     c, plan = view.c, step.plan
-    pivot, tip = c[step.inputs[0]].label, c[step.inputs[1]].label
+    pivot, tip = c[step.input("pivot")].label, c[step.input("tip")].label
     exact = point_of(view.exact(step.id))
     length = view.mm(plan, float(np.hypot(*exact)))
     drawn = view.mm(plan, float(np.hypot(*at)))
@@ -299,9 +306,11 @@ def drive_hint(step: Step, view: HintView, at: Array, how: str) -> Hint:
 
 
 def rigid_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
-    """A point of a rigid link from a known image: v_X = v_O + ω × OX (a_X likewise)."""
+    """A point of a rigid link from a known image: v_X = v_O + ω × OX (a_X likewise); inputs
+    ``origin`` (the image of O) and ``p_point`` (X)."""
     return measured(hint("rule.rigid", label=view.labels(step.id),
-                         X=view.c[step.inputs[-1]].label, o=view.labels(step.inputs[0])))
+                         X=view.c[step.input("p_point")].label,
+                         o=view.labels(step.input("origin"))))
 
 
 # -- helpers shared by the evaluators -----------------------------------------------------------

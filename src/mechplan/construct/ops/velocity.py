@@ -115,7 +115,8 @@ def similar_image_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> 
     """The similarity theorem: x on a, b as X on A, B (on the line ab when A, B, X are in line)."""
     c, plan, lbl = view.c, step.plan, view.labels
     label = lbl(step.id)
-    ia, ib, pa, pb, px = step.inputs
+    ia, ib = step.input("a"), step.input("b")
+    pa, pb, px = step.input("pa"), step.input("pb"), step.input("px")
     a_l, b_l = lbl(ia), lbl(ib)
     A, B, X = c[pa].label, c[pb].label, c[px].label
     link = view.link_of(A, B, X)
@@ -141,9 +142,8 @@ def similar_image_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> 
 
 def omega_value_hint(step: Step, c: Construction) -> Hint:
     """A wrong ω: the relative velocity over the link's length."""
-    p, q, vp, vq = step.inputs
-    return hint("hint.omega", label=step.label, p=c[p].label, q=c[q].label, a=c[vp].label,
-                b=c[vq].label)
+    p, q, vp, vq = (c[step.input(name)].label for name in ("p", "q", "vp", "vq"))
+    return hint("hint.omega", label=step.label, p=p, q=q, a=vp, b=vq)
 
 
 # -- the operations -------------------------------------------------------------------------------
@@ -153,9 +153,9 @@ DRIVE_VELOCITY = OpSpec("drive_velocity", drive_velocity, "protocol.op.drive_vel
                         Drawn.POINT, Line.OUTLINE, Grade.POINT, hint=labelled("hint.drive"),
                         hint_rule=drive_velocity_hint)
 LINE_PERP = OpSpec("line_perp", line_perp, "protocol.op.line_perp", Drawn.CONSTRUCTION_LINE,
-                   Line.DASHED, Grade.DIRECTION, lever=("p", "q"))
+                   Line.DASHED, Grade.DIRECTION, lever=("p", "q"), through="through")
 LINE_PARALLEL = OpSpec("line_parallel", line_parallel, "protocol.op.line_parallel",
-                       Drawn.CONSTRUCTION_LINE, Line.DASHED, Grade.DIRECTION)
+                       Drawn.CONSTRUCTION_LINE, Line.DASHED, Grade.DIRECTION, through="through")
 OMEGA = OpSpec("omega", omega, "protocol.op.omega", grade=Grade.RATE, written=Written.RATE,
                lever=("p", "q"), rate_of=("vp", "vq"), value_hint=omega_value_hint)
 RIGID_VELOCITY = OpSpec("rigid_velocity", rigid_velocity, "protocol.op.rigid_velocity",
