@@ -6,6 +6,7 @@ import argparse
 import sys
 from typing import Any
 
+from ..drafting.fields import SHEETS, STANDARDS
 from ..errors import MechplanError
 from ..i18n import LANGUAGES
 
@@ -33,8 +34,8 @@ def add_parser(subparsers: Any) -> None:
     b.add_argument("variants", help="a .csv (id, name, key columns) or .toml (students, rules)")
     _engine_options(b)
     b.add_argument("--format", default="dxf,svg,pdf", help="sheet formats: dxf,svg,pdf,png")
-    b.add_argument("--sheet", choices=("A0", "A1", "A2", "A3", "A4"))
-    b.add_argument("--standard", choices=("iso", "gost", "tcvn"))
+    b.add_argument("--sheet", choices=SHEETS)
+    b.add_argument("--standard", choices=STANDARDS)
     b.add_argument("--lang", choices=LANGUAGES)
     b.set_defaults(func=_batch)
     s = subparsers.add_parser(

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from ..drafting.fields import TITLE_BLOCK_FIELDS
+from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
 from ..errors import SceneError
 from ..i18n import LANGUAGES
 from ..model.cam import (
@@ -219,8 +219,7 @@ def _drawing(top: Table) -> CamDrawing:
     if not 1e-8 <= chord <= 1e-3:
         raise t.error("chord_error",
                       f"must be between 0.01 µm and 1 mm (got {t.raw('chord_error')!r})")
-    return CamDrawing(sheet=t.string("sheet", "A1", choices=("A0", "A1", "A2", "A3", "A4")) or "A1",
-                      standard=t.string("standard", "iso",
-                                        choices=("iso", "gost", "tcvn")) or "iso",
+    return CamDrawing(sheet=t.string("sheet", "A1", choices=SHEETS) or "A1",
+                      standard=t.string("standard", "iso", choices=STANDARDS) or "iso",
                       ray_step=steps["ray_step"], table_step=steps["table_step"],
                       chord_error=chord, title_block=fields)
