@@ -318,22 +318,16 @@ def _line_parallel(g: ScalarGen, s: Step, n: str) -> None:
     g.emit(f"{n}px = {tx}", f"{n}py = {ty}", f"{n}ux = {ux}", f"{n}uy = {uy}")
 
 
-def _rate(g: ScalarGen, s: Step, n: str, first: str, second: str) -> None:
-    """A link's ω or ε: (r × (second − first)) / r·r, r = q − p (the inputs named so)."""
+def _rate(g: ScalarGen, s: Step, n: str) -> None:
+    """A link's ω or ε: (r × (b − a)) / r·r, r = q − p, a and b the images its spec reads it from
+    (``OpSpec.rate_of``: v_p, v_q for ω; the normal's end n, a_q for ε)."""
+    assert s.op.rate_of is not None
     p, q = s.input("p"), s.input("q")
     (px, py), (qx, qy) = g.pt(p), g.pt(q)
-    (ax, ay), (bx, by) = g.pt(s.input(first)), g.pt(s.input(second))
+    (ax, ay), (bx, by) = (g.pt(s.input(name)) for name in s.op.rate_of)
     g.emit(f"_rx = {qx} - {px}", f"_ry = {qy} - {py}")
     rr = g.once(("rr", p, q), lambda r: (f"{r} = _rx * _rx + _ry * _ry",))
     g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", f"{n} = _div(_rx * _dy - _ry * _dx, {rr})")
-
-
-def _omega(g: ScalarGen, s: Step, n: str) -> None:
-    _rate(g, s, n, "vp", "vq")          # ω = (r × (v_q − v_p)) / r·r
-
-
-def _epsilon(g: ScalarGen, s: Step, n: str) -> None:
-    _rate(g, s, n, "normal_end", "aq")  # ε = (r × (a_q − n)) / r·r
 
 
 def _normal(g: ScalarGen, s: Step, n: str) -> None:
@@ -375,7 +369,7 @@ SCALAR_FORMS: dict[OpSpec, Gen] = {
     Op.SIMILAR_POSITION: _similar_position, Op.SIMILAR_IMAGE: _similar_image,
     Op.RIGID_VELOCITY: _rigid_velocity, Op.RIGID_ACCELERATION: _rigid_acceleration,
     Op.DRIVE_VELOCITY: _drive_velocity, Op.DRIVE_ACCELERATION: _drive_acceleration,
-    Op.LINE_PERP: _line_perp, Op.LINE_PARALLEL: _line_parallel, Op.OMEGA: _omega,
-    Op.EPSILON: _epsilon, Op.NORMAL: _normal, Op.CORIOLIS: _coriolis, Op.COPY: _copy,
+    Op.LINE_PERP: _line_perp, Op.LINE_PARALLEL: _line_parallel, Op.OMEGA: _rate,
+    Op.EPSILON: _rate, Op.NORMAL: _normal, Op.CORIOLIS: _coriolis, Op.COPY: _copy,
     Op.DIFFERENCE: _difference,
 }
