@@ -10,6 +10,7 @@ from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
 from ..errors import SceneError, TopologyError
 from ..i18n import LANGUAGES
 from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
+from ..model.plans import Plan
 from ..model.structure import analyse
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
 from .loads import gravity_of, loads_of, masses_of
@@ -26,8 +27,8 @@ TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly",
             "analysis", "gravity", "loads", "drawing", "title_block", "description", "dynamics")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
-SCALE_KEYS = {"mu_l": "mu_length", "mu_v": "mu_velocity", "mu_a": "mu_acceleration",
-              "mu_F": "mu_force", "mu_M": "mu_moment"}
+#: scale-factor keys of [drawing.scales] and their dimensions: each plan's, and the moments'
+SCALE_KEYS = {plan.scale_key: plan.scale_dimension for plan in Plan} | {"mu_M": "mu_moment"}
 
 
 def load_scene(path: str | Path) -> Scene:
