@@ -53,3 +53,30 @@ def ensure_within_budget(positions: int, steps: int, *, file: str | None = None,
             f"of memory, more than the budget of {_size(budget)}; ask for fewer positions "
             "(e.g. count = 3600) or raise MECHPLAN_MEMORY_BUDGET", file=file, key=key)
     return estimate
+
+
+# -- files a user gives mechplan (mechplan.userfiles) ---------------------------------------------
+# Each kind of file is read only when it is a regular file no larger than its limit: a scene of the
+# course is a few kB, a drawn A1 sheet a few MB; the limits leave a hundred times that.
+
+#: a scene file (TOML)
+SCENE_MAX_BYTES = 4 * 1024**2
+#: a variants file of a class (CSV or TOML): thousands of students with their keys
+VARIANTS_MAX_BYTES = 16 * 1024**2
+#: a data file a scene names (an engine's indicator table)
+DATA_MAX_BYTES = 16 * 1024**2
+#: a submitted table (CSV or TOML): a course project's answers are a few hundred rows
+TABLE_MAX_BYTES = 8 * 1024**2
+#: a submitted DXF sheet (ASCII or binary); 100 000 lines are about 18 MB of ASCII DXF
+DXF_MAX_BYTES = 128 * 1024**2
+
+# -- what a submission may hold -------------------------------------------------------------------
+#: rows of a submitted table (a whole course project has a few hundred values)
+TABLE_MAX_ROWS = 20_000
+#: characters of one cell of a CSV table (Python's csv default field limit)
+CSV_CELL_MAX_CHARS = 128 * 1024
+#: entities of a DXF sheet, counted as read with every block INSERT expanded; a full A1 sheet
+#: of the course draws a few thousand
+DXF_MAX_ENTITIES = 200_000
+#: blocks inserted inside blocks: deeper nesting (a block inserting itself) is refused
+DXF_MAX_INSERT_DEPTH = 8

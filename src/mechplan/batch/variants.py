@@ -20,6 +20,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..scene.document import parse_toml, read_text
+from ..userfiles import VARIANTS
 from .keys import quantity_text, split_key, split_quantity
 
 _ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.-]*$")
@@ -117,7 +118,7 @@ def _rule(key: str, spec: Any, file: str) -> Rule:
 def read_variants(path: str | Path) -> list[Variant]:
     """Read a class table: ``.csv`` (id, name, key columns) or ``.toml`` (students and rules)."""
     path = Path(path)
-    text = read_text(path)
+    text = read_text(path, VARIANTS)
     file = str(path)
     if path.suffix.lower() == ".csv":
         return _from_csv(text, file)

@@ -33,14 +33,9 @@ SCALE_KEYS = {plan.scale_key: plan.scale_dimension for plan in Plan} | {"mu_M": 
 
 def load_scene(path: str | Path) -> Scene:
     """Read and validate a scene file."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SceneError(f"cannot read the scene file ({exc.strerror})", file=str(path)) from None
-    except UnicodeDecodeError:
-        raise SceneError("the scene file is not UTF-8 text", file=str(path)) from None
-    return parse_scene(text, str(path))
+    from .document import read_text
+
+    return parse_scene(read_text(path), str(path))
 
 
 def parse_scene(text: str, file: str = "<scene>") -> Scene:

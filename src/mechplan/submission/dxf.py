@@ -4,6 +4,7 @@ DIMENSION texts naming a segment, legacy Vietnamese encodings; damaged files are
 
 from __future__ import annotations
 
+import io
 import itertools
 import logging
 import math
@@ -19,6 +20,7 @@ from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 
 from ..drafting.fonts import text_width_mm
 from ..errors import CheckError
+from ..userfiles import DXF, read_bytes
 from .notation import decode_legacy
 from .read import DrawnLine, Note, Point, SheetText, Submission, parse_assignments
 from .texts import T, has
@@ -32,13 +34,39 @@ DAMAGE = (OSError, UnicodeDecodeError, ValueError, TypeError, EOFError, IndexErr
           ArithmeticError)
 
 
-def read_dxf(path: Path) -> Submission:
-    """Read lines, polylines, point markers and texts of a DXF's model space (recovering damage)."""
-    import ezdxf
+#: what ezdxf's recovery raises on some damaged files (its own asserts and half-built objects)
+RECOVER_DAMAGE = (AttributeError, AssertionError, KeyError, LookupError, RecursionError)
+_BINARY_SENTINEL = b"AutoCAD Binary DXF\r\n\x1a\x00"
+
+
+def _load(raw: bytes) -> tuple[Any, Any]:
+    """The document and its auditor from a DXF's bytes: a binary DXF as ezdxf reads it, an ASCII
+    one through ezdxf's recovery (which repairs what it can)."""
     from ezdxf import recover
 
+    if raw.startswith(_BINARY_SENTINEL):
+        from ezdxf.document import Drawing
+        from ezdxf.lldxf.tagger import binary_tags_loader
+
+        doc = Drawing.load(binary_tags_loader(raw, errors="surrogateescape"))
+        return doc, doc.audit()
+    return recover.read(io.BytesIO(raw))
+
+
+def _brief(exc: BaseException, limit: int = 160) -> str:
+    """An exception's message cut short: it may quote a piece of the file."""
+    text = " ".join(str(exc).split())
+    return text if len(text) <= limit else text[:limit] + "…"
+
+
+def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
+    """Read lines, polylines, point markers and texts of a DXF's model space (recovering damage);
+    ``raw``: the file's bytes when they were read already."""
+    import ezdxf
+
     sub = Submission(str(path), "dxf")
-    raw = path.read_bytes()
+    if raw is None:
+        raw = read_bytes(path, DXF, error=CheckError)
     if not raw.strip():
         raise CheckError(T("error.empty"), file=str(path))
     truncated = not raw.startswith(b"AutoCAD Binary DXF") and \
@@ -49,11 +77,11 @@ def read_dxf(path: Path) -> Submission:
     log = logging.getLogger("ezdxf")
     log.addHandler(repairs)   # the repair messages become notes, not lines on stderr
     try:
-        doc, auditor = recover.readfile(str(path))
+        doc, auditor = _load(raw)
     except ezdxf.DXFStructureError as exc:
-        raise CheckError(T("error.not_dxf", detail=str(exc)), file=str(path)) from None
-    except (ezdxf.DXFError, *DAMAGE) as exc:
-        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {exc}"),
+        raise CheckError(T("error.not_dxf", detail=_brief(exc)), file=str(path)) from None
+    except (ezdxf.DXFError, *DAMAGE, *RECOVER_DAMAGE) as exc:
+        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {_brief(exc)}"),
                          file=str(path)) from None
     finally:
         log.removeHandler(repairs)

@@ -22,6 +22,7 @@ import numpy as np
 
 from ..errors import CheckError
 from ..geom.sketch import box_distance
+from ..userfiles import DXF, TABLE, read_bytes
 from .texts import T
 
 Point = tuple[float, float]
@@ -133,11 +134,12 @@ def read_submission(path: str | Path) -> Submission:
         return read_toml(p)
     if suffix in (".csv", ".tsv", ".txt"):
         return read_csv(p)
-    head = p.read_bytes()[:256]
+    data = read_bytes(p, DXF, error=CheckError)
+    head = data[:256]
     if re.match(rb"\s*0\s*\r?\n\s*SECTION", head) or head.startswith(b"AutoCAD Binary DXF"):
         from .dxf import read_dxf
 
-        return read_dxf(p)
+        return read_dxf(p, data)
     raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))
 
 
@@ -370,7 +372,7 @@ def csv_rows(path: Path, dialect: Callable[[str], Any]) -> list[list[str]]:
 
 
 def _read_text(path: Path) -> str:
-    data = path.read_bytes()
+    data = read_bytes(path, TABLE, error=CheckError)
     for enc in ("utf-8-sig", "cp1251", "latin-1"):
         try:
             return data.decode(enc)
