@@ -20,6 +20,8 @@ from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 
 from ..drafting.fonts import text_width_mm
 from ..errors import CheckError
+from ..i18n import Text
+from ..limits import DXF_MAX_ENTITIES, DXF_MAX_INSERT_DEPTH
 from ..userfiles import DXF, read_bytes
 from .notation import decode_legacy
 from .read import DrawnLine, Note, Point, SheetText, Submission, parse_assignments
@@ -35,7 +37,9 @@ DAMAGE = (OSError, UnicodeDecodeError, ValueError, TypeError, EOFError, IndexErr
 
 
 #: what ezdxf's recovery raises on some damaged files (its own asserts and half-built objects)
-RECOVER_DAMAGE = (AttributeError, AssertionError, KeyError, LookupError, RecursionError)
+RECOVER_DAMAGE = (AttributeError, AssertionError, LookupError, RecursionError)
+#: … and what one damaged entity may raise while it is read
+ENTITY_DAMAGE = (AttributeError, AssertionError, LookupError)
 _BINARY_SENTINEL = b"AutoCAD Binary DXF\r\n\x1a\x00"
 
 
@@ -105,16 +109,21 @@ def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
     else:
         sub.units = (unit_name(code) if code == 4 else
                      T("units.scaled", unit=unit_name(code), scale=scale))
-    msp = doc.modelspace()
-    _collect(sub, msp, 1.0, depth=0)
-    if not sub.lines:
-        for layout in doc.layouts:
-            if layout.name.lower() == "model":
-                continue
-            _collect(sub, layout, 1.0, depth=0)
-            if sub.lines:
-                sub.notes.append(Note("info", T("note.layout", name=layout.name), str(path)))
-                break
+    budget = _Budget(str(path))
+    try:
+        _refuse_bombs(doc, str(path))
+        _collect(sub, doc.modelspace(), 1.0, depth=0, budget=budget)
+        if not sub.lines:
+            for layout in doc.layouts:
+                if layout.name.lower() == "model":
+                    continue
+                _collect(sub, layout, 1.0, depth=0, budget=budget)
+                if sub.lines:
+                    sub.notes.append(Note("info", T("note.layout", name=layout.name), str(path)))
+                    break
+    except (DXFError, *DAMAGE, *RECOVER_DAMAGE) as exc:   # a damaged table of layouts, blocks
+        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {_brief(exc)}"),
+                         file=str(path)) from None
     if sub.skipped:
         sub.notes.append(Note("info", T("note.skipped", n=sub.skipped), str(path)))
     xs = [v for ln in sub.lines for v in (ln.start[0], ln.end[0])]
@@ -195,10 +204,68 @@ def _skipped(e: Any) -> bool:
     return bool(_SKIP_LINETYPE.search(linetype))
 
 
+def _refuse_bombs(doc: Any, file: str) -> None:
+    """Count the entities of model space with every block INSERT expanded, from the block
+    definitions alone (each block counted once), and refuse a sheet over the limits before
+    anything is expanded: blocks of blocks of copies, a block inside itself."""
+    counts: dict[str, int] = {}
+
+    def block(name: str, chain: tuple[str, ...]) -> int:
+        if name in counts:
+            return counts[name]
+        if name in chain:
+            raise CheckError(Text("readers.error.dxf_cycle", {"name": name[:60]}), file=file)
+        if len(chain) >= DXF_MAX_INSERT_DEPTH:
+            raise CheckError(Text("readers.error.dxf_depth", {"name": name[:60],
+                                                              "limit": DXF_MAX_INSERT_DEPTH}),
+                             file=file)
+        layout = doc.blocks.get(name) if name in doc.blocks else None
+        counts[name] = n = 0 if layout is None else entities(layout, (*chain, name))
+        return n
+
+    def entities(space: Iterable[Any], chain: tuple[str, ...]) -> int:
+        total = 0
+        for e in space:
+            total += 1
+            if e.dxftype() == "INSERT":
+                copies = max(1, int(e.dxf.get("row_count", 1) or 1)) * max(
+                    1, int(e.dxf.get("column_count", 1) or 1))
+                total += copies * (block(str(e.dxf.name), chain) + len(e.attribs))
+            if total > DXF_MAX_ENTITIES:
+                raise CheckError(Text("readers.error.dxf_entities",
+                                      {"limit": DXF_MAX_ENTITIES}), file=file)
+        return total
+
+    entities(doc.modelspace(), ())
+
+
+class _Budget:
+    """Entities read so far, every block INSERT expanded: a sheet over
+    :data:`~mechplan.limits.DXF_MAX_ENTITIES` (an INSERT bomb: blocks of blocks of copies) is
+    refused as soon as the count passes it, before the rest is expanded."""
+
+    def __init__(self, file: str) -> None:
+        self.file = file
+        self.count = 0
+
+    def take(self) -> None:
+        self.count += 1
+        if self.count > DXF_MAX_ENTITIES:
+            raise CheckError(Text("readers.error.dxf_entities", {"limit": DXF_MAX_ENTITIES}),
+                             file=self.file)
+
+
 def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
-             via: str = "") -> None:
+             via: str = "", budget: _Budget | None = None, blocks: tuple[str, ...] = ()) -> None:
+    """Read the entities of a layout or of an inserted block (``blocks``: the names of the blocks
+    it stands in, outermost first)."""
+    budget = budget or _Budget(sub.path)
     for e in space:
+        budget.take()
         kind = e.dxftype()
+        if kind == "INSERT":
+            _insert(sub, e, scale, depth, via, budget, blocks)
+            continue
         try:
             if kind in ("LINE", "LWPOLYLINE", "POLYLINE") and _skipped(e):
                 sub.skipped += 1
@@ -232,16 +299,39 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
                 _add_text(sub, _mtext_box(e, scale), e, via)
             elif kind == "DIMENSION":
                 _add_dimension(sub, e, scale, via)
-            elif kind == "INSERT" and depth < 8:
-                name = e.dxf.name
-                _collect(sub, e.virtual_entities(), scale, depth + 1,
-                         via=T("where.block", name=name, handle=e.dxf.handle))
-                for attrib in getattr(e, "attribs", []):
-                    _add_text(sub, _text_box(attrib, scale), attrib, via)
-        except (DXFError, *DAMAGE) as exc:      # one damaged entity must not lose the sheet
-            sub.notes.append(Note("warning", T("note.unreadable_entity", kind=kind,
-                                               error=f"{exc.__class__.__name__}: {exc}"),
+        except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:   # one damaged entity must not lose
+            sub.notes.append(Note("warning", T("note.unreadable_entity", kind=kind,  # the sheet
+                                               error=f"{exc.__class__.__name__}: {_brief(exc)}"),
                                   _where(e, via)))
+
+
+def _insert(sub: Submission, e: Any, scale: float, depth: int, via: str, budget: _Budget,
+            blocks: tuple[str, ...]) -> None:
+    """A block INSERT: the block's entities where it is inserted, and its ATTRIBs. A block nested
+    deeper than :data:`~mechplan.limits.DXF_MAX_INSERT_DEPTH`, or inside itself, is refused."""
+    try:
+        name = str(e.dxf.name)
+        if name in blocks or depth >= DXF_MAX_INSERT_DEPTH:
+            raise CheckError(Text("readers.error.dxf_depth", {"name": name[:60],
+                                                              "limit": DXF_MAX_INSERT_DEPTH}),
+                             file=sub.path)
+        inner = list(e.virtual_entities())
+        attribs = list(getattr(e, "attribs", []))
+    except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:
+        sub.notes.append(Note("warning", T("note.unreadable_entity", kind="INSERT",
+                                           error=f"{exc.__class__.__name__}: {_brief(exc)}"),
+                              _where(e, via)))
+        return
+    _collect(sub, inner, scale, depth + 1, T("where.block", name=name, handle=e.dxf.handle),
+             budget, (*blocks, name))
+    for attrib in attribs:
+        budget.take()
+        try:
+            _add_text(sub, _text_box(attrib, scale), attrib, via)
+        except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:
+            sub.notes.append(Note("warning", T("note.unreadable_entity", kind="ATTRIB",
+                                               error=f"{exc.__class__.__name__}: {_brief(exc)}"),
+                                  _where(attrib, via)))
 
 
 def _add_arrowhead(sub: Submission, e: Any, scale: float, where: str) -> None:
