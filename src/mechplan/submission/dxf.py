@@ -26,6 +26,7 @@ from ..userfiles import DXF, read_bytes
 from .notation import decode_legacy
 from .read import DrawnLine, Note, Point, SheetText, Submission, parse_assignments
 from .texts import T, has
+from .texts import where as place
 
 INSUNITS_MM = {0: 1.0, 1: 25.4, 2: 304.8, 4: 1.0, 5: 10.0, 6: 1000.0, 14: 100.0}
 
@@ -180,11 +181,11 @@ def unit_name(code: int) -> str:
 
 
 def _where(e: Any, extra: str = "") -> str:
-    handle = getattr(e.dxf, "handle", None) or "?"
-    layer = getattr(e.dxf, "layer", "") or ""
+    handle = str(getattr(e.dxf, "handle", None) or "?")
+    layer = str(getattr(e.dxf, "layer", "") or "")
     if layer not in ("", "0"):
-        return T("where.entity_layer", type=e.dxftype(), handle=handle, layer=layer, extra=extra)
-    return T("where.entity", type=e.dxftype(), handle=handle, extra=extra)
+        return place("entity_layer", type=e.dxftype(), handle=handle, layer=layer, extra=extra)
+    return place("entity", type=e.dxftype(), handle=handle, extra=extra)
 
 
 _SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|border",
@@ -192,16 +193,25 @@ _SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|borde
 _SKIP_LAYER = re.compile(r"^(frame|table|title|border|рамка|штамп|таблиц)", re.IGNORECASE)
 
 
-def _skipped(e: Any) -> bool:
-    """Axes and trajectories (dash-dot lines) and sheet frames and tables are not plan lines."""
+def _skipped(e: Any, seen: dict[tuple[str, str], bool] | None = None) -> bool:
+    """Axes and trajectories (dash-dot lines) and sheet frames and tables are not plan lines;
+    ``seen`` remembers the answer for each layer and line type of one sheet."""
     layer_name = e.dxf.get("layer", "0") or "0"
-    if _SKIP_LAYER.match(layer_name):
-        return True
     linetype = e.dxf.get("linetype", "BYLAYER") or "BYLAYER"
-    if linetype.upper() == "BYLAYER" and e.doc is not None:
-        layer = e.doc.layers.get(layer_name) if layer_name in e.doc.layers else None
-        linetype = layer.dxf.get("linetype", "CONTINUOUS") if layer is not None else "CONTINUOUS"
-    return bool(_SKIP_LINETYPE.search(linetype))
+    key = (layer_name, linetype)
+    if seen is not None and key in seen:
+        return seen[key]
+    if _SKIP_LAYER.match(layer_name):
+        skip = True
+    else:
+        if linetype.upper() == "BYLAYER" and e.doc is not None:
+            layer = e.doc.layers.get(layer_name) if layer_name in e.doc.layers else None
+            linetype = (layer.dxf.get("linetype", "CONTINUOUS") if layer is not None
+                        else "CONTINUOUS")
+        skip = bool(_SKIP_LINETYPE.search(linetype))
+    if seen is not None:
+        seen[key] = skip
+    return skip
 
 
 def _refuse_bombs(doc: Any, file: str) -> None:
@@ -247,6 +257,7 @@ class _Budget:
     def __init__(self, file: str) -> None:
         self.file = file
         self.count = 0
+        self.skipped: dict[tuple[str, str], bool] = {}     # see _skipped
 
     def take(self) -> None:
         self.count += 1
@@ -267,7 +278,7 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
             _insert(sub, e, scale, depth, via, budget, blocks)
             continue
         try:
-            if kind in ("LINE", "LWPOLYLINE", "POLYLINE") and _skipped(e):
+            if kind in ("LINE", "LWPOLYLINE", "POLYLINE") and _skipped(e, budget.skipped):
                 sub.skipped += 1
                 continue
             if kind == "LINE":
