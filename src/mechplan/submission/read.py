@@ -22,6 +22,8 @@ import numpy as np
 
 from ..errors import CheckError
 from ..geom.sketch import box_distance
+from ..i18n import Text
+from ..limits import CSV_CELL_MAX_CHARS, TABLE_MAX_ROWS
 from ..userfiles import DXF, TABLE, read_bytes
 from .texts import T
 
@@ -209,7 +211,7 @@ def read_toml(path: Path) -> Submission:
     walk(data, None, "")
     if not sub.entries:
         raise CheckError(T("error.toml_empty"), file=str(path))
-    return sub
+    return within_limits(sub)
 
 
 _ROW_KEYS = {"mm", "length", "length_mm", "mu", "value", "quantity", "unit"}
@@ -317,6 +319,15 @@ def read_csv(path: Path) -> Submission:
             sub.entries.append(Entry(name=cells[0], where=where, text=cells[1]))
     if not sub.entries:
         raise CheckError(T("error.csv_empty"), file=str(path))
+    return within_limits(sub)
+
+
+def within_limits(sub: Submission) -> Submission:
+    """The table ``sub``, refused when it holds more than
+    :data:`~mechplan.limits.TABLE_MAX_ROWS` values (grading costs grow with them)."""
+    if len(sub.entries) > TABLE_MAX_ROWS:
+        raise CheckError(Text("readers.error.table_rows", {"limit": TABLE_MAX_ROWS}),
+                         file=sub.path)
     return sub
 
 
@@ -361,14 +372,33 @@ def load_toml(path: Path) -> tuple[dict[str, Any], Callable[[str], str]]:
 
 
 def csv_rows(path: Path, dialect: Callable[[str], Any]) -> list[list[str]]:
-    """The rows of a CSV file, its dialect chosen by ``dialect(first 20 lines)``."""
+    """The rows of a CSV file, its dialect chosen by ``dialect(first 20 lines)``; a table of more
+    than :data:`~mechplan.limits.TABLE_MAX_ROWS` rows, or with a cell over
+    :data:`~mechplan.limits.CSV_CELL_MAX_CHARS` characters, is refused naming the line."""
     text = _read_text(path)
     if "\x00" in text:
         raise CheckError(T("error.binary"), file=str(path))
+    reader = csv.reader(io.StringIO(text), dialect("\n".join(text.splitlines()[:20])))
+    rows: list[list[str]] = []
     try:
-        return list(csv.reader(io.StringIO(text), dialect("\n".join(text.splitlines()[:20]))))
+        for row in reader:
+            if max(map(len, row), default=0) > CSV_CELL_MAX_CHARS:
+                raise _cell_too_long(path, reader.line_num)
+            rows.append(row)
+            if len(rows) > TABLE_MAX_ROWS:
+                raise CheckError(Text("readers.error.table_rows", {"limit": TABLE_MAX_ROWS}),
+                                 file=str(path))
     except csv.Error as exc:
-        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
+        if "field larger than field limit" in str(exc):     # the csv module's own limit
+            raise _cell_too_long(path, reader.line_num) from None
+        raise CheckError(T("error.csv", detail=str(exc)), file=str(path),
+                         key=f"line {reader.line_num}") from None
+    return rows
+
+
+def _cell_too_long(path: Path, line: int) -> CheckError:
+    return CheckError(Text("readers.error.csv_cell", {"limit": CSV_CELL_MAX_CHARS}),
+                      file=str(path), key=f"line {line}")
 
 
 def _read_text(path: Path) -> str:
