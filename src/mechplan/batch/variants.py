@@ -138,10 +138,15 @@ def _from_csv(text: str, file: str) -> list[Variant]:
     for key in keys:
         split_key(key)
     out: list[Variant] = []
-    for n, row in enumerate(reader, start=2):
-        sid = _check_id((row.get("id") or "").strip(), file, f"line {n}")
-        values = {k: _cell(row[k]) for k in keys if row.get(k) not in (None, "")}
-        out.append(Variant(sid, (row.get("name") or "").strip(), values))
+    try:
+        for row in reader:      # a quoted cell may hold a newline: name the line it ends on
+            where = f"line {reader.reader.line_num}, column id"
+            sid = _check_id((row.get("id") or "").strip(), file, where)
+            values = {k: _cell(row[k]) for k in keys if row.get(k) not in (None, "")}
+            out.append(Variant(sid, (row.get("name") or "").strip(), values))
+    except csv.Error as exc:    # a cell over the csv module's 128 KB limit, a stray quote
+        raise SceneError(f"not a readable CSV table ({exc})", file=file,
+                         key=f"line {reader.reader.line_num}") from None
     return _unique(out, file)
 
 
@@ -169,7 +174,8 @@ def _from_toml(text: str, file: str) -> list[Variant]:
         values = st.get("values", {})
         for key in values:
             split_key(key)
-        students.append((_check_id(str(st["id"]), file, where), str(st.get("name", "")), values))
+        students.append((_check_id(str(st["id"]), file, f"{where}.id"), str(st.get("name", "")),
+                         values))
     if "count" in doc:
         count = doc["count"]
         if not isinstance(count, int) or count < 1:
