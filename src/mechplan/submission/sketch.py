@@ -35,8 +35,25 @@ class Graph:
     decoration: set[int]               # arrowhead corners: labels go elsewhere first
     component: list[int]               # node → drawing
     degree: list[int]                  # line ends at each node
+    #: loose line ends (end, other end) not yet told apart: a construction line drawn on past its
+    #: point is decoration too, found only for the ends a label may take (:meth:`decorated`)
+    loose: np.ndarray = field(default_factory=lambda: np.zeros((0, 2), dtype=np.int64),
+                              repr=False, compare=False)
+    snap: float = 0.0
     _trees: dict[frozenset[int] | None, tuple[cKDTree, np.ndarray]] = field(
         default_factory=dict, repr=False, compare=False)
+
+    def decorated(self, nodes: np.ndarray) -> np.ndarray:
+        """Whether each of ``nodes`` is decoration (an arrowhead corner, hatching, a line's
+        loose end drawn past its point): labels go elsewhere first."""
+        nodes = np.asarray(nodes, dtype=np.int64)
+        out = np.isin(nodes, list(self.decoration))
+        if len(self.loose) and len(nodes):
+            ask = self.loose[np.isin(self.loose[:, 0], nodes)]
+            over = _overshoots(self.nodes, ask, np.asarray(self.degree, dtype=np.int64),
+                               self.snap)
+            out |= np.isin(nodes, list(over))
+        return out
 
     def tree(self, among: Iterable[int] | None = None) -> tuple[cKDTree, np.ndarray]:
         """A KD-tree of the nodes (only those of drawings ``among``) and their node indices;
@@ -116,24 +133,21 @@ def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: 
         for end, other, deg in ((a, b, da), (b, a, db)):
             if deg == 1 and end not in marker_nodes:
                 loose.append((end, other))
-    degrees = np.zeros(m, dtype=np.int64)
-    for n, deg in degree_of.items():
-        degrees[n] = deg
-    decoration |= _overshoots(nodes, loose, degrees, snap)
     decoration |= _head_bases(nodes, heads, marker_nodes, degree_of, snap)
     ends = np.asarray(line_nodes, dtype=np.int64).reshape(-1, 2)
     component = [int(x) for x in components(m, ends[:, 0], ends[:, 1])]
     degree = [len(at_node.get(i, ())) for i in range(m)]
-    return Graph(nodes, line_nodes, marker_nodes, decoration, component, degree)
+    return Graph(nodes, line_nodes, marker_nodes, decoration, component, degree,
+                 np.asarray(loose, dtype=np.int64).reshape(-1, 2), snap)
 
 
-def _overshoots(nodes: np.ndarray, loose: Sequence[tuple[int, int]], degree: np.ndarray,
-                snap: float, reach: float = 15.0) -> set[int]:
+def _overshoots(nodes: np.ndarray, loose: np.ndarray, degree: np.ndarray, snap: float,
+                reach: float = 15.0) -> set[int]:
     """The loose ends (``end``, ``other``) whose line from ``other`` passes through a point where
     other lines meet (2 or more line ends) within ``reach`` mm of the end: a construction line
     drawn on past its point. The nodes near each line's last ``reach`` mm come from one STRtree
     query of all of them (a sheet has 10^5 lines), then the exact test."""
-    if not loose or not len(nodes):
+    if not len(loose) or not len(nodes):
         return set()
     pairs = np.asarray(loose, dtype=np.int64).reshape(-1, 2)
     e, o = nodes[pairs[:, 0]], nodes[pairs[:, 1]]
@@ -199,14 +213,13 @@ def place_labels(texts: Sequence[SheetText], graph: Graph, lines: Sequence[Drawn
         # marked with a dot or a small circle is preferred
         marker = np.zeros(n, dtype=bool)
         marker[list(graph.markers)] = True
-        deco = np.zeros(n)
-        deco[list(graph.decoration)] = tol
         loose = np.array([LOOSE_END_COST.get(deg, 0.0) for deg in graph.degree]) * tol
         rows: list[np.ndarray] = []
         cols: list[np.ndarray] = []
         scores: list[np.ndarray] = []
         first = np.full(k, np.inf)
         best0 = np.full(k, -1)
+        within: list[tuple[np.ndarray, np.ndarray]] = []
         for r, t in enumerate(texts):
             radius = math.hypot(*t.half)
             near = np.asarray(tree.query_ball_point(t.centre, tol + radius), dtype=np.int64)
@@ -216,7 +229,11 @@ def place_labels(texts: Sequence[SheetText], graph: Graph, lines: Sequence[Drawn
             if not np.isfinite(nearest_mm[r]):
                 nearest_mm[r] = _nearest_box_distance(t, tree, nodes)
             ok = d <= tol
-            near, d = near[ok], d[ok]
+            within.append((near[ok], d[ok]))
+        candidates = np.unique(np.concatenate([w[0] for w in within]))
+        deco = np.zeros(n)
+        deco[candidates[graph.decorated(candidates)]] = tol
+        for r, (near, d) in enumerate(within):
             if not len(near):
                 continue
             score = np.where(marker[near], d - MARKER_BONUS * tol, d + deco[near] + loose[near])
