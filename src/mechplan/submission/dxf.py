@@ -4,7 +4,6 @@ DIMENSION texts naming a segment, legacy Vietnamese encodings; damaged files are
 
 from __future__ import annotations
 
-import io
 import itertools
 import logging
 import math
@@ -21,59 +20,24 @@ from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 from ..drafting.fonts import text_width_mm
 from ..errors import CheckError
 from ..i18n import Text
-from ..limits import DXF_MAX_ENTITIES, DXF_MAX_INSERT_DEPTH
+from ..limits import DXF_MAX_INSERT_DEPTH
 from ..userfiles import DXF, read_bytes
+from .dxf_open import (
+    DAMAGE,
+    ENTITY_DAMAGE,
+    RECOVER_DAMAGE,
+    Budget,
+    Repairs,
+    brief,
+    load_document,
+    refuse_bombs,
+)
 from .notation import decode_legacy
 from .read import DrawnLine, Note, Point, SheetText, Submission, parse_assignments
 from .texts import T, has
 from .texts import where as place
 
 INSUNITS_MM = {0: 1.0, 1: 25.4, 2: 304.8, 4: 1.0, 5: 10.0, 6: 1000.0, 14: 100.0}
-
-
-# -- DXF ---------------------------------------------------------------------------------------
-#: what ezdxf raises on damaged values besides its own DXFError family
-DAMAGE = (OSError, UnicodeDecodeError, ValueError, TypeError, EOFError, IndexError,
-          ArithmeticError)
-
-
-#: what ezdxf's recovery raises on some damaged files (its own asserts and half-built objects)
-RECOVER_DAMAGE = (AttributeError, AssertionError, LookupError, RecursionError)
-#: … and what one damaged entity may raise while it is read
-ENTITY_DAMAGE = (AttributeError, AssertionError, LookupError)
-_BINARY_SENTINEL = b"AutoCAD Binary DXF\r\n\x1a\x00"
-
-
-def _load(raw: bytes, repairs: _Collect | None = None) -> tuple[Any, Any]:
-    """The document and its auditor from a DXF's bytes: a binary DXF as ezdxf reads it; an ASCII
-    one as ezdxf reads a sound file (twice as fast on a large sheet), and when that fails through
-    ezdxf's recovery, which repairs what it can (``repairs`` then keeps only its messages)."""
-    from ezdxf import recover
-
-    if raw.startswith(_BINARY_SENTINEL):
-        from ezdxf.document import Drawing
-        from ezdxf.lldxf.tagger import binary_tags_loader
-
-        doc = Drawing.load(binary_tags_loader(raw, errors="surrogateescape"))
-        return doc, doc.audit()
-    if raw.rstrip()[-3:].upper() == b"EOF":        # a truncated file goes to the recovery
-        import ezdxf
-        from ezdxf.filemanagement import dxf_stream_info
-
-        try:
-            info = dxf_stream_info(io.StringIO(raw[:1 << 20].decode("utf-8", errors="ignore")))
-            doc = ezdxf.read(io.StringIO(raw.decode(info.encoding, errors="surrogateescape")))
-            return doc, doc.audit()
-        except (DXFError, *DAMAGE, *RECOVER_DAMAGE):
-            if repairs is not None:
-                repairs.messages.clear()
-    return recover.read(io.BytesIO(raw))
-
-
-def _brief(exc: BaseException, limit: int = 160) -> str:
-    """An exception's message cut short: it may quote a piece of the file."""
-    text = " ".join(str(exc).split())
-    return text if len(text) <= limit else text[:limit] + "…"
 
 
 def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
@@ -90,15 +54,15 @@ def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
         raw.rstrip()[-3:].upper() != b"EOF"
     if truncated:
         sub.notes.append(Note("warning", T("note.truncated"), str(path)))
-    repairs = _Collect()
+    repairs = Repairs()
     log = logging.getLogger("ezdxf")
     log.addHandler(repairs)   # the repair messages become notes, not lines on stderr
     try:
-        doc, auditor = _load(raw, repairs)
+        doc, auditor = load_document(raw, repairs)
     except ezdxf.DXFStructureError as exc:
-        raise CheckError(T("error.not_dxf", detail=_brief(exc)), file=str(path)) from None
+        raise CheckError(T("error.not_dxf", detail=brief(exc)), file=str(path)) from None
     except (ezdxf.DXFError, *DAMAGE, *RECOVER_DAMAGE) as exc:
-        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {_brief(exc)}"),
+        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {brief(exc)}"),
                          file=str(path)) from None
     finally:
         log.removeHandler(repairs)
@@ -122,9 +86,9 @@ def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
     else:
         sub.units = (unit_name(code) if code == 4 else
                      T("units.scaled", unit=unit_name(code), scale=scale))
-    budget = _Budget(str(path))
+    budget = Budget(str(path))
     try:
-        _refuse_bombs(doc, str(path))
+        refuse_bombs(doc, str(path))
         _collect(sub, doc.modelspace(), 1.0, depth=0, budget=budget)
         if not sub.lines:
             for layout in doc.layouts:
@@ -135,7 +99,7 @@ def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
                     sub.notes.append(Note("info", T("note.layout", name=layout.name), str(path)))
                     break
     except (DXFError, *DAMAGE, *RECOVER_DAMAGE) as exc:   # a damaged table of layouts, blocks
-        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {_brief(exc)}"),
+        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {brief(exc)}"),
                          file=str(path)) from None
     if sub.skipped:
         sub.notes.append(Note("info", T("note.skipped", n=sub.skipped), str(path)))
@@ -174,17 +138,6 @@ def _rescale(sub: Submission, f: float) -> None:
     sub.markers = [(q(p), w) for p, w in sub.markers]
     sub.texts = [SheetText(t.text, q(t.centre), t.height * f, t.where, t.layer, q(t.anchor),
                            (t.half[0] * f, t.half[1] * f), t.rotation) for t in sub.texts]
-
-
-class _Collect(logging.Handler):
-    """Keep the log messages of a DXF read (repairs of damaged values)."""
-
-    def __init__(self) -> None:
-        super().__init__(logging.WARNING)
-        self.messages: list[str] = []
-
-    def emit(self, record: logging.LogRecord) -> None:
-        self.messages.append(record.getMessage())
 
 
 def unit_name(code: int) -> str:
@@ -226,63 +179,11 @@ def _skipped(e: Any, seen: dict[tuple[str, str], bool] | None = None) -> bool:
     return skip
 
 
-def _refuse_bombs(doc: Any, file: str) -> None:
-    """Count the entities of model space with every block INSERT expanded, from the block
-    definitions alone (each block counted once), and refuse a sheet over the limits before
-    anything is expanded: blocks of blocks of copies, a block inside itself."""
-    counts: dict[str, int] = {}
-
-    def block(name: str, chain: tuple[str, ...]) -> int:
-        if name in counts:
-            return counts[name]
-        if name in chain:
-            raise CheckError(Text("readers.error.dxf_cycle", {"name": name[:60]}), file=file)
-        if len(chain) >= DXF_MAX_INSERT_DEPTH:
-            raise CheckError(Text("readers.error.dxf_depth", {"name": name[:60],
-                                                              "limit": DXF_MAX_INSERT_DEPTH}),
-                             file=file)
-        layout = doc.blocks.get(name) if name in doc.blocks else None
-        counts[name] = n = 0 if layout is None else entities(layout, (*chain, name))
-        return n
-
-    def entities(space: Iterable[Any], chain: tuple[str, ...]) -> int:
-        total = 0
-        for e in space:
-            total += 1
-            if e.dxftype() == "INSERT":
-                copies = max(1, int(e.dxf.get("row_count", 1) or 1)) * max(
-                    1, int(e.dxf.get("column_count", 1) or 1))
-                total += copies * (block(str(e.dxf.name), chain) + len(e.attribs))
-            if total > DXF_MAX_ENTITIES:
-                raise CheckError(Text("readers.error.dxf_entities",
-                                      {"limit": DXF_MAX_ENTITIES}), file=file)
-        return total
-
-    entities(doc.modelspace(), ())
-
-
-class _Budget:
-    """Entities read so far, every block INSERT expanded: a sheet over
-    :data:`~mechplan.limits.DXF_MAX_ENTITIES` (an INSERT bomb: blocks of blocks of copies) is
-    refused as soon as the count passes it, before the rest is expanded."""
-
-    def __init__(self, file: str) -> None:
-        self.file = file
-        self.count = 0
-        self.skipped: dict[tuple[str, str], bool] = {}     # see _skipped
-
-    def take(self) -> None:
-        self.count += 1
-        if self.count > DXF_MAX_ENTITIES:
-            raise CheckError(Text("readers.error.dxf_entities", {"limit": DXF_MAX_ENTITIES}),
-                             file=self.file)
-
-
 def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
-             via: str = "", budget: _Budget | None = None, blocks: tuple[str, ...] = ()) -> None:
+             via: str = "", budget: Budget | None = None, blocks: tuple[str, ...] = ()) -> None:
     """Read the entities of a layout or of an inserted block (``blocks``: the names of the blocks
     it stands in, outermost first)."""
-    budget = budget or _Budget(sub.path)
+    budget = budget or Budget(sub.path)
     for e in space:
         budget.take()
         kind = e.dxftype()
@@ -324,11 +225,11 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
                 _add_dimension(sub, e, scale, via)
         except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:   # one damaged entity must not lose
             sub.notes.append(Note("warning", T("note.unreadable_entity", kind=kind,  # the sheet
-                                               error=f"{exc.__class__.__name__}: {_brief(exc)}"),
+                                               error=f"{exc.__class__.__name__}: {brief(exc)}"),
                                   _where(e, via)))
 
 
-def _insert(sub: Submission, e: Any, scale: float, depth: int, via: str, budget: _Budget,
+def _insert(sub: Submission, e: Any, scale: float, depth: int, via: str, budget: Budget,
             blocks: tuple[str, ...]) -> None:
     """A block INSERT: the block's entities where it is inserted, and its ATTRIBs. A block nested
     deeper than :data:`~mechplan.limits.DXF_MAX_INSERT_DEPTH`, or inside itself, is refused."""
@@ -342,7 +243,7 @@ def _insert(sub: Submission, e: Any, scale: float, depth: int, via: str, budget:
         attribs = list(getattr(e, "attribs", []))
     except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:
         sub.notes.append(Note("warning", T("note.unreadable_entity", kind="INSERT",
-                                           error=f"{exc.__class__.__name__}: {_brief(exc)}"),
+                                           error=f"{exc.__class__.__name__}: {brief(exc)}"),
                               _where(e, via)))
         return
     _collect(sub, inner, scale, depth + 1, T("where.block", name=name, handle=e.dxf.handle),
@@ -353,7 +254,7 @@ def _insert(sub: Submission, e: Any, scale: float, depth: int, via: str, budget:
             _add_text(sub, _text_box(attrib, scale), attrib, via)
         except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:
             sub.notes.append(Note("warning", T("note.unreadable_entity", kind="ATTRIB",
-                                               error=f"{exc.__class__.__name__}: {_brief(exc)}"),
+                                               error=f"{exc.__class__.__name__}: {brief(exc)}"),
                                   _where(attrib, via)))
 
 
