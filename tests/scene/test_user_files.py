@@ -8,6 +8,7 @@ import concurrent.futures
 import csv
 import io
 import os
+import subprocess
 import sys
 from pathlib import Path
 
@@ -190,3 +191,48 @@ def test_a_variant_pointing_the_indicator_table_at_etc_passwd_leaks_nothing(tmp_
     assert "root:" not in written
     rows = list(csv.DictReader(io.StringIO((out / "summary.csv").read_text(encoding="utf-8"))))
     assert rows and rows[0]["error"] and "root:" not in rows[0]["error"]
+
+
+def _pv_table(folder: Path) -> Path:
+    """A sound p–V table (the §3 engine's own diagram sampled every 5°)."""
+    from mechplan.studies import solve_text
+
+    base = solve_text(moto(), "m.toml")
+    kin, dia = base.model.kin, base.model.diagram
+    F_P = 3.141592653589793 * 0.0565 ** 2 / 4
+    import numpy as np
+
+    phi = np.radians(np.arange(0, 725, 5.0))
+    V = dia.V_c + F_P * kin.x(phi)
+    p = dia.at_phi(phi, kin.x(phi) / (2 * 0.0235))
+    p[-1] = p[0]
+    path = folder / "pv.csv"
+    path.write_text("V_cm3,p_MPa\n" + "\n".join(f"{float(a) * 1e6!r},{float(b) * 1e-6!r}"
+                                                  for a, b in zip(V, p)),
+                    encoding="utf-8")
+    return path
+
+
+def test_the_command_line_names_the_data_folder(tmp_path):
+    data = tmp_path / "data"
+    data.mkdir()
+    _pv_table(data)
+    scene = _engine(tmp_path, "pv.csv")
+    cmd = [sys.executable, "-m", "mechplan.cli", "solve", str(scene)]
+    missing = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    assert missing.returncode == 2 and "indicator.file" in missing.stderr
+    assert "does not exist" in missing.stderr and "Traceback" not in missing.stderr
+    found = subprocess.run(cmd + ["--data-dir", str(data)], capture_output=True, text=True,
+                           timeout=300)
+    assert found.returncode == 0, found.stderr
+
+
+def test_a_class_reads_the_templates_data_files(tmp_path):
+    """A variant's scene is written in its own folder; its data files stay the template's."""
+    _pv_table(tmp_path)
+    template = _engine(tmp_path, "pv.csv")
+    out = tmp_path / "class"
+    run_class(template, [Variant("s1", "Ivanov", {"engine.speed": "8000 rpm"})], out,
+              formats=("svg",), workers=1, progress=False)
+    rows = list(csv.DictReader(io.StringIO((out / "summary.csv").read_text(encoding="utf-8"))))
+    assert rows[0]["error"] == "", rows[0]["error"]

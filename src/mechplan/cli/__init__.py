@@ -28,11 +28,15 @@ def _positive_int(text: str) -> int:
     return value
 
 
+_DATA_DIR_HELP = ("folder of the data files a scene names (an indicator table), which must lie "
+                  "inside it; default: the scene's folder")
+
+
 def _solve(args: argparse.Namespace) -> int:
     from ..studies import solve_file
     from ..studies.mechanism import MechanismStudy
 
-    study = solve_file(args.scene, at_deg=args.at, count=args.positions)
+    study = solve_file(args.scene, at_deg=args.at, count=args.positions, data_dir=args.data_dir)
     if isinstance(study, MechanismStudy) and (args.sheet or args.standard):
         # the scale factors (μ, segment lengths) of the sheet `mechplan draw --sheet` draws
         from ..solve import choose_scales
@@ -78,7 +82,7 @@ def _draw(args: argparse.Namespace) -> int:
         if progress:
             print(f"mechplan: [{i}/{len(args.scenes)}] {path}", file=sys.stderr, flush=True)
         try:
-            study = solve_file(path)
+            study = solve_file(path, data_dir=args.data_dir)
             for sheet in study.sheets(args.sheet, args.standard, args.lang, Path(path).stem):
                 for written in write(sheet, out, formats):
                     print(written)
@@ -170,6 +174,7 @@ def parser() -> argparse.ArgumentParser:
                    help="scale factors of this sheet size (as `draw --sheet`)")
     s.add_argument("--standard", choices=STANDARDS,
                    help="scale factors of this standard's sheet (as `draw --standard`)")
+    s.add_argument("--data-dir", metavar="DIR", help=_DATA_DIR_HELP)
     s.set_defaults(func=_solve)
     d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG",
                        description="Draw the sheets of one or more scenes. A scene that fails is "
@@ -181,6 +186,7 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--sheet", choices=SHEETS)
     d.add_argument("--lang", choices=LANGUAGES)
     d.add_argument("--standard", choices=STANDARDS)
+    d.add_argument("--data-dir", metavar="DIR", help=_DATA_DIR_HELP)
     d.set_defaults(func=_draw)
     from .batch import add_parser as add_batch
     from .check import add_parser as add_check
