@@ -25,7 +25,7 @@ from mechplan.submission.read import read_submission
 from mechplan.userfiles import DATA, SCENE, data_file, read_bytes
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "engine"))
-from helpers import moto  # noqa: E402
+from helpers import moto
 
 FOUR_BAR = Path(__file__).resolve().parents[2] / "src" / "mechplan" / "templates" / "four_bar.toml"
 SECRET = "root:x:0:0:SECRET-FIRST-LINE:/root:/bin/bash"
@@ -219,11 +219,11 @@ def test_the_command_line_names_the_data_folder(tmp_path):
     _pv_table(data)
     scene = _engine(tmp_path, "pv.csv")
     cmd = [sys.executable, "-m", "mechplan.cli", "solve", str(scene)]
-    missing = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    missing = subprocess.run(cmd, check=False, capture_output=True, text=True, timeout=300)
     assert missing.returncode == 2 and "indicator.file" in missing.stderr
     assert "does not exist" in missing.stderr and "Traceback" not in missing.stderr
-    found = subprocess.run(cmd + ["--data-dir", str(data)], capture_output=True, text=True,
-                           timeout=300)
+    found = subprocess.run(cmd + ["--data-dir", str(data)], check=False, capture_output=True,
+                           text=True, timeout=300)
     assert found.returncode == 0, found.stderr
 
 

@@ -42,6 +42,7 @@ class Graph:
     snap: float = 0.0
     _trees: dict[frozenset[int] | None, tuple[cKDTree, np.ndarray]] = field(
         default_factory=dict, repr=False, compare=False)
+    _cache: dict[str, np.ndarray] = field(default_factory=dict, repr=False, compare=False)
 
     def decorated(self, nodes: np.ndarray) -> np.ndarray:
         """Whether each of ``nodes`` is decoration (an arrowhead corner, hatching, a line's
@@ -85,7 +86,9 @@ class Graph:
                            axis=0)
         if not len(chosen) or not self.line_nodes:
             return Counter()
-        rounded = np.round(self.nodes, 6)
+        if "rounded" not in self._cache:
+            self._cache["rounded"] = np.round(self.nodes, 6)
+        rounded = self._cache["rounded"]
         at_chosen = np.zeros(len(self.nodes), dtype=bool)
         for p in chosen:                 # a plan has tens of points, a sheet 10^5 nodes
             at_chosen |= (rounded == p).all(axis=1)
