@@ -108,3 +108,17 @@ def test_a_binary_dxf_is_read_like_its_ascii_twin(tmp_path):
     assert [t.text for t in b.texts] == ["pb = 40"]
     (tmp_path / "binary.dxf").rename(tmp_path / "sheet")          # no suffix: sniffed
     assert len(read_submission(tmp_path / "sheet").lines) == 2
+
+
+@pytest.mark.parametrize("error", [AssertionError, AttributeError, KeyError, RecursionError])
+def test_whatever_the_recovery_raises_on_damage_is_a_clean_error(tmp_path, monkeypatch, error):
+    import ezdxf.recover
+
+    def broken(stream, errors="surrogateescape"):
+        raise error("half-built object")
+
+    monkeypatch.setattr(ezdxf.recover, "read", broken)
+    path = tmp_path / "truncated.dxf"               # no EOF: only the recovery reads it
+    path.write_bytes(b"0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n0\n10\n0.0\n")
+    with pytest.raises(CheckError, match=f"looks damaged .{error.__name__}"):
+        read_submission(path)
