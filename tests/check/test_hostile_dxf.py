@@ -122,3 +122,23 @@ def test_whatever_the_recovery_raises_on_damage_is_a_clean_error(tmp_path, monke
     path.write_bytes(b"0\nSECTION\n2\nENTITIES\n0\nLINE\n8\n0\n10\n0.0\n")
     with pytest.raises(CheckError, match=f"looks damaged .{error.__name__}"):
         read_submission(path)
+
+
+def test_too_many_entities_are_refused_before_ezdxf_builds_them(tmp_path, monkeypatch):
+    import ezdxf.recover
+
+    from mechplan.submission import dxf_open
+
+    doc = _sheet()
+    for i in range(150):
+        doc.modelspace().add_line((i, 0), (i, 5))
+    doc.saveas(tmp_path / "many.dxf")
+    monkeypatch.setattr(dxf_open, "DXF_MAX_ENTITIES", 100)
+
+    def never(*args, **kwargs):
+        raise AssertionError("ezdxf was asked to build the document")
+
+    monkeypatch.setattr(ezdxf, "read", never)
+    monkeypatch.setattr(ezdxf.recover, "read", never)
+    with pytest.raises(CheckError, match="more than 100 entities"):
+        read_submission(tmp_path / "many.dxf")

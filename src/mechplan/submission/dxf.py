@@ -30,6 +30,7 @@ from .dxf_open import (
     Repairs,
     brief,
     load_document,
+    refuse_before_loading,
     refuse_bombs,
 )
 from .notation import decode_legacy
@@ -58,6 +59,7 @@ def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
     log = logging.getLogger("ezdxf")
     log.addHandler(repairs)   # the repair messages become notes, not lines on stderr
     try:
+        refuse_before_loading(raw, str(path))
         doc, auditor = load_document(raw, repairs)
     except ezdxf.DXFStructureError as exc:
         raise CheckError(T("error.not_dxf", detail=brief(exc)), file=str(path)) from None

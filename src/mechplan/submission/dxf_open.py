@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import io
 import logging
+import re
 from collections.abc import Iterable
 from typing import Any
 
@@ -25,6 +26,26 @@ RECOVER_DAMAGE = (AttributeError, AssertionError, LookupError, RecursionError)
 #: … and what one damaged entity may raise while it is read
 ENTITY_DAMAGE = (AttributeError, AssertionError, LookupError)
 _BINARY_SENTINEL = b"AutoCAD Binary DXF\r\n\x1a\x00"
+
+
+#: a graphical entity of an ASCII DXF: group code 0 on its line, then the entity's name
+_ENTITY_START = re.compile(
+    rb"\n[ \t]*0[ \t]*\r?\n(?:LINE|LWPOLYLINE|POLYLINE|VERTEX|TEXT|MTEXT|ATTRIB|ATTDEF|INSERT|"
+    rb"SOLID|TRACE|3DFACE|CIRCLE|ARC|ELLIPSE|SPLINE|POINT|DIMENSION|LEADER|HATCH|RAY|XLINE)"
+    rb"[ \t]*\r?\n")
+
+
+def refuse_before_loading(raw: bytes, file: str) -> None:
+    """Refuse an ASCII DXF whose entities (in model space, paper space and block definitions,
+    counted in its bytes) exceed :data:`~mechplan.limits.DXF_MAX_ENTITIES`, before ezdxf builds
+    a document of them (a second a million; building them takes minutes and gigabytes)."""
+    if raw.startswith(_BINARY_SENTINEL):
+        return                  # a binary DXF is bounded by the file size limit alone
+    count = 0
+    for count, _ in enumerate(_ENTITY_START.finditer(raw), start=1):
+        if count > DXF_MAX_ENTITIES:
+            raise CheckError(Text("readers.error.dxf_entities", {"limit": DXF_MAX_ENTITIES}),
+                             file=file)
 
 
 def load_document(raw: bytes, repairs: Repairs | None = None) -> tuple[Any, Any]:
