@@ -67,7 +67,10 @@ def read_bytes(path: str | os.PathLike[str], kind: FileKind, *,
     def fail(msgid: str, **args: object) -> MechplanError:
         return error(Text(msgid, {"kind": kind.noun, **args}), file=name, key=key)
 
-    flags = os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_CLOEXEC", 0)
+    # O_NONBLOCK: opening a FIFO must not wait for a writer (POSIX); O_BINARY: no newline
+    # translation (Windows); O_NOCTTY: a terminal device never becomes ours
+    flags = os.O_RDONLY | sum(getattr(os, f, 0) for f in ("O_NONBLOCK", "O_NOCTTY", "O_CLOEXEC",
+                                                          "O_BINARY"))
     try:
         fd = os.open(path, flags)
     except FileNotFoundError:
