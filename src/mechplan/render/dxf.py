@@ -21,7 +21,7 @@ from ezdxf.enums import TextEntityAlignment
 from ezdxf.layouts.base import BaseLayout
 from ezdxf.layouts.blocklayout import BlockLayout
 
-from mechplan.drafting.fonts import SheetFont, font_for
+from mechplan.drafting.fonts import SheetFont, font_for, text_width_mm
 from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
@@ -38,7 +38,8 @@ from mechplan.drafting.primitives import (
     Text,
     VAlign,
 )
-from mechplan.drafting.typography import has_scripts, mtext
+from mechplan.drafting.typography import has_scripts, mtext, plain
+from mechplan.render.librecad import stroke_fonts
 from mechplan.errors import DrawingError
 
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
@@ -50,11 +51,22 @@ _LINETYPE_DESCRIPTIONS = {LineType.DASHED: "ISO 128 dashed (02) __ __ __",
                           LineType.DASH_DOT: "ISO 128 long-dash dotted (04) ____ . ____ ."}
 #: Text styles. AutoCAD draws a style's font file; LibreCAD 2.2 ignores the file and draws the
 #: stroke (.lff) font named like the STYLE, so each style is named after a LibreCAD font that has
-#: its glyphs: kst32b (Latin, Cyrillic, Greek μ φ, ⊥), azomix (symbols), unicode (CJK).
+#: its glyphs: kst32b (Latin, Cyrillic, Greek μ φ, ⊥), azomix (symbols), unicode (CJK, ∥, ·).
 TEXT_STYLES = {SheetFont.ISO: "kst32b", SheetFont.SYMBOL: "azomix", SheetFont.CJK: "unicode"}
 #: Vietnamese text: no LibreCAD font has its letters; mechplan ships the stroke font
-#: fonts/librecad/mechplan-vi.lff (add its folder to LibreCAD's Preferences → Paths → Fonts)
+#: fonts/librecad/mechplan-vi.lff (add its folder to LibreCAD's Preferences → Paths → Fonts),
+#: which also has the few symbols no LibreCAD font has (✓ – — ·): strings with them use it too
 VI_STYLE = "mechplan-vi"
+#: the styles tried for a string, by the sheet font it is measured in: the first whose LibreCAD
+#: font has every glyph of the string is used (else the first: LibreCAD draws ◊ for the rest)
+_STYLE_ORDER = {
+    SheetFont.ISO: ("kst32b", "azomix", "unicode", VI_STYLE),
+    SheetFont.SYMBOL: ("azomix", "kst32b", "unicode", VI_STYLE),
+    SheetFont.CJK: ("unicode", "kst32b", "azomix", VI_STYLE),
+}
+#: the font file AutoCAD draws each style with
+_STYLE_FONT = {"kst32b": SheetFont.ISO, "azomix": SheetFont.SYMBOL, "unicode": SheetFont.CJK,
+               VI_STYLE: SheetFont.ISO}
 #: layer of the title-block values repeated as plain TEXT for viewers that ignore attributes
 TITLE_VALUES_LAYER = "TITLE_VALUES"
 _VI_LETTERS = frozenset("ăâđêôơưĂÂĐÊÔƠƯ")
@@ -102,9 +114,8 @@ def _setup(doc: Drawing, sheet: Sheet) -> None:
         doc.linetypes.add(name, [sum(pattern), *elements],
                           description=_LINETYPE_DESCRIPTIONS[lt])
     doc.styles.get("Standard").dxf.font = SheetFont.ISO.file_name
-    for font, style in TEXT_STYLES.items():
+    for style, font in _STYLE_FONT.items():
         doc.styles.add(style, font=font.file_name)
-    doc.styles.add(VI_STYLE, font=SheetFont.ISO.file_name)
     for role in Role:
         st = role.style
         doc.layers.add(role.layer, color=st.aci, linetype=LINETYPE_NAMES[st.linetype],
@@ -123,14 +134,39 @@ _ATTACH = {(h, v): 1 + "LCR".index(h.name[0]) + 3 * {"TOP": 0, "MIDDLE": 1}.get(
            for h in HAlign for v in VAlign}
 
 
+def text_style(text: str) -> str:
+    """Return the DXF text style of `text`: named after a LibreCAD font with all its glyphs."""
+    font = font_for(text)
+    if font is SheetFont.ISO and _vietnamese(text):
+        return VI_STYLE
+    order = _STYLE_ORDER[font]
+    fonts = stroke_fonts()
+    return next((s for s in order if fonts[s].has(plain(text))), order[0])
+
+
+def fitted_width_factor(t: Text, style: str) -> float:
+    """Return the width factor that keeps `t` inside the box the sheet measured for it.
+
+    The layout measures text in the sheet fonts (osifont …); LibreCAD draws the style's stroke
+    font, up to 40 % wider (Cyrillic in kst32b): such a text is condensed to its measured width.
+    AutoCAD draws the style's font file, at most as wide as measured.
+    """
+    string = plain(t.string)
+    measured = text_width_mm(string, t.height_mm, font_for(t.string))
+    drawn = stroke_fonts()[style].width_mm(string, t.height_mm)
+    if drawn <= measured or drawn <= 0.0:
+        return t.width_factor
+    return t.width_factor * measured / drawn
+
+
 def _text_attribs(t: Text) -> dict[str, object]:
+    style = text_style(t.string)
     return {
         "layer": t.role.layer,
-        "style": VI_STYLE if font_for(t.string) is SheetFont.ISO and _vietnamese(t.string)
-        else TEXT_STYLES[font_for(t.string)],
+        "style": style,
         "height": t.height_mm,
         "rotation": t.rotation_deg,
-        "width": t.width_factor,
+        "width": round(fitted_width_factor(t, style), 4),
     }
 
 
