@@ -39,8 +39,8 @@ from mechplan.drafting.primitives import (
     VAlign,
 )
 from mechplan.drafting.typography import has_scripts, mtext, plain
-from mechplan.render.librecad import stroke_fonts
 from mechplan.errors import DrawingError
+from mechplan.render.librecad import stroke_fonts
 
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
 ENCODINGS = {"en": "cp1252", "ru": "cp1251", "vi": "cp1258", "zh": "gbk"}

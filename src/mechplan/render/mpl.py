@@ -74,13 +74,13 @@ def _sheet_font_entries() -> list[Any]:
 
 @contextlib.contextmanager
 def _sheet_fonts() -> Iterator[None]:
-    """Resolve the sheet families to mechplan's font files while drawing, then restore.
+    """Map the sheet families to mechplan's font files while drawing, then restore.
 
     matplotlib's font list also holds the system's fonts (a Debian Noto Sans CJK SC, DejaVu Sans),
     and it would draw with whichever scores first: the sheet's own files must win, or a PDF would
     embed different fonts on different machines.
     """
-    manager = font_manager.fontManager
+    manager = cast(Any, font_manager.fontManager)   # its find cache is private
     saved = manager.ttflist
     ours = _sheet_font_entries()
     names = {e.name for e in ours}
