@@ -30,6 +30,7 @@ from mechplan.drafting.fonts import (
     SheetFont,
     baseline_point,
     em_size_mm,
+    face_index,
     families_for,
     font_path,
 )
@@ -66,9 +67,16 @@ def _sheet_font_entries() -> list[Any]:
     entries = []
     for font in SheetFont:
         path = font_path(font)
-        if path is not None:
-            prop = font_manager.ttfFontProperty(ft2font.FT2Font(str(path)))
-            entries.append(dataclasses.replace(prop, name=font.family))
+        if path is None:
+            continue
+        index = face_index(path, font)
+        try:        # a collection's face (a system .ttc): matplotlib ≥ 3.10 reads any face
+            ft = ft2font.FT2Font(str(path), face_index=index) if index else ft2font.FT2Font(
+                str(path))
+        except TypeError:
+            ft = ft2font.FT2Font(str(path))
+        prop = font_manager.ttfFontProperty(ft)
+        entries.append(dataclasses.replace(prop, name=font.family))
     return entries
 
 
