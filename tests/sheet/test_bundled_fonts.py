@@ -17,6 +17,7 @@ from mechplan.i18n import catalogue
 from mechplan.render import write
 from mechplan.sheet.fonts import (
     BUNDLED_DIR,
+    SheetFont,
     _is_cjk,
     bundled_path,
     covers,
@@ -178,3 +179,33 @@ def test_a_drawing_is_the_same_whatever_fonts_the_machine_has(tmp_path: Path) ->
     assert (c["svg"], c["pdf"]) != (a["svg"], a["pdf"])
     d = _machine(tmp_path, plain, MECHPLAN_FONT_DIRS=str(fonts))
     assert d["paths"]["ISO"] == str(fonts / "osifont.ttf") and d["widths"] != a["widths"]
+
+
+def test_doctor_names_each_font_file_and_where_it_comes_from(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from mechplan.doctor import report
+
+    monkeypatch.delenv("MECHPLAN_FONT_DIRS", raising=False)
+    monkeypatch.delenv("MECHPLAN_SYSTEM_FONTS", raising=False)
+    text = report()
+    assert "fonts: the bundled fonts" in text
+    for font in SheetFont:
+        assert f"  {font.family}: bundled {bundled_path(font)}" in text
+    shutil.copy(bundled_path(SheetFont.ISO), tmp_path / "osifont-lgpl3fe.ttf")
+    monkeypatch.setenv("MECHPLAN_FONT_DIRS", str(tmp_path))
+    text = report()
+    assert f"  osifont: MECHPLAN_FONT_DIRS {tmp_path / 'osifont-lgpl3fe.ttf'}" in text
+    assert f"  Noto Sans CJK SC: bundled {bundled_path(SheetFont.CJK)}" in text
+
+
+def test_draw_system_fonts_flag_opts_in_for_the_run(tmp_path: Path,
+                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    from mechplan.cli import main
+
+    monkeypatch.setenv("MECHPLAN_SYSTEM_FONTS", "0")          # restored after the test
+    assert main(["draw", str(ROOT / "templates" / "four_bar.toml"), "-o", str(tmp_path),
+                 "--format", "svg"]) == 0
+    assert os.environ["MECHPLAN_SYSTEM_FONTS"] == "0"
+    assert main(["draw", str(ROOT / "templates" / "four_bar.toml"), "-o", str(tmp_path),
+                 "--format", "svg", "--system-fonts"]) == 0
+    assert os.environ["MECHPLAN_SYSTEM_FONTS"] == "1"
