@@ -130,19 +130,22 @@ def _text_boxes_drawn_by_librecad(tmp_path: Path, sheet, name: str) -> list[tupl
 
 
 @pytest.mark.external
-@pytest.mark.parametrize("index", [0, 1])
-def test_librecad_draws_a_russian_gost_sheet_without_overprinting(tmp_path, require, index):
+@pytest.mark.parametrize(("template", "index"),
+                         [("slider_crank", 0), ("slider_crank", 1), ("machine_unit", 0)])
+def test_librecad_draws_a_russian_gost_sheet_without_overprinting(tmp_path, require, template,
+                                                                  index):
     """Table headers, headings and title-block captions: LibreCAD's stroke fonts are wider than
-    osifont, so a text measured in osifont overprinted its neighbour (16 pairs on sheet 1)."""
+    osifont, so a text measured in osifont overprinted its neighbour (16 pairs on slider_crank's
+    sheet 1)."""
     require(shutil.which("librecad") is not None, "LibreCAD (apt-get install librecad)")
-    sheet = solve_file(ROOT / "templates" / "slider_crank.toml").sheets(None, "gost", "ru",
-                                                                        "s")[index]
+    sheet = solve_file(ROOT / "templates" / f"{template}.toml").sheets(None, "gost", "ru",
+                                                                       template)[index]
     # every glyph exists in the LibreCAD font of its text's style (nothing is drawn as ◊)
     fonts = stroke_fonts()
     doc = dxf_backend.to_document(sheet)
     for e in doc.query("TEXT"):
         assert fonts[e.dxf.style].has(e.dxf.text), (e.dxf.style, e.dxf.text)
-    boxes = _text_boxes_drawn_by_librecad(tmp_path, sheet, f"ru_gost_{index}")
+    boxes = _text_boxes_drawn_by_librecad(tmp_path, sheet, f"{template}_{index}")
     overlaps = []
     for i, (sa, a) in enumerate(boxes):
         for sb, b in boxes[i + 1:]:

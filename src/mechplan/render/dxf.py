@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import io
+import math
 
 import ezdxf
 from ezdxf.document import Drawing
@@ -38,7 +39,7 @@ from mechplan.drafting.primitives import (
     Text,
     VAlign,
 )
-from mechplan.drafting.typography import has_scripts, mtext, plain
+from mechplan.drafting.typography import has_scripts, mtext, plain, runs
 from mechplan.errors import DrawingError
 from mechplan.render.librecad import stroke_fonts
 
@@ -159,6 +160,36 @@ def fitted_width_factor(t: Text, style: str) -> float:
     return t.width_factor * measured / drawn
 
 
+#: LibreCAD draws a stack's halves at 4/9 of the text height
+_STACK_SCALE = 4.0 / 9.0
+
+
+def fitted_mtext_height(t: Text, style: str) -> float:
+    """Return the MTEXT height that keeps `t` (with stacked scripts) inside its measured box.
+
+    LibreCAD reads no width factor in MTEXT, so a label its stroke font draws wider than the sheet
+    measured it is drawn smaller instead.
+    """
+    font = stroke_fonts()[style]
+    h = t.height_mm
+    parts = runs(t.string)
+    drawn, i = 0.0, 0
+    while i < len(parts):
+        text, shift = parts[i]
+        if shift == 0:
+            drawn += font.width_mm(text, h)
+        else:
+            lower = parts[i + 1][0] if shift > 0 and i + 1 < len(parts) and parts[i + 1][1] < 0 \
+                else ""
+            i += 1 if lower else 0
+            drawn += max(font.width_mm(text, h * _STACK_SCALE),
+                         font.width_mm(lower, h * _STACK_SCALE))
+        i += 1
+    drawn += (len(parts) - 1) * font.letter_spacing * h / 9.0
+    measured = text_width_mm(t.string, h, font_for(t.string))   # as the sheet measured it
+    return h if drawn <= measured or drawn <= 0.0 else h * measured / drawn
+
+
 def _text_attribs(t: Text) -> dict[str, object]:
     style = text_style(t.string)
     return {
@@ -166,7 +197,7 @@ def _text_attribs(t: Text) -> dict[str, object]:
         "style": style,
         "height": t.height_mm,
         "rotation": t.rotation_deg,
-        "width": round(fitted_width_factor(t, style), 4),
+        "width": math.floor(fitted_width_factor(t, style) * 1e4) / 1e4,   # never wider
     }
 
 
@@ -204,8 +235,10 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
         elif p.string and has_scripts(p.string):
             # real sub- and superscripts: an MTEXT with height and alignment codes
             attribs = _text_attribs(p)
+            style = str(attribs["style"])
             layout.add_mtext(mtext(p.string), dxfattribs={
-                "layer": attribs["layer"], "style": attribs["style"], "char_height": p.height_mm,
+                "layer": attribs["layer"], "style": style,
+                "char_height": round(fitted_mtext_height(p, style), 4),
                 "rotation": p.rotation_deg, "insert": q(p.position),
                 "attachment_point": _ATTACH[(p.halign, p.valign)]})
         elif p.string:
