@@ -56,14 +56,18 @@ COLUMNS = (("p", "p_MPa", 1e-6), ("Pk", "Pk_kN", 1e-3), ("Pj", "Pj_kN", 1e-3), (
 
 
 def table_cells(t: EngineResult, language: str, number_of: int = 1) -> list[list[str]]:
-    """Heading and rows of the per-angle table of one cylinder (with ΣM and |Q| of pin 1)."""
+    """Heading and rows of the per-angle table of one cylinder, with ΣM and the |Q| of the crank
+    pin that cylinder's rod turns (named in the heading when the engine has several pins)."""
     f = t.cylinders[number_of]
+    pin = t.pin_of(number_of)
+    q_head = (message("numbers.engine.col.Q_pin", language, pin=pin) if len(t.pins) > 1
+              else message("engine.col.Q", language))
     head = [message("engine.col.phi", language)] + [
         message(f"engine.col.{a}", language) for a, _, _ in COLUMNS] + [
-        message("engine.col.M_total", language), message("engine.col.Q", language)]
+        message("engine.col.M_total", language), q_head]
     digits = {"p": 3, "beta": 2, "M": 2}
     rows = [head]
-    Q = t.pins[1].Q
+    Q = t.pins[pin].Q
     for k, phi in enumerate(t.phi):
         row = [number(math.degrees(phi), 0, language)]
         for a, _, scale in COLUMNS:
