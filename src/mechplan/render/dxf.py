@@ -21,7 +21,7 @@ from ezdxf.enums import TextEntityAlignment
 from ezdxf.layouts.base import BaseLayout
 from ezdxf.layouts.blocklayout import BlockLayout
 
-from mechplan.drafting.fonts import SheetFont, font_for
+from mechplan.drafting.fonts import SheetFont, font_of
 from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
@@ -126,8 +126,8 @@ _ATTACH = {(h, v): 1 + "LCR".index(h.name[0]) + 3 * {"TOP": 0, "MIDDLE": 1}.get(
 def _text_attribs(t: Text) -> dict[str, object]:
     return {
         "layer": t.role.layer,
-        "style": VI_STYLE if font_for(t.string) is SheetFont.ISO and _vietnamese(t.string)
-        else TEXT_STYLES[font_for(t.string)],
+        "style": VI_STYLE if font_of(t) is SheetFont.ISO and _vietnamese(t.string)
+        else TEXT_STYLES[font_of(t)],
         "height": t.height_mm,
         "rotation": t.rotation_deg,
         "width": t.width_factor,

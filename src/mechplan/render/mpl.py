@@ -22,7 +22,14 @@ from matplotlib.patches import Polygon as PolygonPatch
 from matplotlib.textpath import TextPath, TextToPath
 from matplotlib.transforms import Affine2D
 
-from mechplan.drafting.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_path
+from mechplan.drafting.fonts import (
+    SheetFont,
+    baseline_point,
+    em_size_mm,
+    families_for,
+    font_of,
+    font_path,
+)
 from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
@@ -130,7 +137,7 @@ def _text(ax: Any, t: Text) -> None:
         return
     x, y = baseline_point(t)
     size_mm = em_size_mm(t)
-    families = list(families_for(t.string))
+    families = list(families_for(t.string, font_of(t)))
     ha = {HAlign.LEFT: "left", HAlign.CENTER: "center", HAlign.RIGHT: "right"}[t.halign]
     if t.width_factor == 1.0 and not t.rotation_deg and has_scripts(t.string):
         _scripted(ax, t, x, y, size_mm, families, ha)

@@ -21,7 +21,7 @@ from ..construct.protocol import plan_title as plan_name
 from ..construct.segments import SegmentKind
 from ..construct.step import Kind
 from ..construct.terms import pole_label
-from ..drafting.fonts import text_width_mm
+from ..drafting.fonts import font_of, text_width_mm
 from ..drafting.labels import LabelPlacer
 from ..drafting.primitives import (
     Arrow,
@@ -83,7 +83,7 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
         (x, y), r = p.center, p.radius
         return [(x - r, y - r), (x + r, y + r)]
     if isinstance(p, Text):
-        w = text_width_mm(p.string, p.height_mm)
+        w = text_width_mm(p.string, p.height_mm, font_of(p))
         x, y = p.position
         dx = {HAlign.LEFT: 0.0, HAlign.CENTER: -w / 2, HAlign.RIGHT: -w}[p.halign]
         dy = {
