@@ -211,7 +211,8 @@ def polar_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     for k in range(0, len(t.phi) - 1, step):
         x, y = dia.to_mm(float(qt.T[k]) * 1e-3, float(qt.Z[k]) * 1e-3)
         prims.append(Circle((x, y), 0.4, Role.THIN))
-        prims.append(Text((x + 0.8, y + 0.8), f"{math.degrees(float(t.phi[k])):.0f}", 1.8))
+        prims.append(Text((x + 0.8, y + 0.8), number(math.degrees(float(t.phi[k])), 0, lang),
+                          1.8))
     kmax = int(np.argmax(q.Q))
     x, y = dia.to_mm(float(q.T[kmax]) * 1e-3, float(q.Z[kmax]) * 1e-3)
     prims.append(Line((px, py), (x, y), Role.DASHED))
@@ -241,7 +242,8 @@ def wear_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     for psi, s in zip(rays, sums * 1e-3):
         ux, uy = -math.sin(psi), math.cos(psi)      # crank outward = up, sense of rotation = left
         prims.append(Line((0.0, 0.0), (radius * ux, radius * uy), Role.THIN))
-        prims.append(Text((radius * 1.08 * ux, radius * 1.08 * uy), f"{math.degrees(psi):.0f}°",
+        prims.append(Text((radius * 1.08 * ux, radius * 1.08 * uy),
+                          f"{number(math.degrees(psi), 0, lang)}°",
                           1.8, halign=HAlign.CENTER, valign=VAlign.MIDDLE))
         r_in = radius - s / mu
         ends.append((r_in * ux, r_in * uy))
@@ -255,7 +257,7 @@ def wear_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     y = -radius - 6.0
     for note in (mu_text("μw", mu, "kN", lang),
                  message("engine.label.oil_hole", lang,
-                         angle=f"{math.degrees(float(rays[best])):.0f}")):
+                         angle=number(math.degrees(float(rays[best])), 0, lang))):
         block = text_block((x0, y), note, TEXT_H, x1 - x0, valign=VAlign.TOP)
         notes += block
         y = block[-1].position[1] - 5.0
