@@ -95,7 +95,7 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
                 vec = ev[sid][k]
                 mag = float(np.hypot(*vec))
                 text = f"{sym} = {format_number(mag, 4, lang)} {unit(si_unit, lang)}"
-                if float(f"{mag:.4f}") != 0:
+                if round(mag, 4) != 0:
                     text += (
                         f" ∠ {format_number(math.degrees(math.atan2(vec[1], vec[0])), 1, lang)}°"
                     )

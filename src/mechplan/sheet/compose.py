@@ -254,7 +254,8 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
             offsets = _pack(rest, packing_area(frame))
             if offsets[0] is None:
                 x0, y0, x1, y1 = rest[0].bounds()
-                fixed = ", ".join(f"{k} = {v:g}" for k, v in scene.drawing.scales.items())
+                fixed = ", ".join(f"{k} = {significant(v, 6, 'en')}"
+                                  for k, v in scene.drawing.scales.items())
                 raise DrawingError(
                     f"the panel '{rest[0].name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not "
                     f"fit on an {size} sheet at the scale factors {fixed or 'chosen'}; use a "
