@@ -255,6 +255,16 @@ def font_for(text: str) -> SheetFont:
     return SheetFont.CJK
 
 
+def font_of(text: Text) -> SheetFont:
+    """Return the font a text is drawn in: its paragraph's (``Text.font``) or its string's."""
+    return SheetFont[text.font] if text.font else font_for(text.string)
+
+
+def paragraph_font(lines: Iterable[str]) -> SheetFont:
+    """Return the one font that shows every line of a paragraph (so its lines never differ)."""
+    return font_for(" ".join(lines))
+
+
 def text_width_mm(text: str, height_mm: float, font: SheetFont | None = None) -> float:
     """Return the advance width of `text` at ISO capital height `height_mm`."""
     font = font or font_for(text)
@@ -271,9 +281,9 @@ def text_width_mm(text: str, height_mm: float, font: SheetFont | None = None) ->
     return units / m.units_per_em * em_mm
 
 
-def families_for(text: str) -> tuple[str, ...]:
-    """Return the family fallback list for `text`, its own font first."""
-    first = font_for(text)
+def families_for(text: str, font: SheetFont | None = None) -> tuple[str, ...]:
+    """Return the family fallback list for `text`, its own font (or `font`) first."""
+    first = font or font_for(text)
     others = [f.family for f in SheetFont if f is not first]
     return tuple(dict.fromkeys((first.family, *others, *FALLBACK_FAMILIES)))
 
@@ -302,7 +312,7 @@ def baseline_point(text: Text) -> tuple[float, float]:
 
 def em_size_mm(text: Text) -> float:
     """Return the em size (font size) in mm that gives `text` its ISO capital height."""
-    return text.height_mm / cap_ratio(font_for(text.string))
+    return text.height_mm / cap_ratio(font_of(text))
 
 
 def missing_glyphs(strings: Iterable[str]) -> str:

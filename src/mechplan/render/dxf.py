@@ -22,7 +22,7 @@ from ezdxf.enums import TextEntityAlignment
 from ezdxf.layouts.base import BaseLayout
 from ezdxf.layouts.blocklayout import BlockLayout
 
-from mechplan.drafting.fonts import SheetFont, font_for, text_width_mm
+from mechplan.drafting.fonts import SheetFont, font_for, font_of, text_width_mm
 from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
@@ -135,9 +135,12 @@ _ATTACH = {(h, v): 1 + "LCR".index(h.name[0]) + 3 * {"TOP": 0, "MIDDLE": 1}.get(
            for h in HAlign for v in VAlign}
 
 
-def text_style(text: str) -> str:
-    """Return the DXF text style of `text`: named after a LibreCAD font with all its glyphs."""
-    font = font_for(text)
+def text_style(text: str, font: SheetFont | None = None) -> str:
+    """Return the DXF text style of `text`: named after a LibreCAD font with all its glyphs.
+
+    ``font`` is the sheet font the text is drawn in (its paragraph's); by default the string's own.
+    """
+    font = font or font_for(text)
     if font is SheetFont.ISO and _vietnamese(text):
         return VI_STYLE
     order = _STYLE_ORDER[font]
@@ -153,7 +156,7 @@ def fitted_width_factor(t: Text, style: str) -> float:
     AutoCAD draws the style's font file, at most as wide as measured.
     """
     string = plain(t.string)
-    measured = text_width_mm(string, t.height_mm, font_for(t.string))
+    measured = text_width_mm(string, t.height_mm, font_of(t))
     drawn = stroke_fonts()[style].width_mm(string, t.height_mm)
     if drawn <= measured or drawn <= 0.0:
         return t.width_factor
@@ -186,12 +189,12 @@ def fitted_mtext_height(t: Text, style: str) -> float:
                          font.width_mm(lower, h * _STACK_SCALE))
         i += 1
     drawn += (len(parts) - 1) * font.letter_spacing * h / 9.0
-    measured = text_width_mm(t.string, h, font_for(t.string))   # as the sheet measured it
+    measured = text_width_mm(t.string, h, font_of(t))   # as the sheet measured it
     return h if drawn <= measured or drawn <= 0.0 else h * measured / drawn
 
 
 def _text_attribs(t: Text) -> dict[str, object]:
-    style = text_style(t.string)
+    style = text_style(t.string, font_of(t))
     return {
         "layer": t.role.layer,
         "style": style,

@@ -32,6 +32,7 @@ from mechplan.drafting.fonts import (
     em_size_mm,
     face_index,
     families_for,
+    font_of,
     font_path,
 )
 from mechplan.drafting.primitives import (
@@ -171,7 +172,7 @@ def _text(ax: Any, t: Text) -> None:
         return
     x, y = baseline_point(t)
     size_mm = em_size_mm(t)
-    families = list(families_for(t.string))
+    families = list(families_for(t.string, font_of(t)))
     ha = {HAlign.LEFT: "left", HAlign.CENTER: "center", HAlign.RIGHT: "right"}[t.halign]
     if t.width_factor == 1.0 and not t.rotation_deg and has_scripts(t.string):
         _scripted(ax, t, x, y, size_mm, families, ha)
