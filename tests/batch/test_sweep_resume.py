@@ -1,0 +1,140 @@
+"""A sweep's result does not depend on how it was chunked, interrupted or resumed (issue 38)."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pyarrow as pa
+import pyarrow.parquet as pq
+import pytest
+
+import mechplan.batch.sweep as sweep_module
+from mechplan.batch.parts import Part, cover
+from mechplan.batch.plan import make_plan, parse_vary
+from mechplan.batch.sweep import evaluate_chunk, run_sweep
+
+SLIDER = (Path(__file__).resolve().parents[2] / "src" / "mechplan" / "templates"
+          / "slider_crank.toml")
+VARY = ["links.1.lengths.OA=80mm..400mm:7", "links.2.lengths.AB=300mm..420mm:5"]
+AXES = [parse_vary(v) for v in VARY]
+POSITIONS = 12
+SIZE = 35
+
+
+def reference() -> pa.Table:
+    """Every variant evaluated in one chunk, without parts, resume or the engine."""
+    plan = make_plan(SLIDER.read_text(encoding="utf-8"), str(SLIDER), AXES, POSITIONS)
+    _, cols, _ = evaluate_chunk(plan, 0, plan.size)
+    return sweep_module._to_table(cols)
+
+
+def leftovers(out: Path) -> list[str]:
+    return sorted(str(p.relative_to(out)) for p in out.rglob("*.tmp"))
+
+
+def test_cover_takes_each_variant_once():
+    a, b, c = (Part(Path(n), lo, hi) for n, lo, hi in (("a", 0, 100), ("b", 50, 200),
+                                                       ("c", 240, 260)))
+    got = cover([c, b, a], 300)
+    assert [(p.path.name, lo, hi) for p, lo, hi in got.segments] == [("a", 0, 100),
+                                                                     ("b", 100, 200),
+                                                                     ("c", 240, 260)]
+    assert got.gaps == [(200, 240), (260, 300)] and got.unused == []
+    inner = Part(Path("d"), 10, 20)
+    assert cover([a, inner], 100).unused == [inner]
+
+
+def test_chunk_100_then_150_keeps_every_row(tmp_path):
+    """The issue's case: parts named by their start lost 200 of 1,271 rows."""
+    axes = [parse_vary("links.1.lengths.OA=80mm..120mm:31"),
+            parse_vary("links.2.lengths.AB=300mm..420mm:41")]
+    first = run_sweep(SLIDER, axes, tmp_path, positions=4, workers=1, progress=False, chunk=100)
+    again = run_sweep(SLIDER, axes, tmp_path, positions=4, workers=1, progress=False, chunk=150)
+    table = pq.read_table(again.parquet)
+    assert table.column("variant").to_pylist() == list(range(1271))
+    assert table.equals(pq.read_table(first.parquet))
+    assert again.cpu_seconds == 0.0 and again.skipped_chunks == again.chunks == 13
+
+
+def test_interrupted_at_random_points_and_resumed_equals_one_run(tmp_path, monkeypatch):
+    expected = reference()
+    assert expected.num_rows == SIZE
+    rng = np.random.default_rng(38)
+    out = tmp_path / "sweep"
+    real_write = sweep_module.write_part
+    done = interrupted = 0
+    for round_ in range(7):
+        chunk = int(rng.integers(1, 13))
+        workers = 2 if round_ in (2, 5) else 1
+        budget = int(rng.integers(0, 4))         # parts written before the interruption
+
+        def write_then_stop(*args, budget=budget):
+            nonlocal done
+            if done >= budget:
+                raise KeyboardInterrupt           # Ctrl-C between two parts
+            done += 1
+            return real_write(*args)
+
+        done = 0
+        monkeypatch.setattr(sweep_module, "write_part", write_then_stop)
+        try:
+            run_sweep(SLIDER, AXES, out, positions=POSITIONS, workers=workers, progress=False,
+                      chunk=chunk)
+        except KeyboardInterrupt:
+            interrupted += 1
+        parts = next(out.glob("parts-*"))
+        # what a SIGKILL in the middle of a write leaves, and a damaged part
+        (parts / f".part-{round_:012d}-000000000035.parquet.k{round_}.tmp").write_bytes(b"x")
+        (out / f".summary.parquet.k{round_}.tmp").write_bytes(b"half")
+        if round_ == 3:
+            (parts / "part-000000000030-000000000035.parquet").write_bytes(b"PAR1 damaged")
+    assert interrupted >= 5
+    monkeypatch.setattr(sweep_module, "write_part", real_write)
+    result = run_sweep(SLIDER, AXES, out, positions=POSITIONS, workers=2, progress=False,
+                       chunk=None)
+    table = pq.read_table(result.parquet)
+    assert table.column("variant").to_pylist() == list(range(SIZE))
+    assert table.to_pylist() == expected.to_pylist()          # row for row
+    assert leftovers(out) == []
+    csv_rows = (out / "summary.csv").read_text(encoding="utf-8").splitlines()
+    assert len(csv_rows) == SIZE + 1
+    # re-running the completed sweep with other chunk sizes evaluates nothing and changes nothing
+    for chunk in (None, 4, 35):
+        again = run_sweep(SLIDER, AXES, out, positions=POSITIONS, workers=1, progress=False,
+                          chunk=chunk)
+        assert again.cpu_seconds == 0.0 and again.skipped_chunks == again.chunks
+        assert pq.read_table(again.parquet).to_pylist() == expected.to_pylist()
+
+
+def test_sigkill_of_the_main_process_then_resume(tmp_path):
+    out = tmp_path / "sweep"
+    base = [sys.executable, "-m", "mechplan.cli", "sweep", str(SLIDER), "--vary",
+            "links.1.lengths.OA=80mm..400mm:40", "--vary", "links.2.lengths.AB=300mm..420mm:20",
+            "--positions", "360", "--no-progress", "-o", str(out)]
+    proc = subprocess.Popen([*base, "--chunk", "7", "-j", "1"], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    deadline = time.monotonic() + 60
+    while time.monotonic() < deadline and proc.poll() is None:
+        if len(list(out.glob("parts-*/part-*.parquet"))) >= 3:
+            break
+        time.sleep(0.05)
+    assert proc.poll() is None, proc.stderr.read() if proc.stderr else ""
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait()
+    parts = next(out.glob("parts-*"))
+    before = len(list(parts.glob("part-*.parquet")))
+    assert 3 <= before < 115
+    (parts / ".part-000000000000-000000000800.parquet.killed.tmp").write_bytes(b"half")
+    (out / ".summary.csv.killed.tmp").write_bytes(b"half")
+    done = subprocess.run([*base, "--chunk", "50", "-j", "2"], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert f"({before} complete already)" in done.stdout
+    table = pq.read_table(out / "summary.parquet")
+    assert table.column("variant").to_pylist() == list(range(800))
+    assert leftovers(out) == []
