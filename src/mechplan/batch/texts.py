@@ -7,7 +7,7 @@ from typing import Any
 from ..i18n import Text
 
 
-def say(key: str, **args: Any) -> Text:
+def say(msgid: str, /, **args: Any) -> Text:
     """Message ``batchsafe.<key>`` with its arguments (English as a ``str``, said again by
     ``tr``)."""
-    return Text(f"batchsafe.{key}", args)
+    return Text(f"batchsafe.{msgid}", args)
