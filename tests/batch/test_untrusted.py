@@ -49,7 +49,7 @@ def batch(tmp_path: Path, variants: str, *extra: str, template: Path = SLIDER,
     ('{ "engine.nonsense" = "1" }', "no value at engine.nonsense"),
 ])
 def test_a_variant_sets_only_values_the_template_has(tmp_path, capsys, values, words):
-    code, table, out = batch(tmp_path, f'[[students]]\nid = "s1"\nvalues = {values}\n',
+    code, _, out = batch(tmp_path, f'[[students]]\nid = "s1"\nvalues = {values}\n',
                              template=ENGINE)
     err = capsys.readouterr().err
     assert code == 2 and words in err and "class.toml" in err and "Traceback" not in err
@@ -138,7 +138,7 @@ def test_class_summary_escapes_formulas_and_keeps_numbers(tmp_path):
 
 
 def test_class_run_escapes_a_name(tmp_path):
-    code, _, out = batch(tmp_path, "id,name,links.1.lengths.OA\ns1,=cmd|'/C calc'!A0,-90 mm\n",
+    _, _, out = batch(tmp_path, "id,name,links.1.lengths.OA\ns1,=cmd|'/C calc'!A0,-90 mm\n",
                          suffix=".csv")
     rows = list(csv.DictReader((Path(out) / "summary.csv").open(encoding="utf-8")))
     assert rows[0]["name"] == "'=cmd|'/C calc'!A0"
@@ -261,8 +261,10 @@ def test_class_budget(tmp_path, capsys, count, words):
 @pytest.mark.parametrize("rule, words", [
     ('{ from = "1 mm", to = "1e400 mm" }', "must be finite numbers (got inf)"),
     ('{ from = "-1e400 mm", to = "1 mm", step = "1 mm" }', "(got -inf)"),
-    ('{ from = "0 mm", to = "1e300 mm", step = "1e-300 mm" }', "at most 1000000000000 steps (got inf)"),
-    ('{ from = "0 mm", to = "1 mm", step = "1e-320 mm" }', "at most 1000000000000 steps (got inf)"),
+    ('{ from = "0 mm", to = "1e300 mm", step = "1e-300 mm" }',
+     "at most 1000000000000 steps (got inf)"),
+    ('{ from = "0 mm", to = "1 mm", step = "1e-320 mm" }',
+     "at most 1000000000000 steps (got inf)"),
     ('{ from = "0 mm", to = "1e200 mm", step = "1 mm" }', "(got 1e+200)"),
     ('{ from = "0 mm", to = "1 mm", digits = 100000000000000000000 }', "digits must be at most 12"),
 ])
@@ -276,8 +278,8 @@ def test_rule_budget(tmp_path, capsys, rule, words):
 
 @pytest.mark.parametrize("vary, extra, words", [
     (["links.1.lengths.OA=80mm..120mm:100000", "links.2.lengths.AB=300mm..400mm:100000"], [],
-     "10000000000 variants × 360 positions = 3600000000000 variant-positions, about "
-     "1400 CPU-hours"),
+     ("10000000000 variants × 360 positions = 3600000000000 variant-positions, about "
+      "1400 CPU-hours")),
     (["links.1.lengths.OA=80mm..120mm:" + "9" * 400], [], "STEPS must be at most 1000000"),
     (["links.1.lengths.OA=80mm..120mm:10"], ["--positions", "100000000000"],
      "at most 100000 positions per variant"),

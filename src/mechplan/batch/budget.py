@@ -54,7 +54,8 @@ def check_sweep_budget(axes: Sequence[Any], positions: int) -> None:
     if variants > MAX_SWEEP_VARIANTS or work > MAX_VARIANT_POSITIONS:
         hours = work * SECONDS_PER_VARIANT_POSITION / 3600
         raise LimitError(say("sweep_budget", variants=_big(variants), positions=positions,
-                             work=_big(work), hours=f"{hours:.2g}" if hours < 100 else _big(round(hours)),
+                             work=_big(work),
+                             hours=f"{hours:.2g}" if hours < 100 else _big(round(hours)),
                              limit_variants=_big(MAX_SWEEP_VARIANTS),
                              limit_work=_big(MAX_VARIANT_POSITIONS)), key="--vary")
 
