@@ -25,7 +25,8 @@ def start(tmp_path: Path, command: str = "batch") -> tuple[subprocess.Popen[str]
     out = tmp_path / "out"
     args = {"batch": ["batch", str(SLIDER), str(table), "--format", "svg"],
             "sweep": ["sweep", str(SLIDER), "--vary", "links.1.lengths.OA=80mm..400mm:40",
-                      "--vary", "links.2.lengths.AB=300mm..420mm:20", "--chunk", "7"]}[command]
+                      "--vary", "links.2.lengths.AB=300mm..420mm:20", "--chunk", "7",
+                      "--positions", "7200"]}[command]
     proc = subprocess.Popen([sys.executable, "-m", "mechplan.cli", *args, "-o", str(out), "-j",
                              "2", "--no-progress"], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, start_new_session=True)
@@ -78,5 +79,29 @@ def test_sigkill_of_the_main_process_stops_the_workers(tmp_path):
     assert not any(alive(w) for w in workers)
     time.sleep(2)
     assert len(markers(out)) == done                # nobody goes on writing
-    proc.stdout.close() if proc.stdout else None
-    proc.stderr.close() if proc.stderr else None
+    proc.communicate()
+    # what a kill in the middle of a write leaves; the resume removes it and completes the class
+    todo = sorted({f"v{k:02d}" for k in range(1, 17)} - {m.parent.name for m in markers(out)})
+    (out / todo[0]).mkdir(exist_ok=True)
+    (out / todo[0] / ".answer_key.pdf.x1.tmp").write_bytes(b"half")
+    (out / ".summary.csv.x2.tmp").write_bytes(b"half")
+    again = subprocess.run([sys.executable, "-m", "mechplan.cli", "batch", str(SLIDER),
+                            str(tmp_path / "class.toml"), "-o", str(out), "--format", "svg",
+                            "-j", "2", "--no-progress"], capture_output=True, text=True,
+                           timeout=300, check=False)
+    assert again.returncode == 0, again.stderr
+    assert f"{16 - done} solved, {done} complete already" in again.stdout
+    assert len(list(out.glob("*/.complete"))) == 16 and not list(out.rglob("*.tmp"))
+
+
+def test_a_second_run_into_the_same_folder_is_refused(tmp_path):
+    proc, out = start(tmp_path, "sweep")
+    second = subprocess.run([sys.executable, "-m", "mechplan.cli", "sweep", str(SLIDER),
+                             "--vary", "links.1.lengths.OA=80mm..400mm:40", "-o", str(out),
+                             "-j", "1", "--no-progress"], capture_output=True, text=True,
+                            timeout=120, check=False)
+    assert proc.poll() is None                      # the first one is still at work
+    os.killpg(proc.pid, signal.SIGINT)
+    proc.communicate(timeout=60)
+    assert second.returncode == 2
+    assert "another mechplan run is writing into this folder" in second.stderr

@@ -25,7 +25,7 @@ from ..scene.document import parse_toml, read_text
 from .csvsafe import csv_safe_row
 from .engine import run_tasks
 from .keys import with_values
-from .outdir import prepare_output, subfolder
+from .outdir import locked, prepare_output, remove_stale, subfolder
 from .variants import Variant
 
 MARKER = ".complete"
@@ -106,6 +106,7 @@ def solve_variant(job: ClassJob, variant: Variant, index: int) -> tuple[int, dic
         with (folder / "summary.json").open(encoding="utf-8") as fh:
             return index, json.load(fh), True
     marker.unlink(missing_ok=True)
+    remove_stale(folder, ("",))       # a killed run's temporary files (we hold the lock)
     scene_path = folder / "scene.toml"
     write_atomic(scene_path, scene.encode())
     try:
@@ -187,12 +188,14 @@ def run_class(template: str | Path, variants: Sequence[Variant], out_dir: str | 
     rows: list[dict[str, Any] | None] = [None] * len(variants)
     skipped = 0
     calls = [(job, v, i) for i, v in enumerate(variants)]
-    for index, row, was_skipped in run_tasks(solve_variant, calls, workers=workers,
-                                             scheduler=scheduler, progress=progress,
-                                             desc="variants", unit="variant"):
-        rows[index] = row
-        skipped += was_skipped
-    done = [r for r in rows if r is not None]
-    failed = sum(r["status"] != "ok" for r in done)
-    summary = write_summary(out / SUMMARY, done)
+    with locked(out):
+        remove_stale(out, (SUMMARY + ".",))
+        for index, row, was_skipped in run_tasks(solve_variant, calls, workers=workers,
+                                                 scheduler=scheduler, progress=progress,
+                                                 desc="variants", unit="variant"):
+            rows[index] = row
+            skipped += was_skipped
+        done = [r for r in rows if r is not None]
+        failed = sum(r["status"] != "ok" for r in done)
+        summary = write_summary(out / SUMMARY, done)
     return ClassResult(done, len(done) - skipped - failed, skipped, failed, summary)

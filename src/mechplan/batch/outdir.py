@@ -73,8 +73,10 @@ def locked(out: Path, name: str = ".mechplan.lock") -> Iterator[None]:
     try:
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except OSError:
+        except BlockingIOError:
             raise MechplanError(say("busy"), file=str(out)) from None
+        except OSError:             # a file system without locks (some network ones): go on
+            pass
         yield
     finally:
         os.close(fd)
