@@ -42,7 +42,7 @@ def check_scheduler(address: str) -> str:
     """Refuse a scheduler address that is not ``[tcp://]HOST:PORT`` before connecting."""
     m = _ADDRESS.match(address.strip())
     if not m or not 0 < int(m.group(2)) < 65536:
-        raise MechplanError(say("scheduler_address", address=repr(address)), key="--scheduler")
+        raise MechplanError(say("scheduler_address", address=repr(address)))
     return address.strip()
 
 

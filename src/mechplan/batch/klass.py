@@ -23,7 +23,7 @@ from ..errors import MechplanError
 from ..render.atomic import write_atomic
 from ..scene.document import parse_toml, read_text
 from .csvsafe import csv_safe_row
-from .engine import run_tasks
+from .engine import check_scheduler, run_tasks
 from .keys import with_values
 from .outdir import locked, prepare_output, remove_stale, subfolder
 from .variants import Variant
@@ -177,6 +177,8 @@ def run_class(template: str | Path, variants: Sequence[Variant], out_dir: str | 
     Every key a variant sets is checked against the template first: a key the template does not
     have, a table or a path out of the folder refuses the class (naming ``variants_file``).
     """
+    if scheduler:
+        check_scheduler(scheduler)
     template = Path(template)
     text = read_text(template)
     doc = parse_toml(text, str(template))

@@ -26,7 +26,7 @@ from ..render.atomic import atomic_open, write_atomic
 from ..scene.document import read_text
 from .budget import check_sweep_budget
 from .csvsafe import csv_safe_table
-from .engine import default_workers, run_tasks
+from .engine import check_scheduler, default_workers, run_tasks
 from .outdir import locked, prepare_output, remove_stale, subfolder
 from .parts import Part, chunks, cover, scan, write_part
 from .plan import Axis, SweepPlan, make_plan
@@ -203,7 +203,9 @@ def run_sweep(scene: str | Path, axes: Sequence[Axis], out_dir: str | Path, *,
     chunk sizes wrote them; the summary holds every variant exactly once, in order.
     """
     if chunk is not None and chunk < 1:
-        raise MechplanError(say("chunk", value=chunk), key="--chunk")
+        raise MechplanError(say("chunk", value=chunk))
+    if scheduler:
+        check_scheduler(scheduler)
     check_sweep_budget(axes, positions)
     scene = Path(scene)
     text = read_text(scene)
