@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
+import pytest
 
 import mechplan.batch.sweep as sweep_module
 from mechplan.batch.parts import Part, cover
@@ -87,6 +88,8 @@ def test_interrupted_at_random_points_and_resumed_equals_one_run(tmp_path, monke
                       chunk=chunk)
         except KeyboardInterrupt:
             interrupted += 1
+        if (out / "summary.parquet").exists():     # only ever a whole summary
+            assert pq.read_table(out / "summary.parquet").num_rows == SIZE
         parts = next(out.glob("parts-*"))
         # what a SIGKILL in the middle of a write leaves, and a damaged part
         (parts / f".part-{round_:012d}-000000000035.parquet.k{round_}.tmp").write_bytes(b"x")
@@ -95,6 +98,25 @@ def test_interrupted_at_random_points_and_resumed_equals_one_run(tmp_path, monke
             (parts / "part-000000000030-000000000035.parquet").write_bytes(b"PAR1 damaged")
     assert interrupted >= 5
     monkeypatch.setattr(sweep_module, "write_part", real_write)
+    # Ctrl-C in the middle of writing the summary: neither summary file is left half-written
+    real_safe = sweep_module.csv_safe_table
+    calls = 0
+
+    def safe_then_stop(table):
+        nonlocal calls
+        calls += 1
+        if calls == 3:
+            raise KeyboardInterrupt
+        return real_safe(table)
+
+    monkeypatch.setattr(sweep_module, "csv_safe_table", safe_then_stop)
+    (out / "summary.csv").unlink(missing_ok=True)
+    (out / "summary.parquet").unlink(missing_ok=True)
+    with pytest.raises(KeyboardInterrupt):
+        run_sweep(SLIDER, AXES, out, positions=POSITIONS, workers=1, progress=False, chunk=3)
+    assert not (out / "summary.csv").exists() and not (out / "summary.parquet").exists()
+    assert leftovers(out) == []
+    monkeypatch.setattr(sweep_module, "csv_safe_table", real_safe)
     result = run_sweep(SLIDER, AXES, out, positions=POSITIONS, workers=2, progress=False,
                        chunk=None)
     table = pq.read_table(result.parquet)
