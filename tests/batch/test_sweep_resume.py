@@ -13,6 +13,8 @@ import numpy as np
 import pyarrow as pa
 import pyarrow.parquet as pq
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 import mechplan.batch.sweep as sweep_module
 from mechplan.batch.parts import Part, cover
@@ -48,6 +50,22 @@ def test_cover_takes_each_variant_once():
     assert got.gaps == [(200, 240), (260, 300)] and got.unused == []
     inner = Part(Path("d"), 10, 20)
     assert cover([a, inner], 100).unused == [inner]
+
+
+@given(st.integers(1, 60), st.lists(st.tuples(st.integers(0, 60), st.integers(1, 20)),
+                                   max_size=12))
+def test_cover_property_each_variant_exactly_once(size, spans):
+    parts = [Part(Path(f"p{i}"), a, min(a + n, size)) for i, (a, n) in enumerate(spans)
+             if a < size]
+    got = cover(parts, size)
+    taken = [v for p, lo, hi in got.segments for v in range(lo, hi)]
+    missing = [v for lo, hi in got.gaps for v in range(lo, hi)]
+    assert sorted(taken + missing) == list(range(size))          # each variant once
+    assert taken == sorted(taken) and missing == sorted(missing)
+    assert all(p.start <= lo < hi <= p.stop for p, lo, hi in got.segments)
+    held = {v for p in parts for v in range(p.start, p.stop)}
+    assert set(missing) == set(range(size)) - held                # only what no part holds
+    assert not {p.path for p in got.unused} & {p.path for p, _, _ in got.segments}
 
 
 def test_chunk_100_then_150_keeps_every_row(tmp_path):
