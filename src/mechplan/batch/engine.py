@@ -12,6 +12,8 @@ import os
 import re
 import signal
 import sys
+import threading
+import time
 import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
@@ -22,20 +24,23 @@ from ..errors import MechplanError
 from .texts import say
 
 _ADDRESS = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+):(\d{1,5})$")
-_PR_SET_PDEATHSIG = 1
+#: how often a local worker checks that the main process is still there (seconds)
+WATCH_SECONDS = 0.2
 
 
 def _worker_init(owner: int) -> None:
     """Start a local worker: Ctrl-C is the main process's to handle (no worker tracebacks),
-    and the worker dies with the main process (Linux) instead of going on writing."""
+    and the worker ends as soon as the main process is gone instead of going on writing."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    with contextlib.suppress(Exception):
-        import ctypes
+    # a watchdog, not the parent-death signal: that one follows the thread that started the
+    # worker, and a reused worker may outlive it
+    threading.Thread(target=_watch, args=(owner,), name="mechplan-watch", daemon=True).start()
 
-        libc = ctypes.CDLL(None, use_errno=True)
-        libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL)
-    if os.getppid() != owner:            # the main process died before the signal was armed
-        os._exit(1)
+
+def _watch(owner: int) -> None:
+    while os.getppid() == owner:
+        time.sleep(WATCH_SECONDS)
+    os._exit(1)
 
 
 def check_scheduler(address: str) -> str:
