@@ -184,13 +184,18 @@ def test_a_data_dir_named_by_the_user(tmp_path):
 def test_a_variant_pointing_the_indicator_table_at_etc_passwd_leaks_nothing(tmp_path):
     template = _engine(tmp_path, "pv.csv")
     out = tmp_path / "class"
-    run_class(template, [Variant("s1", "Ivanov", {"indicator.file": "/etc/passwd"})], out,
-              formats=("svg",), workers=1, progress=False)
+    try:        # the class refuses the value up front, or the scene refuses the path
+        run_class(template, [Variant("s1", "Ivanov", {"indicator.file": "/etc/passwd"})], out,
+                  formats=("svg",), workers=1, progress=False)
+    except SceneError as exc:
+        assert exc.key == "indicator.file" and "root:" not in str(exc)
+    else:
+        rows = list(csv.DictReader(io.StringIO((out / "summary.csv").read_text(
+            encoding="utf-8"))))
+        assert rows and rows[0]["error"] and "root:" not in rows[0]["error"]
     written = "".join(p.read_text(encoding="utf-8", errors="replace")
                       for p in out.rglob("*") if p.is_file() and p.suffix != ".toml")
     assert "root:" not in written
-    rows = list(csv.DictReader(io.StringIO((out / "summary.csv").read_text(encoding="utf-8"))))
-    assert rows and rows[0]["error"] and "root:" not in rows[0]["error"]
 
 
 def _pv_table(folder: Path) -> Path:
