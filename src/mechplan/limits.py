@@ -73,6 +73,8 @@ DXF_MAX_BYTES = 128 * 1024**2
 # -- what a submission may hold -------------------------------------------------------------------
 #: rows of a submitted table (a whole course project has a few hundred values)
 TABLE_MAX_ROWS = 20_000
+#: tables and arrays nested in a submitted TOML table (an answer table nests three or four)
+TABLE_MAX_NESTING = 16
 #: characters of one cell of a CSV table (Python's csv default field limit)
 CSV_CELL_MAX_CHARS = 128 * 1024
 #: entities of a DXF sheet, counted as read with every block INSERT expanded; a full A1 sheet

@@ -179,3 +179,16 @@ def test_nearest_component_keeps_the_first_of_equals():
     assert graph.nearest_component((15, 0)) == graph.component[1]   # node (10, 0) comes first
     assert graph.nearest_component((15, 0), {graph.component[2]}) == graph.component[2]
     assert graph.nearest_component((15, 0), set()) == -1
+
+
+@pytest.mark.parametrize("text", ["a = " + "[" * 1000 + "]" * 1000,
+                                  "x = " + "{a = " * 600 + "1" + "}" * 600,
+                                  "x = " + "[" * 20 + "1" + "]" * 20])
+def test_a_table_nested_absurdly_deep_is_refused(tmp_path, text):
+    table = tmp_path / "deep.toml"
+    table.write_text(text + "\n", encoding="utf-8")
+    with pytest.raises(CheckError, match=f"more than {limits.TABLE_MAX_NESTING} levels"):
+        read_submission(table)
+    machine = FOUR_BAR.with_name("machine_unit.toml")         # an answer table of a study
+    with pytest.raises(CheckError, match="levels"):
+        check(machine, table)

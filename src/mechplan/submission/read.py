@@ -23,7 +23,7 @@ import numpy as np
 from ..errors import CheckError
 from ..geom.sketch import box_distance
 from ..i18n import Text
-from ..limits import CSV_CELL_MAX_CHARS, TABLE_MAX_ROWS
+from ..limits import CSV_CELL_MAX_CHARS, TABLE_MAX_NESTING, TABLE_MAX_ROWS
 from ..userfiles import DXF, TABLE, read_bytes
 from .texts import T
 
@@ -361,6 +361,11 @@ def load_toml(path: Path) -> tuple[dict[str, Any], Callable[[str], str]]:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
+    except RecursionError:      # tomllib reads nested arrays and tables recursively
+        data = None
+    if data is None or _nesting(data) > TABLE_MAX_NESTING:
+        raise CheckError(Text("readers.error.nesting", {"limit": TABLE_MAX_NESTING}),
+                         file=str(path))
     lines = text.splitlines()
 
     def where(key: str) -> str:
@@ -369,6 +374,19 @@ def load_toml(path: Path) -> tuple[dict[str, Any], Callable[[str], str]]:
         return T("where.key", file=path.name, key=key) if n is None else T(
             "where.line", file=path.name, n=n)
     return data, where
+
+
+def _nesting(data: Any) -> int:
+    """How deep tables and arrays are nested in parsed TOML (counted without recursion)."""
+    deepest, stack = 0, [(data, 1)]
+    while stack:
+        item, depth = stack.pop()
+        deepest = max(deepest, depth)
+        if isinstance(item, dict):
+            stack.extend((v, depth + 1) for v in item.values() if isinstance(v, (dict, list)))
+        elif isinstance(item, list):
+            stack.extend((v, depth + 1) for v in item if isinstance(v, (dict, list)))
+    return deepest
 
 
 def csv_rows(path: Path, dialect: Callable[[str], Any]) -> list[list[str]]:
