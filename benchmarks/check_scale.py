@@ -29,6 +29,7 @@ ROOT = HERE.parent
 RESULTS = HERE / "CHECK_SCALE_RESULTS.md"
 DATA = HERE / ".check_scale_results.json"
 SCENE = ROOT / "src" / "mechplan" / "templates" / "four_bar.toml"
+ENGINE = ROOT / "src" / "mechplan" / "templates" / "motorcycle_engine.toml"
 #: address-space limit of each measured process (MB)
 MEMORY_MB = 6144
 
@@ -92,6 +93,16 @@ def csv_table(rows: int, out: Path) -> Path:
     return out
 
 
+def answer_table(rows: int, out: Path) -> Path:
+    """An engine's answer table of ``rows`` rows of 8 values each (φ; p; Pг; Pj; P; N; T; Z;
+    Mкр), angles cycling every 15°: what a student's spreadsheet export may hold."""
+    lines = ["φ;p (Па);Pг (Н);Pj (Н);P (Н);N (Н);T (Н);Z (Н);Mкр (Н*м)"]
+    lines += [f"{(i * 15) % 720};85000;-37,6;-3830;-3868;-431,4;-2308;-3134;-54,23"
+              for i in range(rows)]
+    out.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    return out
+
+
 def measure(scene: Path, submission: Path, timeout: float, src: Path) -> dict[str, object]:
     """Check ``submission`` in a fresh process (mechplan from ``src``): seconds, peak MB,
     outcome."""
@@ -126,9 +137,10 @@ def write(data: dict[str, dict[str, dict[str, object]]], meta: dict[str, str]) -
              "process, its peak resident memory, and what it returned. `lines`: the drawn four-bar",
              "sheet grown by random short lines to N model-space entities; `lines+texts`: one in",
              "ten added entities is a random label text; `csv`: a CSV table of N `name, value`",
-             "rows. The machine is shared (2 cores, 6 other developers): identical checks of small",
-             "sheets vary between 0.7 and 2.2 s, so sizes below 10,000 say little; the large sizes",
-             "are what this measures (`--repeat N` keeps the fastest of N runs).",
+             "rows; `answers`: an engine's answer table (motorcycle_engine.toml) of N rows of 8",
+             "values. The machine is shared (2 cores, 6 other developers): identical checks of",
+             "small sheets vary between 0.7 and 2.2 s, so sizes below 10,000 say little; the large",
+             "sizes are what this measures (`--repeat N` keeps the fastest of N runs).",
              "", *(f"- {k}: {v}" for k, v in meta.items()), "",
              "| submission | N | " + " | ".join(labels) + " |",
              "|---|---:|" + "---|" * len(labels)]
@@ -143,7 +155,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", default="1000,10000,30000,100000")
     parser.add_argument("--csv-sizes", default="1000,10000,30000")
-    parser.add_argument("--kinds", default="lines,lines+texts,csv")
+    parser.add_argument("--answer-sizes", default="500,2000")
+    parser.add_argument("--kinds", default="lines,lines+texts,csv,answers")
     parser.add_argument("--label", default="after")
     parser.add_argument("--timeout", type=float, default=600.0)
     parser.add_argument("--repeat", type=int, default=1, help="keep the fastest of N runs")
@@ -165,11 +178,16 @@ def main() -> None:
         folder = Path(tmp)
         base = base_sheet(folder) if kinds else folder
         for kind in kinds:
-            sizes = args.csv_sizes if kind == "csv" else args.sizes
+            sizes = {"csv": args.csv_sizes, "answers": args.answer_sizes}.get(kind, args.sizes)
             for n in (int(s) for s in sizes.split(",") if s):
-                sub = (csv_table(n, folder / f"t{n}.csv") if kind == "csv" else
-                       grown_sheet(base, n, kind == "lines+texts", folder / f"s{n}.dxf"))
-                runs = [measure(SCENE, sub, args.timeout, args.src)
+                if kind == "csv":
+                    sub = csv_table(n, folder / f"t{n}.csv")
+                elif kind == "answers":
+                    sub = answer_table(n, folder / f"a{n}.csv")
+                else:
+                    sub = grown_sheet(base, n, kind == "lines+texts", folder / f"s{n}.dxf")
+                scene = ENGINE if kind == "answers" else SCENE
+                runs = [measure(scene, sub, args.timeout, args.src)
                         for _ in range(max(1, args.repeat))]
                 timed = [r for r in runs if r["seconds"] is not None]
                 m = min(timed, key=lambda r: float(r["seconds"])) if timed else runs[0]  # type: ignore[arg-type]

@@ -192,3 +192,21 @@ def test_a_table_nested_absurdly_deep_is_refused(tmp_path, text):
     machine = FOUR_BAR.with_name("machine_unit.toml")         # an answer table of a study
     with pytest.raises(CheckError, match="levels"):
         check(machine, table)
+
+
+@pytest.mark.parametrize("seed", [7, 8, 9])
+def test_swaps_tried_within_groups_pair_as_all_pairs_do(seed):
+    """Swapped answers are looked for among values of one angle and dimension only: the pairs
+    (and their order) are those of trying every pair."""
+    from mechplan.check.context import swaps
+
+    rng = np.random.default_rng(seed)
+    items = [(int(rng.integers(0, 4)), int(rng.integers(0, 3)), int(rng.integers(0, 5)))
+             for _ in range(300)]        # (angle, dimension, value)
+
+    def fits(a, b):
+        return a[:2] == b[:2] and abs(a[2] - b[2]) <= 1
+
+    everything = swaps(items, fits)
+    assert len(everything) > 50
+    assert swaps(items, fits, group=lambda r: r[:2]) == everything
