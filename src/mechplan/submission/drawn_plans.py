@@ -22,6 +22,7 @@ from ..errors import CheckError
 from ..geom.sketch import box_gap
 from ..i18n import Text, join, plan_title, with_case
 from ..model.plans import Plan
+from .notation import units_ascii
 from .labels import Candidate, LabelBook, PlanKey, feature_votes, layer_plan, mu_plan, written_mu
 from .read import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .sketch import Graph, drawn_graph, place_labels
@@ -102,6 +103,8 @@ def find_plans(sub: Submission, book: LabelBook, label_distance: float | None = 
     other = [e for e in sub.entries if mu_plan(e.name) is None]
     labels: list[_Label] = []
     for t in sub.texts:
+        if axis_title(t.text):             # "a, m/s²": a diagram's axis, not a point
+            continue
         names = label_names(t.text)
         readings = [(n, book.candidates(n)) for n in names]
         readings = [(n, cands) for n, cands in readings if cands]
@@ -128,6 +131,21 @@ def find_plans(sub: Submission, book: LabelBook, label_distance: float | None = 
         if dp.plan not in mu_elsewhere:
             _scale_of(dp, scale_entries, notes)
     return DrawnSheet(plans, notes, label_distance, other)
+
+
+#: unit symbols an axis title writes after its quantity ("s, m", "φ, °", "F, N")
+_UNIT_WORDS = frozenset({"m", "mm", "N", "kN", "J", "kJ", "°", "rad", "deg", "W", "kW", "Pa",
+                         "kPa", "MPa", "kg", "s"})
+
+
+def axis_title(text: str) -> bool:
+    """True for the title of a diagram's axis: a quantity and its unit after a comma ("a, m/s²",
+    "ψ, °", "M_b, N·m"), which is no label of a point ("p, o1" names one point twice)."""
+    parts = [x.strip() for x in text.split(",")]
+    if len(parts) != 2 or not parts[0] or not parts[1]:
+        return False
+    unit = units_ascii(parts[1])
+    return unit in _UNIT_WORDS or any(ch in unit for ch in "/²³·*^")
 
 
 def _no_labels(sub: Submission, book: LabelBook) -> Exception:
@@ -200,19 +218,27 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
                 break
         else:
             groups.append((key, [comp], list(members)))
-    counts = Counter(key for key, _, _ in groups)
-    seen: Counter[PlanKey] = Counter()
+    found: list[DrawnPlan] = []
     for key, comps_, members in groups:
         dp = DrawnPlan(key)
-        if counts[key] > 1:
-            seen[key] += 1
-            dp.number = seen[key]
         for comp in comps_:
             dp.lines.extend(lines_of.get(comp, []))
         _resolve(dp, members, book, notes)
+        if len(dp.points) < 2:
+            # one labelled point measures nothing: a stray label (a lever's pole, a letter of
+            # a note), not a plan whose every segment would be "missing"
+            for lp in dp.points.values():
+                notes.append(Note("info", T("note.lone_label", written=lp.written), lp.where))
+            continue
         _pole(dp, book, graph, sub, notes)
-        if dp.points:
-            plans.append(dp)
+        found.append(dp)
+    counts = Counter(dp.key for dp in found)
+    seen: Counter[PlanKey] = Counter()
+    for dp in found:
+        if counts[dp.key] > 1:
+            seen[dp.key] += 1
+            dp.number = seen[dp.key]
+        plans.append(dp)
     for key, n in counts.items():
         if n > 1:
             notes.append(Note("warning", T("note.repeated_plans", n=n,
