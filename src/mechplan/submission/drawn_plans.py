@@ -269,9 +269,27 @@ def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLi
             hints.add(plan)
     # a scale-factor text belongs to the labelled drawing nearest to it
     for plan, entry in scale_entries:
-        if entry.at is not None and graph.nearest_component(entry.at, labelled) == comp:
+        if entry.at is not None and _mu_owner(entry.at, graph, labelled) == comp:
             hints.add(plan)
     return hints
+
+
+def _mu_owner(at: Point, graph: Graph, labelled: set[int]) -> int:
+    """The labelled drawing a scale-factor text at ``at`` belongs to: the one whose box is
+    nearest (a text stands above or beside its plan; a long vector's far end is no measure of
+    where its drawing is); among drawings whose boxes hold the text, the one with the nearest
+    line end."""
+    comp = np.asarray(graph.component)
+    best: list[tuple[float, float, int]] = []
+    for c in labelled:
+        pts = graph.nodes[comp == c]
+        if not len(pts):
+            continue
+        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        gap = np.maximum(np.maximum(lo - at, np.asarray(at) - hi), 0.0)
+        node = float(np.hypot(*(pts - at).T).min())
+        best.append((float(np.hypot(*gap)), node, c))
+    return min(best)[2] if best else -1
 
 
 def _reading(lb: _Label, key: PlanKey, convention: str = "") -> Candidate | None:
