@@ -23,6 +23,7 @@ from ..construct.ops import Drawn, spec
 from ..construct.step import Kind
 from ..drafting.frame import make_frame
 from ..i18n import decimal_mark, message, plan_title, tr, unit
+from ..model.mechanism import GROUND
 from ..model.plans import Plan
 from ..scene.spec import Scene
 
@@ -124,6 +125,17 @@ def _tables_mm(c: Construction, plan: Plan) -> float:
     return rows * ROW_MM + 10.0
 
 
+#: the tables of a plan go beside it, on their own panel, when under it they would leave the
+#: plan less than this share of the drawing area's height
+TABLES_APART = 0.4
+
+
+def tables_apart(c: Construction, plan: Plan, r: Room) -> bool:
+    """Whether a plan's tables go on a panel of their own (they are too tall to stand under the
+    plan on this sheet: the plan would be squeezed to a strip)."""
+    return r.height - _tables_mm(c, plan) - TITLE_MM - LINES_MM < TABLES_APART * r.height
+
+
 @dataclass(frozen=True)
 class PlanScale:
     """The scale factor of one plan and why: the panel its drawing fills, its extent.
@@ -222,7 +234,10 @@ def decide(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]
     r = room(size, standard)
     n = ev.n
     mech = scene.mechanism
-    points = [c.position(p) for lk in mech.links.values() for p in lk.points]
+    # the points drawn: those of the moving links (a far point of the frame that only gives a
+    # force its direction is not drawn)
+    points = list(dict.fromkeys(c.position(p) for lk in mech.links.values() if lk.id != GROUND
+                                for p in lk.points))
     sweep = c.evaluate(np.linspace(0.0, 2.0 * math.pi, 73))
     for p in points:
         sweep.get(p)
@@ -253,9 +268,12 @@ def decide(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]
             extent = _extent(ev, ids, every if plan is Plan.VELOCITY else chosen)
         extents[plan] = extent
         positions[plan] = every if plan is Plan.VELOCITY else chosen
-        # a plan with its tables under it, its title and μ line, construction lines past points
-        tall = r.height - _tables_mm(c, plan) - TITLE_MM - LINES_MM
-        rooms[plan] = (r.width - LINES_MM, max(tall, 1.0))
+        # a plan with its tables under it (or apart), its title and μ line, construction lines
+        # running past its points
+        tables = 0.0 if tables_apart(c, plan, r) else _tables_mm(c, plan)
+        tall = r.height - tables - TITLE_MM - LINES_MM
+        # the most a plan can get: the whole drawing area, its tables then on a panel apart
+        rooms[plan] = (r.width - LINES_MM, r.height - TITLE_MM - LINES_MM)
         boxes[plan] = (max(0.3 * r.width, wide), max(min(tall, 0.5 * r.height), 1.0))
         if plan is Plan.VELOCITY and len(every) > len(chosen):
             # the velocity plans of every position share about 30 % of the drawing area
@@ -263,6 +281,8 @@ def decide(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]
             cell = max(cell, min(MIN_CELL_MM, r.width - LINES_MM))
             boxes[plan] = (min(cell, boxes[plan][0]), min(cell, boxes[plan][1]))
             rooms[plan] = (r.width - LINES_MM, r.height - 2 * TITLE_MM - LINES_MM)
+    # a value fixed in the scene, or a plan enlarged for readable segments, may take the whole
+    # drawing area: the sheet then puts its tables on a panel of their own (compose)
     own = size == scene.drawing.sheet and standard == scene.drawing.standard
     out: dict[Plan, PlanScale] = {}
     for plan, box in boxes.items():
@@ -354,4 +374,5 @@ def drawable(c: Construction, ev: Evaluation, plan: Plan) -> bool:
 
 
 __all__ = ["Decision", "PlanScale", "Room", "chosen_positions", "decide", "decide_scales",
-           "decision_json", "drawable", "mu_said", "notes", "room", "velocity_positions"]
+           "decision_json", "drawable", "mu_said", "notes",
+           "tables_apart", "room", "velocity_positions"]

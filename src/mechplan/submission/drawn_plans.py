@@ -224,14 +224,16 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
         for comp in comps_:
             dp.lines.extend(lines_of.get(comp, []))
         _resolve(dp, members, book, notes)
-        if len(dp.points) < 2:
-            # one labelled point measures nothing: a stray label (a lever's pole, a letter of
-            # a note), not a plan whose every segment would be "missing"
-            for lp in dp.points.values():
-                notes.append(Note("info", T("note.lone_label", written=lp.written), lp.where))
-            continue
         _pole(dp, book, graph, sub, notes)
-        found.append(dp)
+        if dp.points:
+            found.append(dp)
+    if any(len(dp.points) >= 2 for dp in found):
+        # beside real plans, one labelled point measures nothing: a stray label (a lever's
+        # pole, a letter of a note), not a plan whose every segment would be "missing"
+        for dp in found:
+            for lp in dp.points.values() if len(dp.points) < 2 else ():
+                notes.append(Note("info", T("note.lone_label", written=lp.written), lp.where))
+        found = [dp for dp in found if len(dp.points) >= 2]
     counts = Counter(dp.key for dp in found)
     seen: Counter[PlanKey] = Counter()
     for dp in found:
