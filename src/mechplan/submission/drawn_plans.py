@@ -227,13 +227,16 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
         _pole(dp, book, graph, sub, notes)
         if dp.points:
             found.append(dp)
-    if any(len(dp.points) >= 2 for dp in found):
-        # beside real plans, one labelled point measures nothing: a stray label (a lever's
-        # pole, a letter of a note), not a plan whose every segment would be "missing"
-        for dp in found:
-            for lp in dp.points.values() if len(dp.points) < 2 else ():
-                notes.append(Note("info", T("note.lone_label", written=lp.written), lp.where))
-        found = [dp for dp in found if len(dp.points) >= 2]
+    # one labelled point measures nothing: beside real plans it is a stray label (a letter of a
+    # note), and a pole alone is no plan anywhere (Zhukovsky's lever labels its pole p) — not
+    # plans whose every segment would be "missing"
+    others = any(len(dp.points) >= 2 for dp in found)
+    lone = [dp for dp in found if len(dp.points) == 1
+            and (others or set(dp.points) == {book.poles.get(dp.key)})]
+    for dp in lone:
+        for lp in dp.points.values():
+            notes.append(Note("info", T("note.lone_label", written=lp.written), lp.where))
+    found = [dp for dp in found if all(dp is not x for x in lone)]
     counts = Counter(dp.key for dp in found)
     seen: Counter[PlanKey] = Counter()
     for dp in found:
