@@ -408,8 +408,10 @@ def position_plan(
             q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
                 prims.append(Circle(q, 0.8, Role.OUTLINE))
+    marked = [p.center for p in prims if isinstance(p, Circle) and p.role is Role.OUTLINE
+              and p.radius <= 1.0]
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H,
-                         _ends(prims))
+                         marked, _ends(prims))
     for p in names:
         if _has(ev_all, p):
             q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
@@ -422,16 +424,14 @@ def position_plan(
 
 
 def _ends(prims: list) -> list[tuple[float, float]]:
-    """Points a reader can give a label to: line ends, vertices of the links of every drawn
-    position and point markers (not the dash-dot trajectories and axes, which it skips)."""
+    """Unmarked points a reader can give a label to: line ends and vertices of the links of every
+    drawn position (not the dash-dot trajectories and axes, which it skips)."""
     out: list[tuple[float, float]] = []
     for p in prims:
         if isinstance(p, Line) and p.role is not Role.CHAIN:
             out += [p.start, p.end]
         elif isinstance(p, Polyline) and p.role is not Role.CHAIN:
             out += list(p.points)
-        elif isinstance(p, Circle) and p.role is Role.OUTLINE and p.radius <= 1.0:
-            out.append(p.center)
     return out
 
 
