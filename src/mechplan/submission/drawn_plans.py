@@ -141,6 +141,8 @@ _UNIT_WORDS = frozenset({"m", "mm", "N", "kN", "J", "kJ", "°", "rad", "deg", "W
 def axis_title(text: str) -> bool:
     """True for the title of a diagram's axis: a quantity and its unit after a comma ("a, m/s²",
     "ψ, °", "M_b, N·m"), which is no label of a point ("p, o1" names one point twice)."""
+    if "=" in text or ":" in text:
+        return False
     parts = [x.strip() for x in text.split(",")]
     if len(parts) != 2 or not parts[0] or not parts[1]:
         return False
