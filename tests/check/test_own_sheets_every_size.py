@@ -46,7 +46,8 @@ def test_the_grid_is_every_linkage_template():
 
 def _params() -> list:
     return [pytest.param(path, id=path.stem, marks=[pytest.mark.xfail(
-        reason=KNOWN[path.stem], strict=False)] if path.stem in KNOWN else []) for path in TEMPLATES]
+        reason=KNOWN[path.stem], strict=False)] if path.stem in KNOWN else [])
+        for path in TEMPLATES]
 
 
 @pytest.mark.parametrize("path", _params())

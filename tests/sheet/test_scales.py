@@ -7,6 +7,7 @@ segments), not from the rule's own helpers.
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import json
 import math
 from functools import cache
@@ -134,7 +135,7 @@ def test_scale_factors_do_not_jump_across_sizes(stem):
             if not drawable(sol.construction, sol.ev, plan):
                 continue
             mus = [d[size].plans[plan].mu for size in SIZES]
-            for big, small in zip(mus, mus[1:]):
+            for big, small in itertools.pairwise(mus):
                 assert small <= big * (1 + 1e-9) and big / small <= 4.0 + 1e-9, (plan, mus)
 
 

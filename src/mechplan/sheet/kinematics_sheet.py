@@ -173,7 +173,7 @@ def drawing_of(panel: Panel) -> Panel:
 def split_tables(panel: Panel, title: str, apart: bool, r: Room) -> list[Panel]:
     """A plan panel as it goes on the sheet: whole, or its drawing and its tables apart (when
     the scale decision says so, or the plan with its tables is taller than the drawing area)."""
-    x0, y0, x1, y1 = panel.bounds()
+    _x0, y0, _x1, y1 = panel.bounds()
     if not apart and y1 - y0 <= r.height:
         return [panel]
     tables = tables_of(panel, title)

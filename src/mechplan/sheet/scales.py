@@ -18,8 +18,8 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction, Evaluation
-from ..construct.scale import ROUND_MANTISSAS, round_scale
 from ..construct.ops import Drawn, spec
+from ..construct.scale import ROUND_MANTISSAS, round_scale
 from ..construct.step import Kind
 from ..drafting.frame import make_frame
 from ..i18n import decimal_mark, message, plan_title, tr, unit
@@ -218,21 +218,19 @@ def _largest_round(per_mm: float) -> float:
     return float(f"{(lower[-1] if lower else 0.5) * 10.0 ** k:.12g}")
 
 
-def decide(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...],
-           size: str | None = None, standard: str | None = None) -> Decision:
-    """Scale factors of every plan for a sheet size (the scene's own sheet by default).
+@dataclass(frozen=True)
+class _Place:
+    """Where a plan goes on a sheet: its extent (physical), its share of the drawing area and
+    the most it can get (mm), and the positions it is drawn at."""
 
-    One rule for every plan on every size: μ is the smallest round value at which the plan's
-    extent fits its panel — so the plan fills between half and all of it (the ladder 1, 2, 2.5,
-    4, 5 has gaps of 2) — where a panel is the plan's share of the drawing area (never narrower
-    than :data:`MIN_BOX_MM`); when a segment would be shorter than :data:`MIN_SEGMENT_MM` the plan
-    gets up to the whole drawing area. A value fixed in the scene is kept on its own sheet, and on
-    another wherever the plan fits the whole drawing area at it.
-    """
-    size = size or scene.drawing.sheet
-    standard = standard or scene.drawing.standard
-    r = room(size, standard)
-    n = ev.n
+    extent: tuple[float, float]
+    box: tuple[float, float]
+    room: tuple[float, float]
+    positions: list[int]
+
+
+def _places(scene: Scene, c: Construction, ev: Evaluation, r: Room) -> dict[Plan, _Place]:
+    """The place of every plan on a sheet whose free rectangle is ``r``."""
     mech = scene.mechanism
     # the points drawn: those of the moving links (a far point of the frame that only gives a
     # force its direction is not drawn)
@@ -241,73 +239,83 @@ def decide(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...]
     sweep = c.evaluate(np.linspace(0.0, 2.0 * math.pi, 73))
     for p in points:
         sweep.get(p)
-    ext = _extent(sweep, points, None)
-    ext_now = _extent(ev, points, None)
-    ext = (max(ext[0], ext_now[0]), max(ext[1], ext_now[1]))
+    ext, ext_now = _extent(sweep, points, None), _extent(ev, points, None)
     wide = min(MIN_BOX_MM, r.width - LINES_MM)
-    chosen = chosen_positions(scene, n)
-    every = velocity_positions(scene, n)
+    chosen = chosen_positions(scene, ev.n)
+    every = velocity_positions(scene, ev.n)
     # the position plan: about half the width and three quarters of the height, with margins
-    boxes: dict[Plan, tuple[float, float]] = {
-        Plan.POSITION: (max(0.55 * r.width - 40.0, wide), 0.75 * r.height - 40.0)}
-    rooms: dict[Plan, tuple[float, float]] = {
-        Plan.POSITION: (r.width - 40.0, r.height - 40.0)}
-    extents: dict[Plan, tuple[float, float]] = {Plan.POSITION: ext}
-    positions: dict[Plan, list[int]] = {Plan.POSITION: chosen}
+    out = {Plan.POSITION: _Place((max(ext[0], ext_now[0]), max(ext[1], ext_now[1])),
+                                 (max(0.55 * r.width - 40.0, wide), 0.75 * r.height - 40.0),
+                                 (r.width - 40.0, r.height - 40.0), chosen)}
     for plan in (Plan.VELOCITY, Plan.ACCELERATION, Plan.FORCE):
-        if plan is Plan.FORCE:
-            groups = {s.group for s in c.of_plan(plan)}
-            extent = (0.0, 0.0)
-            for g in groups:
-                gid = [s.id for s in c.of_plan(plan) if s.group == g and s.kind is Kind.POINT
-                       and s.id in ev.values and spec(s.op).draw in (Drawn.VERTEX, Drawn.MEET)]
-                e = _extent(ev, gid, chosen)
-                extent = (max(extent[0], e[0]), max(extent[1], e[1]))
-        else:
-            ids = [s.id for s in c.of_plan(plan) if s.kind is Kind.POINT and s.id in ev.values]
-            extent = _extent(ev, ids, every if plan is Plan.VELOCITY else chosen)
-        extents[plan] = extent
-        positions[plan] = every if plan is Plan.VELOCITY else chosen
-        # a plan with its tables under it (or apart), its title and μ line, construction lines
-        # running past its points
+        ks = every if plan is Plan.VELOCITY else chosen
+        extent = (0.0, 0.0)
+        groups = {s.group for s in c.of_plan(plan)} if plan is Plan.FORCE else {None}
+        for g in groups:      # each force polygon is a panel of its own
+            ids = [s.id for s in c.of_plan(plan) if s.kind is Kind.POINT and s.id in ev.values
+                   and (g is None or (s.group == g
+                                      and spec(s.op).draw in (Drawn.VERTEX, Drawn.MEET)))]
+            e = _extent(ev, ids, ks)
+            extent = (max(extent[0], e[0]), max(extent[1], e[1]))
+        # the plan with its tables under it (or apart), its title and μ line, and construction
+        # lines running past its points; at most the whole drawing area, its tables apart
         tables = 0.0 if tables_apart(c, plan, r) else _tables_mm(c, plan)
         tall = r.height - tables - TITLE_MM - LINES_MM
-        # the most a plan can get: the whole drawing area, its tables then on a panel apart
-        rooms[plan] = (r.width - LINES_MM, r.height - TITLE_MM - LINES_MM)
-        boxes[plan] = (max(0.3 * r.width, wide), max(min(tall, 0.5 * r.height), 1.0))
+        box = (max(0.3 * r.width, wide), max(min(tall, 0.5 * r.height), 1.0))
+        most = (r.width - LINES_MM, r.height - TITLE_MM - LINES_MM)
         if plan is Plan.VELOCITY and len(every) > len(chosen):
             # the velocity plans of every position share about 30 % of the drawing area
             cell = math.sqrt(0.3 * r.width * r.height / len(every)) - TITLE_MM
             cell = max(cell, min(MIN_CELL_MM, r.width - LINES_MM))
-            boxes[plan] = (min(cell, boxes[plan][0]), min(cell, boxes[plan][1]))
-            rooms[plan] = (r.width - LINES_MM, r.height - 2 * TITLE_MM - LINES_MM)
-    # a value fixed in the scene, or a plan enlarged for readable segments, may take the whole
-    # drawing area: the sheet then puts its tables on a panel of their own (compose)
+            box = (min(cell, box[0]), min(cell, box[1]))
+            most = (r.width - LINES_MM, r.height - 2 * TITLE_MM - LINES_MM)
+        out[plan] = _Place(extent, box, most, ks)
+    return out
+
+
+def _choose(plan: Plan, place: _Place, c: Construction, ev: Evaluation, fixed: float | None,
+            own: bool) -> PlanScale:
+    """The scale factor of one plan in its place (see :func:`decide`)."""
+    extent, box = place.extent, place.box
+    mu = _fit(extent, *box)
+    at_room = _fit(extent, *place.room)
+    enlarged = short = False
+    shortest = _shortest(c, ev, plan, place.positions, max(extent))
+    if math.isfinite(shortest) and shortest / mu < MIN_SEGMENT_MM:
+        readable = _largest_round(shortest / MIN_SEGMENT_MM)
+        if readable < mu:
+            enlarged, mu = True, max(readable, at_room)
+        short = shortest / mu < MIN_SEGMENT_MM
+    kept = True
+    if fixed is not None:
+        kept = own or fixed >= at_room          # it fits the drawing area (tables apart)
+        if kept:
+            mu, box, enlarged = fixed, (box if fixed >= mu else place.room), False
+            short = math.isfinite(shortest) and shortest / mu < MIN_SEGMENT_MM
+    if enlarged:      # the plan gets the panel it needs (at most the drawing area)
+        box = (max(box[0], extent[0] / mu), max(box[1], extent[1] / mu))
+    return PlanScale(plan, mu, box, extent, fixed, kept, enlarged, short)
+
+
+def decide(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...] = (),
+           size: str | None = None, standard: str | None = None) -> Decision:
+    """Scale factors of every plan for a sheet size (the scene's own sheet by default).
+
+    One rule for every plan on every size: μ is the smallest round value at which the plan's
+    extent fits its panel — so the plan fills between half and all of it (the ladder 1, 2, 2.5,
+    4, 5 has gaps of 2) — where a panel is the plan's share of the drawing area (never narrower
+    than :data:`MIN_BOX_MM`); when a segment would be shorter than :data:`MIN_SEGMENT_MM` the plan
+    gets up to the whole drawing area. A value fixed in the scene is kept on its own sheet, and on
+    another wherever the plan fits the whole drawing area at it (``plans``: unused, kept for the
+    callers of :func:`decide_scales`).
+    """
+    size = size or scene.drawing.sheet
+    standard = standard or scene.drawing.standard
     own = size == scene.drawing.sheet and standard == scene.drawing.standard
-    out: dict[Plan, PlanScale] = {}
-    for plan, box in boxes.items():
-        extent = extents[plan]
-        mu = _fit(extent, *box)
-        at_room = _fit(extent, *rooms[plan])
-        enlarged = short = False
-        shortest = _shortest(c, ev, plan, positions[plan], max(extent))
-        if math.isfinite(shortest) and shortest / mu < MIN_SEGMENT_MM:
-            readable = _largest_round(shortest / MIN_SEGMENT_MM)
-            if readable < mu:
-                enlarged = True
-                mu = max(readable, at_room)
-            short = shortest / mu < MIN_SEGMENT_MM
-        fixed = scene.drawing.scales.get(plan.scale_key)
-        kept = True
-        if fixed is not None:
-            kept = own or fixed >= at_room
-            if kept:
-                mu, box, enlarged = fixed, (box if fixed >= mu else rooms[plan]), False
-                short = math.isfinite(shortest) and shortest / mu < MIN_SEGMENT_MM
-        if enlarged:      # the plan gets the panel it needs (at most the drawing area)
-            box = (max(box[0], extent[0] / mu), max(box[1], extent[1] / mu))
-        out[plan] = PlanScale(plan, mu, box, extent, fixed, kept, enlarged, short)
-    return Decision(size, standard, out)
+    places = _places(scene, c, ev, room(size, standard))
+    return Decision(size, standard, {
+        plan: _choose(plan, place, c, ev, scene.drawing.scales.get(plan.scale_key), own)
+        for plan, place in places.items()})
 
 
 def decide_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[str, ...],
@@ -373,6 +381,18 @@ def drawable(c: Construction, ev: Evaluation, plan: Plan) -> bool:
     return any(s.plan is plan and s.start in ev.values for s in c.segments)
 
 
-__all__ = ["Decision", "PlanScale", "Room", "chosen_positions", "decide", "decide_scales",
-           "decision_json", "drawable", "mu_said", "notes",
-           "tables_apart", "room", "velocity_positions"]
+__all__ = [
+    "Decision",
+    "PlanScale",
+    "Room",
+    "chosen_positions",
+    "decide",
+    "decide_scales",
+    "decision_json",
+    "drawable",
+    "mu_said",
+    "notes",
+    "room",
+    "tables_apart",
+    "velocity_positions",
+]

@@ -7,8 +7,8 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
-    from ..sheet.scales import Decision
     from ..dynamics.machine import MachineDynamics
+    from ..sheet.scales import Decision
     from ..solve import Solution
     from .answers import Keys
 

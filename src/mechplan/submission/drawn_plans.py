@@ -22,8 +22,8 @@ from ..errors import CheckError
 from ..geom.sketch import box_gap
 from ..i18n import Text, join, plan_title, with_case
 from ..model.plans import Plan
-from .notation import units_ascii
 from .labels import Candidate, LabelBook, PlanKey, feature_votes, layer_plan, mu_plan, written_mu
+from .notation import units_ascii
 from .read import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .sketch import Graph, drawn_graph, place_labels
 from .texts import T
