@@ -125,7 +125,7 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
         panels.append(d.panel)
     # one under the other on the same φ axis, as the course draws them
     width = max(p.bounds()[2] - p.bounds()[0] for p in panels)
-    stacks = grid("diagram-kinematic", panels, width, r.height - 8.0)
+    stacks = grid("diagram-kinematic", panels, width, r.height - 8.0, same_origin=True)
     if len(specs) > 1:
         for stack in stacks:
             x0, _y0, _x1, y1 = stack.bounds()
@@ -197,13 +197,21 @@ def tables_of(panel: Panel, title: str) -> Panel:
 
 
 def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
-         gap: float = 6.0) -> list[Panel]:
-    """Panels in reading order on a grid of equal cells, as few grid panels as fit the room."""
+         gap: float = 6.0, same_origin: bool = False) -> list[Panel]:
+    """Panels in reading order on a grid of equal cells, as few grid panels as fit the room.
+
+    ``same_origin``: the cells' own x = 0 (a diagram's φ = 0) falls at the same place in every
+    column, so diagrams drawn one under another share their φ axis; otherwise each cell's left
+    edge is at its column's left.
+    """
     from .layout import moved
 
     if not cells:
         return []
     boxes = [c.bounds() for c in cells]
+    if same_origin:
+        left = min(b[0] for b in boxes)
+        boxes = [(left, b[1], b[2], b[3]) for b in boxes]
     cw = max(b[2] - b[0] for b in boxes) + gap
     ch = max(b[3] - b[1] for b in boxes) + gap
     cols = max(1, min(len(cells), int((width_mm + gap) // cw)))
