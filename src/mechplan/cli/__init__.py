@@ -45,6 +45,7 @@ def _solve(args: argparse.Namespace) -> int:
         sol = study.solution
         sol.scales = choose_scales(sol.scene, sol.construction, sol.ev, sol.plans, args.sheet,
                                    args.standard)
+        sol.extras["sheet"] = (args.sheet, args.standard)
     if args.json:
         print(json.dumps(study.to_json(), ensure_ascii=False, indent=1))
     else:
@@ -58,6 +59,9 @@ def _solve(args: argparse.Namespace) -> int:
     warnings = study.warnings(args.lang) if isinstance(study, MechanismStudy) else []
     for line in warnings:
         print(line, file=sys.stderr)
+    if isinstance(study, MechanismStudy):        # scale factors not as the scene asks
+        for line in study.scale_notes(args.lang):
+            print(f"mechplan: warning: {line}", file=sys.stderr)
     if args.stats and isinstance(study, MechanismStudy):
         sol = study.solution
         print(f"steps: {len(sol.construction.steps)} in the construction, "
@@ -93,6 +97,9 @@ def _draw(args: argparse.Namespace) -> int:
                     print(written)
             for line in getattr(study, "warnings", lambda _lang: [])(args.lang):
                 print(line, file=sys.stderr)          # positions left out, poor estimates
+            scale_notes = getattr(study, "scale_notes", None)   # μ not as the scene asks
+            for line in scale_notes(args.lang, args.sheet, args.standard) if scale_notes else ():
+                print(f"mechplan: warning: {line}", file=sys.stderr)
             extra = getattr(study, "write_files", None)     # e.g. a cam's profile DXF
             if extra is not None and "dxf" in formats:
                 for written in extra(out, Path(path).stem):

@@ -17,6 +17,9 @@ from .primitives import Arrow, HAlign, Line, Polyline, Primitive, Text, VAlign
 _DIRECTIONS = (45, 135, 315, 225, 0, 90, 180, 270, 22, 158, 338, 202)
 #: a label's box must be this much (mm) nearer its own point than any other point of the plan
 OWN_MARGIN_MM = 0.8
+#: how much nearer (mm) an unmarked line end must be than a marked point for a reader to take
+#: it instead (it prefers marked points; mechplan.submission.sketch gives them 1.4 mm at least)
+WEAK_MARGIN_MM = 1.2
 #: the cost of a spot where a reader could give the label to another point
 AMBIGUOUS_COST = 50.0
 
@@ -25,8 +28,11 @@ class LabelPlacer:
     """Place labels near anchors avoiding the given lines and each other."""
 
     def __init__(self, obstacles: Sequence[Primitive], height_mm: float,
-                 points_mm: Sequence[tuple[float, float]] = ()) -> None:
-        """``points_mm``: the points of the plan (markers) a reader attaches labels to."""
+                 points_mm: Sequence[tuple[float, float]] = (),
+                 weak_mm: Sequence[tuple[float, float]] = ()) -> None:
+        """``points_mm``: the points of the plan (markers) a reader attaches labels to;
+        ``weak_mm``: unmarked line ends a reader takes over a marked point only when nearer by
+        more than :data:`WEAK_MARGIN_MM` (the other positions of a position plan)."""
         geoms = []
         for p in obstacles:
             if isinstance(p, (Line, Arrow)):
@@ -40,6 +46,8 @@ class LabelPlacer:
         self.h = height_mm
         self.xy = np.asarray(points_mm, dtype=float).reshape(-1, 2)
         self.points = points(self.xy)
+        self.weak_xy = np.asarray(weak_mm, dtype=float).reshape(-1, 2)
+        self.weak = points(self.weak_xy)
 
     def _cost(self, rect) -> float:
         cost = 0.0
@@ -53,13 +61,18 @@ class LabelPlacer:
 
     def _ambiguity(self, rect, anchor: tuple[float, float]) -> float:
         """How much nearer (mm) the box is to another point than to its own, plus the margin."""
-        if not len(self.points):
+        if not len(self.points) and not len(self.weak_xy):
             return 0.0
         d = distance(rect, self.points)
         own = float(distance(rect, points(anchor)))
         mine = np.hypot(*(self.xy - anchor).T) < 0.3
         others = d[~mine]
-        return max(0.0, own + OWN_MARGIN_MM - float(others.min())) if len(others) else 0.0
+        worse = max(0.0, own + OWN_MARGIN_MM - float(others.min())) if len(others) else 0.0
+        if len(self.weak_xy):
+            weak = distance(rect, self.weak)[np.hypot(*(self.weak_xy - anchor).T) >= 0.3]
+            if len(weak):
+                worse = max(worse, own + OWN_MARGIN_MM - WEAK_MARGIN_MM - float(weak.min()))
+        return worse
 
     def place(self, anchor: tuple[float, float], text: str) -> Text:
         """Return the label as a Text at the best free spot around ``anchor``."""

@@ -406,7 +406,10 @@ def position_plan(
             q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
                 prims.append(Circle(q, 0.8, Role.OUTLINE))
-    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H)
+    marked = [p.center for p in prims if isinstance(p, Circle) and p.role is Role.OUTLINE
+              and p.radius <= 1.0]
+    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H,
+                         marked, _ends(prims))
     for p in names:
         if _has(ev_all, p):
             q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
@@ -416,6 +419,18 @@ def position_plan(
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(Plan.POSITION, mu, lang), LABEL_H))
     return panel
+
+
+def _ends(prims: list) -> list[tuple[float, float]]:
+    """Unmarked points a reader can give a label to: line ends and vertices of the links of every
+    drawn position (not the dash-dot trajectories and axes, which it skips)."""
+    out: list[tuple[float, float]] = []
+    for p in prims:
+        if isinstance(p, Line) and p.role is not Role.CHAIN:
+            out += [p.start, p.end]
+        elif isinstance(p, Polyline) and p.role is not Role.CHAIN:
+            out += list(p.points)
+    return out
 
 
 def _slider(p: tuple[float, float], angle: float) -> Polyline:
