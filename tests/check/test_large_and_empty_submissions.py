@@ -69,21 +69,25 @@ def test_a_variants_cell_over_128_kb_is_a_clean_error(tmp_path):
 
 
 # -- nothing gradeable ---------------------------------------------------------------------------
-def _pole_only(path: Path) -> Path:
-    """Two lines and the pole's label: a plan is found, nothing on it can be measured."""
+def _reference_only(path: Path) -> Path:
+    """Two lines, the pole and one point: a velocity plan whose only segment, pb, is the
+    reference that fixes its unknown scale factor — nothing on it can be graded."""
     doc = ezdxf.new("R2000")
+    doc.header["$INSUNITS"] = 4
     msp = doc.modelspace()
     msp.add_line((0, 0), (40, 0))
     msp.add_line((40, 0), (40, 30))
     msp.add_text("p", dxfattribs={"insert": (-3, -3), "height": 2.5})
+    msp.add_text("b", dxfattribs={"insert": (41, -3), "height": 2.5})
     doc.saveas(path)
     return path
 
 
 def test_a_sheet_with_nothing_gradeable_does_not_pass(tmp_path):
-    sheet = _pole_only(tmp_path / "empty.dxf")
+    sheet = _reference_only(tmp_path / "empty.dxf")
     report = check(FOUR_BAR, sheet)
-    assert report.summary()["checked"] == 0
+    assert [r.verdict for r in report.rows if r.verdict not in ("missing", "unchecked")] == [
+        "reference"]
     assert report.nothing_found and not report.passed
     assert "nothing could be graded" in report.text()
     assert report.to_json()["passed"] is False and report.to_json()["nothing_found"] is True

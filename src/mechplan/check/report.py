@@ -188,9 +188,9 @@ class CheckReport:
 
     @property
     def nothing_found(self) -> bool:
-        """True when nothing on the submission could be checked (no segment, point or value
-        of the construction was found): such a submission does not pass."""
-        return not any(r.verdict in (OK, WRONG, SLIP, REFERENCE) for r in self.rows)
+        """True when nothing on the submission could be checked against the exact construction
+        (a reference segment only fixes the scale factor): such a submission does not pass."""
+        return not any(r.verdict in (OK, WRONG, SLIP) for r in self.rows)
 
     @property
     def passed(self) -> bool:
