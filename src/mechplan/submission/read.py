@@ -22,6 +22,7 @@ import numpy as np
 
 from ..errors import CheckError
 from ..geom.sketch import box_distance
+from ..scene import toml
 from .texts import T
 
 Point = tuple[float, float]
@@ -345,9 +346,12 @@ def load_toml(path: Path) -> tuple[dict[str, Any], Callable[[str], str]]:
     """A TOML table and the function giving where a key is written (its line, or its name)."""
     text = _read_text(path)
     try:
-        data = tomllib.loads(text)
+        data = toml.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
+    except toml.TomlLimitError as exc:
+        raise CheckError(T(f"error.limit_{exc.kind}", **exc.args_), file=str(path),
+                         key=exc.key) from None
     lines = text.splitlines()
 
     def where(key: str) -> str:
