@@ -24,6 +24,7 @@ SUBSCRIPTS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _SUP_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
 _SUP_MARK = {"ⁿ": "^n", "ᵗ": "^t", "ᵏ": "^k", "ʳ": "^r", "ᶜ": "^c"}
 _TRAILING_MARK = re.compile(r"^([^\W\d_]+)_?\{?(\w+)\}?\^\{?([ntkrτ])\}?$")
+_DIGITS = re.compile(r"\d+")
 _DROP = re.compile(r"[\s_{}^$\\()\[\]]")
 
 
@@ -159,26 +160,32 @@ def points(sub: str, mech: Mechanism) -> list[str] | None:
     names = sorted({p for link in mech.links.values() for p in link.points}, key=len,
                    reverse=True)
     member = {(p.lower(), lid.lower()) for lid, link in mech.links.items() for p in link.points}
-
-    def split(s: str) -> list[str] | None:
-        if not s:
-            return []
+    # the first split a depth-first search in this order finds, computed from the end of the
+    # subscript: no recursion (a subscript may be thousands of characters long) and each suffix
+    # is split once (a search could try every way of reading "b2b2b2…")
+    n = len(sub)
+    step: list[tuple[str, int] | None] = [None] * (n + 1)
+    for i in range(n - 1, -1, -1):
         for p in names:
             low = p.lower()
-            if not s.startswith(low):
+            if not sub.startswith(low, i):
                 continue
-            rest = s[len(low):]
-            m = re.match(r"\d+", rest)
-            options = [rest]
+            j = i + len(low)
+            m = _DIGITS.match(sub, j)
+            options = [j]
             if m and (low, m.group(0)) in member:
-                options.insert(0, rest[len(m.group(0)):])
-            for r in options:
-                tail = split(r)
-                if tail is not None:
-                    return [p, *tail]
+                options.insert(0, m.end())
+            found = next((r for r in options if r == n or step[r] is not None), None)
+            if found is not None:
+                step[i] = (p, found)
+                break
+    if n and step[0] is None:
         return None
-
-    return split(sub)
+    out, i = [], 0
+    while i < n:
+        p, i = step[i]  # type: ignore[misc]
+        out.append(p)
+    return out
 
 
 def reversed_points(sub: str, mech: Mechanism) -> str | None:
