@@ -17,7 +17,6 @@ from ..i18n import LANGUAGES
 FLAGGED = 3
 
 
-
 def _positive_int(text: str) -> int:
     try:
         value = int(text)
@@ -26,6 +25,18 @@ def _positive_int(text: str) -> int:
     if value < 1:
         raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})")
     return value
+
+
+def angle_deg(text: str) -> float:
+    """An ``--at`` angle: a finite number of degrees within the limit (argparse type)."""
+    from ..limits import LimitError, check_angle_deg
+
+    try:
+        return check_angle_deg(float(text))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"must be a number of degrees (got {text!r})") from None
+    except LimitError as exc:
+        raise argparse.ArgumentTypeError(exc.detail) from None
 
 
 def _solve(args: argparse.Namespace) -> int:
@@ -157,7 +168,7 @@ def parser() -> argparse.ArgumentParser:
     s = sub.add_parser("solve", help="structure, plans, construction protocol and results")
     s.add_argument("scene")
     where = s.add_mutually_exclusive_group()
-    where.add_argument("--at", type=float, nargs="+", metavar="DEG",
+    where.add_argument("--at", type=angle_deg, nargs="+", metavar="DEG",
                        help="crank angles φ in degrees")
     where.add_argument("--positions", type=_positive_int, metavar="N",
                        help="N ≥ 1 equal steps from the scene's start")

@@ -13,8 +13,10 @@ from .. import i18n
 from ..check.report import Tolerance
 from ..check.texts import LANGUAGES, T
 from ..errors import CheckError, SceneError
+from ..limits import MAX_PAPER_MM
 from ..model.plans import Plan
 from ..units import example
+from . import angle_deg
 
 #: a plan by its name or the letter of its scale factor ("velocity", "v")
 PLAN_NAMES = {name: p for p in Plan for name in (p.value, p.scale_key[3:].lower())}
@@ -32,7 +34,7 @@ def add_parser(subparsers: Any) -> None:
     p.add_argument("submission", help="a .dxf drawing, or a .toml / .csv table; or a folder of "
                    "them (a class: then SCENE may be a folder of variants, a submission is "
                    "matched to the variant named in its file name, -o is the output folder)")
-    p.add_argument("--at", type=float, metavar="DEG",
+    p.add_argument("--at", type=angle_deg, metavar="DEG",
                    help="crank angle φ of the submission in degrees (default: written on the "
                    "submission, the scene's only position, or the best fit of its positions)")
     p.add_argument("--tolerance", action="append", default=[], metavar="[PLAN=]SPEC",
@@ -131,6 +133,10 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
         raise CheckError(T("error.positive", option="--label-distance", value=args.label_distance))
     if not args.snap >= 0:
         raise CheckError(T("error.not_negative", option="--snap", value=args.snap))
+    for option, value in (("--label-distance", args.label_distance), ("--snap", args.snap)):
+        if value is not None and not value <= MAX_PAPER_MM:     # also inf (nan fails above)
+            raise CheckError(T("error.option_range", option=option, low="0", value=str(value),
+                               high=f"{MAX_PAPER_MM:g} mm"))
     options = Options(at_deg=args.at, tolerance=parse_tolerances(args.tolerance),
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
     if Path(args.submission).is_dir():
