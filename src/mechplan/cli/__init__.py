@@ -61,7 +61,7 @@ def _solve(args: argparse.Namespace) -> int:
             raise MechplanError(f"--csv writes the per-angle table of an engine scene; "
                                 f"{args.scene} has none")
         write_csv(args.csv)
-    warnings = study.warnings(args.lang) if isinstance(study, MechanismStudy) else []
+    warnings = study.warnings(args.lang) if hasattr(study, "warnings") else []
     for line in warnings:
         print(line, file=sys.stderr)
     if args.stats and isinstance(study, MechanismStudy):
