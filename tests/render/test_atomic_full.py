@@ -62,7 +62,7 @@ def test_dev_full_through_a_writer_function(tmp_path, monkeypatch) -> None:
 
     def fdopen(fd: int, mode: str = "r"):
         os.close(fd)
-        return open("/dev/full", "wb")               # noqa: SIM115 - closed by atomic_open
+        return open("/dev/full", "wb")                   # closed by atomic_open
 
     monkeypatch.setattr(atomic.os, "fdopen", fdopen)
     with pytest.raises(DrawingError, match="the disk is full"):

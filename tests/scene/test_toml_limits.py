@@ -25,7 +25,7 @@ def solve_error(text: str, tmp_path: Path, capsys, *args: str) -> str:
     scene = tmp_path / "scene.toml"
     scene.write_text(text, encoding="utf-8")
     code = main(["solve", str(scene), *args])
-    out, err = capsys.readouterr()
+    _, err = capsys.readouterr()
     assert code == 2, err
     assert "Traceback" not in err and err.count("\n") == 1 and "scene.toml" in err, err
     assert len(err) < 2500
