@@ -34,6 +34,7 @@ KNOWN = {
     "variants count": "variants count budget (batch)",
     "variants long cell": "CSV cells over 128 KB in a variants file (batch / CSV reader)",
     "dxf insert bomb": "DXF INSERT nesting and expansion caps (file readers)",
+    "variants id length": "a student id of hundreds of characters names a folder (batch)",
 }
 
 
@@ -306,10 +307,12 @@ def variants_case(r: random.Random, known: bool) -> Case:
                       "variants toml", ", ".join(labels))
     rows = [line.split(",") for line in VARIANTS_CSV.strip().split("\n")]
     label, value = junk(r, known)
-    text = str(value)
+    text, column = str(value), r.randrange(3)
     if not known and len(text) > 100_000:
-        text = text[:100_000]
-    rows[r.randrange(1, len(rows))][r.randrange(3)] = text.replace(",", ";")
+        text = text[:100_000]                  # "variants long cell"
+    if not known and column == 0:
+        text = text[:40]                       # "variants id length"
+    rows[r.randrange(1, len(rows))][column] = text.replace(",", ";")
     data = "\n".join(",".join(row) for row in rows).encode("utf-8")
     if r.random() < 0.2:
         data, label = _text_damage(data, r)

@@ -65,3 +65,23 @@ def test_points_split_as_before() -> None:
     assert points("", mech) == []
     assert points("z", mech) is None
     assert read("VC2B2", mech) is not None and read("VC2B2", mech).canonical == "v_CB"
+
+
+def test_long_word_is_read_in_linear_time() -> None:
+    # the a_CB^n pattern took quadratic time: 20,000 letters were minutes over a table
+    from mechplan.submission.notation import compact, dimension
+
+    start = time.perf_counter()
+    for _ in range(20):
+        assert read("x" * 20_000, None) is None and dimension("x" * 20_000) is None
+        compact("x" * 20_000)
+    assert time.perf_counter() - start < 2
+
+
+def test_csv_with_a_long_name(tmp_path, capsys) -> None:
+    table = tmp_path / "ivanov.csv"
+    table.write_text("name,value\npb,67.0\n" + "x" * 20_000 + ",1\n", encoding="utf-8")
+    start = time.perf_counter()
+    code = main(["check", FOUR_BAR, str(table), "--at", "60"])
+    assert code in (1, 2) and time.perf_counter() - start < 20
+    assert "Traceback" not in capsys.readouterr().err

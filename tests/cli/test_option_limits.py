@@ -79,3 +79,23 @@ def test_check_distances_are_finite_and_on_a_sheet(option: str, value: str, tmp_
     err = capsys.readouterr().err
     assert option in err and "Traceback" not in err and "1189" in err
     assert "конечным числом" in err                  # said in the report's language
+
+
+@pytest.mark.parametrize("spec", ["9" * 400 + "mm", "99999mm", "velocity=500%", "1000deg"])
+def test_check_tolerance_that_would_pass_anything(spec: str, tmp_path, capsys) -> None:
+    table = tmp_path / "t.toml"
+    table.write_text("[velocity]\npb = 67.0\n", encoding="utf-8")
+    assert main(["check", FOUR_BAR, str(table), "--tolerance", spec]) == 2
+    err = capsys.readouterr().err
+    assert "--tolerance" in err and "Traceback" not in err and len(err) < 600
+
+
+@pytest.mark.parametrize("jobs", ["0", "1000000000"])
+def test_check_class_jobs(jobs: str, tmp_path, capsys) -> None:
+    folder = tmp_path / "class"
+    folder.mkdir()
+    (folder / "ivanov.toml").write_text("[velocity]\npb = 67.0\n", encoding="utf-8")
+    assert main(["check", FOUR_BAR, str(folder), "-o", str(tmp_path / "out"), "--jobs",
+                 jobs]) == 2
+    assert "--jobs" in capsys.readouterr().err
+    assert not (tmp_path / "out").exists()

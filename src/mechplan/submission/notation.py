@@ -25,6 +25,9 @@ _SUP_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
 _SUP_MARK = {"ⁿ": "^n", "ᵗ": "^t", "ᵏ": "^k", "ʳ": "^r", "ᶜ": "^c"}
 _TRAILING_MARK = re.compile(r"^([^\W\d_]+)_?\{?(\w+)\}?\^\{?([ntkrτ])\}?$")
 _DIGITS = re.compile(r"\d+")
+#: characters of a name that can be a quantity ("a^t_E4D4" is 8): a longer one is not understood,
+#: without reading it (_TRAILING_MARK takes quadratic time on a long word)
+MAX_NAME_CHARS = 100
 _DROP = re.compile(r"[\s_{}^$\\()\[\]]")
 
 
@@ -74,7 +77,7 @@ def compact(name: str, homo: dict[str, str] | None = None, case: bool = False) -
     for ch, rep in _SUP_MARK.items():
         t = t.replace(ch, rep)
     t = t.translate(_SUP_DIGITS)
-    m = _TRAILING_MARK.match(t)
+    m = _TRAILING_MARK.match(t) if len(t) <= MAX_NAME_CHARS else None
     if m:                                   # a_CB^n → a^n_CB
         t = f"{m.group(1)}^{m.group(3)}_{m.group(2)}"
     for ch, rep in (homo if homo is not None else _tables()[1]).items():
@@ -90,6 +93,8 @@ def key(canonical: str) -> str:
 
 def read(name: str, mech: Mechanism | None) -> Reading | None:
     """The quantity a written name stands for, or None when it is not understood."""
+    if len(name) > MAX_NAME_CHARS:
+        return None
     names, homo, symbols, dims = _tables()
     raw = unicodedata.normalize("NFC", name.strip()).translate(SUBSCRIPTS)
     for text in (_DROP.sub("", raw).lower(), compact(name, homo)):
@@ -114,6 +119,8 @@ def _symbols(name: str, homo: dict[str, str],
 
 def dimension(name: str) -> str | None:
     """The dimension a name's symbol says, without a mechanism ("R12" → force), or None."""
+    if len(name) > MAX_NAME_CHARS:
+        return None
     names, homo, symbols, dims = _tables()
     if (text := compact(name, homo)) in names:
         return dims[names[text]]
