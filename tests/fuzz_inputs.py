@@ -35,6 +35,8 @@ KNOWN = {
     "variants long cell": "CSV cells over 128 KB in a variants file (batch / CSV reader)",
     "dxf insert bomb": "DXF INSERT nesting and expansion caps (file readers)",
     "variants id length": "a student id of hundreds of characters names a folder (batch)",
+    "variants wrong type": "students, rules or values of the wrong type in a variants file "
+                           "(batch)",
 }
 
 
@@ -298,6 +300,17 @@ def _batch(files: dict[str, bytes], name: str, kind: str, note: str) -> Case:
 def variants_case(r: random.Random, known: bool) -> Case:
     if r.random() < 0.5:
         doc, labels = mutate(VARIANTS_TOML, r, known)
+        if not known:                          # "variants wrong type"
+            if not isinstance(doc.get("students", []), list):
+                doc["students"] = VARIANTS_TOML["students"]
+            if not isinstance(doc.get("rules", {}), dict):
+                doc["rules"] = VARIANTS_TOML["rules"]
+            for st in doc.get("students", []):
+                if isinstance(st, dict) and not isinstance(st.get("values", {}), dict):
+                    st["values"] = {}
+            for key, rule in list(doc.get("rules", {}).items()):
+                if not isinstance(rule, dict):
+                    doc["rules"][key] = {"from": "70 mm", "to": "90 mm"}
         count = doc.get("count")
         if (not known and isinstance(count, int) and not isinstance(count, bool)
                 and count > 5):
