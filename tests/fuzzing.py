@@ -47,17 +47,27 @@ class Outcome:
     problems: list[str] = field(default_factory=list)
 
 
+#: caches other tests and tools running beside the campaign (pytest-xdist) write in the working
+#: directory
+_TOOL_CACHES = {".hypothesis", ".pytest_cache", ".ruff_cache", ".mypy_cache", "__pycache__",
+                ".import_linter_cache"}
+
+
 def _listing(folder: Path, recursive: bool = False) -> dict[str, tuple[int, int]]:
-    """Names (relative) → (size, mtime in ns) of a folder's entries."""
+    """Names (relative) → (size, mtime in ns) of a folder's entries; a folder's own size and time
+    are left out (a tool writing inside one is not the case writing beside it)."""
     out: dict[str, tuple[int, int]] = {}
     try:
         entries = folder.rglob("*") if recursive else folder.iterdir()
         for p in entries:
+            if not recursive and (p.name in _TOOL_CACHES or p.name.startswith(".coverage")):
+                continue
             try:
                 st = p.lstat()
             except OSError:
                 continue
-            out[str(p.relative_to(folder))] = (st.st_size, st.st_mtime_ns)
+            is_dir = p.is_dir() and not p.is_symlink()
+            out[str(p.relative_to(folder))] = (0, 0) if is_dir else (st.st_size, st.st_mtime_ns)
     except OSError:
         pass
     return out
@@ -106,7 +116,8 @@ def run_case(case: Case, root: Path, *, seconds: float, memory: int) -> Outcome:
         (src / name).parent.mkdir(parents=True, exist_ok=True)
         (src / name).write_bytes(data)
     argv = [a.replace("{in}", str(src)).replace("{out}", str(out)) for a in case.argv]
-    watched = {"the folder around the case": (root.parent, False),
+    watched = {"the case's folder": (root, False),
+               "the folder around the case": (root.parent, False),
                "the working directory": (Path.cwd(), False), "the inputs": (src, True)}
     before = {name: _listing(folder, rec) for name, (folder, rec) in watched.items()}
     sys.stdout.flush()

@@ -186,3 +186,20 @@ def test_fuzz_campaign(sheet_dxf: bytes, tmp_path: Path) -> None:
           + ", ".join(f"{k} {n} ({spent[k]:.1f} s)" for k, n in kinds.items()))
     assert sum(kinds.values()) >= min(FUZZ_BUDGET, 10), "too few cases ran"
     assert not failures, f"{len(failures)} failing case(s):\n" + "\n".join(failures)
+
+
+def test_fuzz_harness_sees_a_write_outside_the_output(tmp_path: Path) -> None:
+    """The campaign's judge: a file written beside the output folder is a failure."""
+    from fuzzing import Case, run_case
+
+    scene = (ROOT / "templates" / "motorcycle_engine.toml").read_bytes()
+    leak = Case("scene", {"scene.toml": scene},
+                ["solve", "{in}/scene.toml", "--csv", "{in}/../leak.csv"])
+    outcome = run_case(leak, tmp_path / "leak", seconds=60, memory=CASE_MEMORY)
+    assert outcome.code == 0 and any("the case's folder changed" in p
+                                     for p in outcome.problems), outcome
+    inside = Case("scene", {"scene.toml": scene}, ["solve", "{in}/scene.toml", "--csv",
+                                                   "{out}/table.csv"])
+    outcome = run_case(inside, tmp_path / "inside", seconds=60, memory=CASE_MEMORY)
+    assert outcome.code == 0 and not outcome.problems, outcome
+    assert (tmp_path / "inside" / "out" / "table.csv").exists()
