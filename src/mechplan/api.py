@@ -167,6 +167,9 @@ class Mechanism:
             if arr.ndim != 1 or arr.size == 0 or not np.isfinite(arr).all():
                 raise MechplanError(f"phi_deg must be finite crank angles in degrees "
                                     f"(got {phi_deg!r})")
+            from .limits import check_angles_deg
+
+            check_angles_deg(arr, "phi_deg")
             at = arr
         chosen = self._plans(plans)
         asked = self._outputs(points, links)

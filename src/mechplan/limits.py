@@ -9,6 +9,8 @@ import math
 import os
 import re
 
+import numpy as np
+
 from .errors import MechplanError, shown
 
 DEFAULT_BUDGET = 2 * 1024**3
@@ -75,3 +77,11 @@ def check_angle_deg(value: float, what: str = "a crank angle") -> float:
         raise LimitError(f"{what} must be a finite number of degrees within ±{MAX_ANGLE_DEG:g} "
                          f"(got {value:g}){spacing}")
     return value
+
+
+def check_angles_deg(values: np.ndarray, what: str = "a crank angle") -> np.ndarray:
+    """Return ``values`` (degrees) if every one passes :func:`check_angle_deg`."""
+    bad = values[~(np.abs(values) <= MAX_ANGLE_DEG)]
+    if bad.size:
+        check_angle_deg(float(bad[0]), what)
+    return values

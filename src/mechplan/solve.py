@@ -19,7 +19,7 @@ from .construct.segments import SegmentKind
 from .construct.trust import Failure, Flag, failures, flags, refuse_unbounded
 from .construct.validity import MAX_CONDITION, ensure_valid
 from .errors import SceneError
-from .limits import ensure_within_budget
+from .limits import check_angles_deg, ensure_within_budget
 from .model.mechanism import GROUND
 from .model.plans import Plan
 from .model.structure import Structure, analyse
@@ -159,7 +159,7 @@ def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
     ensure_within_budget(n, len(c.ancestors(targets)), file=scene.path,
                          key=None if requested or count else "positions.count")
     if requested:
-        phi = np.radians(np.asarray(at_deg, dtype=float))
+        phi = np.radians(check_angles_deg(np.asarray(at_deg, dtype=float)))
     else:
         phi = crank_positions(scene, c, count)
     ev = c.evaluate(phi)

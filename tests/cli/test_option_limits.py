@@ -99,3 +99,17 @@ def test_check_class_jobs(jobs: str, tmp_path, capsys) -> None:
                  jobs]) == 2
     assert "--jobs" in capsys.readouterr().err
     assert not (tmp_path / "out").exists()
+
+
+def test_api_and_solver_refuse_far_angles() -> None:
+    import mechplan
+    from mechplan.limits import LimitError
+    from mechplan.scene import load_scene
+    from mechplan.solve import solve
+
+    m = mechplan.load(FOUR_BAR)
+    with pytest.raises(LimitError, match="phi_deg must be .* within ±1e\\+06"):
+        m.solve(phi_deg=[30.0, 1e300])
+    with pytest.raises(LimitError, match="1.5e\\+284° apart"):
+        solve(load_scene(FOUR_BAR), at_deg=[1e300])
+    assert m.solve(phi_deg=[30.0, 999_999.0]).phi_deg.shape == (2,)
