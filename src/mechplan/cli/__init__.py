@@ -10,7 +10,7 @@ from pathlib import Path
 
 from .. import __version__
 from ..drafting.fields import SHEETS, STANDARDS
-from ..errors import MechplanError
+from ..errors import MechplanError, shown
 from ..i18n import LANGUAGES
 
 #: exit code of a run that completed but flagged results or left positions out (see README)
@@ -21,9 +21,10 @@ def _positive_int(text: str) -> int:
     try:
         value = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})") from None
+        raise argparse.ArgumentTypeError(
+            f"must be a whole number ≥ 1 (got {shown(text)})") from None
     if value < 1:
-        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})")
+        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {shown(text)})")
     return value
 
 
@@ -34,7 +35,8 @@ def angle_deg(text: str) -> float:
     try:
         return check_angle_deg(float(text))
     except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a number of degrees (got {text!r})") from None
+        raise argparse.ArgumentTypeError(
+            f"must be a number of degrees (got {shown(text)})") from None
     except LimitError as exc:
         raise argparse.ArgumentTypeError(exc.detail) from None
 
