@@ -37,6 +37,7 @@ KNOWN = {
     "variants id length": "a student id of hundreds of characters names a folder (batch)",
     "variants wrong type": "students, rules or values of the wrong type in a variants file "
                            "(batch)",
+    "variants rule step": "a rule whose step is 0, tiny, huge or infinite (batch)",
 }
 
 
@@ -311,6 +312,8 @@ def variants_case(r: random.Random, known: bool) -> Case:
             for key, rule in list(doc.get("rules", {}).items()):
                 if not isinstance(rule, dict):
                     doc["rules"][key] = {"from": "70 mm", "to": "90 mm"}
+                elif rule.get("step", "5 mm") != "5 mm":       # "variants rule step"
+                    del rule["step"]
         count = doc.get("count")
         if (not known and isinstance(count, int) and not isinstance(count, bool)
                 and count > 5):
