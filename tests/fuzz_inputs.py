@@ -312,7 +312,8 @@ def variants_case(r: random.Random, known: bool) -> Case:
             for key, rule in list(doc.get("rules", {}).items()):
                 if not isinstance(rule, dict):
                     doc["rules"][key] = {"from": "70 mm", "to": "90 mm"}
-                elif rule.get("step", "5 mm") != "5 mm":       # "variants rule step"
+                elif "step" in rule and (rule.get("step"), rule.get("from"), rule.get("to")) != (
+                        "5 mm", "70 mm", "90 mm"):                  # "variants rule step"
                     del rule["step"]
         count = doc.get("count")
         if (not known and isinstance(count, int) and not isinstance(count, bool)
