@@ -98,9 +98,9 @@ def test_malformed_scenes_raise_only_user_errors(data: dict) -> None:
 
 # -- the campaign: the command line on hostile files, in a child with limits (issue 38) --------
 #: cases of the campaign; a long run: MECHPLAN_FUZZ_BUDGET=5000 MECHPLAN_FUZZ_SECONDS=3600
-FUZZ_BUDGET = int(os.environ.get("MECHPLAN_FUZZ_BUDGET", "150"))
+FUZZ_BUDGET = int(os.environ.get("MECHPLAN_FUZZ_BUDGET", "120"))
 #: wall-clock seconds the campaign may take (it stops drawing cases after)
-FUZZ_SECONDS = float(os.environ.get("MECHPLAN_FUZZ_SECONDS", "40"))
+FUZZ_SECONDS = float(os.environ.get("MECHPLAN_FUZZ_SECONDS", "30"))
 FUZZ_SEED = int(os.environ.get("MECHPLAN_FUZZ_SEED", "38"))
 #: also draw the mutations other work fixes (fuzz_inputs.KNOWN)
 FUZZ_KNOWN = os.environ.get("MECHPLAN_FUZZ_KNOWN", "") == "1"
