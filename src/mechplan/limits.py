@@ -5,10 +5,13 @@ The budget is ``MECHPLAN_MEMORY_BUDGET`` (e.g. ``"4 GB"``, ``"512 MB"``, or byte
 
 from __future__ import annotations
 
+import math
 import os
 import re
 
-from .errors import MechplanError
+import numpy as np
+
+from .errors import MechplanError, shown
 
 DEFAULT_BUDGET = 2 * 1024**3
 #: bytes per step and position: a (N, 2) float64 value, its gap or sine, and evaluation temporaries
@@ -29,11 +32,11 @@ def memory_budget() -> int:
     m = re.fullmatch(r"(\d+(?:\.\d+)?)\s*([kKmMgGtT]?[bB]?)", text)
     if not m:
         raise LimitError(f"MECHPLAN_MEMORY_BUDGET must be a size such as '4 GB' (got {text!r})")
-    return int(float(m.group(1)) * _UNITS[m.group(2).lower()])
+    return int(min(float(m.group(1)) * _UNITS[m.group(2).lower()], 2.0**62))
 
 
 def _size(n: float) -> str:
-    for unit, factor in (("GB", 1024**3), ("MB", 1024**2), ("kB", 1024)):
+    for unit, factor in (("TB", 1024**4), ("GB", 1024**3), ("MB", 1024**2), ("kB", 1024)):
         if n >= factor:
             return f"{n / factor:.1f} {unit}"
     return f"{n:.0f} B"
@@ -48,8 +51,9 @@ def ensure_within_budget(positions: int, steps: int, *, file: str | None = None,
     estimate = positions * steps * BYTES_PER_STEP
     budget = memory_budget()
     if estimate > budget:
+        need = "more than 1024 TB" if estimate >= 1024**5 else f"about {_size(estimate)}"
         raise LimitError(
-            f"{positions} positions × {steps} construction steps need about {_size(estimate)} "
+            f"{shown(positions)} positions × {steps} construction steps need {need} "
             f"of memory, more than the budget of {_size(budget)}; ask for fewer positions "
             "(e.g. count = 3600) or raise MECHPLAN_MEMORY_BUDGET", file=file, key=key)
     return estimate
@@ -82,3 +86,31 @@ CSV_CELL_MAX_CHARS = 128 * 1024
 DXF_MAX_ENTITIES = 200_000
 #: blocks inserted inside blocks: deeper nesting (a block inserting itself) is refused
 DXF_MAX_INSERT_DEPTH = 8
+
+
+# -- limits on what a user may ask for (issue 38; docs/security.md lists every limit) ----------
+#: largest crank angle asked for by its value (degrees): past it the angle within a turn is
+#: uncertain (a float near 1e300 is spaced 1e284 apart)
+MAX_ANGLE_DEG = 1e6
+#: largest distance on paper an option may give (mm): the long side of an A0 sheet
+MAX_PAPER_MM = 1189.0
+
+
+def check_angle_deg(value: float, what: str = "a crank angle") -> float:
+    """Return ``value`` (degrees) if it is finite and within ±:data:`MAX_ANGLE_DEG`.
+
+    Raise :class:`LimitError` saying how far apart floats are at that size."""
+    if not math.isfinite(value) or abs(value) > MAX_ANGLE_DEG:
+        spacing = (f"; floats that large are {math.ulp(value):.2g}° apart, so the angle within "
+                   "a turn is lost" if math.isfinite(value) and math.ulp(value) > 1e-6 else "")
+        raise LimitError(f"{what} must be a finite number of degrees within ±{MAX_ANGLE_DEG:g} "
+                         f"(got {value:g}){spacing}")
+    return value
+
+
+def check_angles_deg(values: np.ndarray, what: str = "a crank angle") -> np.ndarray:
+    """Return ``values`` (degrees) if every one passes :func:`check_angle_deg`."""
+    bad = values[~(np.abs(values) <= MAX_ANGLE_DEG)]
+    if bad.size:
+        check_angle_deg(float(bad[0]), what)
+    return values

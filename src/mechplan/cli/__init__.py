@@ -11,26 +11,39 @@ from pathlib import Path
 
 from .. import __version__
 from ..drafting.fields import SHEETS, STANDARDS
-from ..errors import MechplanError
+from ..errors import MechplanError, shown
 from ..i18n import LANGUAGES
 
 #: exit code of a run that completed but flagged results or left positions out (see README)
 FLAGGED = 3
 
 
-
 def _positive_int(text: str) -> int:
     try:
         value = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})") from None
+        raise argparse.ArgumentTypeError(
+            f"must be a whole number ≥ 1 (got {shown(text)})") from None
     if value < 1:
-        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})")
+        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {shown(text)})")
     return value
 
 
 _DATA_DIR_HELP = ("folder of the data files a scene names (an indicator table), which must lie "
                   "inside it; default: the scene's folder")
+
+
+def angle_deg(text: str) -> float:
+    """An ``--at`` angle: a finite number of degrees within the limit (argparse type)."""
+    from ..limits import LimitError, check_angle_deg
+
+    try:
+        return check_angle_deg(float(text))
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"must be a number of degrees (got {shown(text)})") from None
+    except LimitError as exc:
+        raise argparse.ArgumentTypeError(exc.detail) from None
 
 
 def _solve(args: argparse.Namespace) -> int:
@@ -56,7 +69,7 @@ def _solve(args: argparse.Namespace) -> int:
             raise MechplanError(f"--csv writes the per-angle table of an engine scene; "
                                 f"{args.scene} has none")
         write_csv(args.csv)
-    warnings = study.warnings(args.lang) if isinstance(study, MechanismStudy) else []
+    warnings = study.warnings(args.lang) if hasattr(study, "warnings") else []
     for line in warnings:
         print(line, file=sys.stderr)
     if isinstance(study, MechanismStudy):        # scale factors not as the scene asks
@@ -173,7 +186,7 @@ def parser() -> argparse.ArgumentParser:
     s = sub.add_parser("solve", help="structure, plans, construction protocol and results")
     s.add_argument("scene")
     where = s.add_mutually_exclusive_group()
-    where.add_argument("--at", type=float, nargs="+", metavar="DEG",
+    where.add_argument("--at", type=angle_deg, nargs="+", metavar="DEG",
                        help="crank angles φ in degrees")
     where.add_argument("--positions", type=_positive_int, metavar="N",
                        help="N ≥ 1 equal steps from the scene's start")

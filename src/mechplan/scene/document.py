@@ -9,6 +9,7 @@ from typing import Any
 from ..errors import SceneError
 from ..userfiles import SCENE, FileKind
 from ..userfiles import read_text as read_user_text
+from . import toml
 
 SCENE_KINDS: tuple[str, ...] = ("mechanism", "cam", "gears", "engine")
 
@@ -30,11 +31,14 @@ def study_kind(path: str | Path) -> tuple[str, dict[str, Any]] | None:
 
 
 def parse_toml(text: str, file: str) -> dict[str, Any]:
-    """Parse TOML text; a syntax error names the file."""
+    """Parse TOML text within the limits of :mod:`.toml`; a syntax error names the file, a
+    value beyond a limit its key."""
     try:
-        return tomllib.loads(text)
+        return toml.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"not valid TOML: {exc}", file=file) from None
+    except toml.TomlLimitError as exc:
+        raise SceneError(str(exc), file=file, key=exc.key) from None
 
 
 def scene_kind(data: dict[str, Any], file: str) -> str:

@@ -24,6 +24,7 @@ from ..errors import CheckError
 from ..geom.sketch import box_distance
 from ..i18n import Text
 from ..limits import CSV_CELL_MAX_CHARS, TABLE_MAX_NESTING, TABLE_MAX_ROWS
+from ..scene import toml
 from ..userfiles import DXF, TABLE, read_bytes
 from .texts import T
 
@@ -358,12 +359,13 @@ def load_toml(path: Path) -> tuple[dict[str, Any], Callable[[str], str]]:
     """A TOML table and the function giving where a key is written (its line, or its name)."""
     text = _read_text(path)
     try:
-        data = tomllib.loads(text)
+        data = toml.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
-    except RecursionError:      # tomllib reads nested arrays and tables recursively
-        data = None
-    if data is None or _nesting(data) > TABLE_MAX_NESTING:
+    except toml.TomlLimitError as exc:
+        raise CheckError(T(f"error.limit_{exc.kind}", **exc.args_), file=str(path),
+                         key=exc.key) from None
+    if _nesting(data) > TABLE_MAX_NESTING:
         raise CheckError(Text("readers.error.nesting", {"limit": TABLE_MAX_NESTING}),
                          file=str(path))
     lines = text.splitlines()
