@@ -52,7 +52,7 @@ def test_an_insert_bomb_is_refused_in_a_second(tmp_path):
     start = time.perf_counter()
     with pytest.raises(CheckError, match="more than 200000 entities") as info:
         read_submission(bomb)
-    assert time.perf_counter() - start < 5.0
+    assert time.perf_counter() - start < 15   # refused, not expanded (minutes)
     assert info.value.file == str(bomb)
 
 

@@ -102,8 +102,8 @@ FUZZ_BUDGET = int(os.environ.get("MECHPLAN_FUZZ_BUDGET", "120"))
 #: wall-clock seconds the campaign may take (it stops drawing cases after)
 FUZZ_SECONDS = float(os.environ.get("MECHPLAN_FUZZ_SECONDS", "30"))
 FUZZ_SEED = int(os.environ.get("MECHPLAN_FUZZ_SEED", "38"))
-#: also draw the mutations other work fixes (fuzz_inputs.KNOWN)
-FUZZ_KNOWN = os.environ.get("MECHPLAN_FUZZ_KNOWN", "") == "1"
+#: draw the mutations of fuzz_inputs.KNOWN too (fixed since; MECHPLAN_FUZZ_KNOWN=0 leaves them out)
+FUZZ_KNOWN = os.environ.get("MECHPLAN_FUZZ_KNOWN", "1") == "1"
 #: a case's limits: killed past CASE_SECONDS, MemoryError past CASE_MEMORY of address space
 CASE_SECONDS = float(os.environ.get("MECHPLAN_FUZZ_CASE_SECONDS", "30"))
 CASE_MEMORY = 3 * 1024**3

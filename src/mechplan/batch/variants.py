@@ -174,9 +174,16 @@ def _from_toml(text: str, file: str) -> list[Variant]:
     if unknown:
         raise SceneError(f"a variants file's keys must be students, rules, count or prefix (got "
                          f"{', '.join(sorted(unknown))})", file=file)
-    rules = [_rule(k, v, file) for k, v in doc.get("rules", {}).items()]
+    rule_table, rows = doc.get("rules", {}), doc.get("students", [])
+    if not isinstance(rule_table, dict):
+        raise SceneError(f"rules must be a table of key paths (got {type(rule_table).__name__})",
+                         file=file, key="rules")
+    if not isinstance(rows, list):
+        raise SceneError(f"students must be an array of tables [[students]] (got "
+                         f"{type(rows).__name__})", file=file, key="students")
+    rules = [_rule(k, v, file) for k, v in rule_table.items()]
     students: list[tuple[str, str, dict[str, Any]]] = []
-    for i, st in enumerate(doc.get("students", [])):
+    for i, st in enumerate(rows):
         where = f"students[{i}]"
         if not isinstance(st, dict) or "id" not in st:
             raise SceneError("every student needs an id", file=file, key=where)

@@ -7,6 +7,7 @@ from __future__ import annotations
 import io
 import logging
 import re
+import struct
 from collections.abc import Iterable
 from typing import Any
 
@@ -18,7 +19,7 @@ from ..limits import DXF_MAX_ENTITIES, DXF_MAX_INSERT_DEPTH
 
 #: what ezdxf raises on damaged values besides its own DXFError family
 DAMAGE = (OSError, UnicodeDecodeError, ValueError, TypeError, EOFError, IndexError,
-          ArithmeticError)
+          ArithmeticError, struct.error)      # struct.error: a truncated binary DXF
 
 
 #: what ezdxf's recovery raises on some damaged files (its own asserts and half-built objects)
