@@ -29,12 +29,18 @@ def start(tmp_path: Path, command: str = "batch") -> tuple[subprocess.Popen[str]
                       "--positions", "7200"]}[command]
     proc = subprocess.Popen([sys.executable, "-m", "mechplan.cli", *args, "-o", str(out), "-j",
                              "2", "--no-progress"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, start_new_session=True)
+                            stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=_interruptible)
     deadline = time.monotonic() + 120
     while len(markers(out)) < 2:
         assert proc.poll() is None and time.monotonic() < deadline, proc.communicate()
         time.sleep(0.05)
     return proc, out
+
+
+def _interruptible() -> None:
+    """Ctrl-C as in a terminal: a pytest-xdist worker ignores SIGINT, and a child inherits that."""
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
 def markers(out: Path) -> list[Path]:

@@ -22,7 +22,7 @@ from ..construct.ops import Drawn, spec
 from ..construct.scale import ROUND_MANTISSAS, round_scale
 from ..construct.step import Kind
 from ..drafting.frame import make_frame
-from ..i18n import decimal_mark, message, plan_title, tr, unit
+from ..i18n import message, plan_title, scale_factor, tr, trimmed, unit
 from ..model.mechanism import GROUND
 from ..model.plans import Plan
 from ..scene.spec import Scene
@@ -215,7 +215,7 @@ def _largest_round(per_mm: float) -> float:
     k = math.floor(math.log10(mu) + 1e-12)
     m = mu / 10.0 ** k
     lower = [x for x in ROUND_MANTISSAS if x < m - 1e-9]
-    return float(f"{(lower[-1] if lower else 0.5) * 10.0 ** k:.12g}")
+    return round((lower[-1] if lower else 0.5) * 10.0 ** k, 11 - k)   # no binary tail
 
 
 @dataclass(frozen=True)
@@ -326,8 +326,7 @@ def decide_scales(scene: Scene, c: Construction, ev: Evaluation, plans: tuple[st
 
 def mu_said(plan: Plan, mu: float, lang: str) -> str:
     """ "μa = 2,5 (m/s²)/mm": a scale factor in a sentence (every digit kept)."""
-    value = f"{mu:.12g}".replace(".", decimal_mark(lang))
-    return f"{plan.scale_symbol} = {value} {unit(plan.scale_unit, lang)}"
+    return f"{plan.scale_symbol} = {scale_factor(mu, lang)} {unit(plan.scale_unit, lang)}"
 
 
 def notes(decision: Decision, lang: str, scene: Scene | None = None,
@@ -348,7 +347,7 @@ def notes(decision: Decision, lang: str, scene: Scene | None = None,
                                plan=plan, size=size, standard=standard, used=used))
         if s.enlarged:
             out.append(message("scales.enlarged", lang, plan=plan, used=used, size=size,
-                               min_mm=f"{MIN_SEGMENT_MM:g}"))
+                               min_mm=trimmed(MIN_SEGMENT_MM, 3, lang)))
         if s.short:
             hint = message("scales.hint.none", lang)
             if scene is not None and c is not None and ev is not None:
@@ -359,7 +358,8 @@ def notes(decision: Decision, lang: str, scene: Scene | None = None,
                         break
             out.append(message("scales.short", lang, plan=tr(plan_title(s.plan.value,
                                                                         case="gen"), lang),
-                               used=used, size=size, min_mm=f"{MIN_SEGMENT_MM:g}", hint=hint))
+                               used=used, size=size, min_mm=trimmed(MIN_SEGMENT_MM, 3, lang),
+                               hint=hint))
     return out
 
 
