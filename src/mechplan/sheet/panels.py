@@ -38,6 +38,8 @@ from ..drafting.primitives import (
 from ..i18n import message, unit
 from ..i18n import number as format_number
 from ..model.plans import Plan
+from .link_outline import drawn as draw_figure
+from .link_outline import link_figures
 
 #: line style of an operation's drawing rule → layer role
 ROLES = {LineStyle.DASHED: Role.DASHED, LineStyle.THIN: Role.THIN, LineStyle.OUTLINE: Role.OUTLINE}
@@ -316,19 +318,15 @@ def position_plan(
         for lk in links
     }
 
-    # a link's outline: its joints, then the points no other link joins (a coupler point E
-    # closes the rigid triangle B, C, E)
-    outline = {lk.id: joints[lk.id] + [p for p in lk.points if p not in joints[lk.id]]
-               if len(joints[lk.id]) >= 2 else joints[lk.id] for lk in links}
+    # a link's outline (a coupler point E closes the rigid triangle B, C, E) and the line of
+    # each guide it carries through the blocks sliding in it (a coulisse O3–A–B)
+    figures = link_figures(mech)
 
     def draw_links(ev: Evaluation, k: int, role: Role) -> None:
         for lk in links:
-            pts = [_mm(ev[_pos(ev, p)][k], mu) for p in outline[lk.id] if _has(ev, p)]
-            pts = [p for p in pts if _finite(p)]
-            if len(pts) == 2 and math.dist(*pts) > 1e-6:
-                prims.append(Line(pts[0], pts[1], role))
-            elif len(pts) > 2:
-                prims.append(Polyline(tuple(pts), role, closed=True))
+            at = {p: _mm(ev[_pos(ev, p)][k], mu) for p in figures[lk.id].points if _has(ev, p)}
+            prims.extend(draw_figure(figures[lk.id], {p: q for p, q in at.items() if _finite(q)},
+                                     role))
 
     # trajectories of points that do not move on a circle about the frame or along a guide
     crank = mech.drive.link
