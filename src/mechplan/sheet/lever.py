@@ -81,6 +81,7 @@ def zhukovsky_lever(
             prims.append(placer.place(xy, label))
         for at, label in placer_items:
             prims.append(placer.place(at, label))
+        prims.extend(placer.leaders)
         x0, y0, _x1, y1 = panel.bounds()
         prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
         prims.append(

@@ -231,6 +231,7 @@ def vector_plan(
                          [xy for xy, _ in seen])
     for anchor, labels in seen:
         prims.append(placer.place(anchor, "≡".join(dict.fromkeys(labels))))
+    prims.extend(placer.leaders)
     _title_and_tables(panel, c, ev, k, plan, mu, lang, title, segments, group)
     return panel
 
@@ -346,21 +347,14 @@ def position_plan(
     centre = _mm(ev_all[_pos(ev_all, mech.drive.pivot)][0], mu)
     radius = math.dist(centre, _mm(ev_all[_pos(ev_all, tip)][0], mu))
     prims.append(Circle(centre, radius, Role.CHAIN))
+    # the positions' numbers at the crank's tip, outward; placed with the points' labels
+    small_labels: list[tuple[tuple[float, float], str, float | None]] = []
     for k in range(ev_all.n):
         draw_links(ev_all, k, Role.OUTLINE if k in highlight else Role.THIN)
         tip_mm = _mm(ev_all[_pos(ev_all, tip)][k], mu)
         if _finite(tip_mm):
-            d = (tip_mm[0] - centre[0], tip_mm[1] - centre[1])
-            n = math.hypot(*d) or 1.0
-            prims.append(
-                Text(
-                    (tip_mm[0] + 4.0 * d[0] / n, tip_mm[1] + 4.0 * d[1] / n),
-                    numbers[k],
-                    2.5,
-                    halign=HAlign.CENTER,
-                    valign=VAlign.MIDDLE,
-                )
-            )
+            outward = math.degrees(math.atan2(tip_mm[1] - centre[1], tip_mm[0] - centre[0]))
+            small_labels.append((tip_mm, numbers[k], outward))
     if ev_ext is not None:
         for k in range(ev_ext.n):
             draw_links(ev_ext, k, Role.DASHED)
@@ -381,7 +375,7 @@ def position_plan(
         t = (travel - o) @ u
         a, b = o + (t.min() - 10 * mu) * u, o + (t.max() + 10 * mu) * u
         prims.append(Line(_mm(a, mu), _mm(b, mu), Role.CHAIN))
-        prims.append(Text(_mm(b, mu), g.name, 2.5))
+        small_labels.append((_mm(b, mu), g.name, None))
     # sliders, frame pivots and joints of the highlighted positions
     for k in highlight:
         for lk in links:
@@ -406,12 +400,15 @@ def position_plan(
             q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
                 prims.append(Circle(q, 0.8, Role.OUTLINE))
-    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H)
-    for p in names:
-        if _has(ev_all, p):
-            q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
-            if _finite(q):
-                prims.append(placer.place(q, p))
+    anchors = {p: _mm(ev_all[_pos(ev_all, p)][k0], mu) for p in names if _has(ev_all, p)}
+    anchors = {p: q for p, q in anchors.items() if _finite(q)}
+    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H,
+                         list(anchors.values()))
+    for p, q in anchors.items():
+        prims.append(placer.place(q, p))
+    for at, text, toward in small_labels:
+        prims.append(placer.place(at, text, 2.5, toward))
+    prims.extend(placer.leaders)
     x0, _y0, _x1, y1 = panel.bounds()
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(Plan.POSITION, mu, lang), LABEL_H))
