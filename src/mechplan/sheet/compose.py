@@ -23,7 +23,7 @@ from .kinematics_sheet import (
     small_plan,
     tables_of,
 )
-from .layout import drawing_area, framed, paginate
+from .layout import drawing_area, fewest_sheets, framed
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -207,7 +207,7 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
     base = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION], lang)}
     base.update({k: v for k, v in scene.drawing.title_block.items() if v})
     # one stream in reading order: kinetostatics fills the free room kinematics leaves
-    found = paginate(panels, packing_area(make_frame(size, standard, base, language=lang)),
+    found = fewest_sheets(panels, packing_area(make_frame(size, standard, base, language=lang)),
                      split=True)
     if isinstance(found, Panel):
         x0, y0, x1, y1 = found.bounds()

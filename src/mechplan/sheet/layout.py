@@ -220,6 +220,40 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *,
     return groups
 
 
+def _height(panel: Panel) -> float:
+    _x0, y0, _x1, y1 = panel.bounds()
+    return y1 - y0
+
+
+def _area_of(panel: Panel) -> float:
+    x0, y0, x1, y1 = panel.bounds()
+    return (x1 - x0 + GAP) * (y1 - y0 + GAP)
+
+
+def _reordered(panels: Sequence[Panel], key: Callable[[Panel], float]) -> list[Panel]:
+    """The first panel, then the others by ``key`` descending; the parts of a sequence stay
+    together and in order (ranked by their first part)."""
+    rank: dict[str, float] = {}
+    for p in panels[1:]:
+        rank.setdefault(chain(p.name), key(p))
+    rest = sorted(panels[1:], key=lambda p: -rank[chain(p.name)])     # stable: order kept
+    return list(panels[:1]) + rest
+
+
+def fewest_sheets(panels: Sequence[Panel], area: BaseGeometry, *,
+                  split: bool = False) -> Groups | Panel:
+    """:func:`paginate` in reading order — or, when that saves a sheet, with the panels after the
+    first taken tallest first or largest first (each sheet then packs like a shelf)."""
+    best = paginate(panels, area, split=split)
+    if isinstance(best, Panel) or len(best) == 1:
+        return best
+    for key in (_height, _area_of):
+        other = paginate(_reordered(panels, key), area, split=split)
+        if not isinstance(other, Panel) and len(other) < len(best):
+            best = other
+    return best
+
+
 def coverage(placed: Sequence[tuple[Panel, tuple[float, float]]], area: BaseGeometry) -> float:
     """The share of a sheet's drawing area covered by the boxes of its panels."""
     used = 0.0
@@ -294,7 +328,7 @@ def refitted(panels: Sequence[Panel], area: BaseGeometry) -> list[Panel]:
 def _flow(panels: Sequence[Panel], area: BaseGeometry) -> Groups | Panel:
     """The panels, in order (refitted to the area), packed sheet after sheet: (panels, offsets)
     per sheet — or the first panel that does not fit on a sheet alone."""
-    return paginate(refitted(panels, area), area)
+    return fewest_sheets(refitted(panels, area), area)
 
 
 def _search(build: Callable[[float], Sequence[Panel]], area: BaseGeometry,
