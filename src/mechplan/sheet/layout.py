@@ -22,6 +22,8 @@ from ..errors import DrawingError
 from .panels import Panel
 
 GAP = 8.0          # mm between panels
+#: the coverage a full sheet (not the last of its set) should reach
+GOAL = 0.55
 
 #: enlargements of a capability sheet's drawings and diagrams tried, largest first; text heights
 #: and tables keep their size
@@ -268,10 +270,11 @@ def fewest_sheets(panels: Sequence[Panel], area: BaseGeometry, *,
 
 def _fuller(a: Groups, b: Groups, area: BaseGeometry) -> bool:
     """Tell whether sheets ``a`` fill their full sheets (all but the last) clearly better than
-    ``b``: the emptiest of them covered 10 points more (the reading order is kept otherwise)."""
+    ``b`` where ``b`` leaves one under :data:`GOAL`: the emptiest of them covered 10 points more
+    (the reading order is kept otherwise)."""
     def emptiest(groups: Groups) -> float:
         return min((coverage(list(zip(p, o)), area) for p, o in groups[:-1]), default=1.0)
-    return emptiest(a) > emptiest(b) + 0.10
+    return emptiest(b) < GOAL and emptiest(a) > emptiest(b) + 0.10
 
 
 def coverage(placed: Sequence[tuple[Panel, tuple[float, float]]], area: BaseGeometry) -> float:
