@@ -8,7 +8,7 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
-from shapely import STRtree, box, distance, points
+from shapely import STRtree, box, distance, intersection, length, points
 from shapely.geometry import LineString
 
 from .fonts import text_width_mm
@@ -66,7 +66,7 @@ class LabelPlacer:
                     ends += [p.points[0], p.points[-1]]
             elif isinstance(p, Text):
                 self.boxes.append(text_box(p))
-        self.lines = geoms
+        self.lines = np.asarray(geoms, dtype=object)
         self.tree = STRtree(geoms) if geoms else None
         self.h = height_mm
         self.xy = np.asarray(points_mm, dtype=float).reshape(-1, 2)
@@ -80,27 +80,29 @@ class LabelPlacer:
         """The boxes of the texts placed or given, as shapely boxes."""
         return [box(*b) for b in self.boxes]
 
-    def _overprints(self, r: tuple[float, float, float, float],
-                    anchor: tuple[float, float]) -> bool:
-        """Tell whether a box (with its clearance) covers a label, a line's end or another point."""
-        x0, y0, x1, y1 = r[0] - CLEAR_MM, r[1] - CLEAR_MM, r[2] + CLEAR_MM, r[3] + CLEAR_MM
+    def _overprints(self, rects: np.ndarray, anchor: tuple[float, float]) -> np.ndarray:
+        """For boxes (n, 4): whether each (with its clearance) covers a label, a line's end or
+        another point."""
+        r = rects + np.array([-CLEAR_MM, -CLEAR_MM, CLEAR_MM, CLEAR_MM])
+        x0, y0, x1, y1 = (r[:, i:i + 1] for i in range(4))
+        hit = np.zeros(len(r), dtype=bool)
         if self.boxes:
             b = np.asarray(self.boxes)
-            if ((b[:, 0] < x1) & (b[:, 2] > x0) & (b[:, 1] < y1) & (b[:, 3] > y0)).any():
-                return True
+            hit |= ((b[:, 0] < x1) & (b[:, 2] > x0) & (b[:, 1] < y1) & (b[:, 3] > y0)).any(axis=1)
         for pts in (self.ends, self.xy):
             if len(pts):
-                far = np.hypot(pts[:, 0] - anchor[0], pts[:, 1] - anchor[1]) > 0.3
-                inside = (pts[:, 0] > x0) & (pts[:, 0] < x1) & (pts[:, 1] > y0) & (pts[:, 1] < y1)
-                if (inside & far).any():
-                    return True
-        return False
+                pts = pts[np.hypot(pts[:, 0] - anchor[0], pts[:, 1] - anchor[1]) > 0.3]
+                px, py = pts[:, 0], pts[:, 1]
+                hit |= ((px > x0) & (px < x1) & (py > y0) & (py < y1)).any(axis=1)
+        return hit
 
     def _crossing(self, rect) -> float:
+        """The length (mm) of the lines and leaders inside a box."""
         cost = 0.0
         if self.tree is not None:
-            for i in self.tree.query(rect):
-                cost += self.lines[int(i)].intersection(rect).length
+            near = self.tree.query(rect)
+            if len(near):
+                cost += float(length(intersection(self.lines[near], rect)).sum())
         for leader in self.leaders:
             cost += LineString([leader.start, leader.end]).intersection(rect).length
         return cost
@@ -130,13 +132,16 @@ class LabelPlacer:
         if toward_deg is not None:
             directions = sorted(_DIRECTIONS, key=lambda d: abs((d - toward_deg + 180) % 360 - 180))
         best = None
+        angles = np.radians(np.asarray(directions, dtype=float))
         for ring, gap in enumerate(GAPS_MM):
-            for order, deg in enumerate(directions):
-                a = math.radians(deg)
-                cx = anchor[0] + math.cos(a) * (gap + w / 2)
-                cy = anchor[1] + math.sin(a) * (gap + (hi - lo) / 2) - (hi + lo) / 2
+            cxs = anchor[0] + np.cos(angles) * (gap + w / 2)
+            cys = anchor[1] + np.sin(angles) * (gap + (hi - lo) / 2) - (hi + lo) / 2
+            rects = np.stack([cxs - w / 2, cys + lo, cxs + w / 2, cys + hi], axis=1)
+            covered = self._overprints(rects, anchor)
+            for order in range(len(directions)):
+                cx, cy = float(cxs[order]), float(cys[order])
                 r = (cx - w / 2, cy + lo, cx + w / 2, cy + hi)
-                if self._overprints(r, anchor) or self._leader_crosses(anchor, r):
+                if covered[order] or self._leader_crosses(anchor, r):
                     continue
                 rect = box(r[0] - CLEAR_MM, r[1] - CLEAR_MM, r[2] + CLEAR_MM, r[3] + CLEAR_MM)
                 cost = self._crossing(rect) + 0.05 * gap + (0.02 * order if toward_deg else 0.0)
@@ -145,6 +150,8 @@ class LabelPlacer:
                     cost += AMBIGUOUS_COST + worse
                 if best is None or cost < best[0]:
                     best = (cost, cx, cy, r, worse > 0)
+                if cost <= 0.05 * gap + 1e-9:
+                    break               # clear of lines and its own: the ring's first choice
             if best is not None and (best[0] < 0.2 + 0.05 * gap + 0.4 or ring >= 2) \
                     and best[0] < AMBIGUOUS_COST:
                 break

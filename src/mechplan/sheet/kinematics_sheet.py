@@ -212,13 +212,18 @@ def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
         panel = _grid_panel(f"{name}-{start // per + 1}" if len(cells) > per else name,
                             chunk, boxes[start:start + per], cols, cw, ch, title)
         if title:
-            def refit(w: float, h: float, chunk: list[Panel] = chunk,
-                      cname: str = panel.name) -> list[Panel]:
+            drawn: dict[tuple[int, int], list[Panel]] = {}
+
+            def refit(w: float, h: float, chunk: list[Panel] = chunk, cname: str = panel.name,
+                      drawn: dict[tuple[int, int], list[Panel]] = drawn) -> list[Panel]:
                 c, r = shape(w, h)
-                first = chunk[:c * r]
-                firsts = [cell.bounds() for cell in first]
-                head = _grid_panel(f"{cname}-1", first, firsts, c, cw, ch, title)
-                return [head] + grid(f"{cname}-2", chunk[c * r:], width_mm, height_mm, gap, title)
+                if (c, r) not in drawn:
+                    first = chunk[:c * r]
+                    firsts = [cell.bounds() for cell in first]
+                    head = _grid_panel(f"{cname}-1", first, firsts, c, cw, ch, title)
+                    drawn[c, r] = [head] + grid(f"{cname}-2", chunk[c * r:], width_mm, height_mm,
+                                                gap, title)
+                return list(drawn[c, r])
             panel.refit = refit
         out.append(panel)
     return out

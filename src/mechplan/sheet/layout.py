@@ -59,9 +59,25 @@ def drawing_area(frame: FrameLayout) -> BaseGeometry:
         frame.drawing_area)
 
 
-def _footprint(panel: Panel) -> tuple[float, float, float, float, float, float]:
+class Bounds:
+    """``Panel.bounds`` remembered while a set of panels is packed (and its panels kept alive,
+    so that an id is never reused for another panel)."""
+
+    def __init__(self) -> None:
+        self._known: dict[int, tuple[Panel, int, tuple[float, float, float, float]]] = {}
+
+    def __call__(self, panel: Panel) -> tuple[float, float, float, float]:
+        known = self._known.get(id(panel))
+        if known is None or known[1] != len(panel.primitives):
+            known = (panel, len(panel.primitives), panel.bounds())
+            self._known[id(panel)] = known
+        return known[2]
+
+
+def _footprint(panel: Panel, bounds: Callable[[Panel], tuple[float, float, float, float]]
+               ) -> tuple[float, float, float, float, float, float]:
     """(x0, y0, x1, y1) of a panel and its width and height with the gap around it."""
-    x0, y0, x1, y1 = panel.bounds()
+    x0, y0, x1, y1 = bounds(panel)
     return x0, y0, x1, y1, x1 - x0 + GAP, y1 - y0 + GAP
 
 
@@ -85,9 +101,11 @@ class Sheetful:
     edges are the only candidates; the highest, then leftmost, is taken.
     """
 
-    def __init__(self, area: BaseGeometry, *, columns: bool = False) -> None:
+    def __init__(self, area: BaseGeometry, *, columns: bool = False,
+                 bounds: Bounds | None = None) -> None:
         """``columns``: take the leftmost, then highest spot (fill columns, not rows)."""
         self.columns = columns
+        self.panel_bounds = bounds or Bounds()
         self.bounds = area.bounds
         cut = box(*self.bounds).difference(area)
         pieces = list(getattr(cut, "geoms", [cut])) if not cut.is_empty else []
@@ -143,7 +161,7 @@ class Sheetful:
 
     def put(self, panel: Panel) -> tuple[float, float] | None:
         """Place a panel at its spot: the offset that moves it there, or None (no room)."""
-        x0, _y0, _x1, y1, w, h = _footprint(panel)
+        x0, _y0, _x1, y1, w, h = _footprint(panel, self.panel_bounds)
         at = self.spot(w, h)
         if at is None:
             return None
@@ -182,7 +200,7 @@ def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
         if w <= GAP or h <= GAP:
             continue
         parts = panel.refit(w - GAP, h - GAP)
-        x0, y0, x1, y1 = parts[0].bounds()
+        x0, y0, x1, y1 = room.panel_bounds(parts[0])
         if len(parts) > 1 and x1 - x0 <= w - GAP + 1e-9 and y1 - y0 <= h - GAP + 1e-9 \
                 and room.spot(x1 - x0 + GAP, y1 - y0 + GAP) is not None:
             return parts
@@ -190,7 +208,7 @@ def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
 
 
 def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False,
-             columns: bool = False) -> Groups | Panel:
+             columns: bool = False, bounds: Bounds | None = None) -> Groups | Panel:
     """The panels, in reading order, on as few sheets as the packing needs.
 
     Each sheet takes every remaining panel that still fits its free room (so no panel on a
@@ -202,8 +220,9 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
     """
     groups: Groups = []
     rest = list(panels)
+    bounds = bounds or Bounds()
     while rest:
-        room = Sheetful(area, columns=columns)
+        room = Sheetful(area, columns=columns, bounds=bounds)
         placed: list[Panel] = []
         offsets: list[tuple[float, float]] = []
         left: list[Panel] = []
@@ -255,12 +274,13 @@ def fewest_sheets(panels: Sequence[Panel], area: BaseGeometry, *,
                   split: bool = False) -> Groups | Panel:
     """:func:`paginate` in reading order, rows first — or, when one saves a sheet, in columns
     first, or with the panels after the first taken tallest first or largest first."""
-    best = paginate(panels, area, split=split)
+    bounds = Bounds()
+    best = paginate(panels, area, split=split, bounds=bounds)
     if isinstance(best, Panel) or len(best) == 1:
         return best
     orders = [list(panels), _reordered(panels, _height), _reordered(panels, _area_of)]
     for order, columns in itertools.product(orders, (False, True)):
-        other = paginate(order, area, split=split, columns=columns)
+        other = paginate(order, area, split=split, columns=columns, bounds=bounds)
         if isinstance(other, Panel):
             continue
         if len(other) < len(best) or (len(other) == len(best) and _fuller(other, best, area)):
