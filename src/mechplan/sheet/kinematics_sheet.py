@@ -186,9 +186,9 @@ def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
     """Panels in reading order on a grid of equal cells, as few grid panels as fit the room.
 
     With a title, each grid panel has it above its cells (within ``height_mm``) and can be
-    redrawn (``Panel.refit(w, h)``) as a first part of at most w × h with the rest of its
-    cells laid out again for the room — so the layout fills a sheet's free room with the first
-    rows and carries the others over.
+    redrawn (``Panel.refit(w, h)``) as a first part of at most w × h with its other cells and
+    those of the later grid panels laid out again for the room — so the layout fills a sheet's
+    free room with the first rows and carries the others over.
     """
     if not cells:
         return []
@@ -208,21 +208,21 @@ def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
     per = cols * rows_per
     out: list[Panel] = []
     for start in range(0, len(cells), per):
-        chunk = cells[start:start + per]
+        chunk, onward = cells[start:start + per], cells[start:]
         panel = _grid_panel(f"{name}-{start // per + 1}" if len(cells) > per else name,
                             chunk, boxes[start:start + per], cols, cw, ch, title)
         if title:
             drawn: dict[tuple[int, int], list[Panel]] = {}
 
-            def refit(w: float, h: float, chunk: list[Panel] = chunk, cname: str = panel.name,
+            def refit(w: float, h: float, onward: list[Panel] = onward, cname: str = panel.name,
                       drawn: dict[tuple[int, int], list[Panel]] = drawn) -> list[Panel]:
                 c, r = shape(w, h)
                 if (c, r) not in drawn:
-                    first = chunk[:c * r]
+                    first = onward[:c * r]
                     firsts = [cell.bounds() for cell in first]
                     head = _grid_panel(f"{cname}-1", first, firsts, c, cw, ch, title)
-                    drawn[c, r] = [head] + grid(f"{cname}-2", chunk[c * r:], width_mm, height_mm,
-                                                gap, title)
+                    drawn[c, r] = [head] + grid(f"{cname}-2", onward[c * r:], width_mm,
+                                                height_mm, gap, title)
                 return list(drawn[c, r])
             panel.refit = refit
         out.append(panel)

@@ -201,7 +201,7 @@ def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
             continue
         parts = panel.refit(w - GAP, h - GAP)
         x0, y0, x1, y1 = room.panel_bounds(parts[0])
-        if len(parts) > 1 and x1 - x0 <= w - GAP + 1e-9 and y1 - y0 <= h - GAP + 1e-9 \
+        if x1 - x0 <= w - GAP + 1e-9 and y1 - y0 <= h - GAP + 1e-9 \
                 and room.spot(x1 - x0 + GAP, y1 - y0 + GAP) is not None:
             return parts
     return None
@@ -215,7 +215,9 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
     later sheet would have fitted an earlier one), except that the parts of one sequence
     (:func:`chain`) keep their order. With ``split``, a panel that can be redrawn in parts
     (``Panel.refit``: a grid of small plans) and does not fit is split so that its first part
-    fills the free room. ``columns``: each panel at the leftmost, then highest spot. Return
+    fills the free room; its parts stand for it and for the later panels of its sequence
+    (the grid's other cells), which are dropped. ``columns``: each panel at the leftmost, then
+    highest spot. Return
     (panels, offsets) per sheet, or the first panel that fits no empty sheet.
     """
     groups: Groups = []
@@ -236,7 +238,9 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
             if at is None and split and placed:
                 parts = _split_into(room, panel)
                 if parts is not None:
-                    queue[:0] = parts
+                    same = chain(panel.name)
+                    queue = parts + [q for q in queue if chain(q.name) != same]
+                    left = [q for q in left if chain(q.name) != same]
                     continue
             if at is None:
                 left.append(panel)
