@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import argparse
 import re
+import textwrap
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -93,10 +94,11 @@ def table(results: dict[str, dict[str, list[list[float]]]]) -> str:
                 full += covered[:-1]
                 sheets += len(covered)
     under = sum(c < GOAL for c in full)
-    lines += ["", (f"{sheets} sheets; {len(full)} full sheets (not the last of their set), "
-              f"{under} of them under {GOAL:.0%}; the lowest full sheet "
-              f"{min(full) * 100:.0f} %, the mean of the full sheets "
-              f"{sum(full) / len(full) * 100:.0f} %.")]
+    summary = (f"{sheets} sheets; {len(full)} full sheets (not the last of their set), "
+               f"{under} of them under {GOAL:.0%}; the lowest full sheet "
+               f"{min(full) * 100:.0f} %, the mean of the full sheets "
+               f"{sum(full) / len(full) * 100:.0f} %.")
+    lines += ["", *textwrap.wrap(summary, 100)]
     return "\n".join(lines)
 
 
