@@ -14,8 +14,8 @@ from __future__ import annotations
 
 import argparse
 import re
-import textwrap
 import sys
+import textwrap
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
