@@ -87,18 +87,17 @@ def test_no_panel_of_a_later_sheet_fits_an_earlier_sheets_free_room(path, monkey
     for size in SIZES:
         for placements, area in _sets(path, size, monkeypatch):
             rasters = [Raster(area, placed) for placed in placements]
+            sheet_of = {id(q): n for n, placed in enumerate(placements) for q, _ in placed}
             for j, placed in enumerate(placements[1:], start=1):
                 for panel, _ in placed:
-                    # the parts of one sequence keep their order: a part waits for the one before
-                    earlier = [q for s in placements[j:] for q, _ in s
-                               if chain(q.name) == chain(panel.name) and q is not panel]
-                    first_of_chain = all(
-                        [q for s in placements for q, _ in s].index(q)
-                        > [q for s in placements for q, _ in s].index(panel) for q in earlier)
-                    if not first_of_chain:
-                        continue
+                    # the parts of one sequence keep their order: a part cannot go on a sheet
+                    # before the one that holds the part before it
+                    before = [q for s in placements for q, _ in s
+                              if chain(q.name) == chain(panel.name)]
+                    k = before.index(panel)
+                    first = sheet_of[id(before[k - 1])] if k else 0
                     w, h = _footprint(panel)
-                    late += [(size, panel.name, j + 1, i + 1) for i in range(j)
+                    late += [(size, panel.name, j + 1, i + 1) for i in range(first, j)
                              if rasters[i].fits(w, h)]
     assert not late, late
 
