@@ -1,4 +1,7 @@
-"""Write PNG previews of every template's sheets to drawings/previews/ (60 dpi, for the README).
+"""Write PNG previews of the templates' sheets to drawings/previews/ (60 dpi, for the README).
+
+Every template's own sheets go to drawings/previews/; one template per capability is also drawn on
+A4 and A3 (drawings/previews/a4/, a3/) for docs/sheets.md.
 
 Run: PYTHONPATH=src python tools/previews.py
 """
@@ -14,16 +17,28 @@ from mechplan.studies import solve_file
 
 ROOT = Path(__file__).resolve().parents[1]
 
+#: one template per capability, previewed on the sizes students print their reports on
+SMALL_SIZES = ("A4", "A3")
+CAPABILITIES = ("v_engine", "machine_unit", "motorcycle_engine", "cam_cycloidal",
+                "planetary_two_row")
+
+
+def _preview(path: Path, out: Path, size: str | None) -> None:
+    out.mkdir(parents=True, exist_ok=True)
+    for sheet in solve_file(str(path)).sheets(size, None, None, path.stem):
+        (png,) = write(sheet, out, ["png"], png_dpi=60)
+        # line art: 16 grey levels keep the previews small
+        Image.open(png).convert("L").quantize(16).save(png, optimize=True)
+        print(png)
+
 
 def main() -> None:
     out = ROOT / "drawings" / "previews"
-    out.mkdir(parents=True, exist_ok=True)
     for path in sorted((ROOT / "templates").glob("*.toml")):
-        for sheet in solve_file(str(path)).sheets(None, None, None, path.stem):
-            (png,) = write(sheet, out, ["png"], png_dpi=60)
-            # line art: 16 grey levels keep the previews small
-            Image.open(png).convert("L").quantize(16).save(png, optimize=True)
-            print(png)
+        _preview(path, out, None)
+    for size in SMALL_SIZES:
+        for name in CAPABILITIES:
+            _preview(ROOT / "templates" / f"{name}.toml", out / size.lower(), size)
 
 
 if __name__ == "__main__":

@@ -8,8 +8,11 @@ catalogues and sources under ``src/mechplan``. Run after the Chinese catalogue g
 
     python tools/subset_cjk_font.py [/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc]
 
-Writes ``src/mechplan/fonts/NotoSansCJKsc-Regular.otf`` (SIL Open Font License 1.1, see
-``src/mechplan/fonts/OFL-NotoSansCJK.txt``).
+Writes ``src/mechplan/fonts/NotoSansCJKsc-Regular.ttf`` (SIL Open Font License 1.1, see
+``src/mechplan/fonts/OFL-NotoSansCJK.txt``) with its cubic CFF outlines converted to quadratic
+TrueType ones (fontTools.cu2qu, 1 unit of 1000 tolerance): a PDF embeds a TrueType font as Type 42,
+and a CFF font embedded so is "a mismatch between font type and embedded font file" for poppler.
+Only the horizontal layout features are kept (sheets have no vertical text).
 """
 
 from __future__ import annotations
@@ -18,11 +21,13 @@ import sys
 from pathlib import Path
 
 from fontTools import subset
-from fontTools.ttLib import TTFont
+from fontTools.pens.cu2quPen import Cu2QuPen
+from fontTools.pens.ttGlyphPen import TTGlyphPen
+from fontTools.ttLib import TTFont, newTable
 
 ROOT = Path(__file__).resolve().parents[1]
 PACKAGE = ROOT / "src" / "mechplan"
-OUT = PACKAGE / "fonts" / "NotoSansCJKsc-Regular.otf"
+OUT = PACKAGE / "fonts" / "NotoSansCJKsc-Regular.ttf"
 SOURCE = Path("/usr/share/fonts/opentype/noto/NotoSansCJK-Regular.ttc")
 SC_INDEX = 2          # "Noto Sans CJK SC" in the Debian collection
 RANGES = [(0x20, 0x7E), (0xA0, 0xFF), (0x370, 0x3FF), (0x400, 0x4FF), (0x2000, 0x206F),
@@ -51,6 +56,38 @@ def project_characters() -> set[int]:
     return chars
 
 
+def to_truetype(font: TTFont, max_err: float = 1.0) -> None:
+    """Replace the CFF outlines of `font` by TrueType (quadratic) ones, in place."""
+    order = font.getGlyphOrder()
+    glyphs = font.getGlyphSet()
+    glyf = newTable("glyf")
+    glyf.glyphOrder = order
+    glyf.glyphs = {}
+    for name in order:
+        pen = TTGlyphPen(glyphs)
+        glyphs[name].draw(Cu2QuPen(pen, max_err, reverse_direction=True))
+        glyf[name] = pen.glyph()
+    font["glyf"] = glyf
+    font["loca"] = newTable("loca")
+    maxp = font["maxp"]
+    maxp.tableVersion = 0x00010000
+    for field in ("maxZones", "maxTwilightPoints", "maxStorage", "maxFunctionDefs",
+                  "maxInstructionDefs", "maxStackElements", "maxSizeOfInstructions",
+                  "maxComponentElements", "maxPoints", "maxContours", "maxCompositePoints",
+                  "maxCompositeContours", "maxComponentDepth"):
+        setattr(maxp, field, 0)
+    maxp.maxZones = 1
+    for tag in ("CFF ", "VORG"):
+        if tag in font:
+            del font[tag]
+    font["head"].glyphDataFormat = 0
+    post = font["post"]
+    post.formatType = 2.0
+    post.extraNames = []
+    post.mapping = {}
+    font.sfntVersion = "\x00\x01\x00\x00"
+
+
 def main() -> int:
     source = Path(sys.argv[1]) if len(sys.argv) > 1 else SOURCE
     font = TTFont(source, fontNumber=SC_INDEX)
@@ -60,7 +97,8 @@ def main() -> int:
         wanted.update(range(a, b + 1))
     unicodes = sorted(cp for cp in wanted if cp in cmap)
     options = subset.Options()
-    options.layout_features = ["*"]
+    options.layout_features = ["ccmp", "kern"]   # the Simplified Chinese forms only (no locl)
+    options.drop_tables = [*options.drop_tables, "vhea", "vmtx", "VORG"]
     options.name_IDs = ["*"]
     options.name_languages = ["*"]
     options.notdef_outline = True
@@ -69,6 +107,7 @@ def main() -> int:
     sub = subset.Subsetter(options)
     sub.populate(unicodes=unicodes)
     sub.subset(font)
+    to_truetype(font)
     OUT.parent.mkdir(parents=True, exist_ok=True)
     font.save(OUT)
     print(f"{OUT}: {len(unicodes)} characters, {OUT.stat().st_size / 1e6:.2f} MB")

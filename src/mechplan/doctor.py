@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib.util
+import os
 import platform
 import shutil
 import sys
@@ -21,15 +22,27 @@ VIEWERS = (("librecad", "DXF viewer (LibreCAD)"), ("chromium", "SVG/PDF viewer (
 
 def report() -> str:
     """Return the report as text, one finding a line."""
-    from .drafting.fonts import BUNDLED_DIR, SheetFont, font_path
+    from .drafting.fonts import (
+        ENV_FONT_DIRS,
+        ENV_SYSTEM_FONTS,
+        SheetFont,
+        font_path,
+        font_source,
+        system_fonts_enabled,
+    )
 
     head = (f"mechplan {__version__} (Python {platform.python_version()}, {sys.platform}, "
             f"{sys.executable})")
-    lines = [head, "fonts:"]
+    choice = ("the system's fonts first (--system-fonts / " + ENV_SYSTEM_FONTS + "=1)"
+              if system_fonts_enabled() else "the bundled fonts (the same on every machine; "
+              "--system-fonts or " + ENV_SYSTEM_FONTS + "=1 to prefer the system's)")
+    lines = [head, f"fonts: {choice}"]
+    if os.environ.get(ENV_FONT_DIRS):
+        lines.append(f"  {ENV_FONT_DIRS}={os.environ[ENV_FONT_DIRS]} (searched first)")
     for font in SheetFont:
         path = font_path(font)
-        where = "not found: text metrics are estimated" if path is None else (
-            f"bundled {path}" if path.parent == BUNDLED_DIR else f"system {path}")
+        where = ("not found: text metrics are estimated" if path is None
+                 else f"{font_source(font)} {path}")
         lines.append(f"  {font.family}: {where}")
     lines.append("viewers:")
     seen = set()

@@ -97,16 +97,94 @@ def decimal_mark(language: str) -> str:
     return str(_locale(language).number_symbols["latn"]["decimal"])
 
 
+# -- numbers: every number a sheet or a report prints is written by the functions below ----------
+#: magnitudes written in decimal form by :func:`significant`; outside, the ×10ⁿ form
+DECIMAL_RANGE = (1e-6, 1e9)
+_SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
 def number(value: float, digits: int, language: str) -> str:
     """Format a number with ``digits`` decimals and the language's decimal mark, without grouping.
 
-    A value that rounds to zero is written without a minus sign.
+    A value that rounds to zero is written without a minus sign. The one writer of decimals:
+    :func:`tick`, :func:`significant` and :func:`scientific` call it.
     """
-    s = f"{value:.{digits}f}"
+    s = f"{value:.{max(0, digits)}f}"
     if s.startswith("-") and float(s) == 0.0:
         s = s[1:]
     mark = decimal_mark(language)
     return s.replace(".", mark) if mark != "." else s
+
+
+def decimals_of(step: float) -> int:
+    """The fewest decimals that write ``step`` exactly (to 1e-9 of it): 2.5 → 1, 0.0025 → 4,
+    20 → 0; every multiple of ``step`` then needs no more."""
+    step = abs(float(step))
+    if step == 0.0 or not math.isfinite(step):
+        return 0
+    for d in range(17):
+        if abs(round(step, d) - step) <= 1e-9 * step:
+            return d
+    return 17
+
+
+def tick(value: float, step: float, language: str) -> str:
+    """A tick label: ``value`` (a multiple of ``step``) with the decimals ``step`` needs, so that
+    the label equals its tick (2.5, 5.0, 7.5 for a step of 2.5; never "2, 5, 8")."""
+    return number(value, decimals_of(step), language)
+
+
+def trimmed(value: float, digits: int, language: str) -> str:
+    """``value`` with at most ``digits`` decimals, the zeros that end its fraction dropped (never
+    an integer's zeros): φ = 30.5 → "30,5", 100.0 → "100"."""
+    return _trimmed(number(value, digits, language), language)
+
+
+def _trimmed(text: str, language: str) -> str:
+    mark = decimal_mark(language)
+    if mark in text:
+        text = text.rstrip("0").removesuffix(mark)
+    return "0" if text in ("-0", "") else text
+
+
+def significant(value: float, figures: int, language: str) -> str:
+    """``value`` to ``figures`` significant figures without the zeros that end its fraction:
+    1000 → "1000", 2500 → "2500", 0.00025 → "0,00025" (ru), 6.981317 → "6,9813" (5 figures).
+
+    A magnitude outside :data:`DECIMAL_RANGE` is written by :func:`scientific`; an integer part
+    longer than ``figures`` is kept whole (40000 with 2 figures is "40000").
+    """
+    v = float(value)
+    if not math.isfinite(v):
+        return "∞" if v > 0 else "-∞" if v < 0 else "?"
+    if v == 0.0:
+        return "0"
+    if not DECIMAL_RANGE[0] <= abs(v) < DECIMAL_RANGE[1]:
+        return scientific(v, figures, language)
+    digits = max(0, figures - 1 - math.floor(math.log10(abs(v))))
+    return _trimmed(number(v, digits, language), language)
+
+
+def scale_factor(mu: float, language: str) -> str:
+    """A scale factor μ with all its significant figures (six at most): "2,5", "0,00025",
+    "1000", "40000" — the same on the sheet and in the report."""
+    return significant(mu, 6, language)
+
+
+def scientific(value: float, figures: int, language: str) -> str:
+    """``value`` as mantissa × 10 to a power, the way the language writes it (Babel's
+    superscripting exponent): 1.67e-14 → "1,67×10⁻¹⁴" (ru), "1.67×10⁻¹⁴" (en); never "e-14".
+    Trailing zeros of the mantissa are dropped; a power of 0 is written without it."""
+    v = float(value)
+    if not math.isfinite(v) or v == 0.0:
+        return significant(v, figures, language)
+    mantissa, exponent = f"{v:.{max(0, figures - 1)}e}".split("e")
+    power = int(exponent)
+    text = _trimmed(number(float(mantissa), max(0, figures - 1), language), language)
+    if power == 0:
+        return text
+    times = str(_locale(language).number_symbols["latn"].get("superscriptingExponent", "×"))
+    return f"{text}{times}10{str(power).translate(_SUPERSCRIPT)}"
 
 
 def grouped(value: float, digits: int, language: str) -> str:
@@ -235,14 +313,24 @@ def tr(x: Any, language: str) -> str:
 
 def num(value: Any, spec: str, language: str) -> str:
     """A number formatted by a format spec with the language's decimal mark; in English exactly
-    ``format(value, spec)``. A spec starting with "~" writes a number that is not finite as "?"."""
+    ``format(value, spec)`` unless that is in e-notation, which is written as ×10ⁿ
+    (:func:`scientific`) in every language. A spec starting with "~" writes a number that is not
+    finite as "?"."""
     unknown = spec.startswith("~")
     spec = spec.removeprefix("~")
     if isinstance(value, bool) or not hasattr(value, "__float__"):
         return format(value, spec)
     if unknown and not math.isfinite(float(value)):
         return "?"
-    if language == "en" or isinstance(value, int) and not spec:
+    if isinstance(value, int) and not spec:
+        return format(value, spec)
+    e = re.fullmatch(r"([<>^=]?)(\d*)(?:\.(\d+))?([eEgG])", spec)
+    if e and math.isfinite(float(value)) and "e" in format(value, spec).lower():
+        figures = int(e.group(3) or 6) + (e.group(4) in "eE")    # never "1.67e-14"
+        text = scientific(float(value), figures, language)
+        return text.ljust(int(e.group(2) or 0)) if e.group(1) == "<" else text.rjust(
+            int(e.group(2) or 0))
+    if language == "en":
         return format(value, spec)
     m = re.fullmatch(r"([<>^=]?)([+]?)(\d*)\.(\d+)f", spec)
     if m and math.isfinite(float(value)):

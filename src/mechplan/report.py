@@ -8,7 +8,7 @@ import numpy as np
 
 from .construct.protocol import mm, plan_title, protocol, sense_text, vector_text
 from .construct.terms import pole_label
-from .i18n import message, unit
+from .i18n import message, scale_factor, scientific, unit
 from .i18n import number as format_number
 from .model.plans import Plan
 from .scene.spec import PLANS
@@ -45,7 +45,7 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
         for plan in plans:
             mu = sol.scales.get(plan, 1.0)
             scale_unit = unit(plan.scale_unit, lang)
-            num = format_number(mu, 6, lang).rstrip('0').rstrip(',.')
+            num = scale_factor(mu, lang)
             out += ["", f"### {plan_title(plan, lang)} (μ = {num} {scale_unit})"]
             for (p, group), (eq, rows) in sol.construction.equations.items():
                 if p is plan:
@@ -95,7 +95,7 @@ def _results(sol: Solution, k: int, lang: str) -> list[str]:
                 vec = ev[sid][k]
                 mag = float(np.hypot(*vec))
                 text = f"{sym} = {format_number(mag, 4, lang)} {unit(si_unit, lang)}"
-                if float(f"{mag:.4f}") != 0:
+                if round(mag, 4) != 0:
                     text += (
                         f" ∠ {format_number(math.degrees(math.atan2(vec[1], vec[0])), 1, lang)}°"
                     )
@@ -139,7 +139,7 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     nm = unit("N·m", lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} {nm} ({sense}; {role})")
     out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} {nm}; {w[6]} "
-               f"{float(fa.difference_percent[k]):.2e} %")
+               f"{scientific(float(fa.difference_percent[k]), 3, lang)} %")
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {nm}")
     out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
                f"{unit('kg·m²', lang)}")

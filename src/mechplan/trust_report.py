@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from .construct.trust import Flag
-from .i18n import message, number
+from .i18n import message, scientific, trimmed
 from .model.mechanism import GROUND
 from .solve import Solution
 
@@ -20,8 +20,7 @@ KNOWN_QUANTITIES = ("r", "v", "a", "angle", "omega", "epsilon")
 def _sci(value: float, language: str) -> str:
     if not math.isfinite(value):
         return message("estimate.unbounded", language)
-    mantissa, exponent = f"{value:.1e}".split("e")
-    return f"{number(float(mantissa), 1, language)}e{int(exponent)}"
+    return scientific(value, 2, language)
 
 
 def _quantity(quantity: str, language: str) -> str:
@@ -30,7 +29,7 @@ def _quantity(quantity: str, language: str) -> str:
 
 
 def _phi(phi_deg: float, language: str) -> str:
-    return number(phi_deg, 6, language).rstrip("0").rstrip(",.")
+    return trimmed(phi_deg, 6, language)
 
 
 def flag_line(f: Flag, tolerance: float, language: str) -> str:

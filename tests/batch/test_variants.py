@@ -108,7 +108,7 @@ def test_key_paths_set_existing_tables_only():
     out = with_values(doc, {"links.1.lengths.OA": "90 mm"})
     assert (out["links"]["1"]["lengths"]["OA"] == "90 mm"
             and doc["links"]["1"]["lengths"]["OA"] == "100 mm")
-    with pytest.raises(SceneError, match="no table at links.7"):
+    with pytest.raises(SceneError, match="no value at links.7.lengths.OA"):
         with_values(doc, {"links.7.lengths.OA": "90 mm"})
 
 

@@ -13,6 +13,7 @@ import ezdxf
 import pytest
 
 from mechplan import render
+from mechplan.render import dxf as dxf_backend
 from mechplan.sheet import Arrow, Role, Text
 from mechplan.sheet.fonts import SheetFont
 
@@ -115,7 +116,9 @@ def test_condensed_attribute_keeps_width_factor(tmp_path: Path) -> None:
     doc = ezdxf.readfile(path)
     insert = doc.modelspace().query("INSERT").first
     attrib = insert.get_attrib("DATE")
-    assert attrib.dxf.width == pytest.approx(date.width_factor)
+    # condensed as the sheet asked, and more where LibreCAD's stroke font is wider than osifont
+    fitted = dxf_backend.fitted_width_factor(date, attrib.dxf.style)
+    assert attrib.dxf.width == pytest.approx(fitted, abs=1e-4) and fitted <= date.width_factor
     assert attrib.dxf.height == pytest.approx(date.height_mm)
     # the attribute sits where the sheet put the text (middle-centre aligned)
     assert tuple(attrib.dxf.align_point)[:2] == pytest.approx(date.position)
@@ -168,3 +171,33 @@ def test_librecad_draws_true_scale(tmp_path: Path, require) -> None:
         near = [v for v in lengths if abs(v - 100.0) < 2.0]
     assert len(near) == 1
     assert near[0] == pytest.approx(100.0, abs=0.2)
+
+
+def test_librecad_draws_every_text_within_the_width_the_sheet_measured() -> None:
+    """Each TEXT's style names a LibreCAD font with all its glyphs, and in that font, at the
+    written width factor, it is no wider than the sheet measured it in osifont (kst32b draws
+    "направление" 40 % wider). Checked against LibreCAD itself in test_librecad.py."""
+    from mechplan.drafting.fonts import text_width_mm
+    from mechplan.render.librecad import stroke_fonts
+    from mechplan.studies import solve_file
+
+    root = Path(__file__).resolve().parents[2]
+    sheet = solve_file(root / "templates" / "slider_crank.toml").sheets(None, "gost", "ru",
+                                                                        "s")[0]
+    texts = {t.string: t for t in sheet.flat() if isinstance(t, Text)}
+    fonts = stroke_fonts()
+    doc = dxf_backend.to_document(sheet)
+    condensed = 0
+    for e in doc.modelspace().query("TEXT"):
+        t = texts.get(e.dxf.text)
+        if t is None or e.dxf.layer == dxf_backend.TITLE_VALUES_LAYER:
+            continue
+        font = fonts[e.dxf.style]
+        assert font.has(e.dxf.text), (e.dxf.style, e.dxf.text)
+        drawn = font.width_mm(e.dxf.text, e.dxf.height, e.dxf.width)
+        assert drawn <= text_width_mm(t.string, t.height_mm) * t.width_factor + 1e-6, t.string
+        condensed += e.dxf.width < t.width_factor
+    assert condensed > 10
+    assert fonts["kst32b"].width_mm("направление", 5.0) > 1.3 * text_width_mm("направление", 5.0)
+    # "∥" is in LibreCAD's unicode font only: its strings use that style, not azomix (◊)
+    assert dxf_backend.text_style("∥ x") == "unicode" and dxf_backend.text_style("⊥ AB") == "azomix"

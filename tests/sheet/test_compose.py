@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import base64
 import io
 import math
 import re
@@ -103,15 +104,47 @@ def test_v_engine_sheet_uses_the_projects_scale_factors_and_decimal_comma():
 
 @pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
 def test_drawings_folder_is_up_to_date(path):
-    """`mechplan draw templates/*.toml -o drawings --format dxf,svg` regenerates drawings/."""
+    """`mechplan draw templates/*.toml -o drawings --format dxf,svg` regenerates drawings/.
+
+    Compared: every element and attribute of the SVG, each embedded font by its family and the
+    characters it maps (not its bytes, which another fontTools may write otherwise), and the
+    DXF's lines, texts and text styles.
+    """
     for sheet in composed(path).sheets:
         svg = svg_backend.to_svg(sheet)
-        stored = (ROOT / "drawings" / f"{sheet.name}.svg").read_text(encoding="utf-8")
-        assert stored.split("\n", 1)[-1] == svg.split("\n", 1)[-1] or stored.endswith(svg)
+        stored = (ROOT / "drawings" / f"{sheet.name}.svg").read_bytes()
+        assert svg_essence(stored) == svg_essence(svg.encode("utf-8")), sheet.name
         doc = ezdxf.readfile(ROOT / "drawings" / f"{sheet.name}.dxf")
         # R2013 is UTF-8
         fresh = ezdxf.read(io.StringIO(dxf_backend.to_bytes(sheet).decode("utf-8")))
         assert _signature(doc) == _signature(fresh)
+        assert _styles(doc) == _styles(fresh)
+
+
+_FACE = re.compile(r"@font-face \{ font-family: '([^']+)'; "
+                   r"src: url\(data:font/(?:ttf|otf);base64,([A-Za-z0-9+/=]+)\) "
+                   r"format\('(?:truetype|opentype)'\); \}")
+
+
+def svg_essence(svg: bytes) -> tuple[list[tuple[str, str]], bytes]:
+    """Return (the embedded fonts as (family, characters mapped), the rest of the SVG)."""
+    from xml.etree import ElementTree
+
+    from fontTools.ttLib import TTFont
+
+    root = ElementTree.fromstring(svg)
+    faces = []
+    for style in root.iter("{http://www.w3.org/2000/svg}style"):
+        text = style.text or ""
+        for m in _FACE.finditer(text):
+            font = TTFont(io.BytesIO(base64.b64decode(m.group(2))))
+            faces.append((m.group(1), "".join(sorted(map(chr, font.getBestCmap())))))
+        style.text = _FACE.sub("@font-face", text)
+    return sorted(faces), ElementTree.tostring(root)
+
+
+def _styles(doc) -> list[tuple[str, str]]:
+    return sorted((s.dxf.name, s.dxf.font) for s in doc.styles)
 
 
 def _signature(doc) -> list[tuple]:
@@ -228,3 +261,39 @@ def test_plans_at_chooses_the_positions_drawn(tmp_path):
     assert "acceleration-3" in names and "acceleration-7" in names
     assert "acceleration-1" not in names and "velocity-1-tables" not in names
     assert names.index("acceleration-3") < names.index("acceleration-7")
+
+
+def test_drawings_are_compared_by_font_family_and_glyphs_not_font_bytes():
+    from fontTools import subset
+    from fontTools.ttLib import TTFont
+
+    sheet = composed(ROOT / "templates" / "four_bar.toml").sheets[0]
+    svg = svg_backend.to_svg(sheet)
+    m = _FACE.search(svg)
+    assert m is not None and m.group(1) == "osifont"
+    # the same glyphs written by "another fontTools": other bytes (no hinting, no names)
+    font = TTFont(io.BytesIO(base64.b64decode(m.group(2))))
+    options = subset.Options()
+    options.hinting = False
+    options.name_IDs = [1, 2]
+    sub = subset.Subsetter(options)
+    sub.populate(unicodes=font.getBestCmap())
+    sub.subset(font)
+    buf = io.BytesIO()
+    font.save(buf)
+    other = svg.replace(m.group(2), base64.b64encode(buf.getvalue()).decode("ascii"))
+    assert other != svg
+    assert svg_essence(other.encode()) == svg_essence(svg.encode())
+    # a glyph less, or a text moved by 0.1 mm, is a different drawing
+    font = TTFont(io.BytesIO(base64.b64decode(m.group(2))))
+    assert ord("A") in font.getBestCmap()
+    sub = subset.Subsetter(options)
+    sub.populate(unicodes=set(font.getBestCmap()) - {ord("A")})
+    sub.subset(font)
+    buf = io.BytesIO()
+    font.save(buf)
+    fewer = svg.replace(m.group(2), base64.b64encode(buf.getvalue()).decode("ascii"))
+    assert svg_essence(fewer.encode()) != svg_essence(svg.encode())
+    moved = re.sub(r'translate\(([\d.]+) ', lambda t: f"translate({float(t.group(1)) + 0.1:.4f} ",
+                   svg, count=1)
+    assert svg_essence(moved.encode()) != svg_essence(svg.encode())

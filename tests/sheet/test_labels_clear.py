@@ -11,7 +11,7 @@ from scenes import ROOT, TEMPLATES
 from shapely import box
 from shapely.geometry import Point
 
-from mechplan.drafting.fonts import text_width_mm
+from mechplan.drafting.fonts import font_of, text_width_mm
 from mechplan.drafting.labels import LabelPlacer
 from mechplan.drafting.primitives import Arrow, HAlign, Line, Polyline, Text, VAlign
 from mechplan.scene import load_scene
@@ -31,7 +31,7 @@ def _solved(stem: str):
 
 def _text_box(t: Text):
     """The box a text covers on paper, measured independently of the placer."""
-    w = text_width_mm(t.string, t.height_mm)
+    w = text_width_mm(t.string, t.height_mm, font_of(t))
     x = t.position[0] - {HAlign.LEFT: 0.0, HAlign.CENTER: w / 2, HAlign.RIGHT: w}[t.halign]
     base = t.position[1] - {VAlign.MIDDLE: t.height_mm / 2, VAlign.TOP: t.height_mm}.get(
         t.valign, 0.0)

@@ -112,8 +112,9 @@ def answer_pdf(key: dict[str, Any], language: str) -> bytes:
     phi = key["phi_deg"] or [None]
     head_q = message("batch.key.quantity", language)
     head_u = message("batch.key.unit", language)
-    title = message("batch.key.title", language, title=key["title"])
-    who = (message("batch.key.variant", language, id=key["id"], name=key["name"]) if key["name"]
+    title = message("batch.key.title", language, title=one_line(str(key["title"])))
+    who = (message("batch.key.variant", language, id=key["id"], name=one_line(key["name"]))
+           if key["name"]
            else message("batch.key.variant_id", language, id=key["id"]))
     pages: list[Sheet] = []
     col_chunks = [list(range(i, min(i + COLUMNS_PER_PAGE, len(phi))))
@@ -145,3 +146,8 @@ def answer_pdf(key: dict[str, Any], language: str) -> bytes:
         for sheet in pages:
             pdf.savefig(figure(sheet))
     return buf.getvalue()
+
+
+def one_line(text: str) -> str:
+    """A name as one printed line: every character that is not printable is a space."""
+    return " ".join("".join(c if c.isprintable() else " " for c in text).split())

@@ -16,7 +16,9 @@ from ..check.grade import Options, check
 from ..check.texts import T
 from ..errors import CheckError, MechplanError
 from ..render.atomic import write_atomic
+from .csvsafe import csv_safe_row
 from .engine import run_tasks
+from .outdir import prepare_output
 
 SUFFIXES = (".dxf", ".toml", ".csv", ".tsv")
 COLUMNS = ("student", "submission", "scene", "phi_deg", "passed", "checked", "ok", "wrong", "new",
@@ -81,13 +83,13 @@ def check_class(scene: Path, folder: Path, out: Path, options: Options, lang: st
     """Check every submission of ``folder``; write ``out/<student>.txt|.json`` and
     ``out/summary.csv``; return the summary rows."""
     class_ = students(scene, folder)
-    out.mkdir(parents=True, exist_ok=True)
+    out = prepare_output(out)
     calls = [(i, st, options, lang, out) for i, st in enumerate(class_)]
     done = dict(run_tasks(_one, calls, workers=jobs if jobs > 0 else None, progress=False))
     rows = [done[i] for i in range(len(calls))]
     buf = io.StringIO()
     writer = csv.DictWriter(buf, fieldnames=COLUMNS, restval="", lineterminator="\n")
     writer.writeheader()
-    writer.writerows(rows)
+    writer.writerows(csv_safe_row(r) for r in rows)
     write_atomic(out / "summary.csv", buf.getvalue().encode("utf-8"))
     return list(rows)

@@ -9,13 +9,46 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
+import signal
 import sys
+import threading
+import time
+import warnings
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
 from joblib import Parallel, delayed, parallel_config
 
 from ..errors import MechplanError
+from .texts import say
+
+_ADDRESS = re.compile(r"^(?:(?:tcp|tls|ws|wss|ucx)://)?(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+):(\d{1,5})$")
+#: how often a local worker checks that the main process is still there (seconds)
+WATCH_SECONDS = 0.2
+
+
+def _worker_init(owner: int) -> None:
+    """Start a local worker: Ctrl-C is the main process's to handle (no worker tracebacks),
+    and the worker ends as soon as the main process is gone instead of going on writing."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    # a watchdog, not the parent-death signal: that one follows the thread that started the
+    # worker, and a reused worker may outlive it
+    threading.Thread(target=_watch, args=(owner,), name="mechplan-watch", daemon=True).start()
+
+
+def _watch(owner: int) -> None:
+    while os.getppid() == owner:
+        time.sleep(WATCH_SECONDS)
+    os._exit(1)
+
+
+def check_scheduler(address: str) -> str:
+    """Refuse a scheduler address that is not ``[tcp://]HOST:PORT`` before connecting."""
+    m = _ADDRESS.match(address.strip())
+    if not m or not 0 < int(m.group(2)) < 65536:
+        raise MechplanError(say("scheduler_address", address=repr(address)))
+    return address.strip()
 
 
 def default_workers() -> int:
@@ -35,9 +68,15 @@ def progress_wanted(flag: bool | None) -> bool:
 def _backend(workers: int | None, scheduler: str | None) -> Iterator[int]:
     if not scheduler:
         n = workers or default_workers()
-        with parallel_config(backend="loky" if n > 1 else "sequential", n_jobs=n):
+        if n == 1:
+            with parallel_config(backend="sequential", n_jobs=1):
+                yield n
+            return
+        with parallel_config(backend="loky", n_jobs=n, initializer=_worker_init,
+                             initargs=(os.getpid(),)):
             yield n
         return
+    scheduler = check_scheduler(scheduler)
     try:
         from distributed import Client
     except ImportError:
@@ -45,9 +84,9 @@ def _backend(workers: int | None, scheduler: str | None) -> Iterator[int]:
                             "pip install 'mechplan[cluster]'") from None
     try:
         client = Client(scheduler, timeout="10s", set_as_default=False)
-    except OSError as exc:
-        raise MechplanError(f"the Dask scheduler must be reachable (got {scheduler!r}: {exc}); "
-                            "start one with 'dask scheduler' and 'dask worker ADDRESS'") from None
+    except (OSError, ValueError, TypeError) as exc:
+        raise MechplanError(say("scheduler_unreachable", address=repr(scheduler), reason=str(exc)),
+                            key="--scheduler") from None
     try:
         n = workers or max(1, sum(client.nthreads().values()))
         with parallel_config(backend="dask", n_jobs=n, wait_for_workers_timeout=30,
@@ -68,6 +107,12 @@ def run_tasks(fn: Callable[..., Any], calls: Sequence[tuple[Any, ...]], *,
     with tqdm(total=len(calls), desc=desc, unit=unit, disable=not progress_wanted(progress),
               file=sys.stderr, dynamic_ncols=True) as bar, _backend(workers, scheduler):
         results = Parallel(return_as="generator_unordered")(delayed(fn)(*a) for a in calls)
-        for result in results:
-            bar.update(1)
-            yield result
+        try:
+            for result in results:
+                bar.update(1)
+                yield result
+        finally:
+            # an interrupted run: joblib's note about the cancelled tasks is not for the user
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", UserWarning)
+                results.close()

@@ -7,6 +7,7 @@ import re
 from typing import Any
 
 from ..errors import SceneError
+from .texts import say
 
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
@@ -33,18 +34,63 @@ def get_value(doc: dict[str, Any], key: str, file: str | None = None) -> Any:
 
 def with_values(doc: dict[str, Any], values: dict[str, Any],
                 file: str | None = None) -> dict[str, Any]:
-    """Return a copy of a TOML document with values set at key paths (existing tables only)."""
+    """Return a copy of a TOML document with values set at key paths.
+
+    Only values the template has can be set, never a whole table (``[output]``) or an array of
+    tables; the new value is a number, a text, a boolean or a list of them; a value naming a
+    file is a plain file name (inside the folder the scene is written to).
+    """
     out = copy.deepcopy(doc)
     for key, value in values.items():
+        node = out
         parts = split_key(key)
-        node: Any = out
         for part in parts[:-1]:
             if not isinstance(node, dict) or not isinstance(node.get(part), dict):
-                raise SceneError(f"the template has no table at {'.'.join(parts[:-1])}; set keys "
-                                 "inside the template's tables", file=file, key=key)
+                raise SceneError(say("key_missing", key=key), file=file, key=key)
             node = node[part]
+        if not isinstance(node, dict) or parts[-1] not in node:
+            raise SceneError(say("key_missing", key=key), file=file, key=key)
+        if _is_table(node[parts[-1]]):
+            raise SceneError(say("key_table", key=key), file=file, key=key)
+        check_value(key, value, file)
         node[parts[-1]] = value
     return out
+
+
+def _is_table(value: Any) -> bool:
+    return isinstance(value, dict) or (isinstance(value, list)
+                                       and any(isinstance(v, dict) for v in value))
+
+
+def check_value(key: str, value: Any, file: str | None = None) -> None:
+    """Refuse a value a variant may not set at ``key``: a table, a date, a path out of the
+    scene's folder."""
+    kind = _kind(value)
+    if kind:
+        raise SceneError(say("value_kind", kind=kind), file=file, key=key)
+    parts = split_key(key)
+    if parts[-1] in PATH_KEYS or "output" in parts[:-1]:
+        for text in _texts(value):
+            if text in ("", ".", "..") or any(c in text for c in "/\\\0:") or text[0] == "~":
+                raise SceneError(say("path_outside", value=repr(text)), file=file, key=key)
+
+
+#: keys whose value names a file (read or written relative to the scene's folder)
+PATH_KEYS = frozenset({"file", "csv", "path", "dir", "folder", "dxf", "svg", "pdf", "png"})
+
+
+def _kind(value: Any) -> str:
+    if isinstance(value, bool | int | float | str):
+        return ""
+    if isinstance(value, list):
+        return next((k for k in map(_kind, value) if k), "")
+    return "table" if isinstance(value, dict) else type(value).__name__
+
+
+def _texts(value: Any) -> list[str]:
+    if isinstance(value, list):
+        return [t for v in value for t in _texts(v)]
+    return [value] if isinstance(value, str) else []
 
 
 def split_quantity(text: str, key: str) -> tuple[float, str]:

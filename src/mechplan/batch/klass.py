@@ -12,6 +12,7 @@ import csv
 import hashlib
 import io
 import json
+import stat
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -21,8 +22,10 @@ from .. import __version__
 from ..errors import MechplanError
 from ..render.atomic import write_atomic
 from ..scene.document import parse_toml, read_text
-from .engine import run_tasks
+from .csvsafe import csv_safe_row
+from .engine import check_scheduler, run_tasks
 from .keys import with_values
+from .outdir import locked, prepare_output, remove_stale, subfolder
 from .variants import Variant
 
 MARKER = ".complete"
@@ -55,12 +58,24 @@ class ClassResult:
 
 
 def variant_scene(job: ClassJob, variant: Variant) -> str:
-    """Return the TOML text of a variant's scene: the template with the variant's values set."""
+    """Return the TOML text of a variant's scene: the template with the variant's values set.
+
+    The values are written by tomli-w; the id and name only in the first comment line, with
+    every character that is not printable escaped — data, never TOML source.
+    """
     import tomli_w
 
     doc = parse_toml(job.template_text, job.template_file)
-    header = f"# {variant.id}" + (f" — {variant.name}" if variant.name else "") + "\n"
+    header = f"# {_comment(variant.id)}" + (f" — {_comment(variant.name)}" if variant.name
+                                             else "") + "\n"
     return header + tomli_w.dumps(with_values(doc, variant.values, job.template_file))
+
+
+def _comment(text: str) -> str:
+    """Text for a TOML comment: one line, non-printable characters and "\\" escaped."""
+    return "".join(c if c.isprintable() and c != "\\" else
+                   (f"\\u{ord(c):04x}" if ord(c) < 0x10000 else f"\\U{ord(c):08x}")
+                   for c in text)
 
 
 def _fingerprint(job: ClassJob, scene: str) -> str:
@@ -73,21 +88,25 @@ def _fingerprint(job: ClassJob, scene: str) -> str:
 
 
 def solve_variant(job: ClassJob, variant: Variant, index: int) -> tuple[int, dict[str, Any], bool]:
-    """Write one variant's folder (or find it complete); return (index, summary row, skipped)."""
-    folder = Path(job.out_dir) / variant.id
-    marker = folder / MARKER
+    """Write one variant's folder (or find it complete); return (index, summary row, skipped).
+
+    The folder is a real folder inside the output (a symbolic link there fails the variant).
+    """
     row: dict[str, Any] = {"id": variant.id, "name": variant.name, "status": "ok", "error": "",
                            **variant.values}
     try:
         scene = variant_scene(job, variant)
+        folder = subfolder(Path(job.out_dir), variant.id)
     except MechplanError as exc:
         return index, {**row, "status": "failed", "error": str(exc)}, False
+    marker = folder / MARKER
     stamp = _fingerprint(job, scene)
-    if marker.exists() and marker.read_text(encoding="utf-8") == stamp:
+    if _regular(marker) and marker.read_text(encoding="utf-8") == stamp and _regular(
+            folder / "summary.json"):
         with (folder / "summary.json").open(encoding="utf-8") as fh:
             return index, json.load(fh), True
-    folder.mkdir(parents=True, exist_ok=True)
     marker.unlink(missing_ok=True)
+    remove_stale(folder, ("",))       # a killed run's temporary files (we hold the lock)
     scene_path = folder / "scene.toml"
     write_atomic(scene_path, scene.encode())
     try:
@@ -98,6 +117,14 @@ def solve_variant(job: ClassJob, variant: Variant, index: int) -> tuple[int, dic
     if row["status"] == "ok":
         write_atomic(marker, stamp.encode())
     return index, row, False
+
+
+def _regular(path: Path) -> bool:
+    """A regular file, not a link (a link to elsewhere is never read as our marker)."""
+    try:
+        return stat.S_ISREG(path.lstat().st_mode)
+    except OSError:
+        return False
 
 
 def _solve_and_write(job: ClassJob, variant: Variant, scene: str, scene_file: str,
@@ -132,7 +159,7 @@ def write_summary(path: Path, rows: Sequence[dict[str, Any]]) -> Path:
     writer = csv.DictWriter(buf, columns, lineterminator="\n")
     writer.writeheader()
     for row in rows:
-        writer.writerow({c: _csv_value(row.get(c, "")) for c in columns})
+        writer.writerow(csv_safe_row({c: _csv_value(row.get(c, "")) for c in columns}))
     return write_atomic(path, buf.getvalue().encode())
 
 
@@ -144,22 +171,33 @@ def run_class(template: str | Path, variants: Sequence[Variant], out_dir: str | 
               formats: Sequence[str] = ("dxf", "svg", "pdf"), workers: int | None = None,
               scheduler: str | None = None, progress: bool | None = None,
               size: str | None = None, standard: str | None = None,
-              language: str | None = None) -> ClassResult:
-    """Solve and draw every variant of a class; write ``summary.csv`` at the top of ``out_dir``."""
+              language: str | None = None, variants_file: str | None = None) -> ClassResult:
+    """Solve and draw every variant of a class; write ``summary.csv`` at the top of ``out_dir``.
+
+    Every key a variant sets is checked against the template first: a key the template does not
+    have, a table or a path out of the folder refuses the class (naming ``variants_file``).
+    """
+    if scheduler:
+        check_scheduler(scheduler)
     template = Path(template)
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    job = ClassJob(read_text(template), str(template), template.stem, str(out.resolve()),
+    text = read_text(template)
+    doc = parse_toml(text, str(template))
+    for variant in variants:
+        with_values(doc, variant.values, variants_file)
+    out = prepare_output(out_dir)
+    job = ClassJob(text, str(template), template.stem, str(out.resolve()),
                    tuple(formats), size, standard, language)
     rows: list[dict[str, Any] | None] = [None] * len(variants)
     skipped = 0
     calls = [(job, v, i) for i, v in enumerate(variants)]
-    for index, row, was_skipped in run_tasks(solve_variant, calls, workers=workers,
-                                             scheduler=scheduler, progress=progress,
-                                             desc="variants", unit="variant"):
-        rows[index] = row
-        skipped += was_skipped
-    done = [r for r in rows if r is not None]
-    failed = sum(r["status"] != "ok" for r in done)
-    summary = write_summary(out / SUMMARY, done)
+    with locked(out):
+        remove_stale(out, (SUMMARY + ".",))
+        for index, row, was_skipped in run_tasks(solve_variant, calls, workers=workers,
+                                                 scheduler=scheduler, progress=progress,
+                                                 desc="variants", unit="variant"):
+            rows[index] = row
+            skipped += was_skipped
+        done = [r for r in rows if r is not None]
+        failed = sum(r["status"] != "ok" for r in done)
+        summary = write_summary(out / SUMMARY, done)
     return ClassResult(done, len(done) - skipped - failed, skipped, failed, summary)

@@ -26,6 +26,7 @@ from ..model.mechanism import GROUND, PairKind
 from ..scene import parse_scene
 from ..scene.document import parse_toml
 from ..solve import build
+from .budget import check_axis_steps
 from .keys import get_value, quantity_text, split_quantity, with_values
 
 _VARY = re.compile(r"^\s*([^=\s]+)\s*=\s*(.+?)\s*\.\.\s*(.+?)\s*:\s*(\d+)\s*$")
@@ -58,9 +59,14 @@ def parse_vary(spec: str) -> Axis:
     if unit2 and unit2 != unit:
         raise SceneError(f"FROM and TO must use the same unit (got {unit!r} and {unit2!r})",
                          key=key)
+    if len(steps) > 12:                           # an int of 400 digits is no budget to compute
+        check_axis_steps(10**12, key)
     n = int(steps)
     if n < 1:
         raise SceneError(f"STEPS must be at least 1 (got {n})", key=key)
+    check_axis_steps(n, key)
+    if not (math.isfinite(low) and math.isfinite(high)):
+        raise SceneError(f"FROM and TO must be finite numbers (got {a!r}..{b!r})", key=key)
     return Axis(key, tuple(float(f"{v:.12g}") for v in np.linspace(low, high, n)), unit)
 
 

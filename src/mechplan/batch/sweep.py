@@ -21,10 +21,16 @@ import numpy as np
 
 from .. import __version__
 from ..construct.graph import Construction
+from ..errors import MechplanError
 from ..render.atomic import atomic_open, write_atomic
 from ..scene.document import read_text
-from .engine import default_workers, run_tasks
+from .budget import check_sweep_budget
+from .csvsafe import csv_safe_table
+from .engine import check_scheduler, default_workers, run_tasks
+from .outdir import locked, prepare_output, remove_stale, subfolder
+from .parts import Part, chunks, cover, scan, write_part
 from .plan import Axis, SweepPlan, make_plan
+from .texts import say
 
 CHUNK_SECONDS = 0.15
 #: summary column → unit (SI)
@@ -165,10 +171,17 @@ def _chunk_size(plan: SweepPlan, workers: int) -> int:
     return size
 
 
+#: the layout of the parts folder (a new one when it changes: old parts are not read)
+PARTS_FORMAT = 2
+#: temporary files of the summary files an interrupted run may leave in the output folder
+_OUTPUTS = ("summary.parquet.", "summary.csv.", "sweep.json.")
+
+
 def _fingerprint(text: str, axes: Sequence[Axis], positions: int) -> str:
+    """What the rows depend on: the scene, the grid, the positions — not the chunking."""
     h = hashlib.sha256()
-    h.update(json.dumps([__version__, text, [(a.key, a.values, a.unit) for a in axes],
-                         positions]).encode())
+    h.update(json.dumps([__version__, PARTS_FORMAT, text,
+                         [(a.key, a.values, a.unit) for a in axes], positions]).encode())
     return h.hexdigest()[:16]
 
 
@@ -184,59 +197,89 @@ def run_sweep(scene: str | Path, axes: Sequence[Axis], out_dir: str | Path, *,
               progress: bool | None = None, chunk: int | None = None,
               plot: str | None = None, plot_axes: Sequence[str] | None = None) -> SweepResult:
     """Evaluate every variant of the grid; write ``summary.parquet``, ``summary.csv`` (and a
-    plot)."""
-    import pyarrow.parquet as pq
+    plot).
 
+    A re-run resumes: the variants valid parts already hold are not evaluated again, whatever
+    chunk sizes wrote them; the summary holds every variant exactly once, in order.
+    """
+    if chunk is not None and chunk < 1:
+        raise MechplanError(say("chunk", value=chunk))
+    if scheduler:
+        check_scheduler(scheduler)
+    check_sweep_budget(axes, positions)
     scene = Path(scene)
     text = read_text(scene)
-    plan = make_plan(text, str(scene), axes, positions)
-    out = Path(out_dir)
-    parts = out / f"parts-{_fingerprint(text, axes, positions)}"
-    parts.mkdir(parents=True, exist_ok=True)
-    n_workers = workers or default_workers()
-    size = chunk or _chunk_size(plan, n_workers)
-    starts = list(range(0, plan.size, size))
-    part = {s: parts / f"part-{s:010d}.parquet" for s in starts}
-    todo = [(plan.restricted(s, min(s + size, plan.size)), s, min(s + size, plan.size))
-            for s in starts if not part[s].exists()]
-    cpu = 0.0
-    for start, cols, seconds in run_tasks(evaluate_chunk, todo, workers=workers,
-                                          scheduler=scheduler, progress=progress,
-                                          desc="chunks", unit="chunk"):
-        cpu += seconds
-        with atomic_open(part[start]) as fh:
-            pq.write_table(_to_table(cols), fh)
-    parquet, csv_path = out / "summary.parquet", out / "summary.csv"
-    columns = _merge([part[s] for s in starts], parquet, csv_path)
-    meta = {"scene": str(scene), "positions": positions, "variants": plan.size,
-            "chunk": size, "axes": [{"key": a.key, "unit": a.unit, "values": list(a.values)}
-                                    for a in axes],
-            "units": {c: unit_of(c) for c in columns if unit_of(c)},
-            "builds": plan.builds, "prepared_steps": {n: list(d) for n, d in plan.depends.items()
-                                                      if d}}
-    write_atomic(out / "sweep.json", json.dumps(meta, ensure_ascii=False, indent=1).encode())
-    png = None
-    if plot:
-        from .plot import plot_summary
+    out = prepare_output(out_dir)
+    with locked(out):
+        remove_stale(out, (*_OUTPUTS, *((f"{plot}.png.",) if plot else ())))
+        plan = make_plan(text, str(scene), axes, positions)
+        fingerprint = _fingerprint(text, axes, positions)
+        folder = subfolder(out, f"parts-{fingerprint}")
+        kept = scan(folder, fingerprint, plan.size)
+        gaps = cover(kept, plan.size).gaps
+        size = chunk or (_chunk_size(plan, workers or default_workers()) if gaps else None)
+        todo = [(plan.restricted(a, b), a, b) for a, b in chunks(gaps, size or 1)]
+        cpu = 0.0
+        written: set[Path] = set()
+        for start, cols, seconds in run_tasks(evaluate_chunk, todo, workers=workers,
+                                              scheduler=scheduler, progress=progress,
+                                              desc="chunks", unit="chunk"):
+            cpu += seconds
+            part = write_part(folder, fingerprint, _to_table(cols), start,
+                              start + len(cols["variant"]))
+            kept.append(part)
+            written.add(part.path)
+        final = cover(kept, plan.size)
+        if final.gaps:          # a bug, never a user's doing: refuse to write a short summary
+            raise RuntimeError(f"sweep parts leave variants {final.gaps} out")
+        parquet, csv_path = out / "summary.parquet", out / "summary.csv"
+        columns = _merge(final.segments, plan.size, parquet, csv_path)
+        for part in final.unused:        # covered entirely by other parts
+            part.path.unlink(missing_ok=True)
+        meta = {"scene": str(scene), "positions": positions, "variants": plan.size,
+                "chunk": size, "axes": [{"key": a.key, "unit": a.unit,
+                                         "values": list(a.values)} for a in axes],
+                "units": {c: unit_of(c) for c in columns if unit_of(c)},
+                "builds": plan.builds,
+                "prepared_steps": {n: list(d) for n, d in plan.depends.items() if d}}
+        write_atomic(out / "sweep.json", json.dumps(meta, ensure_ascii=False,
+                                                    indent=1).encode())
+        png = None
+        if plot:
+            from .plot import plot_summary
 
-        png = plot_summary(parquet, plan, plot, plot_axes, out / f"{plot}.png")
-    return SweepResult(plan.size, len(starts), len(starts) - len(todo), parquet, csv_path, png,
+            png = plot_summary(parquet, plan, plot, plot_axes, out / f"{plot}.png")
+    reused = sum(p.path not in written for p, _, _ in final.segments)
+    return SweepResult(plan.size, len(final.segments), reused, parquet, csv_path, png,
                        tuple(columns), cpu)
 
 
-def _merge(paths: Sequence[Path], parquet: Path, csv_path: Path) -> list[str]:
-    """Stream the parts, in order, into one Parquet file and one CSV file (atomically)."""
+def _merge(segments: Sequence[tuple[Part, int, int]], size: int, parquet: Path,
+           csv_path: Path) -> list[str]:
+    """Stream the parts' rows, in order, into one Parquet file and one CSV file (atomically);
+    verify before either is in place that they hold every variant ``0…size - 1`` once."""
     import pyarrow.csv as pcsv
     import pyarrow.parquet as pq
 
-    schema = pq.read_schema(paths[0])
+    schema = pq.read_schema(segments[0][0].path).remove_metadata()
+    rows = 0
     with atomic_open(parquet) as pfh, atomic_open(csv_path) as cfh:
         pw = pq.ParquetWriter(pfh, schema)
         cw = pcsv.CSVWriter(cfh, schema)
-        for path in paths:
-            table = pq.read_table(path)
-            pw.write_table(table)
-            cw.write_table(table)
-        pw.close()
-        cw.close()
+        try:
+            for part, lo, hi in segments:
+                table = pq.read_table(part.path).slice(lo - part.start, hi - lo)
+                table = table.replace_schema_metadata(None)
+                if not np.array_equal(table.column("variant").to_numpy(),
+                                      np.arange(rows, rows + table.num_rows)) or lo != rows:
+                    raise RuntimeError(f"sweep part {part.path.name} does not hold variants "
+                                       f"{lo}…{hi - 1}")
+                rows += table.num_rows
+                pw.write_table(table)
+                cw.write_table(csv_safe_table(table))
+        finally:
+            pw.close()
+            cw.close()
+        if rows != size:
+            raise RuntimeError(f"the sweep summary would hold {rows} of {size} variants")
     return list(schema.names)

@@ -20,7 +20,9 @@ import numpy as np
 
 from ..errors import SceneError
 from ..scene.document import parse_toml, read_text
-from .keys import quantity_text, split_key, split_quantity
+from .budget import check_rule, check_students
+from .keys import check_value, quantity_text, split_key, split_quantity
+from .texts import say
 
 _ID = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.-]*$")
 
@@ -68,9 +70,9 @@ def seed_of(student_id: str, key: str) -> int:
 
 
 def _check_id(student_id: str, file: str, where: str) -> str:
-    if not _ID.match(student_id):
-        raise SceneError(f"a student id must be letters, digits, '_', '-' or '.' (it names a "
-                         f"folder) (got {student_id!r})", file=file, key=where)
+    # fullmatch: "$" of a match would let "s01\n" through
+    if len(student_id) > 100 or not _ID.fullmatch(student_id):
+        raise SceneError(say("id", value=repr(student_id[:100])), file=file, key=where)
     return student_id
 
 
@@ -89,6 +91,8 @@ def _rule(key: str, spec: Any, file: str) -> Rule:
         if not isinstance(choices, list) or not choices:
             raise SceneError(f"choices must be a non-empty list (got {choices!r})", file=file,
                              key=where)
+        for choice in choices:
+            check_value(key, choice, file)
         return Rule(key, choices=tuple(choices))
     if "from" not in spec or "to" not in spec:
         raise SceneError("a range rule needs both from and to, e.g. { from = \"70 mm\", to = "
@@ -111,6 +115,7 @@ def _rule(key: str, spec: Any, file: str) -> Rule:
     if digits is not None and (not isinstance(digits, int) or digits < 0):
         raise SceneError(f"digits must be a whole number ≥ 0 (got {digits!r})", file=file,
                          key=where)
+    check_rule(low, high, step, digits, file=file, key=where)
     return Rule(key, low, high, unit, step, digits)
 
 
@@ -138,8 +143,11 @@ def _from_csv(text: str, file: str) -> list[Variant]:
         split_key(key)
     out: list[Variant] = []
     for n, row in enumerate(reader, start=2):
+        check_students(n - 1, file=file)
         sid = _check_id((row.get("id") or "").strip(), file, f"line {n}")
         values = {k: _cell(row[k]) for k in keys if row.get(k) not in (None, "")}
+        for key, value in values.items():
+            check_value(key, value, file)
         out.append(Variant(sid, (row.get("name") or "").strip(), values))
     return _unique(out, file)
 
@@ -166,11 +174,15 @@ def _from_toml(text: str, file: str) -> list[Variant]:
         if not isinstance(st, dict) or "id" not in st:
             raise SceneError("every student needs an id", file=file, key=where)
         values = st.get("values", {})
-        for key in values:
-            split_key(key)
+        if not isinstance(values, dict):
+            raise SceneError("a student's values must be a table of key paths",
+                             file=file, key=f"{where}.values")
+        for key, value in values.items():
+            check_value(key, value, file)
         students.append((_check_id(str(st["id"]), file, where), str(st.get("name", "")), values))
     if "count" in doc:
         count = doc["count"]
+        check_students(count, file=file, key="count")
         if not isinstance(count, int) or count < 1:
             raise SceneError(f"count must be a whole number ≥ 1 (got {count!r})", file=file,
                              key="count")
@@ -180,6 +192,7 @@ def _from_toml(text: str, file: str) -> list[Variant]:
                      for k in range(1, count + 1)]
     if not students:
         raise SceneError("a variants file needs [[students]] rows or a count", file=file)
+    check_students(len(students), file=file, key="students")
     out = [Variant(sid, name, {**{r.key: r.draw(sid) for r in rules}, **values})
            for sid, name, values in students]
     return _unique(out, file)

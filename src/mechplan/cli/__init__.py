@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from importlib import resources
 from pathlib import Path
@@ -71,6 +72,10 @@ def _draw(args: argparse.Namespace) -> int:
     if unknown or not formats:
         raise MechplanError(f"--format must list some of {', '.join(FORMATS)} (got "
                             f"{args.format!r})")
+    if args.system_fonts:
+        from ..drafting.fonts import ENV_SYSTEM_FONTS
+
+        os.environ[ENV_SYSTEM_FONTS] = "1"     # read by every font look-up of this process
     out = prepare_dir(args.output)
     failed = 0
     progress = len(args.scenes) > 1 and sys.stderr.isatty()
@@ -181,6 +186,9 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--sheet", choices=SHEETS)
     d.add_argument("--lang", choices=LANGUAGES)
     d.add_argument("--standard", choices=STANDARDS)
+    d.add_argument("--system-fonts", action="store_true",
+                   help="measure and embed the system's fonts (e.g. a full CJK font) instead of "
+                   "the bundled ones; the sheet then depends on the machine")
     d.set_defaults(func=_draw)
     from .batch import add_parser as add_batch
     from .check import add_parser as add_check

@@ -58,8 +58,9 @@ def add_parser(subparsers: Any) -> None:
 
 
 def _interrupted() -> int:
-    print("mechplan: interrupted; completed outputs are kept, run the same command again to "
-          "resume", file=sys.stderr)
+    from ..batch.texts import say
+
+    print(f"mechplan: {say('interrupted')}", file=sys.stderr)
     return 130
 
 
@@ -75,7 +76,7 @@ def _batch(args: argparse.Namespace) -> int:
         result = run_class(args.template, variants, args.output, formats=formats,
                            workers=args.workers, scheduler=args.scheduler,
                            progress=args.progress, size=args.sheet, standard=args.standard,
-                           language=args.lang)
+                           language=args.lang, variants_file=args.variants)
     except KeyboardInterrupt:
         return _interrupted()
     print(f"{result.summary}: {result.solved} solved, {result.skipped} complete already, "

@@ -1,8 +1,15 @@
-"""Sheet fonts: where the files are, which font a string needs, how wide a string is.
+"""Sheet fonts: which files, which font a string needs, how wide a string is.
 
-osifont (ISO 3098 lettering; Latin, Vietnamese, Cyrillic, Greek) is the default; a CJK font (Noto
-Sans CJK SC) is used for strings it cannot show. Heights are ISO 3098 capital heights, so backends
-that size text by the em (SVG, matplotlib) scale by the font's capital-height ratio.
+osifont (ISO 3098 lettering; Latin, Vietnamese, Cyrillic, Greek) is the default; DejaVu Sans shows
+the plan symbols osifont lacks; a CJK font (Noto Sans CJK SC) shows Chinese. Heights are ISO 3098
+capital heights, so backends that size text by the em (SVG, matplotlib) scale by the font's
+capital-height ratio.
+
+The files are the ones mechplan ships (``src/mechplan/fonts``: osifont and a GB 2312 subset of Noto
+Sans CJK SC; DejaVu Sans from matplotlib's data folder), so a sheet measures and embeds the same
+fonts on every machine whatever fonts it has installed. ``MECHPLAN_FONT_DIRS`` (folders searched
+first) and ``MECHPLAN_SYSTEM_FONTS=1`` (``mechplan draw --system-fonts``: the system's font folders
+before the bundled files) are the opt-ins to other files; `font_source` says which one is used.
 """
 
 from __future__ import annotations
@@ -22,7 +29,12 @@ from mechplan.drafting.primitives import Text, VAlign
 
 log = logging.getLogger(__name__)
 
-_FONT_DIRS = (
+#: folders searched before the bundled fonts (os.pathsep-separated)
+ENV_FONT_DIRS = "MECHPLAN_FONT_DIRS"
+#: "1": the system's font folders are searched before the bundled fonts
+ENV_SYSTEM_FONTS = "MECHPLAN_SYSTEM_FONTS"
+
+_SYSTEM_DIRS = (
     "/usr/share/fonts",
     "/usr/local/share/fonts",
     "~/.local/share/fonts",
@@ -35,24 +47,30 @@ _FONT_DIRS = (
 
 @dataclass(frozen=True, slots=True)
 class FontSpec:
-    """A sheet font: family name, candidate file names, fallback metrics."""
+    """A sheet font: family, bundled file, file names to look for elsewhere, fallback metrics."""
 
     family: str
-    file_names: tuple[str, ...]
-    collection_index: int
-    cap_ratio: float  # capital height / em, used when the file is missing
-    advance_em: float  # typical advance width / em, used when the file is missing
+    bundled: str  # file name in BUNDLED_DIR (DejaVu: in matplotlib's data folder)
+    dxf_file: str  # the file a DXF text style names for AutoCAD (fixed: DXFs never vary by machine)
+    file_names: tuple[str, ...]  # names of the same font installed on a system
+    collection_index: int  # face of the family in a .ttc collection
+    cap_ratio: float  # capital height / em, used when no file can be read
+    advance_em: float  # typical advance width / em, used when no file can be read
 
 
 class SheetFont(Enum):
     """The fonts a sheet uses: ISO lettering, a symbol fallback (⊥ ∥ ′ → ✓), CJK."""
 
-    ISO = FontSpec("osifont", ("osifont-lgpl3fe.ttf", "osifont.ttf"), 0, 0.74, 0.6)
+    ISO = FontSpec("osifont", "osifont.ttf", "osifont.ttf", ("osifont-lgpl3fe.ttf", "osifont.ttf"),
+                   0, 0.74, 0.6)
     # DejaVu Sans covers the plan symbols osifont lacks; it is small, so PDFs embed it quickly
-    # where the CJK collection would take a second to subset
-    SYMBOL = FontSpec("DejaVu Sans", ("DejaVuSans.ttf",), 0, 0.729, 0.6)
+    SYMBOL = FontSpec("DejaVu Sans", "DejaVuSans.ttf", "DejaVuSans.ttf", ("DejaVuSans.ttf",), 0,
+                      0.729, 0.6)
+    # TrueType outlines (not CFF), so that PDFs embed it as a valid Type 42 font
     CJK = FontSpec(
         "Noto Sans CJK SC",
+        "NotoSansCJKsc-Regular.ttf",
+        "NotoSansCJKsc-Regular.otf",
         ("NotoSansCJK-Regular.ttc", "NotoSansCJKsc-Regular.otf", "NotoSansSC-Regular.otf"),
         2,  # index of "Noto Sans CJK SC" in the Debian collection
         0.733,
@@ -71,9 +89,8 @@ class SheetFont(Enum):
 
     @property
     def file_name(self) -> str:
-        """Return the font file name a DXF text style refers to (the one installed, if any)."""
-        path = font_path(self)
-        return path.name if path else self.value.file_names[0]
+        """Return the font file name a DXF text style refers to (the same on every machine)."""
+        return self.value.dxf_file
 
 
 #: Fallback families for backends that pick glyphs per character (SVG, matplotlib).
@@ -84,29 +101,60 @@ FALLBACK_FAMILIES: tuple[str, ...] = ("DejaVu Sans",)
 BUNDLED_DIR = Path(__file__).resolve().parents[1] / "fonts"
 
 
-def _font_dirs() -> Iterable[Path]:
-    extra = os.environ.get("MECHPLAN_FONT_DIRS", "")
-    import matplotlib  # its own copy of DejaVu Sans is a last resort
+def bundled_path(font: SheetFont) -> Path:
+    """Return the file of `font` installed with mechplan (or with matplotlib, for DejaVu Sans)."""
+    if font is SheetFont.SYMBOL:
+        import matplotlib  # its own copy of DejaVu Sans
 
-    mpl_fonts = str(Path(matplotlib.get_data_path()) / "fonts" / "ttf")
-    # the system's fonts first (a full CJK font covers more than the bundled subset)
-    for d in [*filter(None, extra.split(os.pathsep)), *_FONT_DIRS, str(BUNDLED_DIR), mpl_fonts]:
+        return Path(matplotlib.get_data_path()) / "fonts" / "ttf" / font.value.bundled
+    return BUNDLED_DIR / font.value.bundled
+
+
+def system_fonts_enabled() -> bool:
+    """Return True if the user asked for the system's fonts (``MECHPLAN_SYSTEM_FONTS=1``)."""
+    return os.environ.get(ENV_SYSTEM_FONTS, "").strip().lower() in ("1", "true", "yes", "on")
+
+
+def _search_dirs(extra: str, system: bool) -> Iterable[Path]:
+    for d in [*filter(None, extra.split(os.pathsep)), *(_SYSTEM_DIRS if system else ())]:
         p = Path(d).expanduser()
         if p.is_dir():
             yield p
 
 
-@functools.cache
 def font_path(font: SheetFont) -> Path | None:
-    """Return the installed file of `font`, or None (searched once per process)."""
-    wanted = {n.lower() for n in font.value.file_names}
-    for d in _font_dirs():
-        for root, _dirs, files in os.walk(d):
-            for f in files:
+    """Return the file `font` is drawn and measured with (bundled unless the user opted in)."""
+    return _font_path(font, os.environ.get(ENV_FONT_DIRS, ""), system_fonts_enabled())
+
+
+def font_source(font: SheetFont) -> str:
+    """Return where `font_path(font)` comes from: "bundled", "MECHPLAN_FONT_DIRS", "system"."""
+    path = font_path(font)
+    if path is None or path == bundled_path(font):
+        return "bundled"
+    extra = [Path(d).expanduser().resolve() for d in
+             filter(None, os.environ.get(ENV_FONT_DIRS, "").split(os.pathsep))]
+    return ENV_FONT_DIRS if any(path.resolve().is_relative_to(d) for d in extra) else "system"
+
+
+@functools.cache
+def _font_path(font: SheetFont, extra: str, system: bool) -> Path | None:
+    wanted = {n.lower() for n in (*font.value.file_names, font.value.bundled)}
+    for d in _search_dirs(extra, system):
+        for root, _dirs, files in sorted(os.walk(d)):
+            for f in sorted(files):
                 if f.lower() in wanted:
                     return Path(root) / f
+    path = bundled_path(font)
+    if path.is_file():
+        return path
     log.info("font %s not found; text metrics are estimated", font.family)
     return None
+
+
+def face_index(path: Path, font: SheetFont) -> int:
+    """Return the face of `font` in the file `path` (0 unless a collection)."""
+    return font.value.collection_index if path.suffix.lower() in (".ttc", ".otc") else 0
 
 
 @dataclass(frozen=True, slots=True)
@@ -116,21 +164,26 @@ class _Metrics:
     advances: dict[int, int]  # code point -> advance width in font units
 
 
-@functools.cache
 def _metrics(font: SheetFont) -> _Metrics | None:
     path = font_path(font)
     if path is None:
         return None
+    # only osifont has placeholder boxes (Ё ё Э э); expanding every glyph of the other fonts
+    # would cost half a second per drawing
+    return _read_metrics(path, face_index(path, font), font is SheetFont.ISO,
+                         font.value.cap_ratio)
+
+
+@functools.cache
+def _read_metrics(path: Path, index: int, placeholders: bool, cap_ratio: float) -> _Metrics | None:
     try:
-        tt = TTFont(path, fontNumber=font.value.collection_index, lazy=True)
+        tt = TTFont(path, fontNumber=index, lazy=True)
         upem = int(tt["head"].unitsPerEm)
         os2 = tt["OS/2"]
-        cap = int(getattr(os2, "sCapHeight", 0) or 0) or int(upem * font.value.cap_ratio)
+        cap = int(getattr(os2, "sCapHeight", 0) or 0) or int(upem * cap_ratio)
         cmap = tt.getBestCmap()
         hmtx = tt["hmtx"]
-        # only osifont has placeholder boxes (Ё ё Э э); expanding every glyph of the other fonts
-        # would cost half a second per drawing
-        glyf = tt.get("glyf") if font is SheetFont.ISO else None
+        glyf = tt.get("glyf") if placeholders else None
         advances = {
             cp: int(hmtx[name][0])
             for cp, name in cmap.items()
@@ -202,6 +255,16 @@ def font_for(text: str) -> SheetFont:
     return SheetFont.CJK
 
 
+def font_of(text: Text) -> SheetFont:
+    """Return the font a text is drawn in: its paragraph's (``Text.font``) or its string's."""
+    return SheetFont[text.font] if text.font else font_for(text.string)
+
+
+def paragraph_font(lines: Iterable[str]) -> SheetFont:
+    """Return the one font that shows every line of a paragraph (so its lines never differ)."""
+    return font_for(" ".join(lines))
+
+
 def text_width_mm(text: str, height_mm: float, font: SheetFont | None = None) -> float:
     """Return the advance width of `text` at ISO capital height `height_mm`."""
     font = font or font_for(text)
@@ -218,9 +281,9 @@ def text_width_mm(text: str, height_mm: float, font: SheetFont | None = None) ->
     return units / m.units_per_em * em_mm
 
 
-def families_for(text: str) -> tuple[str, ...]:
-    """Return the family fallback list for `text`, its own font first."""
-    first = font_for(text)
+def families_for(text: str, font: SheetFont | None = None) -> tuple[str, ...]:
+    """Return the family fallback list for `text`, its own font (or `font`) first."""
+    first = font or font_for(text)
     others = [f.family for f in SheetFont if f is not first]
     return tuple(dict.fromkeys((first.family, *others, *FALLBACK_FAMILIES)))
 
@@ -249,4 +312,18 @@ def baseline_point(text: Text) -> tuple[float, float]:
 
 def em_size_mm(text: Text) -> float:
     """Return the em size (font size) in mm that gives `text` its ISO capital height."""
-    return text.height_mm / cap_ratio(font_for(text.string))
+    return text.height_mm / cap_ratio(font_of(text))
+
+
+def missing_glyphs(strings: Iterable[str]) -> str:
+    """Return the characters of `strings` that no sheet font has, sorted (empty when none).
+
+    With the bundled fonts these are Chinese characters outside GB 2312 (and rare symbols): every
+    backend draws them as the font's empty box (.notdef), the same on every machine; the user can
+    opt in to a full font with ``--system-fonts`` or ``MECHPLAN_FONT_DIRS``.
+    """
+    chars = {c for s in strings for c in s if not c.isspace()}
+    tables = [m.advances for f in SheetFont if (m := _metrics(f)) is not None]
+    if not tables:
+        return ""
+    return "".join(sorted(c for c in chars if not any(ord(c) in t for t in tables)))

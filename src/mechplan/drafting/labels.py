@@ -11,7 +11,7 @@ import numpy as np
 from shapely import STRtree, box, distance, intersection, length, points
 from shapely.geometry import LineString
 
-from .fonts import text_width_mm
+from .fonts import font_of, text_width_mm
 from .primitives import Arrow, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
 
 #: candidate directions (degrees), right-above first as draftsmen usually write
@@ -36,7 +36,7 @@ LEADER_MIN_MM = 1.6
 def text_box(t: Text) -> tuple[float, float, float, float]:
     """(x0, y0, x1, y1) of a one-line text: its advance width, the capital height above the
     baseline and a descender below it."""
-    w = text_width_mm(t.string, t.height_mm)
+    w = text_width_mm(t.string, t.height_mm, font_of(t))
     x, y = t.position
     dx = {HAlign.LEFT: 0.0, HAlign.CENTER: -w / 2, HAlign.RIGHT: -w}[t.halign]
     dy = {VAlign.BASELINE: 0.0, VAlign.BOTTOM: 0.0, VAlign.MIDDLE: -t.height_mm / 2,

@@ -221,6 +221,9 @@ class Text:
 
     `tag` names a title-block attribute when the text sits inside a `Block` (DXF ATTRIB); an
     attribute may be empty, a plain text may not.
+
+    `font` names the sheet font (``SheetFont`` member: "ISO", "SYMBOL", "CJK") the lines of one
+    paragraph share; None: the font the string itself needs (`drafting.fonts.font_of`).
     """
 
     position: Point
@@ -232,6 +235,7 @@ class Text:
     role: Role = Role.TEXT
     tag: str | None = None
     width_factor: float = 1.0
+    font: str | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "position", _point(self.position, "Text position"))
@@ -256,6 +260,8 @@ class Text:
         if not (0.3 <= wf <= 2.0):
             raise DrawingError(f"Text width factor must be within 0.3…2 (got {wf})")
         object.__setattr__(self, "width_factor", wf)
+        if self.font not in (None, "ISO", "SYMBOL", "CJK"):
+            raise DrawingError(f"Text font must be ISO, SYMBOL or CJK (got {self.font!r})")
         if self.tag is not None and not _valid_tag(self.tag):
             raise DrawingError(
                 f"attribute tag must be letters, digits and '_' without spaces (got {self.tag!r})"

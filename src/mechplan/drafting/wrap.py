@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import re
 
-from .fonts import _is_cjk, text_width_mm
+from .fonts import SheetFont, _is_cjk, text_width_mm
 
 #: no line starts with these (closing punctuation, units and operators glued to what precedes)
 _NO_START = set("=%°±·→)]}’”′″:;,.!?/×−–，。：；）】」』、！？…")
@@ -42,12 +42,14 @@ def _may_break(prev: str, nxt: str) -> bool:
     return not _NUMBER.match(prev)
 
 
-def wrap(text: str, height_mm: float, width_mm: float) -> list[str]:
+def wrap(text: str, height_mm: float, width_mm: float,
+         font: SheetFont | None = None) -> list[str]:
     """Lines of ``text`` at capital height ``height_mm``, each at most ``width_mm`` wide when it
-    can be (a single unbreakable word may be wider)."""
+    can be (a single unbreakable word may be wider); measured in ``font`` (default: the font
+    each line needs)."""
     if not text.strip():
         return []
-    if text_width_mm(text, height_mm) <= width_mm:
+    if text_width_mm(text, height_mm, font) <= width_mm:
         return [text]                      # as it is, spacing included
     tokens = _tokens(text)
     # glue tokens that must not be separated into units
@@ -64,7 +66,7 @@ def wrap(text: str, height_mm: float, width_mm: float) -> list[str]:
     line = ""
     for unit, spaced in units:
         candidate = line + (" " if spaced and line else "") + unit
-        if line and text_width_mm(candidate, height_mm) > width_mm:
+        if line and text_width_mm(candidate, height_mm, font) > width_mm:
             lines.append(line)
             line = unit
         else:

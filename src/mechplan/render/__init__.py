@@ -6,15 +6,30 @@ Every file is written atomically: a failing render leaves any existing file unto
 
 from __future__ import annotations
 
+import logging
 import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from mechplan.drafting.primitives import Sheet
+from mechplan.drafting.fonts import missing_glyphs
+from mechplan.drafting.primitives import Sheet, Text
 from mechplan.errors import DrawingError
 from mechplan.render.atomic import atomic_open, write_atomic
 
 FORMATS: tuple[str, ...] = ("dxf", "svg", "pdf", "png")
+
+log = logging.getLogger(__name__)
+
+
+def warn_missing_glyphs(sheet: Sheet) -> str:
+    """Log a warning naming the characters of `sheet` no font has; return them."""
+    chars = missing_glyphs(p.string for p in sheet.flat() if isinstance(p, Text))
+    if chars:
+        from mechplan.i18n import message
+
+        log.warning(message("fonts.missing_glyphs", sheet.language, sheet=sheet.name,
+                            chars=" ".join(chars)))
+    return chars
 
 
 def _renderer(fmt: str, png_dpi: float) -> Callable[[Sheet], bytes]:
@@ -59,8 +74,10 @@ def write(
         paths = [target / f"{sheet.name}.{f}" for f in fmts]
     else:
         paths = [target if suffix == f else target.with_suffix(f".{f}") for f in fmts]
+    if set(fmts) - {"dxf"}:            # the formats that embed the fonts
+        warn_missing_glyphs(sheet)
     data = [_renderer(f, png_dpi)(sheet) for f in fmts]
     return [write_atomic(p, d) for p, d in zip(paths, data, strict=True)]
 
 
-__all__ = ["FORMATS", "atomic_open", "write", "write_atomic"]
+__all__ = ["FORMATS", "atomic_open", "warn_missing_glyphs", "write", "write_atomic"]

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import io
+import math
 
 import ezdxf
 from ezdxf.document import Drawing
@@ -21,7 +22,7 @@ from ezdxf.enums import TextEntityAlignment
 from ezdxf.layouts.base import BaseLayout
 from ezdxf.layouts.blocklayout import BlockLayout
 
-from mechplan.drafting.fonts import SheetFont, font_for
+from mechplan.drafting.fonts import SheetFont, font_for, font_of, text_width_mm
 from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
@@ -38,8 +39,9 @@ from mechplan.drafting.primitives import (
     Text,
     VAlign,
 )
-from mechplan.drafting.typography import has_scripts, mtext
+from mechplan.drafting.typography import has_scripts, mtext, plain, runs
 from mechplan.errors import DrawingError
+from mechplan.render.librecad import stroke_fonts
 
 #: $DWGCODEPAGE by sheet language, as Python codec names (ezdxf writes the ANSI_ name).
 ENCODINGS = {"en": "cp1252", "ru": "cp1251", "vi": "cp1258", "zh": "gbk"}
@@ -50,11 +52,22 @@ _LINETYPE_DESCRIPTIONS = {LineType.DASHED: "ISO 128 dashed (02) __ __ __",
                           LineType.DASH_DOT: "ISO 128 long-dash dotted (04) ____ . ____ ."}
 #: Text styles. AutoCAD draws a style's font file; LibreCAD 2.2 ignores the file and draws the
 #: stroke (.lff) font named like the STYLE, so each style is named after a LibreCAD font that has
-#: its glyphs: kst32b (Latin, Cyrillic, Greek μ φ, ⊥), azomix (symbols), unicode (CJK).
+#: its glyphs: kst32b (Latin, Cyrillic, Greek μ φ, ⊥), azomix (symbols), unicode (CJK, ∥, ·).
 TEXT_STYLES = {SheetFont.ISO: "kst32b", SheetFont.SYMBOL: "azomix", SheetFont.CJK: "unicode"}
 #: Vietnamese text: no LibreCAD font has its letters; mechplan ships the stroke font
-#: fonts/librecad/mechplan-vi.lff (add its folder to LibreCAD's Preferences → Paths → Fonts)
+#: fonts/librecad/mechplan-vi.lff (add its folder to LibreCAD's Preferences → Paths → Fonts),
+#: which also has the few symbols no LibreCAD font has (✓ – — ·): strings with them use it too
 VI_STYLE = "mechplan-vi"
+#: the styles tried for a string, by the sheet font it is measured in: the first whose LibreCAD
+#: font has every glyph of the string is used (else the first: LibreCAD draws ◊ for the rest)
+_STYLE_ORDER = {
+    SheetFont.ISO: ("kst32b", "azomix", "unicode", VI_STYLE),
+    SheetFont.SYMBOL: ("azomix", "kst32b", "unicode", VI_STYLE),
+    SheetFont.CJK: ("unicode", "kst32b", "azomix", VI_STYLE),
+}
+#: the font file AutoCAD draws each style with
+_STYLE_FONT = {"kst32b": SheetFont.ISO, "azomix": SheetFont.SYMBOL, "unicode": SheetFont.CJK,
+               VI_STYLE: SheetFont.ISO}
 #: layer of the title-block values repeated as plain TEXT for viewers that ignore attributes
 TITLE_VALUES_LAYER = "TITLE_VALUES"
 _VI_LETTERS = frozenset("ăâđêôơưĂÂĐÊÔƠƯ")
@@ -102,9 +115,8 @@ def _setup(doc: Drawing, sheet: Sheet) -> None:
         doc.linetypes.add(name, [sum(pattern), *elements],
                           description=_LINETYPE_DESCRIPTIONS[lt])
     doc.styles.get("Standard").dxf.font = SheetFont.ISO.file_name
-    for font, style in TEXT_STYLES.items():
+    for style, font in _STYLE_FONT.items():
         doc.styles.add(style, font=font.file_name)
-    doc.styles.add(VI_STYLE, font=SheetFont.ISO.file_name)
     for role in Role:
         st = role.style
         doc.layers.add(role.layer, color=st.aci, linetype=LINETYPE_NAMES[st.linetype],
@@ -123,14 +135,72 @@ _ATTACH = {(h, v): 1 + "LCR".index(h.name[0]) + 3 * {"TOP": 0, "MIDDLE": 1}.get(
            for h in HAlign for v in VAlign}
 
 
+def text_style(text: str, font: SheetFont | None = None) -> str:
+    """Return the DXF text style of `text`: named after a LibreCAD font with all its glyphs.
+
+    ``font`` is the sheet font the text is drawn in (its paragraph's); by default the string's own.
+    """
+    font = font or font_for(text)
+    if font is SheetFont.ISO and _vietnamese(text):
+        return VI_STYLE
+    order = _STYLE_ORDER[font]
+    fonts = stroke_fonts()
+    return next((s for s in order if fonts[s].has(plain(text))), order[0])
+
+
+def fitted_width_factor(t: Text, style: str) -> float:
+    """Return the width factor that keeps `t` inside the box the sheet measured for it.
+
+    The layout measures text in the sheet fonts (osifont …); LibreCAD draws the style's stroke
+    font, up to 40 % wider (Cyrillic in kst32b): such a text is condensed to its measured width.
+    AutoCAD draws the style's font file, at most as wide as measured.
+    """
+    string = plain(t.string)
+    measured = text_width_mm(string, t.height_mm, font_of(t))
+    drawn = stroke_fonts()[style].width_mm(string, t.height_mm)
+    if drawn <= measured or drawn <= 0.0:
+        return t.width_factor
+    return t.width_factor * measured / drawn
+
+
+#: LibreCAD draws a stack's halves at 4/9 of the text height
+_STACK_SCALE = 4.0 / 9.0
+
+
+def fitted_mtext_height(t: Text, style: str) -> float:
+    """Return the MTEXT height that keeps `t` (with stacked scripts) inside its measured box.
+
+    LibreCAD reads no width factor in MTEXT, so a label its stroke font draws wider than the sheet
+    measured it is drawn smaller instead.
+    """
+    font = stroke_fonts()[style]
+    h = t.height_mm
+    parts = runs(t.string)
+    drawn, i = 0.0, 0
+    while i < len(parts):
+        text, shift = parts[i]
+        if shift == 0:
+            drawn += font.width_mm(text, h)
+        else:
+            lower = parts[i + 1][0] if shift > 0 and i + 1 < len(parts) and parts[i + 1][1] < 0 \
+                else ""
+            i += 1 if lower else 0
+            drawn += max(font.width_mm(text, h * _STACK_SCALE),
+                         font.width_mm(lower, h * _STACK_SCALE))
+        i += 1
+    drawn += (len(parts) - 1) * font.letter_spacing * h / 9.0
+    measured = text_width_mm(t.string, h, font_of(t))   # as the sheet measured it
+    return h if drawn <= measured or drawn <= 0.0 else h * measured / drawn
+
+
 def _text_attribs(t: Text) -> dict[str, object]:
+    style = text_style(t.string, font_of(t))
     return {
         "layer": t.role.layer,
-        "style": VI_STYLE if font_for(t.string) is SheetFont.ISO and _vietnamese(t.string)
-        else TEXT_STYLES[font_for(t.string)],
+        "style": style,
         "height": t.height_mm,
         "rotation": t.rotation_deg,
-        "width": t.width_factor,
+        "width": math.floor(fitted_width_factor(t, style) * 1e4) / 1e4,   # never wider
     }
 
 
@@ -168,8 +238,10 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
         elif p.string and has_scripts(p.string):
             # real sub- and superscripts: an MTEXT with height and alignment codes
             attribs = _text_attribs(p)
+            style = str(attribs["style"])
             layout.add_mtext(mtext(p.string), dxfattribs={
-                "layer": attribs["layer"], "style": attribs["style"], "char_height": p.height_mm,
+                "layer": attribs["layer"], "style": style,
+                "char_height": round(fitted_mtext_height(p, style), 4),
                 "rotation": p.rotation_deg, "insert": q(p.position),
                 "attachment_point": _ATTACH[(p.halign, p.valign)]})
         elif p.string:

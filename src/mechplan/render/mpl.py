@@ -6,11 +6,15 @@ one sheet millimetre is one millimetre on the page. Uses `Figure` directly: no p
 
 from __future__ import annotations
 
+import contextlib
+import dataclasses
 import io
+import warnings
+from collections.abc import Iterator
 from typing import Any, cast
 
 import matplotlib
-from matplotlib import font_manager
+from matplotlib import font_manager, ft2font
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection
 from matplotlib.figure import Figure
@@ -22,7 +26,15 @@ from matplotlib.patches import Polygon as PolygonPatch
 from matplotlib.textpath import TextPath, TextToPath
 from matplotlib.transforms import Affine2D
 
-from mechplan.drafting.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_path
+from mechplan.drafting.fonts import (
+    SheetFont,
+    baseline_point,
+    em_size_mm,
+    face_index,
+    families_for,
+    font_of,
+    font_path,
+)
 from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
@@ -51,13 +63,43 @@ _RC = {"pdf.fonttype": 42, "ps.fonttype": 42, "lines.scale_dashes": False,
        "path.simplify": False, "svg.fonttype": "none"}
 
 
-def _register_fonts() -> None:
-    """Make the sheet fonts known to matplotlib even if its font cache predates their install."""
-    known = {f.name for f in font_manager.fontManager.ttflist}
+def _sheet_font_entries() -> list[Any]:
+    """matplotlib's font entries of the sheet fonts' files, named by their sheet family."""
+    entries = []
     for font in SheetFont:
         path = font_path(font)
-        if path is not None and font.family not in known:
-            font_manager.fontManager.addfont(str(path))
+        if path is None:
+            continue
+        index = face_index(path, font)
+        try:        # a collection's face (a system .ttc): matplotlib ≥ 3.10 reads any face
+            ft = ft2font.FT2Font(str(path), face_index=index) if index else ft2font.FT2Font(
+                str(path))
+        except TypeError:
+            ft = ft2font.FT2Font(str(path))
+        prop = font_manager.ttfFontProperty(ft)
+        entries.append(dataclasses.replace(prop, name=font.family))
+    return entries
+
+
+@contextlib.contextmanager
+def _sheet_fonts() -> Iterator[None]:
+    """Map the sheet families to mechplan's font files while drawing, then restore.
+
+    matplotlib's font list also holds the system's fonts (a Debian Noto Sans CJK SC, DejaVu Sans),
+    and it would draw with whichever scores first: the sheet's own files must win, or a PDF would
+    embed different fonts on different machines.
+    """
+    manager = cast(Any, font_manager.fontManager)   # its find cache is private
+    saved = manager.ttflist
+    ours = _sheet_font_entries()
+    names = {e.name for e in ours}
+    manager.ttflist = [*ours, *(e for e in saved if e.name not in names)]
+    manager._findfont_cached.cache_clear()
+    try:
+        yield
+    finally:
+        manager.ttflist = saved
+        manager._findfont_cached.cache_clear()
 
 
 def _style(role: Role) -> dict[str, Any]:
@@ -130,7 +172,7 @@ def _text(ax: Any, t: Text) -> None:
         return
     x, y = baseline_point(t)
     size_mm = em_size_mm(t)
-    families = list(families_for(t.string))
+    families = list(families_for(t.string, font_of(t)))
     ha = {HAlign.LEFT: "left", HAlign.CENTER: "center", HAlign.RIGHT: "right"}[t.halign]
     if t.width_factor == 1.0 and not t.rotation_deg and has_scripts(t.string):
         _scripted(ax, t, x, y, size_mm, families, ha)
@@ -153,7 +195,6 @@ def _text(ax: Any, t: Text) -> None:
 
 def figure(sheet: Sheet) -> Figure:
     """Return a matplotlib figure of `sheet` at true scale (call inside `render_context()`)."""
-    _register_fonts()
     w, h = sheet.width_mm, sheet.height_mm
     fig = Figure(figsize=(w / 25.4, h / 25.4), facecolor="white")
     FigureCanvasAgg(fig)
@@ -166,9 +207,16 @@ def figure(sheet: Sheet) -> Figure:
     return fig
 
 
-def render_context() -> Any:
-    """Return the rcParams context the figures are built and saved in."""
-    return matplotlib.rc_context(cast(Any, _RC))
+@contextlib.contextmanager
+def render_context() -> Iterator[None]:
+    """Build and save figures in this context: the rcParams and the sheet's font files.
+
+    matplotlib's own warning per missing glyph is silenced: `render.write` names them once.
+    """
+    with matplotlib.rc_context(cast(Any, _RC)), _sheet_fonts(), warnings.catch_warnings():
+        warnings.filterwarnings("ignore", message=r"Glyph \d+ .*missing from font", 
+                                category=UserWarning)
+        yield
 
 
 def to_bytes(sheet: Sheet, fmt: str, *, dpi: float = 150.0) -> bytes:

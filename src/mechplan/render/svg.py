@@ -13,7 +13,7 @@ from typing import Any
 import svgwrite
 from svgwrite.container import Group
 
-from mechplan.drafting.fonts import baseline_point, em_size_mm, families_for
+from mechplan.drafting.fonts import SheetFont, baseline_point, em_size_mm, families_for, font_of
 from mechplan.drafting.primitives import (
     DASH_PATTERNS_MM,
     Arc,
@@ -45,9 +45,10 @@ def _n(v: float) -> float:
     return 0.0 if r == 0 else r
 
 
-def font_family_css(text: str) -> str:
-    """Return the CSS font-family list for `text`, its own font first, generic last."""
-    return ", ".join([*(f"'{f}'" if " " in f else f for f in families_for(text)), "sans-serif"])
+def font_family_css(text: str, font: SheetFont | None = None) -> str:
+    """Return the CSS font-family list for `text`, its own font (or `font`) first, generic last."""
+    return ", ".join([*(f"'{f}'" if " " in f else f for f in families_for(text, font)),
+                      "sans-serif"])
 
 
 class _Writer:
@@ -141,7 +142,7 @@ class _Writer:
             "insert": (0, 0),
             "transform": transform,
             "font_size": _n(em_size_mm(t)),
-            "font_family": font_family_css(t.string),
+            "font_family": font_family_css(t.string, font_of(t)),
             "text_anchor": _ANCHOR[t.halign],
         }
         if t.role is not Role.TEXT:

@@ -11,11 +11,12 @@ import base64
 import functools
 import io
 import logging
+from pathlib import Path
 
 from fontTools import subset
 from fontTools.ttLib import TTFont
 
-from mechplan.drafting.fonts import SheetFont, font_path, has_cjk
+from mechplan.drafting.fonts import SheetFont, face_index, font_path, has_cjk
 from mechplan.drafting.primitives import Sheet, Text
 
 log = logging.getLogger(__name__)
@@ -25,14 +26,15 @@ def _texts(sheet: Sheet) -> list[str]:
     return [p.string for p in sheet.flat() if isinstance(p, Text)]
 
 
-@functools.lru_cache(maxsize=64)
 def _subset(font: SheetFont, chars: str) -> tuple[str, str] | None:
     """(mime type, base64 data) of ``font`` cut down to ``chars``, or None when not installed."""
     path = font_path(font)
-    if path is None:
-        return None
-    tt = TTFont(str(path), fontNumber=font.value.collection_index, recalcTimestamp=False,
-                lazy=False)
+    return None if path is None else _subset_file(path, face_index(path, font), chars)
+
+
+@functools.lru_cache(maxsize=64)
+def _subset_file(path: Path, index: int, chars: str) -> tuple[str, str]:
+    tt = TTFont(str(path), fontNumber=index, recalcTimestamp=False, lazy=False)
     options = subset.Options()
     options.layout_features = ["*"]
     options.name_IDs = ["*"]

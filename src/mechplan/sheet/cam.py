@@ -21,7 +21,7 @@ from ..drafting.primitives import (
     Text,
     VAlign,
 )
-from ..i18n import message, number, unit
+from ..i18n import message, number, significant, unit
 from ..model.cam import Contact, Motion
 from ..synthesis.cam.profile import follower_positions
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_number, mu_text, scale_for
@@ -241,7 +241,8 @@ def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[li
     lay = fitted_layout(lambda scale: build(scale)[0], size=size, standard=standard,
                         language=lang, fields=fields)
     r = _inversion(d, lang, lay.k)[1] * 1000.0
-    fields.setdefault("scale", f"1:{r:g}" if r >= 1 else f"{1 / r:g}:1")
+    fields.setdefault("scale", f"1:{significant(r, 6, lang)}" if r >= 1
+                      else f"{significant(1 / r, 6, lang)}:1")
     return lay.sheets(language=lang, name=name, fields=fields)
 
 

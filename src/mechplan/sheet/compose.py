@@ -12,7 +12,7 @@ from ..construct.protocol import plan_title as plan_name
 from ..drafting.frame import make_frame
 from ..drafting.primitives import Sheet, Text
 from ..errors import DrawingError, MechplanError
-from ..i18n import decimal_mark, message
+from ..i18n import message, scientific, significant
 from ..model.mechanism import GROUND, PairKind
 from ..model.plans import Plan
 from ..solve import Solution
@@ -160,7 +160,7 @@ def _marked(panel: Panel, sol: Solution, k: int, plan: Plan, lang: str) -> Panel
             worst = max(worst, float(sol.estimate.relative(sid)[k]))
     if worst > sol.tolerance:
         x0, y0, _, _ = panel.bounds()
-        estimate = f"{worst:.1e}" if math.isfinite(worst) else "∞"
+        estimate = scientific(worst, 2, lang) if math.isfinite(worst) else "∞"
         panel.primitives.append(Text((x0, y0 - 6.0), message("estimate.sheet_mark", lang,
                                                              estimate=estimate), 3.5))
     return panel
@@ -175,10 +175,7 @@ def scale_field(mu_l: float, lang: str = "en") -> str:
     """Drawing scale of the position plan as a ratio ("1:2,5" in ru and vi)."""
     r = mu_l * 1000.0
 
-    def fmt(v: float) -> str:
-        text = f"{v:g}"
-        return text.replace(".", decimal_mark(lang))
-    return f"1:{fmt(r)}" if r >= 1 else f"{fmt(1 / r)}:1"
+    return f"1:{significant(r, 6, lang)}" if r >= 1 else f"{significant(1 / r, 6, lang)}:1"
 
 
 def compose_sheets(sol: Solution, size: str | None = None, standard: str | None = None,
@@ -208,10 +205,11 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
     base.update({k: v for k, v in scene.drawing.title_block.items() if v})
     # one stream in reading order: kinetostatics fills the free room kinematics leaves
     found = fewest_sheets(panels, packing_area(make_frame(size, standard, base, language=lang)),
-                     split=True)
+                          split=True)
     if isinstance(found, Panel):
         x0, y0, x1, y1 = found.bounds()
-        fixed = ", ".join(f"{k} = {v:g}" for k, v in scene.drawing.scales.items())
+        fixed = ", ".join(f"{k} = {significant(v, 6, 'en')}"
+                          for k, v in scene.drawing.scales.items())
         raise DrawingError(
             f"the panel '{found.name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not "
             f"fit on an {size} sheet at the scale factors {fixed or 'chosen'}; use a "

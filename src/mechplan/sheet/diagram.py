@@ -16,7 +16,7 @@ import numpy as np
 
 from ..construct.scale import round_scale
 from ..drafting.primitives import Arrow, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
-from ..i18n import number, unit
+from ..i18n import scale_factor, tick, unit
 from .fit import drawing_right, text_block
 from .panels import Panel
 
@@ -101,17 +101,9 @@ def _tick_step(mu: float, min_gap_mm: float = 12.0) -> float:
     return round_scale(mu * min_gap_mm)
 
 
-def _digits(step: float) -> int:
-    return max(0, -math.floor(math.log10(step) + 1e-9)) if step > 0 else 0
-
-
 def mu_number(mu: float, language: str) -> str:
-    """A round scale factor with every significant digit ("0,00025", "2,5", "20")."""
-    digits = max(0, -math.floor(math.log10(mu)) + 3) if mu > 0 else 3
-    num = number(mu, digits, language)
-    if "," in num or "." in num:
-        num = num.rstrip("0").rstrip(",.")
-    return num
+    """A scale factor with every significant digit ("0,00025", "2,5", "20", "2500")."""
+    return scale_factor(mu, language)
 
 
 def mu_text(symbol: str, mu: float, si_unit: str, language: str) -> str:
@@ -174,7 +166,6 @@ def diagram_panel(name: str, title: str, curves: Sequence[Curve], x_axis: Axis, 
     prims.append(Text((ox + 1.5, Y1 + 9.0), y_axis.title(language), TEXT_H, valign=VAlign.TOP))
     for lo, hi, mu, horizontal in ((x_lo, x_hi, mu_x, True), (y_lo, y_hi, mu_y, False)):
         step = _tick_step(mu)
-        digits = _digits(step)
         first = math.ceil(lo / step - 1e-9)
         last = math.floor(hi / step + 1e-9)
         for i in range(first, last + 1):
@@ -182,7 +173,7 @@ def diagram_panel(name: str, title: str, curves: Sequence[Curve], x_axis: Axis, 
             if abs(v) < step * 1e-9:
                 continue
             t = v / mu
-            label = number(v, digits, language)
+            label = tick(v, step, language)
             if horizontal:
                 prims.append(Line((t, oy - TICK / 2), (t, oy + TICK / 2), Role.THIN))
                 prims.append(Text((t, oy - TICK - 0.5), label, SMALL_H, halign=HAlign.CENTER,

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..drafting.primitives import Role, VAlign
-from ..i18n import message, number, unit
+from ..i18n import message, number, scale_factor, unit
 from .diagram import Axis, Curve, Marker, diagram_panel, mu_text, scale_for
 from .fit import TableStyle, table_panel, text_block
 from .layout import enlargement, fitted_sheets
@@ -88,7 +88,7 @@ def dynamics_panels(d: MachineDynamics, lang: str, scale: float = 1.0) -> list[P
                            Curve(deg[k], d.A_c_drawn, Role.DASHED, label="A_c")],
                           phi_axis, Axis("A", "J", 60.0 * scale, mu=sc.mu_A, mu_symbol="μA"), lang)
     _note(works.panel, message("dynamics.sheet.pole", lang, H=number(sc.H_mm, 0, lang),
-                               muA=number(sc.mu_A, 4, lang)))
+                               muA=scale_factor(sc.mu_A, lang)))
     energy = diagram_panel("dynamics.energy", message("dynamics.diagram.energy", lang),
                            [Curve(deg[q], d.dT[q]), Curve(deg[k], d.dT_drawn, Role.THIN)], phi_axis,
                            Axis("ΔT", "J", 50.0 * scale, mu=sc.mu_T, mu_symbol="μT"), lang)

@@ -56,14 +56,18 @@ COLUMNS = (("p", "p_MPa", 1e-6), ("Pk", "Pk_kN", 1e-3), ("Pj", "Pj_kN", 1e-3), (
 
 
 def table_cells(t: EngineResult, language: str, number_of: int = 1) -> list[list[str]]:
-    """Heading and rows of the per-angle table of one cylinder (with ΣM and |Q| of pin 1)."""
+    """Heading and rows of the per-angle table of one cylinder, with ΣM and the |Q| of the crank
+    pin that cylinder's rod turns (named in the heading when the engine has several pins)."""
     f = t.cylinders[number_of]
+    pin = t.pin_of(number_of)
+    q_head = (message("numbers.engine.col.Q_pin", language, pin=pin) if len(t.pins) > 1
+              else message("engine.col.Q", language))
     head = [message("engine.col.phi", language)] + [
         message(f"engine.col.{a}", language) for a, _, _ in COLUMNS] + [
-        message("engine.col.M_total", language), message("engine.col.Q", language)]
+        message("engine.col.M_total", language), q_head]
     digits = {"p": 3, "beta": 2, "M": 2}
     rows = [head]
-    Q = t.pins[1].Q
+    Q = t.pins[pin].Q
     for k, phi in enumerate(t.phi):
         row = [number(math.degrees(phi), 0, language)]
         for a, _, scale in COLUMNS:
@@ -207,7 +211,8 @@ def polar_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     for k in range(0, len(t.phi) - 1, step):
         x, y = dia.to_mm(float(qt.T[k]) * 1e-3, float(qt.Z[k]) * 1e-3)
         prims.append(Circle((x, y), 0.4, Role.THIN))
-        prims.append(Text((x + 0.8, y + 0.8), f"{math.degrees(float(t.phi[k])):.0f}", 1.8))
+        prims.append(Text((x + 0.8, y + 0.8), number(math.degrees(float(t.phi[k])), 0, lang),
+                          1.8))
     kmax = int(np.argmax(q.Q))
     x, y = dia.to_mm(float(q.T[kmax]) * 1e-3, float(q.Z[kmax]) * 1e-3)
     prims.append(Line((px, py), (x, y), Role.DASHED))
@@ -237,7 +242,8 @@ def wear_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     for psi, s in zip(rays, sums * 1e-3):
         ux, uy = -math.sin(psi), math.cos(psi)      # crank outward = up, sense of rotation = left
         prims.append(Line((0.0, 0.0), (radius * ux, radius * uy), Role.THIN))
-        prims.append(Text((radius * 1.08 * ux, radius * 1.08 * uy), f"{math.degrees(psi):.0f}°",
+        prims.append(Text((radius * 1.08 * ux, radius * 1.08 * uy),
+                          f"{number(math.degrees(psi), 0, lang)}°",
                           1.8, halign=HAlign.CENTER, valign=VAlign.MIDDLE))
         r_in = radius - s / mu
         ends.append((r_in * ux, r_in * uy))
@@ -251,7 +257,7 @@ def wear_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     y = -radius - 6.0
     for note in (mu_text("μw", mu, "kN", lang),
                  message("engine.label.oil_hole", lang,
-                         angle=f"{math.degrees(float(rays[best])):.0f}")):
+                         angle=number(math.degrees(float(rays[best])), 0, lang))):
         block = text_block((x0, y), note, TEXT_H, x1 - x0, valign=VAlign.TOP)
         notes += block
         y = block[-1].position[1] - 5.0

@@ -15,7 +15,7 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass
 
-from ..drafting.fonts import text_width_mm
+from ..drafting.fonts import SheetFont, paragraph_font, text_width_mm
 from ..drafting.primitives import LINE_SPACING, HAlign, Primitive, Table, Text, VAlign
 from ..drafting.wrap import wrap
 from .panels import Panel
@@ -27,25 +27,26 @@ TEXT_COLUMN_MIN = 40.0
 
 
 def lines_of(text: str | Sequence[str], height_mm: float, width_mm: float,
-             sep: str = ";   ", measure_min: float = MEASURE_MIN) -> list[str]:
+             sep: str = ";   ", measure_min: float = MEASURE_MIN,
+             font: SheetFont | None = None) -> list[str]:
     """``text`` wrapped to ``width_mm`` (at least ``measure_min``); a sequence of parts (scale
     factors, say) is joined by ``sep`` on as few lines as fit, a part wider than the measure
-    itself wrapped."""
+    itself wrapped. Widths are measured in ``font`` (default: each line's own)."""
     width = max(width_mm, measure_min)
     if isinstance(text, str):
-        return wrap(text, height_mm, width)
+        return wrap(text, height_mm, width, font)
     out: list[str] = []
     line = ""
     for part in text:
         candidate = f"{line}{sep}{part}" if line else part
-        if line and text_width_mm(candidate, height_mm) > width:
+        if line and text_width_mm(candidate, height_mm, font) > width:
             out.append(line + sep.rstrip())
             line = part
         else:
             line = candidate
     if line:
         out.append(line)
-    return [s for ln in out for s in wrap(ln, height_mm, width)]
+    return [s for ln in out for s in wrap(ln, height_mm, width, font)]
 
 
 def text_block(origin: tuple[float, float], text: str | Sequence[str], height_mm: float,
@@ -54,13 +55,16 @@ def text_block(origin: tuple[float, float], text: str | Sequence[str], height_mm
                measure_min: float = MEASURE_MIN) -> list[Text]:
     """``text`` wrapped to ``width_mm`` (at least ``measure_min``) as lines from ``origin`` down —
     or up (``upward``: the last line at ``origin``, so a title stays just above its drawing
-    however many lines it takes)."""
-    lines = lines_of(text, height_mm, width_mm, measure_min=measure_min)
+    however many lines it takes). The lines are one paragraph in one font: the font that shows
+    all of it (a line is never in osifont while the next, for a "ё" or a "′", is not)."""
+    font = paragraph_font([text] if isinstance(text, str) else text)
+    lines = lines_of(text, height_mm, width_mm, measure_min=measure_min, font=font)
+    named = font.name if len(lines) > 1 else None
     step = pitch or LINE_SPACING * height_mm
     n = len(lines)
     x, y = origin
     return [Text((x, y + step * ((n - 1 - i) if upward else -i)), s, height_mm, halign=halign,
-                 valign=valign) for i, s in enumerate(lines)]
+                 valign=valign, font=named) for i, s in enumerate(lines)]
 
 
 def drawing_right(primitives: Sequence[Primitive | Table]) -> float:

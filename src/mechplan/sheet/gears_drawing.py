@@ -19,7 +19,7 @@ from ..drafting.primitives import (
     Text,
     VAlign,
 )
-from ..i18n import message, number
+from ..i18n import message, number, scale_factor
 from ..synthesis.gears.involute import Pair, flank, tooth_outline
 from ..synthesis.gears.solve import PlanetaryResult
 from .diagram import Axis, Curve, diagram_panel
@@ -131,7 +131,7 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
                             f"{number(x_out, 2, lang)} = {number(read, 4, lang)}", TEXT_H, width))
     prims.extend(text_block((lo - 10.0, 14.0), message("gears.sheet.angular", lang,
                                                        H=number(H, 0, lang),
-                                                       mu=number(mu_w, 4, lang)), TITLE_H, width,
+                                                       mu=scale_factor(mu_w, lang)), TITLE_H, width,
                             upward=True))
     return [dia.panel, Panel("angular", prims)]
 

@@ -125,7 +125,7 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
         panels.append(d.panel)
     # one under the other on the same φ axis, as the course draws them
     width = max(p.bounds()[2] - p.bounds()[0] for p in panels)
-    stacks = grid("diagram-kinematic", panels, width, r.height - 8.0)
+    stacks = grid("diagram-kinematic", panels, width, r.height - 8.0, same_origin=True)
     if len(specs) > 1:
         for stack in stacks:
             x0, _y0, _x1, y1 = stack.bounds()
@@ -182,17 +182,22 @@ GRID_TITLE_MM = 12.0
 
 
 def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
-         gap: float = 6.0, title: str | None = None) -> list[Panel]:
+         gap: float = 6.0, same_origin: bool = False, title: str | None = None) -> list[Panel]:
     """Panels in reading order on a grid of equal cells, as few grid panels as fit the room.
 
-    With a title, each grid panel has it above its cells (within ``height_mm``) and can be
-    redrawn (``Panel.refit(w, h)``) as a first part of at most w × h with its other cells and
-    those of the later grid panels laid out again for the room — so the layout fills a sheet's
-    free room with the first rows and carries the others over.
+    ``same_origin``: the cells' own x = 0 (a diagram's φ = 0) falls at the same place in every
+    column, so diagrams drawn one under another share their φ axis; otherwise each cell's left
+    edge is at its column's left. With a title, each grid panel has it above its cells (within
+    ``height_mm``) and can be redrawn (``Panel.refit(w, h)``) as a first part of at most w × h
+    with its other cells and those of the later grid panels laid out again for the room — so the
+    layout fills a sheet's free room with the first rows and carries the others over.
     """
     if not cells:
         return []
     boxes = [c.bounds() for c in cells]
+    if same_origin:
+        left = min(b[0] for b in boxes)
+        boxes = [(left, b[1], b[2], b[3]) for b in boxes]
     cw = max(b[2] - b[0] for b in boxes) + gap
     ch = max(b[3] - b[1] for b in boxes) + gap
 
@@ -208,21 +213,21 @@ def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
     per = cols * rows_per
     out: list[Panel] = []
     for start in range(0, len(cells), per):
-        chunk, onward = cells[start:start + per], cells[start:]
+        chunk = cells[start:start + per]
         panel = _grid_panel(f"{name}-{start // per + 1}" if len(cells) > per else name,
                             chunk, boxes[start:start + per], cols, cw, ch, title)
         if title:
             drawn: dict[tuple[int, int], list[Panel]] = {}
 
-            def refit(w: float, h: float, onward: list[Panel] = onward, cname: str = panel.name,
+            def refit(w: float, h: float, start: int = start, cname: str = panel.name,
                       drawn: dict[tuple[int, int], list[Panel]] = drawn) -> list[Panel]:
                 c, r = shape(w, h)
                 if (c, r) not in drawn:
-                    first = onward[:c * r]
-                    firsts = [cell.bounds() for cell in first]
-                    head = _grid_panel(f"{cname}-1", first, firsts, c, cw, ch, title)
-                    drawn[c, r] = [head] + grid(f"{cname}-2", onward[c * r:], width_mm,
-                                                height_mm, gap, title)
+                    cut = start + c * r
+                    head = _grid_panel(f"{cname}-1", cells[start:cut], boxes[start:cut], c, cw,
+                                       ch, title)
+                    drawn[c, r] = [head] + grid(f"{cname}-2", cells[cut:], width_mm, height_mm,
+                                                gap, same_origin, title)
                 return list(drawn[c, r])
             panel.refit = refit
         out.append(panel)

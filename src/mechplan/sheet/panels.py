@@ -21,7 +21,7 @@ from ..construct.protocol import plan_title as plan_name
 from ..construct.segments import SegmentKind
 from ..construct.step import Kind
 from ..construct.terms import pole_label
-from ..drafting.fonts import text_width_mm
+from ..drafting.fonts import font_of, text_width_mm
 from ..drafting.labels import LabelPlacer
 from ..drafting.primitives import (
     Arrow,
@@ -35,7 +35,7 @@ from ..drafting.primitives import (
     Text,
     VAlign,
 )
-from ..i18n import message, unit
+from ..i18n import message, scale_factor, unit
 from ..i18n import number as format_number
 from ..model.plans import Plan
 from .link_outline import drawn as draw_figure
@@ -85,7 +85,7 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
         (x, y), r = p.center, p.radius
         return [(x - r, y - r), (x + r, y + r)]
     if isinstance(p, Text):
-        w = text_width_mm(p.string, p.height_mm)
+        w = text_width_mm(p.string, p.height_mm, font_of(p))
         x, y = p.position
         dx = {HAlign.LEFT: 0.0, HAlign.CENTER: -w / 2, HAlign.RIGHT: -w}[p.halign]
         dy = {
@@ -102,11 +102,9 @@ def _points_of(p: Primitive | Table) -> list[tuple[float, float]]:
 
 
 def mu_text(plan: Plan, mu: float, lang: str) -> str:
-    """ "μv = 0,1 (m/s)/mm" in the sheet's decimal mark."""
+    """ "μv = 0,1 (m/s)/mm" in the sheet's decimal mark; "μF = 1000 N/mm" (never "1")."""
     sym, si_unit = plan.scale_symbol, plan.scale_unit
-    digits = max(0, -math.floor(math.log10(mu)) + 3) if mu > 0 else 3
-    num = format_number(mu, digits, lang).rstrip("0").rstrip(",.")
-    return f"{sym} = {num} {unit(si_unit, lang)}"
+    return f"{sym} = {scale_factor(mu, lang)} {unit(si_unit, lang)}"
 
 
 def table(rows: Sequence[tuple[str, ...]], origin: tuple[float, float]) -> Table:

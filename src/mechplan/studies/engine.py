@@ -22,7 +22,7 @@ from ..dynamics.engine.analysis import (
     wear,
 )
 from ..dynamics.engine.model import EngineModel
-from ..i18n import message, number
+from ..i18n import message, number, scientific
 from ..scene.engine import EngineScene, parse_engine_scene
 from ..sheet.engine import COLUMNS, table_cells
 from .answers import Keys, Own, Written, span, written_all
@@ -125,9 +125,9 @@ class EngineStudy:
                              angle=n(math.degrees(float(rays[np.argmin(sums)])), 0)))
         lines += ["", message("engine.report.checks", lang)]
         lines.append(message("engine.check.work", lang, torque=n(ch.work_torque, 6),
-                             work=n(ch.work_expected, 6), error=f"{ch.work_error:.1e}"))
-        lines.append(message("engine.check.inertia", lang, mean=f"{ch.inertia_mean:.1e}",
-                             peak=n(ch.inertia_peak, 2)))
+                             work=n(ch.work_expected, 6), error=scientific(ch.work_error, 2, lang)))
+        lines.append(message("engine.check.inertia", lang,
+                             mean=scientific(ch.inertia_mean, 2, lang), peak=n(ch.inertia_peak, 2)))
         lines.append(message("engine.check.brix", lang, dp=n(ch.brix_dp_max * 1e-3, 2),
                              percent=n(ch.brix_dp_max / ch.p_max * 100, 3)))
         lines.append(message("engine.check.series", lang, da=n(ch.da_max, 2),
@@ -137,7 +137,8 @@ class EngineStudy:
         else:
             lines.append(message("engine.check.two_mass_exact", lang))
         if ch.pair_torque_error is not None:
-            lines.append(message("engine.check.pair", lang, error=f"{ch.pair_torque_error:.1e}"))
+            lines.append(message("engine.check.pair", lang,
+                                 error=scientific(ch.pair_torque_error, 2, lang)))
         return "\n".join(lines) + "\n"
 
     def _table_text(self, lang: str) -> list[str]:

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..errors import SceneError
-from ..i18n import message, number
+from ..i18n import message, number, scientific
 from ..model.dynamics import DynamicsSpec, Unknown
 from .answers import Keys, Own, Written, span, written_all
 
@@ -56,7 +56,7 @@ def dynamics_report(d: MachineDynamics, lang: str, k: float = 1.0) -> str:
                          dense=str(d.theta.shape[0] - 1), drawn=_f(d.A_d_drawn[-1], 3, lang),
                          n=str(d.drawn.shape[0] - 1)))
     lines.append(message("dynamics.report.lever", lang, n=str(d.drawn.shape[0] - 1),
-                         diff=f"{float(np.abs(d.M_lever - d.M_given).max()):.2e}"))
+                         diff=scientific(float(np.abs(d.M_lever - d.M_given).max()), 3, lang)))
     lines.append(message("dynamics.report.flywheel", lang))
     for method, J, delta in (("wittenbauer", d.witt.J_flywheel, d.delta_witt),
                              ("merkalov", d.merk.J_flywheel, d.delta_merk),

@@ -55,6 +55,10 @@ class EngineResult:
     pins: dict[int, PinLoad]
     journals: Array                      # (J, N, 2) loads on the main journals, fixed frame
 
+    def pin_of(self, cylinder: int) -> int:
+        """The crank pin cylinder ``cylinder``'s rod turns (two cylinders share one in a V)."""
+        return next(pin for pin, members in self.model.pins.items() if cylinder in members)
+
     @property
     def M_mean(self) -> float:
         """Mean engine torque over the cycle (trapezoids on the grid)."""
