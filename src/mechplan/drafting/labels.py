@@ -8,7 +8,7 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
-from shapely import STRtree, box, distance, intersection, length, points
+from shapely import STRtree, box, intersection, length, points
 from shapely.geometry import LineString
 
 from .fonts import font_of, text_width_mm
@@ -72,7 +72,7 @@ class LabelPlacer:
         self.xy = np.asarray(points_mm, dtype=float).reshape(-1, 2)
         self.points = points(self.xy)
         self.ends = np.asarray(ends, dtype=float).reshape(-1, 2)
-        #: thin leaders from far labels to their points; the caller draws them
+        #: thin leaders (layer DIMENSION) from far labels to their points; the caller draws them
         self.leaders: list[Line] = []
 
     @property
@@ -108,14 +108,21 @@ class LabelPlacer:
         return cost
 
     def _ambiguity(self, rect, anchor: tuple[float, float]) -> float:
-        """How much nearer (mm) the box is to another point than to its own, plus the margin."""
-        if not len(self.points):
+        """How much nearer (mm) the box is to another point or line end than to its own point,
+        plus the margin (a reader, and ``mechplan check``, gives a label to the nearest end)."""
+        others = np.vstack([self.xy, self.ends])
+        if not len(others):
             return 0.0
-        d = distance(rect, self.points)
-        own = float(distance(rect, points(anchor)))
-        mine = np.hypot(*(self.xy - anchor).T) < 0.3
-        others = d[~mine]
-        return max(0.0, own + OWN_MARGIN_MM - float(others.min())) if len(others) else 0.0
+        others = others[np.hypot(*(others - anchor).T) >= 0.3]
+        if not len(others):
+            return 0.0
+        x0, y0, x1, y1 = rect.bounds
+        dx = np.maximum(np.maximum(x0 - others[:, 0], others[:, 0] - x1), 0.0)
+        dy = np.maximum(np.maximum(y0 - others[:, 1], others[:, 1] - y1), 0.0)
+        ax = max(x0 - anchor[0], anchor[0] - x1, 0.0)
+        ay = max(y0 - anchor[1], anchor[1] - y1, 0.0)
+        own = math.hypot(ax, ay)
+        return max(0.0, own + OWN_MARGIN_MM - float(np.hypot(dx, dy).min()))
 
     def place(self, anchor: tuple[float, float], text: str, height_mm: float | None = None,
               toward_deg: float | None = None) -> Text:
@@ -166,15 +173,14 @@ class LabelPlacer:
     @staticmethod
     def _leader_line(anchor: tuple[float, float], r: tuple[float, float, float, float],
                      ambiguous: bool = False) -> Line | None:
-        """A thin line from near the point to just short of the label's box when the label is
+        """A thin line from near the point to the edge of the label's box when the label is
         far from it or nearer another point (None otherwise)."""
         nx, ny = min(max(anchor[0], r[0]), r[2]), min(max(anchor[1], r[1]), r[3])
         d = math.hypot(nx - anchor[0], ny - anchor[1])
         if d <= (LEADER_MIN_MM if ambiguous else LEADER_FROM_MM):
             return None
         ux, uy = (nx - anchor[0]) / d, (ny - anchor[1]) / d
-        return Line((anchor[0] + 0.8 * ux, anchor[1] + 0.8 * uy),
-                    (nx - CLEAR_MM * ux, ny - CLEAR_MM * uy), Role.THIN)
+        return Line((anchor[0] + 0.8 * ux, anchor[1] + 0.8 * uy), (nx, ny), Role.DIMENSION)
 
     def _leader_crosses(self, anchor: tuple[float, float],
                         r: tuple[float, float, float, float]) -> bool:

@@ -89,6 +89,7 @@ def read_dxf(path: Path) -> Submission:
                 break
     if sub.skipped:
         sub.notes.append(Note("info", T("note.skipped", n=sub.skipped), str(path)))
+    _follow_leaders(sub)
     xs = [v for ln in sub.lines for v in (ln.start[0], ln.end[0])]
     ys = [v for ln in sub.lines for v in (ln.start[1], ln.end[1])]
     extent = max(max(xs) - min(xs), max(ys) - min(ys)) if xs else 0.0
@@ -110,6 +111,30 @@ def read_dxf(path: Path) -> Submission:
                 else text.where
             sub.entries.extend(parse_assignments(line, where, at=text.centre))
     return sub
+
+
+#: leader lines (a label tied to its point) are on a layer named like these
+_LEADER_LAYER = re.compile(r"^(dimension|leader|выноск)", re.IGNORECASE)
+#: a leader's end this near (drawing units) a text's box ties the text to the leader (the
+#: box a reader estimates differs from the one drawn by about a millimetre)
+LEADER_TOUCH = 2.5
+
+
+def _follow_leaders(sub: Submission) -> None:
+    """Leader lines are not lines of a plan: each runs from a point to its label (as a DXF
+    LEADER does) and moves the text nearest its end to its start — a label placed away from a
+    crowded point is read at that point."""
+    leaders = [ln for ln in sub.lines if _LEADER_LAYER.match(ln.layer)]
+    if not leaders:
+        return
+    sub.lines = [ln for ln in sub.lines if not _LEADER_LAYER.match(ln.layer)]
+    for ln in leaders:
+        if not sub.texts:
+            return
+        d, i = min((t.distance(ln.end), i) for i, t in enumerate(sub.texts))
+        if d <= LEADER_TOUCH:
+            sub.texts[i] = replace(sub.texts[i], centre=ln.start, anchor=ln.start,
+                                   half=(0.05, 0.05), rotation=0.0)
 
 
 #: a plan drawn on paper is smaller than an A0 sheet's long side with margin
