@@ -28,7 +28,7 @@ CLEAR_MM = 0.3
 #: the descender below the baseline of a text, in text heights (as the panels' boxes count it)
 DESCENDER = 0.3
 #: a label placed farther than this (mm) from its point is tied to it by a thin leader
-LEADER_FROM_MM = 5.0
+LEADER_FROM_MM = 2.4
 #: … or nearer another point of the plan than its own, when it is this far (mm) from it
 LEADER_MIN_MM = 1.6
 
@@ -173,14 +173,14 @@ class LabelPlacer:
     @staticmethod
     def _leader_line(anchor: tuple[float, float], r: tuple[float, float, float, float],
                      ambiguous: bool = False) -> Line | None:
-        """A thin line from near the point to the edge of the label's box when the label is
-        far from it or nearer another point (None otherwise)."""
+        """A thin line from the point to the edge of the label's box when the label is far from
+        it or nearer another point (None otherwise); ``mechplan check`` reads the label at the
+        leader's start."""
         nx, ny = min(max(anchor[0], r[0]), r[2]), min(max(anchor[1], r[1]), r[3])
         d = math.hypot(nx - anchor[0], ny - anchor[1])
         if d <= (LEADER_MIN_MM if ambiguous else LEADER_FROM_MM):
             return None
-        ux, uy = (nx - anchor[0]) / d, (ny - anchor[1]) / d
-        return Line((anchor[0] + 0.8 * ux, anchor[1] + 0.8 * uy), (nx, ny), Role.DIMENSION)
+        return Line(anchor, (nx, ny), Role.DIMENSION)
 
     def _leader_crosses(self, anchor: tuple[float, float],
                         r: tuple[float, float, float, float]) -> bool:
