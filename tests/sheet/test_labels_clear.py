@@ -102,3 +102,23 @@ def test_a_crowded_cluster_gets_its_labels_apart_with_leaders():
         nearest = all(d < _text_box(t).distance(Point(q)) for q in pts if q != p)
         tied = any(Point(ld.start).distance(Point(p)) < 1.0 for ld in placer.leaders)
         assert nearest or tied, t.string
+
+
+@pytest.mark.parametrize("stem", ["v_engine", "slider_crank"])
+def test_labels_with_leaders_are_read_at_their_points_by_the_checker(stem, tmp_path):
+    """A label moved away from a crowded point is tied to it by a leader (layer DIMENSION), and
+    `mechplan check` of the A4 sheets reads every label at its point: nothing wrong."""
+    from mechplan.check import Options, check
+    from mechplan.check.report import WRONG
+    from mechplan.render import write
+
+    leaders = 0
+    for sheet in compose(_solved(stem), size="A4").sheets:
+        leaders += sum(isinstance(p, Line) and p.role.layer == "DIMENSION"
+                       for p in sheet.primitives)
+        (dxf,) = write(sheet, tmp_path, ["dxf"])
+        report = check(ROOT / "templates" / f"{stem}.toml", dxf, Options())
+        wrong = [(p.name, s.start, s.end) for p in report.plans for s in p.segments
+                 if s.verdict == WRONG]
+        assert not wrong, (sheet.name, wrong)
+    assert leaders > 0
