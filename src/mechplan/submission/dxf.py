@@ -129,9 +129,14 @@ def _follow_leaders(sub: Submission) -> None:
         return
     sub.lines = [ln for ln in sub.lines if not _LEADER_LAYER.match(ln.layer)]
     for ln in leaders:
-        if not sub.texts:
-            return
-        d, i = min((t.distance(ln.end), i) for i, t in enumerate(sub.texts))
+        (x0, y0), (x1, y1) = ln.start, ln.end
+        along = (x1 - x0) ** 2 + (y1 - y0) ** 2
+        # the label lies beyond the leader's end, not beside it (a neighbour's label)
+        ahead = [(t.distance(ln.end), i) for i, t in enumerate(sub.texts)
+                 if (t.centre[0] - x0) * (x1 - x0) + (t.centre[1] - y0) * (y1 - y0) > along]
+        if not ahead:
+            continue
+        d, i = min(ahead)
         if d <= LEADER_TOUCH:
             sub.texts[i] = replace(sub.texts[i], centre=ln.start, anchor=ln.start,
                                    half=(0.05, 0.05), rotation=0.0)
