@@ -30,7 +30,7 @@ DESCENDER = 0.3
 #: a label placed farther than this (mm) from its point is tied to it by a thin leader
 LEADER_FROM_MM = 2.4
 #: … or nearer another point of the plan than its own, when it is this far (mm) from it
-LEADER_MIN_MM = 1.6
+LEADER_MIN_MM = 0.5
 
 
 def text_box(t: Text) -> tuple[float, float, float, float]:

@@ -137,7 +137,8 @@ def _follow_leaders(sub: Submission) -> None:
         if not ahead:
             continue
         d, i = min(ahead)
-        if d <= LEADER_TOUCH:
+        # the width a reader estimates for a text may be off by a part of it
+        if d <= LEADER_TOUCH + 0.5 * sub.texts[i].half[0]:
             sub.texts[i] = replace(sub.texts[i], centre=ln.start, anchor=ln.start,
                                    half=(0.05, 0.05), rotation=0.0)
 
