@@ -78,7 +78,7 @@ def test_scene_error_exits_2_with_one_message(tmp_path):
 
 def test_missing_file_exits_2(capsys):
     code, _, err = run(["solve", "/nonexistent/scene.toml"], capsys)
-    assert code == 2 and "cannot read the scene file" in err
+    assert code == 2 and "scene.toml: the scene file does not exist" in err
 
 
 @pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)

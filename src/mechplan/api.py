@@ -167,6 +167,9 @@ class Mechanism:
             if arr.ndim != 1 or arr.size == 0 or not np.isfinite(arr).all():
                 raise MechplanError(f"phi_deg must be finite crank angles in degrees "
                                     f"(got {phi_deg!r})")
+            from .limits import check_angles_deg
+
+            check_angles_deg(arr, "phi_deg")
             at = arr
         chosen = self._plans(plans)
         asked = self._outputs(points, links)
@@ -228,18 +231,18 @@ class Mechanism:
         prepared = self._fast.prepare(c, chosen, *asked)
         if prepared is None:
             return None
-        if at is not None:
-            phi = np.radians(at)
-        else:
-            from .solve import crank_positions
+        from .solve import crank_positions, position_count
 
-            phi = crank_positions(self.scene, c, int(positions) if positions else None)
-        if phi.shape[0] > 1000:
+        count = int(positions) if positions else None
+        n = len(at) if at is not None else position_count(self.scene, count)
+        if n > 1000:
             from .limits import ensure_within_budget
 
             # the fused path keeps only the asked results (a point 16 bytes a position, a scalar
-            # 8, each counted as a step); should it fall back, the numpy path checks its own need
-            ensure_within_budget(int(phi.shape[0]), len(prepared.keys), file=self.scene.path)
+            # 8, each counted as a step); should it fall back, the numpy path checks its own need.
+            # Checked before the angles are allocated.
+            ensure_within_budget(n, len(prepared.keys), file=self.scene.path)
+        phi = np.radians(at) if at is not None else crank_positions(self.scene, c, count)
         result = self._fast.evaluate(prepared, phi)
         if result is None:
             return None

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import errno
+import reprlib
 
 _OS_REASONS = {errno.EACCES: "permission denied", errno.EPERM: "permission denied",
                errno.EROFS: "the file system is read-only", errno.ENOSPC: "the disk is full",
@@ -16,20 +17,55 @@ def os_reason(exc: OSError) -> str:
     return _OS_REASONS.get(exc.errno or 0, exc.strerror or exc.__class__.__name__)
 
 
+#: characters of a message, of a key path and of a file name said in an error; the middle of a
+#: longer one is left out (a 5 MB title is never echoed whole)
+MAX_MESSAGE_CHARS = 2000
+MAX_KEY_CHARS = 200
+_REPR = reprlib.Repr()
+_REPR.maxstring = _REPR.maxother = 80
+_REPR.maxlist = _REPR.maxtuple = _REPR.maxdict = _REPR.maxset = 6
+_REPR.maxlevel = 3
+
+
+def shown(value: object) -> str:
+    """Return ``repr(value)`` short enough for a message: long texts and lists are elided, deep
+    ones cut (never builds the whole repr of a huge value)."""
+    try:
+        return _REPR.repr(value)
+    except ValueError:          # an int of more than 4300 digits has no repr
+        return "<a number of thousands of digits>"
+
+
+def elide(text: str, limit: int) -> str:
+    """Return ``text``, or its beginning and end around "…" when longer than ``limit``."""
+    if len(text) <= limit:
+        return text
+    keep = (limit - 30) // 2
+    return f"{text[:keep]}… ({len(text) - 2 * keep:,} characters left out) …{text[-keep:]}"
+
+
+def shown_key(key: str) -> str:
+    """Return a key path short enough for a message."""
+    return elide(key, MAX_KEY_CHARS)
+
+
 class MechplanError(Exception):
     """Base of every error a user can cause (bad scene, impossible geometry, unreadable file)."""
 
     def __init__(self, message: str, *, file: str | None = None, key: str | None = None) -> None:
+        if type(message) is str:        # a catalogue text (a str subclass) keeps its arguments
+            message = elide(message, MAX_MESSAGE_CHARS)
         self.file = file
         self.key = key
         self.detail = message
         where = []
         if file:
-            where.append(str(file))
+            where.append(elide(str(file), MAX_KEY_CHARS))
         if key:
-            where.append(f"key '{key}'")
+            where.append(f"key '{shown_key(key)}'")
         prefix = ": ".join(where)
-        super().__init__(f"{prefix}: {message}" if prefix else message)
+        said = elide(str(message), MAX_MESSAGE_CHARS)
+        super().__init__(f"{prefix}: {said}" if prefix else said)
 
 
 class SceneError(MechplanError):

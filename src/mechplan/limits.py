@@ -5,10 +5,13 @@ The budget is ``MECHPLAN_MEMORY_BUDGET`` (e.g. ``"4 GB"``, ``"512 MB"``, or byte
 
 from __future__ import annotations
 
+import math
 import os
 import re
 
-from .errors import MechplanError
+import numpy as np
+
+from .errors import MechplanError, shown
 
 DEFAULT_BUDGET = 2 * 1024**3
 #: bytes per step and position: a (N, 2) float64 value, its gap or sine, and evaluation temporaries
@@ -29,11 +32,11 @@ def memory_budget() -> int:
     m = re.fullmatch(r"(\d+(?:\.\d+)?)\s*([kKmMgGtT]?[bB]?)", text)
     if not m:
         raise LimitError(f"MECHPLAN_MEMORY_BUDGET must be a size such as '4 GB' (got {text!r})")
-    return int(float(m.group(1)) * _UNITS[m.group(2).lower()])
+    return int(min(float(m.group(1)) * _UNITS[m.group(2).lower()], 2.0**62))
 
 
 def _size(n: float) -> str:
-    for unit, factor in (("GB", 1024**3), ("MB", 1024**2), ("kB", 1024)):
+    for unit, factor in (("TB", 1024**4), ("GB", 1024**3), ("MB", 1024**2), ("kB", 1024)):
         if n >= factor:
             return f"{n / factor:.1f} {unit}"
     return f"{n:.0f} B"
@@ -48,8 +51,66 @@ def ensure_within_budget(positions: int, steps: int, *, file: str | None = None,
     estimate = positions * steps * BYTES_PER_STEP
     budget = memory_budget()
     if estimate > budget:
+        need = "more than 1024 TB" if estimate >= 1024**5 else f"about {_size(estimate)}"
         raise LimitError(
-            f"{positions} positions × {steps} construction steps need about {_size(estimate)} "
+            f"{shown(positions)} positions × {steps} construction steps need {need} "
             f"of memory, more than the budget of {_size(budget)}; ask for fewer positions "
             "(e.g. count = 3600) or raise MECHPLAN_MEMORY_BUDGET", file=file, key=key)
     return estimate
+
+
+# -- files a user gives mechplan (mechplan.userfiles) ---------------------------------------------
+# Each kind of file is read only when it is a regular file no larger than its limit: a scene of the
+# course is a few kB, a drawn A1 sheet a few MB; the limits leave a hundred times that.
+
+#: a scene file (TOML)
+SCENE_MAX_BYTES = 4 * 1024**2
+#: a variants file of a class (CSV or TOML): thousands of students with their keys
+VARIANTS_MAX_BYTES = 16 * 1024**2
+#: a data file a scene names (an engine's indicator table)
+DATA_MAX_BYTES = 16 * 1024**2
+#: a submitted table (CSV or TOML): a course project's answers are a few hundred rows
+TABLE_MAX_BYTES = 8 * 1024**2
+#: a submitted DXF sheet (ASCII or binary); 100 000 lines are about 18 MB of ASCII DXF
+DXF_MAX_BYTES = 128 * 1024**2
+
+# -- what a submission may hold -------------------------------------------------------------------
+#: rows of a submitted table (a whole course project has a few hundred values)
+TABLE_MAX_ROWS = 20_000
+#: tables and arrays nested in a submitted TOML table (an answer table nests three or four)
+TABLE_MAX_NESTING = 16
+#: characters of one cell of a CSV table (Python's csv default field limit)
+CSV_CELL_MAX_CHARS = 128 * 1024
+#: entities of a DXF sheet, counted as read with every block INSERT expanded; a full A1 sheet
+#: of the course draws a few thousand
+DXF_MAX_ENTITIES = 200_000
+#: blocks inserted inside blocks: deeper nesting (a block inserting itself) is refused
+DXF_MAX_INSERT_DEPTH = 8
+
+
+# -- limits on what a user may ask for (issue 38; docs/security.md lists every limit) ----------
+#: largest crank angle asked for by its value (degrees): past it the angle within a turn is
+#: uncertain (a float near 1e300 is spaced 1e284 apart)
+MAX_ANGLE_DEG = 1e6
+#: largest distance on paper an option may give (mm): the long side of an A0 sheet
+MAX_PAPER_MM = 1189.0
+
+
+def check_angle_deg(value: float, what: str = "a crank angle") -> float:
+    """Return ``value`` (degrees) if it is finite and within ±:data:`MAX_ANGLE_DEG`.
+
+    Raise :class:`LimitError` saying how far apart floats are at that size."""
+    if not math.isfinite(value) or abs(value) > MAX_ANGLE_DEG:
+        spacing = (f"; floats that large are {math.ulp(value):.2g}° apart, so the angle within "
+                   "a turn is lost" if math.isfinite(value) and math.ulp(value) > 1e-6 else "")
+        raise LimitError(f"{what} must be a finite number of degrees within ±{MAX_ANGLE_DEG:g} "
+                         f"(got {value:g}){spacing}")
+    return value
+
+
+def check_angles_deg(values: np.ndarray, what: str = "a crank angle") -> np.ndarray:
+    """Return ``values`` (degrees) if every one passes :func:`check_angle_deg`."""
+    bad = values[~(np.abs(values) <= MAX_ANGLE_DEG)]
+    if bad.size:
+        check_angle_deg(float(bad[0]), what)
+    return values

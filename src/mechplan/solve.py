@@ -19,7 +19,7 @@ from .construct.segments import SegmentKind
 from .construct.trust import Failure, Flag, failures, flags, refuse_unbounded
 from .construct.validity import MAX_CONDITION, ensure_valid
 from .errors import SceneError
-from .limits import ensure_within_budget
+from .limits import check_angles_deg, ensure_within_budget
 from .model.mechanism import GROUND
 from .model.plans import Plan
 from .model.structure import Structure, analyse
@@ -71,12 +71,24 @@ def build(
     return structure, c
 
 
+def position_count(scene: Scene, count: int | None = None) -> int:
+    """How many positions :func:`crank_positions` gives (known before allocating them)."""
+    pos = scene.positions
+    if pos.angles and count is None:
+        return len(pos.angles)
+    return count or pos.count or 12
+
+
 def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> np.ndarray:
-    """φ of the positions the scene asks for (rad), numbered in the sense of rotation."""
+    """φ of the positions the scene asks for (rad), numbered in the sense of rotation.
+
+    Refuse (:class:`~mechplan.limits.LimitError`) a count whose angles alone exceed the memory
+    budget, before allocating them; callers check the whole evaluation's need first."""
     pos = scene.positions
     if pos.angles and count is None:
         return np.asarray(pos.angles, dtype=float)
-    n = count or pos.count or 12
+    n = position_count(scene, count)
+    ensure_within_budget(n, 1, file=scene.path, key=None if count else "positions.count")
     start = pos.start_angle
     if pos.start_extreme is not None:
         ex = [e for e in extreme_positions(c, scene.mechanism, pos.start_extreme.subject)
@@ -140,14 +152,16 @@ def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
     plans = plans or scene.plans
     structure, c = built or build(scene, plans, loading)
     requested = at_deg is not None and len(at_deg) > 0
-    if requested:
-        phi = np.radians(np.asarray(at_deg, dtype=float))
-    else:
-        phi = crank_positions(scene, c, count)
     individually = requested or (count is None and bool(scene.positions.angles))
     targets = list(targets) if targets is not None else targets_for(scene, c, plans)
-    ensure_within_budget(int(phi.shape[0]), len(c.ancestors(targets)), file=scene.path,
+    # the budget is checked before the angles are allocated (--positions 100000000000)
+    n = len(at_deg) if requested and at_deg is not None else position_count(scene, count)
+    ensure_within_budget(n, len(c.ancestors(targets)), file=scene.path,
                          key=None if requested or count else "positions.count")
+    if requested:
+        phi = np.radians(check_angles_deg(np.asarray(at_deg, dtype=float)))
+    else:
+        phi = crank_positions(scene, c, count)
     ev = c.evaluate(phi)
     ev.evaluate_all(targets)
     estimate = estimate_errors(c, ev, targets)
@@ -244,4 +258,5 @@ def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, f
     return rows
 
 
-__all__ = ["SegmentKind", "Solution", "crank_positions", "segment_table", "solve", "to_json"]
+__all__ = ["SegmentKind", "Solution", "crank_positions", "position_count", "segment_table",
+           "solve", "to_json"]

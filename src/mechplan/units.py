@@ -9,7 +9,7 @@ from typing import Any
 
 import pint
 
-from .errors import SceneError
+from .errors import SceneError, shown
 
 #: dimension name → (pint dimensionality string, SI unit to convert to)
 DIMENSIONS: dict[str, tuple[str, str]] = {
@@ -78,6 +78,12 @@ def registry() -> pint.UnitRegistry:
 
 
 _DECIMAL_COMMA = re.compile(r"(?<=\d),(?=\d)")
+#: characters of a quantity's text ("0,1 (m/s^2)/mm" is 14): pint's parser is slow on long text
+MAX_QUANTITY_CHARS = 100
+#: what may follow "**": a plain exponent below 100 ("m/s^2", "m**-2", "(1/2)" is not one); pint
+#: computes "10^10^10" or "10^(99*99*99*99)" as integers, without end
+_EXPONENT = re.compile(r"\s*(?:\(\s*[-+]?\s*\d{1,2}(?:\.\d+)?\s*\)|[-+]?\s*\d{1,2}(?:\.\d+)?)"
+                       r"(?![\d.]|\s*\*\*)")
 _TWO_MARKS = re.compile(r"\d[.,]\d*[.,]\d")
 
 
@@ -93,28 +99,50 @@ def parse_quantity(text: object, dimension: str, *, file: str | None = None,
     Plain numbers are accepted only for ``dimensionless``; a decimal comma ("0,1") is accepted.
     Angles come back in radians, angular speeds in rad/s, scale factors per millimetre of paper.
     """
-    _dim, si_unit = DIMENSIONS[dimension]
     example = _EXAMPLES[dimension]
     if isinstance(text, bool):
         raise SceneError(f"expected {_noun(dimension)} such as {example} (got {text!r})",
                          file=file, key=key)
     if isinstance(text, (int, float)):
         if dimension == "dimensionless" or dimension.startswith("mu_"):
-            return float(text)
+            try:
+                return float(text)
+            except OverflowError:
+                raise SceneError(f"{shown(text)} is too large a number", file=file,
+                                 key=key) from None
         raise SceneError(
             f"{_noun(dimension)} needs a unit, such as {example} (got {text!r})",
             file=file, key=key)
     if not isinstance(text, str) or not text.strip():
         raise SceneError(f"expected {_noun(dimension)} such as {example} (got {text!r})",
                          file=file, key=key)
+    if len(text) > MAX_QUANTITY_CHARS:
+        raise SceneError(f"cannot read {shown(text)} as {_noun(dimension)}: it is {len(text):,} "
+                         f"characters long, more than {MAX_QUANTITY_CHARS}; write it like "
+                         f"{example}", file=file, key=key)
     if _TWO_MARKS.search(text):
         raise SceneError(f"cannot read {text!r} as {_noun(dimension)}: a number has at most one "
                          f"decimal mark; write it like {example}", file=file, key=key)
     cleaned = _DECIMAL_COMMA.sub(".", text.strip()).replace("·", "*").replace("²", "^2")
     cleaned = cleaned.replace("°", " deg").replace("^", "**")
+    if any(not _EXPONENT.match(cleaned, m.end()) for m in re.finditer(r"\*\*", cleaned)):
+        raise SceneError(f"cannot read {shown(text)} as {_noun(dimension)}: only plain "
+                         f"exponents below 100 are read (m/s^2); write it like {example}",
+                         file=file, key=key)
+    try:
+        return _convert(cleaned, text, dimension, file, key)
+    except OverflowError:       # "1e200 km^2": beyond a float while converting
+        raise SceneError(f"{shown(text)} is too large a number", file=file, key=key) from None
+
+
+def _convert(cleaned: str, text: str, dimension: str, file: str | None, key: str | None) -> float:
+    _dim, si_unit = DIMENSIONS[dimension]
+    example = _EXAMPLES[dimension]
     ureg = registry()
     try:
         q: Any = ureg.Quantity(cleaned)
+    except OverflowError:
+        raise
     except Exception as exc:  # noqa: BLE001 - pint raises many unrelated types for bad text
         raise SceneError(f"cannot read {text!r} as {_noun(dimension)}; write it like "
                          f"{example} ({exc.__class__.__name__})", file=file, key=key) from None

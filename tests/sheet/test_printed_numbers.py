@@ -3,6 +3,7 @@ Russian or Vietnamese sheet or report writes every decimal with a comma and no e
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import re
 
@@ -44,8 +45,13 @@ def _value(text: str, language: str) -> float:
 @pytest.mark.parametrize("language", ["en", "ru"])
 @pytest.mark.parametrize("size", ["A3", "A4"])
 def test_every_plan_scale_factor_printed_is_the_one_drawn(size, language):
-    """slider_crank on A3 printed "μF = 1 N/mm" while drawn at 1000 N/mm (issue 28, item 1)."""
-    comp = compose(solved("slider_crank"), size, lang=language)
+    """slider_crank on A3 printed "μF = 1 N/mm" while drawn at 1000 N/mm (issue 28, item 1).
+    The scale-factor rule no longer picks 1000 there (issue 28, item 5): the scene fixes
+    μF = 2500 N/mm, kept on every sheet it fits ("μF = 25" before)."""
+    scene = load_scene(ROOT / "templates" / "slider_crank.toml")
+    scene = dataclasses.replace(scene, drawing=dataclasses.replace(
+        scene.drawing, scales={**scene.drawing.scales, "mu_F": 2500.0}))
+    comp = compose(solve(scene), size, lang=language)
     texts = strings(comp.sheets)
     for plan, symbol in SYMBOL.items():
         printed = {_value(m, language) for t in texts
@@ -55,7 +61,7 @@ def test_every_plan_scale_factor_printed_is_the_one_drawn(size, language):
         assert comp.scales[plan] in printed, (plan, printed, comp.scales[plan])
         if plan is not Plan.FORCE:
             assert printed == {comp.scales[plan]}
-    assert comp.scales[Plan.FORCE] >= 1000            # the case that printed wrong
+    assert comp.scales[Plan.FORCE] == 2500            # the case that printed wrong
 
 
 _E_NOTATION = re.compile(r"\d[eE][-+]?\d")

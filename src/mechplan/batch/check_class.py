@@ -49,7 +49,9 @@ def students(scene: Path, folder: Path) -> list[Student]:
     scenes = sorted(scene.glob("*.toml")) if scene.is_dir() else [scene]
     if not scenes:
         raise CheckError(T("error.no_variants"), file=str(scene))
-    subs = sorted(p for p in folder.iterdir() if p.is_file() and p.suffix.lower() in SUFFIXES
+    # a symlink is listed (it fails, unread: it may point at any file of the machine)
+    subs = sorted(p for p in folder.iterdir() if (p.is_symlink() or p.is_file())
+                  and p.suffix.lower() in SUFFIXES
                   and p.resolve() not in {s.resolve() for s in scenes})
     if not subs:
         raise CheckError(T("error.no_submissions"), file=str(folder))
@@ -60,6 +62,9 @@ def _one(i: int, st: Student, options: Options, lang: str,
          out: Path) -> tuple[int, dict[str, Any]]:
     row: dict[str, Any] = {"student": st.name, "submission": st.submission.name,
                            "scene": st.scene.name if st.scene else ""}
+    if st.submission.is_symlink():
+        row["error"] = T("class.symlink", name=st.submission.name).tr(lang)
+        return i, row
     if st.scene is None:
         row["error"] = T("class.no_variant", name=st.submission.name).tr(lang)
         return i, row

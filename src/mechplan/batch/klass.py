@@ -133,7 +133,8 @@ def _solve_and_write(job: ClassJob, variant: Variant, scene: str, scene_file: st
     from ..studies import solve_text
     from .answer import answer_key, answer_pdf, headline
 
-    study = solve_text(scene, scene_file)
+    # the variant's scene is written in its folder; the data files it names stay the template's
+    study = solve_text(scene, scene_file, data_dir=Path(job.template_file).parent)
     solution = getattr(study, "solution", None)
     failures = getattr(solution, "failures", ())
     if failures and solution is not None:   # an assignment must be buildable at every position

@@ -20,6 +20,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..scene.document import parse_toml, read_text
+from ..userfiles import VARIANTS
 from .budget import check_rule, check_students
 from .keys import check_value, quantity_text, split_key, split_quantity
 from .texts import say
@@ -122,7 +123,7 @@ def _rule(key: str, spec: Any, file: str) -> Rule:
 def read_variants(path: str | Path) -> list[Variant]:
     """Read a class table: ``.csv`` (id, name, key columns) or ``.toml`` (students and rules)."""
     path = Path(path)
-    text = read_text(path)
+    text = read_text(path, VARIANTS)
     file = str(path)
     if path.suffix.lower() == ".csv":
         return _from_csv(text, file)
@@ -142,13 +143,19 @@ def _from_csv(text: str, file: str) -> list[Variant]:
     for key in keys:
         split_key(key)
     out: list[Variant] = []
-    for n, row in enumerate(reader, start=2):
-        check_students(n - 1, file=file)
-        sid = _check_id((row.get("id") or "").strip(), file, f"line {n}")
-        values = {k: _cell(row[k]) for k in keys if row.get(k) not in (None, "")}
-        for key, value in values.items():
-            check_value(key, value, file)
-        out.append(Variant(sid, (row.get("name") or "").strip(), values))
+    try:
+        for n, row in enumerate(reader, start=1):
+            check_students(n, file=file)
+            # a quoted cell may hold a newline: name the line the row ends on
+            where = f"line {reader.reader.line_num}, column id"
+            sid = _check_id((row.get("id") or "").strip(), file, where)
+            values = {k: _cell(row[k]) for k in keys if row.get(k) not in (None, "")}
+            for key, value in values.items():
+                check_value(key, value, file)
+            out.append(Variant(sid, (row.get("name") or "").strip(), values))
+    except csv.Error as exc:    # a cell over the csv module's 128 KB limit, a stray quote
+        raise SceneError(f"not a readable CSV table ({exc})", file=file,
+                         key=f"line {reader.reader.line_num}") from None
     return _unique(out, file)
 
 
@@ -167,9 +174,16 @@ def _from_toml(text: str, file: str) -> list[Variant]:
     if unknown:
         raise SceneError(f"a variants file's keys must be students, rules, count or prefix (got "
                          f"{', '.join(sorted(unknown))})", file=file)
-    rules = [_rule(k, v, file) for k, v in doc.get("rules", {}).items()]
+    rule_table, rows = doc.get("rules", {}), doc.get("students", [])
+    if not isinstance(rule_table, dict):
+        raise SceneError(f"rules must be a table of key paths (got {type(rule_table).__name__})",
+                         file=file, key="rules")
+    if not isinstance(rows, list):
+        raise SceneError(f"students must be an array of tables [[students]] (got "
+                         f"{type(rows).__name__})", file=file, key="students")
+    rules = [_rule(k, v, file) for k, v in rule_table.items()]
     students: list[tuple[str, str, dict[str, Any]]] = []
-    for i, st in enumerate(doc.get("students", [])):
+    for i, st in enumerate(rows):
         where = f"students[{i}]"
         if not isinstance(st, dict) or "id" not in st:
             raise SceneError("every student needs an id", file=file, key=where)
@@ -179,7 +193,8 @@ def _from_toml(text: str, file: str) -> list[Variant]:
                              file=file, key=f"{where}.values")
         for key, value in values.items():
             check_value(key, value, file)
-        students.append((_check_id(str(st["id"]), file, where), str(st.get("name", "")), values))
+        students.append((_check_id(str(st["id"]), file, f"{where}.id"), str(st.get("name", "")),
+                         values))
     if "count" in doc:
         count = doc["count"]
         check_students(count, file=file, key="count")

@@ -202,7 +202,8 @@ def _grade(rows: list[_Row], keys: Keys, written: dict[tuple[str, float | None],
     wrong = [r for r in checked if id(r) in off]
     swapped: set[int] = set()
     for a, b in swaps(wrong, lambda a, b: a.item.phi_deg == b.item.phi_deg and
-                      a.spec.dimension == b.spec.dimension and abs(a.value - ex[id(b)]) <= b.tol):
+                      a.spec.dimension == b.spec.dimension and abs(a.value - ex[id(b)]) <= b.tol,
+                      group=lambda r: (r.item.phi_deg, r.spec.dimension)):
         swapped |= {id(a), id(b)}
         hint = T("answers.hint.swapped", a=a.row.name, b=b.row.name)
         for r in (a, b):

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -99,16 +99,31 @@ class Drawn:
     swapped: dict[str, str] = field(default_factory=dict)
 
 
-def swaps(items: list[Any], fits: Callable[[Any, Any], bool]) -> list[tuple[Any, Any]]:
+def swaps(items: list[Any], fits: Callable[[Any, Any], bool],
+          group: Callable[[Any], Hashable] | None = None) -> list[tuple[Any, Any]]:
     """Pairs of items, in order, each right under the other's name (``fits(a, b)``: a is right as
-    b); an item is in one pair at most."""
-    out: list[tuple[Any, Any]] = []
+    b); an item is in one pair at most. ``group(item)``: items of different groups never fit,
+    so only pairs within a group are tried (a table of 10^4 values is not tried pair by pair)."""
+    if group is not None:
+        groups: dict[Hashable, list[int]] = {}
+        for i, item in enumerate(items):
+            groups.setdefault(group(item), []).append(i)
+        found = [(idx[a], idx[b]) for idx in groups.values()
+                 for a, b in _pairs([items[i] for i in idx], fits)]
+        return [(items[i], items[j]) for i, j in sorted(found)]
+    return [(items[i], items[j]) for i, j in _pairs(items, fits)]
+
+
+def _pairs(items: list[Any], fits: Callable[[Any, Any], bool]) -> list[tuple[int, int]]:
+    """The pairs of :func:`swaps` as indices, each item paired with the first later one that
+    fits both ways."""
+    out: list[tuple[int, int]] = []
     used: set[int] = set()
     for i, a in enumerate(items):
         for j in range(i + 1, len(items)):
             if not {i, j} & used and fits(a, items[j]) and fits(items[j], a):
                 used |= {i, j}
-                out.append((a, items[j]))
+                out.append((i, j))
     return out
 
 

@@ -9,7 +9,7 @@ from typing import Any
 
 from .. import __version__, i18n
 from ..construct.scale import SCALE_KEYS
-from ..i18n import num, pad
+from ..i18n import Text, num, pad
 from ..submission.read import Note
 from .texts import T, capitalize, join, tr, word
 
@@ -187,9 +187,21 @@ class CheckReport:
         return out
 
     @property
+    def nothing_found(self) -> bool:
+        """True when nothing on the submission could be checked against the exact construction
+        (a reference segment only fixes the scale factor): such a submission does not pass."""
+        return not any(r.verdict in (OK, WRONG, SLIP) for r in self.rows)
+
+    @property
     def passed(self) -> bool:
-        """True when nothing checked is wrong."""
-        return not any(r.verdict in (WRONG, SLIP) for r in self.rows)
+        """True when something was checked and nothing checked is wrong."""
+        return not self.nothing_found and not any(r.verdict in (WRONG, SLIP) for r in self.rows)
+
+    def verdict(self) -> Text:
+        """PASSED, FAILED, or FAILED because nothing gradeable was found."""
+        if self.nothing_found:
+            return Text("readers.report.nothing_found")
+        return T("report.passed" if self.passed else "report.failed")
 
     # -- output ------------------------------------------------------------------------------
     def to_json(self, lang: str = "en") -> dict[str, Any]:
@@ -225,7 +237,7 @@ class CheckReport:
             "values": [asdict(v) | verdict_words(v) for v in self.values], "findings": findings,
             "notes": [asdict(n) | {"level_text": word("level", n.level, lang)} for n in self.notes],
             "lang": lang,
-            "result_text": T("report.passed" if self.passed else "report.failed").tr(lang),
+            "nothing_found": self.nothing_found, "result_text": self.verdict().tr(lang),
         }, lang)
 
     def text(self, lang: str = "en") -> str:
@@ -244,8 +256,7 @@ class CheckReport:
             out.append(say("report.label_distance", d=self.label_distance_mm))
         # the summary's counts fill the sentence's fields; counts it does not name are left out
         out.append(say("report.result",
-                       verdict=T("report.passed" if self.passed else "report.failed"),
-                       **self.summary()))
+                       verdict=self.verdict(), **self.summary()))
         for p in self.plans:
             out.append("")
             mu = T("report.mu", mu=p.mu, unit=p.mu_unit) if p.mu else T("report.mu_unknown")

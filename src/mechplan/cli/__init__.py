@@ -11,29 +11,46 @@ from pathlib import Path
 
 from .. import __version__
 from ..drafting.fields import SHEETS, STANDARDS
-from ..errors import MechplanError
+from ..errors import MechplanError, shown
 from ..i18n import LANGUAGES
 
 #: exit code of a run that completed but flagged results or left positions out (see README)
 FLAGGED = 3
 
 
-
 def _positive_int(text: str) -> int:
     try:
         value = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})") from None
+        raise argparse.ArgumentTypeError(
+            f"must be a whole number ≥ 1 (got {shown(text)})") from None
     if value < 1:
-        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {text!r})")
+        raise argparse.ArgumentTypeError(f"must be a whole number ≥ 1 (got {shown(text)})")
     return value
+
+
+_DATA_DIR_HELP = ("folder of the data files a scene names (an indicator table), which must lie "
+                  "inside it; default: the scene's folder")
+
+
+def angle_deg(text: str) -> float:
+    """An ``--at`` angle: a finite number of degrees within the limit (argparse type)."""
+    from ..limits import LimitError, check_angle_deg
+
+    try:
+        return check_angle_deg(float(text))
+    except ValueError:
+        raise argparse.ArgumentTypeError(
+            f"must be a number of degrees (got {shown(text)})") from None
+    except LimitError as exc:
+        raise argparse.ArgumentTypeError(exc.detail) from None
 
 
 def _solve(args: argparse.Namespace) -> int:
     from ..studies import solve_file
     from ..studies.mechanism import MechanismStudy
 
-    study = solve_file(args.scene, at_deg=args.at, count=args.positions)
+    study = solve_file(args.scene, at_deg=args.at, count=args.positions, data_dir=args.data_dir)
     if isinstance(study, MechanismStudy) and (args.sheet or args.standard):
         # the scale factors (μ, segment lengths) of the sheet `mechplan draw --sheet` draws
         from ..solve import choose_scales
@@ -41,6 +58,7 @@ def _solve(args: argparse.Namespace) -> int:
         sol = study.solution
         sol.scales = choose_scales(sol.scene, sol.construction, sol.ev, sol.plans, args.sheet,
                                    args.standard)
+        sol.extras["sheet"] = (args.sheet, args.standard)
     if args.json:
         print(json.dumps(study.to_json(), ensure_ascii=False, indent=1))
     else:
@@ -51,9 +69,12 @@ def _solve(args: argparse.Namespace) -> int:
             raise MechplanError(f"--csv writes the per-angle table of an engine scene; "
                                 f"{args.scene} has none")
         write_csv(args.csv)
-    warnings = study.warnings(args.lang) if isinstance(study, MechanismStudy) else []
+    warnings = study.warnings(args.lang) if hasattr(study, "warnings") else []
     for line in warnings:
         print(line, file=sys.stderr)
+    if isinstance(study, MechanismStudy):        # scale factors not as the scene asks
+        for line in study.scale_notes(args.lang):
+            print(f"mechplan: warning: {line}", file=sys.stderr)
     if args.stats and isinstance(study, MechanismStudy):
         sol = study.solution
         print(f"steps: {len(sol.construction.steps)} in the construction, "
@@ -83,12 +104,15 @@ def _draw(args: argparse.Namespace) -> int:
         if progress:
             print(f"mechplan: [{i}/{len(args.scenes)}] {path}", file=sys.stderr, flush=True)
         try:
-            study = solve_file(path)
+            study = solve_file(path, data_dir=args.data_dir)
             for sheet in study.sheets(args.sheet, args.standard, args.lang, Path(path).stem):
                 for written in write(sheet, out, formats):
                     print(written)
             for line in getattr(study, "warnings", lambda _lang: [])(args.lang):
                 print(line, file=sys.stderr)          # positions left out, poor estimates
+            scale_notes = getattr(study, "scale_notes", None)   # μ not as the scene asks
+            for line in scale_notes(args.lang, args.sheet, args.standard) if scale_notes else ():
+                print(f"mechplan: warning: {line}", file=sys.stderr)
             extra = getattr(study, "write_files", None)     # e.g. a cam's profile DXF
             if extra is not None and "dxf" in formats:
                 for written in extra(out, Path(path).stem):
@@ -162,7 +186,7 @@ def parser() -> argparse.ArgumentParser:
     s = sub.add_parser("solve", help="structure, plans, construction protocol and results")
     s.add_argument("scene")
     where = s.add_mutually_exclusive_group()
-    where.add_argument("--at", type=float, nargs="+", metavar="DEG",
+    where.add_argument("--at", type=angle_deg, nargs="+", metavar="DEG",
                        help="crank angles φ in degrees")
     where.add_argument("--positions", type=_positive_int, metavar="N",
                        help="N ≥ 1 equal steps from the scene's start")
@@ -175,6 +199,7 @@ def parser() -> argparse.ArgumentParser:
                    help="scale factors of this sheet size (as `draw --sheet`)")
     s.add_argument("--standard", choices=STANDARDS,
                    help="scale factors of this standard's sheet (as `draw --standard`)")
+    s.add_argument("--data-dir", metavar="DIR", help=_DATA_DIR_HELP)
     s.set_defaults(func=_solve)
     d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG",
                        description="Draw the sheets of one or more scenes. A scene that fails is "
@@ -186,6 +211,7 @@ def parser() -> argparse.ArgumentParser:
     d.add_argument("--sheet", choices=SHEETS)
     d.add_argument("--lang", choices=LANGUAGES)
     d.add_argument("--standard", choices=STANDARDS)
+    d.add_argument("--data-dir", metavar="DIR", help=_DATA_DIR_HELP)
     d.add_argument("--system-fonts", action="store_true",
                    help="measure and embed the system's fonts (e.g. a full CJK font) instead of "
                    "the bundled ones; the sheet then depends on the machine")

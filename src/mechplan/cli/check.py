@@ -12,13 +12,19 @@ from typing import Any
 from .. import i18n
 from ..check.report import Tolerance
 from ..check.texts import LANGUAGES, T
-from ..errors import CheckError, SceneError
+from ..errors import CheckError, SceneError, elide
+from ..limits import MAX_PAPER_MM
 from ..model.plans import Plan
 from ..units import example
+from . import angle_deg
 
 #: a plan by its name or the letter of its scale factor ("velocity", "v")
 PLAN_NAMES = {name: p for p in Plan for name in (p.value, p.scale_key[3:].lower())}
 TEXT_SUFFIXES = (".txt", ".md", ".log", ".text")
+#: largest tolerance per unit: a sheet's length, everything, a turn
+TOLERANCE_MAX = {"mm": MAX_PAPER_MM, "%": 100.0, "deg": 360.0}
+#: most processes ``--jobs`` may ask for (joblib refuses more than a million with a traceback)
+MAX_JOBS = 1024
 
 
 def add_parser(subparsers: Any) -> None:
@@ -32,7 +38,7 @@ def add_parser(subparsers: Any) -> None:
     p.add_argument("submission", help="a .dxf drawing, or a .toml / .csv table; or a folder of "
                    "them (a class: then SCENE may be a folder of variants, a submission is "
                    "matched to the variant named in its file name, -o is the output folder)")
-    p.add_argument("--at", type=float, metavar="DEG",
+    p.add_argument("--at", type=angle_deg, metavar="DEG",
                    help="crank angle φ of the submission in degrees (default: written on the "
                    "submission, the scene's only position, or the best fit of its positions)")
     p.add_argument("--tolerance", action="append", default=[], metavar="[PLAN=]SPEC",
@@ -81,7 +87,12 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
             pm = re.fullmatch(r"(\d+(?:[.,]\d+)?)\s*(mm|%|deg|°)", part.lower())
             if not pm:
                 raise CheckError(T("error.tolerance_part", spec=spec, part=part))
-            given[pm.group(2).replace("°", "deg")] = float(pm.group(1).replace(",", "."))
+            unit, value = pm.group(2).replace("°", "deg"), float(pm.group(1).replace(",", "."))
+            high = TOLERANCE_MAX[unit]
+            if not value <= high:       # a tolerance of 10^400 mm would pass anything
+                raise CheckError(T("error.option_range", option=f"--tolerance {elide(spec, 60)}",
+                                   low="0", high=f"{high:g} {unit}", value=elide(part, 60)))
+            given[unit] = value
         out[plan] = Tolerance(given["mm"], given["%"], given["deg"])
     return out
 
@@ -129,8 +140,15 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
             raise CheckError(T("error.output_kind", path=str(o)))
     if args.label_distance is not None and not args.label_distance > 0:
         raise CheckError(T("error.positive", option="--label-distance", value=args.label_distance))
+    if not (args.jobs == -1 or 1 <= args.jobs <= MAX_JOBS):
+        raise CheckError(T("error.option_range", option="--jobs", low="1", high=str(MAX_JOBS),
+                           value=str(args.jobs)))
     if not args.snap >= 0:
         raise CheckError(T("error.not_negative", option="--snap", value=args.snap))
+    for option, value in (("--label-distance", args.label_distance), ("--snap", args.snap)):
+        if value is not None and not value <= MAX_PAPER_MM:     # also inf (nan fails above)
+            raise CheckError(T("error.option_range", option=option, low="0", value=str(value),
+                               high=f"{MAX_PAPER_MM:g} mm"))
     options = Options(at_deg=args.at, tolerance=parse_tolerances(args.tolerance),
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
     if Path(args.submission).is_dir():

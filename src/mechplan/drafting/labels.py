@@ -21,6 +21,9 @@ _DIRECTIONS = (45, 135, 315, 225, 0, 90, 180, 270, 22, 158, 338, 202, 68, 112, 2
 GAPS_MM = (1.2, 2.5, 4.0, 5.5, 7.5, 10.0, 13.0, 17.0)
 #: a label's box must be this much (mm) nearer its own point than any other point of the plan
 OWN_MARGIN_MM = 0.8
+#: how much nearer (mm) an unmarked line end must be than a marked point for a reader to take
+#: it instead (it prefers marked points; mechplan.submission.sketch gives them 1.4 mm at least)
+WEAK_MARGIN_MM = 1.2
 #: the cost of a spot where a reader could give the label to another point
 AMBIGUOUS_COST = 50.0
 #: clearance (mm) kept around a label's box from other labels, line ends and points
@@ -49,9 +52,12 @@ class LabelPlacer:
     other."""
 
     def __init__(self, obstacles: Sequence[Primitive], height_mm: float,
-                 points_mm: Sequence[tuple[float, float]] = ()) -> None:
+                 points_mm: Sequence[tuple[float, float]] = (),
+                 weak_mm: Sequence[tuple[float, float]] = ()) -> None:
         """``obstacles``: lines to avoid crossing (their ends never overprinted) and texts already
-        drawn; ``points_mm``: the points of the plan (markers) a reader attaches labels to."""
+        drawn; ``points_mm``: the points of the plan (markers) a reader attaches labels to;
+        ``weak_mm``: unmarked line ends a reader takes over a marked point only when nearer by
+        more than :data:`WEAK_MARGIN_MM` (the other positions of a position plan)."""
         geoms = []
         ends: list[tuple[float, float]] = []
         self.boxes: list[tuple[float, float, float, float]] = []
@@ -74,6 +80,8 @@ class LabelPlacer:
         self.ends = np.asarray(ends, dtype=float).reshape(-1, 2)
         #: thin leaders (layer DIMENSION) from far labels to their points; the caller draws them
         self.leaders: list[Line] = []
+        self.weak_xy = np.asarray(weak_mm, dtype=float).reshape(-1, 2)
+        self.weak = points(self.weak_xy)
 
     @property
     def placed(self) -> list:
@@ -109,20 +117,23 @@ class LabelPlacer:
 
     def _ambiguity(self, rect, anchor: tuple[float, float]) -> float:
         """How much nearer (mm) the box is to another point or line end than to its own point,
-        plus the margin (a reader, and ``mechplan check``, gives a label to the nearest end)."""
-        others = np.vstack([self.xy, self.ends])
-        if not len(others):
-            return 0.0
-        others = others[np.hypot(*(others - anchor).T) >= 0.3]
-        if not len(others):
-            return 0.0
+        plus the margin (a reader, and ``mechplan check``, gives a label to the nearest end);
+        a weak point counts only when nearer by more than :data:`WEAK_MARGIN_MM`."""
         x0, y0, x1, y1 = rect.bounds
-        dx = np.maximum(np.maximum(x0 - others[:, 0], others[:, 0] - x1), 0.0)
-        dy = np.maximum(np.maximum(y0 - others[:, 1], others[:, 1] - y1), 0.0)
-        ax = max(x0 - anchor[0], anchor[0] - x1, 0.0)
-        ay = max(y0 - anchor[1], anchor[1] - y1, 0.0)
-        own = math.hypot(ax, ay)
-        return max(0.0, own + OWN_MARGIN_MM - float(np.hypot(dx, dy).min()))
+
+        def nearest(pts: np.ndarray) -> float:
+            pts = pts[np.hypot(*(pts - anchor).T) >= 0.3] if len(pts) else pts
+            if not len(pts):
+                return math.inf
+            dx = np.maximum(np.maximum(x0 - pts[:, 0], pts[:, 0] - x1), 0.0)
+            dy = np.maximum(np.maximum(y0 - pts[:, 1], pts[:, 1] - y1), 0.0)
+            return float(np.hypot(dx, dy).min())
+
+        own = math.hypot(max(x0 - anchor[0], anchor[0] - x1, 0.0),
+                         max(y0 - anchor[1], anchor[1] - y1, 0.0))
+        strong = own + OWN_MARGIN_MM - nearest(np.vstack([self.xy, self.ends]))
+        weak = own + OWN_MARGIN_MM - WEAK_MARGIN_MM - nearest(self.weak_xy)
+        return max(0.0, strong, weak)
 
     def place(self, anchor: tuple[float, float], text: str, height_mm: float | None = None,
               toward_deg: float | None = None) -> Text:

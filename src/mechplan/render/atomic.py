@@ -31,16 +31,22 @@ def atomic_open(path: str | os.PathLike[str]) -> Iterator[BinaryIO]:
         raise DrawingError(f"cannot write in {str(directory)!r} ({os_reason(exc)})",
                            file=str(path)) from None
     try:
-        with os.fdopen(fd, "wb") as fh:
-            try:
-                yield fh
-                fh.flush()
-                os.fsync(fh.fileno())
-            except OSError as exc:
-                if exc.errno is None:        # not from the operating system
-                    raise
-                raise DrawingError(f"cannot write the file ({os_reason(exc)})",
-                                   file=str(path)) from None
+        fh = os.fdopen(fd, "wb")
+        try:
+            yield fh
+            fh.flush()
+            os.fsync(fh.fileno())
+            fh.close()
+        except OSError as exc:
+            if exc.errno is None:        # not from the operating system
+                raise
+            raise DrawingError(f"cannot write the file ({os_reason(exc)})",
+                               file=str(path)) from None
+        finally:
+            # after a failed flush the data is still in the buffer: closing flushes it again and
+            # would replace the error above with a raw OSError (the descriptor is closed anyway)
+            with contextlib.suppress(OSError):
+                fh.close()
         if target.exists():
             # keep the permissions of the file being replaced
             with contextlib.suppress(OSError):

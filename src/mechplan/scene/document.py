@@ -7,19 +7,17 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import SceneError
+from ..userfiles import SCENE, FileKind
+from ..userfiles import read_text as read_user_text
+from . import toml
 
 SCENE_KINDS: tuple[str, ...] = ("mechanism", "cam", "gears", "engine")
 
 
-def read_text(path: str | Path) -> str:
-    """Read a scene file as UTF-8 text; a user error names the file."""
-    path = Path(path)
-    try:
-        return path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SceneError(f"cannot read the scene file ({exc.strerror})", file=str(path)) from None
-    except UnicodeDecodeError:
-        raise SceneError("the scene file is not UTF-8 text", file=str(path)) from None
+def read_text(path: str | Path, kind: FileKind = SCENE) -> str:
+    """Read a scene (or a variants file: ``kind``) as UTF-8 text: a regular file under its size
+    limit (:mod:`mechplan.userfiles`); a user error names the file, never its content."""
+    return read_user_text(path, kind, error=SceneError)
 
 
 def study_kind(path: str | Path) -> tuple[str, dict[str, Any]] | None:
@@ -33,11 +31,14 @@ def study_kind(path: str | Path) -> tuple[str, dict[str, Any]] | None:
 
 
 def parse_toml(text: str, file: str) -> dict[str, Any]:
-    """Parse TOML text; a syntax error names the file."""
+    """Parse TOML text within the limits of :mod:`.toml`; a syntax error names the file, a
+    value beyond a limit its key."""
     try:
-        return tomllib.loads(text)
+        return toml.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(f"not valid TOML: {exc}", file=file) from None
+    except toml.TomlLimitError as exc:
+        raise SceneError(str(exc), file=file, key=exc.key) from None
 
 
 def scene_kind(data: dict[str, Any], file: str) -> str:

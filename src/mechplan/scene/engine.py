@@ -8,6 +8,7 @@ computes the articulated cylinder.
 from __future__ import annotations
 
 import csv
+import io
 import math
 from dataclasses import dataclass
 from pathlib import Path
@@ -45,8 +46,10 @@ class EngineScene:
     linkage: Scene | None = None
 
 
-def parse_engine_scene(text: str, file: str = "<scene>") -> EngineScene:
-    """Parse the text of an engine scene."""
+def parse_engine_scene(text: str, file: str = "<scene>", *,
+                       data_dir: str | Path | None = None) -> EngineScene:
+    """Parse the text of an engine scene; a data file it names (``[indicator] file``) is read
+    inside the scene's folder, or inside ``data_dir`` when given."""
     from .loader import _drawing
 
     top = Table(parse_toml(text, file), "", file)
@@ -108,7 +111,8 @@ def parse_engine_scene(text: str, file: str = "<scene>") -> EngineScene:
     if abs(math.radians(cycle) / step - round(math.radians(cycle) / step)) > 1e-6:
         raise e.error("table_step", f"must divide the cycle of {cycle:g}° (got "
                       f"{math.degrees(step):g}°)")
-    ind = _indicator(top.table("indicator", required=True), strokes, file)  # type: ignore[arg-type]
+    ind = _indicator(top.table("indicator", required=True), strokes,  # type: ignore[arg-type]
+                     file, data_dir)
     out = top.table("output")
     csv_path = None
     if out is not None:
@@ -230,8 +234,10 @@ def _check_firing(e: Table, cylinders: tuple[CylinderSpec, ...], order: tuple[in
 
 
 def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str],
-          file: str) -> list[tuple[float, float]]:
+          file: str, data_dir: str | Path | None = None) -> list[tuple[float, float]]:
     ureg = registry()
+
+    from_file = t.has("file")
 
     def conv(value: object, unit: str, target: str, where: str) -> float:
         q: Any
@@ -243,18 +249,13 @@ def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str],
                 q = float(value) * ureg(unit)  # type: ignore[arg-type]
             return float(q.to(target).magnitude)
         except Exception:  # noqa: BLE001 - pint raises many kinds
-            raise t.error(where, f"expected a number in {unit} (got {value!r})") from None
+            # a data file's content is never echoed: it may be any file the scene names
+            got = "" if from_file else f" (got {value!r})"
+            raise t.error(where, f"expected a number in {unit}{got}") from None
 
     targets = tuple("m**3" if d == "volume" else ("rad" if d == "angle" else "Pa") for d in dims)
-    if t.has("file"):
-        name = t.string("file")
-        assert name is not None
-        path = Path(file).parent / name
-        try:
-            with path.open(encoding="utf-8", newline="") as fh:
-                raw = [r for r in csv.reader(fh) if r and not r[0].lstrip().startswith("#")]
-        except OSError as exc:
-            raise t.error("file", f"cannot read {path} ({exc.strerror})") from None
+    if from_file:
+        raw = _data_rows(t, file, data_dir)
         if raw and not _numeric(raw[0][0]):
             raw = raw[1:]                                # a header row
         where = "file"
@@ -266,7 +267,8 @@ def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str],
     rows = []
     for j, row in enumerate(raw):
         if not isinstance(row, list) or len(row) < 2:
-            raise t.error(f"{where}[{j}]", f"expected a row [x, p] (got {row!r})")
+            got = "" if from_file else f" (got {row!r})"
+            raise t.error(f"{where}[{j}]", f"expected a row [x, p]{got}")
         rows.append((conv(row[0], units[0], targets[0], f"{where}[{j}]"),
                      conv(row[1], units[1], targets[1], f"{where}[{j}]")))
     if len(rows) < 5:
@@ -278,6 +280,24 @@ def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str],
     return rows
 
 
+def _data_rows(t: Table, file: str, data_dir: str | Path | None) -> list[list[str]]:
+    """The rows of the CSV data file ``t.file``: inside the scene's folder (or ``data_dir``), a
+    regular file under :data:`~mechplan.limits.DATA_MAX_BYTES`; errors name the key, never a
+    line of the file."""
+    from ..userfiles import DATA, data_file, read_text
+
+    name = t.string("file")
+    assert name is not None
+    key = t.key("file")
+    path = data_file(name, file, key=key, data_dir=data_dir, error=SceneError)
+    text = read_text(path, DATA, error=SceneError, key=key, shown=file)   # the key names it
+    try:
+        return [r for r in csv.reader(io.StringIO(text, newline=""))
+                if r and not r[0].lstrip().startswith("#")]
+    except csv.Error as exc:
+        raise t.error("file", f"the data file is not a readable CSV table ({exc})") from None
+
+
 def _numeric(s: str) -> bool:
     try:
         float(s.replace(",", "."))
@@ -286,7 +306,8 @@ def _numeric(s: str) -> bool:
         return False
 
 
-def _indicator(t: Table, strokes: int, file: str) -> IndicatorSpec:
+def _indicator(t: Table, strokes: int, file: str,
+               data_dir: str | Path | None = None) -> IndicatorSpec:
     source = t.string("source", "thermal", choices=tuple(k.value for k in IndicatorKind))
     kind = IndicatorKind(source)
     if kind is not IndicatorKind.THERMAL:
@@ -296,7 +317,7 @@ def _indicator(t: Table, strokes: int, file: str) -> IndicatorSpec:
                 or not all(isinstance(u, str) for u in units)):
             raise t.error("units", 'expected two unit names, e.g. ["cm^3", "MPa"]')
         dims = ("volume" if kind is IndicatorKind.VOLUME else "angle", "pressure")
-        rows = _rows(t, (units[0], units[1]), dims, file)
+        rows = _rows(t, (units[0], units[1]), dims, file, data_dir)
         eps = t.quantity("epsilon", "dimensionless")
         if kind is IndicatorKind.CRANK_ANGLE and eps is None:
             raise t.error("epsilon", "a p(φ) table needs the compression ratio for the p–V diagram")

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import math
-import tomllib
 from pathlib import Path
 
 from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
@@ -12,6 +11,7 @@ from ..i18n import LANGUAGES
 from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
 from ..model.plans import Plan
 from ..model.structure import analyse
+from .document import parse_toml
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
 from .loads import gravity_of, loads_of, masses_of
 from .reader import Table
@@ -33,23 +33,14 @@ SCALE_KEYS = {plan.scale_key: plan.scale_dimension for plan in Plan} | {"mu_M": 
 
 def load_scene(path: str | Path) -> Scene:
     """Read and validate a scene file."""
-    path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise SceneError(f"cannot read the scene file ({exc.strerror})", file=str(path)) from None
-    except UnicodeDecodeError:
-        raise SceneError("the scene file is not UTF-8 text", file=str(path)) from None
-    return parse_scene(text, str(path))
+    from .document import read_text
+
+    return parse_scene(read_text(path), str(path))
 
 
 def parse_scene(text: str, file: str = "<scene>") -> Scene:
     """Parse scene text (TOML)."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"not valid TOML: {exc}", file=file) from None
-    top = Table(data, "", file)
+    top = Table(parse_toml(text, file), "", file)
     top.check_keys(TOP_KEYS)
     language = top.string("language", "en", choices=LANGUAGES)
     ground_points, guides = _ground(top)

@@ -5,7 +5,7 @@ from __future__ import annotations
 import difflib
 from typing import Any
 
-from ..errors import SceneError
+from ..errors import SceneError, shown
 from ..units import parse_quantity
 
 #: largest magnitude (SI) a scene may give per dimension: beyond, squares overflow or lose all
@@ -26,7 +26,7 @@ class Table:
 
     def __init__(self, data: Any, path: str, file: str) -> None:
         if not isinstance(data, dict):
-            raise SceneError(f"expected a table (got {type(data).__name__} {data!r})",
+            raise SceneError(f"expected a table (got {type(data).__name__} {shown(data)})",
                              file=file, key=path or None)
         self.data = data
         self.path = path
@@ -69,10 +69,10 @@ class Table:
         if value is None:
             return None
         if not isinstance(value, (str, int)) or isinstance(value, bool):
-            raise self.error(name, f"expected text (got {value!r})")
+            raise self.error(name, f"expected text (got {shown(value)})")
         value = str(value)
         if choices and value not in choices:
-            raise self.error(name, f"must be one of {', '.join(choices)} (got {value!r})")
+            raise self.error(name, f"must be one of {', '.join(choices)} (got {shown(value)})")
         return value
 
     def quantity(self, name: str, dimension: str, default: float | None = None,
@@ -87,11 +87,11 @@ class Table:
         limit = LIMITS.get(dimension, DEFAULT_LIMIT)
         if abs(value) > limit:
             raise self.error(name, f"must be at most {_limit(dimension)} (got "
-                             f"{self.data[name]!r}); numbers this large cannot be constructed")
+                             f"{shown(self.data[name])}); numbers this large cannot be constructed")
         if positive and not value > 0:
-            raise self.error(name, f"must be positive (got {self.data[name]!r})")
+            raise self.error(name, f"must be positive (got {shown(self.data[name])})")
         if nonnegative and value < 0:
-            raise self.error(name, f"must not be negative (got {self.data[name]!r})")
+            raise self.error(name, f"must not be negative (got {shown(self.data[name])})")
         return value
 
     def value_quantity(self, value: Any, name: str, dimension: str) -> float:
@@ -99,7 +99,7 @@ class Table:
         out = parse_quantity(value, dimension, file=self.file, key=self.key(name))
         limit = LIMITS.get(dimension, DEFAULT_LIMIT)
         if abs(out) > limit:
-            raise self.error(name, f"must be at most {_limit(dimension)} (got {value!r}); "
+            raise self.error(name, f"must be at most {_limit(dimension)} (got {shown(value)}); "
                              "numbers this large cannot be constructed")
         return out
 

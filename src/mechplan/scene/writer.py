@@ -10,10 +10,14 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import SceneError
+from ..errors import SceneError, shown_key
+from .toml import MAX_NESTING
 
 
-def _toml_value(value: Any, key: str) -> str:
+def _toml_value(value: Any, key: str, depth: int = 1) -> str:
+    if depth > MAX_NESTING:         # also a table that contains itself
+        raise SceneError(f"tables and lists are nested more than {MAX_NESTING} levels deep",
+                         file="<dict>", key=shown_key(key))
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, (int, np.integer)):
@@ -31,10 +35,11 @@ def _toml_value(value: Any, key: str) -> str:
         return json.dumps(os.fspath(value), ensure_ascii=False)
     if isinstance(value, Mapping):
         items = ", ".join(f"{json.dumps(str(k), ensure_ascii=False)} = "
-                          f"{_toml_value(v, f'{key}.{k}')}" for k, v in value.items())
+                          f"{_toml_value(v, f'{key}.{k}', depth + 1)}" for k, v in value.items())
         return "{" + items + "}"
     if isinstance(value, (list, tuple)):
-        return "[" + ", ".join(_toml_value(v, f"{key}[{i}]") for i, v in enumerate(value)) + "]"
+        items = ", ".join(_toml_value(v, f"{key}[{i}]", depth + 1) for i, v in enumerate(value))
+        return "[" + items + "]"
     raise SceneError(f"must be text, a number, a list or a table (got {type(value).__name__})",
                      file="<dict>", key=key)
 

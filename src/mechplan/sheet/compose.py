@@ -21,6 +21,7 @@ from .kinematics_sheet import (
     grid,
     kinematic_diagrams,
     small_plan,
+    split_tables,
     tables_of,
 )
 from .layout import drawing_area, fewest_sheets, framed
@@ -32,6 +33,7 @@ from .scales import (
     chosen_positions,
     decide_scales,
     room,
+    tables_apart,
     velocity_positions,
 )
 
@@ -118,12 +120,13 @@ def _kinematics_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room)
                 if t.primitives:
                     panels.append(t)
             else:
-                panels.append(vp)
+                panels += split_tables(vp, plan_title(Plan.VELOCITY, lang, k, phi_deg),
+                                       tables_apart(c, Plan.VELOCITY, r), r)
         if has[Plan.ACCELERATION]:
-            panels.append(_marked(vector_plan(c, sol.ev, k, Plan.ACCELERATION,
-                                              mu[Plan.ACCELERATION], lang,
-                                              plan_title(Plan.ACCELERATION, lang, k, phi_deg)),
-                                  sol, k, Plan.ACCELERATION, lang))
+            title = plan_title(Plan.ACCELERATION, lang, k, phi_deg)
+            ap = _marked(vector_plan(c, sol.ev, k, Plan.ACCELERATION, mu[Plan.ACCELERATION],
+                                     lang, title), sol, k, Plan.ACCELERATION, lang)
+            panels += split_tables(ap, title, tables_apart(c, Plan.ACCELERATION, r), r)
     return panels + kinematic_diagrams(sol, lang, r)
 
 
@@ -137,8 +140,10 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
     for k in plan_positions(sol):
         phi_deg = crank_degrees(sol, k)
         for group in groups:
-            panels.append(vector_plan(c, sol.ev, k, Plan.FORCE, mu[Plan.FORCE], lang,
-                                      plan_title(Plan.FORCE, lang, k, phi_deg, group), group))
+            title = plan_title(Plan.FORCE, lang, k, phi_deg, group)
+            panels += split_tables(vector_plan(c, sol.ev, k, Plan.FORCE, mu[Plan.FORCE], lang,
+                                               title, group), title,
+                                   tables_apart(c, Plan.FORCE, r), r)
         lever = zhukovsky_lever(c, sol.ev, k, mu[Plan.VELOCITY], lang,
                                 lever_title(lang, phi_deg))
         if lever is not None:

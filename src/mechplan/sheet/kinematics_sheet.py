@@ -161,6 +161,25 @@ def small_plan(panel: Panel, k: int, phi_deg: float, lang: str) -> Panel:
     return out
 
 
+def drawing_of(panel: Panel) -> Panel:
+    """A plan panel without its tables (its title and μ line kept): the plan when its tables
+    go on a panel of their own (:func:`tables_of`)."""
+    keep: list[Primitive | Table] = [
+        p for p in panel.primitives if not isinstance(p, Table)
+        and not (isinstance(p, Text) and p.height_mm == TABLE_H)]
+    return Panel(panel.name, keep, plan=panel.plan)
+
+
+def split_tables(panel: Panel, title: str, apart: bool, r: Room) -> list[Panel]:
+    """A plan panel as it goes on the sheet: whole, or its drawing and its tables apart (when
+    the scale decision says so, or the plan with its tables is taller than the drawing area)."""
+    _x0, y0, _x1, y1 = panel.bounds()
+    if not apart and y1 - y0 <= r.height:
+        return [panel]
+    tables = tables_of(panel, title)
+    return [drawing_of(panel)] + ([tables] if tables.primitives else [])
+
+
 def tables_of(panel: Panel, title: str) -> Panel:
     """The tables of a plan panel (segments, vector equations) under a title, without the plan."""
     keep: list[Primitive | Table] = [

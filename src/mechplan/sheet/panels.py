@@ -400,8 +400,10 @@ def position_plan(
                 prims.append(Circle(q, 0.8, Role.OUTLINE))
     anchors = {p: _mm(ev_all[_pos(ev_all, p)][k0], mu) for p in names if _has(ev_all, p)}
     anchors = {p: q for p, q in anchors.items() if _finite(q)}
+    marked = [p.center for p in prims if isinstance(p, Circle) and p.role is Role.OUTLINE
+              and p.radius <= 1.0]
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H,
-                         list(anchors.values()))
+                         list(anchors.values()) + marked, _ends(prims))
     for p, q in anchors.items():
         prims.append(placer.place(q, p))
     for at, text, toward in small_labels:
@@ -411,6 +413,18 @@ def position_plan(
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(Plan.POSITION, mu, lang), LABEL_H))
     return panel
+
+
+def _ends(prims: list) -> list[tuple[float, float]]:
+    """Unmarked points a reader can give a label to: line ends and vertices of the links of every
+    drawn position (not the dash-dot trajectories and axes, which it skips)."""
+    out: list[tuple[float, float]] = []
+    for p in prims:
+        if isinstance(p, Line) and p.role is not Role.CHAIN:
+            out += [p.start, p.end]
+        elif isinstance(p, Polyline) and p.role is not Role.CHAIN:
+            out += list(p.points)
+    return out
 
 
 def _slider(p: tuple[float, float], angle: float) -> Polyline:

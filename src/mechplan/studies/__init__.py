@@ -42,8 +42,9 @@ class Study(Protocol):
 
 
 def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
-               count: int | None = None) -> Study:
-    """Solve a scene given as text; ``at_deg``/``count`` choose crank positions of a mechanism."""
+               count: int | None = None, data_dir: str | Path | None = None) -> Study:
+    """Solve a scene given as text; ``at_deg``/``count`` choose crank positions of a mechanism;
+    the data files it names are read inside ``data_dir`` (default: the scene's folder)."""
     data = parse_toml(text, file)
     kind = scene_kind(data, file)
     if kind == "mechanism":
@@ -63,7 +64,7 @@ def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
     if kind == "engine":
         from .engine import solve_engine_text
 
-        return solve_engine_text(text, file)
+        return solve_engine_text(text, file, data_dir=data_dir)
     if kind == "cam":
         from .cam import solve_cam
 
@@ -77,6 +78,6 @@ def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
 
 
 def solve_file(path: str | Path, *, at_deg: list[float] | None = None,
-               count: int | None = None) -> Study:
-    """Read and solve a scene file of any kind."""
-    return solve_text(read_text(path), str(path), at_deg=at_deg, count=count)
+               count: int | None = None, data_dir: str | Path | None = None) -> Study:
+    """Read and solve a scene file of any kind (``data_dir``: see :func:`solve_text`)."""
+    return solve_text(read_text(path), str(path), at_deg=at_deg, count=count, data_dir=data_dir)

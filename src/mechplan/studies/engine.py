@@ -30,9 +30,11 @@ from .answers import Keys, Own, Written, span, written_all
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
 
-def solve_engine_text(text: str, file: str) -> EngineStudy:
-    """Parse and solve an engine scene; write its CSV if the scene's [output] asks for one."""
-    study = EngineStudy(parse_engine_scene(text, file))
+def solve_engine_text(text: str, file: str, *,
+                      data_dir: str | Path | None = None) -> EngineStudy:
+    """Parse and solve an engine scene; write its CSV if the scene's [output] asks for one
+    (``data_dir``: where the data files it names are, default the scene's folder)."""
+    study = EngineStudy(parse_engine_scene(text, file, data_dir=data_dir))
     if study.scene.engine.csv:
         study.write_csv(study.scene.engine.csv)
     return study

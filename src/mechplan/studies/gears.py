@@ -84,6 +84,25 @@ class GearStudy:
             out.extend(pair_lines(sol.pair, lang))
         return "\n".join(out)
 
+    def warnings(self, language: str | None = None) -> list[str]:
+        """A warning for each failed check of the pair and of a given planetary set (the
+        command then exits with code 3, as for flagged results)."""
+        from ..sheet.gears import condition_rows, pair_lines, verdict
+
+        sol = self.solution
+        lang = language or sol.scene.language
+        failed: list[str] = []
+        res = sol.planetary
+        if res is not None and res.spec.given is not None and not res.chosen.valid:
+            failed += [f"{name}: {numbers} — {verdict(ok, lang)}"
+                       for name, numbers, ok in condition_rows(res, lang) if not ok]
+        if sol.pair is not None:
+            p = sol.pair
+            lines = pair_lines(p, lang)[-5:-1]       # pointed tip and interference, per gear
+            bad = [flag for pair in zip(p.pointed, p.interference) for flag in pair]
+            failed += [line for line, fails in zip(lines, bad, strict=True) if fails]
+        return [message("gears.warning.failed", lang, check=c) for c in failed]
+
     def to_json(self) -> dict[str, Any]:
         sol = self.solution
         doc: dict[str, Any] = {"kind": "gears", "title": sol.scene.title}

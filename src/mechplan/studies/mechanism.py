@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
     from ..dynamics.machine import MachineDynamics
+    from ..sheet.scales import Decision
     from ..solve import Solution
     from .answers import Keys
 
@@ -32,7 +33,36 @@ class MechanismStudy:
             lang = language or self.solution.scene.language
             text = (text.rstrip("\n") + "\n\n"
                     + dynamics_report(self.dynamics, lang, self._enlargement()) + "\n")
+        said = self.scale_notes(language)
+        if said:
+            from ..i18n import message
+
+            d = self.scale_decision()
+            lang = language or self.solution.scene.language
+            heading = message("scales.heading", lang, size=d.size, standard=d.standard.upper())
+            text = (text.rstrip("\n") + f"\n\n{heading}\n"
+                    + "".join(f"  - {line}\n" for line in said))
         return text
+
+    def scale_decision(self, size: str | None = None, standard: str | None = None) -> Decision:
+        """The scale factors of a sheet with their reasons (by default the sheet the solution's
+        scales are for: ``extras["sheet"]``, else the scene's own)."""
+        from ..sheet.scales import decide
+
+        sol = self.solution
+        size_, standard_ = sol.extras.get("sheet", (None, None))
+        return decide(sol.scene, sol.construction, sol.ev, sol.plans, size or size_,
+                      standard or standard_)
+
+    def scale_notes(self, language: str | None = None, size: str | None = None,
+                    standard: str | None = None) -> list[str]:
+        """What the scale factors of a sheet could not do as asked: fixed values not kept,
+        plans enlarged so their segments are readable, segments still shorter than 2 mm."""
+        from ..sheet.scales import notes
+
+        sol = self.solution
+        return notes(self.scale_decision(size, standard), language or sol.scene.language,
+                     sol.scene, sol.construction, sol.ev)
 
     def warnings(self, language: str | None = None) -> list[str]:
         """Warnings for positions not built and results whose error estimate is poor."""
@@ -48,6 +78,9 @@ class MechanismStudy:
             from .machine import dynamics_json
 
             doc["dynamics"] = dynamics_json(self.dynamics, self._enlargement())
+        from ..sheet.scales import decision_json
+
+        doc["scale_decision"] = decision_json(self.scale_decision())
         return doc
 
     def answers(self) -> Keys:

@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import CheckError
-from .read import Entry, Note, Submission, csv_rows, load_toml, submitted_file
+from .read import Entry, Note, Submission, csv_rows, load_toml, submitted_file, within_limits
 from .texts import T
 
 _ANGLE_TEXT = re.compile(r"^\s*(?:([^\d\s=:+−-][^=:]*?)\s*[=:]\s*)?([-+−]?\d+(?:[.,]\d+)?)\s*"
@@ -50,7 +50,7 @@ def read_answers(path: str | Path, is_angle_name: Any) -> Submission:
         raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))
     if not table.entries:
         raise CheckError(T("answers.empty"), file=str(p))
-    return table
+    return within_limits(table)
 
 
 def _value_text(value: Any) -> str | None:

@@ -23,6 +23,7 @@ from ..geom.sketch import box_gap
 from ..i18n import Text, join, plan_title, with_case
 from ..model.plans import Plan
 from .labels import Candidate, LabelBook, PlanKey, feature_votes, layer_plan, mu_plan, written_mu
+from .notation import units_ascii
 from .read import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .sketch import Graph, drawn_graph, place_labels
 from .texts import T
@@ -102,6 +103,8 @@ def find_plans(sub: Submission, book: LabelBook, label_distance: float | None = 
     other = [e for e in sub.entries if mu_plan(e.name) is None]
     labels: list[_Label] = []
     for t in sub.texts:
+        if axis_title(t.text):             # "a, m/s²": a diagram's axis, not a point
+            continue
         names = label_names(t.text)
         readings = [(n, book.candidates(n)) for n in names]
         readings = [(n, cands) for n, cands in readings if cands]
@@ -128,6 +131,23 @@ def find_plans(sub: Submission, book: LabelBook, label_distance: float | None = 
         if dp.plan not in mu_elsewhere:
             _scale_of(dp, scale_entries, notes)
     return DrawnSheet(plans, notes, label_distance, other)
+
+
+#: unit symbols an axis title writes after its quantity ("s, m", "φ, °", "F, N")
+_UNIT_WORDS = frozenset({"m", "mm", "N", "kN", "J", "kJ", "°", "rad", "deg", "W", "kW", "Pa",
+                         "kPa", "MPa", "kg", "s"})
+
+
+def axis_title(text: str) -> bool:
+    """True for the title of a diagram's axis: a quantity and its unit after a comma ("a, m/s²",
+    "ψ, °", "M_b, N·m"), which is no label of a point ("p, o1" names one point twice)."""
+    if "=" in text or ":" in text:
+        return False
+    parts = [x.strip() for x in text.split(",")]
+    if len(parts) != 2 or not parts[0] or not parts[1]:
+        return False
+    unit = units_ascii(parts[1])
+    return unit in _UNIT_WORDS or any(ch in unit for ch in "/²³·*^")
 
 
 def _no_labels(sub: Submission, book: LabelBook) -> Exception:
@@ -200,19 +220,32 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
                 break
         else:
             groups.append((key, [comp], list(members)))
-    counts = Counter(key for key, _, _ in groups)
-    seen: Counter[PlanKey] = Counter()
+    found: list[DrawnPlan] = []
     for key, comps_, members in groups:
         dp = DrawnPlan(key)
-        if counts[key] > 1:
-            seen[key] += 1
-            dp.number = seen[key]
         for comp in comps_:
             dp.lines.extend(lines_of.get(comp, []))
         _resolve(dp, members, book, notes)
         _pole(dp, book, graph, sub, notes)
         if dp.points:
-            plans.append(dp)
+            found.append(dp)
+    # one labelled point measures nothing: beside real plans it is a stray label (a letter of a
+    # note), and a pole alone is no plan anywhere (Zhukovsky's lever labels its pole p) — not
+    # plans whose every segment would be "missing"
+    others = any(len(dp.points) >= 2 for dp in found)
+    lone = [dp for dp in found if len(dp.points) == 1
+            and (others or set(dp.points) == {book.poles.get(dp.key)})]
+    for dp in lone:
+        for lp in dp.points.values():
+            notes.append(Note("info", T("note.lone_label", written=lp.written), lp.where))
+    found = [dp for dp in found if all(dp is not x for x in lone)]
+    counts = Counter(dp.key for dp in found)
+    seen: Counter[PlanKey] = Counter()
+    for dp in found:
+        if counts[dp.key] > 1:
+            seen[dp.key] += 1
+            dp.number = seen[dp.key]
+        plans.append(dp)
     for key, n in counts.items():
         if n > 1:
             notes.append(Note("warning", T("note.repeated_plans", n=n,
@@ -243,9 +276,27 @@ def _hint_of(comp: int, members: list[_Label], graph: Graph, lines: list[DrawnLi
             hints.add(plan)
     # a scale-factor text belongs to the labelled drawing nearest to it
     for plan, entry in scale_entries:
-        if entry.at is not None and graph.nearest_component(entry.at, labelled) == comp:
+        if entry.at is not None and _mu_owner(entry.at, graph, labelled) == comp:
             hints.add(plan)
     return hints
+
+
+def _mu_owner(at: Point, graph: Graph, labelled: set[int]) -> int:
+    """The labelled drawing a scale-factor text at ``at`` belongs to: the one whose box is
+    nearest (a text stands above or beside its plan; a long vector's far end is no measure of
+    where its drawing is); among drawings whose boxes hold the text, the one with the nearest
+    line end."""
+    comp = np.asarray(graph.component)
+    best: list[tuple[float, float, int]] = []
+    for c in labelled:
+        pts = graph.nodes[comp == c]
+        if not len(pts):
+            continue
+        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        gap = np.maximum(np.maximum(lo - at, np.asarray(at) - hi), 0.0)
+        node = float(np.hypot(*(pts - at).T).min())
+        best.append((float(np.hypot(*gap)), node, c))
+    return min(best)[2] if best else -1
 
 
 def _reading(lb: _Label, key: PlanKey, convention: str = "") -> Candidate | None:

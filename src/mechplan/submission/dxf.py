@@ -19,41 +19,52 @@ from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 
 from ..drafting.fonts import text_width_mm
 from ..errors import CheckError
+from ..i18n import Text
+from ..limits import DXF_MAX_INSERT_DEPTH
+from ..userfiles import DXF, read_bytes
+from .dxf_open import (
+    DAMAGE,
+    ENTITY_DAMAGE,
+    RECOVER_DAMAGE,
+    Budget,
+    Repairs,
+    brief,
+    load_document,
+    refuse_before_loading,
+    refuse_bombs,
+)
 from .notation import decode_legacy
 from .read import DrawnLine, Note, Point, SheetText, Submission, parse_assignments
 from .texts import T, has
+from .texts import where as place
 
 INSUNITS_MM = {0: 1.0, 1: 25.4, 2: 304.8, 4: 1.0, 5: 10.0, 6: 1000.0, 14: 100.0}
 
 
-# -- DXF ---------------------------------------------------------------------------------------
-#: what ezdxf raises on damaged values besides its own DXFError family
-DAMAGE = (OSError, UnicodeDecodeError, ValueError, TypeError, EOFError, IndexError,
-          ArithmeticError)
-
-
-def read_dxf(path: Path) -> Submission:
-    """Read lines, polylines, point markers and texts of a DXF's model space (recovering damage)."""
+def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
+    """Read lines, polylines, point markers and texts of a DXF's model space (recovering damage);
+    ``raw``: the file's bytes when they were read already."""
     import ezdxf
-    from ezdxf import recover
 
     sub = Submission(str(path), "dxf")
-    raw = path.read_bytes()
+    if raw is None:
+        raw = read_bytes(path, DXF, error=CheckError)
     if not raw.strip():
         raise CheckError(T("error.empty"), file=str(path))
     truncated = not raw.startswith(b"AutoCAD Binary DXF") and \
         raw.rstrip()[-3:].upper() != b"EOF"
     if truncated:
         sub.notes.append(Note("warning", T("note.truncated"), str(path)))
-    repairs = _Collect()
+    repairs = Repairs()
     log = logging.getLogger("ezdxf")
     log.addHandler(repairs)   # the repair messages become notes, not lines on stderr
     try:
-        doc, auditor = recover.readfile(str(path))
+        refuse_before_loading(raw, str(path))
+        doc, auditor = load_document(raw, repairs)
     except ezdxf.DXFStructureError as exc:
-        raise CheckError(T("error.not_dxf", detail=str(exc)), file=str(path)) from None
-    except (ezdxf.DXFError, *DAMAGE) as exc:
-        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {exc}"),
+        raise CheckError(T("error.not_dxf", detail=brief(exc)), file=str(path)) from None
+    except (ezdxf.DXFError, *DAMAGE, *RECOVER_DAMAGE) as exc:
+        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {brief(exc)}"),
                          file=str(path)) from None
     finally:
         log.removeHandler(repairs)
@@ -77,16 +88,21 @@ def read_dxf(path: Path) -> Submission:
     else:
         sub.units = (unit_name(code) if code == 4 else
                      T("units.scaled", unit=unit_name(code), scale=scale))
-    msp = doc.modelspace()
-    _collect(sub, msp, 1.0, depth=0)
-    if not sub.lines:
-        for layout in doc.layouts:
-            if layout.name.lower() == "model":
-                continue
-            _collect(sub, layout, 1.0, depth=0)
-            if sub.lines:
-                sub.notes.append(Note("info", T("note.layout", name=layout.name), str(path)))
-                break
+    budget = Budget(str(path))
+    try:
+        refuse_bombs(doc, str(path))
+        _collect(sub, doc.modelspace(), 1.0, depth=0, budget=budget)
+        if not sub.lines:
+            for layout in doc.layouts:
+                if layout.name.lower() == "model":
+                    continue
+                _collect(sub, layout, 1.0, depth=0, budget=budget)
+                if sub.lines:
+                    sub.notes.append(Note("info", T("note.layout", name=layout.name), str(path)))
+                    break
+    except (DXFError, *DAMAGE, *RECOVER_DAMAGE) as exc:   # a damaged table of layouts, blocks
+        raise CheckError(T("error.damaged", detail=f"{exc.__class__.__name__}: {brief(exc)}"),
+                         file=str(path)) from None
     if sub.skipped:
         sub.notes.append(Note("info", T("note.skipped", n=sub.skipped), str(path)))
     _follow_leaders(sub)
@@ -157,28 +173,17 @@ def _rescale(sub: Submission, f: float) -> None:
                            (t.half[0] * f, t.half[1] * f), t.rotation) for t in sub.texts]
 
 
-class _Collect(logging.Handler):
-    """Keep the log messages of a DXF read (repairs of damaged values)."""
-
-    def __init__(self) -> None:
-        super().__init__(logging.WARNING)
-        self.messages: list[str] = []
-
-    def emit(self, record: logging.LogRecord) -> None:
-        self.messages.append(record.getMessage())
-
-
 def unit_name(code: int) -> str:
     """The name of a $INSUNITS code ("millimetres"), or the code itself when it has none."""
     return T(f"unit.{code}") if has(f"unit.{code}") else str(code)
 
 
 def _where(e: Any, extra: str = "") -> str:
-    handle = getattr(e.dxf, "handle", None) or "?"
-    layer = getattr(e.dxf, "layer", "") or ""
+    handle = str(getattr(e.dxf, "handle", None) or "?")
+    layer = str(getattr(e.dxf, "layer", "") or "")
     if layer not in ("", "0"):
-        return T("where.entity_layer", type=e.dxftype(), handle=handle, layer=layer, extra=extra)
-    return T("where.entity", type=e.dxftype(), handle=handle, extra=extra)
+        return place("entity_layer", type=e.dxftype(), handle=handle, layer=layer, extra=extra)
+    return place("entity", type=e.dxftype(), handle=handle, extra=extra)
 
 
 _SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|border",
@@ -186,24 +191,40 @@ _SKIP_LINETYPE = re.compile(r"center|dashdot|dash_dot|chain|phantom|divide|borde
 _SKIP_LAYER = re.compile(r"^(frame|table|title|border|рамка|штамп|таблиц)", re.IGNORECASE)
 
 
-def _skipped(e: Any) -> bool:
-    """Axes and trajectories (dash-dot lines) and sheet frames and tables are not plan lines."""
+def _skipped(e: Any, seen: dict[tuple[str, str], bool] | None = None) -> bool:
+    """Axes and trajectories (dash-dot lines) and sheet frames and tables are not plan lines;
+    ``seen`` remembers the answer for each layer and line type of one sheet."""
     layer_name = e.dxf.get("layer", "0") or "0"
-    if _SKIP_LAYER.match(layer_name):
-        return True
     linetype = e.dxf.get("linetype", "BYLAYER") or "BYLAYER"
-    if linetype.upper() == "BYLAYER" and e.doc is not None:
-        layer = e.doc.layers.get(layer_name) if layer_name in e.doc.layers else None
-        linetype = layer.dxf.get("linetype", "CONTINUOUS") if layer is not None else "CONTINUOUS"
-    return bool(_SKIP_LINETYPE.search(linetype))
+    key = (layer_name, linetype)
+    if seen is not None and key in seen:
+        return seen[key]
+    if _SKIP_LAYER.match(layer_name):
+        skip = True
+    else:
+        if linetype.upper() == "BYLAYER" and e.doc is not None:
+            layer = e.doc.layers.get(layer_name) if layer_name in e.doc.layers else None
+            linetype = (layer.dxf.get("linetype", "CONTINUOUS") if layer is not None
+                        else "CONTINUOUS")
+        skip = bool(_SKIP_LINETYPE.search(linetype))
+    if seen is not None:
+        seen[key] = skip
+    return skip
 
 
 def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
-             via: str = "") -> None:
+             via: str = "", budget: Budget | None = None, blocks: tuple[str, ...] = ()) -> None:
+    """Read the entities of a layout or of an inserted block (``blocks``: the names of the blocks
+    it stands in, outermost first)."""
+    budget = budget or Budget(sub.path)
     for e in space:
+        budget.take()
         kind = e.dxftype()
+        if kind == "INSERT":
+            _insert(sub, e, scale, depth, via, budget, blocks)
+            continue
         try:
-            if kind in ("LINE", "LWPOLYLINE", "POLYLINE") and _skipped(e):
+            if kind in ("LINE", "LWPOLYLINE", "POLYLINE") and _skipped(e, budget.skipped):
                 sub.skipped += 1
                 continue
             if kind == "LINE":
@@ -235,16 +256,39 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
                 _add_text(sub, _mtext_box(e, scale), e, via)
             elif kind == "DIMENSION":
                 _add_dimension(sub, e, scale, via)
-            elif kind == "INSERT" and depth < 8:
-                name = e.dxf.name
-                _collect(sub, e.virtual_entities(), scale, depth + 1,
-                         via=T("where.block", name=name, handle=e.dxf.handle))
-                for attrib in getattr(e, "attribs", []):
-                    _add_text(sub, _text_box(attrib, scale), attrib, via)
-        except (DXFError, *DAMAGE) as exc:      # one damaged entity must not lose the sheet
-            sub.notes.append(Note("warning", T("note.unreadable_entity", kind=kind,
-                                               error=f"{exc.__class__.__name__}: {exc}"),
+        except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:   # one damaged entity must not lose
+            sub.notes.append(Note("warning", T("note.unreadable_entity", kind=kind,  # the sheet
+                                               error=f"{exc.__class__.__name__}: {brief(exc)}"),
                                   _where(e, via)))
+
+
+def _insert(sub: Submission, e: Any, scale: float, depth: int, via: str, budget: Budget,
+            blocks: tuple[str, ...]) -> None:
+    """A block INSERT: the block's entities where it is inserted, and its ATTRIBs. A block nested
+    deeper than :data:`~mechplan.limits.DXF_MAX_INSERT_DEPTH`, or inside itself, is refused."""
+    try:
+        name = str(e.dxf.name)
+        if name in blocks or depth >= DXF_MAX_INSERT_DEPTH:
+            raise CheckError(Text("readers.error.dxf_depth", {"name": name[:60],
+                                                              "limit": DXF_MAX_INSERT_DEPTH}),
+                             file=sub.path)
+        inner = list(e.virtual_entities())
+        attribs = list(getattr(e, "attribs", []))
+    except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:
+        sub.notes.append(Note("warning", T("note.unreadable_entity", kind="INSERT",
+                                           error=f"{exc.__class__.__name__}: {brief(exc)}"),
+                              _where(e, via)))
+        return
+    _collect(sub, inner, scale, depth + 1, T("where.block", name=name, handle=e.dxf.handle),
+             budget, (*blocks, name))
+    for attrib in attribs:
+        budget.take()
+        try:
+            _add_text(sub, _text_box(attrib, scale), attrib, via)
+        except (DXFError, *DAMAGE, *ENTITY_DAMAGE) as exc:
+            sub.notes.append(Note("warning", T("note.unreadable_entity", kind="ATTRIB",
+                                               error=f"{exc.__class__.__name__}: {brief(exc)}"),
+                                  _where(attrib, via)))
 
 
 def _add_arrowhead(sub: Submission, e: Any, scale: float, where: str) -> None:

@@ -24,6 +24,10 @@ SUBSCRIPTS = str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789")
 _SUP_DIGITS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹", "0123456789")
 _SUP_MARK = {"ⁿ": "^n", "ᵗ": "^t", "ᵏ": "^k", "ʳ": "^r", "ᶜ": "^c"}
 _TRAILING_MARK = re.compile(r"^([^\W\d_]+)_?\{?(\w+)\}?\^\{?([ntkrτ])\}?$")
+_DIGITS = re.compile(r"\d+")
+#: characters of a name that can be a quantity ("a^t_E4D4" is 8): a longer one is not understood,
+#: without reading it (_TRAILING_MARK takes quadratic time on a long word)
+MAX_NAME_CHARS = 100
 _DROP = re.compile(r"[\s_{}^$\\()\[\]]")
 
 
@@ -73,7 +77,7 @@ def compact(name: str, homo: dict[str, str] | None = None, case: bool = False) -
     for ch, rep in _SUP_MARK.items():
         t = t.replace(ch, rep)
     t = t.translate(_SUP_DIGITS)
-    m = _TRAILING_MARK.match(t)
+    m = _TRAILING_MARK.match(t) if len(t) <= MAX_NAME_CHARS else None
     if m:                                   # a_CB^n → a^n_CB
         t = f"{m.group(1)}^{m.group(3)}_{m.group(2)}"
     for ch, rep in (homo if homo is not None else _tables()[1]).items():
@@ -89,6 +93,8 @@ def key(canonical: str) -> str:
 
 def read(name: str, mech: Mechanism | None) -> Reading | None:
     """The quantity a written name stands for, or None when it is not understood."""
+    if len(name) > MAX_NAME_CHARS:
+        return None
     names, homo, symbols, dims = _tables()
     raw = unicodedata.normalize("NFC", name.strip()).translate(SUBSCRIPTS)
     for text in (_DROP.sub("", raw).lower(), compact(name, homo)):
@@ -113,6 +119,8 @@ def _symbols(name: str, homo: dict[str, str],
 
 def dimension(name: str) -> str | None:
     """The dimension a name's symbol says, without a mechanism ("R12" → force), or None."""
+    if len(name) > MAX_NAME_CHARS:
+        return None
     names, homo, symbols, dims = _tables()
     if (text := compact(name, homo)) in names:
         return dims[names[text]]
@@ -159,26 +167,32 @@ def points(sub: str, mech: Mechanism) -> list[str] | None:
     names = sorted({p for link in mech.links.values() for p in link.points}, key=len,
                    reverse=True)
     member = {(p.lower(), lid.lower()) for lid, link in mech.links.items() for p in link.points}
-
-    def split(s: str) -> list[str] | None:
-        if not s:
-            return []
+    # the first split a depth-first search in this order finds, computed from the end of the
+    # subscript: no recursion (a subscript may be thousands of characters long) and each suffix
+    # is split once (a search could try every way of reading "b2b2b2…")
+    n = len(sub)
+    step: list[tuple[str, int] | None] = [None] * (n + 1)
+    for i in range(n - 1, -1, -1):
         for p in names:
             low = p.lower()
-            if not s.startswith(low):
+            if not sub.startswith(low, i):
                 continue
-            rest = s[len(low):]
-            m = re.match(r"\d+", rest)
-            options = [rest]
+            j = i + len(low)
+            m = _DIGITS.match(sub, j)
+            options = [j]
             if m and (low, m.group(0)) in member:
-                options.insert(0, rest[len(m.group(0)):])
-            for r in options:
-                tail = split(r)
-                if tail is not None:
-                    return [p, *tail]
+                options.insert(0, m.end())
+            found = next((r for r in options if r == n or step[r] is not None), None)
+            if found is not None:
+                step[i] = (p, found)
+                break
+    if n and step[0] is None:
         return None
-
-    return split(sub)
+    out, i = [], 0
+    while i < n:
+        p, i = step[i]  # type: ignore[misc]
+        out.append(p)
+    return out
 
 
 def reversed_points(sub: str, mech: Mechanism) -> str | None:

@@ -22,6 +22,10 @@ import numpy as np
 
 from ..errors import CheckError
 from ..geom.sketch import box_distance
+from ..i18n import Text
+from ..limits import CSV_CELL_MAX_CHARS, TABLE_MAX_NESTING, TABLE_MAX_ROWS
+from ..scene import toml
+from ..userfiles import DXF, TABLE, read_bytes
 from .texts import T
 
 Point = tuple[float, float]
@@ -133,11 +137,12 @@ def read_submission(path: str | Path) -> Submission:
         return read_toml(p)
     if suffix in (".csv", ".tsv", ".txt"):
         return read_csv(p)
-    head = p.read_bytes()[:256]
+    data = read_bytes(p, DXF, error=CheckError)
+    head = data[:256]
     if re.match(rb"\s*0\s*\r?\n\s*SECTION", head) or head.startswith(b"AutoCAD Binary DXF"):
         from .dxf import read_dxf
 
-        return read_dxf(p)
+        return read_dxf(p, data)
     raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))
 
 
@@ -207,7 +212,7 @@ def read_toml(path: Path) -> Submission:
     walk(data, None, "")
     if not sub.entries:
         raise CheckError(T("error.toml_empty"), file=str(path))
-    return sub
+    return within_limits(sub)
 
 
 _ROW_KEYS = {"mm", "length", "length_mm", "mu", "value", "quantity", "unit"}
@@ -315,6 +320,15 @@ def read_csv(path: Path) -> Submission:
             sub.entries.append(Entry(name=cells[0], where=where, text=cells[1]))
     if not sub.entries:
         raise CheckError(T("error.csv_empty"), file=str(path))
+    return within_limits(sub)
+
+
+def within_limits(sub: Submission) -> Submission:
+    """The table ``sub``, refused when it holds more than
+    :data:`~mechplan.limits.TABLE_MAX_ROWS` values (grading costs grow with them)."""
+    if len(sub.entries) > TABLE_MAX_ROWS:
+        raise CheckError(Text("readers.error.table_rows", {"limit": TABLE_MAX_ROWS}),
+                         file=sub.path)
     return sub
 
 
@@ -345,9 +359,15 @@ def load_toml(path: Path) -> tuple[dict[str, Any], Callable[[str], str]]:
     """A TOML table and the function giving where a key is written (its line, or its name)."""
     text = _read_text(path)
     try:
-        data = tomllib.loads(text)
+        data = toml.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise CheckError(T("error.toml", detail=str(exc)), file=str(path)) from None
+    except toml.TomlLimitError as exc:
+        raise CheckError(T(f"error.limit_{exc.kind}", **exc.args_), file=str(path),
+                         key=exc.key) from None
+    if _nesting(data) > TABLE_MAX_NESTING:
+        raise CheckError(Text("readers.error.nesting", {"limit": TABLE_MAX_NESTING}),
+                         file=str(path))
     lines = text.splitlines()
 
     def where(key: str) -> str:
@@ -358,19 +378,51 @@ def load_toml(path: Path) -> tuple[dict[str, Any], Callable[[str], str]]:
     return data, where
 
 
+def _nesting(data: Any) -> int:
+    """How deep tables and arrays are nested in parsed TOML (counted without recursion)."""
+    deepest, stack = 0, [(data, 1)]
+    while stack:
+        item, depth = stack.pop()
+        deepest = max(deepest, depth)
+        if isinstance(item, dict):
+            stack.extend((v, depth + 1) for v in item.values() if isinstance(v, (dict, list)))
+        elif isinstance(item, list):
+            stack.extend((v, depth + 1) for v in item if isinstance(v, (dict, list)))
+    return deepest
+
+
 def csv_rows(path: Path, dialect: Callable[[str], Any]) -> list[list[str]]:
-    """The rows of a CSV file, its dialect chosen by ``dialect(first 20 lines)``."""
+    """The rows of a CSV file, its dialect chosen by ``dialect(first 20 lines)``; a table of more
+    than :data:`~mechplan.limits.TABLE_MAX_ROWS` rows, or with a cell over
+    :data:`~mechplan.limits.CSV_CELL_MAX_CHARS` characters, is refused naming the line."""
     text = _read_text(path)
     if "\x00" in text:
         raise CheckError(T("error.binary"), file=str(path))
+    reader = csv.reader(io.StringIO(text), dialect("\n".join(text.splitlines()[:20])))
+    rows: list[list[str]] = []
     try:
-        return list(csv.reader(io.StringIO(text), dialect("\n".join(text.splitlines()[:20]))))
+        for row in reader:
+            if max(map(len, row), default=0) > CSV_CELL_MAX_CHARS:
+                raise _cell_too_long(path, reader.line_num)
+            rows.append(row)
+            if len(rows) > TABLE_MAX_ROWS:
+                raise CheckError(Text("readers.error.table_rows", {"limit": TABLE_MAX_ROWS}),
+                                 file=str(path))
     except csv.Error as exc:
-        raise CheckError(T("error.csv", detail=str(exc)), file=str(path)) from None
+        if "field larger than field limit" in str(exc):     # the csv module's own limit
+            raise _cell_too_long(path, reader.line_num) from None
+        raise CheckError(T("error.csv", detail=str(exc)), file=str(path),
+                         key=f"line {reader.line_num}") from None
+    return rows
+
+
+def _cell_too_long(path: Path, line: int) -> CheckError:
+    return CheckError(Text("readers.error.csv_cell", {"limit": CSV_CELL_MAX_CHARS}),
+                      file=str(path), key=f"line {line}")
 
 
 def _read_text(path: Path) -> str:
-    data = path.read_bytes()
+    data = read_bytes(path, TABLE, error=CheckError)
     for enc in ("utf-8-sig", "cp1251", "latin-1"):
         try:
             return data.decode(enc)

@@ -154,7 +154,9 @@ def balanced_shift(p: PairSpec) -> float:
 
 
 def pair_layout(p: PairSpec) -> Pair:
-    """Lay out the pair, choosing the shifts by its rule."""
+    """Lay out the pair, choosing the shifts by its rule.
+
+    Raise :class:`SceneError` for a pair that cannot exist (:func:`check_exists`)."""
     if p.rule is ShiftRule.NO_UNDERCUT:
         x1 = max(0.0, x_min(p.z1, p.addendum, p.z_min))
         x2 = max(0.0, x_min(p.z2, p.addendum, p.z_min))
@@ -163,7 +165,32 @@ def pair_layout(p: PairSpec) -> Pair:
         x2 = -x1
     else:
         x1, x2 = p.shifts
-    return _layout(p, x1, x2)
+    return check_exists(_layout(p, x1, x2))
+
+
+def check_exists(pair: Pair) -> Pair:
+    """Return the pair if its teeth can be cut; raise :class:`SceneError` otherwise.
+
+    A tooth whose flanks cross below its tip circle (s_a ≤ 0) cannot be cut. A pointed tip
+    (0 < s_a < 0.25·m) and interference (a mating tip reaching past the end N of the line of
+    action: infinite specific sliding) are failed checks of a pair that can be cut: the study
+    reports them and warns (:meth:`mechplan.studies.gears.GearStudy.warnings`).
+    """
+    p = pair.spec
+    key = ("pair.addendum" if p.addendum > 1.0 else
+           "pair.shifts" if p.rule is ShiftRule.GIVEN else "pair.shift_rule")
+    said = f"h_a* = {p.addendum:g}, x1 = {pair.x1:.4g}, x2 = {pair.x2:.4g}"
+    values = [pair.eps, pair.a_w, *(v for g in pair.gears for v in (g.s_a, g.rho_p, g.r_a))]
+    if not all(math.isfinite(v) for v in values):
+        raise SceneError(f"the pair z1 = {p.z1}, z2 = {p.z2} cannot be laid out with {said} "
+                         "(a dimension is not finite)", key=key)
+    for j, g in enumerate(pair.gears, start=1):
+        if not g.s_a > 0:
+            raise SceneError(f"gear {j} (z = {g.z}) cannot be cut with {said}: its tooth would be "
+                             f"{g.s_a * 1000:.3f} mm thick at the tip circle (its flanks cross "
+                             "below it); a smaller addendum or shift makes a pair that exists",
+                             key=key)
+    return pair
 
 
 def flank(gear: Gear, alpha: float, n: int = 40) -> tuple[np.ndarray, np.ndarray]:
