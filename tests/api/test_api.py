@@ -168,9 +168,8 @@ def test_dict_errors_name_the_key() -> None:
 
 def test_draw_writes_the_sheet(tmp_path: Path) -> None:
     written = mechplan.draw(SCENE, tmp_path / "out", formats=["svg"])
-    # sheet 1 kinematics, sheet 2 kinetostatics
-    assert written == [tmp_path / "out" / "slider_crank.svg",
-                       tmp_path / "out" / "slider_crank-2.svg"]
+    # kinematics and kinetostatics share the A1 sheet (no wasted second sheet)
+    assert written == [tmp_path / "out" / "slider_crank.svg"]
     assert written[0].read_text(encoding="utf-8").lstrip().startswith("<?xml")
 
 

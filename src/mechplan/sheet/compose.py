@@ -6,8 +6,6 @@ import dataclasses
 import math
 
 import numpy as np
-from shapely import box
-from shapely.prepared import prep
 
 from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
@@ -26,7 +24,7 @@ from .kinematics_sheet import (
     split_tables,
     tables_of,
 )
-from .layout import drawing_area, framed
+from .layout import drawing_area, fewest_sheets, framed
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -109,11 +107,8 @@ def _kinematics_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room)
     if has[Plan.VELOCITY] and len(every) > len(chosen):
         small = [small_plan(vector_plan(c, sol.ev, k, Plan.VELOCITY, mu[Plan.VELOCITY], lang,
                                         "-"), k, crank_degrees(sol, k), lang) for k in every]
-        title = message("layout.velocity_plans", lang)
-        for g in grid("velocity-all", small, r.width, r.height - 12.0):
-            x0, _y0, _x1, y1 = g.bounds()
-            g.primitives.append(Text((x0, y1 + 4.0), title, 5.0))
-            panels.append(g)
+        panels += grid("velocity-all", small, r.width, r.height, title=message(
+            "layout.velocity_plans", lang))
     for k in chosen:
         phi_deg = crank_degrees(sol, k)
         if has[Plan.VELOCITY]:
@@ -176,40 +171,6 @@ def _marked(panel: Panel, sol: Solution, k: int, plan: Plan, lang: str) -> Panel
     return panel
 
 
-def _pack(panels: list[Panel], area) -> list[tuple[float, float] | None]:
-    """Top-left-first packing inside the drawing area, in order; a panel that does not fit is
-    skipped (None) so that the later, smaller ones can still fill the sheet."""
-    inside = prep(area)
-    ax0, ay0, ax1, ay1 = area.bounds
-    placed: list = []
-    offsets: list[tuple[float, float] | None] = []
-    grid = [(ax0 + i * 10.0, ay1 - j * 10.0) for j in range(int((ay1 - ay0) / 10) + 1)
-            for i in range(int((ax1 - ax0) / 10) + 1)]
-    for panel in panels:
-        x0, y0, x1, y1 = panel.bounds()
-        w, h = x1 - x0 + GAP, y1 - y0 + GAP
-        candidates = {(ax0 + GAP / 2, ay1 - GAP / 2)}
-        for r in placed:
-            bx0, by0, bx1, by1 = r.bounds
-            candidates |= {(bx1, by1), (bx0, by0), (ax0 + GAP / 2, by0), (bx1, ay1 - GAP / 2)}
-        best = None
-        for cx, cy in sorted(candidates, key=lambda q: (-q[1], q[0])) + grid:
-            if cx + w > ax1 + 1e-9 or cy - h < ay0 - 1e-9:
-                continue
-            rect = box(cx, cy - h, cx + w, cy)
-            if inside.contains(rect) and not any(rect.intersects(r) and
-                                                 rect.intersection(r).area > 1e-6 for r in placed):
-                best = rect
-                break
-        if best is None:
-            offsets.append(None)
-            continue
-        placed.append(best)
-        bx0, by0, _, by1 = best.bounds
-        offsets.append((bx0 + GAP / 2 - x0, by1 - GAP / 2 - y1))
-    return offsets
-
-
 def _area(panel: Panel) -> float:
     x0, y0, x1, y1 = panel.bounds()
     return (x1 - x0) * (y1 - y0)
@@ -244,30 +205,22 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
     mu = dict(sol.scales) if own else decide_scales(scene, sol.construction, sol.ev, sol.plans,
                                                     size, standard)
     r = room(size, standard, lang)
-    parts = [p for p in (_kinematics_panels(sol, mu, lang, r), _force_panels(sol, mu, lang, r))
-             if p]
-    groups: list[list[tuple[Panel, tuple[float, float]]]] = []
+    panels = _kinematics_panels(sol, mu, lang, r) + _force_panels(sol, mu, lang, r)
     base = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION], lang)}
     base.update({k: v for k, v in scene.drawing.title_block.items() if v})
-    for part in parts:
-        rest = list(part)
-        if len(groups) > 1:
-            # the kinematics overflowed: its last sheet takes the first force panels too
-            rest = [q for q, _ in groups.pop()] + rest
-        while rest:
-            frame = make_frame(size, standard, base, language=lang)
-            offsets = _pack(rest, packing_area(frame))
-            if offsets[0] is None:
-                x0, y0, x1, y1 = rest[0].bounds()
-                fixed = ", ".join(f"{k} = {significant(v, 6, 'en')}"
-                                  for k, v in scene.drawing.scales.items())
-                raise DrawingError(
-                    f"the panel '{rest[0].name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not "
-                    f"fit on an {size} sheet at the scale factors {fixed or 'chosen'}; use a "
-                    "larger sheet (--sheet A1 or A0) or larger scale factors in [drawing.scales]",
-                    file=scene.path)
-            groups.append([(p, o) for p, o in zip(rest, offsets) if o is not None])
-            rest = [p for p, o in zip(rest, offsets) if o is None]
+    # one stream in reading order: kinetostatics fills the free room kinematics leaves
+    found = fewest_sheets(panels, packing_area(make_frame(size, standard, base, language=lang)),
+                          split=True)
+    if isinstance(found, Panel):
+        x0, y0, x1, y1 = found.bounds()
+        fixed = ", ".join(f"{k} = {significant(v, 6, 'en')}"
+                          for k, v in scene.drawing.scales.items())
+        raise DrawingError(
+            f"the panel '{found.name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not "
+            f"fit on an {size} sheet at the scale factors {fixed or 'chosen'}; use a "
+            "larger sheet (--sheet A1 or A0) or larger scale factors in [drawing.scales]",
+            file=scene.path)
+    groups = [list(zip(p, o)) for p, o in found]
     sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)
     return Composition(sheets, groups, mu, size, standard)
 

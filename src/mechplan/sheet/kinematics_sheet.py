@@ -196,16 +196,21 @@ def tables_of(panel: Panel, title: str) -> Panel:
     return out
 
 
+#: room above a titled grid for its title (5 mm text 4 mm above the cells)
+GRID_TITLE_MM = 12.0
+
+
 def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
-         gap: float = 6.0, same_origin: bool = False) -> list[Panel]:
+         gap: float = 6.0, same_origin: bool = False, title: str | None = None) -> list[Panel]:
     """Panels in reading order on a grid of equal cells, as few grid panels as fit the room.
 
     ``same_origin``: the cells' own x = 0 (a diagram's φ = 0) falls at the same place in every
     column, so diagrams drawn one under another share their φ axis; otherwise each cell's left
-    edge is at its column's left.
+    edge is at its column's left. With a title, each grid panel has it above its cells (within
+    ``height_mm``) and can be redrawn (``Panel.refit(w, h)``) as a first part of at most w × h
+    with its other cells and those of the later grid panels laid out again for the room — so the
+    layout fills a sheet's free room with the first rows and carries the others over.
     """
-    from .layout import moved
-
     if not cells:
         return []
     boxes = [c.bounds() for c in cells]
@@ -214,17 +219,50 @@ def grid(name: str, cells: list[Panel], width_mm: float, height_mm: float,
         boxes = [(left, b[1], b[2], b[3]) for b in boxes]
     cw = max(b[2] - b[0] for b in boxes) + gap
     ch = max(b[3] - b[1] for b in boxes) + gap
-    cols = max(1, min(len(cells), int((width_mm + gap) // cw)))
-    rows_per = max(1, int((height_mm + gap) // ch))
-    if len(cells) <= cols * rows_per:            # full rows: as few columns as the rows allow
-        cols = math.ceil(len(cells) / math.ceil(len(cells) / cols))
-    out: list[Panel] = []
+
+    def shape(w: float, h: float) -> tuple[int, int]:
+        h -= GRID_TITLE_MM if title else 0.0
+        cols = max(1, min(len(cells), int((w + gap) // cw)))
+        rows_per = max(1, int((h + gap) // ch))
+        if len(cells) <= cols * rows_per:            # full rows: as few columns as rows allow
+            cols = math.ceil(len(cells) / math.ceil(len(cells) / cols))
+        return cols, rows_per
+
+    cols, rows_per = shape(width_mm, height_mm)
     per = cols * rows_per
+    out: list[Panel] = []
     for start in range(0, len(cells), per):
-        panel = Panel(f"{name}-{start // per + 1}" if len(cells) > per else name, [])
-        for i, (cell, b) in enumerate(zip(cells[start:start + per], boxes[start:start + per])):
-            col, row = i % cols, i // cols
-            dx, dy = col * cw - b[0], -row * ch - b[3]
-            panel.primitives.extend(moved(p, dx, dy) for p in cell.primitives)
+        chunk = cells[start:start + per]
+        panel = _grid_panel(f"{name}-{start // per + 1}" if len(cells) > per else name,
+                            chunk, boxes[start:start + per], cols, cw, ch, title)
+        if title:
+            drawn: dict[tuple[int, int], list[Panel]] = {}
+
+            def refit(w: float, h: float, start: int = start, cname: str = panel.name,
+                      drawn: dict[tuple[int, int], list[Panel]] = drawn) -> list[Panel]:
+                c, r = shape(w, h)
+                if (c, r) not in drawn:
+                    cut = start + c * r
+                    head = _grid_panel(f"{cname}-1", cells[start:cut], boxes[start:cut], c, cw,
+                                       ch, title)
+                    drawn[c, r] = [head] + grid(f"{cname}-2", cells[cut:], width_mm, height_mm,
+                                                gap, same_origin, title)
+                return list(drawn[c, r])
+            panel.refit = refit
         out.append(panel)
     return out
+
+
+def _grid_panel(name: str, cells: list[Panel], boxes: list[tuple[float, float, float, float]],
+                cols: int, cw: float, ch: float, title: str | None) -> Panel:
+    from .layout import moved
+
+    panel = Panel(name, [])
+    for i, (cell, b) in enumerate(zip(cells, boxes)):
+        col, row = i % cols, i // cols
+        dx, dy = col * cw - b[0], -row * ch - b[3]
+        panel.primitives.extend(moved(p, dx, dy) for p in cell.primitives)
+    if title:
+        x0, _y0, _x1, y1 = panel.bounds()
+        panel.primitives.append(Text((x0, y1 + 4.0), title, TITLE_H))
+    return panel

@@ -7,12 +7,14 @@ title block with its number and the total.
 from __future__ import annotations
 
 import dataclasses
+import itertools
+import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
-from shapely import box
+import numpy as np
+from shapely import box, get_coordinates
 from shapely.geometry.base import BaseGeometry
-from shapely.prepared import prep
 
 from ..drafting.frame import FrameLayout, make_frame
 from ..drafting.primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
@@ -20,6 +22,8 @@ from ..errors import DrawingError
 from .panels import Panel
 
 GAP = 8.0          # mm between panels
+#: the coverage a full sheet (not the last of its set) should reach
+GOAL = 0.55
 
 #: enlargements of a capability sheet's drawings and diagrams tried, largest first; text heights
 #: and tables keep their size
@@ -55,41 +59,255 @@ def drawing_area(frame: FrameLayout) -> BaseGeometry:
         frame.drawing_area)
 
 
+class Bounds:
+    """``Panel.bounds`` remembered while a set of panels is packed (and its panels kept alive,
+    so that an id is never reused for another panel)."""
+
+    def __init__(self) -> None:
+        self._known: dict[int, tuple[Panel, int, tuple[float, float, float, float]]] = {}
+
+    def __call__(self, panel: Panel) -> tuple[float, float, float, float]:
+        known = self._known.get(id(panel))
+        if known is None or known[1] != len(panel.primitives):
+            known = (panel, len(panel.primitives), panel.bounds())
+            self._known[id(panel)] = known
+        return known[2]
+
+
+def _footprint(panel: Panel, bounds: Callable[[Panel], tuple[float, float, float, float]]
+               ) -> tuple[float, float, float, float, float, float]:
+    """(x0, y0, x1, y1) of a panel and its width and height with the gap around it."""
+    x0, y0, x1, y1 = bounds(panel)
+    return x0, y0, x1, y1, x1 - x0 + GAP, y1 - y0 + GAP
+
+
+def _overlaps(rects: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """For rectangles (..., 4) as (x0, y0, x1, y1): whether each overlaps any of ``boxes``."""
+    if not len(boxes):
+        return np.zeros(rects.shape[:-1], dtype=bool)
+    r = rects[..., None, :]
+    e = 1e-6
+    hit = ((boxes[:, 0] < r[..., 2] - e) & (boxes[:, 2] > r[..., 0] + e)
+           & (boxes[:, 1] < r[..., 3] - e) & (boxes[:, 3] > r[..., 1] + e))
+    return np.asarray(hit.any(axis=-1))
+
+
+class Sheetful:
+    """The free room of one drawing area as panels are put on it (each with the gap around it).
+
+    The area is its bounding box less rectangles (the title block's corner). A spot is found
+    exactly: a rectangle that fits can be slid left and up until its left edge lies on a
+    vertical edge of the area or of a placed box and its top edge on a horizontal one, so those
+    edges are the only candidates; the highest, then leftmost, is taken.
+    """
+
+    def __init__(self, area: BaseGeometry, *, columns: bool = False,
+                 bounds: Bounds | None = None) -> None:
+        """``columns``: take the leftmost, then highest spot (fill columns, not rows)."""
+        self.columns = columns
+        self.panel_bounds = bounds or Bounds()
+        self.bounds = area.bounds
+        cut = box(*self.bounds).difference(area)
+        pieces = list(getattr(cut, "geoms", [cut])) if not cut.is_empty else []
+        blocked = [g.bounds for g in pieces]
+        if any(abs(box(*b).area - g.area) > 1e-6 for b, g in zip(blocked, pieces)):
+            raise DrawingError("the drawing area must be a rectangle less rectangles")
+        self.blocked = np.asarray(blocked, dtype=float).reshape(-1, 4)
+        self.boxes = np.zeros((0, 4))
+        corners = get_coordinates(area)
+        self.xs, self.ys = set(corners[:, 0].tolist()), set(corners[:, 1].tolist())
+
+    def _obstacles(self) -> np.ndarray:
+        return np.vstack([self.blocked, self.boxes])
+
+    def _edges(self) -> tuple[np.ndarray, np.ndarray]:
+        xs = np.array(sorted(self.xs | set(self.boxes[:, 2].tolist())))
+        ys = np.array(sorted(self.ys | set(self.boxes[:, 1].tolist()), reverse=True))
+        return xs, ys
+
+    def spot(self, w: float, h: float) -> tuple[float, float] | None:
+        """The top-left corner of the highest, then leftmost, free w × h rectangle, or None."""
+        ax0, ay0, ax1, ay1 = self.bounds
+        xs, ys = self._edges()
+        cx, cy = np.meshgrid(xs, ys)              # rows: y from the top, columns: x
+        rects = np.stack([cx, cy - h, cx + w, cy], axis=-1)
+        ok = ((rects[..., 0] >= ax0 - 1e-9) & (rects[..., 2] <= ax1 + 1e-9)
+              & (rects[..., 1] >= ay0 - 1e-9) & (rects[..., 3] <= ay1 + 1e-9))
+        ok &= ~_overlaps(rects, self._obstacles())
+        if self.columns:
+            found = np.argwhere(ok.T)             # leftmost, then highest
+            if not len(found):
+                return None
+            i, j = found[0]
+        else:
+            found = np.argwhere(ok)               # row-major: highest, then leftmost
+            if not len(found):
+                return None
+            j, i = found[0]
+        return float(xs[i]), float(ys[j])
+
+    def free_rectangles(self) -> list[tuple[float, float]]:
+        """Sizes (w, h) of the free rectangles between the edges, largest area first."""
+        ax0, ay0, ax1, ay1 = self.bounds
+        xs, ys = self._edges()
+        x0, y1, x1, y0 = np.meshgrid(xs, ys, xs, ys, indexing="ij", sparse=False)
+        rects = np.stack([x0, y0, x1, y1], axis=-1)
+        ok = (x1 > x0 + 1e-9) & (y1 > y0 + 1e-9)
+        ok &= (x0 >= ax0 - 1e-9) & (x1 <= ax1 + 1e-9) & (y0 >= ay0 - 1e-9) & (y1 <= ay1 + 1e-9)
+        rects = rects[ok]
+        rects = rects[~_overlaps(rects, self._obstacles())]
+        sizes = {(round(float(r[2] - r[0]), 6), round(float(r[3] - r[1]), 6)) for r in rects}
+        return sorted(sizes, key=lambda wh: -wh[0] * wh[1])
+
+    def put(self, panel: Panel) -> tuple[float, float] | None:
+        """Place a panel at its spot: the offset that moves it there, or None (no room)."""
+        x0, _y0, _x1, y1, w, h = _footprint(panel, self.panel_bounds)
+        at = self.spot(w, h)
+        if at is None:
+            return None
+        cx, cy = at
+        self.boxes = np.vstack([self.boxes, [cx, cy - h, cx + w, cy]])
+        # a panel's box includes the gap: half of it keeps the panel off the area's edge
+        return (cx + GAP / 2 - x0, cy - GAP / 2 - y1)
+
+
 def pack(panels: Sequence[Panel],
          area: BaseGeometry) -> tuple[list[tuple[float, float]], int | None]:
-    """Top-left-first packing; return the offsets of the panels placed and the first that did not
-    fit."""
-    inside = prep(area)
-    ax0, ay0, ax1, ay1 = area.bounds
-    placed: list[BaseGeometry] = []
+    """Top-left-first packing in order; return the offsets of the panels placed and the first
+    that did not fit (None when all did)."""
+    room = Sheetful(area)
     offsets: list[tuple[float, float]] = []
     for index, panel in enumerate(panels):
-        x0, y0, x1, y1 = panel.bounds()
-        w, h = x1 - x0 + GAP, y1 - y0 + GAP
-        if w > ax1 - ax0 or h > ay1 - ay0:
+        at = room.put(panel)
+        if at is None:
             return offsets, index
-        # a panel's box includes the gap: half of it keeps the panel off the area's edge
-        candidates = {(ax0, ay1)}
-        for r in placed:
-            bx0, by0, bx1, by1 = r.bounds
-            candidates |= {(bx1, by1), (bx0, by0), (ax0, by0), (bx1, ay1)}
-        grid = [(ax0 + i * 10.0, ay1 - j * 10.0) for j in range(int((ay1 - ay0 - h) / 10) + 1)
-                for i in range(int((ax1 - ax0 - w) / 10) + 1)]
-        best = None
-        for cx, cy in sorted(candidates, key=lambda q: (-q[1], q[0])) + grid:
-            if cx + w > ax1 or cy - h < ay0:
-                continue
-            rect = box(cx, cy - h, cx + w, cy)
-            if inside.contains(rect) and not any(rect.intersects(r) and
-                                                 rect.intersection(r).area > 1e-6 for r in placed):
-                best = rect
-                break
-        if best is None:
-            return offsets, index
-        placed.append(best)
-        bx0, by0, _, by1 = best.bounds
-        offsets.append((bx0 + GAP / 2 - x0, by1 - GAP / 2 - y1))
+        offsets.append(at)
     return offsets, None
+
+
+def chain(name: str) -> str:
+    """The panels whose names differ only by trailing part numbers ("velocity-all-1",
+    "velocity-all-2"; "table.1", "table.2") are one sequence: kept in order across sheets."""
+    return re.sub(r"([-.]\d+)+$", "", name)
+
+
+def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
+    """The panel redrawn in parts (``Panel.refit``), the first one fitting the free room of
+    this sheet; None when no part fits."""
+    if panel.refit is None:
+        return None
+    for w, h in room.free_rectangles()[:6]:
+        if w <= GAP or h <= GAP:
+            continue
+        parts = panel.refit(w - GAP, h - GAP)
+        x0, y0, x1, y1 = room.panel_bounds(parts[0])
+        if x1 - x0 <= w - GAP + 1e-9 and y1 - y0 <= h - GAP + 1e-9 \
+                and room.spot(x1 - x0 + GAP, y1 - y0 + GAP) is not None:
+            return parts
+    return None
+
+
+def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False,
+             columns: bool = False, bounds: Bounds | None = None) -> Groups | Panel:
+    """The panels, in reading order, on as few sheets as the packing needs.
+
+    Each sheet takes every remaining panel that still fits its free room (so no panel on a
+    later sheet would have fitted an earlier one), except that the parts of one sequence
+    (:func:`chain`) keep their order. With ``split``, a panel that can be redrawn in parts
+    (``Panel.refit``: a grid of small plans) and does not fit is split so that its first part
+    fills the free room; its parts stand for it and for the later panels of its sequence
+    (the grid's other cells), which are dropped. ``columns``: each panel at the leftmost, then
+    highest spot. Return
+    (panels, offsets) per sheet, or the first panel that fits no empty sheet.
+    """
+    groups: Groups = []
+    rest = list(panels)
+    bounds = bounds or Bounds()
+    while rest:
+        room = Sheetful(area, columns=columns, bounds=bounds)
+        placed: list[Panel] = []
+        offsets: list[tuple[float, float]] = []
+        left: list[Panel] = []
+        queue = list(rest)
+        while queue:
+            panel = queue.pop(0)
+            if any(chain(q.name) == chain(panel.name) for q in left):
+                left.append(panel)
+                continue
+            at = room.put(panel)
+            if at is None and split and placed:
+                parts = _split_into(room, panel)
+                if parts is not None:
+                    same = chain(panel.name)
+                    queue = parts + [q for q in queue if chain(q.name) != same]
+                    left = [q for q in left if chain(q.name) != same]
+                    continue
+            if at is None:
+                left.append(panel)
+            else:
+                placed.append(panel)
+                offsets.append(at)
+        if not placed:
+            return rest[0]
+        groups.append((placed, offsets))
+        rest = left
+    return groups
+
+
+def _height(panel: Panel) -> float:
+    _x0, y0, _x1, y1 = panel.bounds()
+    return y1 - y0
+
+
+def _area_of(panel: Panel) -> float:
+    x0, y0, x1, y1 = panel.bounds()
+    return (x1 - x0 + GAP) * (y1 - y0 + GAP)
+
+
+def _reordered(panels: Sequence[Panel], key: Callable[[Panel], float]) -> list[Panel]:
+    """The first panel, then the others by ``key`` descending; the parts of a sequence stay
+    together and in order (ranked by their first part)."""
+    rank: dict[str, float] = {}
+    for p in panels[1:]:
+        rank.setdefault(chain(p.name), key(p))
+    rest = sorted(panels[1:], key=lambda p: -rank[chain(p.name)])     # stable: order kept
+    return list(panels[:1]) + rest
+
+
+def fewest_sheets(panels: Sequence[Panel], area: BaseGeometry, *,
+                  split: bool = False) -> Groups | Panel:
+    """:func:`paginate` in reading order, rows first — or, when one saves a sheet, in columns
+    first, or with the panels after the first taken tallest first or largest first."""
+    bounds = Bounds()
+    best = paginate(panels, area, split=split, bounds=bounds)
+    if isinstance(best, Panel) or len(best) == 1:
+        return best
+    orders = [list(panels), _reordered(panels, _height), _reordered(panels, _area_of)]
+    for order, columns in itertools.product(orders, (False, True)):
+        other = paginate(order, area, split=split, columns=columns, bounds=bounds)
+        if isinstance(other, Panel):
+            continue
+        if len(other) < len(best) or (len(other) == len(best) and _fuller(other, best, area)):
+            best = other
+    return best
+
+
+def _fuller(a: Groups, b: Groups, area: BaseGeometry) -> bool:
+    """Tell whether sheets ``a`` fill their full sheets (all but the last) clearly better than
+    ``b`` where ``b`` leaves one under :data:`GOAL`: the emptiest of them covered 10 points more
+    (the reading order is kept otherwise)."""
+    def emptiest(groups: Groups) -> float:
+        return min((coverage(list(zip(p, o)), area) for p, o in groups[:-1]), default=1.0)
+    return emptiest(b) < GOAL and emptiest(a) > emptiest(b) + 0.10
+
+
+def coverage(placed: Sequence[tuple[Panel, tuple[float, float]]], area: BaseGeometry) -> float:
+    """The share of a sheet's drawing area covered by the boxes of its panels."""
+    used = 0.0
+    for panel, _ in placed:
+        x0, y0, x1, y1 = panel.bounds()
+        used += (x1 - x0) * (y1 - y0)
+    return used / area.area
 
 
 @dataclass(frozen=True)
@@ -157,16 +375,7 @@ def refitted(panels: Sequence[Panel], area: BaseGeometry) -> list[Panel]:
 def _flow(panels: Sequence[Panel], area: BaseGeometry) -> Groups | Panel:
     """The panels, in order (refitted to the area), packed sheet after sheet: (panels, offsets)
     per sheet — or the first panel that does not fit on a sheet alone."""
-    groups: Groups = []
-    rest = refitted(panels, area)
-    while rest:
-        offsets, failed = pack(rest, area)
-        if failed == 0:
-            return rest[0]
-        n = len(offsets) if failed is not None else len(rest)
-        groups.append((rest[:n], offsets))
-        rest = rest[n:]
-    return groups
+    return fewest_sheets(refitted(panels, area), area)
 
 
 def _search(build: Callable[[float], Sequence[Panel]], area: BaseGeometry,

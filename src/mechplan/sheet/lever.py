@@ -10,12 +10,13 @@ from ..construct.graph import Construction, Evaluation
 from ..construct.ops import Drawn, spec
 from ..construct.ops.force import lever_terms
 from ..construct.segments import SegmentKind
+from ..construct.terms import pole_label
 from ..drafting.labels import LabelPlacer
 from ..drafting.primitives import Arrow, Circle, Line, Role, Text
 from ..i18n import message, unit
 from ..i18n import number as format_number
 from ..model.plans import Plan
-from .panels import LABEL_H, TABLE_H, TITLE_H, Panel, _finite, mu_text
+from .panels import LABEL_H, SAME_POINT_MM, TABLE_H, TITLE_H, Panel, _finite, mu_text
 
 
 def lever_title(lang: str, phi_deg: float) -> str:
@@ -36,6 +37,7 @@ def zhukovsky_lever(
     def turned(v: np.ndarray) -> tuple[float, float]:
         return (-float(v[1]) / mu_v, float(v[0]) / mu_v)
 
+    vertices: dict[str, tuple[float, float]] = {}
     for seg in c.segments:
         if (
             seg.plan is Plan.VELOCITY
@@ -44,8 +46,10 @@ def zhukovsky_lever(
             and seg.end in ev.values
         ):
             a, b = turned(ev[seg.start][k]), turned(ev[seg.end][k])
-            if _finite(a, b) and math.dist(a, b) > 0.5:
-                prims.append(Line(a, b, Role.THIN))
+            if _finite(a, b):
+                vertices.update({seg.start: a, seg.end: b})
+                if math.dist(a, b) > 0.5:
+                    prims.append(Line(a, b, Role.THIN))
     forces: list[tuple[tuple[float, float], np.ndarray, str]] = []
     couples: list[str] = []
     for term in lever_terms(lever):
@@ -68,10 +72,16 @@ def zhukovsky_lever(
                 prims.append(Arrow(at, tip, Role.OUTLINE, head_length_mm=3.0, head_width_mm=1.0))
                 placer_items.append((tip, label))
         prims.append(Circle((0.0, 0.0), 0.8, Role.OUTLINE))
-        placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H)
-        prims.append(placer.place((0.0, 0.0), "p"))
+        spots = _vertex_labels(c, vertices, lang)
+        placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H,
+                             [xy for xy, _ in spots])
+        for xy, label in spots:
+            if xy != (0.0, 0.0):
+                prims.append(Circle(xy, 0.5, Role.OUTLINE))
+            prims.append(placer.place(xy, label))
         for at, label in placer_items:
             prims.append(placer.place(at, label))
+        prims.extend(placer.leaders)
         x0, y0, _x1, y1 = panel.bounds()
         prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
         prims.append(
@@ -88,3 +98,16 @@ def zhukovsky_lever(
             prims.append(Text((x0, y), line, TABLE_H))
             y -= 4.5
     return panel if prims else None
+
+
+def _vertex_labels(c: Construction, vertices: dict[str, tuple[float, float]],
+                   lang: str) -> list[tuple[tuple[float, float], str]]:
+    """The lever's vertices (the turned velocity images, the pole p first), points closer than
+    SAME_POINT_MM written once as "c≡d"."""
+    seen: list[tuple[tuple[float, float], list[str]]] = [((0.0, 0.0), [])]
+    for sid, xy in vertices.items():
+        here = next((names for at, names in seen if math.dist(at, xy) < SAME_POINT_MM), None)
+        if here is None:
+            seen.append((xy, here := []))
+        here.append(pole_label(c[sid].label, lang))
+    return [(xy, "≡".join(dict.fromkeys(names or ["p"]))) for xy, names in seen]

@@ -38,6 +38,8 @@ from ..drafting.primitives import (
 from ..i18n import message, scale_factor, unit
 from ..i18n import number as format_number
 from ..model.plans import Plan
+from .link_outline import drawn as draw_figure
+from .link_outline import link_figures
 
 #: line style of an operation's drawing rule → layer role
 ROLES = {LineStyle.DASHED: Role.DASHED, LineStyle.THIN: Role.THIN, LineStyle.OUTLINE: Role.OUTLINE}
@@ -227,6 +229,7 @@ def vector_plan(
                          [xy for xy, _ in seen])
     for anchor, labels in seen:
         prims.append(placer.place(anchor, "≡".join(dict.fromkeys(labels))))
+    prims.extend(placer.leaders)
     _title_and_tables(panel, c, ev, k, plan, mu, lang, title, segments, group)
     return panel
 
@@ -314,19 +317,15 @@ def position_plan(
         for lk in links
     }
 
-    # a link's outline: its joints, then the points no other link joins (a coupler point E
-    # closes the rigid triangle B, C, E)
-    outline = {lk.id: joints[lk.id] + [p for p in lk.points if p not in joints[lk.id]]
-               if len(joints[lk.id]) >= 2 else joints[lk.id] for lk in links}
+    # a link's outline (a coupler point E closes the rigid triangle B, C, E) and the line of
+    # each guide it carries through the blocks sliding in it (a coulisse O3–A–B)
+    figures = link_figures(mech)
 
     def draw_links(ev: Evaluation, k: int, role: Role) -> None:
         for lk in links:
-            pts = [_mm(ev[_pos(ev, p)][k], mu) for p in outline[lk.id] if _has(ev, p)]
-            pts = [p for p in pts if _finite(p)]
-            if len(pts) == 2 and math.dist(*pts) > 1e-6:
-                prims.append(Line(pts[0], pts[1], role))
-            elif len(pts) > 2:
-                prims.append(Polyline(tuple(pts), role, closed=True))
+            at = {p: _mm(ev[_pos(ev, p)][k], mu) for p in figures[lk.id].points if _has(ev, p)}
+            prims.extend(draw_figure(figures[lk.id], {p: q for p, q in at.items() if _finite(q)},
+                                     role))
 
     # trajectories of points that do not move on a circle about the frame or along a guide
     crank = mech.drive.link
@@ -346,21 +345,14 @@ def position_plan(
     centre = _mm(ev_all[_pos(ev_all, mech.drive.pivot)][0], mu)
     radius = math.dist(centre, _mm(ev_all[_pos(ev_all, tip)][0], mu))
     prims.append(Circle(centre, radius, Role.CHAIN))
+    # the positions' numbers at the crank's tip, outward; placed with the points' labels
+    small_labels: list[tuple[tuple[float, float], str, float | None]] = []
     for k in range(ev_all.n):
         draw_links(ev_all, k, Role.OUTLINE if k in highlight else Role.THIN)
         tip_mm = _mm(ev_all[_pos(ev_all, tip)][k], mu)
         if _finite(tip_mm):
-            d = (tip_mm[0] - centre[0], tip_mm[1] - centre[1])
-            n = math.hypot(*d) or 1.0
-            prims.append(
-                Text(
-                    (tip_mm[0] + 4.0 * d[0] / n, tip_mm[1] + 4.0 * d[1] / n),
-                    numbers[k],
-                    2.5,
-                    halign=HAlign.CENTER,
-                    valign=VAlign.MIDDLE,
-                )
-            )
+            outward = math.degrees(math.atan2(tip_mm[1] - centre[1], tip_mm[0] - centre[0]))
+            small_labels.append((tip_mm, numbers[k], outward))
     if ev_ext is not None:
         for k in range(ev_ext.n):
             draw_links(ev_ext, k, Role.DASHED)
@@ -381,7 +373,7 @@ def position_plan(
         t = (travel - o) @ u
         a, b = o + (t.min() - 10 * mu) * u, o + (t.max() + 10 * mu) * u
         prims.append(Line(_mm(a, mu), _mm(b, mu), Role.CHAIN))
-        prims.append(Text(_mm(b, mu), g.name, 2.5))
+        small_labels.append((_mm(b, mu), g.name, None))
     # sliders, frame pivots and joints of the highlighted positions
     for k in highlight:
         for lk in links:
@@ -406,15 +398,17 @@ def position_plan(
             q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
             if _finite(q):
                 prims.append(Circle(q, 0.8, Role.OUTLINE))
+    anchors = {p: _mm(ev_all[_pos(ev_all, p)][k0], mu) for p in names if _has(ev_all, p)}
+    anchors = {p: q for p, q in anchors.items() if _finite(q)}
     marked = [p.center for p in prims if isinstance(p, Circle) and p.role is Role.OUTLINE
               and p.radius <= 1.0]
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline))], LABEL_H,
-                         marked, _ends(prims))
-    for p in names:
-        if _has(ev_all, p):
-            q = _mm(ev_all[_pos(ev_all, p)][k0], mu)
-            if _finite(q):
-                prims.append(placer.place(q, p))
+                         list(anchors.values()) + marked, _ends(prims))
+    for p, q in anchors.items():
+        prims.append(placer.place(q, p))
+    for at, text, toward in small_labels:
+        prims.append(placer.place(at, text, 2.5, toward))
+    prims.extend(placer.leaders)
     x0, _y0, _x1, y1 = panel.bounds()
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     prims.append(Text((x0, y1 + 3.0), mu_text(Plan.POSITION, mu, lang), LABEL_H))

@@ -105,6 +105,7 @@ def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
                          file=str(path)) from None
     if sub.skipped:
         sub.notes.append(Note("info", T("note.skipped", n=sub.skipped), str(path)))
+    _follow_leaders(sub)
     xs = [v for ln in sub.lines for v in (ln.start[0], ln.end[0])]
     ys = [v for ln in sub.lines for v in (ln.start[1], ln.end[1])]
     extent = max(max(xs) - min(xs), max(ys) - min(ys)) if xs else 0.0
@@ -126,6 +127,36 @@ def read_dxf(path: Path, raw: bytes | None = None) -> Submission:
                 else text.where
             sub.entries.extend(parse_assignments(line, where, at=text.centre))
     return sub
+
+
+#: leader lines (a label tied to its point) are on a layer named like these
+_LEADER_LAYER = re.compile(r"^(dimension|leader|выноск)", re.IGNORECASE)
+#: a leader's end this near (drawing units) a text's box ties the text to the leader (the
+#: box a reader estimates differs from the one drawn by about a millimetre)
+LEADER_TOUCH = 2.5
+
+
+def _follow_leaders(sub: Submission) -> None:
+    """Leader lines are not lines of a plan: each runs from a point to its label (as a DXF
+    LEADER does) and moves the text nearest its end to its start — a label placed away from a
+    crowded point is read at that point."""
+    leaders = [ln for ln in sub.lines if _LEADER_LAYER.match(ln.layer)]
+    if not leaders:
+        return
+    sub.lines = [ln for ln in sub.lines if not _LEADER_LAYER.match(ln.layer)]
+    for ln in leaders:
+        (x0, y0), (x1, y1) = ln.start, ln.end
+        along = (x1 - x0) ** 2 + (y1 - y0) ** 2
+        # the label lies beyond the leader's end, not beside it (a neighbour's label)
+        ahead = [(t.distance(ln.end), i) for i, t in enumerate(sub.texts)
+                 if (t.centre[0] - x0) * (x1 - x0) + (t.centre[1] - y0) * (y1 - y0) > along]
+        if not ahead:
+            continue
+        d, i = min(ahead)
+        # the width a reader estimates for a text may be off by a part of it
+        if d <= LEADER_TOUCH + 0.5 * sub.texts[i].half[0]:
+            sub.texts[i] = replace(sub.texts[i], centre=ln.start, anchor=ln.start,
+                                   half=(0.05, 0.05), rotation=0.0)
 
 
 #: a plan drawn on paper is smaller than an A0 sheet's long side with margin
