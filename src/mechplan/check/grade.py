@@ -41,7 +41,7 @@ from .drawn import classify_points, find_swaps, overrides_of, prepare
 from .hints import HintContext, depends_on, rule
 from .labels import label_book
 from .match import QuantityIndex, SegmentIndex, interpret
-from .positions import fit_score, grade_per_plan, several_positions
+from .positions import fit_score, grade_per_plan, several_positions, values_at_titled_positions
 from .report import (
     ACCUMULATED,
     CARRIED,
@@ -109,6 +109,7 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         report.phi_source = T("phi.best_of", n=len(candidates))
         if several_positions(ctx):
             report = grade_per_plan(ctx, reports, best, _grade)
+        values_at_titled_positions(ctx, reports, report)
     report.notes = list(dict.fromkeys(notes + report.notes))   # each note once
     if sheet is not None:
         report.label_distance_mm = sheet.label_distance

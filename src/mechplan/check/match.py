@@ -23,7 +23,7 @@ from ..submission.labels import (
     section_plan,
     written_mu,
 )
-from ..submission.read import Entry, Note
+from ..submission.read import Entry, Note, Point
 from ..submission.written import (
     case_key,
     is_angle_name,
@@ -83,6 +83,7 @@ class GivenValue:
     length_mm: float | None = None   # a length written with it ("pb = 67 mm → v_B = 6.7 m/s")
     length_half_unit: float = 0.0
     mu: float | None = None
+    at: Point | None = None          # where it is written on a sheet (mm)
 
 
 @dataclass
@@ -271,7 +272,7 @@ def _interpret_one(e: Entry, out: Interpretation, qi: QuantityIndex, si: Segment
         parsed = parse_value(vtext, q.dimension, e.where, notes, e.name)
         if parsed is None:
             return
-        gv = GivenValue(e.name, q, parsed[0], vtext, e.where, parsed[1])
+        gv = GivenValue(e.name, q, parsed[0], vtext, e.where, parsed[1], at=e.at)
         if e.length is not None and e.value is not None:
             number, half = number_and_half(e.length)
             gv.length_mm, gv.length_half_unit = number, half
@@ -307,7 +308,7 @@ def _table_segment(e: Entry, seg: Segment, key: PlanKey, length_text: str, out: 
             parsed = parse_value(e.value, q.dimension, e.where, notes, qname)
             if parsed is not None:
                 out.values.append(GivenValue(qname, q, parsed[0], e.value, e.where,
-                                             parsed[1], number, half, row_mu))
+                                             parsed[1], number, half, row_mu, e.at))
         else:
             notes.append(Note("warning", T("note.unknown_quantity", name=qname), e.where))
     out.segments.append(TableSegment(seg, key, e.name, e.where, number, half, row_mu))

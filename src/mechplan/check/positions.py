@@ -11,12 +11,17 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 from collections.abc import Callable, Sequence
 
 import numpy as np
 
+from ..errors import MechplanError
+from ..submission.read import Point
+from ..submission.written import is_angle_name, parse_angle
 from .context import Ctx
-from .report import SLIP, WRONG, CheckReport, PlanReport, PointRow, SegmentRow, ValueRow
+from .report import (SLIP, WRONG, CheckReport, Finding, PlanReport, PointRow, SegmentRow,
+                     ValueRow)
 from .texts import T
 
 Grader = Callable[[Ctx, int], CheckReport]
@@ -77,3 +82,72 @@ def grade_per_plan(ctx: Ctx, reports: list[CheckReport], best: int,
     first = graded[0].phi_deg if drawn else None
     out.phi_deg = base.phi_deg if first is None else first
     return out
+
+
+#: what a title writes before its crank angle: "Zhukovsky's lever — φ", "Position 10, φ"
+_TITLE_TAIL = re.compile(r"[\s,;:—–-]+")
+#: a title's angle is a candidate position's when they differ by less than this (degrees)
+_SAME_ANGLE_DEG = 0.05
+
+
+def titled_angles(ctx: Ctx) -> list[tuple[Point, float]]:
+    """The crank angles the sheet writes in titles ("Zhukovsky's lever — φ = 30°", "Position 10,
+    φ = 300°"), each with where its title stands."""
+    if ctx.sheet is None:
+        return []
+    out: list[tuple[Point, float]] = []
+    for e in ctx.sheet.other_entries:
+        words = [w for w in _TITLE_TAIL.split(e.name.strip()) if w]
+        text = e.text or e.value
+        if e.at is None or len(words) < 2 or not is_angle_name(words[-1]) or not text:
+            continue
+        try:
+            out.append((e.at, parse_angle(text)))
+        except MechplanError:
+            continue
+    return out
+
+
+def _position_of(angle: float, reports: Sequence[CheckReport]) -> int | None:
+    """The candidate position at the crank angle ``angle`` (degrees), if one is."""
+    for k, r in enumerate(reports):
+        if abs((angle - r.phi_deg + 180.0) % 360.0 - 180.0) < _SAME_ANGLE_DEG:
+            return k
+    return None
+
+
+def values_at_titled_positions(ctx: Ctx, reports: list[CheckReport], out: CheckReport) -> None:
+    """Grade each written value at the crank angle of the title it is written under.
+
+    A value written on a panel titled with its position (Zhukovsky's lever "— φ = 30°" with its
+    M_b beneath) belongs to that position, whatever position the other plans of the sheet fit
+    best. The title is the nearest one that stands above the value (a panel is titled above its
+    drawing); a value with no such title, or whose title's angle is no candidate position,
+    keeps the grade ``out`` gave it. ``reports[k]`` graded every value at candidate k, in the
+    order of ``ctx.interp.values``.
+    """
+    titles = titled_angles(ctx)
+    if not titles or len(out.values) != len(ctx.interp.values):
+        return
+    out.values = list(out.values)
+    for i, gv in enumerate(ctx.interp.values):
+        if gv.at is None:
+            continue
+        above = [(math.dist(at, gv.at), angle) for at, angle in titles
+                 if at[1] >= gv.at[1] - 1.0]
+        if not above:
+            continue
+        k = _position_of(min(above)[1], reports)
+        if k is None or len(reports[k].values) != len(out.values):
+            continue
+        row = reports[k].values[i]
+        if row is out.values[i]:
+            continue
+
+        def about(f: Finding, name: str = gv.written, step: str = gv.quantity.step or "") -> bool:
+            return f.kind in ("wrong value", "arithmetic slip") and (f.subject, f.step) == (
+                name, step)
+
+        out.values[i] = row
+        out.findings = [f for f in out.findings if not about(f)]
+        out.findings += [f for f in reports[k].findings if about(f)]
