@@ -17,7 +17,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from ..errors import MechplanError
-from ..submission.read import Point
+from ..submission.read import Entry, Note, Point
 from ..submission.written import is_angle_name, parse_angle
 from .context import Ctx
 from .report import (SLIP, WRONG, CheckReport, Finding, PlanReport, PointRow, SegmentRow,
@@ -90,19 +90,19 @@ _TITLE_TAIL = re.compile(r"[\s,;:—–-]+")
 _SAME_ANGLE_DEG = 0.05
 
 
-def titled_angles(ctx: Ctx) -> list[tuple[Point, float]]:
+def titled_angles(ctx: Ctx) -> list[tuple[Point, float, Entry]]:
     """The crank angles the sheet writes in titles ("Zhukovsky's lever — φ = 30°", "Position 10,
-    φ = 300°"), each with where its title stands."""
+    φ = 300°"), each with where its title stands and the title."""
     if ctx.sheet is None:
         return []
-    out: list[tuple[Point, float]] = []
+    out: list[tuple[Point, float, Entry]] = []
     for e in ctx.sheet.other_entries:
         words = [w for w in _TITLE_TAIL.split(e.name.strip()) if w]
         text = e.text or e.value
         if e.at is None or len(words) < 2 or not is_angle_name(words[-1]) or not text:
             continue
         try:
-            out.append((e.at, parse_angle(text)))
+            out.append((e.at, parse_angle(text), e))
         except MechplanError:
             continue
     return out
@@ -133,11 +133,12 @@ def values_at_titled_positions(ctx: Ctx, reports: list[CheckReport], out: CheckR
     for i, gv in enumerate(ctx.interp.values):
         if gv.at is None:
             continue
-        above = [(math.dist(at, gv.at), angle) for at, angle in titles
+        above = [(math.dist(at, gv.at), angle, e) for at, angle, e in titles
                  if at[1] >= gv.at[1] - 1.0]
         if not above:
             continue
-        k = _position_of(min(above)[1], reports)
+        _, angle, title = min(above, key=lambda t: t[0])
+        k = _position_of(angle, reports)
         if k is None or len(reports[k].values) != len(out.values):
             continue
         row = reports[k].values[i]
@@ -149,5 +150,9 @@ def values_at_titled_positions(ctx: Ctx, reports: list[CheckReport], out: CheckR
                 name, step)
 
         out.values[i] = row
+        out.notes.append(Note("info", T("note.value_at_title", name=gv.written,
+                                        phi=reports[k].phi_deg,
+                                        title=f"{title.name} = {title.text or title.value}"),
+                              gv.where))
         out.findings = [f for f in out.findings if not about(f)]
         out.findings += [f for f in reports[k].findings if about(f)]
