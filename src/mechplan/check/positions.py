@@ -20,8 +20,7 @@ from ..errors import MechplanError
 from ..submission.read import Entry, Note, Point
 from ..submission.written import is_angle_name, parse_angle
 from .context import Ctx
-from .report import (SLIP, WRONG, CheckReport, Finding, PlanReport, PointRow, SegmentRow,
-                     ValueRow)
+from .report import SLIP, WRONG, CheckReport, Finding, PlanReport, PointRow, SegmentRow, ValueRow
 from .texts import T
 
 Grader = Callable[[Ctx, int], CheckReport]
