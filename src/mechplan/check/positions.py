@@ -11,10 +11,14 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 from collections.abc import Callable, Sequence
 
 import numpy as np
 
+from ..errors import MechplanError
+from ..submission.read import Entry
+from ..submission.written import is_angle_name, parse_angle
 from .context import Ctx
 from .report import SLIP, WRONG, CheckReport, PlanReport, PointRow, SegmentRow, ValueRow
 from .texts import T
@@ -23,11 +27,35 @@ Grader = Callable[[Ctx, int], CheckReport]
 
 
 def several_positions(ctx: Ctx) -> bool:
-    """Whether the sheet holds more than one drawn plan of a kind (e.g. velocity plans #1, #2)."""
+    """Whether the sheet holds more than one drawn plan of a kind (e.g. velocity plans #1, #2),
+    or plans under texts that name different crank angles ("velocity plan, φ = 1°" beside
+    "acceleration plan, φ = 61°": a velocity plan of another position next to the plans of one)."""
     if ctx.sheet is None:
         return False
     kinds = [dp.plan for dp in ctx.sheet.plans]
-    return len(set(kinds)) < len(kinds)
+    if len(set(kinds)) < len(kinds):
+        return True
+    return len(kinds) > 1 and len(written_angles(ctx.sub.entries)) > 1
+
+
+#: the last word of a text's name: "velocity plan — position 1, φ" → "φ"
+_LAST_WORD = re.compile(r"[^\s,，:;—–-]+$")
+
+
+def written_angles(entries: Sequence[Entry]) -> set[float]:
+    """The distinct crank angles (° in [0, 360), to 0.01°) written on a sheet: "φ = 60°" alone or
+    at the end of a title ("position 11, φ = 1.0°")."""
+    found: set[float] = set()
+    for e in entries:
+        word = _LAST_WORD.search(e.name.strip())
+        if word is None or not is_angle_name(word.group()):
+            continue
+        try:
+            value = parse_angle(e.text or e.value or e.length or "")
+        except MechplanError:
+            continue
+        found.add(round(value % 360.0, 2) % 360.0)
+    return found
 
 
 def fit_score(rows: Sequence[SegmentRow | ValueRow],
