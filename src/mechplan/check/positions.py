@@ -16,9 +16,7 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from ..errors import MechplanError
-from ..submission.read import Entry
-from ..submission.written import is_angle_name, parse_angle
+from ..submission.read import SheetText
 from .context import Ctx
 from .report import SLIP, WRONG, CheckReport, PlanReport, PointRow, SegmentRow, ValueRow
 from .texts import T
@@ -35,27 +33,19 @@ def several_positions(ctx: Ctx) -> bool:
     kinds = [dp.plan for dp in ctx.sheet.plans]
     if len(set(kinds)) < len(kinds):
         return True
-    return len(kinds) > 1 and len(written_angles(ctx.sub.entries)) > 1
+    return len(kinds) > 1 and len(written_angles(ctx.sub.texts)) > 1
 
 
-#: the last word of a text's name: "velocity plan — position 1, φ" → "φ"
-_LAST_WORD = re.compile(r"[^\s,，:;—–-]+$")
+#: a crank angle written on a sheet, alone or ending a plan's title: "φ = 60°", "position 11,
+#: φ = 1,0°", "phi1 = 30 deg" (not a scale "μφ = 4 °/mm")
+_WRITTEN_PHI = re.compile(r"(?<!\w)(?:φ|ϕ|phi)_?1?\s*=\s*(-?\d+(?:[.,]\d+)?)\s*(?:°|deg\b)"
+                          r"(?!\s*/)", re.IGNORECASE)
 
 
-def written_angles(entries: Sequence[Entry]) -> set[float]:
-    """The distinct crank angles (° in [0, 360), to 0.01°) written on a sheet: "φ = 60°" alone or
-    at the end of a title ("position 11, φ = 1.0°")."""
-    found: set[float] = set()
-    for e in entries:
-        word = _LAST_WORD.search(e.name.strip())
-        if word is None or not is_angle_name(word.group()):
-            continue
-        try:
-            value = parse_angle(e.text or e.value or e.length or "")
-        except MechplanError:
-            continue
-        found.add(round(value % 360.0, 2) % 360.0)
-    return found
+def written_angles(texts: Sequence[SheetText]) -> set[float]:
+    """The distinct crank angles (° in [0, 360), to 0.01°) written on a sheet."""
+    return {round(float(m.group(1).replace(",", ".")) % 360.0, 2) % 360.0
+            for t in texts for m in _WRITTEN_PHI.finditer(t.text)}
 
 
 def fit_score(rows: Sequence[SegmentRow | ValueRow],
