@@ -15,7 +15,6 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
-
 from ezdxf import DXFError
 from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 
@@ -144,8 +143,8 @@ LEADER_AIM = 0.3
 
 def _follow_leaders(sub: Submission) -> None:
     """Leader lines are not lines of a plan: each runs from a point to its label (as a DXF
-    LEADER does) and moves the text nearest its end to its start — a label placed away from a
-    crowded point is read at that point."""
+    LEADER does) and moves the text it points into (else the nearest one) near its end to its
+    start — a label placed away from a crowded point is read at that point."""
     leaders = [ln for ln in sub.lines if _LEADER_LAYER.match(ln.layer)]
     if not leaders:
         return
