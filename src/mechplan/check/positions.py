@@ -4,9 +4,8 @@ Sheet 1 of the course project draws the velocity plan of every position (and stu
 several plans on one sheet). Graded at one crank angle, every plan but one would be "wrong". When
 the angle is not given and the sheet holds more than one plan of a kind, or its titles name
 several crank angles (a velocity plan of one position beside the plans of another), each drawn
-plan is given
-the scene position its drawing fits best, and the plans of one position are graded together (the
-student's own points of one plan re-derive only the plans of the same position).
+plan is given the scene position its drawing fits best, and the plans of one position are graded
+together (the student's own points of one plan re-derive only the plans of the same position).
 """
 
 from __future__ import annotations
