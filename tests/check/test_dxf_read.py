@@ -269,3 +269,33 @@ def test_label_at_a_crossing_of_two_lines(tmp_path, four_bar) -> None:
     c_row = next(p for p in report.plans[0].points if p.label == "c")
     assert c_row.found == "crossing of two lines"
     assert np.allclose(c_row.at_mm, c, atol=1e-6)
+
+
+def test_a_leader_takes_the_label_it_points_into(tmp_path) -> None:
+    """Two labels near a short leader's end: the one the leader runs toward is tied to its start
+    (the other is nearer the end, beside the leader's line)."""
+    doc = ezdxf.new()
+    doc.header["$INSUNITS"] = 4
+    doc.layers.add("DIMENSION")
+    msp = doc.modelspace()
+    msp.add_line((0, 0), (0, 3.5), dxfattribs={"layer": "DIMENSION"})
+    mid = ezdxf.enums.TextEntityAlignment.MIDDLE_CENTER
+    msp.add_text("b", dxfattribs={"height": 3.5}).set_placement((-2.0, 4.2), align=mid)
+    msp.add_text("s4", dxfattribs={"height": 3.5}).set_placement((1.6, 6.3), align=mid)
+    msp.add_line((0, 0), (30, 0))
+    doc.saveas(tmp_path / "x.dxf")
+    sub = read_submission(tmp_path / "x.dxf")
+    at = {t.text: t.centre for t in sub.texts}
+    assert at["s4"] == pytest.approx((0.0, 0.0))
+    assert at["b"] == pytest.approx((-2.0, 4.2))
+
+
+@pytest.mark.parametrize(("text", "angles"), [
+    ("位置 11，φ = 1.0°", {1.0}), ("Position 1, φ = 61.0°", {61.0}), ("phi1 = 30 deg", {30.0}),
+    ("Vị trí 2, φ = 30,5°", {30.5}), ("μφ = 4 °/mm", set()), ("ψ(φ)", set()),
+    ("φ = 360°", {0.0})])
+def test_crank_angles_written_in_titles(text, angles) -> None:
+    from mechplan.check.positions import written_angles
+    from mechplan.submission.read import SheetText
+
+    assert written_angles([SheetText(text, (0.0, 0.0), 3.5, "")]) == angles

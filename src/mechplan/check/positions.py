@@ -2,9 +2,10 @@
 
 Sheet 1 of the course project draws the velocity plan of every position (and students draw
 several plans on one sheet). Graded at one crank angle, every plan but one would be "wrong". When
-the angle is not given and the sheet holds more than one plan of a kind, each drawn plan is given
-the scene position its drawing fits best, and the plans of one position are graded together (the
-student's own points of one plan re-derive only the plans of the same position).
+the angle is not given and the sheet holds more than one plan of a kind, or its titles name
+several crank angles (a velocity plan of one position beside the plans of another), each drawn
+plan is given the scene position its drawing fits best, and the plans of one position are graded
+together (the student's own points of one plan re-derive only the plans of the same position).
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from collections.abc import Callable, Sequence
 import numpy as np
 
 from ..errors import MechplanError
-from ..submission.read import Entry, Note, Point
+from ..submission.read import Entry, Note, Point, SheetText
 from ..submission.written import is_angle_name, parse_angle
 from .context import Ctx
 from .report import SLIP, WRONG, CheckReport, Finding, PlanReport, PointRow, SegmentRow, ValueRow
@@ -27,11 +28,27 @@ Grader = Callable[[Ctx, int], CheckReport]
 
 
 def several_positions(ctx: Ctx) -> bool:
-    """Whether the sheet holds more than one drawn plan of a kind (e.g. velocity plans #1, #2)."""
+    """Whether the sheet holds more than one drawn plan of a kind (e.g. velocity plans #1, #2),
+    or plans under texts that name different crank angles ("velocity plan, φ = 1°" beside
+    "acceleration plan, φ = 61°": a velocity plan of another position next to the plans of one)."""
     if ctx.sheet is None:
         return False
     kinds = [dp.plan for dp in ctx.sheet.plans]
-    return len(set(kinds)) < len(kinds)
+    if len(set(kinds)) < len(kinds):
+        return True
+    return len(kinds) > 1 and len(written_angles(ctx.sub.texts)) > 1
+
+
+#: a crank angle written on a sheet, alone or ending a plan's title: "φ = 60°", "position 11,
+#: φ = 1,0°", "phi1 = 30 deg" (not a scale "μφ = 4 °/mm")
+_WRITTEN_PHI = re.compile(r"(?<!\w)(?:φ|ϕ|phi)_?1?\s*=\s*(-?\d+(?:[.,]\d+)?)\s*(?:°|deg\b)"
+                          r"(?!\s*/)", re.IGNORECASE)
+
+
+def written_angles(texts: Sequence[SheetText]) -> set[float]:
+    """The distinct crank angles (° in [0, 360), to 0.01°) written on a sheet."""
+    return {round(float(m.group(1).replace(",", ".")) % 360.0, 2) % 360.0
+            for t in texts for m in _WRITTEN_PHI.finditer(t.text)}
 
 
 def fit_score(rows: Sequence[SegmentRow | ValueRow],

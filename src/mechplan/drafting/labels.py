@@ -191,7 +191,13 @@ class LabelPlacer:
         d = math.hypot(nx - anchor[0], ny - anchor[1])
         if d <= (LEADER_MIN_MM if ambiguous else LEADER_FROM_MM):
             return None
-        return Line(anchor, (nx, ny), Role.DIMENSION)
+        # aimed at the label's middle and ended at its box: a reader follows the leader into the
+        # text (its nearest corner may lie as near a neighbour's label)
+        (ax, ay), (cx, cy) = anchor, ((r[0] + r[2]) / 2, (r[1] + r[3]) / 2)
+        enter = [(lo - a) / (c - a) if c > a else (hi - a) / (c - a)
+                 for a, c, lo, hi in ((ax, cx, r[0], r[2]), (ay, cy, r[1], r[3])) if c != a]
+        t = min(max([0.0, *enter]), 1.0)
+        return Line(anchor, (ax + t * (cx - ax), ay + t * (cy - ay)), Role.DIMENSION)
 
     def _leader_crosses(self, anchor: tuple[float, float],
                         r: tuple[float, float, float, float]) -> bool:

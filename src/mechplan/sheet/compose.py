@@ -84,7 +84,11 @@ def _position_panel(sol: Solution, mu: float, lang: str) -> Panel:
     for q in points:
         for ev in (ev_traj, ev_all) + ((ev_ext,) if ev_ext is not None else ()):
             ev.get(q)
-    title = plan_name(Plan.POSITION, lang)
+    # the labelled (first highlighted) position in the title, as every plan of a position has
+    # it: a sheet may hold this plan beside velocity plans of other positions (the grid of all
+    # positions, cut to fit), and a reader tells the plans' positions apart by their titles
+    title = (plan_title(Plan.POSITION, lang, chosen[0], crank_degrees(sol, chosen[0]))
+             if chosen else plan_name(Plan.POSITION, lang))
     panel = position_plan(c, ev_all, ev_traj, scene.mechanism, highlight, extremes, ev_ext, mu,
                           lang, title, [str(k) for k in drawn])
     if sol.positions > MAX_DRAWN_POSITIONS:

@@ -14,6 +14,7 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 from ezdxf import DXFError
 from ezdxf.enums import MAP_TEXT_ENUM_TO_ALIGN_FLAGS, TextHAlign
 
@@ -134,12 +135,16 @@ _LEADER_LAYER = re.compile(r"^(dimension|leader|выноск)", re.IGNORECASE)
 #: a leader's end this near (drawing units) a text's box ties the text to the leader (the
 #: box a reader estimates differs from the one drawn by about a millimetre)
 LEADER_TOUCH = 2.5
+#: how far (drawing units) past its end a leader is followed to see which text it points into,
+#: and how near that line a text's box must come
+LEADER_RAY = 5.0
+LEADER_AIM = 0.3
 
 
 def _follow_leaders(sub: Submission) -> None:
     """Leader lines are not lines of a plan: each runs from a point to its label (as a DXF
-    LEADER does) and moves the text nearest its end to its start — a label placed away from a
-    crowded point is read at that point."""
+    LEADER does) and moves the text it points into (else the nearest one) near its end to its
+    start — a label placed away from a crowded point is read at that point."""
     leaders = [ln for ln in sub.lines if _LEADER_LAYER.match(ln.layer)]
     if not leaders:
         return
@@ -150,13 +155,19 @@ def _follow_leaders(sub: Submission) -> None:
         # the label lies beyond the leader's end, not beside it (a neighbour's label)
         ahead = [(t.distance(ln.end), i) for i, t in enumerate(sub.texts)
                  if (t.centre[0] - x0) * (x1 - x0) + (t.centre[1] - y0) * (y1 - y0) > along]
-        if not ahead:
-            continue
-        d, i = min(ahead)
         # the width a reader estimates for a text may be off by a part of it
-        if d <= LEADER_TOUCH + 0.5 * sub.texts[i].half[0]:
-            sub.texts[i] = replace(sub.texts[i], centre=ln.start, anchor=ln.start,
-                                   half=(0.05, 0.05), rotation=0.0)
+        near = [(d, i) for d, i in ahead if d <= LEADER_TOUCH + 0.5 * sub.texts[i].half[0]]
+        if not near:
+            continue
+        # of the texts near its end, the one the leader points into (two labels may both be
+        # near the end of a short leader: the one it runs toward is its own)
+        norm = math.sqrt(along) or 1.0
+        ray = np.asarray(ln.end) + np.outer(np.linspace(0.0, LEADER_RAY, 25),
+                                            [(x1 - x0) / norm, (y1 - y0) / norm])
+        _, _, i = min((float(sub.texts[i].distance(ray).min()) > LEADER_AIM, d, i)
+                      for d, i in near)
+        sub.texts[i] = replace(sub.texts[i], centre=ln.start, anchor=ln.start,
+                               half=(0.05, 0.05), rotation=0.0)
 
 
 #: a plan drawn on paper is smaller than an A0 sheet's long side with margin
