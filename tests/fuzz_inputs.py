@@ -99,14 +99,14 @@ ADDED_KEYS = ["force", "speed", "Z", "count", "points", "at", "csv", "file", "ta
               "x", "links", "ground", "kind", "language", "\u0000", "a.b"]
 
 
-def _paths(node: Any, prefix: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
+def key_paths(node: Any, prefix: tuple[Any, ...] = ()) -> list[tuple[Any, ...]]:
     out = [prefix] if prefix else []
     if isinstance(node, dict):
         for k, v in node.items():
-            out += _paths(v, (*prefix, k))
+            out += key_paths(v, (*prefix, k))
     elif isinstance(node, list):
         for i, v in enumerate(node):
-            out += _paths(v, (*prefix, i))
+            out += key_paths(v, (*prefix, i))
     return out
 
 
@@ -122,7 +122,7 @@ def mutate(doc: dict[str, Any], r: random.Random, known: bool) -> tuple[dict[str
     doc = copy.deepcopy(doc)
     labels = []
     for _ in range(r.randint(1, 3)):
-        paths = _paths(doc)
+        paths = key_paths(doc)
         action = r.choice(["replace", "replace", "delete", "add"]) if paths else "add"
         if action == "add":
             tables = [p for p in paths if isinstance(_get(doc, p), dict)]

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from fuzz_inputs import key_paths
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -40,21 +41,11 @@ junk = st.one_of(
 )
 
 
-def _paths(node: Any, prefix: tuple = ()) -> list[tuple]:
-    out = [prefix] if prefix else []
-    if isinstance(node, dict):
-        for k, v in node.items():
-            out += _paths(v, (*prefix, k))
-    elif isinstance(node, list):
-        for i, v in enumerate(node):
-            out += _paths(v, (*prefix, i))
-    return out
-
 
 def _mutate(data: dict, draw: st.DrawFn) -> dict:
     data = copy.deepcopy(data)
     for _ in range(draw(st.integers(1, 3))):
-        paths = _paths(data)
+        paths = key_paths(data)
         if not paths:
             break
         path = draw(st.sampled_from(paths))
