@@ -25,22 +25,22 @@ def start(tmp_path: Path, command: str = "batch") -> tuple[subprocess.Popen[str]
     out = tmp_path / "out"
     args = {"batch": ["batch", str(SLIDER), str(table), "--format", "svg"],
             "sweep": ["sweep", str(SLIDER), "--vary", "links.1.lengths.OA=80mm..400mm:40",
-                      "--vary", "links.2.lengths.AB=300mm..420mm:20", "--chunk", "7",
+                      "--vary", "links.2.lengths.AB=300mm..420mm:400", "--chunk", "7",
                       "--positions", "7200"]}[command]
-    proc = subprocess.Popen([sys.executable, "-m", "mechplan.cli", *args, "-o", str(out), "-j",
-                             "2", "--no-progress"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, start_new_session=True,
-                            preexec_fn=_interruptible)
+    # Ctrl-C as in a terminal: a pytest-xdist worker ignores SIGINT and a child would inherit
+    # that; a handler of our own is reset to the default when the child starts
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        proc = subprocess.Popen([sys.executable, "-m", "mechplan.cli", *args, "-o", str(out),
+                                 "-j", "2", "--no-progress"], stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True, start_new_session=True)
+    finally:
+        signal.signal(signal.SIGINT, before)
     deadline = time.monotonic() + 120
     while len(markers(out)) < 2:
         assert proc.poll() is None and time.monotonic() < deadline, proc.communicate()
         time.sleep(0.05)
     return proc, out
-
-
-def _interruptible() -> None:
-    """Ctrl-C as in a terminal: a pytest-xdist worker ignores SIGINT, and a child inherits that."""
-    signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
 def markers(out: Path) -> list[Path]:
