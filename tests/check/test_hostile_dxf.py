@@ -142,3 +142,25 @@ def test_too_many_entities_are_refused_before_ezdxf_builds_them(tmp_path, monkey
     monkeypatch.setattr(ezdxf.recover, "read", never)
     with pytest.raises(CheckError, match="more than 100 entities"):
         read_submission(tmp_path / "many.dxf")
+
+
+def test_points_and_arrowheads_at_non_finite_coordinates_are_skipped(tmp_path):
+    """A POINT, a small CIRCLE or an arrowhead (SOLID) at inf/nan is skipped with a note; the
+    sheet is still read and checked (the checker's KD-trees take finite points only)."""
+    doc = _sheet()
+    msp = doc.modelspace()
+    nan, inf = float("nan"), float("inf")
+    msp.add_point((nan, 3.0))
+    msp.add_circle((inf, 1.0), radius=0.5)
+    msp.add_solid([(nan, 0.0), (1.0, 0.0), (0.5, 1.0)])
+    msp.add_point((40.0, 30.0))
+    path = tmp_path / "ivanov.dxf"
+    doc.saveas(path)
+    sub = read_submission(path)
+    assert sub.markers == [((40.0, 30.0), sub.markers[0][1])]
+    assert sub.heads == []
+    assert sum("non-finite" in str(n.message) for n in sub.notes) == 3
+    from mechplan.check import Options, check
+
+    with pytest.raises(CheckError, match="no point labels"):   # read through: a user error,
+        check(FOUR_BAR, path, Options(at_deg=60))              # not scipy's ValueError

@@ -255,12 +255,12 @@ def _collect(sub: Submission, space: Iterable[Any], scale: float, depth: int,
                 _add_arrowhead(sub, e, scale, _where(e, via))
             elif kind == "POINT":
                 p = e.dxf.location
-                sub.markers.append(((p.x * scale, p.y * scale), _where(e, via)))
+                _add_marker(sub, (p.x, p.y), scale, _where(e, via))
             elif kind == "CIRCLE" and e.dxf.radius * scale <= 2.0:
                 p = e.dxf.center
                 if e.dxf.extrusion.z < 0:
                     p = e.ocs().to_wcs(p)
-                sub.markers.append(((p.x * scale, p.y * scale), _where(e, via)))
+                _add_marker(sub, (p.x, p.y), scale, _where(e, via))
             elif kind in ("TEXT", "ATTRIB"):
                 _add_text(sub, _text_box(e, scale), e, via)
             elif kind == "MTEXT":
@@ -307,6 +307,9 @@ def _add_arrowhead(sub: Submission, e: Any, scale: float, where: str) -> None:
     its base, where the vector's shaft ends."""
     ocs = e.ocs()
     pts = [ocs.to_wcs(e.dxf.get(f"vtx{i}")) for i in range(4) if e.dxf.hasattr(f"vtx{i}")]
+    if not _finite(*(v for p in pts for v in (p.x, p.y))):
+        sub.notes.append(Note("warning", T("note.nonfinite_point"), where))
+        return
     corners: list[Point] = []
     for p in pts:
         q = (p.x, p.y)
@@ -325,6 +328,14 @@ def _add_arrowhead(sub: Submission, e: Any, scale: float, where: str) -> None:
 
 def _finite(*values: float) -> bool:
     return all(math.isfinite(v) for v in values)
+
+
+def _add_marker(sub: Submission, p: Point, scale: float, where: str) -> None:
+    """A point marker (POINT, a small CIRCLE); one with non-finite coordinates is skipped."""
+    if not _finite(*p):
+        sub.notes.append(Note("warning", T("note.nonfinite_point"), where))
+        return
+    sub.markers.append(((p[0] * scale, p[1] * scale), where))
 
 
 def _add_line(sub: Submission, a: Point, b: Point, scale: float, where: str, layer: str) -> None:
