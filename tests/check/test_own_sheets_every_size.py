@@ -32,9 +32,6 @@ LANGUAGES = ("en", "ru", "vi", "zh")
 #: a panel that holds a plan the checker reads (not its tables apart, a lever, a diagram)
 PLAN_PANEL = re.compile(r"^(position|velocity|acceleration|force)(?!.*(tables|lever|diagram))")
 
-#: templates known to fail, with the reason (none now: quick_return's coulisse is drawn)
-KNOWN: dict[str, str] = {}
-
 
 def test_the_grid_is_every_linkage_template():
     assert sorted(p.stem for p in TEMPLATES) == [
@@ -42,13 +39,7 @@ def test_the_grid_is_every_linkage_template():
         "shaper_flywheel", "slider_crank", "v_engine"]
 
 
-def _params() -> list:
-    return [pytest.param(path, id=path.stem, marks=[pytest.mark.xfail(
-        reason=KNOWN[path.stem], strict=False)] if path.stem in KNOWN else [])
-        for path in TEMPLATES]
-
-
-@pytest.mark.parametrize("path", _params())
+@pytest.mark.parametrize("path", TEMPLATES, ids=[p.stem for p in TEMPLATES])
 def test_own_sheets_check_clean_at_every_size_standard_and_language(path, tmp_path):
     scene = load_scene(path)
     sol = solve(scene)
