@@ -5,9 +5,10 @@ from __future__ import annotations
 import functools
 import math
 import re
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import pint
+if TYPE_CHECKING:      # pint costs ~0.15 s to import: only when a quantity is read
+    import pint
 
 from .errors import SceneError, shown
 
@@ -71,6 +72,8 @@ _EXAMPLES = {
 @functools.lru_cache(maxsize=1)
 def registry() -> pint.UnitRegistry:
     """Return the project's own explicit unit registry (angles are dimensionless radians)."""
+    import pint
+
     ureg: pint.UnitRegistry = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
     if "rpm" not in ureg:
         ureg.define("rpm = revolution / minute")
@@ -146,7 +149,7 @@ def _convert(cleaned: str, text: str, dimension: str, file: str | None, key: str
     except Exception as exc:  # noqa: BLE001 - pint raises many unrelated types for bad text
         raise SceneError(f"cannot read {text!r} as {_noun(dimension)}; write it like "
                          f"{example} ({exc.__class__.__name__})", file=file, key=key) from None
-    if not isinstance(q, pint.Quantity):
+    if not isinstance(q, ureg.Quantity):
         q = ureg.Quantity(float(q), "")
     target = ureg.Quantity(1.0, si_unit) if si_unit else ureg.Quantity(1.0, "")
     if q.unitless and dimension.startswith("mu_"):

@@ -105,3 +105,27 @@ def split_quantity(text: str, key: str) -> tuple[float, str]:
 def quantity_text(value: float, unit: str) -> Any:
     """Write a number back as a scene value: ``"80 mm"``, or a bare float without a unit."""
     return f"{value:.12g} {unit}" if unit else float(f"{value:.12g}")
+
+
+def edited_text(text: str, values: dict[str, Any], file: str | None = None) -> str:
+    """Return the template's TOML text with values set at key paths, as the template wrote it.
+
+    The checks are :func:`with_values`'s (the text must already have passed the scene's own TOML
+    reader, which limits its size and nesting); the edit is made on the template's document with
+    tomlkit, so its comments, table order, ``[[loads]]`` and line breaks are kept and only the
+    changed numbers differ.
+    """
+    import tomlkit
+
+    from ..scene.document import parse_toml
+
+    with_values(parse_toml(text, file or "<template>"), values, file)   # raises what it refuses
+    doc = tomlkit.parse(text)
+    for key, value in values.items():
+        *path, last = split_key(key)
+        node: Any = doc
+        for part in path:
+            node = node[part]
+        node[last] = list(value) if isinstance(value, tuple) else value
+    return tomlkit.dumps(doc)
+

@@ -151,9 +151,21 @@ def _new(args: argparse.Namespace) -> int:
         raise MechplanError("name a template (see mechplan new --list), e.g. mechplan new "
                             "four_bar")
     text = _template_text(args.template)
-    dest = Path(args.output or f"{args.template.removesuffix('.toml')}.toml")
-    if dest.is_dir():
-        dest = dest / f"{args.template.removesuffix('.toml')}.toml"
+    name = f"{Path(args.template).name.removesuffix('.toml')}.toml"
+    dest = Path(args.output or name)
+    # "-o sub/" (a trailing separator) or an existing folder: write into that folder
+    into = bool(args.output) and args.output.endswith(("/", os.sep))
+    if into or dest.is_dir():
+        if dest.exists() and not dest.is_dir():
+            raise MechplanError(f"{dest} is a file, not a folder; -o {args.output} asks to write "
+                                "into a folder")
+        try:
+            dest.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            from ..errors import os_reason
+
+            raise MechplanError(f"cannot create the folder {dest}: {os_reason(exc)}") from None
+        dest = dest / name
     if dest.exists():
         raise MechplanError(f"{dest} exists already; choose another name with -o")
     from ..render.atomic import write_atomic
