@@ -46,10 +46,38 @@ def angle_deg(text: str) -> float:
         raise argparse.ArgumentTypeError(exc.detail) from None
 
 
+#: a report of more positions than this is first measured on one position (see below)
+REPORT_PROBE_FROM = 2000
+
+
+def _ensure_report_fits(args: argparse.Namespace) -> None:
+    """Refuse, before solving, a linkage report (JSON or text) of more positions than the memory
+    budget holds: one position is solved and its JSON measured (well under a second)."""
+    from ..scene.document import parse_toml, read_text, scene_kind
+
+    text = read_text(args.scene)
+    if args.at or scene_kind(parse_toml(text, args.scene), args.scene) != "mechanism":
+        return
+    from ..limits import ensure_report_within_budget
+    from ..scene import parse_scene
+    from ..solve import position_count
+    from ..studies import solve_text
+
+    n = position_count(parse_scene(text, args.scene), args.positions)
+    if n <= REPORT_PROBE_FROM:
+        return
+    probe = solve_text(text, args.scene, count=1, data_dir=args.data_dir)
+    first = probe.to_json()["positions"][0]
+    ensure_report_within_budget(n, len(json.dumps(first, ensure_ascii=False, indent=1)),
+                                file=args.scene,
+                                key="--positions" if args.positions else "positions.count")
+
+
 def _solve(args: argparse.Namespace) -> int:
     from ..studies import solve_file
     from ..studies.mechanism import MechanismStudy
 
+    _ensure_report_fits(args)
     study = solve_file(args.scene, at_deg=args.at, count=args.positions, data_dir=args.data_dir)
     if isinstance(study, MechanismStudy) and (args.sheet or args.standard):
         # the scale factors (μ, segment lengths) of the sheet `mechplan draw --sheet` draws
