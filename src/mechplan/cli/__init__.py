@@ -147,9 +147,12 @@ def _draw(args: argparse.Namespace) -> int:
                     print(written)
         except MechplanError as exc:
             failed += 1
-            print(f"mechplan: error: {exc}", file=sys.stderr)
+            print(say_error(exc, error_language(args, path)), file=sys.stderr)
     if failed and len(args.scenes) > 1:
-        print(f"mechplan: {failed} of {len(args.scenes)} scenes failed", file=sys.stderr)
+        from ..i18n import message
+
+        print(message("errors.cli.scenes_failed", error_language(args), failed=failed,
+                      total=len(args.scenes)), file=sys.stderr)
     return 2 if failed else 0
 
 
@@ -280,13 +283,43 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
+def error_language(args: argparse.Namespace, scene: str | None = None) -> str:
+    """The language errors are said in: ``--lang``, else the ``language`` of the scene (by
+    default the command's first) when it can be read, else English."""
+    lang = getattr(args, "lang", None)
+    if lang in LANGUAGES:
+        return str(lang)
+    scene = scene or getattr(args, "scene", None) or (getattr(args, "scenes", None) or [None])[0]
+    if isinstance(scene, str):
+        try:
+            from ..scene.document import parse_toml, read_text
+
+            said = parse_toml(read_text(scene), scene).get("language")
+        except MechplanError:
+            said = None
+        if said in LANGUAGES:
+            return str(said)
+    return "en"
+
+
+def say_error(exc: MechplanError, language: str) -> str:
+    """``mechplan: error: …`` in a language."""
+    from ..i18n import message
+
+    return message("errors.cli.error", language, message=exc.text(language))
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Entry point; user errors print one message and exit with code 2."""
+    """Entry point; user errors print one message (in the scene's language or ``--lang``) and
+    exit with code 2; with ``--json`` the error is also a JSON object on standard output."""
     args = parser().parse_args(argv)
     try:
         return int(args.func(args))
     except MechplanError as exc:
-        print(f"mechplan: error: {exc}", file=sys.stderr)
+        lang = error_language(args)
+        print(say_error(exc, lang), file=sys.stderr)
+        if getattr(args, "json", False):
+            print(json.dumps(exc.to_json(lang), ensure_ascii=False, indent=1))
         return 2
     except BrokenPipeError:          # output piped into `head`
         sys.stderr.close()
