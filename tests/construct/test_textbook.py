@@ -159,8 +159,7 @@ def test_point_pair_relative_velocity_and_components_by_finite_differences():
     assert np.allclose(ba.v[0], d1, rtol=1e-7, atol=1e-7 * np.hypot(*d1))
     assert np.allclose(ba.a[0], d2, atol=1e-4 * np.hypot(*d2))
     assert np.allclose(ba.a_n[0] + ba.a_t[0], ba.a[0], atol=1e-9 * np.hypot(*d2))
-    rho = d1 * 0 + (ba.a_n[0])
-    assert np.dot(rho, ba.a_t[0]) == pytest.approx(0, abs=1e-6 * np.hypot(*d2) ** 2)
+    assert np.dot(ba.a_n[0], ba.a_t[0]) == pytest.approx(0, abs=1e-6 * np.hypot(*d2) ** 2)
 
 
 def test_coriolis_and_sliding_against_the_slider_in_the_rotating_guide():
@@ -193,14 +192,20 @@ def test_dead_centres_zero_sliding_velocity_and_transmission_angle_limit():
     assert np.allclose(sl.v_slide, 0.0, atol=1e-12)
     (tr,) = t.transmission
     assert np.allclose(tr.gamma, math.pi / 2, atol=1e-12)     # rod along the guide: α = 0
-    # offset: at the exact extremes the slider stops, the rod lies along the crank
-    sol, t = answers(slider_crank(100, 350, 50), [30.0])
+    # offset: at the exact extremes the slider stops and the rod lies along the crank, so the
+    # pressure angle is the rod's slope asin(e/(l ± r))
+    _, t = answers(slider_crank(100, 350, 50), [30.0])
     (s,) = t.strokes
-    c = sol.construction
-    sol2, t2 = answers(slider_crank(100, 350, 50),
-                       [math.degrees(s.phi_min), math.degrees(s.phi_max)])
+    _, t2 = answers(slider_crank(100, 350, 50), [math.degrees(s.phi_min), math.degrees(s.phi_max)])
     assert np.allclose(t2.sliding[0].v_slide, 0.0, atol=1e-9)
-    assert c is not None
+    expected = [math.pi / 2 - math.asin(0.05 / 0.25), math.pi / 2 - math.asin(0.05 / 0.45)]
+    assert np.allclose(t2.transmission[0].gamma, expected, atol=1e-9)
+    # at the extreme of the swing the rocker stops: its frame pin D does not rub
+    _, t = answers(four_bar(80, 260, 180, 250), [30.0])
+    (sw,) = t.strokes
+    _, t3 = answers(four_bar(80, 260, 180, 250), [math.degrees(sw.phi_min)])
+    (d_pin,) = [r for r in t3.rubbing if r.pair.point == "D"]
+    assert d_pin.v_rub[0] == pytest.approx(0.0, abs=1e-12)
 
 
 # -- Khurmi & Gupta, Theory of Machines, Example 7.2 -----------------------------------------
