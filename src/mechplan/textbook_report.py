@@ -44,8 +44,13 @@ def spec_from_flags(asked: str, pin_radius_mm: float | None,
     if bad or not names:
         raise SceneError(f"--answers must list all or {', '.join(known)} (got {asked!r})")
     chosen = frozenset(Answer) if "all" in names else frozenset(Answer(a) for a in names)
+    if pin_radius_mm is not None and not (0.0 < pin_radius_mm < 1e6):
+        raise SceneError(f"--pin-radius must be a positive number of mm (got {pin_radius_mm:g})")
     radius = pin_radius_mm / 1000.0 if pin_radius_mm is not None else (
         base.pin_radius if base else None)
+    if Answer.RUBBING in chosen and radius is None and not (base and base.pins):
+        raise SceneError("the rubbing velocity needs the pins' radius: give --pin-radius MM or "
+                         "[answers] pin_radius in the scene")
     return TextbookSpec(chosen | (base.asked if base else frozenset()), radius,
                         dict(base.pins) if base else {}, base.outputs if base else ())
 
@@ -164,7 +169,9 @@ def cycle_lines(sol: Solution, lang: str) -> list[str]:
                                tw=_deg(s.theta_work or 0.0, lang),
                                tr=_deg(s.theta_return or 0.0, lang), K=_n(s.K, 4, lang)))
     for name, least in t.least_gamma.items():
-        if least is not None:
+        if least is not None and math.isnan(least[0]):
+            out.append("  " + _w("gamma_constant", lang, group=name, gamma=_deg(least[1], lang)))
+        elif least is not None:
             out.append("  " + _w("gamma_min", lang, group=name, gamma=_deg(least[1], lang),
                                  phi=_n(phi_deg(least[0]), 2, lang)))
     return out
@@ -257,6 +264,7 @@ def cycle_json(sol: Solution) -> dict[str, Any] | None:
         doc["strokes"] = st
     if Answer.TRANSMISSION in t.asked:
         doc["transmission_min"] = {
-            name: ({"gamma_min_deg": math.degrees(v[1]), "phi_deg": phi_deg(v[0])}
+            name: ({"gamma_min_deg": math.degrees(v[1]),
+                    "phi_deg": None if math.isnan(v[0]) else phi_deg(v[0])}
                    if v is not None else None) for name, v in t.least_gamma.items()}
     return doc

@@ -60,10 +60,11 @@ def transmission(c: Construction, ev: Evaluation, mech: Mechanism, g: Group) -> 
         velocity = _perp(r_in - ev[c.position(o2.point)])
     else:
         velocity = guide_direction(c, ev, mech, o2.guide)           # type: ignore[arg-type]
-    with np.errstate(invalid="ignore", divide="ignore"):
-        cos_a = np.abs(np.einsum("ij,ij->i", force, velocity)) / (
-            np.hypot(*force.T) * np.hypot(*velocity.T))
-    gamma = 0.5 * math.pi - np.arccos(np.clip(cos_a, 0.0, 1.0))
+    # α from atan2(|f×u|, |f·u|): exact near 0° and 90°, where arccos of a cosine is not
+    cross = force[:, 0] * velocity[:, 1] - force[:, 1] * velocity[:, 0]
+    dot = np.einsum("ij,ij->i", force, velocity)
+    gamma = 0.5 * math.pi - np.arctan2(np.abs(cross), np.abs(dot))
+    gamma = np.where(np.hypot(*force.T) * np.hypot(*velocity.T) > 0, gamma, math.nan)
     mu = None
     if g.kind.value == "RRR":
         u = ev[c.position(o1.point)] - r_in
@@ -77,7 +78,8 @@ def least_transmission(c: Construction, mech: Mechanism, g: Group, samples: int 
                        iterations: int = 80) -> tuple[float, float] | None:
     """(φ, γ_min) over a crank turn: the least sample refined by golden-section search on the
     bracket around it (γ may have a corner at a dead point; the search needs no derivative).
-    None when no position can be built."""
+    φ is NaN when γ is the same at every position (a centred coulisse: 90°); None when no
+    position can be built."""
     phi = np.arange(samples) * (TWO_PI / samples)
 
     def gamma(x: Array) -> Array:
@@ -87,6 +89,9 @@ def least_transmission(c: Construction, mech: Mechanism, g: Group, samples: int 
     values = gamma(phi)
     if not np.isfinite(values).any():
         return None
+    finite = values[np.isfinite(values)]
+    if float(np.ptp(finite)) < 1e-9:
+        return math.nan, float(finite.min())
     k = int(np.argmin(values))
     step = TWO_PI / samples
     lo, hi = phi[k] - step, phi[k] + step
