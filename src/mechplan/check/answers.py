@@ -61,7 +61,7 @@ def read_name(name: str, kind: str, section: str | None, has_angle: bool,
     found = read_answer(name, tables, has_angle)
     if kind != "linkage" or (found is not None and _known(keys, found[1])):
         return found
-    from ..studies.linkage import subjects     # "v_rub_B", "γ II(4,5)": a name and its subject
+    from ..studies.linkage import subjects  # "v_rub_B", "γ II(4,5)": a name and its subject
 
     flat = compact(name)
     for subject in subjects(keys):

@@ -15,7 +15,6 @@ from .document import parse_toml
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
 from .loads import gravity_of, loads_of, masses_of
 from .reader import Table
-from .textbook import parse_textbook
 from .spec import (
     PLANS,
     DrawingSpec,
@@ -23,9 +22,11 @@ from .spec import (
     Positions,
     Scene,
 )
+from .textbook import parse_textbook
 
 TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions",
-            "analysis", "gravity", "loads", "drawing", "title_block", "description", "dynamics", "answers")
+            "analysis", "gravity", "loads", "drawing", "title_block", "description", "dynamics",
+            "answers")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 #: scale-factor keys of [drawing.scales] and their dimensions: each plan's, and the moments'

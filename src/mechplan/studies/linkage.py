@@ -48,13 +48,13 @@ def linkage_answers(sol: Solution) -> Keys:
             k.columns[key] = col
             k.spans[key] = span(col)
 
-    moving = [s for s in t.sliding if s.guide_link != GROUND]
-    main_slide = (moving or t.sliding or [None])[0]
-    for s in t.sliding:
-        column("v_slide", s.pair.point, np.abs(s.v_slide), s is main_slide)
-        if s.a_slide is not None and s.a_cor is not None:
-            column("a_slide", s.pair.point, np.abs(s.a_slide), s is main_slide)
-            column("a_cor", s.pair.point, np.hypot(*s.a_cor.T), s is main_slide)
+    moving = [sl for sl in t.sliding if sl.guide_link != GROUND]
+    main_slide = (moving or t.sliding)[0] if t.sliding else None
+    for sl in t.sliding:
+        column("v_slide", sl.pair.point, np.abs(sl.v_slide), sl is main_slide)
+        if sl.a_slide is not None and sl.a_cor is not None:
+            column("a_slide", sl.pair.point, np.abs(sl.a_slide), sl is main_slide)
+            column("a_cor", sl.pair.point, np.hypot(*sl.a_cor.T), sl is main_slide)
     for r in t.rubbing:
         column("v_rub", r.pair.point, r.v_rub, len(t.rubbing) == 1)
     for i, tr in enumerate(t.transmission):
@@ -76,12 +76,11 @@ def linkage_answers(sol: Solution) -> Keys:
             k.scalars[f"{name}.{s.subject}"] = v
             if s is main:
                 k.scalars[name] = v
-    least = [v for v in t.least_gamma.values() if v is not None]
+    least = {g: lg[1] for g, lg in t.least_gamma.items() if lg is not None}
     if least:
-        k.scalars["gamma_min"] = min(v[1] for v in least)
-    for name, v in t.least_gamma.items():
-        if v is not None:
-            k.scalars[f"gamma_min.{name}"] = v[1]
+        k.scalars["gamma_min"] = min(least.values())
+    for group, gamma in least.items():
+        k.scalars[f"gamma_min.{group}"] = gamma
     return k
 
 

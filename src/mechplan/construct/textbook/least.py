@@ -36,13 +36,15 @@ class LeastVelocity:
 
 
 def _cross(u: Array, v: Array) -> Array:
-    return u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
+    out: Array = u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]
+    return out
 
 
 def _nearest_on_segment(a: Array, b: Array, p: Array) -> Array:
     d = b - a
     t = np.einsum("ij,ij->i", p - a, d) / np.einsum("ij,ij->i", d, d)
-    return a + np.clip(t, 0.0, 1.0)[:, None] * d
+    out: Array = a + np.clip(t, 0.0, 1.0)[:, None] * d
+    return out
 
 
 def _convex_hull(pts: Array) -> list[int]:

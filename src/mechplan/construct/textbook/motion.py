@@ -19,7 +19,8 @@ Array = np.ndarray
 
 def cross_k(w: Array, v: Array) -> Array:
     """ω k × v for ω (N,) and v (N, 2): the vector v turned 90° counter-clockwise times ω."""
-    return np.asarray(w)[:, None] * np.stack([-v[:, 1], v[:, 0]], axis=1)
+    out: Array = np.asarray(w)[:, None] * np.stack([-v[:, 1], v[:, 0]], axis=1)
+    return out
 
 
 def unit(angle: Array) -> Array:
@@ -42,14 +43,16 @@ class Motion:
 
     def velocity_at(self, p: Array) -> Array:
         """Velocity (N, 2) of the point of this link at world position ``p`` (N, 2)."""
-        return self.v + cross_k(self.omega, p - self.r)
+        out: Array = self.v + cross_k(self.omega, p - self.r)
+        return out
 
     def acceleration_at(self, p: Array) -> Array | None:
         """Acceleration (N, 2) of the point of this link at world position ``p`` (N, 2)."""
         if self.a is None or self.epsilon is None:
             return None
         rho = p - self.r
-        return self.a + cross_k(self.epsilon, rho) - (self.omega ** 2)[:, None] * rho
+        out: Array = self.a + cross_k(self.epsilon, rho) - (self.omega ** 2)[:, None] * rho
+        return out
 
 
 def point(c: Construction, ev: Evaluation, name: str, what: str = "r") -> Array | None:
@@ -84,7 +87,8 @@ def frame_angle(c: Construction, ev: Evaluation, mech: Mechanism, link: str) -> 
         p, q = named[0], named[1]
         (x0, y0), (x1, y1) = lk.points[p], lk.points[q]
         d = ev[c.position(q)] - ev[c.position(p)]
-        return np.arctan2(d[:, 1], d[:, 0]) - np.arctan2(y1 - y0, x1 - x0)
+        angle: Array = np.arctan2(d[:, 1], d[:, 0]) - np.arctan2(y1 - y0, x1 - x0)
+        return angle
     if lk.slides_on:
         g = mech.guides[lk.slides_on]
         return frame_angle(c, ev, mech, g.link) + g.angle
