@@ -14,7 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...model.mechanism import Mechanism
+from ...model.mechanism import GROUND, Mechanism, PairKind
 from ..graph import Construction, Evaluation
 from .motion import Array, motion
 
@@ -98,6 +98,9 @@ def least_velocity(c: Construction, ev: Evaluation, mech: Mechanism, link: str) 
 
 
 def slowest_links(c: Construction, mech: Mechanism) -> list[str]:
-    """Moving links drawn with at least two built points."""
+    """Moving links drawn with at least two built points and not pivoted on the frame (the
+    slowest point of a crank or rocker is its fixed pivot)."""
     return [lid for lid in mech.moving
-            if sum(c.has_position(p) and c.has_result("v", p) for p in mech.links[lid].points) >= 2]
+            if sum(c.has_position(p) and c.has_result("v", p) for p in mech.links[lid].points) >= 2
+            and not any(pr.kind is PairKind.REVOLUTE and pr.joins(lid) and pr.other(lid) == GROUND
+                        for pr in mech.pairs)]
