@@ -276,3 +276,31 @@ def test_report_says_the_answers_in_every_language():
     for lang in ("en", "ru", "vi", "zh"):
         out = text_report(sol, lang)
         assert "K = " in out and "γ_min" in out and "v_rel" in out
+
+
+def test_slowest_point_of_a_plate_by_brute_force():
+    """The coupler BCE of the four-bar template is a plate: the slowest point of the triangle,
+    found by sampling it densely with v = v_B + ω×BP, is the one computed."""
+    from pathlib import Path
+
+    from mechplan.scene import load_scene
+    scene = load_scene(Path(__file__).resolve().parents[2] / "templates" / "four_bar.toml")
+    sol = solve(scene, at_deg=[0.0, 33.0, 100.0, 250.0])
+    t = textbook_answers(sol.construction, sol.ev, scene.mechanism, sol.structure,
+                         TextbookSpec(frozenset({Answer.LEAST_VELOCITY})))
+    (lv,) = t.least_velocity
+    c, ev = sol.construction, sol.ev
+    u, w = np.meshgrid(np.linspace(0, 1, 401), np.linspace(0, 1, 401))
+    keep = (u + w) <= 1
+    u, w = u[keep], w[keep]
+    for k in range(sol.positions):
+        B, C, E = (ev[c.position(p)][k] for p in "BCE")
+        vB, om = ev[c.velocity_image("B")][k], ev[c.omega("2")][k]
+        P = B + u[:, None] * (C - B) + w[:, None] * (E - B)
+        rho = P - B
+        v = vB + om * np.stack([-rho[:, 1], rho[:, 0]], axis=1)
+        speed = np.hypot(*v.T)
+        i = int(np.argmin(speed))
+        assert lv.v_min[k] <= speed[i] + 1e-12
+        assert lv.v_min[k] == pytest.approx(speed[i], abs=abs(om) * 0.3 * 2 / 400 + 1e-12)
+        assert np.hypot(*(lv.G[k] - P[i])) < 0.3 * 2 / 400 * 2

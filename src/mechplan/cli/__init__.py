@@ -59,6 +59,9 @@ def _solve(args: argparse.Namespace) -> int:
         sol.scales = choose_scales(sol.scene, sol.construction, sol.ev, sol.plans, args.sheet,
                                    args.standard)
         sol.extras["sheet"] = (args.sheet, args.standard)
+    if not isinstance(study, MechanismStudy) and (args.answers or args.pin_radius is not None):
+        raise MechplanError(f"--answers and --pin-radius are for a linkage; {args.scene} is "
+                            "another kind of scene")
     if isinstance(study, MechanismStudy) and (args.answers or args.pin_radius is not None):
         from ..textbook_report import attach, spec_from_flags
 
