@@ -115,6 +115,16 @@ def position_lines(sol: Solution, k: int, lang: str) -> list[str]:
                      f"{_n(float(np.hypot(*pp.a_t[k])), 4, lang)} {ms2} "
                      f"({perp(pp.q + pp.p).text(lang)})")
         out.append(line)
+    if t.turning:
+        rad_s, rad_s2 = unit("rad/s", lang), unit("rad/s²", lang)
+        parts = []
+        for tu in t.turning:
+            a, b = tu.pair.a, tu.pair.b
+            text = f"{tu.pair.point}: ω{a}{b} = {_n(tu.omega_rel[k], 4, lang)} {rad_s}"
+            if tu.epsilon_rel is not None:
+                text += f", ε{a}{b} = {_n(tu.epsilon_rel[k], 4, lang)} {rad_s2}"
+            parts.append(text)
+        out.append("  " + _w("turning", lang) + ": " + ";  ".join(parts))
     for r in t.rubbing:
         out.append("  " + _w("rubbing", lang, point=r.pair.point, a=r.pair.a, b=r.pair.b,
                              r=f"{_n(r.radius * 1000, 1, lang)} {mm_}",
@@ -214,7 +224,14 @@ def position_json(sol: Solution, k: int) -> dict[str, Any] | None:
                       "a_n": _v(pp.a_n[k]), "a_n_magnitude": float(np.hypot(*pp.a_n[k])),
                       "a_t": _v(pp.a_t[k]), "a_t_magnitude": float(np.hypot(*pp.a_t[k]))}
             rel[f"{pp.p}{pp.q}"] = e
-        doc["sliding"], doc["relative"] = sl, rel
+        turn: dict[str, Any] = {}
+        for tu in t.turning:
+            same = [x for x in t.turning if x.pair.point == tu.pair.point]
+            key = tu.pair.point if len(same) == 1 else f"{tu.pair.point}({tu.pair.a},{tu.pair.b})"
+            turn[key] = {"links": [tu.pair.a, tu.pair.b], "omega_rel": float(tu.omega_rel[k]),
+                         **({"epsilon_rel": float(tu.epsilon_rel[k])}
+                            if tu.epsilon_rel is not None else {})}
+        doc["sliding"], doc["relative"], doc["turning"] = sl, rel, turn
     if Answer.RUBBING in t.asked:
         doc["rubbing"] = {_pin_key(r, t.rubbing): {
             "links": [r.pair.a, r.pair.b], "radius": r.radius,

@@ -85,7 +85,7 @@ def test_the_documented_scene_gives_the_documented_json():
     assert st["H"] == pytest.approx(math.sqrt((l + r) ** 2 - e ** 2)
                                     - math.sqrt((l - r) ** 2 - e ** 2), rel=1e-12)
     assert set(doc["positions"][0]["textbook"]) == {
-        "sliding", "relative", "rubbing", "transmission", "least_velocity"}
+        "sliding", "relative", "turning", "rubbing", "transmission", "least_velocity"}
     assert doc["positions"][0]["textbook"]["rubbing"]["O"]["radius"] == pytest.approx(0.025)
 
 

@@ -304,3 +304,17 @@ def test_slowest_point_of_a_plate_by_brute_force():
         assert lv.v_min[k] <= speed[i] + 1e-12
         assert lv.v_min[k] == pytest.approx(speed[i], abs=abs(om) * 0.3 * 2 / 400 + 1e-12)
         assert np.hypot(*(lv.G[k] - P[i])) < 0.3 * 2 / 400 * 2
+
+
+def test_relative_rotation_in_the_pins_by_finite_differences():
+    text = slider_crank(100, 400, 30)
+    _, t = answers(text, [58.0])
+    (pin_a,) = [x for x in t.turning if x.pair.point == "A"]
+
+    def rod(c, ev):
+        a, b = ev[c.position("A")][0], ev[c.position("B")][0]
+        return math.atan2(b[1] - a[1], b[0] - a[0])
+    w2, e2 = _fd(text, 58.0, rod)
+    sign = 1.0 if pin_a.pair.a == "1" else -1.0        # ω_a − ω_b, a and b as the pair has them
+    assert pin_a.omega_rel[0] == pytest.approx(sign * (60.0 - w2), rel=1e-8)
+    assert pin_a.epsilon_rel[0] == pytest.approx(sign * (0.0 - e2), rel=1e-4)

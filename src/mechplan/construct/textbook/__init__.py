@@ -19,11 +19,13 @@ from .least import LeastVelocity, least_velocity, slowest_links
 from .relative import (
     PointPair,
     Sliding,
+    Turning,
     point_pairs,
     prismatic_pairs,
     revolute_pairs,
     rubbing,
     sliding,
+    turning,
 )
 from .stroke import Stroke, strokes
 from .transmission import Transmission, least_transmission, transmission
@@ -46,6 +48,7 @@ class TextbookAnswers:
     asked: frozenset[Answer]
     sliding: list[Sliding] = field(default_factory=list)
     point_pairs: list[PointPair] = field(default_factory=list)
+    turning: list[Turning] = field(default_factory=list)
     rubbing: list[Rubbing] = field(default_factory=list)
     transmission: list[Transmission] = field(default_factory=list)
     least_gamma: dict[str, tuple[float, float] | None] = field(default_factory=dict)
@@ -63,6 +66,7 @@ def textbook_answers(c: Construction, ev: Evaluation, mech: Mechanism, structure
     if Answer.RELATIVE in spec.asked:
         out.sliding = [sliding(c, ev, mech, p, accel) for p in prismatic_pairs(mech)]
         out.point_pairs = point_pairs(c, ev, mech, points)
+        out.turning = [turning(c, ev, mech, p, accel) for p in revolute_pairs(mech)]
     if Answer.RUBBING in spec.asked:
         for p in revolute_pairs(mech):
             r = spec.radius(p.point)
@@ -81,4 +85,4 @@ def textbook_answers(c: Construction, ev: Evaluation, mech: Mechanism, structure
 
 
 __all__ = ["LeastVelocity", "PointPair", "Rubbing", "Sliding", "Stroke", "TextbookAnswers",
-           "Transmission", "textbook_answers"]
+           "Transmission", "Turning", "textbook_answers"]

@@ -103,6 +103,24 @@ def revolute_pairs(mech: Mechanism) -> list[Pair]:
     return [p for p in mech.pairs if p.kind is PairKind.REVOLUTE]
 
 
+@dataclass(frozen=True, slots=True)
+class Turning:
+    """Relative rotation in a revolute pair: ω_a − ω_b and ε_a − ε_b (N,) (links a, b)."""
+
+    pair: Pair
+    omega_rel: Array
+    epsilon_rel: Array | None
+
+
+def turning(c: Construction, ev: Evaluation, mech: Mechanism, pair: Pair,
+            accelerations: bool = True) -> Turning:
+    """The relative rotation of the links of revolute ``pair``."""
+    ma, mb = (motion(c, ev, mech, lk, accelerations) for lk in (pair.a, pair.b))
+    eps = (ma.epsilon - mb.epsilon if ma.epsilon is not None and mb.epsilon is not None
+           else None)
+    return Turning(pair, ma.omega - mb.omega, eps)
+
+
 def rubbing(c: Construction, ev: Evaluation, mech: Mechanism, pair: Pair,
             radius: float) -> tuple[Array, Array]:
     """Relative angular velocity ω_a − ω_b (N,) and rubbing velocity |ω_a − ω_b|·r (N,) (m/s)."""
