@@ -318,3 +318,34 @@ def test_relative_rotation_in_the_pins_by_finite_differences():
     sign = 1.0 if pin_a.pair.a == "1" else -1.0        # ω_a − ω_b, a and b as the pair has them
     assert pin_a.omega_rel[0] == pytest.approx(sign * (60.0 - w2), rel=1e-8)
     assert pin_a.epsilon_rel[0] == pytest.approx(sign * (0.0 - e2), rel=1e-4)
+
+
+OFFSET_COULISSE = QUICK_RETURN.replace(
+    'guides.slot = { through = "O3", toward = "B" }',
+    'points = { P = ["0 mm", "40 mm"], Q = ["600 mm", "40 mm"] }\n'
+    'guides.slot = { through = "P", toward = "Q" }')
+
+
+def test_offset_coulisse_transmission_angle_swing_and_K():
+    """The slot 40 mm off the pivot: γ = 90° − asin(e/O3A); the extremes are where the slot
+    line touches the crank circle: n·(O1 − O3) = e ± r for the slot's normal n."""
+    r, d, e = 0.1, 0.3, 0.04
+    sol, t = answers(OFFSET_COULISSE, [0.0, 30.0, 200.0, 270.0])
+    A, O3 = (sol.ev[sol.construction.position(p)] for p in ("A", "O3"))
+    expected = math.pi / 2 - np.arcsin(e / np.hypot(*(A - O3).T))
+    assert np.allclose(t.transmission[0].gamma, expected, atol=1e-12)
+    assert t.least_gamma["II(2,3)"][1] == pytest.approx(math.pi / 2 - math.asin(e / (d - r)),
+                                                       abs=1e-9)
+    (s,) = t.strokes
+    alphas, cranks = [], []
+    for sign in (1, -1):
+        alpha = math.acos((e + sign * r) / d)          # slot direction; n = (−sin α, cos α)
+        n = np.array([-math.sin(alpha), math.cos(alpha)])
+        tangent = -sign * r * n                         # the crank pin where the line touches
+        alphas.append(alpha)
+        cranks.append(math.atan2(tangent[1], tangent[0]))
+    assert s.size == pytest.approx(abs(alphas[0] - alphas[1]), rel=1e-10)
+    up = (cranks[0] - cranks[1]) % (2 * math.pi)
+    assert s.K == pytest.approx(max(up, 2 * math.pi - up) / min(up, 2 * math.pi - up), rel=1e-9)
+    got = sorted(_abs_angle(sol, x.phi) % (2 * math.pi) for x in s.extremes)
+    assert got == pytest.approx(sorted(c % (2 * math.pi) for c in cranks), abs=1e-9)
