@@ -147,3 +147,15 @@ def test_a_linkage_without_answers_and_a_drawing_are_not_answer_tables(tmp_path)
     assert maybe_check_answers(str(s), str(t)) is None
     s, t = _files(tmp_path, QR, "", ".dxf")
     assert maybe_check_answers(str(s), str(t)) is None
+
+
+def test_where_the_transmission_angle_is_least(tmp_path):
+    """Offset slider-crank: γ_min = 90° − asin((r + e)/l) with the crank ⊥ the guide, pointing
+    away from it (φ = 270° when the guide is above the crank's pivot)."""
+    s, t = _files(tmp_path, SC, f"""
+"γmin" = "{90 - math.degrees(math.asin(0.15 / 0.35)):.3f} deg"
+"φ_γmin" = "270 deg"
+""")
+    rows = {v.name: v for v in check(str(s), str(t)).values}
+    assert rows["φ_γmin"].verdict == "ok" and rows["γmin"].verdict == "ok"
+    assert rows["φ_γmin"].exact == pytest.approx(270.0, abs=1e-6)

@@ -6,6 +6,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from mechplan.construct.textbook import textbook_answers
 from mechplan.errors import SceneError
@@ -349,3 +351,22 @@ def test_offset_coulisse_transmission_angle_swing_and_K():
     assert s.K == pytest.approx(max(up, 2 * math.pi - up) / min(up, 2 * math.pi - up), rel=1e-9)
     got = sorted(_abs_angle(sol, x.phi) % (2 * math.pi) for x in s.extremes)
     assert got == pytest.approx(sorted(c % (2 * math.pi) for c in cranks), abs=1e-9)
+
+
+@settings(max_examples=12, deadline=None)
+@given(st.floats(0.5, 3.0), st.floats(3.2, 6.0), st.floats(-0.8, 0.8), st.floats(1.5, 4.0),
+       st.floats(5.0, 355.0))
+def test_scaling_the_lengths_scales_what_has_a_length(r, ratio, off, s, phi):
+    """Every length × s: H, v_slide, v_rub × s (same pin radius × s); γ, ψ, K unchanged."""
+    r_mm, l_mm, e_mm = 20.0 * r, 20.0 * r * ratio, 20.0 * r * off
+    spec = TextbookSpec(frozenset(Answer), pin_radius=0.005)
+    spec_s = TextbookSpec(frozenset(Answer), pin_radius=0.005 * s)
+    _, t1 = answers(slider_crank(r_mm, l_mm, e_mm), [phi], spec)
+    _, t2 = answers(slider_crank(r_mm * s, l_mm * s, e_mm * s), [phi], spec_s)
+    assert t2.strokes[0].size == pytest.approx(s * t1.strokes[0].size, rel=1e-9)
+    assert t2.strokes[0].K == pytest.approx(t1.strokes[0].K, rel=1e-9)
+    assert t2.sliding[0].v_slide[0] == pytest.approx(s * t1.sliding[0].v_slide[0], rel=1e-9,
+                                                     abs=1e-12)
+    assert t2.transmission[0].gamma[0] == pytest.approx(t1.transmission[0].gamma[0], abs=1e-12)
+    for a, b in zip(t1.rubbing, t2.rubbing):
+        assert b.v_rub[0] == pytest.approx(s * a.v_rub[0], rel=1e-9, abs=1e-15)

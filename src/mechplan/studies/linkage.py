@@ -1,7 +1,7 @@
 """The exact textbook answers of a linkage (what its answer table is checked against).
 
 Scalars: ``H``/``psi`` (stroke or swing), ``K``, ``theta_work``, ``theta_return``, ``theta`` (the
-crank angle between the extreme positions, θ_w − 180°), ``gamma_min``; per position:
+crank angle between the extreme positions, θ_w − 180°), ``gamma_min`` and where, ``phi_gamma_min``; per position:
 ``v_slide``, ``a_slide``, ``a_cor``, ``v_rub``, ``gamma``, ``v_min``. Each is given for the
 mechanism's main subject (plain name) and for every subject (``name.subject``: a slider's point,
 a rocker's link, a pin's point, a group's name, a link). See docs/textbook.md.
@@ -76,11 +76,16 @@ def linkage_answers(sol: Solution) -> Keys:
             k.scalars[f"{name}.{s.subject}"] = v
             if s is main:
                 k.scalars[name] = v
-    least = {g: lg[1] for g, lg in t.least_gamma.items() if lg is not None}
+    least = {g: lg for g, lg in t.least_gamma.items() if lg is not None}
     if least:
-        k.scalars["gamma_min"] = min(least.values())
-    for group, gamma in least.items():
+        lowest = min(least.values(), key=lambda lg: lg[1])
+        k.scalars["gamma_min"] = lowest[1]
+        if math.isfinite(lowest[0]):
+            k.scalars["phi_gamma_min"] = lowest[0]
+    for group, (phi, gamma) in least.items():
         k.scalars[f"gamma_min.{group}"] = gamma
+        if math.isfinite(phi):
+            k.scalars[f"phi_gamma_min.{group}"] = phi
     return k
 
 
