@@ -3,8 +3,9 @@
 Scalars: ``H``/``psi`` (stroke or swing), ``K``, ``theta_work``, ``theta_return``, ``theta`` (the
 crank angle between the extreme positions, θ_w − 180°), ``gamma_min`` and where it is,
 ``phi_gamma_min``; per position: ``v_slide``, ``a_slide``, ``a_cor``, ``v_rub``, ``gamma``,
-``v_min``. Each is given for the mechanism's main subject (plain name) and for every subject (``name.subject``: a slider's point,
-a rocker's link, a pin's point, a group's name, a link). See docs/textbook.md.
+``v_min``. Each is given for the mechanism's main subject (plain name) and for every subject
+(``name.subject``: a slider's point, a rocker's link, a pin's point, a group's name, a link).
+See docs/textbook.md.
 """
 
 from __future__ import annotations
