@@ -48,3 +48,19 @@ def test_rubbing_without_radius_and_answers_of_a_cam_are_errors(capsys):
     code = main(["solve", str(ROOT / "templates" / "cam_flat.toml"), "--answers", "all"])
     _, err = capsys.readouterr()
     assert code == 2 and "linkage" in err
+
+
+def test_the_answer_key_of_a_class_lists_the_sliding_and_rubbing_velocities():
+    from mechplan.batch.answer import answer_key
+    from mechplan.scene import parse_scene
+    from mechplan.solve import solve, to_json
+    text = (ROOT / "templates" / "quick_return.toml").read_text(encoding="utf-8")
+    sol = solve(parse_scene(text + '\n[answers]\npin_radius = "10 mm"\n', "qr.toml"),
+                at_deg=[30.0, 120.0])
+    doc = to_json(sol)
+    key = answer_key(doc, "01", "student", {})
+    rows = {r["quantity"]: r["values"] for r in key["rows"]}
+    assert rows["v_rel A/slot"] == [p["textbook"]["sliding"]["A/slot"]["v_slide"]
+                                    for p in doc["positions"]]
+    assert rows["v_rub O3"][1] == doc["positions"][1]["textbook"]["rubbing"]["O3"]["v_rub"]
+    assert key["solution"]["textbook"]["strokes"]["3"]["K"] > 1.5
