@@ -370,3 +370,14 @@ def test_scaling_the_lengths_scales_what_has_a_length(r, ratio, off, s, phi):
     assert t2.transmission[0].gamma[0] == pytest.approx(t1.transmission[0].gamma[0], abs=1e-12)
     for a, b in zip(t1.rubbing, t2.rubbing):
         assert b.v_rub[0] == pytest.approx(s * a.v_rub[0], rel=1e-9, abs=1e-15)
+
+
+def test_a_pin_radius_by_its_point_and_links():
+    text = slider_crank(100, 400, extra='[answers]\nask = ["rubbing"]\npin_radius = "5 mm"\n'
+                        'pins = { "A(2,1)" = "30 mm", B = "15 mm" }\n')
+    sol = solve(parse_scene(text), at_deg=[45.0])
+    radii = {r.pair.point: r.radius for r in sol.extras["textbook"].rubbing}
+    assert radii == {"O": 0.005, "A": 0.030, "B": 0.015}
+    with pytest.raises(SceneError) as exc:
+        parse_scene(slider_crank(100, 400, extra='[answers]\npins = { "A(1,3)" = "3 mm" }\n'))
+    assert exc.value.key == 'answers.pins."A(1,3)"' or exc.value.key.endswith("A(1,3)")

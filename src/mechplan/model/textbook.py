@@ -29,6 +29,10 @@ class TextbookSpec:
     pins: dict[str, float] = field(default_factory=dict)
     outputs: tuple[str, ...] = ()
 
-    def radius(self, point: str) -> float | None:
-        """The radius of the pin at ``point`` (its own or the default), or None."""
-        return self.pins.get(point, self.pin_radius)
+    def radius(self, point: str, a: str = "", b: str = "") -> float | None:
+        """The radius of the pin joining links ``a`` and ``b`` at ``point``: its own (key
+        ``"A(1,2)"``), the point's (key ``"A"``) or the default; None when none is given."""
+        for key in (f"{point}({a},{b})", f"{point}({b},{a})", point):
+            if key in self.pins:
+                return self.pins[key]
+        return self.pin_radius

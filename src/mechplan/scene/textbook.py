@@ -4,7 +4,7 @@
 [answers]
 ask = ["relative", "rubbing", "transmission", "stroke", "least_velocity"]   # or ["all"]
 pin_radius = "10 mm"                 # every pin's radius (rubbing velocity)
-pins = { O = "25 mm", A = "30 mm" }  # a pin's own radius, by the point of its revolute pair
+pins = { O = "25 mm", "A(1,2)" = "30 mm" }  # a pin's own radius: by its point, or point(links)
 outputs = ["B", "3"]                 # stroke/swing of these; default every slider and rocker
 ```
 """
@@ -38,11 +38,14 @@ def parse_textbook(data: dict[str, Any], file: str, mech: Mechanism) -> Textbook
     pins: dict[str, float] = {}
     pt = t.table("pins")
     if pt is not None:
-        at_pins = {p.point for p in mech.pairs if p.kind is PairKind.REVOLUTE}
+        revolute = [p for p in mech.pairs if p.kind is PairKind.REVOLUTE]
+        at_pins = {p.point for p in revolute} | {f"{p.point}({x},{y})" for p in revolute
+                                                 for x, y in ((p.a, p.b), (p.b, p.a))}
         for name in pt.data:
             if name not in at_pins:
-                raise pt.error(name, f"is not the point of a revolute pair; pins are at "
-                               f"{', '.join(sorted(at_pins))}")
+                raise pt.error(name, "is not the point of a revolute pair (or \"A(1,2)\": the "
+                               "pin at A joining links 1 and 2); pins are at "
+                               f"{', '.join(sorted(p.point for p in revolute))}")
             value = pt.quantity(name, "length", positive=True)
             assert value is not None
             pins[name] = value

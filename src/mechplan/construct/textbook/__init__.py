@@ -69,7 +69,7 @@ def textbook_answers(c: Construction, ev: Evaluation, mech: Mechanism, structure
         out.turning = [turning(c, ev, mech, p, accel) for p in revolute_pairs(mech)]
     if Answer.RUBBING in spec.asked:
         for p in revolute_pairs(mech):
-            r = spec.radius(p.point)
+            r = spec.radius(p.point, p.a, p.b)
             if r is not None:
                 dw, v = rubbing(c, ev, mech, p, r)
                 out.rubbing.append(Rubbing(p, r, dw, v))
