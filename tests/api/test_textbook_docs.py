@@ -104,3 +104,14 @@ def test_the_documented_table_is_graded_ok(tmp_path):
     rows = check(str(s), str(t)).values
     assert len(rows) == 4
     assert all(v.verdict == "ok" for v in rows), [(v.name, v.submitted, v.exact) for v in rows]
+
+
+def test_the_public_api_carries_the_answers():
+    import mechplan
+    mech = mechplan.loads(example("scene textbook"), "textbook.toml")
+    sol = mech.solve([30.0, 120.0])
+    assert sol.textbook is not None
+    assert sol.textbook.strokes[0].K == pytest.approx(
+        (math.pi + math.asin(0.2) - math.asin(0.05 / 0.45))
+        / (math.pi - math.asin(0.2) + math.asin(0.05 / 0.45)), rel=1e-10)
+    assert sol.textbook.sliding[0].v_slide.shape == (2,)
