@@ -48,3 +48,23 @@ def test_no_tables_when_not_asked():
     scene = SCENE.split("[answers]")[0]
     texts = _texts(compose_sheets(solve(parse_scene(scene, "plain.toml")), lang="en"))
     assert not any("K = " in t or t.startswith("v_rel") for t in texts)
+
+
+def test_an_own_sheet_with_the_tables_still_checks_clean(tmp_path):
+    """The tables add no warning to the check of mechplan's own sheet (the own-sheets
+    invariant): the same warnings as the sheet of the scene without [answers]."""
+    from mechplan.check import check
+    from mechplan.cli import main
+
+    def warnings(text: str, name: str) -> tuple[bool, list[str]]:
+        scene = tmp_path / f"{name}.toml"
+        scene.write_text(text, encoding="utf-8")
+        assert main(["draw", str(scene), "-o", str(tmp_path), "--format", "dxf"]) == 0
+        report = check(str(scene), str(tmp_path / f"{name}.dxf"))
+        return report.passed, sorted(n.message.replace(name, "X") for n in report.notes
+                                     if n.level in ("warning", "error"))
+
+    with_tables = warnings(SCENE, "asked")
+    without = warnings(SCENE.split("[answers]")[0], "plain")
+    assert with_tables[0] and without[0]
+    assert with_tables[1] == without[1]

@@ -67,16 +67,19 @@ def cycle_table(t: TextbookAnswers, lang: str) -> Panel | None:
         k_text = (f"θ_w = {format_number(math.degrees(s.theta_work or 0.0), 2, lang)}°, "
                   f"θ_r = {format_number(math.degrees(s.theta_return or 0.0), 2, lang)}°, "
                   f"K = {format_number(s.K, 4, lang)}") if s.K is not None else "—"
-        rows.append([s.subject, size, ex, k_text])
+        # a bare "B" in a cell would be read back as a label of a plan
+        rows.append([_w("row.link" if s.rocker else "row.point", lang, subject=s.subject), size,
+                     ex, k_text])
     for name, least in t.least_gamma.items():
         if least is None:
             continue
-        where = "—" if math.isnan(least[0]) else f"φ = {format_number(_phi(least[0]), 2, lang)}°"
-        rows.append([name, f"γ_min = {format_number(math.degrees(least[1]), 2, lang)}°", where,
+        # not "φ = …": a checker reads that text as the crank angle of the sheet's plans
+        where = "—" if math.isnan(least[0]) else f"{format_number(_phi(least[0]), 2, lang)}°"
+        rows.append([_w("row.group", lang, subject=name), f"γ_min = {format_number(math.degrees(least[1]), 2, lang)}°", where,
                      ""])
     if not rows:
         return None
-    head = ["", "H, ψ, γ_min", "φ", "K"]
+    head = ["", _w("col.size", lang), _w("col.extremes", lang), _w("col.ratio", lang)]
     return table_panel("textbook-cycle", _w("cycle", lang), [head, *rows], STYLE)
 
 
