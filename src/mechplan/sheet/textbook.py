@@ -75,8 +75,8 @@ def cycle_table(t: TextbookAnswers, lang: str) -> Panel | None:
             continue
         # not "φ = …": a checker reads that text as the crank angle of the sheet's plans
         where = "—" if math.isnan(least[0]) else f"{format_number(_phi(least[0]), 2, lang)}°"
-        rows.append([_w("row.group", lang, subject=name), f"γ_min = {format_number(math.degrees(least[1]), 2, lang)}°", where,
-                     ""])
+        gamma = format_number(math.degrees(least[1]), 2, lang)
+        rows.append([_w("row.group", lang, subject=name), f"γ_min = {gamma}°", where, ""])
     if not rows:
         return None
     head = ["", _w("col.size", lang), _w("col.extremes", lang), _w("col.ratio", lang)]
