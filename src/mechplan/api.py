@@ -184,7 +184,7 @@ class Mechanism:
             at = arr
         chosen = self._plans(plans)
         asked = self._outputs(points, links)
-        if fast is not False and "force" not in chosen:
+        if fast is not False and "force" not in chosen and self.scene.textbook is None:
             quick = self._solve_fast(chosen, at, positions, asked)
             if quick is not None:
                 return quick
@@ -332,7 +332,7 @@ def _solution(s: _Solved, only_points: tuple[str, ...] | None = None,
     flags = tuple((f.k, f.quantity, f.subject, f.estimate) for f in s.flags)
     return Solution(_frozen(np.degrees(s.phi)), ByName(r, "position"), ByName(v, "velocity"),
                     ByName(a, "acceleration"), ByName(angle, "angle"), ByName(omega, "omega"),
-                    ByName(epsilon, "epsilon"), forces, flags)
+                    ByName(epsilon, "epsilon"), forces, flags, s.extras.get("textbook"))
 
 
 def _take(out: dict[str, np.ndarray], point: str, ev: Evaluation, accessor: Any) -> None:

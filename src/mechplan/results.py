@@ -139,6 +139,9 @@ class Solution:
         Kinetostatics when the force plan was asked for (a scene with masses or loads).
     flags : tuple of (position, quantity, subject, estimate)
         Results whose estimated relative error exceeds the tolerance (see docs/estimates.md).
+    textbook : TextbookAnswers or None
+        The textbook answers the scene's ``[answers]`` asks for (docs/textbook.md): sliding,
+        relative, rubbing, transmission, strokes, least velocity.
     """
 
     phi_deg: np.ndarray
@@ -150,6 +153,7 @@ class Solution:
     epsilon: Mapping[str, np.ndarray]
     forces: Forces | None
     flags: tuple[tuple[int, str, str, float], ...] = ()
+    textbook: Any = None
 
     @property
     def positions(self) -> int:

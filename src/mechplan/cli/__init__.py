@@ -87,6 +87,14 @@ def _solve(args: argparse.Namespace) -> int:
         sol.scales = choose_scales(sol.scene, sol.construction, sol.ev, sol.plans, args.sheet,
                                    args.standard)
         sol.extras["sheet"] = (args.sheet, args.standard)
+    if not isinstance(study, MechanismStudy) and (args.answers or args.pin_radius is not None):
+        raise MechplanError(f"--answers and --pin-radius are for a linkage; {args.scene} is "
+                            "another kind of scene")
+    if isinstance(study, MechanismStudy) and (args.answers or args.pin_radius is not None):
+        from ..textbook_report import attach, spec_from_flags
+
+        sol = study.solution
+        attach(sol, spec_from_flags(args.answers or "rubbing", args.pin_radius, sol.scene.textbook))
     if args.json:
         print(json.dumps(study.to_json(), ensure_ascii=False, indent=1))
     else:
@@ -243,6 +251,11 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("--standard", choices=STANDARDS,
                    help="scale factors of this standard's sheet (as `draw --standard`)")
     s.add_argument("--data-dir", metavar="DIR", help=_DATA_DIR_HELP)
+    s.add_argument("--answers", metavar="LIST",
+                   help="textbook answers: all or relative,rubbing,transmission,stroke,"
+                        "least_velocity (docs/textbook.md)")
+    s.add_argument("--pin-radius", type=float, metavar="MM",
+                   help="radius of every pin in mm, for the rubbing velocities")
     s.set_defaults(func=_solve)
     d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG",
                        description="Draw the sheets of one or more scenes. A scene that fails is "

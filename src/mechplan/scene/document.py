@@ -23,11 +23,14 @@ def read_text(path: str | Path, kind: FileKind = SCENE) -> str:
 
 def study_kind(path: str | Path) -> tuple[str, dict[str, Any]] | None:
     """The study a scene file asks for — its kind (``"dynamics"`` for a mechanism with
-    ``[dynamics]``) and its parsed data — or None for a plain linkage."""
+    ``[dynamics]``, ``"linkage"`` for one with textbook ``[answers]``) and its parsed data — or
+    None for a plain linkage."""
     data = parse_toml(read_text(path), str(path))
     kind = scene_kind(data, str(path))
     if kind == "mechanism":
-        return ("dynamics", data) if "dynamics" in data else None
+        if "dynamics" in data:
+            return "dynamics", data
+        return ("linkage", data) if "answers" in data else None
     return kind, data
 
 

@@ -22,9 +22,11 @@ from .spec import (
     Positions,
     Scene,
 )
+from .textbook import parse_textbook
 
 TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions",
-            "analysis", "gravity", "loads", "drawing", "title_block", "description", "dynamics")
+            "analysis", "gravity", "loads", "drawing", "title_block", "description", "dynamics",
+            "answers")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 #: scale-factor keys of [drawing.scales] and their dimensions: each plan's, and the moments'
@@ -72,7 +74,7 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
         mechanism=mech, positions=positions, plans=plans, points_of_interest=interest,
         masses=masses, loads=loads_of(top, links, guides, masses), gravity=gravity_of(top),
         drawing=_drawing(top, len(positions.angles) or positions.count),
-        assembly_phi=assembly_phi)
+        assembly_phi=assembly_phi, textbook=parse_textbook(top.data, file, mech))
 
 
 def _ground(top: Table) -> tuple[dict[str, tuple[float, float]], dict[str, Guide]]:

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from ..model.loads import Gravity, LoadSpec, MassSpec
 from ..model.mechanism import Mechanism
 from ..model.plans import Plan
+from ..model.textbook import TextbookSpec
 
 #: the plans a scene may ask for, by name
 PLANS = tuple(plan.value for plan in Plan)
@@ -57,3 +58,4 @@ class Scene:
     gravity: Gravity
     drawing: DrawingSpec
     assembly_phi: float = 0.0
+    textbook: TextbookSpec | None = None     # the [answers] section: textbook answers asked

@@ -36,6 +36,7 @@ from .scales import (
     tables_apart,
     velocity_positions,
 )
+from .textbook import textbook_panels
 
 GAP = 8.0          # mm between panels
 packing_area = drawing_area      # the drawing area clear of the centring marks and title block
@@ -131,7 +132,7 @@ def _kinematics_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room)
             ap = _marked(vector_plan(c, sol.ev, k, Plan.ACCELERATION, mu[Plan.ACCELERATION],
                                      lang, title), sol, k, Plan.ACCELERATION, lang)
             panels += split_tables(ap, title, tables_apart(c, Plan.ACCELERATION, r), r)
-    return panels + kinematic_diagrams(sol, lang, r)
+    return panels + kinematic_diagrams(sol, lang, r) + textbook_panels(sol, lang)
 
 
 def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> list[Panel]:
