@@ -245,7 +245,7 @@ class Mechanism:
         if one is None:
             chosen = self._plans(None)
             prepared = None
-            if "force" not in chosen:
+            if "force" not in chosen and self.scene.textbook is None:
                 prepared = self._fast.prepare(self._build(chosen)[1], chosen, None, None)
             self._one = one = prepared if prepared is not None else False
         if one is False:
