@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..model.loads import Gravity, LoadSpec, MassSpec
+from ..model.loads import FrictionSpec, Gravity, LoadSpec, MassSpec
 from ..model.mechanism import Mechanism
 from ..model.plans import Plan
 
@@ -57,3 +57,4 @@ class Scene:
     gravity: Gravity
     drawing: DrawingSpec
     assembly_phi: float = 0.0
+    friction: FrictionSpec | None = None      # [friction]: friction in the pairs (docs/forces.md)

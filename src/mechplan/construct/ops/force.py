@@ -64,6 +64,17 @@ def force_load(step: Step, *operands: Array) -> Result:
         return np.broadcast_to(vec, x["at"].shape).copy(), None, None
     if mode == "towards":
         return float(step.param("magnitude")) * unit(x["target"] - x["at"]), None, None
+    if mode == "along":
+        u = unit(x["to"] - x["start"])
+        c, s = math.cos(step.param("turn")), math.sin(step.param("turn"))
+        turned = np.stack((c * u[..., 0] - s * u[..., 1], s * u[..., 0] + c * u[..., 1]), axis=-1)
+        return float(step.param("magnitude")) * turned, None, None
+    if mode == "pull":
+        # tension T = t0 + k·(L − L0) pulls ``at`` towards ``other`` (T < 0 pushes it away)
+        r = x["other"] - x["at"]
+        tension = float(step.param("t0")) + float(step.param("k")) * (
+            norm(r) - float(step.param("l0")))
+        return tension[..., None] * unit(r), None, None
     if mode == "guide":
         value = np.full(x["at"].shape[:-1], float(step.param("value")))
     elif mode == "table_phi":
@@ -77,6 +88,7 @@ def force_load(step: Step, *operands: Array) -> Result:
 
 
 _LOAD_OPERANDS = {"vector": ("at",), "towards": ("at", "target"),
+                  "along": ("at", "start", "to"), "pull": ("at", "other"),
                   "guide": ("at", "towards", "angle"),
                   "table_phi": ("crank", "at", "towards", "angle"),
                   "table_s": ("at", "origin", "towards", "angle")}
@@ -253,3 +265,82 @@ __all__ = ["BALANCING_MOMENT", "DIFFERENCE", "FORCE_CLOSE", "FORCE_INERTIA", "FO
            "FORCE_LOAD", "FORCE_REVERSE", "FORCE_SUM", "GUIDE_OFFSET", "INERTIA_OFFSET",
            "LINE_OF_ACTION", "MOMENT_ARM_TANGENTIAL", "MOMENT_CLOSE", "MOMENT_INERTIA",
            "MOMENT_SUM", "ZHUKOVSKY"]
+
+
+# -- friction in the pairs ------------------------------------------------------------------------
+@dataclass(eq=False)
+class FrictionLoop:
+    """What the friction iteration needs of its construction (held by the ``FRICTION_ITERATE``
+    step): the construction, the reaction results whose magnitudes set the friction loads, the
+    balancing moment's result, the tolerance and the bound on passes.
+    """
+
+    construction: object
+    reactions: tuple[str, ...]
+    balancing: str = "M_b"
+    tolerance: float = 1e-10
+    max_iterations: int = 50
+
+
+def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
+    """Friction by the courses' iteration; the value is the friction-free balancing moment M_b⁰.
+
+    Pass 0 has no friction (the friction loads are zero); each next pass takes the friction
+    moments f·r·|R| and forces f·|N| from the reactions of the pass before, until the reactions
+    change by less than ``tolerance`` of the largest one. The reactions' magnitudes (N, P), the
+    passes made and the last relative change (N,) are left in ``shared`` for the friction steps.
+    """
+    loop: FrictionLoop = step.param("loop")
+    c = loop.construction
+    phi = c.drive.scene(theta)          # type: ignore[attr-defined]
+    n, p = theta.shape[0], len(loop.reactions)
+    basis = np.zeros((n, p))
+    residual = np.full(n, np.inf)
+    mb0 = np.zeros(n)
+    passes = 0
+    for passes in range(1, loop.max_iterations + 1):
+        inner = c.evaluate(phi, overrides={step.id: mb0})     # type: ignore[attr-defined]
+        inner.shared[("friction", step.id)] = {"basis": basis}
+        new = np.stack([norm(inner[c.results[r]]) for r in loop.reactions], axis=-1) \
+            if p else basis               # type: ignore[attr-defined]
+        if passes == 1:
+            mb0 = np.array(inner[c.results[loop.balancing]])  # type: ignore[attr-defined]
+        scale = np.maximum(np.max(new, axis=-1, initial=0.0), 1e-300)
+        residual = np.max(np.abs(new - basis), axis=-1, initial=0.0) / scale
+        basis = new
+        if passes > 1 and not np.any(residual > loop.tolerance):
+            break
+    shared[("friction", step.id)] = {"basis": basis, "passes": passes, "residual": residual}
+    return mb0, None, None
+
+
+def _basis(step: Step, shared: dict) -> Array:
+    """|R| of this pair from the pass before (zeros on the friction-free pass)."""
+    out: Array = shared[("friction", step.inputs[0])]["basis"][:, step.param("index")]
+    return out
+
+
+def friction_couple(step: Step, loop: Array, *omegas: Array, shared: dict) -> Result:
+    """M_f = −ρ·|R|·sign(ω_j − ω_i) on link j of a revolute pair (ρ = f·r, the friction circle).
+
+    Inputs after the loop: ω_j, then ω_i (absent when link i is the frame).
+    """
+    w_rel = omegas[0] - (omegas[1] if len(omegas) > 1 else 0.0)
+    return -float(step.param("rho")) * _basis(step, shared) * np.sign(w_rel), None, None
+
+
+def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *,
+                   shared: dict) -> Result:
+    """F_f = −f·|N|·sign(v·u)·u on a slider sliding at ``velocity`` along a frame guide."""
+    u = direction(angle)
+    sense = np.sign(dot(velocity, u))
+    return (-float(step.param("f")) * _basis(step, shared) * sense)[..., None] * u, None, None
+
+
+FRICTION_ITERATE = OpSpec("friction_iterate", friction_iterate, "protocol.op.friction_iterate",
+                          grade=Grade.VALUE)
+FRICTION_COUPLE = OpSpec("friction_couple", friction_couple, "protocol.op.friction_couple",
+                         grade=Grade.VALUE)
+FRICTION_FORCE = OpSpec("friction_force", friction_force, "protocol.op.friction_force",
+                        Drawn.VECTOR, Line.OUTLINE, Grade.VALUE)
+__all__ += ["FRICTION_COUPLE", "FRICTION_FORCE", "FRICTION_ITERATE"]

@@ -1,0 +1,91 @@
+"""Friction in the pairs as known loads of the force plan (the courses' iteration).
+
+A revolute pair with friction coefficient f and pin radius r carries a friction couple
+M_f = f·r·|R| (the reaction is tangent to the friction circle ρ = f·r) against the relative
+rotation; a prismatic pair on a frame guide a friction force f·|N| along the guide against the
+sliding velocity (the total reaction is tilted by the friction angle φ = atan f). The sizes come
+from the reactions of the previous pass (:func:`~mechplan.construct.ops.force.friction_iterate`):
+the first pass is friction-free.
+
+Results: ``M_b0`` (the friction-free balancing moment), ``Mf_<ab>`` (the friction couple on link
+b from link a of a revolute pair, key :func:`~mechplan.model.loads.pair_id` order), ``Ff_<ab>``
+(the friction force on the slider of a prismatic pair).
+"""
+
+from __future__ import annotations
+
+from ...errors import SceneError
+from ...model.loads import pair_id
+from ...model.mechanism import GROUND, PairKind
+from ...model.plans import Plan
+from ..graph import reaction_key
+from ..ops import Op
+from ..ops.force import FrictionLoop
+from ..step import Kind, Role
+from ..terms import Direction, Relation
+from .force_loads import State, Term, add_load, group_of
+
+F = Plan.FORCE
+
+
+def friction_loads(st: State) -> None:
+    """Emit the friction iteration and each pair's friction load (pairs with f > 0)."""
+    spec = getattr(st.loading, "friction", None)
+    if spec is None:
+        return
+    b = st.b
+    pairs = [p for p in b.mech.pairs if spec.of(p.a, p.b).f > 0
+             and (p.kind is PairKind.PRISMATIC or spec.of(p.a, p.b).radius > 0)]
+    for p in pairs:
+        if p.kind is PairKind.PRISMATIC and p.b != GROUND:
+            raise SceneError(
+                f"friction in the prismatic pair {pair_id(p.a, p.b)} between two moving links is "
+                "not supported yet (only sliders on frame guides); set its f = 0 under "
+                f"[friction.pairs]", file=b.file, key=f"{spec.key}.pairs.{pair_id(p.a, p.b)}")
+    loop = FrictionLoop(b.c, tuple(f"R_{reaction_key(p.a, p.b)}" for p in pairs),
+                        tolerance=spec.tolerance, max_iterations=spec.max_iterations)
+    drive = b.mech.drive
+    gn = f"I({GROUND},{drive.link})"
+    it = st.add("force.friction", Op.FRICTION_ITERATE, ("pos.phi1",), Kind.SCALAR, Role.RESULT,
+                "M_b⁰", gn, subject=(), loop=loop)
+    b.result("M_b0", it)
+    for index, p in enumerate(pairs):
+        fr = spec.of(p.a, p.b)
+        key = reaction_key(p.a, p.b)
+        if p.kind is PairKind.REVOLUTE:
+            # the couple on b from a; a frame side gets none (the frame does not move)
+            if p.b == GROUND:
+                first, second = p.b, p.a
+            else:
+                first, second = p.a, p.b
+            omegas = [b.bodies[second].omega]
+            if first != GROUND:
+                omegas.append(b.bodies[first].omega)
+            label = f"M^f_{reaction_key(first, second)}"
+            m = st.add(f"force.friction.M.{key}", Op.FRICTION_COUPLE, (it, *omegas), Kind.SCALAR,
+                       Role.GIVEN, label, group_of(b, second), subject=(p.point, first, second),
+                       index=index, rho=fr.rho)
+            b.result(f"Mf_{reaction_key(first, second)}", m)
+            add_load(st, second, Term(label, couple=m,
+                                      direction=Direction(Relation.AGAINST,
+                                                          f"ω{second}−ω{first}"),
+                                      magnitude="f·r·|R|"))
+            if first != GROUND:
+                back = st.add(f"force.friction.M.{key}.back", Op.FORCE_REVERSE, (m,),
+                              Kind.SCALAR, Role.GIVEN, f"M^f_{reaction_key(second, first)}",
+                              group_of(b, first), subject=(label,))
+                add_load(st, first, Term(f"M^f_{reaction_key(second, first)}", couple=back,
+                                         magnitude="f·r·|R|"))
+            continue
+        slider = p.a
+        theta = b.bodies[p.a].angle
+        assert theta is not None
+        label = f"F^f_{reaction_key(GROUND, slider)}"
+        f = st.add(f"force.friction.F.{key}", Op.FRICTION_FORCE, (it, b.vel[p.point], theta),
+                   Kind.POINT, Role.GIVEN, label, group_of(b, slider),
+                   subject=(p.point, p.guide or ""), index=index, f=fr.f)
+        b.result(f"Ff_{reaction_key(GROUND, slider)}", f)
+        add_load(st, slider, Term(label, f, b.pos[p.point],
+                                  direction=Direction(Relation.SYMBOL,
+                                                      f"∥ {p.guide}, −v_{p.point}"),
+                                  magnitude="f·|N|", where=p.point))
