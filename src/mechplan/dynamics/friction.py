@@ -119,3 +119,35 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
 
 
 __all__ = ["FrictionAnalysis", "PairFrictionResult", "analyse_friction"]
+
+
+def report_lines(fa: FrictionAnalysis, k: int, lang: str) -> list[str]:
+    """The text report's friction block at position k (catalogue ``forces.report.*``)."""
+    from ..construct.protocol import vector_text
+    from ..i18n import message, scientific, unit
+    from ..i18n import number as fmt
+
+    nm = unit("N·m", lang)
+    out = [f"### {message('forces.report.title', lang)}",
+           "  " + message("forces.report.moments", lang,
+                          free=f"{fmt(float(fa.free_moment[k]), 3, lang)} {nm}",
+                          friction=f"{fmt(float(fa.moment[k]), 3, lang)} {nm}"),
+           "  " + message("forces.report.iteration", lang, passes=fa.passes,
+                          residual=scientific(float(fa.residual[k]), 2, lang))]
+    eta, eta_p = float(fa.efficiency[k]), float(fa.efficiency_power[k])
+    if math.isfinite(eta):
+        out.append("  " + message("forces.report.efficiency", lang, eta=fmt(eta, 4, lang),
+                                  power=fmt(eta_p, 4, lang)))
+    else:
+        out.append("  " + message("forces.report.no_efficiency", lang))
+    for p in fa.pairs:
+        if p.kind == "revolute":
+            text = f"M_f = {fmt(float(p.load[k]), 3, lang)} {nm}"
+        else:
+            text = f"F_f = {vector_text(p.load[k], lang, 2)}"
+        out.append("  " + message("forces.report.pair", lang, pair=p.pair, load=text,
+                                  power=f"{fmt(float(p.power[k]), 2, lang)} {unit('W', lang)}"))
+    undefined = [p.pair for p in fa.pairs if p.undefined[k]]
+    if undefined:
+        out.append("  " + message("forces.report.undefined", lang, pairs=", ".join(undefined)))
+    return out

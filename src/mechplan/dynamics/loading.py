@@ -8,8 +8,7 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ..errors import SceneError
-from ..model.loads import FrictionSpec, Gravity, LoadKind, LoadSpec, MassSpec
-from ..model.loads import pair_id
+from ..model.loads import FrictionSpec, Gravity, LoadKind, LoadSpec, MassSpec, pair_id
 from ..model.mechanism import GROUND, Mechanism
 
 if TYPE_CHECKING:

@@ -24,7 +24,8 @@ from .spec import (
 )
 
 TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions",
-            "analysis", "gravity", "loads", "friction", "drawing", "title_block", "description", "dynamics")
+            "analysis", "gravity", "loads", "friction", "drawing", "title_block", "description",
+            "dynamics")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 #: scale-factor keys of [drawing.scales] and their dimensions: each plan's, and the moments'

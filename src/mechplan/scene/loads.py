@@ -235,8 +235,8 @@ def _two_point(t: Table, kind: LoadKind, links: dict[str, Link], name: str | Non
                       "different links (or a link and the frame)")
     if GROUND == ends[0]:
         between, ends = between[::-1], ends[::-1]
-    common = dict(link=ends[0], point=between[0], other=between[1], other_link=ends[1],
-                  key=t.path, name=name)
+    common = {"link": ends[0], "point": between[0], "other": between[1],
+              "other_link": ends[1], "key": t.path, "name": name}
     if kind is LoadKind.SPRING:
         return LoadSpec(kind, stiffness=t.quantity("stiffness", "stiffness", required=True,
                                                    nonnegative=True),
@@ -265,8 +265,10 @@ def friction_of(top: Table) -> FrictionSpec | None:
     if not isinstance(diagram, bool):
         raise t.error("diagram", "expected true or false")
     iterations = t.raw("max_iterations", 50)
-    if not isinstance(iterations, int) or isinstance(iterations, bool) or not 1 <= iterations <= 1000:
-        raise t.error("max_iterations", f"expected a whole number from 1 to 1000 (got {iterations!r})")
+    if (not isinstance(iterations, int) or isinstance(iterations, bool)
+            or not 1 <= iterations <= 1000):
+        raise t.error("max_iterations",
+                      f"expected a whole number from 1 to 1000 (got {iterations!r})")
     tol = t.quantity("tolerance", "dimensionless", 1e-10, positive=True) or 1e-10
     pairs: list[tuple[str, PairFriction]] = []
     pt = t.table("pairs")
