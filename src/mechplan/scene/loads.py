@@ -114,6 +114,7 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     if kind_s is None:
         raise t.error("type", f"is missing; one of {', '.join(kinds)}")
     kind = LoadKind.MOMENT if kind_s == "torque" else LoadKind(kind_s)
+    _only_own_keys(t, kind_s)
     link = t.string("link")
     name = t.string("name")
     if kind is LoadKind.MOMENT:
@@ -199,6 +200,27 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
                       f"(720°, a four-stroke cycle; got {math.degrees(xs[-1] - xs[0]):g}°)")
     return LoadSpec(kind, owner, point, towards=towards, against=against, table=tuple(parsed),
                     key=t.path)
+
+
+#: keys that belong to some load types only (the older types keep their own checks)
+_OWN_KEYS = {"along": ("force",), "torque": ("torque", "moment"),
+             **{k: ("spring", "cylinder") for k in ("between", "links")},
+             **{k: ("spring",) for k in ("stiffness", "free_length", "preload")},
+             **{k: ("cylinder",) for k in ("rod", "pressure_rod")}}
+
+
+def _only_own_keys(t: Table, kind: str) -> None:
+    for key, kinds in _OWN_KEYS.items():
+        if t.has(key) and kind not in kinds:
+            raise t.error(key, f"is not a key of a load of type {kind!r} (it belongs to "
+                          f"{' and '.join(kinds)}; see docs/forces.md)")
+    if kind in ("spring", "cylinder"):
+        for key in ("point", "link", "vector", "magnitude", "angle", "towards", "toward",
+                    "moment", "table", "against") + (("pressure", "bore") if kind == "spring"
+                                                      else ()):
+            if t.has(key):
+                raise t.error(key, f"is not a key of a {kind}; it acts between two points: "
+                              'between = ["D", "E"] (see docs/forces.md)')
 
 
 def _end_link(t: Table, links: dict[str, Link], point: str, link: str | None, j: int) -> str:
