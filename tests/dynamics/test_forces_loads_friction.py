@@ -353,3 +353,103 @@ def test_friction_pair_must_exist():
     text = BASE % NO_MASSES + LOADS + '[friction]\nf = 0.1\n[friction.pairs]\n"1-3" = { f = 0.2 }\n'
     with pytest.raises(SceneError, match="no pair 1-3"):
         solve(scene(text), [0.3])
+
+
+QUICK_RETURN = """
+title = "qr"
+[ground]
+O1 = ["0 mm", "0 mm"]
+O3 = ["0 mm", "-300 mm"]
+[links.1]
+lengths = { O1A = "100 mm" }
+[links.2]
+slides = { point = "A", on = "slot" }
+[links.3]
+lengths = { O3B = "600 mm" }
+guides.slot = { through = "O3", toward = "B" }
+[drive]
+link = "1"
+speed = "10 rad/s"
+sense = "ccw"
+from = "+x"
+[[loads]]
+type = "force"
+point = "B"
+vector = ["-500 N", "0 N"]
+[friction]
+f = 0.1
+pin_radius = "20 mm"
+[friction.pairs]
+"2-3" = { f = 0.15 }
+"""
+
+
+def _quick_return_reference(phi: float, f: float, x0: np.ndarray | None = None) -> float:
+    """M_b of the crank-coulisse mechanism with friction in its four pairs, from the three links'
+    equilibrium (the block's slot reaction N ⊥ the slot with a couple, the slot's friction
+    f_s·|N| against the block's sliding relative to the coulisse). f = 0: no friction at all."""
+    w1, rho, f_s = 10.0, f * 0.02, 1.5 * f
+    o3 = np.array([0.0, -0.3])
+
+    def geometry(x):
+        a = 0.1 * np.array([math.cos(x), math.sin(x)])
+        return a, math.atan2(a[1] - o3[1], a[0] - o3[0])
+
+    a, th3 = geometry(phi)
+    h = 1e-6
+    w3 = w1 * (geometry(phi + h)[1] - geometry(phi - h)[1]) / (2 * h)
+    u = np.array([math.cos(th3), math.sin(th3)])
+    n = np.array([-u[1], u[0]])
+    b = o3 + 0.6 * u
+    v_rel = w1 * np.array([-a[1], a[0]]) - w3 * np.array([-(a - o3)[1], (a - o3)[0]])
+    sense = np.sign(v_rel @ u)
+
+    def cross(p, q):
+        return p[0] * q[1] - p[1] * q[0]
+
+    def equations(x):
+        r12, nn, m32, r03, r01, mb = x[0:2], x[2], x[3], x[4:6], x[6:8], x[8]
+        f32 = nn * n - f_s * abs(nn) * sense * u          # force of 3 on 2 at A
+        mf12_on2 = -rho * np.hypot(*r12) * np.sign(w3 - w1)
+        mf03_on3 = -rho * np.hypot(*r03) * np.sign(w3)
+        mf01_on1 = -rho * np.hypot(*r01) * np.sign(w1)
+        eq2 = r12 + f32
+        m2 = m32 + mf12_on2
+        eq3 = r03 - f32 + np.array([-500.0, 0.0])
+        m3 = cross(a - o3, -f32) - m32 + cross(b - o3, np.array([-500.0, 0.0])) + mf03_on3
+        eq1 = r01 - r12
+        m1 = mb + cross(a, -r12) + mf01_on1 - mf12_on2
+        return [*eq2, m2, *eq3, m3, *eq1, m1]
+
+    if x0 is None and f > 0:       # start from the friction-free equilibrium (|N| is kinked at 0)
+        x0 = _quick_return_start(phi)
+    if x0 is None:
+        x0 = np.zeros(9)
+        x0[2] = 500.0
+    sol, _info, ok, msg = fsolve(equations, x0, full_output=True, xtol=1e-13)
+    assert ok in (1, 3), msg
+    assert np.abs(equations(sol)).max() < 1e-8
+    if f == 0.0 and x0 is not None and len(x0) == 9 and x0[2] == 500.0:
+        _QR_START[phi] = sol
+    return float(sol[8])
+
+
+_QR_START: dict[float, np.ndarray] = {}
+
+
+def _quick_return_start(phi: float) -> np.ndarray:
+    _quick_return_reference(phi, 0.0)
+    return _QR_START[phi]
+
+
+@pytest.mark.parametrize("deg", [15.0, 70.0, 130.0, 200.0, 260.0, 320.0])
+def test_coulisse_friction_against_fsolve(deg):
+    """Friction in a prismatic pair between two moving links (block in the coulisse's slot)."""
+    phi = math.radians(deg)
+    _, _, fa = solve(scene(QUICK_RETURN), [phi])
+    expected = _quick_return_reference(phi, 0.1)
+    assert abs(fa.balancing_moment[0] - expected) < 1e-8 * abs(expected)
+    assert abs(fa.zhukovsky_moment[0] - expected) < 1e-8 * abs(expected)
+    assert fa.friction is not None
+    free = _quick_return_reference(phi, 0.0)
+    assert abs(fa.friction.free_moment[0] - free) < 1e-8 * abs(free)

@@ -99,12 +99,14 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
             pairs.append(PairFrictionResult(pair_id(p.a, p.b), "revolute", load, load * rel,
                                             rel, np.abs(rel) <= UNDEFINED * scale))
         else:
-            sid = c.results.get(f"Ff_{reaction_key(GROUND, p.a)}")
+            sid = c.results.get(f"Ff_{reaction_key(p.b, p.a)}")
             if sid is None:
                 continue
             load = ev[sid]
             step = c[sid]
             v, angle = ev[step.inputs[1]], ev[step.inputs[2]]
+            if len(step.inputs) > 3:             # the guide's link moves: sliding relative to it
+                v = v - ev[step.inputs[3]]
             rel = dot(v, np.stack((np.cos(angle), np.sin(angle)), axis=-1))
             # speeds against |ω1|·(1 m): a sliding speed this small has no sense
             pairs.append(PairFrictionResult(pair_id(p.a, p.b), "prismatic", load, dot(load, v),

@@ -329,11 +329,13 @@ def friction_couple(step: Step, loop: Array, *omegas: Array, shared: dict) -> Re
     return -float(step.param("rho")) * _basis(step, shared) * np.sign(w_rel), None, None
 
 
-def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *,
+def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *carrier: Array,
                    shared: dict) -> Result:
-    """F_f = −f·|N|·sign(v·u)·u on a slider sliding at ``velocity`` along a frame guide."""
+    """F_f = −f·|N|·sign(v_rel·u)·u on a slider; v_rel = its point's velocity minus the velocity
+    of the carrier's point under it (``carrier``: that image; absent for a frame guide)."""
     u = direction(angle)
-    sense = np.sign(dot(velocity, u))
+    v_rel = velocity - carrier[0] if carrier else velocity
+    sense = np.sign(dot(v_rel, u))
     return (-float(step.param("f")) * _basis(step, shared) * sense)[..., None] * u, None, None
 
 

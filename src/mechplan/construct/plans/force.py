@@ -376,7 +376,7 @@ def _lever(st: State) -> None:
     layout, labels = "", []
     for link, t in st.applied:
         if t.force is not None:
-            inputs += [b.vel[t.where], t.force]
+            inputs += [t.velocity or b.vel[t.where], t.force]
             layout += "F"
             labels.append(t.label)
         if t.couple is not None:

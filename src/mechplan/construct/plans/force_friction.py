@@ -2,13 +2,13 @@
 
 A revolute pair with friction coefficient f and pin radius r carries a friction couple
 M_f = f·r·|R| (the reaction is tangent to the friction circle ρ = f·r) against the relative
-rotation; a prismatic pair on a frame guide a friction force f·|N| along the guide against the
-sliding velocity (the total reaction is tilted by the friction angle φ = atan f). The sizes come
+rotation; a prismatic pair a friction force f·|N| along the guide against the sliding velocity relative
+to the guide's link (the opposite force on that link when it moves) (the total reaction is tilted by the friction angle φ = atan f). The sizes come
 from the reactions of the previous pass (:func:`~mechplan.construct.ops.force.friction_iterate`):
 the first pass is friction-free.
 
 Results: ``M_b0`` (the friction-free balancing moment), ``Mf_<ab>`` (the friction couple on link
-b from link a of a revolute pair, key :func:`~mechplan.model.loads.pair_id` order), ``Ff_<ab>``
+b from link a of a revolute pair, key :func:`~mechplan.model.loads.pair_id` order), ``Ff_<carrier slider>``
 (the friction force on the slider of a prismatic pair).
 """
 
@@ -36,12 +36,17 @@ def friction_loads(st: State) -> None:
     b = st.b
     pairs = [p for p in b.mech.pairs if spec.of(p.a, p.b).f > 0
              and (p.kind is PairKind.PRISMATIC or spec.of(p.a, p.b).radius > 0)]
-    for p in pairs:
+    carriers: dict[int, str] = {}
+    for index, p in enumerate(pairs):
         if p.kind is PairKind.PRISMATIC and p.b != GROUND:
-            raise SceneError(
-                f"friction in the prismatic pair {pair_id(p.a, p.b)} between two moving links is "
-                "not supported yet (only sliders on frame guides); set its f = 0 under "
-                f"[friction.pairs]", file=b.file, key=f"{spec.key}.pairs.{pair_id(p.a, p.b)}")
+            image = b.bodies[p.b].image(f"{p.point}@{p.b}")
+            if image is None or image.vel is None or p.a == GROUND:
+                raise SceneError(
+                    f"friction in the prismatic pair {pair_id(p.a, p.b)} needs the velocity of "
+                    f"the point of link {p.b} under {p.point}, which this construction does not "
+                    f"draw; set its f = 0 under [friction.pairs]",
+                    file=b.file, key=f"{spec.key}.pairs.{pair_id(p.a, p.b)}")
+            carriers[index] = image.vel
     loop = FrictionLoop(b.c, tuple(f"R_{reaction_key(p.a, p.b)}" for p in pairs),
                         tolerance=spec.tolerance, max_iterations=spec.max_iterations)
     drive = b.mech.drive
@@ -77,15 +82,25 @@ def friction_loads(st: State) -> None:
                 add_load(st, first, Term(f"M^f_{reaction_key(second, first)}", couple=back,
                                          magnitude="f·r·|R|"))
             continue
-        slider = p.a
+        slider, carrier = p.a, p.b
         theta = b.bodies[p.a].angle
         assert theta is not None
-        label = f"F^f_{reaction_key(GROUND, slider)}"
-        f = st.add(f"force.friction.F.{key}", Op.FRICTION_FORCE, (it, b.vel[p.point], theta),
-                   Kind.POINT, Role.GIVEN, label, group_of(b, slider),
-                   subject=(p.point, p.guide or ""), index=index, f=fr.f)
-        b.result(f"Ff_{reaction_key(GROUND, slider)}", f)
+        label = f"F^f_{reaction_key(carrier, slider)}"
+        moving = (carriers[index],) if index in carriers else ()
+        f = st.add(f"force.friction.F.{key}", Op.FRICTION_FORCE,
+                   (it, b.vel[p.point], theta, *moving), Kind.POINT, Role.GIVEN, label,
+                   group_of(b, slider), subject=(p.point, p.guide or ""), index=index, f=fr.f)
+        b.result(f"Ff_{reaction_key(carrier, slider)}", f)
+        relative = f"v_{p.point}{slider}{carrier}" if moving else f"v_{p.point}"
         add_load(st, slider, Term(label, f, b.pos[p.point],
                                   direction=Direction(Relation.SYMBOL,
-                                                      f"∥ {p.guide}, −v_{p.point}"),
+                                                      f"∥ {p.guide}, −{relative}"),
                                   magnitude="f·|N|", where=p.point))
+        if moving:
+            back_label = f"F^f_{reaction_key(slider, carrier)}"
+            back = st.add(f"force.friction.F.{key}.back", Op.FORCE_REVERSE, (f,), Kind.POINT,
+                          Role.GIVEN, back_label, group_of(b, carrier), subject=(label,))
+            add_load(st, carrier, Term(back_label, back, b.pos[p.point],
+                                       direction=Direction(Relation.OPPOSITE, label),
+                                       magnitude="f·|N|", where=p.point,
+                                       velocity=carriers[index]))

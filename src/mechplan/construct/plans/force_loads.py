@@ -49,6 +49,7 @@ class Term:
     direction: Direction = GIVEN
     magnitude: str = "✓"
     where: str = ""               # name of the point of application (for its velocity image)
+    velocity: str | None = None   # its velocity image's step when ``where`` is not enough
 
 
 @dataclass
