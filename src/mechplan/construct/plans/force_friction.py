@@ -2,14 +2,15 @@
 
 A revolute pair with friction coefficient f and pin radius r carries a friction couple
 M_f = f·r·|R| (the reaction is tangent to the friction circle ρ = f·r) against the relative
-rotation; a prismatic pair a friction force f·|N| along the guide against the sliding velocity relative
-to the guide's link (the opposite force on that link when it moves) (the total reaction is tilted by the friction angle φ = atan f). The sizes come
-from the reactions of the previous pass (:func:`~mechplan.construct.ops.force.friction_iterate`):
-the first pass is friction-free.
+rotation; a prismatic pair a friction force f·|N| along the guide against the sliding velocity
+relative to the guide's link, and the opposite force on that link when it moves (the total
+reaction is tilted by the friction angle φ = atan f). The sizes come from the reactions of the
+previous pass (:func:`~mechplan.construct.ops.force.friction_iterate`): the first pass is
+friction-free.
 
-Results: ``M_b0`` (the friction-free balancing moment), ``Mf_<ab>`` (the friction couple on link
-b from link a of a revolute pair, key :func:`~mechplan.model.loads.pair_id` order), ``Ff_<carrier slider>``
-(the friction force on the slider of a prismatic pair).
+Results: ``M_b0`` (the friction-free balancing moment), ``Mf_<ij>`` (the friction couple on link
+j from link i of a revolute pair, the frame first), ``Ff_<ij>`` (the friction force on the slider
+j from the guide's link i of a prismatic pair).
 """
 
 from __future__ import annotations
