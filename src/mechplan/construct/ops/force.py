@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -291,20 +292,20 @@ def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
     passes made and the last relative change (N,) are left in ``shared`` for the friction steps.
     """
     loop: FrictionLoop = step.param("loop")
-    c = loop.construction
-    phi = c.drive.scene(theta)          # type: ignore[attr-defined]
+    c: Any = loop.construction          # a Construction (not imported: it imports the ops)
+    phi = c.drive.scene(theta)
     n, p = theta.shape[0], len(loop.reactions)
     basis = np.zeros((n, p))
     residual = np.full(n, np.inf)
     mb0 = np.zeros(n)
     passes = 0
     for passes in range(1, loop.max_iterations + 1):
-        inner = c.evaluate(phi, overrides={step.id: mb0})     # type: ignore[attr-defined]
+        inner = c.evaluate(phi, overrides={step.id: mb0})
         inner.shared[("friction", step.id)] = {"basis": basis}
-        new = np.stack([norm(inner[c.results[r]]) for r in loop.reactions], axis=-1) \
-            if p else basis               # type: ignore[attr-defined]
+        new = (np.stack([norm(inner[c.results[r]]) for r in loop.reactions], axis=-1)
+               if p else basis)
         if passes == 1:
-            mb0 = np.array(inner[c.results[loop.balancing]])  # type: ignore[attr-defined]
+            mb0 = np.array(inner[c.results[loop.balancing]])
         scale = np.maximum(np.max(new, axis=-1, initial=0.0), 1e-300)
         residual = np.max(np.abs(new - basis), axis=-1, initial=0.0) / scale
         basis = new

@@ -64,9 +64,9 @@ def friction_loads(st: State) -> None:
                 first, second = p.b, p.a
             else:
                 first, second = p.a, p.b
-            omegas = [b.bodies[second].omega]
-            if first != GROUND:
-                omegas.append(b.bodies[first].omega)
+            omegas = [w for w in (b.bodies[second].omega,
+                                  None if first == GROUND else b.bodies[first].omega)
+                      if w is not None]
             label = f"M^f_{reaction_key(first, second)}"
             m = st.add(f"force.friction.M.{key}", Op.FRICTION_COUPLE, (it, *omegas), Kind.SCALAR,
                        Role.GIVEN, label, group_of(b, second), subject=(p.point, first, second),
