@@ -453,3 +453,37 @@ def test_coulisse_friction_against_fsolve(deg):
     assert fa.friction is not None
     free = _quick_return_reference(phi, 0.0)
     assert abs(fa.friction.free_moment[0] - free) < 1e-8 * abs(free)
+
+
+def test_self_locking_where_the_tilted_reaction_says_so():
+    """Central slider-crank, friction only in the guide (f = 1.5), a resistance along the guide:
+    T(cos β − f sin β) = P has a positive T only while f·tan β < 1 (η = 1 − f tan β > 0). Beyond,
+    the iteration cannot settle: the position is flagged, M_b with friction not given, and a
+    solve at that angle is refused with the reason."""
+    text = CLOSED.replace('"0-3" = { f = 0.15 }', '"0-3" = { f = 1.5 }').replace(
+        '"400 mm"', '"150 mm"')
+    phi = np.radians([20.0, 30.0, 60.0, 90.0, 120.0, 150.0, 160.0])
+    _, _, fa = solve(scene(text), phi)
+    beta = np.arcsin(0.1 * np.sin(phi) / 0.15)
+    locks = 1.5 * np.tan(beta) >= 1.0
+    assert locks.any() and (~locks).any()
+    assert fa.friction is not None
+    assert list(~fa.friction.converged) == list(locks)
+    assert np.all(np.isnan(fa.friction.moment[locks]))
+    ok = ~locks
+    np.testing.assert_allclose(fa.friction.efficiency[ok], 1 - 1.5 * np.tan(beta[ok]),
+                               rtol=1e-10)
+    assert fa.json(int(np.argmax(locks)))["friction"]["converged"] is False
+
+
+def test_a_self_locked_position_is_refused_with_its_reason(tmp_path):
+    from mechplan.errors import SingularError
+    from mechplan.scene import load_scene
+    from mechplan.solve import solve as solve_scene
+
+    text = CLOSED.replace('"0-3" = { f = 0.15 }', '"0-3" = { f = 1.5 }').replace(
+        '"400 mm"', '"150 mm"') + "[positions]\nat = [\"90 deg\"]\n"
+    path = tmp_path / "lock.toml"
+    path.write_text(text, encoding="utf-8")
+    with pytest.raises(SingularError, match="self-locks"):
+        solve_scene(load_scene(path))

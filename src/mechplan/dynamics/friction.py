@@ -48,6 +48,12 @@ class FrictionAnalysis:
     passes: int
     residual: Array           # (N,) last relative change of the reactions
     pairs: tuple[PairFrictionResult, ...]
+    tolerance: float = 1e-10
+
+    @property
+    def converged(self) -> Array:
+        """(N,) True where the iteration settled (it diverges where the mechanism self-locks)."""
+        return np.asarray(self.residual <= self.tolerance)
 
     @property
     def undefined(self) -> Array:
@@ -65,6 +71,7 @@ class FrictionAnalysis:
             "efficiency_by_powers": _num(self.efficiency_power[i]),
             "iterations": self.passes,
             "residual": _num(self.residual[i]),
+            "converged": bool(self.converged[i]),
             "undefined_sense": [p.pair for p in self.pairs if p.undefined[i]],
             "pairs": {p.pair: ({"moment": _num(p.load[i])} if p.kind == "revolute" else
                                {"force": [_num(p.load[i][0]), _num(p.load[i][1])]})
@@ -104,9 +111,9 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
                 continue
             load = ev[sid]
             step = c[sid]
-            v, angle = ev[step.inputs[1]], ev[step.inputs[2]]
-            if len(step.inputs) > 3:             # the guide's link moves: sliding relative to it
-                v = v - ev[step.inputs[3]]
+            v, angle = ev[step.input("velocity")], ev[step.input("angle")]
+            for carrier in step.rest():          # the guide's link moves: sliding relative to it
+                v = v - ev[carrier]
             rel = dot(v, np.stack((np.cos(angle), np.sin(angle)), axis=-1))
             # speeds against |ω1|·(1 m): a sliding speed this small has no sense
             pairs.append(PairFrictionResult(pair_id(p.a, p.b), "prismatic", load, dot(load, v),
@@ -116,8 +123,14 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
     with np.errstate(invalid="ignore", divide="ignore"):
         eta = np.where(drives, free / moment, np.nan)
         eta_p = np.where(drives, 1.0 + lost / (moment * omega1), np.nan)
+    converged = np.asarray(info["residual"]) <= float(info["tolerance"])
+    # where the iteration did not settle no moment with friction can be trusted
+    moment = np.where(converged, moment, np.nan)
+    eta = np.where(converged, eta, np.nan)
+    eta_p = np.where(converged, eta_p, np.nan)
     return FrictionAnalysis(free, moment, eta, eta_p, int(info["passes"]),
-                            np.asarray(info["residual"]), tuple(pairs))
+                            np.asarray(info["residual"]), tuple(pairs),
+                            float(info["tolerance"]))
 
 
 __all__ = ["FrictionAnalysis", "PairFrictionResult", "analyse_friction"]
@@ -149,6 +162,8 @@ def report_lines(fa: FrictionAnalysis, k: int, lang: str) -> list[str]:
             text = f"F_f = {vector_text(p.load[k], lang, 2)}"
         out.append("  " + message("forces.report.pair", lang, pair=p.pair, load=text,
                                   power=f"{fmt(float(p.power[k]), 2, lang)} {unit('W', lang)}"))
+    if not fa.converged[k]:
+        out.append("  " + message("forces.report.diverged", lang, passes=fa.passes))
     undefined = [p.pair for p in fa.pairs if p.undefined[k]]
     if undefined:
         out.append("  " + message("forces.report.undefined", lang, pairs=", ".join(undefined)))

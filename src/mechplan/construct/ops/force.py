@@ -311,13 +311,17 @@ def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
         basis = new
         if passes > 1 and not np.any(residual > loop.tolerance):
             break
-    shared[("friction", step.id)] = {"basis": basis, "passes": passes, "residual": residual}
+    # a position where the passes did not settle (self-locking: the reactions grow without
+    # bound) gets no friction loads at all: NaN, so nothing built on them passes for a result
+    basis = np.where((residual <= loop.tolerance)[:, None], basis, np.nan)
+    shared[("friction", step.id)] = {"basis": basis, "passes": passes, "residual": residual,
+                                     "tolerance": loop.tolerance}
     return mb0, None, None
 
 
 def _basis(step: Step, shared: dict) -> Array:
     """|R| of this pair from the pass before (zeros on the friction-free pass)."""
-    out: Array = shared[("friction", step.inputs[0])]["basis"][:, step.param("index")]
+    out: Array = shared[("friction", step.input("loop"))]["basis"][:, step.param("index")]
     return out
 
 

@@ -19,7 +19,7 @@ from ...errors import SceneError
 from ...model.loads import pair_id
 from ...model.mechanism import GROUND, PairKind
 from ...model.plans import Plan
-from ..graph import reaction_key
+from ..graph import Construction, Evaluation, reaction_key
 from ..ops import Op
 from ..ops.force import FrictionLoop
 from ..step import Kind, Role
@@ -105,3 +105,15 @@ def friction_loads(st: State) -> None:
                                        direction=Direction(Relation.OPPOSITE, label),
                                        magnitude="f·|N|", where=p.point,
                                        velocity=carriers[index]))
+
+
+def unsettled(c: Construction, ev: Evaluation, k: int) -> str | None:
+    """Why position k has no force plan if the friction passes did not settle there, else None."""
+    sid = c.results.get("M_b0")
+    info = ev.shared.get(("friction", sid)) if sid is not None else None
+    if info is None or not info["residual"][k] > info["tolerance"]:
+        return None
+    return (f"the friction iteration does not settle (after {info['passes']} passes the reactions "
+            f"still change by {float(info['residual'][k]):.1e} of themselves): with these friction "
+            "coefficients the mechanism self-locks here, the driving link cannot move it; choose "
+            "another position or smaller friction coefficients")
