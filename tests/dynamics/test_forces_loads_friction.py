@@ -384,9 +384,9 @@ pin_radius = "20 mm"
 """
 
 
-def _quick_return_reference(phi: float, f: float, x0: np.ndarray | None = None) -> float:
-    """M_b of the crank-coulisse mechanism with friction in its four pairs, from the three links'
-    equilibrium (the block's slot reaction N ⊥ the slot with a couple, the slot's friction
+def _quick_return_solve(phi: float, f: float, x0: np.ndarray) -> np.ndarray:
+    """The unknowns (R12, N, M32, R03, R01, M_b) of the crank-coulisse mechanism with friction
+    in its four pairs, from the three links' equilibrium (the block's slot reaction N ⊥ the slot with a couple, the slot's friction
     f_s·|N| against the block's sliding relative to the coulisse). f = 0: no friction at all."""
     w1, rho, f_s = 10.0, f * 0.02, 1.5 * f
     o3 = np.array([0.0, -0.3])
@@ -421,25 +421,18 @@ def _quick_return_reference(phi: float, f: float, x0: np.ndarray | None = None) 
         m1 = mb + cross(a, -r12) + mf01_on1 - mf12_on2
         return [*eq2, m2, *eq3, m3, *eq1, m1]
 
-    if x0 is None and f > 0:       # start from the friction-free equilibrium (|N| is kinked at 0)
-        x0 = _quick_return_start(phi)
-    if x0 is None:
-        x0 = np.zeros(9)
-        x0[2] = 500.0
     sol, _info, ok, msg = fsolve(equations, x0, full_output=True, xtol=1e-13)
     assert ok in (1, 3), msg
     assert np.abs(equations(sol)).max() < 1e-8
-    if f == 0.0 and x0 is not None and len(x0) == 9 and x0[2] == 500.0:
-        _QR_START[phi] = sol
-    return float(sol[8])
+    return sol
 
 
-_QR_START: dict[float, np.ndarray] = {}
-
-
-def _quick_return_start(phi: float) -> np.ndarray:
-    _quick_return_reference(phi, 0.0)
-    return _QR_START[phi]
+def _quick_return_reference(phi: float, f: float) -> float:
+    """M_b with friction f; fsolve starts from the friction-free equilibrium (|N| has a kink)."""
+    x0 = np.zeros(9)
+    x0[2] = 500.0
+    free = _quick_return_solve(phi, 0.0, x0)
+    return float((free if f == 0 else _quick_return_solve(phi, f, free))[8])
 
 
 @pytest.mark.parametrize("deg", [15.0, 70.0, 130.0, 200.0, 260.0, 320.0])
