@@ -386,8 +386,9 @@ pin_radius = "20 mm"
 
 def _quick_return_solve(phi: float, f: float, x0: np.ndarray) -> np.ndarray:
     """The unknowns (R12, N, M32, R03, R01, M_b) of the crank-coulisse mechanism with friction
-    in its four pairs, from the three links' equilibrium (the block's slot reaction N ⊥ the slot with a couple, the slot's friction
-    f_s·|N| against the block's sliding relative to the coulisse). f = 0: no friction at all."""
+    in its four pairs, from the three links' equilibrium (the block's slot reaction N ⊥ the slot
+    with a couple, the slot's friction f_s·|N| against the block's sliding relative to the
+    coulisse). f = 0: no friction at all."""
     w1, rho, f_s = 10.0, f * 0.02, 1.5 * f
     o3 = np.array([0.0, -0.3])
 
