@@ -281,6 +281,20 @@ class FrictionLoop:
     balancing: str = "M_b"
     tolerance: float = 1e-10
     max_iterations: int = 50
+    #: steps built on the friction loads (by the number of steps when found): the rest is
+    #: evaluated once and kept for every next pass
+    _downstream: tuple[int, frozenset[str]] = (-1, frozenset())
+
+    def downstream(self, start: str) -> frozenset[str]:
+        """The steps that depend on ``start`` (kinematics do not: they are kept between passes)."""
+        c: Any = self.construction
+        if self._downstream[0] != len(c.steps):
+            found = {start}
+            for sid, st in c.steps.items():
+                if any(i in found for i in st.inputs):
+                    found.add(sid)
+            self._downstream = (len(c.steps), frozenset(found))
+        return self._downstream[1]
 
 
 def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
@@ -299,13 +313,20 @@ def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
     residual = np.full(n, np.inf)
     mb0 = np.zeros(n)
     passes = 0
+    downstream = loop.downstream(step.id)
+    kept: dict[str, Array] = {}
+    kept_shared: dict = {}
     for passes in range(1, loop.max_iterations + 1):
         inner = c.evaluate(phi, overrides={step.id: mb0})
+        inner.values.update(kept)
+        inner.shared.update(kept_shared)
         inner.shared[("friction", step.id)] = {"basis": basis}
         new = (np.stack([norm(inner[c.results[r]]) for r in loop.reactions], axis=-1)
                if p else basis)
         if passes == 1:
             mb0 = np.array(inner[c.results[loop.balancing]])
+            kept = {k: v for k, v in inner.values.items() if k not in downstream}
+            kept_shared = {k: v for k, v in inner.shared.items() if k[0] != "friction"}
         scale = np.maximum(np.max(new, axis=-1, initial=0.0), 1e-300)
         residual = np.max(np.abs(new - basis), axis=-1, initial=0.0) / scale
         basis = new
