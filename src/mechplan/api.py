@@ -355,7 +355,8 @@ def _forces(fa: Any) -> Forces:
         guide_reactions=ByName({k: reaction(x) for k, x in fa.guide_reactions.items()},
                               "guide reaction"),
         M_b=_frozen(fa.balancing_moment), M_b_zhukovsky=_frozen(fa.zhukovsky_moment),
-        M_red=_frozen(fa.reduced_moment), J_red=_frozen(fa.reduced_inertia))
+        M_red=_frozen(fa.reduced_moment), J_red=_frozen(fa.reduced_inertia),
+        friction=fa.friction)
 
 
 # -- reading scenes ---------------------------------------------------------------------------

@@ -147,4 +147,7 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {nm}")
     out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
                f"{unit('kg·m²', lang)}")
+    if fa.friction is not None:
+        from .dynamics.friction import report_lines
+        out += report_lines(fa.friction, k, lang)
     return out

@@ -110,6 +110,9 @@ class Forces:
         Balancing moment on the crank (N,) from the force polygons and from Zhukovsky's lever.
     M_red, J_red : np.ndarray
         Reduced moment (N·m) and reduced moment of inertia (kg·m²), shape (N,).
+    friction : FrictionAnalysis or None
+        With ``[friction]``: M_b without friction, the efficiency η, the iteration and each
+        pair's friction load (``mechplan.dynamics.friction``; docs/forces.md).
     """
 
     inertia: Mapping[str, InertiaLoad]
@@ -119,6 +122,7 @@ class Forces:
     M_b_zhukovsky: np.ndarray
     M_red: np.ndarray
     J_red: np.ndarray
+    friction: Any = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -29,6 +29,7 @@ DIMENSIONS: dict[str, tuple[str, str]] = {
     "area": ("[length]**2", "m**2"),
     "dimensionless": ("", ""),
     "density": ("[mass]/[length]**3", "kg/m**3"),
+    "stiffness": ("[mass]/[time]**2", "N/m"),
     # scale factors: physical unit per mm of paper
     "mu_length": ("", "m/mm"),
     "mu_velocity": ("1/[time]", "m/s/mm"),
@@ -62,6 +63,7 @@ _EXAMPLES = {
     "area": '"78.5 cm^2"',
     "dimensionless": '"0.35"',
     "density": '"7800 kg/m^3"',
+    "stiffness": '"20 N/mm" or "20000 N/m"',
     "mu_length": '"0.0025 m/mm"',
     "mu_velocity": '"0.1 (m/s)/mm"',
     "mu_acceleration": '"2 (m/s^2)/mm"',

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..model.loads import Gravity, LoadSpec, MassSpec
+from ..model.loads import FrictionSpec, Gravity, LoadSpec, MassSpec
 from ..model.mechanism import Mechanism
 from ..model.plans import Plan
 from ..model.textbook import TextbookSpec
@@ -59,3 +59,4 @@ class Scene:
     drawing: DrawingSpec
     assembly_phi: float = 0.0
     textbook: TextbookSpec | None = None     # the [answers] section: textbook answers asked
+    friction: FrictionSpec | None = None      # [friction]: friction in the pairs (docs/forces.md)

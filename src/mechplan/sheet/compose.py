@@ -16,6 +16,7 @@ from ..i18n import message, scientific, significant
 from ..model.mechanism import GROUND, PairKind
 from ..model.plans import Plan
 from ..solve import Solution
+from .friction_diagram import efficiency_diagram
 from .kinematics_sheet import (
     balancing_diagram,
     grid,
@@ -154,7 +155,8 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
         if lever is not None:
             panels.append(lever)
     mb = balancing_diagram(sol, lang, r)
-    return panels + ([mb] if mb is not None else [])
+    eta = efficiency_diagram(sol, lang, r)
+    return panels + [d for d in (mb, eta) if d is not None]
 
 
 def crank_degrees(sol: Solution, k: int) -> float:
