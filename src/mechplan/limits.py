@@ -12,6 +12,7 @@ import re
 import numpy as np
 
 from .errors import MechplanError, shown
+from .i18n import Text
 
 DEFAULT_BUDGET = 2 * 1024**3
 #: bytes per step and position: a (N, 2) float64 value, its gap or sine, and evaluation temporaries
@@ -31,7 +32,7 @@ def memory_budget() -> int:
         return DEFAULT_BUDGET
     m = re.fullmatch(r"(\d+(?:\.\d+)?)\s*([kKmMgGtT]?[bB]?)", text)
     if not m:
-        raise LimitError(f"MECHPLAN_MEMORY_BUDGET must be a size such as '4 GB' (got {text!r})")
+        raise LimitError(Text("errors.budget.env", {"value": repr(text)}))
     return int(min(float(m.group(1)) * _UNITS[m.group(2).lower()], 2.0**62))
 
 
@@ -52,10 +53,9 @@ def ensure_within_budget(positions: int, steps: int, *, file: str | None = None,
     budget = memory_budget()
     if estimate > budget:
         need = "more than 1024 TB" if estimate >= 1024**5 else f"about {_size(estimate)}"
-        raise LimitError(
-            f"{shown(positions)} positions × {steps} construction steps need {need} "
-            f"of memory, more than the budget of {_size(budget)}; ask for fewer positions "
-            "(e.g. count = 3600) or raise MECHPLAN_MEMORY_BUDGET", file=file, key=key)
+        raise LimitError(Text("errors.budget.steps", {
+            "positions": shown(positions), "steps": str(steps), "need": need,
+            "budget": _size(budget)}), file=file, key=key)
     return estimate
 
 
@@ -72,11 +72,9 @@ def ensure_report_within_budget(positions: int, json_bytes: int, *, file: str | 
     budget = memory_budget()
     if estimate > budget:
         most = max(1, budget // max(1, json_bytes * REPORT_BYTES_FACTOR))
-        raise LimitError(
-            f"a report of {shown(positions)} positions needs about {_size(estimate)} of memory, "
-            f"more than the budget of {_size(budget)}; ask for at most about {most:,} positions, "
-            "use `mechplan sweep` for summaries over many positions, or raise "
-            "MECHPLAN_MEMORY_BUDGET", file=file, key=key)
+        raise LimitError(Text("errors.budget.report", {
+            "positions": shown(positions), "need": _size(estimate), "budget": _size(budget),
+            "most": f"{most:,}"}), file=file, key=key)
     return estimate
 
 

@@ -12,7 +12,7 @@ from pathlib import Path
 from .. import __version__
 from ..drafting.fields import SHEETS, STANDARDS
 from ..errors import MechplanError, shown
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 
 #: exit code of a run that completed but flagged results or left positions out (see README)
 FLAGGED = 3
@@ -102,8 +102,7 @@ def _solve(args: argparse.Namespace) -> int:
     if args.csv:
         write_csv = getattr(study, "write_csv", None)
         if write_csv is None:
-            raise MechplanError(f"--csv writes the per-angle table of an engine scene; "
-                                f"{args.scene} has none")
+            raise MechplanError(Text("errors.cli.csv", {"scene": str(args.scene)}))
         write_csv(args.csv)
     warnings = study.warnings(args.lang) if hasattr(study, "warnings") else []
     for line in warnings:
@@ -127,8 +126,8 @@ def _draw(args: argparse.Namespace) -> int:
     formats = [f.strip().lower() for f in args.format.split(",") if f.strip()]
     unknown = [f for f in formats if f not in FORMATS]
     if unknown or not formats:
-        raise MechplanError(f"--format must list some of {', '.join(FORMATS)} (got "
-                            f"{args.format!r})")
+        raise MechplanError(Text("errors.cli.format", {"formats": ", ".join(FORMATS),
+                                                       "value": repr(args.format)}))
     if args.system_fonts:
         from ..drafting.fonts import ENV_SYSTEM_FONTS
 
@@ -175,8 +174,8 @@ def _template_text(name: str) -> str:
     stem = name.removesuffix(".toml")
     names = template_names()
     if stem not in names:
-        raise MechplanError(f"template must be one of {', '.join(names)} (got {name!r}); "
-                            "see mechplan new --list")
+        raise MechplanError(Text("errors.cli.template", {"names": ", ".join(names),
+                                                         "value": repr(name)}))
     return (resources.files("mechplan") / "templates" / f"{stem}.toml").read_text(
         encoding="utf-8")
 
@@ -187,8 +186,7 @@ def _new(args: argparse.Namespace) -> int:
             print(name)
         return 0
     if not args.template:
-        raise MechplanError("name a template (see mechplan new --list), e.g. mechplan new "
-                            "four_bar")
+        raise MechplanError(Text("errors.cli.name_template"))
     text = _template_text(args.template)
     name = f"{Path(args.template).name.removesuffix('.toml')}.toml"
     dest = Path(args.output or name)
@@ -196,17 +194,18 @@ def _new(args: argparse.Namespace) -> int:
     into = bool(args.output) and args.output.endswith(("/", os.sep))
     if into or dest.is_dir():
         if dest.exists() and not dest.is_dir():
-            raise MechplanError(f"{dest} is a file, not a folder; -o {args.output} asks to write "
-                                "into a folder")
+            raise MechplanError(Text("errors.cli.not_folder", {"path": str(dest),
+                                                               "output": args.output}))
         try:
             dest.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
             from ..errors import os_reason
 
-            raise MechplanError(f"cannot create the folder {dest}: {os_reason(exc)}") from None
+            said = Text("errors.cli.cannot_create", {"path": str(dest), "reason": os_reason(exc)})
+            raise MechplanError(said) from None
         dest = dest / name
     if dest.exists():
-        raise MechplanError(f"{dest} exists already; choose another name with -o")
+        raise MechplanError(Text("errors.cli.exists", {"path": str(dest)}))
     from ..render.atomic import write_atomic
 
     write_atomic(dest, text.encode("utf-8"))
