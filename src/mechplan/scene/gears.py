@@ -48,7 +48,8 @@ def _module(t: Table, name: str = "module") -> float:
 def _planetary(t: Table) -> PlanetarySpec:
     t.check_keys(("scheme", "fixed", "input", "output", "ratio", "deviation", "planets", "module",
                   "modules", "teeth", "z_min", "ring_difference", "addendum", "given",
-                  "input_speed"))
+                  "input_speed", "centre_distance", "pressure_angle", "max_shift_sum",
+                  "mesh_efficiency", "output_torque"))
     name = t.string("scheme", required=True)
     if name not in SCHEMES:
         raise t.error("scheme", f"must be one of {', '.join(SCHEMES)} (got {name!r})")
@@ -68,7 +69,7 @@ def _planetary(t: Table) -> PlanetarySpec:
     if ratio == 0:
         raise t.error("ratio", "must not be zero (got 0)")
     deviation = t.quantity("deviation", "dimensionless", 0.02, nonnegative=True)
-    planets = _int(t, "planets", 3, lo=2)
+    planets = _int(t, "planets", 3, lo=1)
     if t.has("module") and t.has("modules"):
         raise t.error("modules", "give either module or modules, not both")
     if t.has("modules"):
@@ -90,7 +91,8 @@ def _planetary(t: Table) -> PlanetarySpec:
     assert planets is not None and deviation is not None and speed is not None
     if not speed != 0:
         raise t.error("input_speed", "must not be zero")
-    return PlanetarySpec(scheme=scheme, fixed=fixed, input=inp, output=out, ratio=ratio,
+    extra = _shifted_and_loaded(t)
+    return PlanetarySpec(**extra, scheme=scheme, fixed=fixed, input=inp, output=out, ratio=ratio,
                          deviation=deviation, planets=planets, modules=modules,
                          z_range=(teeth[0], teeth[1]),
                          z_min=_int(t, "z_min", 17, lo=1) or 17,
@@ -98,6 +100,35 @@ def _planetary(t: Table) -> PlanetarySpec:
                          addendum=t.quantity("addendum", "dimensionless", 1.0,
                                              positive=True) or 1.0,
                          given=given, input_speed=speed)
+
+
+def _shifted_and_loaded(t: Table) -> dict[str, Any]:
+    """centre_distance (a length or "auto"), pressure_angle, max_shift_sum, mesh_efficiency,
+    output_torque."""
+    out: dict[str, Any] = {}
+    if t.has("centre_distance"):
+        raw = t.raw("centre_distance")
+        if raw == "auto":
+            out["centre_auto"] = True
+        else:
+            a_w = t.quantity("centre_distance", "length", positive=True)
+            out["centre_distance"] = a_w
+    alpha = t.quantity("pressure_angle", "angle", 0.3490658503988659, positive=True)
+    if alpha is not None and not alpha < 0.7854:
+        raise t.error("pressure_angle", f"must be below 45 deg (got {t.data['pressure_angle']!r})")
+    out["alpha"] = alpha
+    out["max_shift_sum"] = t.quantity("max_shift_sum", "dimensionless", 2.0, nonnegative=True)
+    if t.has("mesh_efficiency"):
+        raw = t.raw("mesh_efficiency")
+        values = raw if isinstance(raw, list) else [raw, raw]
+        if (len(values) != 2 or any(isinstance(v, bool) or not isinstance(v, (int, float))
+                                    or not 0 < v <= 1 for v in values)):
+            raise t.error("mesh_efficiency", f"must be a number in (0, 1] or two of them [η12, "
+                                             f"η34] (got {raw!r})")
+        out["mesh_efficiency"] = (float(values[0]), float(values[1]))
+    if t.has("output_torque"):
+        out["output_torque"] = t.quantity("output_torque", "moment", nonnegative=True)
+    return out
 
 
 def _ordinary(t: Table) -> OrdinarySpec:

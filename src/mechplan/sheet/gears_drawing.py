@@ -19,7 +19,7 @@ from ..drafting.primitives import (
     Text,
     VAlign,
 )
-from ..i18n import message, number, scale_factor
+from ..i18n import message, number, scale_factor, significant
 from ..synthesis.gears.involute import Pair, flank, tooth_outline
 from ..synthesis.gears.solve import PlanetaryResult
 from .diagram import Axis, Curve, diagram_panel
@@ -126,9 +126,9 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
     x_in, x_out = xs[res.spec.input], xs[res.spec.output]
     read = x_in / x_out if x_out else math.inf
     width = drawing_right(prims) - (lo - 10.0)
-    prims.extend(text_block((lo - 10.0, -H - 8.0),
-                            f"u_{res.spec.input}{res.spec.output} = {number(x_in, 2, lang)} / "
-                            f"{number(x_out, 2, lang)} = {number(read, 4, lang)}", TEXT_H, width))
+    read_text = (f"u_{res.spec.input}{res.spec.output} = {significant(x_in, 4, lang)} / "
+                 f"{significant(x_out, 4, lang)} = {number(read, 4, lang)}")
+    prims.extend(text_block((lo - 10.0, -H - 8.0), read_text, TEXT_H, width))
     prims.extend(text_block((lo - 10.0, 14.0), message("gears.sheet.angular", lang,
                                                        H=number(H, 0, lang),
                                                        mu=scale_factor(mu_w, lang)), TITLE_H, width,

@@ -23,8 +23,11 @@ def _conditions_json(c: Conditions) -> dict[str, Any]:
             "a_w_m": list(c.a_w), "coaxial": c.coaxial, "assembly_z1u_over_k": c.assembly_value,
             "assembly_p": c.assembly_p, "z_smallest": c.z_smallest, "undercut_ok": c.undercut_ok,
             "ring_difference": c.ring_difference, "ring_ok": c.ring_ok,
-            "neighbour_span_m": c.neighbour_span, "planet_tip_diameter_m": c.planet_tip,
-            "neighbour_ok": c.neighbour_ok, "size_m": c.size, "valid": c.valid}
+            "neighbour_span_m": c.neighbour_span if math.isfinite(c.neighbour_span) else None,
+            "planet_tip_diameter_m": c.planet_tip,
+            "neighbour_ok": c.neighbour_ok, "size_m": c.size, "valid": c.valid,
+            "working_centre_distance_m": c.working,
+            "shift_sums": [x if math.isfinite(x) else None for x in c.shift_sums]}
 
 
 @dataclass(frozen=True)
@@ -34,6 +37,7 @@ class GearStudy:
     solution: GearSolution
 
     def report(self, language: str | None = None) -> str:
+        from ..sheet.gearcam import shifted_lines, torque_lines
         from ..sheet.gears import condition_rows, omega_rows, pair_lines, set_text, verdict
 
         sol = self.solution
@@ -63,14 +67,19 @@ class GearStudy:
                            f"{unit('mm', lang)};  u = {n(c.ratio)}")
             if not res.others:
                 out.append("  " + message("gears.report.none_other", lang))
-            out.append(message("gears.report.omega", lang))
-            per_s = unit("1/s", lang)
-            for link, w, rel in omega_rows(res, lang):
-                out.append(f"  {link}:  ω = {w} {per_s};  ω − ω_h = {rel} {per_s}")
-            for link, w5 in sol.ordinary_omega.items():
-                out.append(f"  {link}:  ω = {number(w5, 3, lang)} {per_s}")
-            out.append(message("gears.report.plan_ratio", lang, plan=n(res.plan.ratio, 6),
-                               willis=n(res.chosen.ratio, 6)))
+            if res.plan is None:
+                out.append(message("gearcam.no_plan", lang))
+            else:
+                out.extend(shifted_lines(res, lang))
+                out.append(message("gears.report.omega", lang))
+                per_s = unit("1/s", lang)
+                for link, w, rel in omega_rows(res, lang):
+                    out.append(f"  {link}:  ω = {w} {per_s};  ω − ω_h = {rel} {per_s}")
+                for link, w5 in sol.ordinary_omega.items():
+                    out.append(f"  {link}:  ω = {number(w5, 3, lang)} {per_s}")
+                out.append(message("gears.report.plan_ratio", lang, plan=n(res.plan.ratio, 6),
+                                   willis=n(res.chosen.ratio, 6)))
+                out.extend(torque_lines(res, lang))
         o = sol.ordinary
         if o is not None:
             if sol.total_ratio is not None:
@@ -96,12 +105,15 @@ class GearStudy:
         if res is not None and res.spec.given is not None and not res.chosen.valid:
             failed += [f"{name}: {numbers} — {verdict(ok, lang)}"
                        for name, numbers, ok in condition_rows(res, lang) if not ok]
+        flags = []
+        if res is not None and res.plan is None:
+            flags.append(message("gearcam.no_plan", lang))
         if sol.pair is not None:
             p = sol.pair
             lines = pair_lines(p, lang)[-5:-1]       # pointed tip and interference, per gear
             bad = [flag for pair in zip(p.pointed, p.interference) for flag in pair]
             failed += [line for line, fails in zip(lines, bad, strict=True) if fails]
-        return [message("gears.warning.failed", lang, check=c) for c in failed]
+        return flags + [message("gears.warning.failed", lang, check=c) for c in failed]
 
     def to_json(self) -> dict[str, Any]:
         sol = self.solution
@@ -115,9 +127,15 @@ class GearStudy:
                 "willis_i": res.willis_i, "chosen": _conditions_json(res.chosen),
                 "found": res.found, "survivors_by_condition": res.counts,
                 "others": [_conditions_json(c) for c in res.others],
-                "omega_rad_s": res.plan.omega, "omega_relative_rad_s": res.plan.relative,
-                "ratio_from_velocity_plan": res.plan.ratio,
-            }
+                "omega_rad_s": res.plan.omega if res.plan else None,
+                "omega_relative_rad_s": res.plan.relative if res.plan else None,
+                "ratio_from_velocity_plan": res.plan.ratio if res.plan else None,
+                "working_centre_distance_m": res.chosen.working,
+                }
+            from ..synthesis.gears.forces import train_forces
+            forces = train_forces(res)
+            if forces is not None:
+                doc["planetary"]["torques"] = forces.to_json()
         if sol.ordinary is not None:
             o = sol.ordinary
             doc["ordinary"] = {"z5": o.z5, "z6": o.z6, "ratio": o.ratio,
@@ -146,6 +164,8 @@ class GearStudy:
             k.scalars |= {f"z{i}": float(z) for i, z in enumerate(c.z, start=1)}
             k.scalars |= {"k": float(sol.planetary.spec.planets), "u": c.ratio, "a_w": c.a_w[0],
                           "assembly": c.assembly_value}
+            if c.working is not None:
+                k.scalars["a_w"] = c.working
         if sol.pair is not None:
             p = sol.pair
             spec = p.spec

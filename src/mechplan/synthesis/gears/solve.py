@@ -26,7 +26,7 @@ class PlanetaryResult:
     others: tuple[train.Conditions, ...]
     found: int
     counts: dict[str, int]
-    plan: TrainPlan
+    plan: TrainPlan | None      # None: the set is not coaxial and cannot be drawn
     willis_i: float
 
 
@@ -59,7 +59,7 @@ class GearSolution:
     @property
     def ordinary_omega(self) -> dict[str, float]:
         """ω5 (on the planetary output shaft) and ω6 = ω5/u56, rad/s (empty without both stages)."""
-        if self.planetary is None or self.ordinary is None:
+        if self.planetary is None or self.ordinary is None or self.planetary.plan is None:
             return {}
         w5 = self.planetary.plan.omega[self.planetary.spec.output]
         return {"5": w5, "6": w5 / self.ordinary.ratio}
@@ -76,9 +76,10 @@ def solve_planetary(spec: PlanetarySpec) -> PlanetaryResult:
         chosen = train.conditions(spec, tuple(int(v) for v in result.sets[0]))
     others = tuple(train.conditions(spec, tuple(int(v) for v in z))
                    for z in result.sets[:LISTED + 1] if tuple(int(v) for v in z) != chosen.z)
-    i = float(train.willis_i(spec.scheme, np.asarray([chosen.z]))[0])
+    i = float(train.willis_exact(spec.scheme, chosen.z))
+    plan = velocity_plan(spec, chosen.z, chosen.working) if chosen.coaxial else None
     return PlanetaryResult(spec, chosen, others[:LISTED], int(result.sets.shape[0]),
-                           result.counts, velocity_plan(spec, chosen.z), i)
+                           result.counts, plan, i)
 
 
 def solve_ordinary(spec: OrdinarySpec, z_min: int = 17, deviation: float = 0.02) -> OrdinaryResult:
