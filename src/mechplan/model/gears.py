@@ -77,6 +77,9 @@ class PlanetarySpec:
     max_shift_sum: float = 2.0       # |x_Σ| of a mesh at the working a_w at most
     mesh_efficiency: tuple[float, float] = (1.0, 1.0)   # η of mesh 1–2 and of the second mesh
     output_torque: float | None = None     # load on the output link, N·m (torques and forces)
+    speeds: tuple[tuple[str, float], tuple[str, float]] | None = None
+    # a differential (W = 2): the two links turning as given; ``output`` is the third, ``input``
+    # the first given, ``fixed`` is "" (nothing is held)
 
 
 @dataclass(frozen=True)

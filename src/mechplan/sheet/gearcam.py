@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
-from ..i18n import message, number, unit
+from ..i18n import message, number, significant, unit
 
 if TYPE_CHECKING:
     from ..synthesis.gears.solve import PlanetaryResult
@@ -36,3 +36,27 @@ def torque_lines(res: PlanetaryResult, lang: str) -> list[str]:
                        B=number(f.planet_forces["B"], 2, lang),
                        O=number(f.planet_forces["O"], 2, lang)))
     return out
+
+
+def differential_head(res: PlanetaryResult, lang: str) -> list[str]:
+    """The scheme and the two given speeds of a differential."""
+    s = res.spec
+    assert s.speeds is not None
+    (l1, w1), (l2, w2) = s.speeds
+    return [message("gearcam.differential", lang,
+                    scheme=message(f"gears.scheme.{s.scheme.value}", lang), a=l1,
+                    wa=significant(w1, 6, lang), b=l2, wb=significant(w2, 6, lang), c=s.output,
+                    k=s.planets)]
+
+
+def superposition_lines(res: PlanetaryResult, lang: str) -> list[str]:
+    """ω of the free link: each input alone (the other held) and their sum."""
+    s, plan = res.spec, res.plan
+    if plan is None or res.partials is None or s.speeds is None:
+        return []
+    (l1, _), (l2, _) = s.speeds
+    p1, p2 = res.partials
+    c = s.output
+    return [message("gearcam.superposed", lang, c=c, a=l1, b=l2,
+                    w1=significant(p1.omega[c], 6, lang), w2=significant(p2.omega[c], 6, lang),
+                    w=significant(plan.omega[c], 6, lang))]

@@ -43,6 +43,9 @@ def condition_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, bool
              (f"i_{names[0]}{names[-1]}^h = {n(res.willis_i, 4)};  u_{s.input}{s.output} = "
              f"{n(c.ratio, 4)};  u* = {n(s.ratio, 4)} ± {n(s.deviation * 100, 1)} %;  "
              f"Δu = {n(c.ratio_error * 100, 2)} %"), c.ratio_ok)]
+    if s.speeds is not None:          # a differential: Willis' i only
+        rows = [(message("gears.cond.ratio", lang),
+                 f"i_{names[0]}{names[-1]}^h = {n(res.willis_i, 6)}", True)]
     second = f"{names[-2]}–{names[-1]}"
     coax = (f"a({names[0]}–{names[1]}) = {_mm(c.a_w[0], lang)} {mm};  a({second}) = "
             f"{_mm(c.a_w[1], lang)} {mm}")

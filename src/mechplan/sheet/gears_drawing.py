@@ -19,11 +19,12 @@ from ..drafting.primitives import (
     Text,
     VAlign,
 )
-from ..i18n import message, number, scale_factor, significant
+from ..i18n import message, number, scale_factor, significant, unit
 from ..synthesis.gears.involute import Pair, flank, tooth_outline
 from ..synthesis.gears.solve import PlanetaryResult
 from .diagram import Axis, Curve, diagram_panel
 from .fit import drawing_right, text_block
+from .layout import moved
 from .panels import Panel
 
 TEXT_H = 2.5
@@ -94,15 +95,26 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
         label = f"{n},{p.names[2]}" if n == p.names[1] and res.spec.scheme.two_row else n
         curves.append(Curve(np.array([v0, v1]), np.array([y0, y1]), Role.OUTLINE, label))
     v_all = [v for n in p.names for (_, v) in p.lines[n]]
+    for j, part in enumerate(res.partials or ()):     # a differential: each input alone, thin
+        for n in part.names:
+            if n in part.names[2:-2]:
+                continue
+            (y0, v0), (y1, v1) = part.lines[n]
+            curves.append(Curve(np.array([v0, v1]), np.array([y0, y1]), Role.THIN,
+                                f"{n}{chr(0x2032) * (j + 1)}"))
+            v_all += [v0, v1]
     mu_v = round_scale(max(abs(v) for v in v_all) / size) if any(v_all) else 1.0
     dia = diagram_panel("velocity", message("gears.sheet.velocity", lang), curves,
                         Axis("v", "m/s", size, mu_v), Axis("r", "m", size, mu_l, mu_symbol="μl"),
                         lang)
     sx = min(1.0, max(scale, 0.5))           # the diagram narrows on a small sheet
-    dia.panel.primitives.extend(_scheme(res, mu_l, sx))
-    dia.panel.primitives.extend(text_block((-95.0 * sx, -8.0), message("gears.sheet.scheme", lang),
-                                           TITLE_H, 95.0 * sx - 4.0, valign=VAlign.TOP,
-                                           measure_min=0.0))     # clear of the scale factors
+    # the diagram stands left of the plan's leftmost velocity (a differential's run both ways)
+    x0 = min(0.0, min(v_all) / mu_v - 10.0) if min(v_all) < 0 else 0.0
+    scheme = [*_scheme(res, mu_l, sx),
+              *text_block((-95.0 * sx, -8.0), message("gears.sheet.scheme", lang),
+                          TITLE_H, 95.0 * sx - 4.0, valign=VAlign.TOP,
+                          measure_min=0.0)]     # clear of the scale factors
+    dia.panel.primitives.extend(moved(q, x0, 0.0) for q in scheme)
     # angular velocity plan: rays from the pole P parallel to the plan's lines cut the reference
     # line
     w = {n: p.omega[n] for n in p.names}
@@ -128,6 +140,9 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
     width = drawing_right(prims) - (lo - 10.0)
     read_text = (f"u_{res.spec.input}{res.spec.output} = {significant(x_in, 4, lang)} / "
                  f"{significant(x_out, 4, lang)} = {number(read, 4, lang)}")
+    if res.spec.speeds is not None:
+        read_text = (f"ω_{res.spec.output} = {significant(x_out, 4, lang)} · μω = "
+                     f"{significant(w[res.spec.output], 6, lang)} {unit('1/s', lang)}")
     prims.extend(text_block((lo - 10.0, -H - 8.0), read_text, TEXT_H, width))
     prims.extend(text_block((lo - 10.0, 14.0), message("gears.sheet.angular", lang,
                                                        H=number(H, 0, lang),

@@ -37,7 +37,12 @@ class GearStudy:
     solution: GearSolution
 
     def report(self, language: str | None = None) -> str:
-        from ..sheet.gearcam import shifted_lines, torque_lines
+        from ..sheet.gearcam import (
+            differential_head,
+            shifted_lines,
+            superposition_lines,
+            torque_lines,
+        )
         from ..sheet.gears import condition_rows, omega_rows, pair_lines, set_text, verdict
 
         sol = self.solution
@@ -47,12 +52,15 @@ class GearStudy:
         res = sol.planetary
         if res is not None:
             s = res.spec
-            out.append(message("gears.report.scheme", lang,
-                               scheme=message(f"gears.scheme.{s.scheme.value}", lang),
-                               fixed=s.fixed, input=s.input, output=s.output, k=s.planets))
-            out.append(message("gears.report.target", lang, io=f"{s.input}{s.output}",
-                               u=n(s.ratio), dev=n(s.deviation * 100, 1), lo=s.z_range[0],
-                               hi=s.z_range[1], zmin=s.z_min))
+            if s.speeds is not None:
+                out.extend(differential_head(res, lang))
+            else:
+                out.append(message("gears.report.scheme", lang,
+                                   scheme=message(f"gears.scheme.{s.scheme.value}", lang),
+                                   fixed=s.fixed, input=s.input, output=s.output, k=s.planets))
+                out.append(message("gears.report.target", lang, io=f"{s.input}{s.output}",
+                                   u=n(s.ratio), dev=n(s.deviation * 100, 1), lo=s.z_range[0],
+                                   hi=s.z_range[1], zmin=s.z_min))
             if s.given is not None:
                 out.append(message("gears.report.given", lang, z=set_text(res.chosen.z),
                                    verdict=verdict(res.chosen.valid, lang)))
@@ -77,8 +85,11 @@ class GearStudy:
                     out.append(f"  {link}:  ω = {w} {per_s};  ω − ω_h = {rel} {per_s}")
                 for link, w5 in sol.ordinary_omega.items():
                     out.append(f"  {link}:  ω = {number(w5, 3, lang)} {per_s}")
-                out.append(message("gears.report.plan_ratio", lang, plan=n(res.plan.ratio, 6),
-                                   willis=n(res.chosen.ratio, 6)))
+                if s.speeds is None:
+                    out.append(message("gears.report.plan_ratio", lang,
+                                       plan=n(res.plan.ratio, 6), willis=n(res.chosen.ratio, 6)))
+                else:
+                    out.extend(superposition_lines(res, lang))
                 out.extend(torque_lines(res, lang))
         o = sol.ordinary
         if o is not None:
@@ -133,6 +144,10 @@ class GearStudy:
                 "working_centre_distance_m": res.chosen.working,
                 }
             from ..synthesis.gears.forces import train_forces
+            if res.partials is not None and s.speeds is not None:
+                doc["planetary"]["differential"] = {
+                    "speeds_rad_s": dict(s.speeds),
+                    "omega_each_input_alone_rad_s": [q.omega for q in res.partials]}
             forces = train_forces(res)
             if forces is not None:
                 doc["planetary"]["torques"] = forces.to_json()

@@ -64,7 +64,7 @@ def solve_torques(links: tuple[str, str, str], omega: dict[str, float], output: 
 def train_forces(res: PlanetaryResult) -> TrainForces | None:
     """Torques and forces of the chosen set (None without a plan or without a load)."""
     spec, plan = res.spec, res.plan
-    if plan is None or spec.output_torque is None:
+    if plan is None or spec.output_torque is None or spec.speeds is not None:
         return None
     eta_h = spec.mesh_efficiency[0] * spec.mesh_efficiency[1]
     links = spec.scheme.links

@@ -28,6 +28,7 @@ class PlanetaryResult:
     counts: dict[str, int]
     plan: TrainPlan | None      # None: the set is not coaxial and cannot be drawn
     willis_i: float
+    partials: tuple[TrainPlan, TrainPlan] | None = None   # differential: each input alone
 
 
 @dataclass(frozen=True)
@@ -68,6 +69,8 @@ class GearSolution:
 def solve_planetary(spec: PlanetarySpec) -> PlanetaryResult:
     """Search the sets (or check the given one) and draw up the plan of the chosen set."""
     train.check_links(spec)
+    if spec.speeds is not None:
+        return solve_differential(spec)
     if spec.given is not None:
         chosen = train.conditions(spec, spec.given)
         result = search.search(spec)
@@ -80,6 +83,21 @@ def solve_planetary(spec: PlanetarySpec) -> PlanetaryResult:
     plan = velocity_plan(spec, chosen.z, chosen.working) if chosen.coaxial else None
     return PlanetaryResult(spec, chosen, others[:LISTED], int(result.sets.shape[0]),
                            result.counts, plan, i)
+
+
+def solve_differential(spec: PlanetarySpec) -> PlanetaryResult:
+    """A differential (two links turning as given): the plan of both inputs, and of each input
+    with the other held — the plan of both is their superposition."""
+    assert spec.given is not None and spec.speeds is not None
+    chosen = train.conditions(spec, spec.given)
+    i = float(train.willis_exact(spec.scheme, chosen.z))
+    plan = partials = None
+    if chosen.coaxial:
+        (l1, w1), (l2, w2) = spec.speeds
+        plan = velocity_plan(spec, chosen.z, chosen.working, speeds={l1: w1, l2: w2})
+        partials = (velocity_plan(spec, chosen.z, chosen.working, speeds={l1: w1, l2: 0.0}),
+                    velocity_plan(spec, chosen.z, chosen.working, speeds={l1: 0.0, l2: w2}))
+    return PlanetaryResult(spec, chosen, (), 0, {}, plan, i, partials)
 
 
 def solve_ordinary(spec: OrdinarySpec, z_min: int = 17, deviation: float = 0.02) -> OrdinaryResult:

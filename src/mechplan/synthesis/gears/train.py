@@ -79,6 +79,8 @@ def i_from_ratio(u: float, scheme: Scheme, fixed: str, inp: str, out: str) -> fl
 def check_links(spec: PlanetarySpec) -> None:
     """Fixed, input and output must be the three different basic links of the scheme."""
     links = spec.scheme.links
+    if spec.speeds is not None:
+        return
     for key, name in (("fixed", spec.fixed), ("input", spec.input), ("output", spec.output)):
         if name not in links:
             raise SceneError(f"must be one of {', '.join(links)} for the scheme "
@@ -276,8 +278,12 @@ class Conditions:
 def conditions(spec: PlanetarySpec, z: tuple[int, ...]) -> Conditions:
     """Evaluate every condition of one set, keeping the numbers for the report."""
     arr = np.asarray([z], dtype=np.int64)
-    u = ratio_exact(spec.scheme, tuple(int(v) for v in z), spec.fixed, spec.input, spec.output)
-    err = (u - spec.ratio) / spec.ratio
+    if spec.speeds is not None:         # a differential: no ratio is asked for
+        u, err = math.nan, 0.0
+    else:
+        u = ratio_exact(spec.scheme, tuple(int(v) for v in z), spec.fixed, spec.input,
+                        spec.output)
+        err = (u - spec.ratio) / spec.ratio
     a12, a34 = (float(v[0]) for v in centre_distance(spec, arr))
     A, B = (int(v[0]) for v in assembly_terms(spec, arr))
     diffs = [int(d) for d in ring_differences(spec, arr)[0] if d < np.iinfo(np.int64).max]
