@@ -234,6 +234,9 @@ def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[li
         ss1 = _ss1_diagram(d, lang, scale)
         if ss1 is not None:
             panels.append(ss1)
+        from .cam_dynamics import dynamics_panels
+
+        panels.extend(dynamics_panels(d, lang, scale, DIAGRAM_W, DIAGRAM_H))
         return panels + [_table(*table, lang), _results(summary, lang)], mu
 
     fields = {"title": spec.title}

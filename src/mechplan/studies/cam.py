@@ -12,6 +12,7 @@ import numpy as np
 from ..i18n import message, number
 from ..model.cam import Contact, Law, Motion, PhaseKind
 from ..sheet.cam import table_rows, units_of
+from ..sheet.cam_dynamics import dynamics_lines
 from ..synthesis.cam import CamDesign, design, profile_table
 from .answers import Keys, Own, Written
 
@@ -140,6 +141,7 @@ class CamStudy:
                              tol=number(spec.drawing.chord_error * 1e6, 3, lang)))
         for msgid, values in d.notes:
             lines.append(message(msgid, lang, **{k: number(v, 2, lang) for k, v in values.items()}))
+        lines.extend(dynamics_lines(d, lang))
         lines.append("")
         lines.append(message("cam.report.table", lang,
                              step=number(deg(spec.drawing.table_step), 1, lang)))
@@ -196,6 +198,7 @@ class CamStudy:
             "profile": {"chord_error": d.chord_error, "bound": spec.drawing.chord_error,
                         "points": d.profile_points.tolist()},
             "notes": [k for k, _ in d.notes],
+            "dynamics": _dynamics_json(d),
         }
 
     def answers(self) -> Keys:
@@ -247,6 +250,26 @@ class CamStudy:
 
         pts = [(float(x) * 1e3, float(y) * 1e3) for x, y in self.design.profile_points]
         return [write_profile_dxf(pts, Path(out_dir) / f"{name}-profile.dxf")]
+
+
+def _dynamics_json(d: CamDesign) -> dict[str, Any] | None:
+    """The follower's dynamics in SI (N or N·m along the follower, rad/s, N·m on the cam)."""
+    r = d.dynamics
+    if r is None:
+        return None
+    step = max(1, r.phi.size // 360)
+    return {"stiffness": r.stiffness, "preload": r.preload, "spring_max": r.spring_max,
+            "spring_chosen": r.chosen, "speed": r.speed, "speed_max": r.speed_max,
+            "jump_speed": r.jump_speed if math.isfinite(r.jump_speed) else None,
+            "jump_phi": r.jump_phi if math.isfinite(r.jump_phi) else None,
+            "contact_min": list(r.contact_min),
+            "torque_max": [r.torque_extremes[0], r.torque_extremes[1]],
+            "torque_min": [r.torque_extremes[2], r.torque_extremes[3]],
+            "torque_mean": r.torque_mean,
+            "cycle": {"phi": r.phi[::step].tolist(), "contact": r.contact[::step].tolist(),
+                      "contact_speed_max": r.contact_max_speed[::step].tolist(),
+                      "normal": r.normal[::step].tolist() if r.normal is not None else None,
+                      "torque": r.torque[::step].tolist()}}
 
 
 def solve_cam(text: str, file: str) -> CamStudy:

@@ -22,6 +22,7 @@ from .base_radius import (
     translating_zone,
 )
 from .chords import profile_angles
+from .dynamics import DynamicsResult, follower_dynamics
 from .graphical import PhaseComparison, compare
 from .motion import motion, phase_starts
 from .profile import Geometry, Sample, polar, sample
@@ -58,6 +59,7 @@ class CamDesign:
     chord_error: float                # largest measured chord deviation, m
     face: tuple[float, float] | None = None     # flat face: extent from the axis (−, +), m
     notes: list[tuple[str, dict[str, float]]] = field(default_factory=list)
+    dynamics: DynamicsResult | None = None
 
     @property
     def phase_starts(self) -> np.ndarray:
@@ -209,9 +211,17 @@ def design(spec: CamSpec) -> CamDesign:
         if roller > 0.8 * rho_p.value:
             notes.append(("cam.note.roller_rho", {"rr_mm": roller * 1e3,
                                                   "limit_mm": 0.8 * rho_p.value * 1e3}))
+    alpha = None
+    if spec.follower.motion is Motion.TRANSLATING:
+        alpha = (np.zeros_like(phi) if spec.follower.contact is Contact.FLAT
+                 else np.asarray(dense.alpha))
+    try:
+        dyn = follower_dynamics(spec, phi, alpha)
+    except SceneError as exc:
+        raise SceneError(exc.detail, file=spec.path, key=exc.key) from None
     return CamDesign(spec, g, r_min, zone, dense, sample(g, tphi), sample(g, rphi), alpha_rise,
                      alpha_return, rho_p, rho_w, compare(spec.phases, spec.stroke), angles, points,
-                     err, face, notes)
+                     err, face, notes, dyn)
 
 
 def profile_table(table: Sample) -> list[dict[str, float]]:
