@@ -66,10 +66,12 @@ def _follower(top: Table) -> Follower:
     arm = pivot = 0.0
     offset: float | None = 0.0
     if motion is Motion.OSCILLATING:
-        if contact is Contact.FLAT:
-            raise f.error("contact", "must be knife or roller for an oscillating follower (got "
-                          "'flat'); a flat-faced oscillating follower is not supported")
-        arm = f.quantity("arm", "length", required=True, positive=True) or 0.0
+        if contact is Contact.FLAT:           # the face passes through the pivot: no arm
+            if f.has("arm"):
+                raise f.error("arm", "is not used by a flat-faced oscillating follower (its face "
+                                     "passes through the pivot)")
+        else:
+            arm = f.quantity("arm", "length", required=True, positive=True) or 0.0
         pivot = f.quantity("pivot_distance", "length", required=True, positive=True) or 0.0
         if f.has("offset"):
             raise f.error("offset", "is only for a translating follower")

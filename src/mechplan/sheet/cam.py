@@ -181,7 +181,12 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
     for i in range(rays.phi.size):
         p = rays.pitch[i] / mu
         prims.append(Line((0.0, 0.0), (float(p[0]), float(p[1])), Role.THIN))
-        if d.spec.follower.contact is Contact.FLAT:
+        if d.spec.follower.contact is Contact.FLAT and g.motion is Motion.OSCILLATING:
+            lo, hi = d.face or (0.0, g.pivot)             # the face from the turned pivot
+            t = (b[i] - a[i]) / np.hypot(*(b[i] - a[i]))
+            prims.append(Line(tuple(((a[i] + lo * t) / mu).tolist()),
+                              tuple(((a[i] + hi * t) / mu).tolist()), Role.THIN))
+        elif d.spec.follower.contact is Contact.FLAT:
             lo, hi = d.face or (-0.01, 0.01)
             if g.sense < 0:                  # the s′ side is mirrored with the cam
                 lo, hi = -hi, -lo

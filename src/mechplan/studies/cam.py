@@ -36,6 +36,8 @@ def follower_text(d: CamDesign, lang: str) -> str:
              if f.motion is Motion.TRANSLATING
              else message("cam.arm", lang, l=number(f.arm * 1e3, 1, lang),
                           a=number(f.pivot_distance * 1e3, 1, lang)))
+    if f.motion is Motion.OSCILLATING and f.contact is Contact.FLAT:
+        where = message("gearcam.cam.pivot_face", lang, a=number(f.pivot_distance * 1e3, 1, lang))
     return message("cam.report.follower", lang,
                    motion=message(f"cam.motion.{f.motion.value}", lang),
                    contact=contact, where=where)
@@ -103,7 +105,12 @@ class CamStudy:
                 u0=u.u0, u1=u.u1, u2=u.u2))
         lines.append("")
         lim = spec.limits
-        if spec.follower.contact is Contact.FLAT:
+        swinging_flat = translating is False and spec.follower.contact is Contact.FLAT
+        if swinging_flat:
+            lines.append(message("gearcam.cam.r0_convex_osc", lang,
+                                 rho=number(lim.min_curvature * 1e3, 2, lang),
+                                 r0=number(d.r0_min * 1e3, 3, lang)))
+        elif spec.follower.contact is Contact.FLAT:
             lines.append(message("cam.report.r0_convex", lang,
                                  rho=number(lim.min_curvature * 1e3, 2, lang),
                                  r0=number(d.r0_min * 1e3, 3, lang)))
@@ -134,8 +141,9 @@ class CamStudy:
                              pw=number(deg(d.rho_profile_min.phi), 2, lang)))
         if d.face is not None:
             lo, hi = d.face
-            lines.append(message("cam.report.face", lang, lo=number(lo * 1e3, 2, lang),
-                                 hi=number(hi * 1e3, 2, lang), w=number((hi - lo) * 1e3, 2, lang)))
+            lines.append(message("gearcam.cam.face_osc" if swinging_flat else "cam.report.face",
+                                 lang, lo=number(lo * 1e3, 2, lang), hi=number(hi * 1e3, 2, lang),
+                                 w=number((hi - lo) * 1e3, 2, lang)))
         lines.append(message("cam.report.profile", lang, n=len(d.profile_points),
                              err=number(d.chord_error * 1e6, 3, lang),
                              tol=number(spec.drawing.chord_error * 1e6, 3, lang)))

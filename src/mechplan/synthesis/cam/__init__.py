@@ -100,6 +100,8 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
     f, lim = spec.follower, spec.limits
     m = motion(spec.phases, spec.stroke, phi)
     given = lim.base_radius
+    if f.contact is Contact.FLAT and f.motion is Motion.OSCILLATING:
+        return _oscillating_flat_r0(spec, m.s, m.s1, m.s2)
     if f.contact is Contact.FLAT:
         r_min = flat_r0(m.s, m.s2, lim.min_curvature)
         if given is None:
@@ -162,6 +164,31 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
     return given, 0.0, r_min, None
 
 
+def _oscillating_flat_r0(spec: CamSpec, s: np.ndarray, s1: np.ndarray, s2: np.ndarray
+                         ) -> tuple[float, float, float, Zone | None]:
+    """(r0 used, 0, least r0, None) of an oscillating flat-faced follower's cam."""
+    from .oscillating_flat import least_r0
+
+    f, lim = spec.follower, spec.limits
+    if np.min(s1) <= -1.0:
+        raise SceneError(f"the follower swings back faster than the cam turns (ψ′ = "
+                         f"{float(np.min(s1)):.4g} ≤ −1): a flat face cannot follow it; lengthen "
+                         f"the return", file=spec.path, key="motion.phases")
+    r_min = least_r0(f.pivot_distance, s, s1, s2, lim.min_curvature)
+    if r_min is None:
+        raise SceneError(f"no base radius below the pivot distance {f.pivot_distance * 1e3:g} mm "
+                         f"gives a convex profile; move the pivot farther from the cam",
+                         file=spec.path, key="follower.pivot_distance")
+    given = lim.base_radius
+    if given is None:
+        return r_min, 0.0, r_min, None
+    if not r_min * (1 - 1e-9) <= given < f.pivot_distance:
+        raise SceneError(f"must be at least {r_min * 1e3:.3f} mm for a convex profile and less "
+                         f"than the pivot distance {f.pivot_distance * 1e3:g} mm (got "
+                         f"{given * 1e3:g} mm)", file=spec.path, key="limits.base_radius")
+    return given, 0.0, r_min, None
+
+
 def design(spec: CamSpec) -> CamDesign:
     """Synthesise the cam of a scene; raise :class:`SceneError` naming the key when impossible."""
     phi = np.linspace(0.0, 2 * math.pi, DENSE, endpoint=False)
@@ -203,7 +230,12 @@ def design(spec: CamSpec) -> CamDesign:
     notes: list[tuple[str, dict[str, float]]] = []
     if spec.follower.contact is Contact.FLAT:
         margin = spec.follower.face_margin
-        face = (float(dense.s1.min()) - margin, float(dense.s1.max()) + margin)
+        if spec.follower.motion is Motion.OSCILLATING:          # distances from the pivot
+            pivot = np.array([spec.sense * spec.follower.pivot_distance, 0.0])
+            along = np.hypot(*(dense.follower - pivot).T)
+            face = (float(along.min()) - margin, float(along.max()) + margin)
+        else:
+            face = (float(dense.s1.min()) - margin, float(dense.s1.max()) + margin)
     if spec.follower.contact is Contact.ROLLER:
         if roller > 0.4 * r0:
             notes.append(("cam.note.roller_r0",
