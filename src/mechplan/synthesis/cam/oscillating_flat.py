@@ -1,15 +1,15 @@
 """An oscillating flat-faced follower: the face is a straight line through the pivot A = (a, 0).
 
-In the σ = +1 frame the face leaves A in the direction d = (−cos δ, sin δ), δ = δ0 + ψ, and O sees
-it at the distance p = a·sin δ along its normal n = (sin δ, cos δ); at the near position it touches the
-base circle, so sin δ0 = r0/a. Turned by −φ onto the cam, the face is the line n_c·x = p with n_c at
-the polar angle β = π/2 − δ − φ; the profile is its envelope, the point p·n_c + (dp/dβ)·t_c
-(t_c = dn_c/dβ), with the radius of curvature ρ = p + d²p/dβ². With ψ′ = dψ/dφ, ψ″:
-dβ/dφ = −(1 + ψ′), dp/dβ = −a·cos δ·ψ′/(1 + ψ′) and
+In the σ = +1 frame the face leaves A in the direction d = (−cos δ, sin δ), δ = δ0 + ψ, and O
+sees it at the distance p = a·sin δ along its normal n = (sin δ, cos δ); at the near position it
+touches the base circle, so sin δ0 = r0/a. Turned by −φ onto the cam, the face is the line
+n_c·x = p with n_c at the polar angle β = π/2 − δ − φ; the profile is its envelope, the point
+p·n_c + (dp/dβ)·t_c (t_c = dn_c/dβ), with the radius of curvature ρ = p + d²p/dβ². With
+ψ′ = dψ/dφ, ψ″: dβ/dφ = −(1 + ψ′), dp/dβ = −a·cos δ·ψ′/(1 + ψ′) and
 ρ = a·sin δ + a·(cos δ·ψ″ − sin δ·ψ′²·(1 + ψ′))/(1 + ψ′)³.
 The contact point lies on the face at L = a·cos δ/(1 + ψ′) from the pivot; its velocity on the
-follower is along the normal, so the pressure angle is zero. An envelope needs 1 + ψ′ > 0 (the face
-turns one way on the cam) and a convex profile ρ > 0.
+follower is along the normal, so the pressure angle is zero. An envelope needs 1 + ψ′ > 0 (the
+face turns one way on the cam) and a convex profile ρ > 0.
 """
 
 from __future__ import annotations
