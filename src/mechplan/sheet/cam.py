@@ -240,6 +240,11 @@ def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[li
         if ss1 is not None:
             panels.append(ss1)
         from .cam_dynamics import dynamics_panels
+        from .cam_zone import zone_panel
+
+        zone = zone_panel(d, lang, scale)
+        if zone is not None:
+            panels.append(zone)
 
         panels.extend(dynamics_panels(d, lang, scale, DIAGRAM_W, DIAGRAM_H))
         return panels + [_table(*table, lang), _results(summary, lang)], mu
