@@ -140,13 +140,15 @@ def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, langu
 def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:
     """The panels of a gear scene, drawings ``scale`` times their usual size."""
     from .gearcam import shifted_lines
-    from .gears_drawing import mesh_panel, plan_panels
+    from .gears_drawing import mesh_panel, pair_56_panel, plan_panels
 
     panels: list[Panel] = []
     res = sol.planetary
     if res is not None:
         if res.plan is not None:
-            panels.extend(plan_panels(res, lang, scale))
+            panels.extend(plan_panels(res, lang, scale, sol.ordinary_plan))
+            if sol.ordinary_plan is not None:
+                panels.append(pair_56_panel(sol.ordinary_plan, res.spec.output, lang, scale))
         head = (message("gears.col.condition", lang), message("gears.col.numbers", lang),
                 message("gears.col.verdict", lang))
         rows = [(a, b, verdict(ok, lang)) for a, b, ok in condition_rows(res, lang)]

@@ -42,6 +42,19 @@ class OrdinaryResult:
 
 
 @dataclass(frozen=True)
+class OrdinaryPlan:
+    """The ordinary pair 5–6 on the train's velocity plan: gear 5 on the planetary output shaft
+    (the central axis), gear 6 on a parallel axis at a56; v = ω·(y − y_axis) along the radius."""
+
+    r5: float
+    r6: float
+    a56: float
+    omega5: float
+    omega6: float
+    lines: dict[str, tuple[tuple[float, float], tuple[float, float]]]
+
+
+@dataclass(frozen=True)
 class GearSolution:
     """Everything a gear scene asks for."""
 
@@ -56,6 +69,20 @@ class GearSolution:
         if self.planetary is None or self.ordinary is None:
             return None
         return self.planetary.chosen.ratio * self.ordinary.ratio
+
+    @property
+    def ordinary_plan(self) -> OrdinaryPlan | None:
+        """Gear 5 and gear 6 on the velocity plan (None without both stages and a plan)."""
+        if self.planetary is None or self.ordinary is None or self.planetary.plan is None:
+            return None
+        o = self.ordinary
+        r5, r6 = o.spec.module * o.z5 / 2, o.spec.module * o.z6 / 2
+        a56 = r5 + r6
+        w5 = self.planetary.plan.omega[self.planetary.spec.output]
+        w6 = -w5 * r5 / r6                    # the pitch point: ω5·r5 = ω6·(r5 − a56)
+        lines = {"5": ((0.0, 0.0), (r5, w5 * r5)),
+                 "6": ((r5, w5 * r5), (a56 + r6, w6 * r6))}
+        return OrdinaryPlan(r5, r6, a56, w5, w6, lines)
 
     @property
     def ordinary_omega(self) -> dict[str, float]:
