@@ -120,6 +120,8 @@ class FollowerDynamics:
     load: float = 0.0                   # constant force pressing the follower onto the cam
     speed_max: float | None = None      # rad/s; None: the cam speed
     margin: float = 0.0                 # least contact force kept at every speed up to speed_max
+    follower_stiffness: float | None = None   # the elastic single-mass model: k of the follower
+    damping_ratio: float = 0.0          # ζ of the elastic model
 
 
 @dataclass(frozen=True, slots=True)

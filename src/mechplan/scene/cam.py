@@ -238,7 +238,7 @@ def _dynamics(top: Table, follower: Follower, omega: float) -> FollowerDynamics 
     inertia = "inertia" if swinging else "mass"
     other = "mass" if swinging else "inertia"
     t.check_keys((inertia, "stiffness", "preload", "damping", "load", "speed_max", "margin",
-                  other))
+                  "follower_stiffness", "damping_ratio", other))
     if t.has(other):
         example = '"0.002 kg*m^2"' if swinging else '"0.5 kg"'
         raise t.error(other, f"is for {'a translating' if swinging else 'an oscillating'} "
@@ -255,6 +255,12 @@ def _dynamics(top: Table, follower: Follower, omega: float) -> FollowerDynamics 
         raise t.error("speed_max", f"must be at least the cam speed {omega:.6g} rad/s "
                                    f"(got {t.raw('speed_max')!r})")
     margin = t.quantity("margin", force, 0.0, nonnegative=True)
+    k_f = t.quantity("follower_stiffness", "moment" if swinging else "stiffness", positive=True)
+    zeta = t.quantity("damping_ratio", "dimensionless", 0.0, nonnegative=True) or 0.0
+    if not zeta < 1:
+        raise t.error("damping_ratio", f"must be below 1 (got {t.raw('damping_ratio')!r})")
+    if t.has("damping_ratio") and k_f is None:
+        raise t.error("damping_ratio", "is for the elastic follower: give follower_stiffness")
     return FollowerDynamics(mass=mass or 0.0, stiffness=stiffness, preload=preload,
                             damping=damping or 0.0, load=load or 0.0, speed_max=speed_max,
-                            margin=margin or 0.0)
+                            margin=margin or 0.0, follower_stiffness=k_f, damping_ratio=zeta)

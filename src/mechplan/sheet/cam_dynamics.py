@@ -51,6 +51,19 @@ def dynamics_lines(d: CamDesign, lang: str) -> list[str]:
                            n=rpm(r.jump_speed), phi=deg(r.jump_phi)))
     else:
         out.append(message("gearcam.cam.no_jump", lang))
+    if r.elastic is not None:
+        el = r.elastic
+        u = unit("°" if swinging else "mm", lang)
+        f = math.degrees(1.0) if swinging else 1e3
+        out.append(message("gearcam.cam.elastic", lang,
+                           wn=significant(el.natural_frequency, 5, lang),
+                           hz=significant(el.natural_frequency / (2 * math.pi), 4, lang),
+                           zeta=significant(el.damping_ratio, 3, lang),
+                           emax=significant(el.error_max * f, 4, lang), u=u))
+        for kind, start, amp in el.residual:
+            out.append("  " + message("gearcam.cam.residual", lang,
+                                      kind=message(f"cam.phase.{kind}", lang), phi=deg(start),
+                                      a=significant(amp * f, 4, lang), u=u))
     tmax, pmax, tmin, pmin = r.torque_extremes
     out.append(message("gearcam.cam.torque", lang, n=rpm(r.speed),
                        tmax=significant(tmax, 4, lang), p1=deg(pmax),

@@ -274,6 +274,13 @@ def _dynamics_json(d: CamDesign) -> dict[str, Any] | None:
             "torque_max": [r.torque_extremes[0], r.torque_extremes[1]],
             "torque_min": [r.torque_extremes[2], r.torque_extremes[3]],
             "torque_mean": r.torque_mean,
+            "elastic": None if r.elastic is None else {
+                "natural_frequency": r.elastic.natural_frequency,
+                "damping_ratio": r.elastic.damping_ratio, "error_max": r.elastic.error_max,
+                "residual": [{"dwell": k, "phi": p, "amplitude": a}
+                             for k, p, a in r.elastic.residual],
+                "residual_first_turn": [{"dwell": k, "phi": p, "amplitude": a}
+                                        for k, p, a in r.elastic.first_residual]},
             "cycle": {"phi": r.phi[::step].tolist(), "contact": r.contact[::step].tolist(),
                       "contact_speed_max": r.contact_max_speed[::step].tolist(),
                       "normal": r.normal[::step].tolist() if r.normal is not None else None,

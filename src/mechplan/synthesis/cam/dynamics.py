@@ -23,6 +23,7 @@ from scipy.optimize import linprog, minimize_scalar
 
 from ...errors import SceneError
 from ...model.cam import CamSpec, FollowerDynamics
+from .elastic import ElasticResult, elastic_follower
 from .motion import motion
 
 
@@ -46,6 +47,7 @@ class DynamicsResult:
     jump_phi: float                   # cam angle where the jump starts, rad
     torque_extremes: tuple[float, float, float, float]   # T max, its φ, T min, its φ
     torque_mean: float
+    elastic: ElasticResult | None = None
 
 
 def _terms(d: FollowerDynamics, s: np.ndarray, s1: np.ndarray, s2: np.ndarray, w_max: float
@@ -162,4 +164,6 @@ def follower_dynamics(spec: CamSpec, phi: np.ndarray, alpha: np.ndarray | None
         contact_min=(float(n[j_min]), float(phi[j_min])), jump_speed=ws, jump_phi=wphi,
         torque_extremes=(float(torque[j_tmax]), float(phi[j_tmax]), float(torque[j_tmin]),
                          float(phi[j_tmin])),
-        torque_mean=float(np.mean(torque)))
+        torque_mean=float(np.mean(torque)),
+        elastic=(elastic_follower(spec, d.follower_stiffness, d.damping_ratio)
+                 if d.follower_stiffness is not None else None))
