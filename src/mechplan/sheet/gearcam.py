@@ -58,5 +58,7 @@ def superposition_lines(res: PlanetaryResult, lang: str) -> list[str]:
     p1, p2 = res.partials
     c = s.output
     return [message("gearcam.superposed", lang, c=c, a=l1, b=l2,
-                    w1=significant(p1.omega[c], 6, lang), w2=significant(p2.omega[c], 6, lang),
+                    w1=significant(p1.omega[c], 6, lang),
+                    w2=(f"({significant(p2.omega[c], 6, lang)})" if p2.omega[c] < 0
+                        else significant(p2.omega[c], 6, lang)),
                     w=significant(plan.omega[c], 6, lang))]

@@ -156,6 +156,34 @@ def shift_sums(spec: PlanetarySpec, z: tuple[int, ...], a_w: float | None
     return first, second
 
 
+def shifted(spec: PlanetarySpec) -> bool:
+    """True when the train may work at a working centre distance with shifted gears."""
+    return spec.centre_distance is not None or spec.centre_auto
+
+
+def shift_ok(spec: PlanetarySpec, z: np.ndarray) -> np.ndarray:
+    """Vectorised: both meshes work at the working centre distance with |x_Σ| ≤ max_shift_sum (or
+    the set is coaxial unshifted)."""
+    z = np.asarray(z, dtype=np.int64)
+    a12, a34 = centre_distance(spec, z)
+    if not shifted(spec):
+        return np.isclose(a12, a34, rtol=1e-9, atol=1e-12)
+    a_w = (np.full_like(a12, spec.centre_distance) if spec.centre_distance is not None
+           else np.maximum(a12, a34))
+    tan_a = math.tan(spec.alpha)
+    inv_a = tan_a - spec.alpha
+    ok = np.ones(a12.shape, dtype=bool)
+    for a, zsum in ((a12, 2 * a12 / spec.modules[0]),
+                    (a34, 2 * a34 / (spec.modules[0] if spec.scheme is Scheme.SINGLE_ROW
+                                     else spec.modules[1]))):
+        c = a * math.cos(spec.alpha) / a_w
+        with np.errstate(invalid="ignore"):
+            aw = np.arccos(np.clip(c, -1.0, 1.0))
+            x = zsum * ((np.tan(aw) - aw) - inv_a) / (2 * tan_a)
+        ok &= (c > 0) & (c <= 1 + 1e-12) & (np.abs(x) <= spec.max_shift_sum + 1e-9)
+    return ok
+
+
 def drawable_distance(spec: PlanetarySpec, z: tuple[int, ...]) -> float | None:
     """The working centre distance when the set is coaxial at it — unshifted, or with each mesh's
     |x_Σ| within ``max_shift_sum`` — else None (the set cannot be built, nor its plan drawn)."""
@@ -217,6 +245,8 @@ def neighbour_gap(spec: PlanetarySpec, z: np.ndarray, k: int | None = None) -> n
     a12, _ = centre_distance(spec, z)
     if spec.centre_distance is not None:
         a12 = np.full_like(a12, spec.centre_distance)
+    elif spec.centre_auto:
+        a12 = np.maximum(a12, centre_distance(spec, z)[1])
     if k == 1:
         return np.full_like(a12, np.inf)         # a single planet has no neighbour
     return 2 * a12 * math.sin(math.pi / k) - planet_tip_diameter(spec, z)
