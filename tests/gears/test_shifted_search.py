@@ -12,9 +12,9 @@ from mechplan.synthesis.gears import search, train
 
 
 def spec(**kw) -> PlanetarySpec:
-    base = dict(scheme=Scheme.EXT_EXT, fixed="4", input="h", output="1", ratio=10000.0,
-                deviation=1e-6, planets=1, modules=(0.001, 0.001), z_range=(95, 105), z_min=17,
-                centre_auto=True)
+    base = {"scheme": Scheme.EXT_EXT, "fixed": "4", "input": "h", "output": "1",
+            "ratio": 10000.0, "deviation": 1e-6, "planets": 1, "modules": (0.001, 0.001),
+            "z_range": (95, 105), "z_min": 17, "centre_auto": True}
     base.update(kw)
     return PlanetarySpec(**base)
 
@@ -33,11 +33,12 @@ def test_artobolevsky_train_is_found_with_shifted_gears():
 
 
 @pytest.mark.parametrize("kw", [
-    dict(),
-    dict(scheme=Scheme.EXT_INT, fixed="4", input="1", output="h", ratio=4.0, deviation=0.02,
-         planets=3, z_range=(17, 70)),
-    dict(scheme=Scheme.SINGLE_ROW, fixed="3", input="1", output="h", ratio=5.0, deviation=0.02,
-         planets=3, z_range=(17, 150), centre_auto=False, centre_distance=0.0405),
+    {},
+    {"scheme": Scheme.EXT_INT, "fixed": "4", "input": "1", "output": "h", "ratio": 4.0,
+     "deviation": 0.02, "planets": 3, "z_range": (17, 70)},
+    {"scheme": Scheme.SINGLE_ROW, "fixed": "3", "input": "1", "output": "h", "ratio": 5.0,
+     "deviation": 0.02, "planets": 3, "z_range": (17, 150), "centre_auto": False,
+     "centre_distance": 0.0405},
 ])
 def test_both_enumerations_agree(kw):
     s = spec(**kw)

@@ -51,11 +51,11 @@ def offsets(spec: PlanetarySpec) -> range:
     """Tooth-sum offsets δ of the last gear from its unshifted coaxial value: 0 alone, or with a
     working centre distance every δ that shift sums within ``max_shift_sum`` may reach."""
     if not train.shifted(spec):
-        return range(0, 1)
-    reach = int(math.ceil(2.5 * spec.max_shift_sum)) + 2
+        return range(1)
+    reach = math.ceil(2.5 * spec.max_shift_sum) + 2
     if spec.centre_distance is not None:     # the given a_w may sit far from the standard ones
         m = spec.modules[1] if spec.scheme.two_row else spec.modules[0]
-        reach += int(math.ceil(2 * spec.centre_distance / m))
+        reach += math.ceil(2 * spec.centre_distance / m)
     return range(-reach, reach + 1)
 
 
