@@ -51,6 +51,8 @@ def _scheme(res: PlanetaryResult, mu_l: float, sx: float = 1.0) -> list[Primitiv
         x = xs[n]
         central = n in (names[0], names[-1])
         y0, y1 = (0.0, y[n]) if central else (aw - y[n], aw + y[n])
+        if not central and not two:          # a shifted single row's planet: A to B
+            y0, y1 = p.pitch_points["A"] / mu_l, p.pitch_points["B"] / mu_l
         prims.append(Line((x, y0), (x, y1), Role.OUTLINE))
         ring = central and ((n == names[0] and int1) or (n == names[-1] and int2))
         cap = 3.0 if ring else 1.5
