@@ -230,6 +230,10 @@ def _own_gears(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
         i_text = "z3/z1" if len(z) == 3 else "z2·z4/(z1·z3)"
         return u, f"Willis: i^h = {sign}{i_text}", used
     if name == "a_w":
+        if train.shifted(spec):             # both meshes at the working centre distance
+            a_w = train.working_distance(spec, tuple(int(v) for v in z))
+            if a_w is not None:
+                return a_w, "a_w (shifted gears)", used
         return float(train.centre_distance(spec, z)[0]), "a_w = m(z₁ ± z₂)/2", used
     if name == "assembly":
         a, b = train.assembly_terms(spec, z)
