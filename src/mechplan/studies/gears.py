@@ -19,7 +19,9 @@ if TYPE_CHECKING:
 
 
 def _conditions_json(c: Conditions) -> dict[str, Any]:
-    return {"z": list(c.z), "ratio": c.ratio, "ratio_error": c.ratio_error, "ratio_ok": c.ratio_ok,
+    finite = math.isfinite(c.ratio)          # a differential asks for no ratio
+    return {"z": list(c.z), "ratio": c.ratio if finite else None,
+            "ratio_error": c.ratio_error if finite else None, "ratio_ok": c.ratio_ok,
             "a_w_m": list(c.a_w), "coaxial": c.coaxial, "assembly_z1u_over_k": c.assembly_value,
             "assembly_p": c.assembly_p, "z_smallest": c.z_smallest, "undercut_ok": c.undercut_ok,
             "ring_difference": c.ring_difference, "ring_ok": c.ring_ok,
@@ -140,7 +142,8 @@ class GearStudy:
                 "others": [_conditions_json(c) for c in res.others],
                 "omega_rad_s": res.plan.omega if res.plan else None,
                 "omega_relative_rad_s": res.plan.relative if res.plan else None,
-                "ratio_from_velocity_plan": res.plan.ratio if res.plan else None,
+                "ratio_from_velocity_plan": (res.plan.ratio if res.plan
+                                             and math.isfinite(res.plan.ratio) else None),
                 "working_centre_distance_m": res.chosen.working,
                 }
             from ..synthesis.gears.forces import train_forces
@@ -179,6 +182,8 @@ class GearStudy:
             k.scalars |= {f"z{i}": float(z) for i, z in enumerate(c.z, start=1)}
             k.scalars |= {"k": float(sol.planetary.spec.planets), "u": c.ratio, "a_w": c.a_w[0],
                           "assembly": c.assembly_value}
+            if sol.planetary.spec.speeds is not None:     # a differential asks for no ratio
+                del k.scalars["u"]
             if c.working is not None:
                 k.scalars["a_w"] = c.working
         if sol.pair is not None:
@@ -224,6 +229,8 @@ def _own_gears(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
     z = np.array([round(v) for v in zs if v is not None])
     used = tuple(f"z{i}" for i in range(1, n + 1))
     if name == "u":
+        if spec.speeds is not None:
+            return None
         i = train.willis_i(spec.scheme, z)
         u = float(train.ratio_from_i(i, spec.scheme, spec.fixed, spec.input, spec.output))
         sign = "−" if train.willis_sign(spec.scheme) < 0 else ""
