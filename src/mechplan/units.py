@@ -30,6 +30,8 @@ DIMENSIONS: dict[str, tuple[str, str]] = {
     "dimensionless": ("", ""),
     "density": ("[mass]/[length]**3", "kg/m**3"),
     "stiffness": ("[mass]/[time]**2", "N/m"),
+    "damping": ("[mass]/[time]", "N*s/m"),
+    "torsional_damping": ("[mass]*[length]**2/[time]", "N*m*s"),
     # scale factors: physical unit per mm of paper
     "mu_length": ("", "m/mm"),
     "mu_velocity": ("1/[time]", "m/s/mm"),
@@ -59,6 +61,9 @@ _EXAMPLES = {
     "inertia": '"0.1 kg*m^2"',
     "force": '"7850 N" or "7.85 kN"',
     "moment": '"100 N*m"',
+    "stiffness": '"2 N/mm" or "2000 N/m"',
+    "damping": '"5 N*s/m"',
+    "torsional_damping": '"0.01 N*m*s/rad"',
     "pressure": '"1 MPa" or "85 kPa"',
     "area": '"78.5 cm^2"',
     "dimensionless": '"0.35"',

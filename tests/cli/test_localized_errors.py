@@ -107,3 +107,12 @@ def test_json_error_object_has_a_stable_code(tmp_path, capsys):
         assert doc["key"] == "links.1.lengths.AB" and doc["file"] == str(path)
         assert doc["kind"] == "SceneError" and "80 kg" in doc["message"]
     assert "不是长度" in doc["message"]
+
+
+def test_every_dimension_has_its_noun_in_every_language():
+    """A quantity error names the kind of quantity wanted: each dimension a scene may read."""
+    from mechplan.units import DIMENSIONS
+
+    for lang in ("en", "ru", "vi", "zh"):
+        missing = [d for d in DIMENSIONS if f"errors.noun.{d}" not in catalogue(lang)]
+        assert not missing, (lang, missing)

@@ -181,7 +181,12 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
     for i in range(rays.phi.size):
         p = rays.pitch[i] / mu
         prims.append(Line((0.0, 0.0), (float(p[0]), float(p[1])), Role.THIN))
-        if d.spec.follower.contact is Contact.FLAT:
+        if d.spec.follower.contact is Contact.FLAT and g.motion is Motion.OSCILLATING:
+            lo, hi = d.face or (0.0, g.pivot)             # the face from the turned pivot
+            t = (b[i] - a[i]) / np.hypot(*(b[i] - a[i]))
+            prims.append(Line(tuple(((a[i] + lo * t) / mu).tolist()),
+                              tuple(((a[i] + hi * t) / mu).tolist()), Role.THIN))
+        elif d.spec.follower.contact is Contact.FLAT:
             lo, hi = d.face or (-0.01, 0.01)
             if g.sense < 0:                  # the s′ side is mirrored with the cam
                 lo, hi = -hi, -lo
@@ -234,6 +239,14 @@ def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[li
         ss1 = _ss1_diagram(d, lang, scale)
         if ss1 is not None:
             panels.append(ss1)
+        from .cam_dynamics import dynamics_panels
+        from .cam_zone import zone_panel
+
+        zone = zone_panel(d, lang, scale)
+        if zone is not None:
+            panels.append(zone)
+
+        panels.extend(dynamics_panels(d, lang, scale, DIAGRAM_W, DIAGRAM_H))
         return panels + [_table(*table, lang), _results(summary, lang)], mu
 
     fields = {"title": spec.title}
