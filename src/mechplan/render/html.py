@@ -50,6 +50,11 @@ def _xy(p: tuple[float, float]) -> str:
     return f"{_r(p[0])} {_r(-p[1])}"
 
 
+def _significant(v: float) -> float | None:
+    """A value of the data (machine format, not text for a reader): 7 significant digits."""
+    return float(f"{v:.7g}") if math.isfinite(v) else None
+
+
 def _path(p: Primitive) -> tuple[str, bool]:
     """SVG path data of a line-like primitive (y down) and whether it is filled."""
     if isinstance(p, Line):
@@ -111,11 +116,11 @@ def _plain(value: Any) -> Any:
     if isinstance(value, DRAWN):
         return primitive(value)
     if isinstance(value, np.ndarray):
-        arr = np.round(np.asarray(value, dtype=float), DIGITS)
-        if arr.ndim == 2:          # (frames, 2) points: y down, NaN as null
-            arr = arr * np.array([1.0, -1.0])
-        return [None if isinstance(v, float) and not math.isfinite(v) else v
-                for v in arr.ravel().tolist()]
+        arr = np.asarray(value, dtype=float)
+        if arr.ndim == 2:          # (frames, 2) points in paper mm: y down, NaN as null
+            arr = np.round(arr * np.array([1.0, -1.0]), DIGITS)
+            return [v if math.isfinite(v) else None for v in arr.ravel().tolist()]
+        return [_significant(v) for v in arr.ravel().tolist()]    # values, angles
     if isinstance(value, Mapping):
         if "frames" in value and value.get("kind") in ("link", "segment"):
             return {**{k: _plain(v) for k, v in value.items() if k != "frames"},

@@ -1,0 +1,182 @@
+"""The live page (``draw --format html``): one self-contained file whose embedded data are the
+construction's own values, its replay steps in the order of the protocol, in every language."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from html.parser import HTMLParser
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scenes import ROOT, TEMPLATES
+
+from mechplan import api
+from mechplan.construct.protocol import protocol
+from mechplan.errors import DrawingError
+from mechplan.i18n import LANGUAGES
+from mechplan.live_page import page_text
+from mechplan.model.plans import Plan
+from mechplan.sheet.live import UI
+from mechplan.studies import solve_file
+
+SVG_NS = "http://www.w3.org/2000/svg"       # a namespace name, not a reference to fetch
+
+
+def _data(page: str) -> dict:
+    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.S)
+    assert m, "the page embeds its document"
+    return json.loads(m.group(1).replace("<\\/", "</"))
+
+
+@pytest.fixture(scope="module")
+def four_bar():
+    study = solve_file(str(ROOT / "templates" / "four_bar.toml"))
+    page = page_text(study, name="four_bar")
+    return study, page, _data(page)
+
+
+class _Refs(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.refs: list[tuple[str, str, str]] = []
+        self.tags: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        self.tags.append(tag)
+        for name, value in attrs:
+            if name in ("src", "href", "action", "srcset", "data", "poster", "xlink:href"):
+                self.refs.append((tag, name, value or ""))
+
+
+def test_one_file_without_external_references(four_bar):
+    _study, page, _doc = four_bar
+    parser = _Refs()
+    parser.feed(page)
+    assert parser.refs == []                        # no script, style, font or image fetched
+    assert "link" not in parser.tags and "iframe" not in parser.tags
+    body = page.replace(SVG_NS, "")
+    assert not re.search(r"https?://", body), "no URL anywhere but the SVG namespace"
+    assert not re.search(r"\bfetch\s*\(|XMLHttpRequest|\bimport\s*\(|WebSocket|EventSource",
+                         body)
+    assert re.search(r"url\(data:font/", page), "the fonts are inlined as data"
+    assert "default-src 'none'" in page              # and the page forbids any other load
+
+
+def test_positions_are_the_constructions_own(four_bar):
+    """The animation's points equal the construction evaluated at the same crank angles, and
+    close the loop: |BC|, |DC| and the crank pin on its circle, from the scene's lengths."""
+    study, _page, doc = four_bar
+    sol = study.solution
+    c = sol.construction
+    mu = sol.scales[Plan.POSITION]
+    a = doc["animation"]
+    phi = np.radians(np.asarray(a["phi_deg"]))
+    ev = c.evaluate(phi)
+    pos = next(p for p in a["panels"] if p["id"] == "position")["points"]
+
+    def xy(name):
+        v = np.asarray(pos[name]["xy"], dtype=float).reshape(-1, 2)
+        return v * np.array([1.0, -1.0]) * mu          # the page's y runs down; back to m
+
+    for name in ("B", "C", "E"):
+        exact = np.asarray(ev[c.position(name)])
+        assert np.abs(xy(name) - exact).max() <= 0.006 * mu   # paper precision 0.01 mm
+    # independent: the crank pin at (80 mm)(cos φ, sin φ) about A = (0, 0), φ the slider's angle
+    pin = 0.080 * np.column_stack([np.cos(phi), np.sin(phi)])
+    assert np.abs(xy("B") - pin).max() <= 0.006 * mu
+    bc = np.hypot(*(xy("C") - xy("B")).T)
+    dc = np.hypot(*(xy("C") - np.array([0.250, 0.0])).T)
+    assert np.abs(bc - 0.260).max() < 0.02 * mu and np.abs(dc - 0.180).max() < 0.02 * mu
+    assert len(phi) == 360 and np.allclose(np.diff(np.unwrap(phi)), 2 * math.pi / 360, atol=1e-5)
+
+
+def test_velocity_values_follow_the_slider(four_bar):
+    """v_B at every frame is ω·l_AB (closed form); its paper length is v_B / μv."""
+    study, _page, doc = four_bar
+    mu_v = study.solution.scales[Plan.VELOCITY]
+    vb = next(v for v in doc["animation"]["values"] if v["quantity"] == "v_B")
+    assert np.allclose(vb["value"], 10.0 * 0.080, atol=1e-9)
+    assert np.allclose(vb["mm"], 0.8 / mu_v, atol=0.006)
+
+
+def test_replay_steps_in_the_order_of_the_protocol(four_bar):
+    study, _page, doc = four_bar
+    sol = study.solution
+    mu = sol.scales
+    for r in doc["replays"]:
+        plan = Plan(r["plan"])
+        groups = {s["group"] for s in r["steps"]}
+        expected = [text for _p, _label, text in protocol(sol.construction, sol.ev, r["k"], "en",
+                                                          mu, (plan,))]
+        said = [s["sentence"]["en"] for s in r["steps"]]
+        if plan is Plan.FORCE:               # one polygon per group: its steps, in order
+            ids = [s.id for s in sol.construction.of_plan(plan) if s.group in groups
+                   and s.id in sol.ev.values and s.op.message is not None]
+            assert [s["id"] for s in r["steps"]] == ids
+        else:
+            assert said == expected
+        n = len(r["steps"])
+        for lang in LANGUAGES:
+            ks = [p["k"] for p in r["prims"][lang]]
+            assert all(-1 <= k < n for k in ks)
+            assert any(k >= 0 for k in ks), "the replay draws something step by step"
+        for row in r["rows"]:
+            assert 0 <= row["step"] < n
+
+
+def test_segment_found_at_its_step(four_bar):
+    """In the velocity replay, pb is found at the step that draws b, and its arrow appears
+    then: the measured segment and its arrow come with the same sentence."""
+    study, _page, doc = four_bar
+    r = next(r for r in doc["replays"] if r["plan"] == "velocity")
+    row = next(x for x in r["rows"] if x["quantity"] == "v_B")
+    step = r["steps"][row["step"]]
+    assert "pb" in step["sentence"]["en"]
+    drawn = [p for p in r["prims"]["en"] if p["k"] == row["step"]]
+    assert any("h" in p for p in drawn), "the arrow pb appears at that step"
+    assert float(row["value"]["en"]) == pytest.approx(0.8, abs=5e-4)
+    mu_v = study.solution.scales[Plan.VELOCITY]
+    assert float(row["mm"]["en"]) == pytest.approx(0.8 / mu_v, abs=0.05)
+
+
+def test_every_language_is_in_the_page(four_bar):
+    _study, _page, doc = four_bar
+    assert sorted(doc["languages"]) == sorted(LANGUAGES)
+    for lang in LANGUAGES:
+        assert all(doc["ui"][lang][k] for k in UI)
+        assert doc["ui"][lang]["decimal"] in (".", ",")
+    assert doc["ui"]["ru"]["decimal"] == ","
+    r = doc["replays"][1]
+    texts = {lang: [s["sentence"][lang] for s in r["steps"]] for lang in LANGUAGES}
+    assert len({tuple(t) for t in texts.values()}) == len(LANGUAGES)   # each its own words
+    assert "," in " ".join(texts["ru"]) and "мм" in " ".join(texts["ru"])
+
+
+def test_dead_centres_and_sheet_positions_on_the_slider(four_bar):
+    study, _page, doc = four_bar
+    a = doc["animation"]
+    kinds = {m["kind"] for m in a["marks"]}
+    assert {"dead", "chosen"} <= kinds
+    # the rocker's two extreme positions: ω3 = 0 there (independently: the velocity of C)
+    vc = np.asarray(next(v for v in a["values"] if v["quantity"] == "v_C")["value"])
+    for m in a["marks"]:
+        if m["kind"] == "dead":
+            assert vc[m["k"]] < 0.05 * vc.max()
+
+
+@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+def test_page_weight(path: Path, tmp_path: Path) -> None:
+    """Every linkage template's page is one file of at most 3 MB."""
+    written = api.draw(path, tmp_path, formats=["html"])
+    assert [p.suffix for p in written] == [".html"]
+    size = written[0].stat().st_size
+    assert 50_000 < size <= 3_000_000
+
+
+def test_other_kinds_say_so_and_write_nothing(tmp_path: Path) -> None:
+    with pytest.raises(DrawingError, match="kind"):
+        api.draw(ROOT / "templates" / "cam_flat.toml", tmp_path, formats=["html"])
+    assert list(tmp_path.iterdir()) == []
