@@ -26,7 +26,7 @@ SVG_NS = "http://www.w3.org/2000/svg"       # a namespace name, not a reference 
 
 
 def _data(page: str) -> dict:
-    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.S)
+    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.DOTALL)
     assert m, "the page embeds its document"
     return json.loads(m.group(1).replace("<\\/", "</"))
 
@@ -156,7 +156,7 @@ def test_every_language_is_in_the_page(four_bar):
 
 
 def test_dead_centres_and_sheet_positions_on_the_slider(four_bar):
-    study, _page, doc = four_bar
+    _study, _page, doc = four_bar
     a = doc["animation"]
     kinds = {m["kind"] for m in a["marks"]}
     assert {"dead", "chosen"} <= kinds

@@ -52,7 +52,7 @@ def four_bar(tmp_path_factory):
     study = solve_file(str(ROOT / "templates" / "four_bar.toml"))
     path = write_page(study, out, "four_bar")
     text = path.read_text(encoding="utf-8")
-    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.S)
+    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.DOTALL)
     return study, path, json.loads(m.group(1).replace("<\\/", "</"))
 
 

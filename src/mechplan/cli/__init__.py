@@ -215,7 +215,8 @@ def parser() -> argparse.ArgumentParser:
                        "failed.")
     d.add_argument("scenes", nargs="+", metavar="SCENE")
     d.add_argument("-o", "--output", default=".", help="output folder (default: .)")
-    d.add_argument("--format", default="dxf,svg,pdf", help="comma-separated: dxf,svg,pdf,png,html (html: the live page)")
+    d.add_argument("--format", default="dxf,svg,pdf",
+                   help="comma-separated: dxf,svg,pdf,png,html (html: the live page)")
     d.add_argument("--sheet", choices=SHEETS)
     d.add_argument("--lang", choices=LANGUAGES)
     d.add_argument("--standard", choices=STANDARDS)

@@ -1,5 +1,5 @@
 """The live page: one self-contained HTML file (script, styles and font subsets inlined) that
-replays the construction step by step and animates the mechanism over the crank angle.
+replays the drawing step by step and animates the mechanism over the crank angle.
 
 The document comes from ``sheet/live.py``; this backend only turns its drafting primitives into
 compact SVG drawing instructions (y down, paper millimetres rounded to 0.01 mm) and embeds the
@@ -76,6 +76,8 @@ def _path(p: Primitive) -> tuple[str, bool]:
 
 def primitive(p: Primitive) -> dict[str, Any]:
     """One primitive as the page draws it: ``d`` (path), ``c`` (circle) or ``t`` (text)."""
+    if not isinstance(p, DRAWN):
+        raise DrawingError(f"the HTML page cannot draw {type(p).__name__}")
     role = p.role.value.lower()
     if isinstance(p, Circle):
         return {"c": [_r(p.center[0]), _r(-p.center[1]), _r(p.radius)], "r": role}

@@ -107,10 +107,10 @@ def _tables(sol: Solution, k: int, plan: Plan, mu: float, group: str | None,
                      "quantity": g.quantity,
                      "value": _each(lambda lang, v=length: format_number(v, 3, lang))})
     equations = []
-    for (p, g), (eq, terms) in c.equations.items():
-        if p is not plan or (group is not None and g != group):
+    for (p, name), (eq, terms) in c.equations.items():
+        if p is not plan or (group is not None and name != group):
             continue
-        equations.append({"group": g, "eq": eq, "terms": [
+        equations.append({"group": name, "eq": eq, "terms": [
             {"term": term, "magnitude": mag, "step": found.get(term, -1),
              "direction": _each(lambda lang, d=d: d.text(lang))}
             for term, d, mag in terms]})
@@ -162,28 +162,27 @@ def _position_prims(sol: Solution, k: int, mu: float, lang: str) -> list[tuple[P
         name = s.op.value
         centres: list[tuple[str, float]] = []
         if name == "circle_circle":
-            centres = [(s.inputs[0], s.param("r1")), (s.inputs[1], s.param("r2"))]
+            centres = [(s.input("centre1"), s.param("r1")), (s.input("centre2"), s.param("r2"))]
         elif name == "circle_line":
-            centres = [(s.inputs[0], s.param("r"))]
+            centres = [(s.input("centre"), s.param("r"))]
         for cid, r in centres:
             if cid in at and r:
                 q = at[cid]
                 a = math.degrees(math.atan2(p[1] - q[1], p[0] - q[0]))
                 out.append((Arc(q, float(r) / mu, a - ARC_HALF_DEG, a + ARC_HALF_DEG,
                                 Role.THIN), s.id))
-        if name == "polar_point" and s.inputs and s.inputs[0] in at:
-            out.append((Line(at[s.inputs[0]], p, Role.DASHED), s.id))
+        if name == "polar_point" and s.input("centre") in at:
+            out.append((Line(at[s.input("centre")], p, Role.DASHED), s.id))
         out.append((Circle(p, 0.8, Role.OUTLINE), s.id))
         out.append((Text((p[0] + 1.2, p[1] + 1.2), pole_label(s.label, lang), LABEL_H), s.id))
     order = {s.id: i for i, s in enumerate(c)}
-    for lid, fig in link_figures(mech).items():
+    for fig in link_figures(mech).values():
         ids = {n: c.position(n) for n in fig.points if c.has_position(n)}
         here = {n: at[i] for n, i in ids.items() if i in at}
         if len(here) < 2:
             continue
         last = max((ids[n] for n in here), key=order.__getitem__)
         out += [(p, last) for p in draw_figure(fig, here, Role.OUTLINE)]
-        del lid
     return out
 
 
@@ -311,7 +310,7 @@ def _marks(sol: Solution, phi: np.ndarray, broken: np.ndarray) -> list[Doc]:
 
     def frame_of(angle: float) -> int:
         sense = 1.0 if sol.scene.mechanism.drive.omega >= 0 else -1.0
-        return int(round(sense * (angle - float(phi[0])) / step)) % frames
+        return round(sense * (angle - float(phi[0])) / step) % frames
 
     marks = [{"k": frame_of(a), "kind": "dead"} for a in _extreme_phis(sol)]
     marks += [{"k": int(k), "kind": "unbuilt"} for k in np.flatnonzero(broken)]
@@ -349,7 +348,8 @@ def live_document(sol: Solution, mu: dict[Plan, float], lang: str, name: str,
                   frames: int = FRAMES) -> Doc:
     """Everything the live page shows, for every language (``lang`` is the one it opens in)."""
     return {"name": name, "title": sol.scene.title, "lang": lang, "languages": list(LANGUAGES),
-            "ui": ui_strings(), "replays": replays(sol, mu), "animation": animation(sol, mu, frames)}
+            "ui": ui_strings(), "replays": replays(sol, mu),
+            "animation": animation(sol, mu, frames)}
 
 
 __all__ = ["FRAMES", "animation", "live_document", "replays", "ui_strings"]
