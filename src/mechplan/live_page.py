@@ -6,8 +6,7 @@ import os
 from pathlib import Path
 from typing import Any
 
-from .errors import DrawingError
-from .i18n import message
+from .i18n import DEFAULT_LANGUAGE
 
 
 def page_text(study: Any, size: str | None = None, standard: str | None = None,
@@ -17,14 +16,17 @@ def page_text(study: Any, size: str | None = None, standard: str | None = None,
     The scale factors are the sheet's (``size``, ``standard``: the scene's own by default), so
     the paper millimetres on the page are those of the drawing.
     """
+    from .i18n import LANGUAGES
     from .render.html import to_html
-    from .sheet.live import FRAMES, live_document
+    from .sheet.live import FRAMES, live_document, sheets_document
     from .studies.mechanism import MechanismStudy
 
-    if not isinstance(study, MechanismStudy):
-        kind = getattr(study, "kind", None) or type(study).__name__.removesuffix("Study").lower()
-        raise DrawingError(message("html.kind_unsupported", language or "en", scene=name,
-                                   kind=kind))
+    if not isinstance(study, MechanismStudy):        # cams, gears, engines: their sheets
+        first = study.sheets(size, standard, language, name)
+        lang = first[0].language if first else language or DEFAULT_LANGUAGE
+        sheets = {lg: first if lg == lang else study.sheets(size, standard, lg, name)
+                  for lg in LANGUAGES}
+        return to_html(sheets_document(sheets, lang, name, name))
     sol = study.solution
     scene = sol.scene
     own = (size in (None, scene.drawing.sheet) and standard in (None, scene.drawing.standard))

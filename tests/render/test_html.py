@@ -15,7 +15,7 @@ from scenes import ROOT, TEMPLATES
 
 from mechplan import api
 from mechplan.construct.protocol import protocol
-from mechplan.errors import DrawingError
+from mechplan.errors import MechplanError
 from mechplan.i18n import LANGUAGES
 from mechplan.live_page import page_text
 from mechplan.model.plans import Plan
@@ -176,7 +176,30 @@ def test_page_weight(path: Path, tmp_path: Path) -> None:
     assert 50_000 < size <= 3_000_000
 
 
-def test_other_kinds_say_so_and_write_nothing(tmp_path: Path) -> None:
-    with pytest.raises(DrawingError, match="kind"):
-        api.draw(ROOT / "templates" / "cam_flat.toml", tmp_path, formats=["html"])
-    assert list(tmp_path.iterdir()) == []
+def test_other_kinds_give_their_sheets_in_every_language(tmp_path: Path) -> None:
+    """A cam scene's page holds its sheets (the SVG's primitives) in the four languages."""
+    path = api.draw(ROOT / "templates" / "cam_flat.toml", tmp_path, formats=["html"])[0]
+    page = path.read_text(encoding="utf-8")
+    doc = _data(page)
+    assert doc["replays"] == [] and doc["animation"] is None
+    assert sorted(doc["sheets"]) == sorted(LANGUAGES)
+    for lang in LANGUAGES:
+        sheets = doc["sheets"][lang]
+        assert sheets and all(len(s["prims"]) > 100 for s in sheets)
+    texts = {lang: {p["t"] for s in doc["sheets"][lang] for p in s["prims"] if "t" in p}
+             for lang in LANGUAGES}
+    assert texts["en"] != texts["ru"] and texts["en"] != texts["zh"]
+    assert len(page.encode()) <= 3_000_000
+
+
+def test_a_failing_scene_writes_no_page(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text((ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
+                   .replace('link = "1"', 'link = "9"'), encoding="utf-8")
+    out = tmp_path / "out"
+    with pytest.raises(MechplanError) as html_error:
+        api.draw(bad, out, formats=["html"])
+    with pytest.raises(MechplanError) as svg_error:
+        api.draw(bad, out, formats=["svg"])
+    assert str(html_error.value) == str(svg_error.value)
+    assert not list(out.glob("*.html"))

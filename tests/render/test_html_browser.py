@@ -136,3 +136,23 @@ def test_replay_steps_and_slider_in_chromium(browser, four_bar, tmp_path):
     assert page.evaluate("document.documentElement.lang") == "ru"
     assert errors == []
     page.close()
+
+
+def test_sheets_page_of_a_cam_in_chromium(browser, tmp_path):
+    """A kind without a replay yet shows its sheets; switching the language redraws them."""
+    path = write_page(solve_file(str(ROOT / "templates" / "cam_flat.toml")), tmp_path, "cam")
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    page.goto(path.as_uri())
+    page.wait_for_selector("body[data-ready='1']")
+    assert page.is_visible("#s-svg") and not page.is_visible("#tab-replay")
+    english = page.locator("#s-svg text").all_text_contents()
+    assert len(english) > 50
+    page.select_option("#language", "ru")
+    russian = page.locator("#s-svg text").all_text_contents()
+    assert russian != english and any("мм" in t for t in russian)
+    assert errors == []
+    _shot(page, "html-cam-sheets.png", tmp_path)
+    page.close()

@@ -11,7 +11,7 @@ factors. The page (``render/html``) only shows, hides and moves what is given he
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -22,7 +22,7 @@ from ..construct.protocol import mm, sentence
 from ..construct.segments import SegmentKind
 from ..construct.step import Kind, Step
 from ..construct.terms import pole_label
-from ..drafting.primitives import Arc, Arrow, Circle, Line, Primitive, Role, Table, Text
+from ..drafting.primitives import Arc, Arrow, Circle, Line, Primitive, Role, Sheet, Table, Text
 from ..i18n import LANGUAGES, decimal_mark, message, unit
 from ..i18n import number as format_number
 from ..model.mechanism import GROUND
@@ -41,7 +41,7 @@ ARC_HALF_DEG = 14.0
 UI = ("replay", "animation", "plan", "previous", "next", "play", "pause", "speed", "first",
       "last", "step", "protocol", "segments", "equation", "term", "direction", "magnitude",
       "segment", "on_paper", "quantity", "value", "angle", "dead", "unbuilt", "chosen",
-      "language", "reset", "print", "keys", "values")
+      "language", "reset", "print", "keys", "values", "sheets", "sheet_only")
 
 Doc = dict[str, Any]
 
@@ -352,4 +352,14 @@ def live_document(sol: Solution, mu: dict[Plan, float], lang: str, name: str,
             "animation": animation(sol, mu, frames)}
 
 
-__all__ = ["FRAMES", "animation", "live_document", "replays", "ui_strings"]
+def sheets_document(sheets: Mapping[str, Sequence[Sheet]], lang: str, name: str, title: str
+                    ) -> Doc:
+    """The page of a scene kind without a replay yet: its sheets in every language."""
+    return {"name": name, "title": title, "lang": lang, "languages": list(LANGUAGES),
+            "ui": ui_strings(), "replays": [], "animation": None,
+            "sheets": {lg: [{"name": s.name, "w": s.width_mm, "h": s.height_mm,
+                             "prims": list(s.flat())} for s in each]
+                       for lg, each in sheets.items()}}
+
+
+__all__ = ["FRAMES", "animation", "live_document", "replays", "sheets_document", "ui_strings"]

@@ -261,6 +261,20 @@ function frame(k) {
   $("legend").textContent = here.join(", ");
 }
 
+// ---- sheets (the kinds without a replay yet) ----------------------------------------------------
+function showSheet() {
+  const list = DOC.sheets?.[state.lang] ?? [], svg = $("s-svg");
+  const pick = $("sheet-pick");
+  if (pick.options.length !== list.length) {
+    pick.replaceChildren(...list.map((S, i) => { const o = html("option", S.name); o.value = i; return o; }));
+  }
+  const S = list[Number(pick.value) || 0];
+  svg.replaceChildren();
+  if (!S) return;
+  for (const p of S.prims) svg.append(...draw(p));
+  fit(svg, [0, -S.h, S.w, 0]);
+}
+
 // ---- language, views, keys ----------------------------------------------------------------------
 function labels() {
   document.documentElement.lang = state.lang;
@@ -268,7 +282,8 @@ function labels() {
     ["print", "print"], ["first", "first"], ["prev", "previous"], ["next", "next"], ["last", "last"],
     ["lbl-plan", "plan"], ["lbl-speed", "speed"], ["lbl-language", "language"],
     ["h-protocol", "protocol"], ["h-segments", "segments"], ["h-equation", "equation"],
-    ["lbl-angle", "angle"], ["h-values", "values"], ["keys", "keys"]]) $(id).textContent = ui(key);
+    ["lbl-angle", "angle"], ["h-values", "values"], ["keys", "keys"], ["tab-sheets", "sheets"],
+    ["sheet-only", "sheet_only"]]) $(id).textContent = ui(key);
   $("play").textContent = ui(state.timer && state.view === "replay" ? "pause" : "play");
   $("a-play").textContent = ui(state.timer && state.view === "anim" ? "pause" : "play");
   const sel = $("plan");
@@ -282,16 +297,17 @@ function labels() {
 function setLanguage(lang) {
   state.lang = lang;
   labels();
-  showReplay();
+  if (DOC.replays.length) showReplay();
   if (anim.length) frame(state.frame);
+  if (DOC.sheets) showSheet();
 }
 function setView(view) {
   if (state.timer) { clearInterval(state.timer); state.timer = null; }
   state.view = view;
-  $("replay").hidden = view !== "replay";
-  $("anim").hidden = view !== "anim";
-  $("tab-replay").setAttribute("aria-pressed", view === "replay");
-  $("tab-anim").setAttribute("aria-pressed", view === "anim");
+  for (const v of ["replay", "anim", "sheets"]) {
+    $(v).hidden = view !== v;
+    $(`tab-${v}`).setAttribute("aria-pressed", view === v);
+  }
   if (view === "anim" && !anim.length) buildAnimation();
   labels();
 }
@@ -308,6 +324,9 @@ $("plan").addEventListener("change", () => { state.replay = Number($("plan").val
   showReplay(); });
 $("tab-replay").addEventListener("click", () => setView("replay"));
 $("tab-anim").addEventListener("click", () => setView("anim"));
+$("tab-sheets").addEventListener("click", () => setView("sheets"));
+$("sheet-pick").addEventListener("change", showSheet);
+zoomable($("s-svg"));
 $("reset").addEventListener("click", resetViews);
 $("print").addEventListener("click", () => window.print());
 $("first").addEventListener("click", () => go(0));
@@ -336,7 +355,14 @@ if (DOC.languages.includes(hash.get("lang"))) { state.lang = hash.get("lang"); l
 const wanted = DOC.replays.findIndex((R) => R.id === hash.get("replay"));
 if (wanted >= 0) state.replay = wanted;
 labels();
-showReplay();
+if (DOC.sheets) {                  // a scene kind shown by its sheets
+  $("tab-sheets").hidden = false;
+  $("tab-replay").hidden = $("tab-anim").hidden = !DOC.replays.length;
+  showSheet();
+}
+if (DOC.replays.length) showReplay();
+else setView("sheets");
+$("sheet-only").hidden = DOC.replays.length > 0;
 if (hash.has("step")) go(Number(hash.get("step")) - 1);
-if (hash.has("frame")) { setView("anim"); frame(Number(hash.get("frame"))); }
+if (hash.has("frame") && DOC.animation) { setView("anim"); frame(Number(hash.get("frame"))); }
 document.body.dataset.ready = "1";
