@@ -203,3 +203,23 @@ def test_a_failing_scene_writes_no_page(tmp_path: Path) -> None:
         api.draw(bad, out, formats=["svg"])
     assert str(html_error.value) == str(svg_error.value)
     assert not list(out.glob("*.html"))
+
+
+def test_diagram_cursor_follows_the_slider():
+    """The cursor of s(φ) in the slider-crank's animation is the piston's travel at every frame:
+    x = r cos φ + √(l² − r² sin² φ) (closed form), drawn on its axes (an affine map to mm)."""
+    study = solve_file(str(ROOT / "templates" / "slider_crank.toml"))
+    doc = _data(page_text(study, name="slider_crank"))
+    a = doc["animation"]
+    phi = np.radians(np.asarray(a["phi_deg"]))
+    panel = next(p for p in a["panels"] if p["id"] == "diagram-s")
+    xy = np.asarray(panel["points"]["s"]["xy"], dtype=float).reshape(-1, 2)
+    r, l = 0.100, 0.400
+    s = r * np.cos(phi) + np.sqrt(l**2 - (r * np.sin(phi))**2)
+    s -= s.min()
+    slope, icpt = np.polyfit(s, -xy[:, 1], 1)            # page y runs down
+    assert np.abs(slope * s + icpt + xy[:, 1]).max() < 0.01   # within paper precision
+    assert slope > 0
+    steps = np.diff(xy[:, 0])
+    assert np.allclose(steps, steps[0], atol=0.011) and steps[0] > 0   # φ along the axis
+    assert set(panel["static"]) == set(LANGUAGES) and all(panel["static"].values())

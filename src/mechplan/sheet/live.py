@@ -29,6 +29,8 @@ from ..model.mechanism import GROUND
 from ..model.plans import Plan
 from ..solve import Solution
 from .compose import _extreme_phis, crank_degrees, plan_positions
+from .diagram import Axis, Curve, diagram_panel
+from .kinematics_sheet import _series, output_link
 from .link_outline import drawn as draw_figure
 from .link_outline import link_figures
 from .panels import LABEL_H, TABLE_H, mu_text, plan_title, vector_plan
@@ -319,6 +321,49 @@ def _marks(sol: Solution, phi: np.ndarray, broken: np.ndarray) -> list[Doc]:
     return marks
 
 
+def _diagram_anims(sol: Solution, phi: np.ndarray) -> list[Doc]:
+    """s(φ), v(φ), a(φ) of the output link (as on sheet 1) with a cursor at every frame."""
+    out = output_link(sol.scene.mechanism)
+    if out is None:
+        return []
+    series = _series(sol, out, phi)
+    if "s" not in series:
+        return []
+    rocker = out.point is None
+    symbols = ("ψ", "ω", "ε") if rocker else ("s", "v", "a")
+    units = ("°", "rad/s", "rad/s²") if rocker else ("m", "m/s", "m/s²")
+    kinds = ("displacement", "velocity", "acceleration")
+    x = np.arange(phi.shape[0]) * 360.0 / phi.shape[0]
+    panels = []
+    for key, sym, si, kind in zip(("s", "v", "a"), symbols, units, kinds, strict=True):
+        if key not in series:
+            continue
+        y = np.asarray(series[key], dtype=float)
+        if key == "s":
+            y = (y - float(np.nanmin(y))) * (math.degrees(1.0) if rocker else 1.0)
+
+        def title(lang: str, sym: str = sym, kind: str = kind) -> str:
+            return message(f"layout.diagram.{kind}", lang, symbol=sym, link=out.link)
+
+        drawn = {lang: diagram_panel(f"diagram-{key}", title(lang), [Curve(x, y)],
+                                     Axis("φ", "°", 120.0), Axis(sym, si, 40.0), lang)
+                 for lang in LANGUAGES}
+        d = drawn[LANGUAGES[0]]
+        xy = np.column_stack([d.origin[0] + x / d.mu_x, d.origin[1] + y / d.mu_y])
+        lo, hi = float(np.nanmin(xy[:, 1])), float(np.nanmax(xy[:, 1]))
+        cursor = [[Line((float(px), min(lo, d.origin[1])), (float(px), max(hi, d.origin[1])),
+                        Role.DASHED)] for px in xy[:, 0]]
+        panels.append({"id": f"diagram-{key}", "plan": "diagram", "title": _each(title),
+                       "mu": _each(lambda _lang: ""),
+                       "points": {key: {"label": _each(lambda _lang, sym=sym: sym), "xy": xy,
+                                        "trace": False}},
+                       "items": [{"kind": "segment", "name": "cursor", "thick": False,
+                                  "frames": cursor}],
+                       "static": {lang: [p for p in dd.panel.primitives if not isinstance(p, Table)]
+                                  for lang, dd in drawn.items()}})
+    return panels
+
+
 def animation(sol: Solution, mu: dict[Plan, float], frames: int = FRAMES) -> Doc:
     """The mechanism and its velocity and acceleration plans at ``frames`` crank angles."""
     c = sol.construction
@@ -328,6 +373,7 @@ def animation(sol: Solution, mu: dict[Plan, float], frames: int = FRAMES) -> Doc
     for plan in (Plan.VELOCITY, Plan.ACCELERATION):
         if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
             panels.append(_vector_anim(sol, ev, plan, mu[plan]))
+    panels += _diagram_anims(sol, phi)
     broken = np.zeros(frames, dtype=bool)
     for p in panels[0]["points"].values():
         broken |= ~np.isfinite(p["xy"]).all(axis=1)

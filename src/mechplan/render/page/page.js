@@ -184,6 +184,7 @@ function buildAnimation() {
     cap.dataset.title = P.id;
     const svg = el("svg", { role: "img" });
     svg.dataset.panel = P.id;
+    if (P.static) { const g = el("g", { class: "static" }); svg.append(g); }
     const items = P.items.map((it) => {
       const e = el("path", { class: it.kind === "link" || it.thick ? "role-outline" : "role-thin" });
       e.dataset.item = it.kind === "link" ? it.link : it.name;
@@ -219,8 +220,10 @@ function buildAnimation() {
     s.addEventListener("click", () => frame(m.k));
     return s;
   }));
+  statics();
   frame(0);
   for (const a of anim) {   // every frame inside the panel's home view
+    if (a.P.static) { fit(a.svg, bounds(a.svg.querySelector("g.static").children)); continue; }
     const b = [Infinity, Infinity, -Infinity, -Infinity];
     for (const [, , p] of a.pts) for (let k = 0; k < p.xy.length; k += 2) {
       if (p.xy[k] === null) continue;
@@ -233,6 +236,12 @@ function buildAnimation() {
     a.lift = size / 80;
   }
   frame(state.frame);
+}
+function statics() {       // the axes and curves of a diagram, in the page's language
+  for (const a of anim) {
+    const g = a.svg.querySelector("g.static");
+    if (g) g.replaceChildren(...(a.P.static[state.lang] ?? a.P.static.en).flatMap(draw));
+  }
 }
 function frame(k) {
   const A = DOC.animation;
@@ -298,7 +307,7 @@ function setLanguage(lang) {
   state.lang = lang;
   labels();
   if (DOC.replays.length) showReplay();
-  if (anim.length) frame(state.frame);
+  if (anim.length) { statics(); frame(state.frame); }
   if (DOC.sheets) showSheet();
 }
 function setView(view) {
