@@ -36,7 +36,8 @@ def page_text(study: Any, size: str | None = None, standard: str | None = None,
         from .sheet.scales import decide_scales
 
         mu = decide_scales(scene, sol.construction, sol.ev, sol.plans, size, standard)
-    doc = live_document(sol, mu, language or scene.language, name, frames or FRAMES)
+    doc = live_document(sol, mu, language or scene.language, name, frames or FRAMES,
+                        study.dynamics)
     return to_html(doc)
 
 

@@ -213,7 +213,7 @@ def test_diagram_cursor_follows_the_slider():
     a = doc["animation"]
     phi = np.radians(np.asarray(a["phi_deg"]))
     panel = next(p for p in a["panels"] if p["id"] == "diagram-s")
-    xy = np.asarray(panel["points"]["s"]["xy"], dtype=float).reshape(-1, 2)
+    xy = np.asarray(panel["points"]["diagram-s"]["xy"], dtype=float).reshape(-1, 2)
     r, l = 0.100, 0.400
     s = r * np.cos(phi) + np.sqrt(l**2 - (r * np.sin(phi))**2)
     s -= s.min()
@@ -223,3 +223,24 @@ def test_diagram_cursor_follows_the_slider():
     steps = np.diff(xy[:, 0])
     assert np.allclose(steps, steps[0], atol=0.011) and steps[0] > 0   # φ along the axis
     assert set(panel["static"]) == set(LANGUAGES) and all(panel["static"].values())
+
+
+def test_machine_dynamics_diagrams_have_a_cursor_at_the_crank_angle():
+    """With [dynamics], ω(φ) of the cycle is in the animation; its cursor's x is the cycle angle
+    of each frame ((φ − φ0) mod Φ at μφ) and its y the crank's ω there."""
+    study = solve_file(str(ROOT / "templates" / "machine_unit.toml"))
+    dyn = study.dynamics
+    doc = _data(page_text(study, name="machine_unit"))
+    a = doc["animation"]
+    panel = next(p for p in a["panels"] if p["id"] == "dynamics-omega")
+    xy = np.asarray(panel["points"]["dynamics-omega"]["xy"], dtype=float).reshape(-1, 2)
+    phi = np.radians(np.asarray(a["phi_deg"]))
+    theta = np.mod(phi - dyn.phi0, dyn.spec.cycle)
+    slope, _ = np.polyfit(theta, xy[:, 0], 1)
+    assert np.abs(np.polyval(np.polyfit(theta, xy[:, 0], 1), theta) - xy[:, 0]).max() < 0.01
+    assert slope > 0
+    omega = np.interp(theta, dyn.theta, dyn.omega)
+    fit = np.polyfit(omega, -xy[:, 1], 1)
+    assert np.abs(np.polyval(fit, omega) + xy[:, 1]).max() < 0.01
+    assert {p["id"] for p in a["panels"]} >= {"dynamics-moments", "dynamics-energy",
+                                              "dynamics-inertia", "dynamics-omega"}

@@ -23,13 +23,15 @@ from ..construct.segments import SegmentKind
 from ..construct.step import Kind, Step
 from ..construct.terms import pole_label
 from ..drafting.primitives import Arc, Arrow, Circle, Line, Primitive, Role, Sheet, Table, Text
+from ..dynamics.machine import MachineDynamics
 from ..i18n import LANGUAGES, decimal_mark, message, unit
 from ..i18n import number as format_number
 from ..model.mechanism import GROUND
 from ..model.plans import Plan
 from ..solve import Solution
 from .compose import _extreme_phis, crank_degrees, plan_positions
-from .diagram import Axis, Curve, diagram_panel
+from .diagram import Axis, Curve, Diagram, diagram_panel
+from .dynamics import dynamics_scales
 from .kinematics_sheet import _series, output_link
 from .link_outline import drawn as draw_figure
 from .link_outline import link_figures
@@ -348,23 +350,61 @@ def _diagram_anims(sol: Solution, phi: np.ndarray) -> list[Doc]:
         drawn = {lang: diagram_panel(f"diagram-{key}", title(lang), [Curve(x, y)],
                                      Axis("φ", "°", 120.0), Axis(sym, si, 40.0), lang)
                  for lang in LANGUAGES}
-        d = drawn[LANGUAGES[0]]
-        xy = np.column_stack([d.origin[0] + x / d.mu_x, d.origin[1] + y / d.mu_y])
-        lo, hi = float(np.nanmin(xy[:, 1])), float(np.nanmax(xy[:, 1]))
-        cursor = [[Line((float(px), min(lo, d.origin[1])), (float(px), max(hi, d.origin[1])),
-                        Role.DASHED)] for px in xy[:, 0]]
-        panels.append({"id": f"diagram-{key}", "plan": "diagram", "title": _each(title),
-                       "mu": _each(lambda _lang: ""),
-                       "points": {key: {"label": _each(lambda _lang, sym=sym: sym), "xy": xy,
-                                        "trace": False}},
-                       "items": [{"kind": "segment", "name": "cursor", "thick": False,
-                                  "frames": cursor}],
-                       "static": {lang: [p for p in dd.panel.primitives if not isinstance(p, Table)]
-                                  for lang, dd in drawn.items()}})
+        panels.append(_cursor_panel(f"diagram-{key}", title, drawn, x, y, sym))
     return panels
 
 
-def animation(sol: Solution, mu: dict[Plan, float], frames: int = FRAMES) -> Doc:
+def _cursor_panel(pid: str, title: Any, drawn: dict[str, Diagram], x: np.ndarray,
+                  y: np.ndarray, label: str) -> Doc:
+    """A diagram (axes and curves in every language) and its cursor at (x, y) of every frame."""
+    d = drawn[LANGUAGES[0]]
+    xy = np.column_stack([d.origin[0] + x / d.mu_x, d.origin[1] + y / d.mu_y])
+    _x0, y0, _x1, y1 = d.panel.bounds()
+    cursor = [[Line((float(px), y0), (float(px), y1), Role.DASHED)] if math.isfinite(px) else []
+              for px in xy[:, 0]]
+    return {"id": pid, "plan": "diagram", "title": _each(title), "mu": _each(lambda _lang: ""),
+            "points": {pid: {"label": _each(lambda _lang: label), "xy": xy, "trace": False}},
+            "items": [{"kind": "segment", "name": "cursor", "thick": False, "frames": cursor}],
+            "static": {lang: [p for p in dd.panel.primitives if not isinstance(p, Table)]
+                       for lang, dd in drawn.items()}}
+
+
+def _dynamics_anims(dyn: MachineDynamics, phi: np.ndarray) -> list[Doc]:
+    """M(φ), ΔT(φ), J_red(φ) and ω(φ) of the machine's cycle (the dynamics sheet's diagrams at its
+    scale factors) with a cursor at the crank angle of every frame (the cycle's first turn when
+    it lasts two)."""
+    sc = dynamics_scales(dyn)
+    q = np.arange(0, dyn.theta.size, max(1, dyn.theta.size // 720))
+    deg = np.degrees(dyn.theta)
+    theta = np.mod(phi - dyn.phi0, dyn.spec.cycle)
+    x = np.degrees(theta)
+    axis = Axis("φ", "°", math.degrees(dyn.spec.cycle) / math.degrees(sc.mu_phi),
+                mu=math.degrees(sc.mu_phi), mu_symbol="μφ")
+    Spec = tuple[str, str, list[tuple[np.ndarray, Role, str | None]], Axis, dict[str, Any]]
+    specs: list[Spec] = [
+             ("moments", "M_d", [(dyn.M_d, Role.OUTLINE, "M_d"), (dyn.M_c, Role.DASHED, "M_c")],
+              Axis("M", "N·m", 60.0, mu=sc.mu_M, mu_symbol="μM"), {}),
+             ("energy", "ΔT", [(dyn.dT, Role.OUTLINE, None)],
+              Axis("ΔT", "J", 50.0, mu=sc.mu_T, mu_symbol="μT"), {}),
+             ("inertia", "J", [(dyn.J_red, Role.OUTLINE, None)],
+              Axis("J", "kg·m²", 60.0, mu=sc.mu_J, mu_symbol="μJ"), {}),
+             ("omega", "ω", [(dyn.omega, Role.OUTLINE, None)], Axis("ω", "rad/s", 50.0),
+              {"hlines": [(dyn.omega_m, "ω_m")], "y_zero": False})]
+    out = []
+    for key, label, curves, y_axis, extra in specs:
+        def title(lang: str, key: str = key) -> str:
+            return message(f"dynamics.diagram.{key}", lang)
+
+        lines = [Curve(deg[q], v[q], role, label=lb) for v, role, lb in curves]
+        drawn = {lang: diagram_panel(f"dynamics-{key}", title(lang), lines, axis, y_axis, lang,
+                                     **extra) for lang in LANGUAGES}
+        y = np.interp(theta, dyn.theta, curves[0][0])
+        out.append(_cursor_panel(f"dynamics-{key}", title, drawn, x, y, label))
+    return out
+
+
+def animation(sol: Solution, mu: dict[Plan, float], frames: int = FRAMES,
+              dynamics: MachineDynamics | None = None) -> Doc:
     """The mechanism and its velocity and acceleration plans at ``frames`` crank angles."""
     c = sol.construction
     phi = _frames_phi(sol, frames)
@@ -374,6 +414,8 @@ def animation(sol: Solution, mu: dict[Plan, float], frames: int = FRAMES) -> Doc
         if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
             panels.append(_vector_anim(sol, ev, plan, mu[plan]))
     panels += _diagram_anims(sol, phi)
+    if dynamics is not None:
+        panels += _dynamics_anims(dynamics, phi)
     broken = np.zeros(frames, dtype=bool)
     for p in panels[0]["points"].values():
         broken |= ~np.isfinite(p["xy"]).all(axis=1)
@@ -391,11 +433,11 @@ def ui_strings() -> dict[str, dict[str, str]]:
 
 
 def live_document(sol: Solution, mu: dict[Plan, float], lang: str, name: str,
-                  frames: int = FRAMES) -> Doc:
+                  frames: int = FRAMES, dynamics: MachineDynamics | None = None) -> Doc:
     """Everything the live page shows, for every language (``lang`` is the one it opens in)."""
     return {"name": name, "title": sol.scene.title, "lang": lang, "languages": list(LANGUAGES),
             "ui": ui_strings(), "replays": replays(sol, mu),
-            "animation": animation(sol, mu, frames)}
+            "animation": animation(sol, mu, frames, dynamics)}
 
 
 def sheets_document(sheets: Mapping[str, Sequence[Sheet]], lang: str, name: str, title: str

@@ -25,8 +25,9 @@ const num = (v, digits) => (v === null || !Number.isFinite(v) ? "—"
 // one primitive of the document as SVG elements
 function draw(p) {
   if (p.t !== undefined) {
-    const t = el("text", { x: 0, y: 0, "font-size": p.s, "text-anchor": p.a, "font-family": p.f,
-      transform: `translate(${p.x} ${p.y})` + (p.o ? ` rotate(${p.o})` : "") }, p.t);
+    const t = el("text", { x: p.x, y: p.y, "font-size": p.s, "text-anchor": p.a,
+      "font-family": p.f }, p.t);
+    if (p.o) t.setAttribute("transform", `rotate(${p.o} ${p.x} ${p.y})`);
     return [t];
   }
   if (p.c) return [el("circle", { cx: p.c[0], cy: p.c[1], r: p.c[2], class: `role-${p.r}` })];
