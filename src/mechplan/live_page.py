@@ -26,7 +26,14 @@ def page_text(study: Any, size: str | None = None, standard: str | None = None,
         lang = first[0].language if first else language or DEFAULT_LANGUAGE
         sheets = {lg: first if lg == lang else study.sheets(size, standard, lg, name)
                   for lg in LANGUAGES}
-        return to_html(sheets_document(sheets, lang, name, name))
+        doc = sheets_document(sheets, lang, name, name)
+        from .studies.engine import EngineStudy
+
+        if isinstance(study, EngineStudy):          # the polar diagram traced as φ runs
+            from .sheet.live_engine import engine_animation
+
+            doc["animation"] = engine_animation(study)
+        return to_html(doc)
     sol = study.solution
     scene = sol.scene
     own = (size in (None, scene.drawing.sheet) and standard in (None, scene.drawing.standard))

@@ -244,3 +244,21 @@ def test_machine_dynamics_diagrams_have_a_cursor_at_the_crank_angle():
     assert np.abs(np.polyval(fit, omega) + xy[:, 1]).max() < 0.01
     assert {p["id"] for p in a["panels"]} >= {"dynamics-moments", "dynamics-energy",
                                               "dynamics-inertia", "dynamics-omega"}
+
+
+def test_engine_polar_diagram_traced_with_one_scale():
+    """The engine's page animates the polar diagram of pin 1: the traced point is (T, Z) at one
+    scale on both axes, and Q there is the distance from the pole (0, −K_r)."""
+    study = solve_file(str(ROOT / "templates" / "motorcycle_engine.toml"))
+    doc = _data(page_text(study, name="engine"))
+    a = doc["animation"]
+    polar = next(p for p in a["panels"] if p["id"] == "engine-polar")
+    xy = np.asarray(polar["points"]["Q"]["xy"], dtype=float).reshape(-1, 2)
+    vals = {v["quantity"]: np.asarray(v["value"], dtype=float) for v in a["values"]}
+    sx = np.polyfit(vals["T"], xy[:, 0], 1)[0]
+    sy = np.polyfit(vals["Z"], -xy[:, 1], 1)[0]
+    assert sx == pytest.approx(sy, rel=1e-3) and sx > 0          # one scale: a true polar plot
+    k_r = study.dense.pins[1].K_r * 1e-3
+    assert np.allclose(vals["Q"], np.hypot(vals["T"], vals["Z"] + k_r), rtol=1e-5, atol=1e-5)
+    assert polar["points"]["Q"]["grow"] and len(a["phi_deg"]) == a["frames"] >= 360
+    assert doc["sheets"] and not doc["replays"]

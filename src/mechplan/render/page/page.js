@@ -201,6 +201,10 @@ function buildAnimation() {
         }
         svg.prepend(el("path", { d: d.join("") + "Z", class: "trace" }));
       }
+      if (p.grow) {            // drawn as far as the current frame (a polar diagram traced)
+        p.path = el("path", { class: "role-outline grown" });
+        svg.append(p.path);
+      }
       const c = el("circle", { r: 0.7, class: "dot" }), t = el("text", { "font-size": 4.9 });
       c.dataset.point = id;
       svg.append(c, t);
@@ -253,6 +257,14 @@ function frame(k) {
     for (const [c, t, p] of a.pts) {
       const x = p.xy[2 * f], y = p.xy[2 * f + 1], ok = x !== null && y !== null;
       c.classList.toggle("off", !ok); t.classList.toggle("off", !ok);
+      if (p.path) {
+        const d = [];
+        for (let j = 0; j <= f; j++) {
+          const u = p.xy[2 * j], v = p.xy[2 * j + 1];
+          if (u !== null && v !== null) d.push(`${d.length ? "L" : "M"}${u} ${v}`);
+        }
+        p.path.setAttribute("d", d.join("") || "M0 0");
+      }
       if (!ok) continue;
       c.setAttribute("cx", x); c.setAttribute("cy", y);
       t.setAttribute("x", x + (a.lift ?? 1.2)); t.setAttribute("y", y - (a.lift ?? 1.2));
@@ -265,8 +277,8 @@ function frame(k) {
   $("phi-out").dataset.frame = f;
   const tb = $("values");
   tb.replaceChildren(row("th", [ui("quantity"), ui("value"), `${ui("on_paper")}, ${ui("mm")}`]),
-    ...A.values.map((v) => row("td", [`${tr(v.name)}: ${v.quantity}`,
-      `${num(v.value[f], 3)} ${tr(v.unit)}`, num(v.mm[f], 1)])));
+    ...A.values.map((v) => row("td", [tr(v.name) === v.quantity ? v.quantity : `${tr(v.name)}: ${v.quantity}`,
+      `${num(v.value[f], 3)} ${tr(v.unit)}`, v.mm ? num(v.mm[f], 1) : ""])));
   const here = A.marks.filter((m) => m.k === f).map((m) => ui(m.kind));
   $("legend").textContent = here.join(", ");
 }
@@ -367,11 +379,12 @@ if (wanted >= 0) state.replay = wanted;
 labels();
 if (DOC.sheets) {                  // a scene kind shown by its sheets
   $("tab-sheets").hidden = false;
-  $("tab-replay").hidden = $("tab-anim").hidden = !DOC.replays.length;
+  $("tab-replay").hidden = !DOC.replays.length;
+  $("tab-anim").hidden = !DOC.animation;
   showSheet();
 }
 if (DOC.replays.length) showReplay();
-else setView("sheets");
+else setView(DOC.animation ? "anim" : "sheets");
 $("sheet-only").hidden = DOC.replays.length > 0;
 if (hash.has("step")) go(Number(hash.get("step")) - 1);
 if (hash.has("frame") && DOC.animation) { setView("anim"); frame(Number(hash.get("frame"))); }
