@@ -27,12 +27,19 @@ def page_text(study: Any, size: str | None = None, standard: str | None = None,
         sheets = {lg: first if lg == lang else study.sheets(size, standard, lg, name)
                   for lg in LANGUAGES}
         doc = sheets_document(sheets, lang, name, name)
+        from .studies.cam import CamStudy
         from .studies.engine import EngineStudy
 
         if isinstance(study, EngineStudy):          # the polar diagram traced as φ runs
             from .sheet.live_engine import engine_animation
 
             doc["animation"] = engine_animation(study)
+        elif isinstance(study, CamStudy):           # inversion ray by ray; the cam turning
+            from .sheet.live_cam import cam_animation, cam_replay
+
+            replay, mu_cam = cam_replay(study.design)
+            doc["replays"] = [replay]
+            doc["animation"] = cam_animation(study.design, mu_cam)
         return to_html(doc)
     sol = study.solution
     scene = sol.scene

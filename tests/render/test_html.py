@@ -177,15 +177,15 @@ def test_page_weight(path: Path, tmp_path: Path) -> None:
 
 
 def test_other_kinds_give_their_sheets_in_every_language(tmp_path: Path) -> None:
-    """A cam scene's page holds its sheets (the SVG's primitives) in the four languages."""
-    path = api.draw(ROOT / "templates" / "cam_flat.toml", tmp_path, formats=["html"])[0]
+    """A gears scene's page holds its sheets (the SVG's primitives) in the four languages."""
+    path = api.draw(ROOT / "templates" / "planetary_two_row.toml", tmp_path, formats=["html"])[0]
     page = path.read_text(encoding="utf-8")
     doc = _data(page)
     assert doc["replays"] == [] and doc["animation"] is None
     assert sorted(doc["sheets"]) == sorted(LANGUAGES)
     for lang in LANGUAGES:
         sheets = doc["sheets"][lang]
-        assert sheets and all(len(s["prims"]) > 100 for s in sheets)
+        assert sheets and all(len(s["prims"]) > 50 for s in sheets)
     texts = {lang: {p["t"] for s in doc["sheets"][lang] for p in s["prims"] if "t" in p}
              for lang in LANGUAGES}
     assert texts["en"] != texts["ru"] and texts["en"] != texts["zh"]
@@ -262,3 +262,34 @@ def test_engine_polar_diagram_traced_with_one_scale():
     assert np.allclose(vals["Q"], np.hypot(vals["T"], vals["Z"] + k_r), rtol=1e-5, atol=1e-5)
     assert polar["points"]["Q"]["grow"] and len(a["phi_deg"]) == a["frames"] >= 360
     assert doc["sheets"] and not doc["replays"]
+
+
+@pytest.mark.parametrize("stem", ["cam_cycloidal", "cam_oscillating"])
+def test_cam_follower_touches_the_turning_cam(stem):
+    """In the cam's animation the roller stays on the turning cam: the roller centre, turned back
+    by the frame's angle of the cam, lies one roller radius from the working profile (measured on
+    the page's own polyline); the replay lays the rays in order, then the profile."""
+    study = solve_file(str(ROOT / "templates" / f"{stem}.toml"))
+    g = study.design.geometry
+    assert g.roller > 0
+    doc = _data(page_text(study, name=stem))
+    cam = next(p for p in doc["animation"]["panels"] if p["id"] == "cam")
+    rotor = next(it for it in cam["items"] if it["kind"] == "rotor")
+    outline = next(p for p in rotor["shape"] if "d" in p and p["d"].endswith("Z"))
+    pts = np.array([[float(v) for v in xy.split()] for xy in
+                    re.split("[ML]", outline["d"].rstrip("Z")) if xy])
+    b = np.asarray(cam["points"]["B"]["xy"], dtype=float).reshape(-1, 2)
+    mu = doc["replays"][0]["mu"]["en"]
+    mu_m = float(re.search(r"= ([\d.]+)", mu).group(1)) / 1000.0        # m per paper mm
+    for k in range(0, len(b), 17):
+        a = math.radians(-rotor["angle"][k])
+        rot = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+        p = rot @ b[k]
+        seg = np.diff(np.vstack([pts, pts[:1]]), axis=0)
+        t = np.clip(((p - pts) * seg).sum(1) / (seg * seg).sum(1), 0.0, 1.0)
+        dist = np.hypot(*(pts + t[:, None] * seg - p).T).min()
+        assert dist == pytest.approx(g.roller / mu_m, abs=0.05)
+    steps = doc["replays"][0]["steps"]
+    n = study.design.rays.phi.size
+    assert [s["id"] for s in steps] == ["base", *(f"ray-{i}" for i in range(n)), "profile"]
+    assert all(s["sentence"][lang] for s in steps for lang in LANGUAGES)

@@ -138,9 +138,10 @@ def test_replay_steps_and_slider_in_chromium(browser, four_bar, tmp_path):
     page.close()
 
 
-def test_sheets_page_of_a_cam_in_chromium(browser, tmp_path):
+def test_sheets_page_of_gears_in_chromium(browser, tmp_path):
     """A kind without a replay yet shows its sheets; switching the language redraws them."""
-    path = write_page(solve_file(str(ROOT / "templates" / "cam_flat.toml")), tmp_path, "cam")
+    path = write_page(solve_file(str(ROOT / "templates" / "planetary_two_row.toml")), tmp_path,
+                      "gears")
     page = browser.new_page(viewport={"width": 1400, "height": 1000})
     errors: list[str] = []
     page.on("pageerror", lambda e: errors.append(str(e)))
@@ -148,11 +149,14 @@ def test_sheets_page_of_a_cam_in_chromium(browser, tmp_path):
     page.goto(path.as_uri())
     page.wait_for_selector("body[data-ready='1']")
     assert page.is_visible("#s-svg") and not page.is_visible("#tab-replay")
-    english = page.locator("#s-svg text").all_text_contents()
-    assert len(english) > 50
-    page.select_option("#language", "ru")
-    russian = page.locator("#s-svg text").all_text_contents()
-    assert russian != english and any("мм" in t for t in russian)
+    first = page.locator("#s-svg text").all_text_contents()
+    assert len(first) > 50
+    other = "zh" if page.evaluate("document.documentElement.lang") != "zh" else "ru"
+    page.select_option("#language", other)
+    second = page.locator("#s-svg text").all_text_contents()
+    assert second != first
+    assert any(("\u4e00" <= c <= "\u9fff") if other == "zh" else ("а" <= c <= "я")
+               for t in second for c in t)
     assert errors == []
-    _shot(page, "html-cam-sheets.png", tmp_path)
+    _shot(page, "html-gears-sheets.png", tmp_path)
     page.close()

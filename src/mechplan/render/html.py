@@ -107,6 +107,10 @@ def _frames(frames: list[list[Primitive]]) -> list[str]:
                 shaft = p.shaft()
                 parts.append((f"M{_xy(shaft.start)}L{_xy(shaft.end)}" if shaft else "")
                              + "M" + "L".join(_xy(v) for v in p.head()) + "Z")
+            elif isinstance(p, Circle):
+                (cx, cy), r = p.center, _r(p.radius)
+                parts.append(f"M{_xy((cx - p.radius, cy))}A{r} {r} 0 1 0 {_xy((cx + p.radius, cy))}"
+                             f"A{r} {r} 0 1 0 {_xy((cx - p.radius, cy))}")
             else:
                 parts.append(_path(p)[0])
         out.append("".join(parts))

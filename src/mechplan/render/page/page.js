@@ -187,6 +187,12 @@ function buildAnimation() {
     svg.dataset.panel = P.id;
     if (P.static) { const g = el("g", { class: "static" }); svg.append(g); }
     const items = P.items.map((it) => {
+      if (it.kind === "rotor") {     // a body turning about the origin: one shape, an angle a frame
+        const g = el("g");
+        g.append(...it.shape.flatMap(draw));
+        svg.append(g);
+        return [g, null, it.angle];
+      }
       const e = el("path", { class: it.kind === "link" || it.thick ? "role-outline" : "role-thin" });
       e.dataset.item = it.kind === "link" ? it.link : it.name;
       svg.append(e);
@@ -229,6 +235,7 @@ function buildAnimation() {
   frame(0);
   for (const a of anim) {   // every frame inside the panel's home view
     if (a.P.static) { fit(a.svg, bounds(a.svg.querySelector("g.static").children)); continue; }
+    if (a.P.box) { fit(a.svg, a.P.box); continue; }
     const b = [Infinity, Infinity, -Infinity, -Infinity];
     for (const [, , p] of a.pts) for (let k = 0; k < p.xy.length; k += 2) {
       if (p.xy[k] === null) continue;
@@ -253,7 +260,10 @@ function frame(k) {
   state.frame = ((k % A.frames) + A.frames) % A.frames;
   const f = state.frame;
   for (const a of anim) {
-    for (const [e, d] of a.items) e.setAttribute("d", d[f] || "M0 0");
+    for (const [e, d, angle] of a.items) {
+      if (angle) e.setAttribute("transform", `rotate(${angle[f] ?? 0})`);
+      else e.setAttribute("d", d[f] || "M0 0");
+    }
     for (const [c, t, p] of a.pts) {
       const x = p.xy[2 * f], y = p.xy[2 * f + 1], ok = x !== null && y !== null;
       c.classList.toggle("off", !ok); t.classList.toggle("off", !ok);
@@ -304,8 +314,9 @@ function labels() {
     ["print", "print"], ["first", "first"], ["prev", "previous"], ["next", "next"], ["last", "last"],
     ["lbl-plan", "plan"], ["lbl-speed", "speed"], ["lbl-language", "language"],
     ["h-protocol", "protocol"], ["h-segments", "segments"], ["h-equation", "equation"],
-    ["lbl-angle", "angle"], ["h-values", "values"], ["keys", "keys"], ["tab-sheets", "sheets"],
+    ["lbl-angle", DOC.animation?.angle ? "" : "angle"], ["h-values", "values"], ["keys", "keys"], ["tab-sheets", "sheets"],
     ["sheet-only", "sheet_only"]]) $(id).textContent = ui(key);
+  if (DOC.animation?.angle) $("lbl-angle").textContent = tr(DOC.animation.angle);
   $("play").textContent = ui(state.timer && state.view === "replay" ? "pause" : "play");
   $("a-play").textContent = ui(state.timer && state.view === "anim" ? "pause" : "play");
   const sel = $("plan");
