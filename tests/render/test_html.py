@@ -11,7 +11,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from scenes import ROOT, TEMPLATES
+from scenes import ALL_TEMPLATES, ROOT
 
 from mechplan import api
 from mechplan.construct.protocol import protocol
@@ -167,9 +167,9 @@ def test_dead_centres_and_sheet_positions_on_the_slider(four_bar):
             assert vc[m["k"]] < 0.05 * vc.max()
 
 
-@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", ALL_TEMPLATES, ids=lambda p: p.stem)
 def test_page_weight(path: Path, tmp_path: Path) -> None:
-    """Every linkage template's page is one file of at most 3 MB."""
+    """Every template's page is one file of at most 3 MB."""
     written = api.draw(path, tmp_path, formats=["html"])
     assert [p.suffix for p in written] == [".html"]
     size = written[0].stat().st_size
