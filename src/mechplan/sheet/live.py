@@ -45,7 +45,7 @@ ARC_HALF_DEG = 14.0
 UI = ("replay", "animation", "plan", "previous", "next", "play", "pause", "speed", "first",
       "last", "step", "protocol", "segments", "equation", "term", "direction", "magnitude",
       "segment", "on_paper", "quantity", "value", "angle", "dead", "unbuilt", "chosen",
-      "language", "reset", "print", "keys", "values", "sheets", "sheet_only")
+      "language", "reset", "print", "keys", "values", "sheets", "sheet_only", "flagged")
 
 Doc = dict[str, Any]
 
@@ -320,6 +320,9 @@ def _marks(sol: Solution, phi: np.ndarray, broken: np.ndarray) -> list[Doc]:
     marks += [{"k": int(k), "kind": "unbuilt"} for k in np.flatnonzero(broken)]
     marks += [{"k": frame_of(float(sol.phi[k])), "kind": "chosen", "position": k}
               for k in plan_positions(sol)]
+    # positions of the solution whose results the error estimate does not trust
+    marks += [{"k": frame_of(float(sol.phi[k])), "kind": "flagged", "position": k}
+              for k in sorted({f.k for f in sol.flags})]
     return marks
 
 

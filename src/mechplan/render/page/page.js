@@ -96,6 +96,7 @@ function showReplay() {
   }
   fit(svg, bounds(svg.children));
   $("r-title").textContent = tr(R.title);
+  svg.setAttribute("aria-label", tr(R.title));
   $("r-mu").textContent = tr(R.mu);
   const ol = $("protocol");
   ol.replaceChildren(...R.steps.map((s, i) => {
@@ -227,6 +228,7 @@ function buildAnimation() {
     const s = html("span", undefined, m.kind);
     s.style.left = `${(100 * m.k) / Math.max(A.frames - 1, 1)}%`;
     s.dataset.kind = m.kind;
+    s.title = ui(m.kind);
     s.dataset.k = m.k;
     s.addEventListener("click", () => frame(m.k));
     return s;
@@ -281,6 +283,7 @@ function frame(k) {
       t.textContent = tr(p.label);
     }
     a.cap.textContent = `${tr(a.P.title)}   ${tr(a.P.mu)}`;
+    a.svg.setAttribute("aria-label", tr(a.P.title));
   }
   $("phi").value = f;
   $("phi-out").textContent = `φ = ${num(A.phi_deg[f], 1)}°`;
