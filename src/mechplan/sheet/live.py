@@ -50,7 +50,7 @@ UI = ("replay", "animation", "plan", "previous", "next", "play", "pause", "speed
 Doc = dict[str, Any]
 
 
-def _each(fn: Any) -> dict[str, str]:
+def each(fn: Any) -> dict[str, str]:
     return {lang: fn(lang) for lang in LANGUAGES}
 
 
@@ -75,12 +75,12 @@ def _said(c: Construction, ev: Evaluation, plan: Plan, group: str | None) -> lis
 def _replay_steps(sol: Solution, steps: list[Step], k: int, mu: dict[Plan, float]) -> list[Doc]:
     c, ev = sol.construction, sol.ev
     return [{"id": s.id, "group": s.group,
-             "label": _each(lambda lang, s=s: pole_label(s.label, lang)),
-             "sentence": _each(lambda lang, s=s: sentence(c, s, ev, k, lang, mu))}
+             "label": each(lambda lang, s=s: pole_label(s.label, lang)),
+             "sentence": each(lambda lang, s=s: sentence(c, s, ev, k, lang, mu))}
             for s in steps]
 
 
-def _tagged(prims: Iterable[tuple[Primitive | Table, str | None]], index: dict[str, int]
+def tagged(prims: Iterable[tuple[Primitive | Table, str | None]], index: dict[str, int]
             ) -> list[tuple[Primitive, int]]:
     """Drawing primitives with the replay step that draws them (-1: always shown)."""
     out = []
@@ -106,17 +106,17 @@ def _tables(sol: Solution, k: int, plan: Plan, mu: float, group: str | None,
             continue
         at = index.get(g.end, -1)
         found.setdefault(g.quantity, at)
-        rows.append({"step": at, "name": _each(lambda lang, g=g: pole_label(g.name, lang)),
-                     "mm": _each(lambda lang, v=length / mu: format_number(v, 1, lang)),
+        rows.append({"step": at, "name": each(lambda lang, g=g: pole_label(g.name, lang)),
+                     "mm": each(lambda lang, v=length / mu: format_number(v, 1, lang)),
                      "quantity": g.quantity,
-                     "value": _each(lambda lang, v=length: format_number(v, 3, lang))})
+                     "value": each(lambda lang, v=length: format_number(v, 3, lang))})
     equations = []
     for (p, name), (eq, terms) in c.equations.items():
         if p is not plan or (group is not None and name != group):
             continue
         equations.append({"group": name, "eq": eq, "terms": [
             {"term": term, "magnitude": mag, "step": found.get(term, -1),
-             "direction": _each(lambda lang, d=d: d.text(lang))}
+             "direction": each(lambda lang, d=d: d.text(lang))}
             for term, d, mag in terms]})
     return rows, equations
 
@@ -131,13 +131,13 @@ def _vector_replay(sol: Solution, k: int, plan: Plan, mu: dict[Plan, float],
     for lang in LANGUAGES:
         panel = vector_plan(c, ev, k, plan, mu[plan], lang, plan_title(plan, lang, k, phi, group),
                             group)
-        prims[lang] = _tagged(((p, panel.steps.get(i)) for i, p in enumerate(panel.primitives)),
+        prims[lang] = tagged(((p, panel.steps.get(i)) for i, p in enumerate(panel.primitives)),
                               index)
     rows, equations = _tables(sol, k, plan, mu[plan], group, index)
     return {"id": f"{plan.value}-{k}" + (f"-{group}" if group else ""), "plan": plan.value,
             "k": k, "phi": phi, "unit": plan.unit,
-            "title": _each(lambda lang: plan_title(plan, lang, k, phi, group)),
-            "mu": _each(lambda lang: mu_text(plan, mu[plan], lang)),
+            "title": each(lambda lang: plan_title(plan, lang, k, phi, group)),
+            "mu": each(lambda lang: mu_text(plan, mu[plan], lang)),
             "steps": _replay_steps(sol, steps, k, mu), "prims": prims, "rows": rows,
             "equations": equations}
 
@@ -195,11 +195,11 @@ def _position_replay(sol: Solution, k: int, mu: dict[Plan, float]) -> Doc:
     steps = _said(c, ev, Plan.POSITION, None)
     index = _replay_index(c, steps)
     phi = crank_degrees(sol, k)
-    prims = {lang: _tagged(_position_prims(sol, k, mu[Plan.POSITION], lang), index)
+    prims = {lang: tagged(_position_prims(sol, k, mu[Plan.POSITION], lang), index)
              for lang in LANGUAGES}
     return {"id": f"position-{k}", "plan": "position", "k": k, "phi": phi, "unit": "m",
-            "title": _each(lambda lang: plan_title(Plan.POSITION, lang, k, phi)),
-            "mu": _each(lambda lang: mu_text(Plan.POSITION, mu[Plan.POSITION], lang)),
+            "title": each(lambda lang: plan_title(Plan.POSITION, lang, k, phi)),
+            "mu": each(lambda lang: mu_text(Plan.POSITION, mu[Plan.POSITION], lang)),
             "steps": _replay_steps(sol, steps, k, mu), "prims": prims, "rows": [],
             "equations": []}
 
@@ -256,9 +256,9 @@ def _position_anim(sol: Solution, ev: Evaluation, mu: float) -> Doc:
     pts = {n: np.asarray(ev[c.position(n)], dtype=float) / mu for n in names}
     fixed = set(mech.links[GROUND].points)
     return {"id": "position", "plan": "position",
-            "title": _each(lambda lang: message("protocol.plan.position", lang)),
-            "mu": _each(lambda lang: mu_text(Plan.POSITION, mu, lang)),
-            "points": {n: {"label": _each(lambda _lang, n=n: n), "xy": v,
+            "title": each(lambda lang: message("protocol.plan.position", lang)),
+            "mu": each(lambda lang: mu_text(Plan.POSITION, mu, lang)),
+            "points": {n: {"label": each(lambda _lang, n=n: n), "xy": v,
                            "trace": n not in fixed} for n, v in pts.items()},
             "items": _link_paths(sol, ev, mu)}
 
@@ -283,9 +283,9 @@ def _vector_anim(sol: Solution, ev: Evaluation, plan: Plan, mu: float) -> Doc:
                                  head_width_mm=1.2 if thick else 1.0)] if ok else [])
         items.append({"kind": "segment", "name": g.name, "thick": thick, "frames": frames})
     return {"id": plan.value, "plan": plan.value,
-            "title": _each(lambda lang: message(f"protocol.plan.{plan.value}", lang)),
-            "mu": _each(lambda lang: mu_text(plan, mu, lang)),
-            "points": {s.id: {"label": _each(lambda lang, s=s: pole_label(s.label, lang)),
+            "title": each(lambda lang: message(f"protocol.plan.{plan.value}", lang)),
+            "mu": each(lambda lang: mu_text(plan, mu, lang)),
+            "points": {s.id: {"label": each(lambda lang, s=s: pole_label(s.label, lang)),
                               "xy": pts[s.id], "trace": False} for s in steps},
             "items": items}
 
@@ -300,9 +300,9 @@ def _values(sol: Solution, ev: Evaluation, mu: dict[Plan, float]) -> list[Doc]:
         if g.start not in sol.ev.values or g.end not in sol.ev.values:
             continue
         v = np.hypot(*(np.asarray(ev[g.end]) - np.asarray(ev[g.start])).T)
-        out.append({"quantity": g.quantity, "unit": _each(lambda lang, g=g: unit(g.plan.unit,
+        out.append({"quantity": g.quantity, "unit": each(lambda lang, g=g: unit(g.plan.unit,
                                                                                   lang)),
-                    "name": _each(lambda lang, g=g: pole_label(g.name, lang)),
+                    "name": each(lambda lang, g=g: pole_label(g.name, lang)),
                     "value": v, "mm": v / mu[g.plan]})
     return out
 
@@ -353,11 +353,11 @@ def _diagram_anims(sol: Solution, phi: np.ndarray) -> list[Doc]:
         drawn = {lang: diagram_panel(f"diagram-{key}", title(lang), [Curve(x, y)],
                                      Axis("φ", "°", 120.0), Axis(sym, si, 40.0), lang)
                  for lang in LANGUAGES}
-        panels.append(_cursor_panel(f"diagram-{key}", title, drawn, x, y, sym))
+        panels.append(cursor_panel(f"diagram-{key}", title, drawn, x, y, sym))
     return panels
 
 
-def _cursor_panel(pid: str, title: Any, drawn: dict[str, Diagram], x: np.ndarray,
+def cursor_panel(pid: str, title: Any, drawn: dict[str, Diagram], x: np.ndarray,
                   y: np.ndarray, label: str) -> Doc:
     """A diagram (axes and curves in every language) and its cursor at (x, y) of every frame."""
     d = drawn[LANGUAGES[0]]
@@ -365,8 +365,8 @@ def _cursor_panel(pid: str, title: Any, drawn: dict[str, Diagram], x: np.ndarray
     _x0, y0, _x1, y1 = d.panel.bounds()
     cursor = [[Line((float(px), y0), (float(px), y1), Role.DASHED)] if math.isfinite(px) else []
               for px in xy[:, 0]]
-    return {"id": pid, "plan": "diagram", "title": _each(title), "mu": _each(lambda _lang: ""),
-            "points": {pid: {"label": _each(lambda _lang: label), "xy": xy, "trace": False}},
+    return {"id": pid, "plan": "diagram", "title": each(title), "mu": each(lambda _lang: ""),
+            "points": {pid: {"label": each(lambda _lang: label), "xy": xy, "trace": False}},
             "items": [{"kind": "segment", "name": "cursor", "thick": False, "frames": cursor}],
             "static": {lang: [p for p in dd.panel.primitives if not isinstance(p, Table)]
                        for lang, dd in drawn.items()}}
@@ -402,7 +402,7 @@ def _dynamics_anims(dyn: MachineDynamics, phi: np.ndarray) -> list[Doc]:
         drawn = {lang: diagram_panel(f"dynamics-{key}", title(lang), lines, axis, y_axis, lang,
                                      **extra) for lang in LANGUAGES}
         y = np.interp(theta, dyn.theta, curves[0][0])
-        out.append(_cursor_panel(f"dynamics-{key}", title, drawn, x, y, label))
+        out.append(cursor_panel(f"dynamics-{key}", title, drawn, x, y, label))
     return out
 
 

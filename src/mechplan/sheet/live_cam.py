@@ -19,7 +19,7 @@ from ..synthesis.cam import CamDesign
 from ..synthesis.cam.profile import Sample, follower_positions
 from .cam import _inversion
 from .diagram import Axis, Curve, diagram_panel
-from .live import Doc, _cursor_panel, _each, _tagged
+from .live import Doc, cursor_panel, each, tagged
 
 #: angles of the cam's animation over one turn
 CAM_FRAMES = 360
@@ -64,22 +64,22 @@ def cam_replay(d: CamDesign) -> tuple[Doc, float]:
     def profile(lang: str) -> str:
         return message("html.cam.profile", lang, last=n - 1)
 
-    steps = ([{"id": "base", "group": "", "label": _each(lambda _l: "r0"), "sentence": _each(base)}]
-             + [{"id": f"ray-{i}", "group": "", "label": _each(lambda _l, i=i: str(i)),
-                 "sentence": _each(lambda lang, i=i: ray(lang, i))} for i in range(n)]
-             + [{"id": "profile", "group": "", "label": _each(lambda _l: "—"),
-                 "sentence": _each(profile)}])
-    prims = {lang: _tagged(((p, panel.steps.get(j, "base")) for j, p in
+    steps = ([{"id": "base", "group": "", "label": each(lambda _l: "r0"), "sentence": each(base)}]
+             + [{"id": f"ray-{i}", "group": "", "label": each(lambda _l, i=i: str(i)),
+                 "sentence": each(lambda lang, i=i: ray(lang, i))} for i in range(n)]
+             + [{"id": "profile", "group": "", "label": each(lambda _l: "—"),
+                 "sentence": each(profile)}])
+    prims = {lang: tagged(((p, panel.steps.get(j, "base")) for j, p in
                             enumerate(panel.primitives)), index | {"base": 0})
              for lang, (panel, _mu) in drawn.items()}
-    rows = [{"step": i + 1, "name": _each(lambda _l, i=i: str(i)),
-             "mm": _each(lambda lang, i=i: row(lang, i, True)),
+    rows = [{"step": i + 1, "name": each(lambda _l, i=i: str(i)),
+             "mm": each(lambda lang, i=i: row(lang, i, True)),
              "quantity": f"ψ{i}" if swing else f"s{i}, mm",
-             "value": _each(lambda lang, i=i: row(lang, i, False))}
+             "value": each(lambda lang, i=i: row(lang, i, False))}
             for i in range(n)]
-    title = _each(lambda lang: message("cam.sheet.inversion", lang))
+    title = each(lambda lang: message("cam.sheet.inversion", lang))
     return {"id": "cam-inversion", "plan": "position", "k": 0, "phi": 0.0, "unit": "m",
-            "title": title, "mu": _each(lambda lang: f"μl = {format_number(mu * 1e3, 3, lang)} "
+            "title": title, "mu": each(lambda lang: f"μl = {format_number(mu * 1e3, 3, lang)} "
                                                      f"{message('html.cam.mm_per_mm', lang)}"),
             "steps": steps, "prims": prims, "rows": rows, "equations": []}, mu
 
@@ -120,11 +120,11 @@ def cam_animation(d: CamDesign, mu: float, frames: int = CAM_FRAMES) -> Doc:
     reach = max(float(np.max(np.hypot(*d.profile_points.T))),
                 float(np.max(np.hypot(*a.T))), float(np.max(np.hypot(*b.T)))) / mu + g.roller / mu
     cam = {"id": "cam", "plan": "cam", "box": [-reach, -reach, reach, reach],
-           "title": _each(lambda lang: message("html.cam.turning", lang)),
-           "mu": _each(lambda _l: ""),
-           "points": {"O": {"label": _each(lambda _l: "O"), "xy": np.zeros((idx.size, 2)),
+           "title": each(lambda lang: message("html.cam.turning", lang)),
+           "mu": each(lambda _l: ""),
+           "points": {"O": {"label": each(lambda _l: "O"), "xy": np.zeros((idx.size, 2)),
                             "trace": False},
-                      "B": {"label": _each(lambda _l: "B"), "xy": smp.follower / mu,
+                      "B": {"label": each(lambda _l: "B"), "xy": smp.follower / mu,
                             "trace": True}},
            "items": [{"kind": "rotor", "shape": shape, "angle": -np.degrees(turn)},
                      {"kind": "segment", "name": "follower", "thick": True,
@@ -144,12 +144,12 @@ def cam_animation(d: CamDesign, mu: float, frames: int = CAM_FRAMES) -> Doc:
             for lang in LANGUAGES}
     s_row = ("ψ", "°", np.degrees(smp.s)) if g.motion is Motion.OSCILLATING \
         else ("s", "mm", smp.s * 1e3)
-    values = [{"quantity": q, "name": _each(lambda _l, q=q: q), "unit": _each(lambda _l, u=u: u),
+    values = [{"quantity": q, "name": each(lambda _l, q=q: q), "unit": each(lambda _l, u=u: u),
                "value": v} for q, u, v in (s_row, ("α", "°", np.degrees(smp.alpha)))]
     return {"frames": int(idx.size), "phi_deg": x,
-            "panels": [cam, _cursor_panel("cam-s", title, dias, x, y, sym)],
+            "panels": [cam, cursor_panel("cam-s", title, dias, x, y, sym)],
             "values": values, "marks": [],
-            "angle": _each(lambda lang: message("html.cam.angle", lang))}
+            "angle": each(lambda lang: message("html.cam.angle", lang))}
 
 
 __all__ = ["CAM_FRAMES", "cam_animation", "cam_replay"]

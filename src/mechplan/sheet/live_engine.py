@@ -14,7 +14,7 @@ from ..drafting.primitives import Role
 from ..i18n import LANGUAGES, message, unit
 from .diagram import Axis, Curve, Marker, diagram_panel
 from .engine import EngineData, H, _phi_axis
-from .live import Doc, _cursor_panel, _each
+from .live import Doc, cursor_panel, each
 
 #: angles of the animation over the cycle (one a degree of a two-stroke cycle)
 ENGINE_FRAMES = 360
@@ -41,9 +41,9 @@ def _polar(study: EngineData, idx: np.ndarray) -> Doc:
     dias = {lang: drawn(lang, mu) for lang in LANGUAGES}
     d = dias[LANGUAGES[0]]
     xy = np.column_stack([d.origin[0] + T[idx] / d.mu_x, d.origin[1] + Z[idx] / d.mu_y])
-    return {"id": "engine-polar", "plan": "diagram", "title": _each(title),
-            "mu": _each(lambda _lang: ""),
-            "points": {"Q": {"label": _each(lambda _lang: "Q"), "xy": xy, "trace": False,
+    return {"id": "engine-polar", "plan": "diagram", "title": each(title),
+            "mu": each(lambda _lang: ""),
+            "points": {"Q": {"label": each(lambda _lang: "Q"), "xy": xy, "trace": False,
                              "grow": True}},
             "items": [], "static": {lang: list(dd.panel.primitives) for lang, dd in dias.items()}}
 
@@ -68,9 +68,9 @@ def engine_animation(study: EngineData, frames: int = ENGINE_FRAMES) -> Doc:
 
         dias = {lang: diagram_panel(key, title(lang), curves, axis, y_axis, lang)
                 for lang in LANGUAGES}
-        panels.append(_cursor_panel(f"engine-{key}", title, dias, x, y, label))
-    values = [{"quantity": sym, "name": _each(lambda _lang, s=sym: s),
-               "unit": _each(lambda lang, u=u: unit(u, lang)), "value": v}
+        panels.append(cursor_panel(f"engine-{key}", title, dias, x, y, label))
+    values = [{"quantity": sym, "name": each(lambda _lang, s=sym: s),
+               "unit": each(lambda lang, u=u: unit(u, lang)), "value": v}
               for sym, u, v in (("T", "kN", q.T[idx] * 1e-3), ("Z", "kN", q.Z[idx] * 1e-3),
                                 ("Q", "kN", q.Q[idx] * 1e-3), ("ΣM", "N·m", d.M_total[idx]))]
     return {"frames": int(idx.size), "phi_deg": x, "panels": panels, "values": values,
