@@ -129,6 +129,8 @@ function showReplay() {
     box.append(t);
     return box;
   }));
+  for (const id of ["h-segments", "segments"]) $(id).hidden = !R.rows.length;
+  for (const id of ["h-equation", "equations"]) $(id).hidden = !R.equations.length;
   state.step = Math.min(state.step, R.steps.length - 1);
   go(state.step);
 }
