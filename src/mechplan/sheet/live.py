@@ -35,7 +35,7 @@ from .dynamics import dynamics_scales
 from .kinematics_sheet import _series, output_link
 from .link_outline import drawn as draw_figure
 from .link_outline import link_figures
-from .panels import LABEL_H, TABLE_H, mu_text, plan_title, vector_plan
+from .panels import LABEL_H, TABLE_H, _pivot, _slider, mu_text, plan_title, vector_plan
 
 #: crank positions of the animation (one a degree)
 FRAMES = 360
@@ -255,12 +255,37 @@ def _position_anim(sol: Solution, ev: Evaluation, mu: float) -> Doc:
     names = [n for n in names if c.has_position(n)]
     pts = {n: np.asarray(ev[c.position(n)], dtype=float) / mu for n in names}
     fixed = set(mech.links[GROUND].points)
+    items = _link_paths(sol, ev, mu)
+    frame: list[Primitive] = []          # the frame's pivots and guides, drawn once
+    joints = {pr.point for pr in mech.pairs if GROUND in (pr.a, pr.b)}
+    for n in fixed & joints & set(pts):
+        frame += _pivot((float(pts[n][0, 0]), float(pts[n][0, 1])))
+    for lk in mech.links.values():
+        if not lk.slides_on or next(iter(lk.points)) not in pts:
+            continue
+        g = mech.guides[lk.slides_on]
+        at = pts[next(iter(lk.points))]
+        if g.link == GROUND:
+            angle = np.full(ev.n, g.angle)
+            u = np.array([math.cos(g.angle), math.sin(g.angle)])
+            ok = at[np.isfinite(at).all(axis=1)]
+            if ok.size:
+                t = ok @ u
+                o = ok[0] - (ok[0] @ u) * u
+                frame.append(Line(tuple(o + (t.min() - 10.0) * u), tuple(o + (t.max() + 10.0) * u),
+                                  Role.CHAIN))
+        else:
+            angle = np.asarray(ev[c.link_angle(lk.id)], dtype=float)
+        items.append({"kind": "link", "link": f"slider-{lk.id}", "frames": [
+            [_slider((float(at[k, 0]), float(at[k, 1])), float(angle[k]))]
+            if np.isfinite(at[k]).all() and math.isfinite(angle[k]) else []
+            for k in range(ev.n)]})
     return {"id": "position", "plan": "position",
             "title": each(lambda lang: message("protocol.plan.position", lang)),
             "mu": each(lambda lang: mu_text(Plan.POSITION, mu, lang)),
             "points": {n: {"label": each(lambda _lang, n=n: n), "xy": v,
                            "trace": n not in fixed} for n, v in pts.items()},
-            "items": _link_paths(sol, ev, mu)}
+            "items": items, "fixed": frame}
 
 
 def _vector_anim(sol: Solution, ev: Evaluation, plan: Plan, mu: float) -> Doc:

@@ -189,6 +189,7 @@ function buildAnimation() {
     const svg = el("svg", { role: "img" });
     svg.dataset.panel = P.id;
     if (P.static) { const g = el("g", { class: "static" }); svg.append(g); }
+    if (P.fixed) { const g = el("g", { class: "fixed" }); g.append(...P.fixed.flatMap(draw)); svg.append(g); }
     const items = P.items.map((it) => {
       if (it.kind === "rotor") {     // a body turning about the origin: one shape, an angle a frame
         const g = el("g");
