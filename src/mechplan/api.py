@@ -451,7 +451,8 @@ def draw(scene: SceneSource | Mechanism | Study, out_dir: str | os.PathLike[str]
     out_dir : path
         Output folder, created if missing.
     formats : sequence of str
-        Any of ``"dxf"``, ``"svg"``, ``"pdf"``, ``"png"``.
+        Any of ``"dxf"``, ``"svg"``, ``"pdf"``, ``"png"``, and ``"html"``: the live page of a
+        linkage, one self-contained file (docs/html.md).
     sheet, standard, language : str, optional
         ``"A0"`` … ``"A4"``; ``"iso"``, ``"gost"``, ``"tcvn"``; ``"en"``, ``"ru"``, ``"vi"``,
         ``"zh"`` (default: the scene's ``[drawing]`` and ``language``).
@@ -469,8 +470,15 @@ def draw(scene: SceneSource | Mechanism | Study, out_dir: str | os.PathLike[str]
     study, stem = _study(scene)
     out = prepare_dir(out_dir)
     written: list[Path] = []
-    for s in study.sheets(sheet, standard, language, name or stem):
-        written += write(s, out, list(formats))
+    fmts = [str(f).lower().lstrip(".") for f in formats]
+    if "html" in fmts:
+        from .live_page import write_page
+
+        written.append(write_page(study, out, name or stem, size=sheet, standard=standard,
+                                  language=language))
+        fmts = [f for f in fmts if f != "html"]
+    for s in study.sheets(sheet, standard, language, name or stem) if fmts else ():
+        written += write(s, out, fmts)
     return written
 
 

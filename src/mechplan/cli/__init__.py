@@ -124,10 +124,12 @@ def _draw(args: argparse.Namespace) -> int:
     from ..studies import solve_file
 
     formats = [f.strip().lower() for f in args.format.split(",") if f.strip()]
-    unknown = [f for f in formats if f not in FORMATS]
+    unknown = [f for f in formats if f not in (*FORMATS, "html")]
     if unknown or not formats:
-        raise MechplanError(Text("errors.cli.format", {"formats": ", ".join(FORMATS),
+        raise MechplanError(Text("errors.cli.format", {"formats": ", ".join((*FORMATS, "html")),
                                                        "value": repr(args.format)}))
+    page = "html" in formats                   # the live page (docs/html.md)
+    formats = [f for f in formats if f != "html"]
     if args.system_fonts:
         from ..drafting.fonts import ENV_SYSTEM_FONTS
 
@@ -140,9 +142,15 @@ def _draw(args: argparse.Namespace) -> int:
             print(f"mechplan: [{i}/{len(args.scenes)}] {path}", file=sys.stderr, flush=True)
         try:
             study = solve_file(path, data_dir=args.data_dir)
-            for sheet in study.sheets(args.sheet, args.standard, args.lang, Path(path).stem):
+            for sheet in study.sheets(args.sheet, args.standard, args.lang,
+                                      Path(path).stem) if formats else ():
                 for written in write(sheet, out, formats):
                     print(written)
+            if page:
+                from ..live_page import write_page
+
+                print(write_page(study, out, Path(path).stem, size=args.sheet,
+                                 standard=args.standard, language=args.lang))
             for line in getattr(study, "warnings", lambda _lang: [])(args.lang):
                 print(line, file=sys.stderr)          # positions left out, poor estimates
             scale_notes = getattr(study, "scale_notes", None)   # μ not as the scene asks
@@ -262,7 +270,8 @@ def parser() -> argparse.ArgumentParser:
                        "failed.")
     d.add_argument("scenes", nargs="+", metavar="SCENE")
     d.add_argument("-o", "--output", default=".", help="output folder (default: .)")
-    d.add_argument("--format", default="dxf,svg,pdf", help="comma-separated: dxf,svg,pdf,png")
+    d.add_argument("--format", default="dxf,svg,pdf",
+                   help="comma-separated: dxf,svg,pdf,png,html (html: the live page)")
     d.add_argument("--sheet", choices=SHEETS)
     d.add_argument("--lang", choices=LANGUAGES)
     d.add_argument("--standard", choices=STANDARDS)

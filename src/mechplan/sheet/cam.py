@@ -173,12 +173,16 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
     if g.motion is Motion.OSCILLATING:
         prims.append(Circle((0.0, 0.0), g.pivot / mu, Role.CHAIN))
     pitch = d.dense.pitch[::STEP]
+    steps: dict[int, str] = {}        # the live page's replay: which ray draws what
     if d.spec.follower.contact is not Contact.FLAT:
+        steps[len(prims)] = "profile"
         prims.append(Polyline(tuple(mm(pitch)), Role.DASHED, closed=True))
+    steps[len(prims)] = "profile"
     prims.append(Polyline(tuple(mm(d.profile_points)), Role.OUTLINE, closed=True))
     rays = d.rays
     a, b = follower_positions(g, rays, length)
     for i in range(rays.phi.size):
+        first = len(prims)
         p = rays.pitch[i] / mu
         prims.append(Line((0.0, 0.0), (float(p[0]), float(p[1])), Role.THIN))
         if d.spec.follower.contact is Contact.FLAT and g.motion is Motion.OSCILLATING:
@@ -202,6 +206,7 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
         lbl = p * (1 + 6.0 / r) if r > 0 else p
         prims.append(Text((float(lbl[0]), float(lbl[1])), str(i), 2.5, halign=HAlign.CENTER,
                           valign=VAlign.MIDDLE))
+        steps.update(dict.fromkeys(range(first, len(prims)), f"ray-{i}"))
     top = max(y for p in prims if isinstance(p, Circle) for y in (p.center[1] + p.radius,))
     left, _, right, _ = Panel("", prims).bounds()
     y = top + 3.0
@@ -214,7 +219,7 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
         block = text_block((left, y), text, height, right - left, upward=True)
         prims.extend(block)
         y = block[0].position[1] + gap
-    return Panel("cam-inversion", list(prims)), mu
+    return Panel("cam-inversion", list(prims), steps=steps), mu
 
 
 def _results(keep: list[str], lang: str) -> Panel:
