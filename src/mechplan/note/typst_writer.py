@@ -1,0 +1,126 @@
+"""The note as PDF through Typst (the ``typst`` PyPI package bundles the compiler): figures stay
+vector (the sheets' SVG), the ГОСТ frame and main inscription are drawn exactly (layout.py)."""
+
+from __future__ import annotations
+
+import tempfile
+from importlib import resources
+from pathlib import Path
+
+from ..errors import DrawingError
+from ..i18n import message
+from .layout import PAGE_H, PAGE_W, PAGES, Page
+from .model import Equation, Figure, Heading, Note, Paragraph, Steps, Table
+
+_FONT = {"zh": '("Noto Sans CJK SC",)', "ru": '("Libertinus Serif", "Noto Sans CJK SC")',
+         "vi": '("Libertinus Serif", "Noto Sans CJK SC")',
+         "en": '("Libertinus Serif", "Noto Sans CJK SC")'}
+
+
+def s(text: str) -> str:
+    """A Typst string literal holding ``text`` as it is (no markup is read in it)."""
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+
+
+def _frame(note: Note, page: Page) -> str:
+    """The ГОСТ frame and the main inscription (form 2 on the first framed page, 2a after)."""
+    m = note.meta
+    w = PAGE_W - page.frame_left - page.frame_other
+    h = PAGE_H - 2 * page.frame_other
+    heads = ", ".join(f"[#{s(t)}]" for t in (m.labels["changed"], m.labels["sheet"], "№",
+                                             m.labels["signature"], m.labels["date"]))
+    code = s(m.code or m.title)
+
+    def stamp(height: float) -> str:
+        return (f"place(bottom + left, dx: {page.frame_left}mm, dy: -{page.frame_other}mm, "
+                f"block(width: {w}mm, height: {height}mm, table(columns: (7mm, 10mm, 23mm, 15mm, "
+                f"10mm, 1fr, 10mm), rows: (1fr, 1fr, 5mm), stroke: 0.5pt, inset: 1pt, "
+                f"align: center + horizon, [], [], [], [], [], table.cell(rowspan: 3, "
+                f"text(size: 10pt)[#{code}]), [#{s(m.labels['sheet'])}], [], [], [], [], [], "
+                f"table.cell(rowspan: 2)[#context counter(page).display()], {heads})))")
+
+    return (f"#set page(background: context {{ place(top + left, dx: {page.frame_left}mm, "
+            f"dy: {page.frame_other}mm, rect(width: {w}mm, height: {h}mm, stroke: 0.7pt)); "
+            f"if counter(page).get().first() == 2 {{ {stamp(page.first_stamp_height)} }} "
+            f"else {{ {stamp(page.stamp_height)} }} }})\n")
+
+
+def source(note: Note, figures: dict[str, bytes]) -> str:
+    """The Typst source of a note; ``figures`` receives the SVG files it names."""
+    m, lang = note.meta, note.meta.language
+    page = PAGES[m.tradition]
+    bottom = page.bottom + (page.first_stamp_height if page.frame else 0) * 0
+    out = [f'#set document(title: {s(m.title)}, author: {s(m.student or "-")})',
+           (f"#set page(width: {PAGE_W}mm, height: {PAGE_H}mm, margin: (left: {page.left}mm, "
+           f"right: {page.right}mm, top: {page.top}mm, bottom: {bottom}mm))"),
+           f'#set text(font: {_FONT[lang]}, size: {page.font_pt}pt, lang: "{lang}")',
+           f"#set par(leading: {0.65 * page.line_spacing:.2f}em, justify: true)",
+           '#set heading(numbering: "1.1")',
+           "#show figure.where(kind: table): set figure.caption(position: top)"]
+    # title page
+    out.append("#align(center)[")
+    out.append(f"#text(size: 14pt)[#{s(m.school)}] #v(60mm)")
+    out.append(f"#text(size: 18pt, weight: \"bold\")[#{s(m.labels['note'].upper())}] #v(6mm)")
+    out.append(f"#text(size: 16pt, weight: \"bold\")[#{s(m.title)}]]")
+    out.append("#v(40mm)#align(right)[")
+    for key in ("variant", "student", "group", "instructor"):
+        value = getattr(m, key)
+        if value:
+            out.append(f"#{s(m.labels[key] + ': ' + value)} \\")
+    out.append("]")
+    out.append(f"#align(center + bottom)[#{s(m.year)}]")
+    out.append("#pagebreak()")
+    if page.frame:
+        out.append(_frame(note, page))
+    else:
+        out.append('#set page(numbering: "1")')
+    if page.running_head:
+        out.append(f"#set page(header: [#{s(m.title)} #line(length: 100%, stroke: 0.5pt)])")
+    out.append(f"#outline(title: {s(m.labels['contents'])})")
+    out.append("#pagebreak()")
+    eq_n = tab_n = fig_n = 0
+    for i, b in enumerate(note.blocks):
+        if isinstance(b, Heading):
+            out.append(f"#heading(level: {b.level})[#{s(b.text)}]")
+        elif isinstance(b, Paragraph):
+            out.append(f"#par[#{s(b.text)}]")
+        elif isinstance(b, Steps):
+            out.append("#enum(" + ", ".join(f"[#{s(x)}]" for x in b.items) + ")")
+        elif isinstance(b, Equation):
+            eq_n += 1
+            out.append(f"#grid(columns: (1fr, auto), inset: (y: 3pt), [#{s(b.line())}], "
+                       f"[#{s(f'({eq_n})')}])")
+        elif isinstance(b, Table):
+            tab_n += 1
+            cells = ", ".join(f"[*#{s(x)}*]" for x in b.header)
+            body = ", ".join(f"[#{s(x)}]" for row in b.rows for x in row)
+            out.append(f"#figure(kind: table, numbering: none, caption: "
+                       f"[#{s(message('note.table_caption', lang, n=tab_n, text=b.caption))}], "
+                       f"table(columns: {len(b.header)}, inset: 3pt, "
+                       f"align: center + horizon, {cells}, {body}))")
+        elif isinstance(b, Figure):
+            fig_n += 1
+            name = f"figure{i}.svg"
+            figures[name] = b.svg
+            out.append(f"#figure(image({s(name)}, width: 100%), numbering: none, caption: "
+                       f"[#{s(message('note.figure_caption', lang, n=fig_n, text=b.caption))}])")
+    return "\n".join(out) + "\n"
+
+
+def to_pdf(note: Note) -> bytes:
+    """Compile the note to PDF with the fonts mechplan bundles (the same on every machine)."""
+    import typst
+
+    figures: dict[str, bytes] = {}
+    text = source(note, figures)
+    fonts = str(resources.files("mechplan") / "fonts")
+    with tempfile.TemporaryDirectory(prefix="mechplan-note-") as tmp:
+        root = Path(tmp)
+        (root / "note.typ").write_text(text, encoding="utf-8")
+        for name, data in figures.items():
+            (root / name).write_bytes(data)
+        try:
+            return bytes(typst.compile(str(root / "note.typ"), root=str(root),
+                                       font_paths=[fonts]))
+        except RuntimeError as exc:
+            raise DrawingError(f"the note's PDF cannot be typeset ({exc})") from None
