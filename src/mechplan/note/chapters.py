@@ -7,7 +7,7 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from ..i18n import message, significant, unit
+from ..i18n import has_message, message, significant, unit
 from ..i18n import number as fmt
 from .model import Block, Equation, Heading, Paragraph, Table
 
@@ -18,6 +18,13 @@ def _m(key: str, lang: str, **values: Any) -> str:
 
 def _s(value: float, lang: str, figures: int = 5) -> str:
     return significant(float(value), figures, lang)
+
+
+def _said(msgid: str, lang: str, **values: Any) -> str:
+    """A word of another area's catalogue (a cam law, a phase), or the id's last part."""
+    if not has_message(msgid, lang):
+        return msgid.rsplit(".", 1)[-1]
+    return message(msgid, lang, **values)
 
 
 def _ok(flag: Any, lang: str) -> str:
@@ -138,11 +145,14 @@ def cam_blocks(doc: dict[str, Any], lang: str) -> list[Block]:
     mm, deg = unit("mm", lang), "°"
     out: list[Block] = [Heading(_m("h.cam", lang, title=doc["title"]), 1, "cam")]
     fol = doc["follower"]
-    out.append(Paragraph(_m("p.cam", lang, motion=fol["motion"], contact=fol["contact"],
+    out.append(Paragraph(_m("p.cam", lang, motion=_said(f"cam.motion.{fol['motion']}", lang),
+                            contact=_said(f"cam.contact.{fol['contact']}", lang,
+                                          rr=_s(fol["roller_radius"] * 1000, lang)),
                             h=_s(doc["stroke"] * 1000, lang), omega=_s(doc["omega"], lang))))
     out.append(Table(_m("t.phases", lang),
                      (_m("c.phase", lang), _m("c.law", lang), f"φ, {deg}"),
-                     tuple((ph["kind"], ph["law"] or "—",
+                     tuple((_said(f"cam.phase.{ph['kind']}", lang),
+                            _said(f"cam.law.{ph['law']}", lang) if ph["law"] else "—",
                             fmt(math.degrees(ph["angle"]), 1, lang)) for ph in doc["phases"])))
     br = doc["base_radius"]
     out.append(Equation("r0_min", "", "", _s(br["minimum"] * 1000, lang), mm))
@@ -150,7 +160,7 @@ def cam_blocks(doc: dict[str, Any], lang: str) -> list[Block]:
     rows = []
     for phase in ("rise", "return"):
         alpha, at = doc["pressure_angle_max"][phase]
-        rows.append((_m(f"phase.{phase}", lang), fmt(math.degrees(alpha), 2, lang),
+        rows.append((_said(f"cam.phase.{phase}", lang), fmt(math.degrees(alpha), 2, lang),
                      fmt(math.degrees(at), 1, lang)))
     out.append(Table(_m("t.pressure", lang),
                      (_m("c.phase", lang), f"α_max, {deg}", f"φ, {deg}"), tuple(rows)))

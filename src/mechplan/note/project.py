@@ -56,7 +56,7 @@ def read_project(path: str | os.PathLike[str]) -> Project:
     from ..scene.document import parse_toml, read_text, scene_kind
 
     file = str(path)
-    data = parse_toml(read_text(path), file)
+    data = parse_toml(read_text(Path(path)), file)
     head = data.get("project", {})
     if not isinstance(head, dict):
         raise SceneError("[project] must be a table", file=file, key="project")
