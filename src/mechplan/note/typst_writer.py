@@ -34,7 +34,8 @@ def _frame(note: Note, page: Page) -> str:
     def stamp(height: float) -> str:
         return (f"place(bottom + left, dx: {page.frame_left}mm, dy: -{page.frame_other}mm, "
                 f"block(width: {w}mm, height: {height}mm, text(size: 7pt, table("
-                f"columns: (7mm, 10mm, 23mm, 15mm, 10mm, 1fr, 10mm), rows: (1fr, 1fr, 5mm), stroke: 0.5pt, inset: 0.5pt, "
+                f"columns: (7mm, 10mm, 23mm, 15mm, 10mm, 1fr, 10mm), rows: (1fr, 1fr, 5mm), "
+                f"stroke: 0.5pt, inset: 0.5pt, "
                 f"align: center + horizon, [], [], [], [], [], table.cell(rowspan: 3, "
                 f"text(size: 10pt)[#{code}]), [#{s(m.labels['sheet'])}], [], [], [], [], [], "
                 f"table.cell(rowspan: 2)[#context counter(page).display()], {heads}))))")
