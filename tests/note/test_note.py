@@ -227,3 +227,53 @@ def test_libreoffice_opens_and_converts_the_docx(full: Path, tmp_path: Path, req
     with pdfplumber.open(tmp_path / "note.pdf") as pdf:
         text = "\n".join(p.extract_text() or "" for p in pdf.pages)
     assert "83,78" in text and message("note.h.structure", "vi") in text
+
+
+def test_machine_dynamics_chapter(tmp_path: Path) -> None:
+    """A linkage with [dynamics] (worked example §2): the constant moment from zero net work,
+    the flywheel by each method, in Russian on a ГОСТ page."""
+    path = _project(tmp_path, "ru", {"linkage": "machine_unit.toml"})
+    run_project(path, tmp_path / "out", ("docx",))
+    d = docx.Document(str(tmp_path / "out" / "project-note.docx"))
+    assert message("note.h.dynamics", "ru") in _headings(d)
+    texts = _texts(d)
+    dyn = solve_file(TEMPLATES / "machine_unit.toml").to_json()["dynamics"]
+    scene = tomllib.loads((TEMPLATES / "machine_unit.toml").read_text(encoding="utf-8"))
+    cycle = math.radians(float(dyn["cycle_deg"]))
+    assert cycle == pytest.approx(4 * math.pi)                 # a four-stroke cycle: two turns
+    line = next(t for t in texts if t.startswith("M_c = A/Φ_c"))
+    work, phi_c, mc = re.match(r"M_c = A/Φ_c = ([\d,]+)/([\d,]+) = ([\d,]+) Н·м", line).groups()
+    assert _dec(work) / _dec(phi_c) == pytest.approx(_dec(mc), rel=1e-4)
+    assert _dec(phi_c) == pytest.approx(4 * math.pi, rel=1e-4)
+    assert _dec(mc) == pytest.approx(dyn["work_driving"] / (4 * math.pi), abs=0.005)
+    n = float(scene["drive"]["speed"].split()[0])              # "300 rpm"
+    wm = next(t for t in texts if t.startswith("ω_m = π·n/30"))
+    assert _dec(re.search(r"= ([\d,]+) рад/с", wm)[1]) == pytest.approx(math.pi * n / 30,
+                                                                       abs=0.0005)
+    jf = next(t for t in texts if t.startswith("J_fl = J_I − J_pr"))
+    j_i, j_pr, j_fl = (_dec(x) for x in re.findall(r"[\d,]+", jf.split("=", 2)[2])[:3])
+    assert j_i - j_pr == pytest.approx(j_fl, rel=1e-4)
+    flywheel = {r[0]: r for t in _tables(d) for r in t}
+    fw = dyn["flywheel"]
+    for key, method in (("method.wittenbauer", "wittenbauer"), ("method.merkalov", "merkalov"),
+                        ("method.exact", "exact")):
+        row = flywheel[message(f"note.{key}", "ru")]
+        assert _dec(row[1]) == pytest.approx(fw[method]["J"], rel=1e-4)
+
+
+def test_command_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from mechplan.cli import main
+
+    missing = _project(tmp_path, "en", {"gears": "nothing_here.toml"})
+    assert main(["project", str(missing), "-o", str(tmp_path / "o1")]) == 2
+    err = capsys.readouterr().err
+    assert "studies.gears" in err and str(missing) in err
+    assert not (tmp_path / "o1").exists()
+    ok = _project(tmp_path, "zh", {"gears": ROLES["gears"]})
+    assert main(["project", str(ok), "-o", str(tmp_path / "o2"), "--format", "docx,svg"]) == 0
+    printed = capsys.readouterr().out.split()
+    assert sorted(Path(p).name for p in printed) == sorted(
+        p.name for p in (tmp_path / "o2").iterdir())
+    assert "project-note.docx" in {Path(p).name for p in printed}
+    heads = _headings(docx.Document(str(tmp_path / "o2" / "project-note.docx")))
+    assert message("note.h.conclusion", "zh") in heads

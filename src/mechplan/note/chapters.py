@@ -20,6 +20,11 @@ def _s(value: float, lang: str, figures: int = 5) -> str:
     return significant(float(value), figures, lang)
 
 
+def _p(text: str) -> str:
+    """A substituted number in parentheses when it is negative: 4·(−2), not 4·-2."""
+    return f"({text})" if text.startswith(("-", "−")) else text
+
+
 def _said(msgid: str, lang: str, **values: Any) -> str:
     """A word of another area's catalogue (a cam law, a phase), or the id's last part."""
     if not has_message(msgid, lang):
@@ -100,7 +105,7 @@ def gears_blocks(doc: dict[str, Any], lang: str) -> list[Block]:
             out.append(Equation("i^h_14", "(−z2/z1)·(z4/z3)", f"(−{z[1]}/{z[0]})·({z[3]}/{z[2]})",
                                 _s(iw, lang)))
             out.append(Equation("z1 + z2", "z4 − z3", f"{z[3]} − {z[2]}", str(z[0] + z[1])))
-        out.append(Equation("U", "1 − i^h", f"1 − ({_s(iw, lang)})", _s(ch["ratio"], lang)))
+        out.append(Equation("U", "1 − i^h", f"1 − {_p(_s(iw, lang))}", _s(ch["ratio"], lang)))
         out.append(Equation("z1·U/k", "", f"{z[0]}·{_s(ch['ratio'], lang)}/{pl['planets']}",
                             _s(ch["assembly_z1u_over_k"], lang)))
         mm = unit("mm", lang)
@@ -124,7 +129,7 @@ def gears_blocks(doc: dict[str, Any], lang: str) -> list[Block]:
         out.append(Equation("u56", "z6/z5", f"{od['z6']}/{od['z5']}", _s(od["ratio"], lang)))
         if pl:
             out.append(Equation("U_Σ", "U·u56",
-                                f"{_s(pl['chosen']['ratio'], lang)}·{_s(od['ratio'], lang)}",
+                                f"{_s(pl['chosen']['ratio'], lang)}·{_p(_s(od['ratio'], lang))}",
                                 _s(od["total_ratio"], lang)))
     pair = doc.get("pair")
     if pair:

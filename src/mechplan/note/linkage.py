@@ -122,6 +122,10 @@ def _plan(sol: Any, plan: Plan, k: int, steps: list[tuple[Plan, str, str]],
     return out
 
 
+#: m/s or m/s²: below it a relative velocity or tangential acceleration is written as 0
+_ROUNDING = 1e-9
+
+
 def _link_of(sol: Any, quantity: str, prefix: str) -> tuple[str, str, str] | None:
     """(link, X, Y) of a relative quantity ``v_XY`` / ``a^t_XY`` whose points share a link."""
     body = quantity.removeprefix(prefix)
@@ -154,6 +158,8 @@ def _angular(sol: Any, k: int, lang: str) -> list[Block]:
         lid, x, y = found
         done.add((key, lid))
         value = float(np.hypot(*(ev[s.end][k] - ev[s.start][k])))
+        if value < _ROUNDING:            # a zero the floating point left a trace of (a dead centre)
+            value = 0.0
         length = mech.links[lid].distance(x, y)
         signed = float(ev[c.omega(lid) if key == "omega" else c.epsilon(lid)][k])
         result = value / length
