@@ -41,12 +41,11 @@ def _field(paragraph, instruction: str, shown: str = "1") -> None:
 
 
 def _borders(section, page: Page) -> None:
-    """ГОСТ frame as page borders measured from the page edge's text area."""
+    """The ГОСТ frame as page borders around the text (layout.py's margins and frame)."""
     sect = section._sectPr
     pg = OxmlElement("w:pgBorders")
-    pg.set(qn("w:offsetFrom"), "page")
-    # a page border lies at most 31 pt from the page edge: 20 mm is reached by the margin
-    # instead (the border is measured from the text, left margin − 10 mm)
+    # a border lies at most 31 pt from what it is measured from, so 20 mm from the page edge
+    # cannot be set from the page: it is measured from the text (the 30 mm margin less 10 mm)
     pg.set(qn("w:offsetFrom"), "text")
     spaces = {"top": page.top - page.frame_other, "left": page.left - page.frame_left,
               "bottom": 4.0, "right": page.right - page.frame_other}

@@ -50,11 +50,12 @@ def source(note: Note, figures: dict[str, bytes]) -> str:
     """The Typst source of a note; ``figures`` receives the SVG files it names."""
     m, lang = note.meta, note.meta.language
     page = PAGES[m.tradition]
-    bottom = page.bottom + (page.first_stamp_height if page.frame else 0) * 0
+    bottom = page.bottom
     out = [f'#set document(title: {s(m.title)}, author: {s(m.student or "-")})',
            (f"#set page(width: {PAGE_W}mm, height: {PAGE_H}mm, margin: (left: {page.left}mm, "
            f"right: {page.right}mm, top: {page.top}mm, bottom: {bottom}mm))"),
-           f'#set text(font: {_FONT[lang]}, size: {page.font_pt}pt, lang: "{lang}", overhang: false)',
+           (f'#set text(font: {_FONT[lang]}, size: {page.font_pt}pt, lang: "{lang}", '
+           'overhang: false)'),
            f"#set par(leading: {0.65 * page.line_spacing:.2f}em, justify: true)",
            '#set heading(numbering: "1.1")',
            "#show figure.where(kind: table): set figure.caption(position: top)"]
