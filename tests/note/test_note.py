@@ -41,7 +41,11 @@ def _texts(document: docx.document.Document) -> list[str]:
 
 
 def _headings(document: docx.document.Document) -> list[str]:
-    return [p.text for p in document.paragraphs if p.style.name.startswith("Heading")]
+    """The headings without their section numbers ("2.1 Structural analysis" → the text)."""
+    heads = [p.text for p in document.paragraphs if p.style.name.startswith("Heading")]
+    numbered = [h for h in heads[1:]]                          # "Contents" is not numbered
+    assert all(re.match(r"\d+(\.\d+)* ", h) for h in numbered), numbered
+    return [re.sub(r"^\d+(\.\d+)* ", "", h) for h in heads]
 
 
 def _tables(document: docx.document.Document) -> list[list[list[str]]]:

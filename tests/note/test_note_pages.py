@@ -70,3 +70,39 @@ def test_margins_of_the_other_traditions(tmp_path: Path, lang: str, tradition: s
         assert bool(head) == page.running_head              # GB: the title above a rule
         body = [c for c in chars if c not in head]
         assert min(c["top"] for c in body) / MM >= page.top - 1.5      # the font box of a heading
+
+
+@pytest.mark.external
+def test_gost_frame_of_the_docx_in_libreoffice(tmp_path: Path, require) -> None:
+    """The DOCX's frame (page borders) and main inscription (a footer table), as LibreOffice
+    lays them out: 20 mm / 5 mm, form 2a 185 × 15 mm with its columns."""
+    import shutil
+    import subprocess
+
+    soffice = shutil.which("soffice") or shutil.which("libreoffice")
+    require(soffice is not None, "LibreOffice (apt-get install libreoffice-writer-nogui)")
+    pdfplumber = pytest.importorskip("pdfplumber")
+    path = tmp_path / "gost.toml"
+    path.write_text('[project]\ntitle = "T"\nlanguage = "ru"\ncode = "TMM.01.00"\n[studies]\n'
+                    f'cam = "{(TEMPLATES / "cam_cycloidal.toml").as_posix()}"\n',
+                    encoding="utf-8")
+    run_project(path, tmp_path / "out", ("docx",))
+    subprocess.run([soffice, "--headless", f"-env:UserInstallation=file://{tmp_path}/lo",
+                    "--convert-to", "pdf", "--outdir", str(tmp_path / "lo"),
+                    str(tmp_path / "out" / "gost-note.docx")],
+                   check=True, capture_output=True, timeout=300)
+    with pdfplumber.open(tmp_path / "lo" / "gost-note.pdf") as pdf:
+        page = pdf.pages[2]
+        lines = [(ln["x0"] / MM, ln["top"] / MM, ln["x1"] / MM, ln["bottom"] / MM)
+                 for ln in page.lines]
+    vertical = [x0 for x0, top, x1, bottom in lines if abs(x1 - x0) < 0.2 and bottom - top > 250]
+    horizontal = [top for x0, top, x1, bottom in lines
+                  if abs(bottom - top) < 0.2 and x1 - x0 > 180]
+    assert sorted(vertical) == pytest.approx([20, 205], abs=0.5)          # the frame
+    assert min(horizontal) == pytest.approx(5, abs=0.5)
+    assert max(horizontal) == pytest.approx(292, abs=0.5)
+    stamp_top = min(t for t in horizontal if t > 200)
+    assert 292 - stamp_top == pytest.approx(15, abs=0.5)                 # form 2a
+    columns = sorted({round(x0, 0) for x0, top, x1, bottom in lines
+                      if abs(x1 - x0) < 0.2 and top > 270 and bottom - top > 10})
+    assert columns == pytest.approx([20, 27, 37, 60, 75, 85, 195, 205], abs=0.6)

@@ -7,11 +7,11 @@ import io
 
 from docx import Document
 from docx.enum.section import WD_SECTION
-from docx.enum.table import WD_TABLE_ALIGNMENT
+from docx.enum.table import WD_ROW_HEIGHT_RULE, WD_TABLE_ALIGNMENT
 from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_BREAK, WD_TAB_ALIGNMENT
 from docx.oxml import OxmlElement
 from docx.oxml.ns import qn
-from docx.shared import Mm, Pt
+from docx.shared import Mm, Pt, RGBColor
 
 from ..i18n import message
 from .layout import PAGE_H, PAGE_W, PAGES, Page
@@ -48,7 +48,7 @@ def _borders(section, page: Page) -> None:
     # cannot be set from the page: it is measured from the text (the 30 mm margin less 10 mm)
     pg.set(qn("w:offsetFrom"), "text")
     spaces = {"top": page.top - page.frame_other, "left": page.left - page.frame_left,
-              "bottom": 4.0, "right": page.right - page.frame_other}
+              "bottom": 0.0, "right": page.right - page.frame_other}
     for side in ("top", "left", "bottom", "right"):
         b = OxmlElement(f"w:{side}")
         b.set(qn("w:val"), "single")
@@ -59,17 +59,27 @@ def _borders(section, page: Page) -> None:
     sect.append(pg)
 
 
-def _stamp(section, note: Note) -> None:
+def _stamp(section, note: Note, page: Page) -> None:
     """The main inscription of a text document, form 2a (185 × 15 mm), in the footer."""
     m = note.meta
     footer = section.footer
     table = footer.add_table(rows=3, cols=7, width=Mm(185))
+    table.style = "Table Grid"
+    table.autofit = False
     widths = (7, 10, 23, 15, 10, 110, 10)
+    for column, w in zip(table.columns, widths, strict=True):
+        column.width = Mm(w)
     for row in table.rows:
         row.height = Mm(5)
+        row.height_rule = WD_ROW_HEIGHT_RULE.EXACTLY
         for cell, w in zip(row.cells, widths, strict=True):
             cell.width = Mm(w)
-    table.style = "Table Grid"
+    # from the text's left edge back to the frame's left line
+    indent = OxmlElement("w:tblInd")
+    # (the indent is to the first cell's text: its 0.19 cm margin is added back)
+    indent.set(qn("w:w"), str(round(-(page.left - page.frame_left) / 25.4 * 1440) + 108))
+    indent.set(qn("w:type"), "dxa")
+    table._tbl.tblPr.append(indent)
     heads = (m.labels["changed"], m.labels["sheet"], "№", m.labels["signature"],
              m.labels["date"])
     for cell, text in zip(table.rows[2].cells[:5], heads, strict=True):
@@ -84,8 +94,10 @@ def _stamp(section, note: Note) -> None:
     for row in table.rows:
         for cell in row.cells:
             for p in cell.paragraphs:
+                p.paragraph_format.space_before = p.paragraph_format.space_after = Pt(0)
+                p.paragraph_format.line_spacing = 1.0
                 for r in p.runs:
-                    r.font.size = Pt(8)
+                    r.font.size = Pt(7)
 
 
 def _page_number(section) -> None:
@@ -127,6 +139,8 @@ def to_docx(note: Note) -> bytes:
             fonts = OxmlElement("w:rFonts")
             rpr.append(fonts)
         fonts.set(qn("w:eastAsia"), east)
+    for name in ("Heading 1", "Heading 2", "Heading 3", "Caption"):
+        doc.styles[name].font.color.rgb = RGBColor(0, 0, 0)
     doc.styles["Normal"].font.size = Pt(page.font_pt)
     doc.styles["Normal"].paragraph_format.line_spacing = page.line_spacing
     section = doc.sections[0]
@@ -139,7 +153,7 @@ def to_docx(note: Note) -> bytes:
     body.footer.is_linked_to_previous = False
     if page.frame:
         _borders(body, page)
-        _stamp(body, note)
+        _stamp(body, note, page)
     else:
         _page_number(body)
     if page.running_head:
@@ -150,9 +164,13 @@ def to_docx(note: Note) -> bytes:
     doc.add_paragraph().add_run().add_break(WD_BREAK.PAGE)
     text_width = Mm(PAGE_W - page.left - page.right)
     eq_n = tab_n = fig_n = 0
+    counters = [0, 0, 0]          # the section numbers 1, 1.2, 1.2.3 (as in the PDF)
     for b in note.blocks:
         if isinstance(b, Heading):
-            doc.add_heading(b.text, b.level)
+            counters[b.level - 1] += 1
+            counters[b.level:] = [0] * (len(counters) - b.level)
+            number = ".".join(str(c) for c in counters[:b.level])
+            doc.add_heading(f"{number} {b.text}", b.level)
         elif isinstance(b, Paragraph):
             doc.add_paragraph(b.text)
         elif isinstance(b, Steps):
