@@ -281,3 +281,40 @@ def test_command_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> Non
     assert "project-note.docx" in {Path(p).name for p in printed}
     heads = _headings(docx.Document(str(tmp_path / "o2" / "project-note.docx")))
     assert message("note.h.conclusion", "zh") in heads
+
+
+@pytest.mark.parametrize("lang", ["en", "ru", "zh"])
+def test_the_v_engine_note_in_each_language(tmp_path: Path, lang: str) -> None:
+    """The bundled project's note in the other languages (vi above): every chapter's heading in
+    the DOCX and the PDF, ω1 with the language's decimal mark (figures left out: faster)."""
+    import io
+
+    from mechplan.note.build import build_note
+    from mechplan.note.project import read_project, solve_project
+    from mechplan.note.write import note_files
+
+    text = PROJECT.read_text(encoding="utf-8").replace('language = "vi"', f'language = "{lang}"')
+    text = re.sub(r'tradition = "\w+"', "", text).replace("../", f"{TEMPLATES.as_posix()}/")
+    path = tmp_path / "p.toml"
+    path.write_text(text, encoding="utf-8")
+    project = read_project(path)
+    assert project.tradition == {"en": "plain", "ru": "gost", "zh": "gb"}[lang]
+    note = build_note(project, solve_project(project), [])
+    files = note_files(note, "p", ("docx", "pdf"))
+    d = docx.Document(io.BytesIO(files["p-note.docx"]))
+    heads = _headings(d)
+    titles = {role: solve_file(TEMPLATES / name).to_json()["title"] for role, name in
+              ROLES.items() if role != "linkage"}
+    wanted = [message(f"note.{k}", lang) for k in ("h.task", "h.structure", "h.kinematics",
+                                                    "h.forces", "h.conclusion")]
+    wanted += [message(f"note.h.{role}", lang, title=titles[role]) for role in titles]
+    assert all(w in heads for w in wanted), set(wanted) - set(heads)
+    omega = f"{math.pi * 800 / 30:.2f}"
+    omega = omega.replace(".", ",") if lang == "ru" else omega
+    assert any(t.startswith("ω1 = π·n/30 = ") and f"= {omega} " in t for t in _texts(d))
+    pdfplumber = pytest.importorskip("pdfplumber")
+    with pdfplumber.open(io.BytesIO(files["p-note.pdf"])) as pdf:
+        pdf_text = "\n".join(p.extract_text() or "" for p in pdf.pages)
+    assert omega in pdf_text
+    flat = re.sub(r"\s+", "", pdf_text)
+    assert all(re.sub(r"\s+", "", w) in flat for w in wanted)
