@@ -318,3 +318,16 @@ def test_the_v_engine_note_in_each_language(tmp_path: Path, lang: str) -> None:
     assert omega in pdf_text
     flat = re.sub(r"\s+", "", pdf_text)
     assert all(re.sub(r"\s+", "", w) in flat for w in wanted)
+
+
+def test_the_given_data_table_is_the_scenes(full: Path) -> None:
+    scene = tomllib.loads((TEMPLATES / "v_engine.toml").read_text(encoding="utf-8"))
+    given = {f"l_{k}": float(v.split()[0]) for link in scene["links"].values()
+             for k, v in link.get("lengths", {}).items()}
+    given |= {f"m{lid}": float(link["mass"].split()[0]) for lid, link in scene["links"].items()
+              if "mass" in link}
+    d = docx.Document(str(full / "v_engine_project-note.docx"))
+    data = next(t for t in _tables(d) if t[0][2] == message("note.c.unit", "vi"))
+    rows = {r[0]: _dec(r[1]) for r in data[1:]}
+    assert {k: rows[k] for k in given} == given
+    assert rows["n1"] == 800

@@ -37,11 +37,37 @@ def linkage_blocks(study: MechanismStudy, doc: dict[str, Any], lang: str) -> lis
     """Task, structure, kinematics (per position) and forces of a solved linkage."""
     sol = study.solution
     out: list[Block] = [Heading(_m("h.linkage", lang, title=sol.scene.title), 1, "linkage")]
+    out += _data(sol, lang)
     out += _structure(sol, lang)
     out += _kinematics(sol, doc, lang)
     if any("forces" in p for p in doc["positions"]):
         out += _forces(sol, doc, lang)
     return out
+
+
+def _data(sol: Any, lang: str) -> list[Block]:
+    """The given data: the links' lengths (as the position plan draws them), the crank's speed,
+    the masses and moments of inertia."""
+    rows: list[tuple[str, str, str]] = []
+    seen: set[str] = set()
+    for s in sol.construction.segments:
+        if s.kind is SegmentKind.LINK and s.quantity not in seen:
+            found = _link_of(sol, s.quantity, "l_")
+            if found is not None:
+                seen.add(s.quantity)
+                lid, x, y = found
+                length = sol.scene.mechanism.links[lid].distance(x, y)
+                rows.append((s.quantity, sig(length * 1000, lang, 6), unit("mm", lang)))
+    drive = sol.scene.mechanism.drive
+    rows.append((f"n{drive.link}", sig(abs(drive.omega) * 30 / math.pi, lang, 6),
+                 unit("rpm", lang)))
+    for lid, spec in sorted(sol.scene.masses.items()):
+        if spec.mass:
+            rows.append((f"m{lid}", sig(spec.mass, lang, 6), unit("kg", lang)))
+        if spec.inertia:
+            rows.append((f"J_{spec.centre}", sig(spec.inertia, lang, 6), unit("kg·m²", lang)))
+    return [Table(_m("t.data", lang), (_m("c.quantity", lang), _m("c.value", lang),
+                                        _m("c.unit", lang)), tuple(rows))]
 
 
 def _structure(sol: Any, lang: str) -> list[Block]:
