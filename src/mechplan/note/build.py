@@ -11,7 +11,8 @@ from .model import Block, Figure, Heading, Meta, Note, Paragraph
 
 #: the words of the title page and the frames, said in the note's language
 _LABELS = ("note", "student", "group", "variant", "instructor", "school", "year", "sheet",
-           "sheets", "changed", "signature", "date", "developed", "checked", "contents")
+           "sheets", "changed", "signature", "date", "developed", "checked", "contents",
+           "letter")
 
 
 def _m(key: str, lang: str, **values: Any) -> str:

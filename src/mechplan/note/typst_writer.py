@@ -40,9 +40,40 @@ def _frame(note: Note, page: Page) -> str:
                 f"text(size: 10pt)[#{code}]), [#{s(m.labels['sheet'])}], [], [], [], [], [], "
                 f"table.cell(rowspan: 2)[#context counter(page).display()], {heads}))))")
 
+    def form2() -> str:
+        """ГОСТ 2.104 form 2: 8 rows of 5 mm; the designation, the document's name, Лит.,
+        Лист, Листов and the organisation."""
+        lab = m.labels
+        people = ((lab["developed"], m.student), (lab["checked"], m.instructor), ("", ""),
+                  ("", ""), ("", ""))
+        cells = ["[]", "[]", "[]", "[]", "[]",
+                 f"table.cell(colspan: 6, rowspan: 3, text(size: 10pt)[#{code}])",
+                 "[]", "[]", "[]", "[]", "[]", *heads_cells]
+        name = s(f"{m.title}\n{lab['note']}")
+        org = s("\n".join(x for x in (m.school, m.group) if x))
+        for i, (role, person) in enumerate(people):
+            cells += [f"table.cell(colspan: 2, align: left)[#{s(role)}]",
+                      f"table.cell(align: left)[#{s(person)}]", "[]", "[]"]
+            if i == 0:
+                cells += [f"table.cell(rowspan: 5, text(size: 9pt)[#{name}])",
+                          f"table.cell(colspan: 3)[#{s(lab['letter'])}]",
+                          f"[#{s(lab['sheet'])}]", f"[#{s(lab['sheets'])}]"]
+            elif i == 1:
+                cells += ["[]", "[]", "[]", "[#context counter(page).display()]",
+                          "[#context counter(page).final().first()]"]
+            elif i == 2:
+                cells += [f"table.cell(colspan: 5, rowspan: 3)[#{org}]"]
+        return (f"place(bottom + left, dx: {page.frame_left}mm, dy: -{page.frame_other}mm, "
+                f"block(width: {w}mm, height: {page.first_stamp_height}mm, text(size: 7pt, "
+                f"table(columns: (7mm, 10mm, 23mm, 15mm, 10mm, 70mm, 5mm, 5mm, 5mm, 15mm, "
+                f"20mm), rows: 5mm, stroke: 0.5pt, inset: 0.5pt, align: center + horizon, "
+                f"{', '.join(cells)}))))")
+
+    heads_cells = [f"[#{s(t)}]" for t in (m.labels["changed"], m.labels["sheet"], "№",
+                                          m.labels["signature"], m.labels["date"])]
     return (f"#set page(background: context {{ place(top + left, dx: {page.frame_left}mm, "
             f"dy: {page.frame_other}mm, rect(width: {w}mm, height: {h}mm, stroke: 0.7pt)); "
-            f"if counter(page).get().first() == 2 {{ {stamp(page.first_stamp_height)} }} "
+            f"if counter(page).get().first() == 2 {{ {form2()} }} "
             f"else {{ {stamp(page.stamp_height)} }} }})\n")
 
 
