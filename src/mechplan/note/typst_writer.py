@@ -3,9 +3,7 @@ vector (the sheets' SVG), the ГОСТ frame and main inscription are drawn exac
 
 from __future__ import annotations
 
-import tempfile
 from importlib import resources
-from pathlib import Path
 
 from ..errors import DrawingError
 from ..i18n import message
@@ -77,8 +75,8 @@ def _frame(note: Note, page: Page) -> str:
             f"else {{ {stamp(page.stamp_height)} }} }})\n")
 
 
-def source(note: Note, figures: dict[str, bytes]) -> str:
-    """The Typst source of a note; ``figures`` receives the SVG files it names."""
+def source(note: Note, figures: dict[str, str]) -> str:
+    """The Typst source of a note; ``figures`` receives the SVG texts it names (its inputs)."""
     m, lang = note.meta, note.meta.language
     page = PAGES[m.tradition]
     bottom = page.bottom
@@ -133,27 +131,24 @@ def source(note: Note, figures: dict[str, bytes]) -> str:
                        f"align: center + horizon, {cells}, {body}))")
         elif isinstance(b, Figure):
             fig_n += 1
-            name = f"figure{i}.svg"
-            figures[name] = b.svg
-            out.append(f"#figure(image({s(name)}, width: 100%), numbering: none, caption: "
+            name = f"figure{i}"
+            figures[name] = b.svg.decode("utf-8")
+            out.append(f"#figure(image(bytes(sys.inputs.at({s(name)})), format: \"svg\", "
+                       f"width: 100%), numbering: none, caption: "
                        f"[#{s(message('note.figure_caption', lang, n=fig_n, text=b.caption))}])")
     return "\n".join(out) + "\n"
 
 
 def to_pdf(note: Note) -> bytes:
-    """Compile the note to PDF with the fonts mechplan bundles (the same on every machine)."""
+    """Compile the note to PDF in memory (no file is written: the figures' SVG reach Typst as
+    ``sys.inputs``) with the fonts mechplan bundles and Typst's own, the same on every machine."""
     import typst
 
-    figures: dict[str, bytes] = {}
+    figures: dict[str, str] = {}
     text = source(note, figures)
     fonts = str(resources.files("mechplan") / "fonts")
-    with tempfile.TemporaryDirectory(prefix="mechplan-note-") as tmp:
-        root = Path(tmp)
-        (root / "note.typ").write_text(text, encoding="utf-8")
-        for name, data in figures.items():
-            (root / name).write_bytes(data)
-        try:
-            return bytes(typst.compile(str(root / "note.typ"), root=str(root),
-                                       font_paths=[fonts]))
-        except RuntimeError as exc:
-            raise DrawingError(f"the note's PDF cannot be typeset ({exc})") from None
+    try:
+        return bytes(typst.compile(text.encode("utf-8"), sys_inputs=figures,  # type: ignore[misc]
+                                   font_paths=[fonts], ignore_system_fonts=True))
+    except RuntimeError as exc:
+        raise DrawingError(f"the note's PDF cannot be typeset ({exc})") from None
