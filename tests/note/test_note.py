@@ -119,6 +119,15 @@ def test_angular_velocities_and_segment_tables(full: Path) -> None:
     value = re.search(r"= ([\d,]+) rad/s", w2[0])
     assert value and _dec(value[1]) == pytest.approx(v_b / 0.248, abs=0.001)
     assert message("protocol.sense.cw", "vi") in w2[0]
+    # the crank's end: v_B = ω1·l_AB and a_B = ω1²·l_AB (constant speed), then their segments
+    omega = math.pi * 800 / 30
+    vb = next(t for t in texts if t.startswith("v_B = ω1·l_AB = "))
+    assert _dec(re.search(r"= ([\d,]+) m/s", vb)[1]) == pytest.approx(v_b, abs=0.0005)
+    ab = next(t for t in texts if t.startswith("a_B = ω1²·l_AB = "))
+    assert _dec(re.search(r"= ([\d,]+) m/s²", ab)[1]) == pytest.approx(omega ** 2 * 0.08,
+                                                                        abs=0.0005)
+    pb_eq = next(t for t in texts if t.startswith("pb = v_B/μ = "))
+    assert _dec(re.search(r"= ([\d,]+) mm", pb_eq)[1]) == pytest.approx(v_b / 0.1, abs=0.05)
 
 
 def test_force_tables_equal_the_json(full: Path) -> None:

@@ -121,12 +121,15 @@ def _plan(sol: Any, plan: Plan, k: int, steps: list[tuple[Plan, str, str]],
     out: list[Block] = [Paragraph(f"{title} (μ = {scale_factor(mu, lang)} "
                                   f"{unit(plan.scale_unit, lang)})")]
     measured = segment_table(sol, plan, k)
+    measured = [(n, mm_, mu_, q, v if abs(v) > _ROUNDING else 0.0)
+                for n, mm_, mu_, q, v in measured]
     first = next((r for r in measured if r[1] > 0), None)
-    if first is not None:           # the scale factor from the segment drawn first
+    if first is not None:           # the segment drawn first: its length at the scale factor
         name, mm_, mu_, quantity, value = first
-        out.append(Equation("μ", f"{quantity}/{pole_label(name, lang)}",
-                            f"{sig(value, lang)}/{fmt(mm_, 1, lang)}",
-                            scale_factor(mu_, lang), unit(plan.scale_unit, lang)))
+        out += _drive_vector(sol, plan, quantity, value, lang)
+        out.append(Equation(pole_label(name, lang), f"{quantity}/μ",
+                            f"{sig(value, lang)}/{scale_factor(mu_, lang)}",
+                            fmt(mm_, 1, lang), unit("mm", lang)))
     for (p, group), (eq, rows) in sol.construction.equations.items():
         if p is not plan:
             continue
@@ -150,6 +153,26 @@ def _plan(sol: Any, plan: Plan, k: int, steps: list[tuple[Plan, str, str]],
 
 #: m/s or m/s²: below it a relative velocity or tangential acceleration is written as 0
 _ROUNDING = 1e-9
+
+
+def _drive_vector(sol: Any, plan: Plan, quantity: str, value: float,
+                  lang: str) -> list[Block]:
+    """v_B = ω1·l_AB, a_B = ω1²·l_AB of the crank's end (constant speed), as the plan lays it."""
+    drive = sol.scene.mechanism.drive
+    crank = sol.scene.mechanism.links[drive.link]
+    point = quantity.split("_", 1)[-1]
+    if point not in crank.points or point == drive.pivot:
+        return []
+    length = crank.distance(drive.pivot, point)
+    w = fmt(abs(drive.omega), 3, lang)
+    l_name = f"l_{drive.pivot}{point}"
+    if plan is Plan.VELOCITY and quantity == f"v_{point}":
+        return [Equation(quantity, f"ω{drive.link}·{l_name}", f"{w}·{sig(length, lang)}",
+                         fmt(value, 3, lang), unit("m/s", lang))]
+    if plan is Plan.ACCELERATION and quantity == f"a_{point}" and drive.epsilon == 0:
+        return [Equation(quantity, f"ω{drive.link}²·{l_name}", f"{w}²·{sig(length, lang)}",
+                         fmt(value, 3, lang), unit("m/s²", lang))]
+    return []
 
 
 def _link_of(sol: Any, quantity: str, prefix: str) -> tuple[str, str, str] | None:
