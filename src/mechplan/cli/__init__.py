@@ -171,6 +171,18 @@ def _draw(args: argparse.Namespace) -> int:
     return 2 if failed else 0
 
 
+def _project(args: argparse.Namespace) -> int:
+    from ..note.project import run_project
+
+    formats = tuple(f.strip().lower() for f in args.format.split(",") if f.strip())
+    known = ("docx", "pdf", "svg", "dxf", "png")
+    if not formats or any(f not in known for f in formats):
+        raise MechplanError(f"--format must list some of {', '.join(known)} (got {args.format!r})")
+    for path in run_project(args.project, args.output, formats):
+        print(path)
+    return 0
+
+
 def template_names() -> list[str]:
     """Names of the bundled templates (without ``.toml``)."""
     folder = resources.files("mechplan") / "templates"
@@ -280,6 +292,14 @@ def parser() -> argparse.ArgumentParser:
                    help="measure and embed the system's fonts (e.g. a full CJK font) instead of "
                    "the bundled ones; the sheet then depends on the machine")
     d.set_defaults(func=_draw)
+    pr = sub.add_parser("project", help="a course project: every study's sheets and the note",
+                        description="Solve the studies a project file names and write their "
+                        "sheets and the explanatory note (DOCX, PDF) into the output folder.")
+    pr.add_argument("project", metavar="PROJECT.toml")
+    pr.add_argument("-o", "--output", default=".", help="output folder (default: .)")
+    pr.add_argument("--format", default="docx,pdf,svg,dxf",
+                    help="comma-separated: docx,pdf (the note; pdf also the sheets),svg,dxf,png")
+    pr.set_defaults(func=_project)
     from .batch import add_parser as add_batch
     from .check import add_parser as add_check
 
