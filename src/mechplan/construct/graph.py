@@ -17,17 +17,23 @@ from .terms import Row
 
 @dataclass(frozen=True, slots=True)
 class DriveMap:
-    """Map the scene's crank angle φ to the absolute crank direction θ = ref + sense·φ."""
+    """Map the scene's crank angle φ to the absolute crank direction θ = ref + sense·φ.
+
+    A linear driver (``linear``): the coordinate is a length q (m), passed on as it is.
+    """
 
     ref: float      # rad, direction of φ = 0, counter-clockwise from +x
     sense: int      # +1 counter-clockwise, -1 clockwise
+    linear: bool = False
 
     def absolute(self, phi: Array) -> Array:
         """Return θ for φ (radians)."""
         return self.ref + self.sense * np.asarray(phi, dtype=float)
 
     def scene(self, theta: Array) -> Array:
-        """Return φ in [0, 2π) for θ (radians)."""
+        """Return φ in [0, 2π) for θ (radians); a linear driver's q as it is."""
+        if self.linear:
+            return self.sense * (np.asarray(theta, dtype=float) - self.ref)
         return np.mod(self.sense * (np.asarray(theta, dtype=float) - self.ref), 2.0 * np.pi)
 
 
