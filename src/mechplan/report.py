@@ -35,9 +35,15 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
     theta = sol.construction.drive.absolute(sol.phi)
     failed = {f.k: f for f in sol.failures}
     for k in range(sol.positions):
-        phi_txt = format_number(math.degrees(sol.phi[k]), 2, lang)
-        th_txt = format_number(math.degrees(math.remainder(theta[k], 2 * math.pi)), 2, lang)
-        out += ["", f"## {w['position']} {k}: φ = {phi_txt}° ({w['crank']} {th_txt}° {w['fromx']})"]
+        if sol.scene.mechanism.drive.linear:   # the driver's length: l4 = 1450.0 mm
+            q_txt = format_number(sol.phi[k] * 1000, 1, lang)
+            out += ["", (f"## {w['position']} {k}: {sol.construction['pos.q'].label} = {q_txt} "
+                    f"{unit('mm', lang)}")]
+        else:
+            phi_txt = format_number(math.degrees(sol.phi[k]), 2, lang)
+            th_txt = format_number(math.degrees(math.remainder(theta[k], 2 * math.pi)), 2, lang)
+            out += ["", (f"## {w['position']} {k}: φ = {phi_txt}° ({w['crank']} {th_txt}° "
+                    f"{w['fromx']})")]
         if k in failed:
             out.append(message("estimate.not_built", lang, reason=failed[k].reason))
             continue

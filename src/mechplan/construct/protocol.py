@@ -54,6 +54,11 @@ def _scalar_text(step: Step, value: float, lang: str) -> str:
         if written is Written.OFFSET:
             return f"{number(value * 1000, 1, lang)} {mm(lang)}"
         return f"{number(value, 2, lang)} {unit('N·m', lang)}"
+    if written is Written.LINEAR:        # a linear driver: l (mm), l̇ (m/s), l̈ (m/s²)
+        if step.plan is Plan.POSITION:
+            return f"{number(value * 1000, 1, lang)} {mm(lang)}"
+        rate = "m/s" if step.plan is Plan.VELOCITY else "m/s²"
+        return f"{number(value, 3, lang)} {unit(rate, lang)}"
     if written is Written.ANGLE or step.label.startswith("θ"):
         return f"{number(math.degrees(value), 2, lang)}°"
     rate = "rad/s" if step.plan is Plan.VELOCITY else "rad/s²"

@@ -154,9 +154,9 @@ def _merged_cylinder(mech: Mechanism) -> tuple[Mechanism, dict[Pair, Pair], tupl
         pairs.append(q)
     ends = [p for p in pairs if p.joins(barrel)]
     if len(ends) != 2 or any(p.kind is not PairKind.REVOLUTE for p in ends):
+        names = ", ".join(p.name for p in ends)
         raise TopologyError(f"the cylinder (barrel {barrel}, rod {rod}) must be pinned at both "
-                            f"ends by two revolute pairs (it has {', '.join(p.name for p in ends)})",
-                            key="drive.link")
+                            f"ends by two revolute pairs (it has {names})", key="drive.link")
     links = {k: v for k, v in mech.links.items() if k != rod}
     return replace(mech, links=links, pairs=tuple(pairs)), originals, (barrel, rod)
 

@@ -5,14 +5,12 @@ slider's displacement along its guide from the guide's ``through`` point. Its la
 the acceleration of q, ``speed`` (signed: + extends or moves towards the guide's direction) and
 ``acceleration``, given at every position like a crank's ω1 and ε1. Positions are values of q:
 ``[positions] at = ["1.2 m", …]``, or ``count`` values spread evenly over ``[drive] range``
-(both ends included).
+(both ends included, see ``solve.crank_positions``).
 """
 
 from __future__ import annotations
 
 import math
-
-import numpy as np
 
 from ..model.mechanism import GROUND, Drive, DriverKind, Guide, Link, Pair, PairKind
 from .reader import Table
@@ -89,7 +87,7 @@ def linear_positions(t: Table | None, drive: Drive) -> Positions:
     if t is None:
         if drive.q_range is None:
             raise _no_positions(drive)
-        return Positions(angles=tuple(np.linspace(*drive.q_range, 12).tolist()))
+        return Positions(count=12)
     t.check_keys(("at", "count"))
     if t.has("at"):
         values = t.raw("at")
@@ -103,7 +101,7 @@ def linear_positions(t: Table | None, drive: Drive) -> Positions:
         raise t.error("count", f"must be a whole number ≥ 1 (got {count!r})")
     if drive.q_range is None:
         raise _no_positions(drive)
-    return Positions(angles=tuple(np.linspace(*drive.q_range, count).tolist()))
+    return Positions(count=count)
 
 
 def _no_positions(drive: Drive) -> Exception:
@@ -117,4 +115,6 @@ def _no_positions(drive: Drive) -> Exception:
 def linear_assembly_default(top: Table, drive: Drive) -> float:
     """Where a linear driver's assembly is decided without ``assembly.at``: its first position."""
     positions = linear_positions(top.table("positions"), drive)
-    return positions.angles[0] if positions.angles else math.nan
+    if positions.angles:
+        return positions.angles[0]
+    return drive.q_range[0] if drive.q_range else math.nan

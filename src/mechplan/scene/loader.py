@@ -12,9 +12,9 @@ from ..model.mechanism import GROUND, Drive, DriverKind, Guide, Link, Mechanism,
 from ..model.plans import Plan
 from ..model.structure import analyse
 from .document import parse_toml
+from .drivers import linear_assembly_default, linear_drive, linear_positions
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
 from .loads import gravity_of, loads_of, masses_of
-from .drivers import linear_assembly_default, linear_drive, linear_positions
 from .reader import Table
 from .spec import (
     PLANS,

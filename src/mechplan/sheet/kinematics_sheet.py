@@ -80,7 +80,7 @@ def chords(x: np.ndarray, y: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndar
 def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     """s(φ), v(φ), a(φ) of the output link: exact curves and the graphical differentiation."""
     out = output_link(sol.scene.mechanism)
-    if out is None:
+    if out is None or sol.scene.mechanism.drive.linear:   # diagrams over φ: a crank's turn
         return []
     omega = abs(sol.scene.mechanism.drive.omega)
     sweep_positions = not sol.scene.positions.angles and sol.positions >= 4

@@ -85,17 +85,16 @@ def guide_vector_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> H
 
 # -- the operations -------------------------------------------------------------------------------
 DRIVER_COORDINATE = OpSpec("driver_coordinate", None, "protocol.op.driver_coordinate",
-                           source=Source.DRIVE)
+                           source=Source.DRIVE, written=Written.LINEAR)
 DRIVER_RATE = OpSpec("driver_rate", driver_rate, "protocol.op.driver_rate",
-                     source=Source.POSITIONS)
+                     source=Source.POSITIONS, written=Written.LINEAR)
 CIRCLE_CIRCLE_DRIVEN = OpSpec("circle_circle_driven", circle_circle_driven,
                               "protocol.op.circle_circle_driven", Drawn.POINT, Line.OUTLINE,
                               Grade.POINT, hint_rule=position_hint)
 GUIDE_POINT = OpSpec("guide_point", guide_point, "protocol.op.guide_point", Drawn.POINT,
                      Line.OUTLINE, Grade.POINT, hint_rule=position_hint)
 GUIDE_VECTOR = OpSpec("guide_vector", guide_vector, "protocol.op.guide_vector", Drawn.POINT,
-                      Line.OUTLINE, Grade.POINT, written=Written.PLAIN,
-                      hint_rule=guide_vector_hint)
+                      Line.OUTLINE, Grade.POINT, hint_rule=guide_vector_hint)
 SLIDE_VECTOR = OpSpec("slide_vector", slide_vector, "protocol.op.slide_vector", Drawn.POINT,
                       Line.THIN, Grade.POINT, hint_rule=slide_hint, alias="r")
 

@@ -226,8 +226,8 @@ def acceleration_group(b: Builder, g: Group) -> None:
     images.link_scalar(b, rod, barrel, A, g.name)
     images.absolute(b, k, A, g.name)
     b.c.equations[(A, g.name)] = (
-        f"a_{k} = a_{e} + a^n_{k}{e} + a^k_{k}{e} + a^r_{k}{e} + a^t_{k}{e} "
-        f"= a_{p1} + a^n_{k}{p1} + a^t_{k}{p1}",
+        (f"a_{k} = a_{e} + a^n_{k}{e} + a^k_{k}{e} + a^r_{k}{e} + a^t_{k}{e} "
+        f"= a_{p1} + a^n_{k}{p1} + a^t_{k}{p1}"),
         [(f"a_{e}", GIVEN, "✓"), (f"a^n_{k}{e}", from_to(k, e), f"ω{barrel}²·l_{e}{k}"),
          (f"a^k_{k}{e}", perp(f"{e}{k}"), f"2ω{barrel}·v_{k}{rod}{k}{barrel}"),
          (f"a^r_{k}{e}", parallel(f"{e}{k}"), b.c["acc.rate"].label),
