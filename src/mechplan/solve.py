@@ -111,6 +111,12 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
     return np.mod(start + np.arange(n) * 2.0 * math.pi / n, 2.0 * math.pi)
 
 
+def shown_coordinate(scene: Scene, q: float) -> float:
+    """A driver's coordinate as positions are asked for (``solve(at_deg=…)``): φ in degrees, or
+    a linear driver's length in millimetres."""
+    return q * 1000.0 if scene.mechanism.drive.linear else math.degrees(q)
+
+
 def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[str]:
     """Step ids of the results a scene asks for (their ancestors are all that is evaluated)."""
     points = scene.points_of_interest or tuple(
@@ -274,4 +280,4 @@ def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, f
 
 
 __all__ = ["SegmentKind", "Solution", "crank_positions", "position_count", "segment_table",
-           "solve", "to_json"]
+           "shown_coordinate", "solve", "to_json"]

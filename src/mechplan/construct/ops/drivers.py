@@ -96,7 +96,7 @@ GUIDE_POINT = OpSpec("guide_point", guide_point, "protocol.op.guide_point", Draw
 GUIDE_VECTOR = OpSpec("guide_vector", guide_vector, "protocol.op.guide_vector", Drawn.POINT,
                       Line.OUTLINE, Grade.POINT, hint_rule=guide_vector_hint)
 SLIDE_VECTOR = OpSpec("slide_vector", slide_vector, "protocol.op.slide_vector", Drawn.POINT,
-                      Line.THIN, Grade.POINT, hint_rule=slide_hint, alias="r")
+                      Line.THIN, Grade.POINT, hint_rule=slide_hint)
 
 __all__ = ["CIRCLE_CIRCLE_DRIVEN", "DRIVER_COORDINATE", "DRIVER_RATE", "GUIDE_POINT",
            "GUIDE_VECTOR", "SLIDE_VECTOR"]
