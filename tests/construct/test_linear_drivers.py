@@ -107,3 +107,103 @@ def test_slider_driven_coulisse(k):
     assert ev[c.omega("3")][k] == pytest.approx(v[4], rel=1e-6)
     assert np.allclose(ev[c.acceleration_image("E")][k], acc[2:4], rtol=1e-4, atol=1e-5)
     assert ev[c.epsilon("3")][k] == pytest.approx(acc[4], rel=1e-4, abs=1e-5)
+
+
+# -- the fused kernel and the error estimates -----------------------------------------------------
+KINEMATIC = ("position", "velocity", "acceleration")
+
+
+def _sweep(scene, n=181):
+    lo, hi = scene.mechanism.drive.q_range
+    return np.linspace(lo, hi, n)
+
+
+@pytest.mark.parametrize("stem", ["excavator_boom", "slider_coulisse"])
+def test_kernel_equals_the_numpy_path_and_estimates_are_tiny(stem):
+    from mechplan.construct.estimate import estimate_errors
+    from mechplan.construct.kernel import compile_kernel
+    from mechplan.solve import build, targets_for
+
+    scene = load_scene(TEMPLATES / f"{stem}.toml")
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    q = _sweep(scene)
+    ev = c.evaluate(q)
+    ev.evaluate_all(targets)
+    est = estimate_errors(c, ev, targets)
+    values, rel, bad = compile_kernel(c, targets, jit=False)(q)
+    assert not bad.any()
+    for sid in targets:
+        # within a few roundings of the value's size: math.atan2 in the loop and np.arctan2
+        # outside it may differ in the last bit, and what is built on an angle inherits that
+        size = max(float(np.max(np.abs(ev[sid]))), est.scale[sid])
+        assert np.max(np.abs(values[sid] - ev[sid])) <= 4e-16 * size * 4, sid
+        assert np.allclose(rel[sid], est.relative(sid), rtol=1e-5, atol=0), sid
+    # measured against the driver's rate (|q̇|, |q̈| + q̇²/L): the boom's tip moves ~8× faster
+    # than the rod, so the bound is looser than a crank template's 1e-12
+    assert max(float(np.max(est.relative(sid))) for sid in targets) < 1e-11
+
+
+def test_numba_kernel_handles_the_cylinder(tmp_path, monkeypatch):
+    pytest.importorskip("numba", reason="the fast extra (numba) is optional")
+    from mechplan.construct.kernel import compile_kernel
+    from mechplan.solve import build, targets_for
+
+    monkeypatch.setenv("MECHPLAN_CACHE", str(tmp_path))
+    scene = load_scene(TEMPLATES / "excavator_boom.toml")
+    _, c = build(scene, KINEMATIC)
+    targets = targets_for(scene, c, KINEMATIC)
+    q = _sweep(scene, 50)
+    ev = c.evaluate(q)
+    values, _rel, bad = compile_kernel(c, targets, jit=True)(q)
+    assert not bad.any()
+    for sid in targets:
+        assert np.allclose(values[sid], ev[sid], rtol=1e-14, atol=1e-14), sid
+
+
+# -- what cannot be built is said, never returned -------------------------------------------------
+def test_a_cylinder_too_short_to_reach_is_refused_naming_the_group():
+    from mechplan.errors import UnreachableError
+
+    scene = load_scene(TEMPLATES / "excavator_boom.toml")
+    # |OA| = 0.721 m and |OB| = 1.5 m: the cylinder must be at least 0.779 m long
+    with pytest.raises(UnreachableError, match=r"II\(2,3\)"):
+        solve(scene, at_deg=[700.0])
+    ok = solve(scene, at_deg=[800.0])
+    assert ok.positions == 1
+
+
+@pytest.mark.parametrize("d", [1e-3, 1e-6, 1e-9, 1e-12])
+def test_near_the_stretched_toggle_the_estimate_bounds_the_true_error(d):
+    """ω2 → ∞ as the cylinder nears its full reach |OA| + |OB|: each value is checked against a
+    60-digit closed form, and its estimated error must cover the true one (never silently wrong)."""
+    import mpmath as mp
+
+    from mechplan.errors import SingularError, UnreachableError
+
+    mp.mp.dps = 60
+    scene = load_scene(TEMPLATES / "excavator_boom.toml")
+    oa, r = mp.sqrt(mp.mpf(0.6) ** 2 + mp.mpf(0.4) ** 2), mp.mpf("1.5")
+    length_mm = 1000 * (float(oa + r) - d)
+    try:
+        sol = solve(scene, at_deg=[length_mm])
+    except SingularError as exc:           # too close to tell: refused, and said where
+        assert d <= 1e-9 and "the driver's coordinate" in str(exc) and "mm" in str(exc)
+        return
+    c = sol.construction
+    length = mp.mpf(float(sol.phi[0]))      # the length the construction was given, exactly
+    # B by the law of cosines in triangle OAB, on the side the scene assembles it (θ2 > θ_OA)
+    gamma = mp.acos((oa ** 2 + r ** 2 - length ** 2) / (2 * oa * r))
+    theta = mp.atan2(mp.mpf(-0.4), mp.mpf(0.6)) + gamma
+    b = mp.matrix([r * mp.cos(theta), r * mp.sin(theta)])
+    ba = b - mp.matrix([mp.mpf(0.6), mp.mpf(-0.4)])
+    # d|AB|/dθ2 = (B − A)·(r e⊥)/l, so ω2 = l̇·l / ((B − A)·(−r sin θ, r cos θ))
+    rate = ba[0] * (-r * mp.sin(theta)) + ba[1] * (r * mp.cos(theta))
+    omega = mp.mpf(scene.mechanism.drive.omega) * length / rate
+    got = float(sol.ev[c.omega("2")][0])
+    true_error = abs(mp.mpf(got) - omega) / abs(omega)
+    estimate = float(sol.estimate.relative(c.omega("2"))[0])
+    assert true_error <= max(estimate, 1e-15), (true_error, estimate)
+    assert abs(got) > 1.0 / math.sqrt(d) * 0.05           # it does grow without bound
+    with pytest.raises(UnreachableError, match=r"II\(2,3\)"):
+        solve(scene, at_deg=[1000 * (float(oa + r) + 0.01)])

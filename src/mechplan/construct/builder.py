@@ -66,7 +66,7 @@ class Builder:
         self.file = file
         self.assembly_phi = assembly_phi
         drive = mech.drive
-        self.c = Construction(DriveMap(drive.ref_angle, drive.sense, drive.linear))
+        self.c = Construction(DriveMap(drive.ref_angle, drive.sense, drive.linear, drive.q_range))
         self.pos: dict[str, str] = {}
         self.vel: dict[str, str] = {}
         self.acc: dict[str, str] = {}

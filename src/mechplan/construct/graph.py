@@ -25,6 +25,14 @@ class DriveMap:
     ref: float      # rad, direction of φ = 0, counter-clockwise from +x
     sense: int      # +1 counter-clockwise, -1 clockwise
     linear: bool = False
+    #: a linear driver's range of q (m): where the mechanism's size is sampled
+    span: tuple[float, float] | None = None
+
+    def samples(self, n: int) -> Array:
+        """n driver coordinates over a turn (a crank) or over the range (a linear driver)."""
+        if self.linear and self.span is not None:
+            return np.linspace(self.span[0], self.span[1], n)
+        return np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
 
     def absolute(self, phi: Array) -> Array:
         """Return θ for φ (radians)."""

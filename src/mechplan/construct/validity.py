@@ -74,6 +74,29 @@ def unreachable_intervals(c: Construction, step_id: str, samples: int = 3600,
     return intervals
 
 
+def _at(c: Construction, q: float) -> str:
+    """Where a position is, in the driver's coordinate: φ = 30°, or a linear driver's length."""
+    if c.drive.linear:
+        return f"the driver's coordinate {q * 1000:g} mm"
+    return f"φ = {math.degrees(q):g}°"
+
+
+def _linear_unreachable(c: Construction, step_id: str, samples: int = 3600
+                        ) -> list[tuple[float, float]]:
+    """Sub-ranges (mm) of a linear driver's range where a meet has no solution (sampled)."""
+    q = c.drive.samples(samples)
+    bad = _gap_function(c, step_id)(q) > 0
+    out: list[tuple[float, float]] = []
+    start = None
+    for i, b in enumerate(bad):
+        if b and start is None:
+            start = i
+        if start is not None and (not b or i == len(bad) - 1):
+            out.append((float(q[start]) * 1000, float(q[i if b else i - 1]) * 1000))
+            start = None
+    return out
+
+
 def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
                  max_condition: float = MAX_CONDITION) -> None:
     """Raise for the first position a user asked for that cannot be built or is singular."""
@@ -82,6 +105,14 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             step = c[sid]
             k = int(np.argmax(ev.gaps[sid] > 0))
             phi_deg = math.degrees(ev.phi[k])
+            if c.drive.linear:      # a cylinder or slider: its range, in mm
+                intervals = _linear_unreachable(c, sid)
+                span = ", ".join(f"{a:g}…{b:g} mm" for a, b in intervals) or "none of its range"
+                raise UnreachableError(
+                    f"group {step.group} cannot be assembled at {_at(c, float(ev.phi[k]))}: "
+                    f"point {step.label} misses by {ev.gaps[sid][k] * 1000:.6g} mm; within the "
+                    f"driver's range it cannot close for {span}", group=step.group,
+                    intervals_deg=intervals, gap=float(ev.gaps[sid][k]), file=file)
             intervals = [
                 (math.degrees(a), math.degrees(b)) for a, b in unreachable_intervals(c, sid)
             ]
@@ -103,7 +134,7 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             k = int(np.argmax(bad))
             raise SingularError(
                 f"{step.plan.value} plan, group {step.group or 'I'}: the loci meeting at "
-                f"{step.label} are parallel or nearly so at φ = {math.degrees(ev.phi[k]):g}° "
+                f"{step.label} are parallel or nearly so at {_at(c, float(ev.phi[k]))} "
                 f"(condition number {cond[k]:.3g} > {max_condition:.0e}; a toggle or change "
                 "point); choose another position", step=step.label,
                 phi_deg=math.degrees(ev.phi[k]), condition=float(cond[k]), file=file)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 
 from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
@@ -64,6 +65,9 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
                             key=exc.key) from None
     all_points = {p for link in links.values() for p in link.points}
     positions = _positions(top, drive, all_points, links)
+    if drive.linear and drive.q_range is None:      # the listed lengths span the range
+        drive = replace(drive, q_range=(min(positions.angles), max(positions.angles)))
+        mech = replace(mech, drive=drive)
     masses = masses_of(top, links)
     plans, interest = _analysis(top, all_points)
     if not top.has("analysis") and (masses or top.raw("loads")):
