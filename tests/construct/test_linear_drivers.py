@@ -207,3 +207,38 @@ def test_near_the_stretched_toggle_the_estimate_bounds_the_true_error(d):
     assert abs(got) > 1.0 / math.sqrt(d) * 0.05           # it does grow without bound
     with pytest.raises(UnreachableError, match=r"II\(2,3\)"):
         solve(scene, at_deg=[1000 * (float(oa + r) + 0.01)])
+
+
+def test_a_cylinder_mounted_the_other_way_moves_the_boom_alike():
+    """Barrel pinned to the boom at B, rod to the frame at A: the same length law moves the boom
+    exactly as the template's cylinder (barrel on the frame) does; the barrel's own point C, now
+    at 1.2 m from B towards A, follows the finite differences of its position."""
+    from mechplan.scene import parse_scene
+
+    text = (TEMPLATES / "excavator_boom.toml").read_text(encoding="utf-8")
+    flipped = text.replace(
+        'points = { A = ["0 mm", "0 mm"], C = ["1200 mm", "0 mm"] }\n'
+        'guides.bore = { through = "A", toward = "C" }',
+        'points = { B = ["0 mm", "0 mm"], C = ["1200 mm", "0 mm"] }\n'
+        'guides.bore = { through = "B", toward = "C" }').replace(
+        'slides = { point = "B", on = "bore" }', 'slides = { point = "A", on = "bore" }')
+    assert flipped != text
+    a, b = solve(load_scene(TEMPLATES / "excavator_boom.toml")), solve(parse_scene(flipped, "f"))
+    assert b.structure.formula == "I(3,4) → II(2,3)"
+    for of, key in (("position", "D"), ("velocity_image", "D"), ("acceleration_image", "D"),
+                    ("omega", "2"), ("epsilon", "2"), ("omega", "3"), ("epsilon", "3")):
+        assert np.allclose(b.ev[getattr(b.construction, of)(key)],
+                           a.ev[getattr(a.construction, of)(key)], rtol=1e-13, atol=1e-14)
+    drive = b.scene.mechanism.drive
+    for k in range(b.positions):
+        truth = _boom_truth(float(b.phi[k]), drive.omega, drive.epsilon)
+
+        def c_point(t, truth=truth):
+            x = truth(t)
+            bb, aa = x[0:2], np.array([0.6, -0.4])
+            return bb + 1.2 * (aa - bb) / np.hypot(*(aa - bb))
+        x, v, acc = _fd(c_point)
+        c = b.construction
+        assert np.allclose(b.ev[c.position("C")][k], x, atol=1e-12)
+        assert np.allclose(b.ev[c.velocity_image("C")][k], v, rtol=1e-6, atol=1e-8)
+        assert np.allclose(b.ev[c.acceleration_image("C")][k], acc, rtol=1e-4, atol=1e-6)

@@ -149,14 +149,16 @@ def balancing_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
     return d.panel
 
 
-def small_plan(panel: Panel, k: int, phi_deg: float, lang: str) -> Panel:
+def small_plan(panel: Panel, k: int, phi_deg: float | str, lang: str) -> Panel:
     """A velocity plan without its tables, titled by its position only."""
     keep: list[Primitive | Table] = [
         p for p in panel.primitives if not isinstance(p, Table)
         and not (isinstance(p, Text) and p.height_mm in (TABLE_H, TITLE_H))]
     out = Panel(panel.name, keep)
     x0, _y0, _x1, y1 = out.bounds()
-    title = message("layout.plan.small_title", lang, position=k, phi=number(phi_deg, 1, lang))
+    title = (message("drivers.small_title", lang, position=k, at=phi_deg)   # a linear driver
+             if isinstance(phi_deg, str) else
+             message("layout.plan.small_title", lang, position=k, phi=number(phi_deg, 1, lang)))
     out.primitives.append(Text((x0, y1 + 2.0), title, TABLE_H + 1.0))
     return out
 

@@ -455,8 +455,11 @@ def _pivot(p: tuple[float, float]) -> list[Primitive]:
     return out
 
 
-def plan_title(plan: Plan, lang: str, k: int, phi_deg: float, group: str | None = None) -> str:
-    """ "Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
+def plan_title(plan: Plan, lang: str, k: int, phi_deg: float | str,
+               group: str | None = None) -> str:
+    """ "Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon); ``phi_deg`` a
+    text: a linear driver's coordinate ("l4 = 1562.5 mm")."""
     head = plan_name(plan, lang) + (f" {group}" if group else "")
     position = message("sheet.position", lang)
-    return f"{head} — {position} {k}, φ = {format_number(phi_deg, 1, lang)}°"
+    at = phi_deg if isinstance(phi_deg, str) else f"φ = {format_number(phi_deg, 1, lang)}°"
+    return f"{head} — {position} {k}, {at}"
