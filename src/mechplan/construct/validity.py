@@ -107,12 +107,15 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             phi_deg = math.degrees(ev.phi[k])
             if c.drive.linear:      # a cylinder or slider: its range, in mm
                 intervals = _linear_unreachable(c, sid)
-                span = ", ".join(f"{a:g}…{b:g} mm" for a, b in intervals) or "none of its range"
+                span = ", ".join(f"{a:g}…{b:g} mm" for a, b in intervals)
+                lo, hi = (c.drive.span or (math.nan, math.nan))
+                where = (f"within the driver's range it cannot close for {span}" if span else
+                         f"it closes over the driver's range {lo * 1000:g}…{hi * 1000:g} mm")
                 raise UnreachableError(
                     f"group {step.group} cannot be assembled at {_at(c, float(ev.phi[k]))}: "
-                    f"point {step.label} misses by {ev.gaps[sid][k] * 1000:.6g} mm; within the "
-                    f"driver's range it cannot close for {span}", group=step.group,
-                    intervals_deg=intervals, gap=float(ev.gaps[sid][k]), file=file)
+                    f"point {step.label} misses by {ev.gaps[sid][k] * 1000:.6g} mm; {where}",
+                    group=step.group, intervals_deg=intervals, gap=float(ev.gaps[sid][k]),
+                    file=file)
             intervals = [
                 (math.degrees(a), math.degrees(b)) for a, b in unreachable_intervals(c, sid)
             ]
