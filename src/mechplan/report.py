@@ -141,6 +141,16 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     mb, mz = float(fa.balancing_moment[k]), float(fa.zhukovsky_moment[k])
     role = w[3] if fa.driving(k) else w[4]
     link = sol.scene.mechanism.drive.link
+    if fa.linear:       # a cylinder or slider: its driving force (two ways), F_red and m_red
+        n = unit("N", lang)
+        pct = scientific(float(fa.difference_percent[k]), 3, lang)
+        return out + [
+            message("drivers.force", lang, link=link, F=format_number(mb, 3, lang), unit=n,
+                    role=role),
+            f"  {w[5]}: F_d = {format_number(mz, 3, lang)} {n}; {w[6]} {pct} %",
+            f"  {w[7]}: F_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {n}",
+            (f"  {w[8]}: m_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
+            f"{unit('kg', lang)}")]
     sense = sense_text(mb, lang)
     nm = unit("N·m", lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} {nm} ({sense}; {role})")

@@ -62,7 +62,8 @@ def test_a_cylinder_rod_must_slide_in_a_barrel():
 def test_the_barrels_guide_must_start_at_its_pivot():
     text = BOOM.replace('guides.bore = { through = "A", toward = "C" }',
                         'guides.bore = { through = "C", toward = "A" }')
-    with pytest.raises(SceneError, match=r"must pass through the barrel's pivot .*passes through C"):
+    with pytest.raises(SceneError,
+                       match=r"must pass through the barrel's pivot .*passes through C"):
         parse_scene(text, "g.toml")
 
 

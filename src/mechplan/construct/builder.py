@@ -172,12 +172,6 @@ class Builder:
             acceleration.emit_drive(self)
             for group in self.structure.groups:
                 drivers.acceleration_group(self, group)
-        if "force" in plans and self.loading is not None and self.mech.drive.linear:
-            raise SceneError(f"the force plan of a mechanism driven by a "
-                             f"{self.mech.drive.kind.value} (link {self.mech.drive.link}) is not "
-                             "constructed yet: its driving force replaces the balancing moment; "
-                             "ask for the kinematic plans only ([analysis] plans)",
-                             file=self.file, key="drive.kind")
         if "force" in plans and self.loading is not None:
             from .plans import force
             force.emit(self)

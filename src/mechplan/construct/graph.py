@@ -160,15 +160,24 @@ class Construction:
         """Return the step id of M_b found by Zhukovsky's lever (N·m)."""
         return self._named("M_b_zhukovsky")
 
+    def driving_force(self) -> str:
+        """Return the step id of a linear driver's driving force F_d (N, + pushing q up)."""
+        return self._named("F_d")
+
+    def zhukovsky_force(self) -> str:
+        """Return the step id of F_d found by Zhukovsky's lever (N)."""
+        return self._named("F_d_zhukovsky")
+
     def link_results(self) -> list[str]:
         """Step ids of every link's angle, ω and ε, in construction order."""
         return [sid for key, sid in self.results.items()
                 if key.split("_")[0] in ("angle", "omega", "epsilon")]
 
     def force_results(self) -> list[str]:
-        """Step ids of the balancing moments, reactions and guide offsets."""
+        """Step ids of the balancing moments (or driving forces), reactions and guide offsets."""
         return [sid for key, sid in self.results.items()
-                if key in ("M_b", "M_b_zhukovsky") or key.startswith(("R_", "d_"))]
+                if key in ("M_b", "M_b_zhukovsky", "F_d", "F_d_zhukovsky")
+                or key.startswith(("R_", "d_"))]
 
     def _named(self, key: str) -> str:
         try:

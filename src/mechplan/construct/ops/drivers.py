@@ -70,6 +70,27 @@ def slide_vector(step: Step, start: Array, rate: Array, p: Array, q: Array) -> R
     return start + scaled(rate, unit(q - p)), None, None
 
 
+def _axis(step: Step, axis: tuple[Array, ...], like: Array) -> Array:
+    """The driver's axis: unit(q − p) of two points, or the frame guide's ``dir_angle``."""
+    if axis:
+        return unit(axis[1] - axis[0])
+    u = direction(np.asarray(step.param("dir_angle"), dtype=like.dtype))
+    return np.broadcast_to(u, like.shape)
+
+
+def driving_force(step: Step, force: Array, *axis: Array) -> Result:
+    """The driving force: the component of the pair's whole force along the driver's axis (N)."""
+    u = _axis(step, axis, force)
+    return force[..., 0] * u[..., 0] + force[..., 1] * u[..., 1], None, None
+
+
+def normal_force(step: Step, force: Array, *axis: Array) -> Result:
+    """The pair's reaction: its whole force less the driving force along the axis (⊥ the axis)."""
+    u = _axis(step, axis, force)
+    along = force[..., 0] * u[..., 0] + force[..., 1] * u[..., 1]
+    return force - scaled(along, u), None, None
+
+
 # -- check rules ----------------------------------------------------------------------------------
 def slide_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
     """The rod's motion in the barrel: ∥ the cylinder, of the length its law gives."""
@@ -106,5 +127,10 @@ GUIDE_VECTOR = OpSpec("guide_vector", guide_vector, "protocol.op.guide_vector", 
 SLIDE_VECTOR = OpSpec("slide_vector", slide_vector, "protocol.op.slide_vector", Drawn.POINT,
                       Line.THIN, Grade.POINT, lever=("p", "q"), hint_rule=slide_hint)
 
-__all__ = ["CIRCLE_CIRCLE_DRIVEN", "DRIVER_COORDINATE", "DRIVER_RATE", "GUIDE_POINT",
-           "GUIDE_VECTOR", "SLIDE_VECTOR"]
+DRIVING_FORCE = OpSpec("driving_force", driving_force, "protocol.op.driving_force",
+                       grade=Grade.VALUE, written=Written.LINEAR)
+NORMAL_FORCE = OpSpec("normal_force", normal_force, "protocol.op.normal_force", Drawn.VECTOR,
+                      Line.OUTLINE)
+
+__all__ = ["CIRCLE_CIRCLE_DRIVEN", "DRIVER_COORDINATE", "DRIVER_RATE", "DRIVING_FORCE",
+           "GUIDE_POINT", "GUIDE_VECTOR", "NORMAL_FORCE", "SLIDE_VECTOR"]
