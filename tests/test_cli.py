@@ -100,6 +100,32 @@ def test_new_copies_a_template(tmp_path, capsys):
     assert run(["new", "shaper", "-o", str(dest)], capsys)[0] == 2
 
 
+def test_new_into_a_folder_named_with_a_trailing_slash(tmp_path, capsys, monkeypatch):
+    """Issue 35: `new X -o sub/` writes sub/X.toml (the folder made), never a file named sub."""
+    monkeypatch.chdir(tmp_path)
+    code, _out, _ = run(["new", "four_bar", "-o", "sub/"], capsys)
+    assert code == 0 and (tmp_path / "sub").is_dir()
+    assert (tmp_path / "sub" / "four_bar.toml").read_text() == \
+        (ROOT / "templates" / "four_bar.toml").read_text()
+    (tmp_path / "afile").write_text("x")
+    code, _, err = run(["new", "four_bar", "-o", "afile/"], capsys)
+    assert code == 2 and "is a file" in err and (tmp_path / "afile").read_text() == "x"
+
+
+@pytest.mark.parametrize("command", ["batch", "sweep", "check"])
+def test_jobs_and_workers_are_one_option(command):
+    """Issue 35: --jobs (as the README writes it), -j and --workers mean the same everywhere."""
+    from mechplan.cli import parser
+
+    extra = {"batch": ["t.toml", "v.csv", "-o", "o"],
+             "sweep": ["t.toml", "--vary", "a=1..2:2", "-o", "o"],
+             "check": ["t.toml", "s.dxf"]}[command]
+    dest = "jobs" if command == "check" else "workers"
+    for spelling in ("--jobs", "-j", "--workers"):
+        args = parser().parse_args([command, *extra, spelling, "3"])
+        assert getattr(args, dest) == 3, spelling
+
+
 def test_solve_json_carries_forces_and_reduced_values(capsys):
     _code, out, _ = run(["solve", str(ROOT / "templates" / "v_engine.toml"), "--json"], capsys)
     pos = json.loads(out)["positions"][0]

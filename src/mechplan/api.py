@@ -12,6 +12,7 @@ Examples
 from __future__ import annotations
 
 import dataclasses
+import math
 import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -43,6 +44,9 @@ SceneSource = str | os.PathLike[str] | Mapping[str, Any]
 
 
 _KINEMATIC = ("position", "velocity", "acceleration")
+_MAX_ANGLE_DEG = 1e6        # limits.MAX_ANGLE_DEG (checked by tests/api)
+_RADIANS = math.pi / 180.0
+_TOLERANCE = 1e-6           # construct.estimate.DEFAULT_TOLERANCE (checked by tests/api)
 
 
 class Mechanism:
@@ -58,6 +62,8 @@ class Mechanism:
         self.scene = scene
         self._built: dict[tuple[str, ...], tuple[Structure, Construction]] = {}
         self._fast = FastPath(scene)
+        #: the prepared kernel of the default call at one angle (None: not yet; False: none)
+        self._one: Any = None
         self._chosen: dict[object, tuple[str, ...]] = {}
         self._asked: dict[tuple[object, object], tuple[tuple[str, ...] | None, ...]] = {}
 
@@ -151,6 +157,11 @@ class Mechanism:
             Bad arguments, positions where the mechanism cannot be assembled or is singular, or
             a position count over the memory budget.
         """
+        if (type(phi_deg) is float or type(phi_deg) is int) and positions is None \
+                and plans is None and points is None and links is None and fast is not False:
+            quick = self._solve_one(float(phi_deg))        # the default call at one angle
+            if quick is not None:
+                return quick
         from .solve import solve
 
         if phi_deg is not None and positions is not None:
@@ -222,6 +233,41 @@ class Mechanism:
         self._asked[key] = key                               # type: ignore[assignment]
         return key
 
+
+    def _solve_one(self, phi_deg: float) -> Solution | None:
+        """The default call at one crank angle on the fused kernel, with none of the general
+        path's argument handling (the same kernel, values, estimates and flags); None when the
+        general path must answer (no kernel, a force plan, an angle it refuses, a position the
+        kernel cannot build or trust)."""
+        if not abs(phi_deg) <= _MAX_ANGLE_DEG:        # nan too: the general path says why
+            return None
+        one = self._one
+        if one is None:
+            chosen = self._plans(None)
+            prepared = None
+            if "force" not in chosen:
+                prepared = self._fast.prepare(self._build(chosen)[1], chosen, None, None)
+            self._one = one = prepared if prepared is not None else False
+        if one is False:
+            return None
+        at = np.array([phi_deg * _RADIANS])
+        block, _rel, _bad, status = one.kernel.run(at, _TOLERANCE, store=False)
+        flagged: tuple[tuple[int, str, str, float], ...] = ()
+        if status:                  # not buildable, untrusted or flagged: as the fused path says
+            result = self._fast.evaluate(one, at)
+            if result is None:
+                return None
+            block, flagged = result.block, result.flagged
+        block.flags.writeable = False
+        cols = one.columns
+        phi = np.array([phi_deg])
+        phi.flags.writeable = False
+        return Solution(phi, _Columns(block, cols["r"], "position"),
+                        _Columns(block, cols["v"], "velocity"),
+                        _Columns(block, cols["a"], "acceleration"),
+                        _Columns(block, cols["angle"], "angle"),
+                        _Columns(block, cols["omega"], "omega"),
+                        _Columns(block, cols["epsilon"], "epsilon"), None, flagged)
 
     def _solve_fast(self, chosen: tuple[str, ...], at: np.ndarray | None,
                     positions: int | None,

@@ -48,8 +48,12 @@ class ByName(Mapping[str, V]):
 class _Columns(ByName[np.ndarray]):
     """A :class:`ByName` over the columns of one read-only block: views made on first access."""
 
+    __slots__ = ("_block", "_values", "_views", "_what")
+
     def __init__(self, block: np.ndarray, columns: dict[str, slice | int], what: str) -> None:
-        super().__init__(columns, what)    # type: ignore[arg-type]
+        # ByName's fields set here directly: six of these are made per solve call
+        self._values = columns          # type: ignore[assignment]
+        self._what = what
         self._block = block
         self._views: dict[str, np.ndarray] = {}
 

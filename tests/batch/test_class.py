@@ -104,3 +104,19 @@ def test_cli_batch_exit_code(tmp_path, capsys):
     assert "1 solved, 0 complete already, 1 failed" in capsys.readouterr().out
     code = main(["batch", str(SLIDER), str(tmp_path / "missing.csv"), "-o", str(tmp_path)])
     assert code == 2
+
+
+def test_a_students_scene_reads_like_the_template(klass):
+    """Issue 35: only the changed numbers differ; comments, [[loads]] and layout are kept."""
+    out, _ = klass
+    template = SLIDER.read_text(encoding="utf-8").splitlines()
+    scene = (out / "s2" / "scene.toml").read_text(encoding="utf-8").splitlines()
+    assert scene[0].startswith("# s2") and "Mai" in scene[0]
+    body = scene[1:]
+    assert len(body) == len(template)
+    changed = [(a, b) for a, b in zip(template, body, strict=True) if a != b]
+    assert len(changed) == 2, changed
+    assert any("110 mm" in b and "OA" in b for _, b in changed)
+    assert any("1200 rpm" in b for _, b in changed)
+    assert sum(line.lstrip().startswith("#") for line in body) == \
+        sum(line.lstrip().startswith("#") for line in template) > 0

@@ -24,7 +24,7 @@ from ..render.atomic import write_atomic
 from ..scene.document import parse_toml, read_text
 from .csvsafe import csv_safe_row
 from .engine import check_scheduler, run_tasks
-from .keys import with_values
+from .keys import edited_text, with_values
 from .outdir import locked, prepare_output, remove_stale, subfolder
 from .variants import Variant
 
@@ -60,15 +60,13 @@ class ClassResult:
 def variant_scene(job: ClassJob, variant: Variant) -> str:
     """Return the TOML text of a variant's scene: the template with the variant's values set.
 
-    The values are written by tomli-w; the id and name only in the first comment line, with
-    every character that is not printable escaped — data, never TOML source.
+    The template's text is edited in place (its comments, order and layout kept; see
+    :func:`edited_text`); the id and name only in the first comment line, with every character
+    that is not printable escaped — data, never TOML source.
     """
-    import tomli_w
-
-    doc = parse_toml(job.template_text, job.template_file)
     header = f"# {_comment(variant.id)}" + (f" — {_comment(variant.name)}" if variant.name
                                              else "") + "\n"
-    return header + tomli_w.dumps(with_values(doc, variant.values, job.template_file))
+    return header + edited_text(job.template_text, variant.values, job.template_file)
 
 
 def _comment(text: str) -> str:

@@ -46,10 +46,38 @@ def angle_deg(text: str) -> float:
         raise argparse.ArgumentTypeError(exc.detail) from None
 
 
+#: a report of more positions than this is first measured on one position (see below)
+REPORT_PROBE_FROM = 2000
+
+
+def _ensure_report_fits(args: argparse.Namespace) -> None:
+    """Refuse, before solving, a linkage report (JSON or text) of more positions than the memory
+    budget holds: one position is solved and its JSON measured (well under a second)."""
+    from ..scene.document import parse_toml, read_text, scene_kind
+
+    text = read_text(args.scene)
+    if args.at or scene_kind(parse_toml(text, args.scene), args.scene) != "mechanism":
+        return
+    from ..limits import ensure_report_within_budget
+    from ..scene import parse_scene
+    from ..solve import position_count
+    from ..studies import solve_text
+
+    n = position_count(parse_scene(text, args.scene), args.positions)
+    if n <= REPORT_PROBE_FROM:
+        return
+    probe = solve_text(text, args.scene, count=1, data_dir=args.data_dir)
+    first = probe.to_json()["positions"][0]
+    ensure_report_within_budget(n, len(json.dumps(first, ensure_ascii=False, indent=1)),
+                                file=args.scene,
+                                key="--positions" if args.positions else "positions.count")
+
+
 def _solve(args: argparse.Namespace) -> int:
     from ..studies import solve_file
     from ..studies.mechanism import MechanismStudy
 
+    _ensure_report_fits(args)
     study = solve_file(args.scene, at_deg=args.at, count=args.positions, data_dir=args.data_dir)
     if isinstance(study, MechanismStudy) and (args.sheet or args.standard):
         # the scale factors (μ, segment lengths) of the sheet `mechplan draw --sheet` draws
@@ -119,9 +147,12 @@ def _draw(args: argparse.Namespace) -> int:
                     print(written)
         except MechplanError as exc:
             failed += 1
-            print(f"mechplan: error: {exc}", file=sys.stderr)
+            print(say_error(exc, error_language(args, path)), file=sys.stderr)
     if failed and len(args.scenes) > 1:
-        print(f"mechplan: {failed} of {len(args.scenes)} scenes failed", file=sys.stderr)
+        from ..i18n import message
+
+        print(message("errors.cli.scenes_failed", error_language(args), failed=failed,
+                      total=len(args.scenes)), file=sys.stderr)
     return 2 if failed else 0
 
 
@@ -151,9 +182,21 @@ def _new(args: argparse.Namespace) -> int:
         raise MechplanError("name a template (see mechplan new --list), e.g. mechplan new "
                             "four_bar")
     text = _template_text(args.template)
-    dest = Path(args.output or f"{args.template.removesuffix('.toml')}.toml")
-    if dest.is_dir():
-        dest = dest / f"{args.template.removesuffix('.toml')}.toml"
+    name = f"{Path(args.template).name.removesuffix('.toml')}.toml"
+    dest = Path(args.output or name)
+    # "-o sub/" (a trailing separator) or an existing folder: write into that folder
+    into = bool(args.output) and args.output.endswith(("/", os.sep))
+    if into or dest.is_dir():
+        if dest.exists() and not dest.is_dir():
+            raise MechplanError(f"{dest} is a file, not a folder; -o {args.output} asks to write "
+                                "into a folder")
+        try:
+            dest.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            from ..errors import os_reason
+
+            raise MechplanError(f"cannot create the folder {dest}: {os_reason(exc)}") from None
+        dest = dest / name
     if dest.exists():
         raise MechplanError(f"{dest} exists already; choose another name with -o")
     from ..render.atomic import write_atomic
@@ -241,13 +284,43 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
+def error_language(args: argparse.Namespace, scene: str | None = None) -> str:
+    """The language errors are said in: ``--lang``, else the ``language`` of the scene (by
+    default the command's first) when it can be read, else English."""
+    lang = getattr(args, "lang", None)
+    if lang in LANGUAGES:
+        return str(lang)
+    scene = scene or getattr(args, "scene", None) or (getattr(args, "scenes", None) or [None])[0]
+    if isinstance(scene, str):
+        try:
+            from ..scene.document import parse_toml, read_text
+
+            said = parse_toml(read_text(scene), scene).get("language")
+        except MechplanError:
+            said = None
+        if said in LANGUAGES:
+            return str(said)
+    return "en"
+
+
+def say_error(exc: MechplanError, language: str) -> str:
+    """``mechplan: error: …`` in a language."""
+    from ..i18n import message
+
+    return message("errors.cli.error", language, message=exc.text(language))
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Entry point; user errors print one message and exit with code 2."""
+    """Entry point; user errors print one message (in the scene's language or ``--lang``) and
+    exit with code 2; with ``--json`` the error is also a JSON object on standard output."""
     args = parser().parse_args(argv)
     try:
         return int(args.func(args))
     except MechplanError as exc:
-        print(f"mechplan: error: {exc}", file=sys.stderr)
+        lang = error_language(args)
+        print(say_error(exc, lang), file=sys.stderr)
+        if getattr(args, "json", False):
+            print(json.dumps(exc.to_json(lang), ensure_ascii=False, indent=1))
         return 2
     except BrokenPipeError:          # output piped into `head`
         sys.stderr.close()

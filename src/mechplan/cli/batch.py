@@ -8,13 +8,14 @@ from typing import Any
 
 from ..drafting.fields import SHEETS, STANDARDS
 from ..errors import MechplanError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 
 
 def _engine_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("-o", "--output", required=True, metavar="DIR", help="output folder")
-    p.add_argument("-j", "--workers", type=int, metavar="N",
-                   help="worker processes (default: one per core; on a cluster: its threads)")
+    p.add_argument("-j", "--jobs", "--workers", dest="workers", type=int, metavar="N",
+                   help="worker processes (default: one per core; on a cluster: its threads); "
+                   "--workers is the same option")
     p.add_argument("--scheduler", metavar="tcp://HOST:8786",
                    help="run on a Dask distributed cluster instead of local processes")
     bar = p.add_mutually_exclusive_group()
@@ -69,7 +70,7 @@ def _batch(args: argparse.Namespace) -> int:
     from ..batch.variants import read_variants
 
     if args.workers is not None and args.workers < 1:
-        raise MechplanError(f"--workers must be at least 1 (got {args.workers})")
+        raise MechplanError(Text("batchvars.jobs", {"value": str(args.workers)}))
     variants = read_variants(args.variants)
     formats = [f.strip() for f in args.format.split(",") if f.strip()]
     try:
@@ -89,7 +90,7 @@ def _sweep(args: argparse.Namespace) -> int:
     from ..batch.sweep import run_sweep
 
     if args.workers is not None and args.workers < 1:
-        raise MechplanError(f"--workers must be at least 1 (got {args.workers})")
+        raise MechplanError(Text("batchvars.jobs", {"value": str(args.workers)}))
     axes = [parse_vary(v) for v in args.vary]
     plot_axes = [k.strip() for k in args.plot_axes.split(",")] if args.plot_axes else None
     try:

@@ -7,22 +7,26 @@ import json
 import re
 import sys
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from .. import i18n
-from ..check.report import Tolerance
 from ..check.texts import LANGUAGES, T
 from ..errors import CheckError, SceneError, elide
-from ..limits import MAX_PAPER_MM
 from ..model.plans import Plan
 from ..units import example
 from . import angle_deg
+
+if TYPE_CHECKING:
+    from ..check.report import Tolerance
 
 #: a plan by its name or the letter of its scale factor ("velocity", "v")
 PLAN_NAMES = {name: p for p in Plan for name in (p.value, p.scale_key[3:].lower())}
 TEXT_SUFFIXES = (".txt", ".md", ".log", ".text")
 #: largest tolerance per unit: a sheet's length, everything, a turn
-TOLERANCE_MAX = {"mm": MAX_PAPER_MM, "%": 100.0, "deg": 360.0}
+def _tolerance_max(unit: str) -> float:
+    from ..limits import MAX_PAPER_MM
+
+    return {"mm": MAX_PAPER_MM, "%": 100.0, "deg": 360.0}[unit]
 #: most processes ``--jobs`` may ask for (joblib refuses more than a million with a traceback)
 MAX_JOBS = 1024
 
@@ -58,8 +62,9 @@ def add_parser(subparsers: Any) -> None:
                    help="write the report: .json, .txt, or an overlay sheet .svg / .dxf / .pdf "
                    "(may be repeated)")
     p.add_argument("--json", action="store_true", help="print the report as JSON")
-    p.add_argument("--jobs", type=int, default=1, metavar="N",
-                   help="a class: check N submissions at once (joblib; -1: every core)")
+    p.add_argument("-j", "--jobs", "--workers", dest="jobs", type=int, default=1, metavar="N",
+                   help="a class: check N submissions at once (joblib; -1: every core); "
+                   "--workers is the same option")
     p.add_argument("--lang", choices=LANGUAGES, default=None,
                    help="language of the report, its hints and the overlay's notes: en, ru, vi "
                    "or zh (default: the scene's language); ru and vi write a decimal comma")
@@ -68,6 +73,8 @@ def add_parser(subparsers: Any) -> None:
 
 def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
     """'1mm,2%' → default; 'velocity=0.5mm' → per plan (unset parts keep the defaults)."""
+    from ..check.report import Tolerance
+
     out: dict[Plan | None, Tolerance] = {}
     for spec in specs:
         plan: Plan | None = None
@@ -88,7 +95,7 @@ def parse_tolerances(specs: list[str]) -> dict[Plan | None, Tolerance]:
             if not pm:
                 raise CheckError(T("error.tolerance_part", spec=spec, part=part))
             unit, value = pm.group(2).replace("°", "deg"), float(pm.group(1).replace(",", "."))
-            high = TOLERANCE_MAX[unit]
+            high = _tolerance_max(unit)
             if not value <= high:       # a tolerance of 10^400 mm would pass anything
                 raise CheckError(T("error.option_range", option=f"--tolerance {elide(spec, 60)}",
                                    low="0", high=f"{high:g} {unit}", value=elide(part, 60)))
@@ -143,6 +150,8 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
     if not (args.jobs == -1 or 1 <= args.jobs <= MAX_JOBS):
         raise CheckError(T("error.option_range", option="--jobs", low="1", high=str(MAX_JOBS),
                            value=str(args.jobs)))
+    from ..limits import MAX_PAPER_MM
+
     if not args.snap >= 0:
         raise CheckError(T("error.not_negative", option="--snap", value=args.snap))
     for option, value in (("--label-distance", args.label_distance), ("--snap", args.snap)):

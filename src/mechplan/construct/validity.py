@@ -8,6 +8,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..errors import SingularError, UnreachableError
+from ..i18n import Text, plan_word
 from .graph import Construction, Evaluation
 
 #: meets whose condition number 1/|sin| exceeds this are refused (≈ 8 significant digits kept)
@@ -74,13 +75,6 @@ def unreachable_intervals(c: Construction, step_id: str, samples: int = 3600,
     return intervals
 
 
-def _at(c: Construction, q: float) -> str:
-    """Where a position is, in the driver's coordinate: φ = 30°, or a linear driver's length."""
-    if c.drive.linear:
-        return f"the driver's coordinate {q * 1000:g} mm"
-    return f"φ = {math.degrees(q):g}°"
-
-
 def _linear_unreachable(c: Construction, step_id: str, samples: int = 3600
                         ) -> list[tuple[float, float]]:
     """Sub-ranges (mm) of a linear driver's range where a meet has no solution (sampled)."""
@@ -107,23 +101,25 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             phi_deg = math.degrees(ev.phi[k])
             if c.drive.linear:      # a cylinder or slider: its range, in mm
                 intervals = _linear_unreachable(c, sid)
-                span = ", ".join(f"{a:g}…{b:g} mm" for a, b in intervals)
                 lo, hi = (c.drive.span or (math.nan, math.nan))
-                where = (f"within the driver's range it cannot close for {span}" if span else
-                         f"it closes over the driver's range {lo * 1000:g}…{hi * 1000:g} mm")
-                raise UnreachableError(
-                    f"group {step.group} cannot be assembled at {_at(c, float(ev.phi[k]))}: "
-                    f"point {step.label} misses by {ev.gaps[sid][k] * 1000:.6g} mm; {where}",
-                    group=step.group, intervals_deg=intervals, gap=float(ev.gaps[sid][k]),
-                    file=file)
+                args = {"group": step.group, "q": f"{float(ev.phi[k]) * 1000:g}",
+                        "point": step.label, "gap": f"{ev.gaps[sid][k] * 1000:.6g}",
+                        "span": ", ".join(f"{a:g}…{b:g}" for a, b in intervals),
+                        "lo": f"{lo * 1000:g}", "hi": f"{hi * 1000:g}"}
+                key = "drivers.unreachable_in" if intervals else "drivers.unreachable_out"
+                raise UnreachableError(Text(key, args), group=step.group,
+                                       intervals_deg=intervals, gap=float(ev.gaps[sid][k]),
+                                       file=file)
             intervals = [
                 (math.degrees(a), math.degrees(b)) for a, b in unreachable_intervals(c, sid)
             ]
             where = ", ".join(f"{a:.9f}°…{b:.9f}°" for a, b in intervals)
             raise UnreachableError(
-                f"group {step.group} cannot be assembled at φ = {phi_deg:g}°: point {step.label} "
-                f"misses by {ev.gaps[sid][k] * 1000:.6g} mm; the mechanism cannot close for φ in "
-                f"{where}", group=step.group, intervals_deg=intervals,
+                Text("errors.unreachable", {"group": step.group, "phi": f"{phi_deg:g}",
+                                            "point": step.label,
+                                            "gap": f"{ev.gaps[sid][k] * 1000:.6g}",
+                                            "where": where}),
+                group=step.group, intervals_deg=intervals,
                 gap=float(ev.gaps[sid][k]), file=file)
     for sid in c.ancestors(ev.values):
         if sid not in ev.sines:
@@ -136,8 +132,14 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             step = c[sid]
             k = int(np.argmax(bad))
             raise SingularError(
-                f"{step.plan.value} plan, group {step.group or 'I'}: the loci meeting at "
-                f"{step.label} are parallel or nearly so at {_at(c, float(ev.phi[k]))} "
-                f"(condition number {cond[k]:.3g} > {max_condition:.0e}; a toggle or change "
-                "point); choose another position", step=step.label,
+                Text("drivers.singular", {"plan": plan_word(step.plan.value),
+                                          "group": step.group or "I", "point": step.label,
+                                          "q": f"{float(ev.phi[k]) * 1000:g}",
+                                          "condition": f"{cond[k]:.3g}",
+                                          "most": f"{max_condition:.0e}"}) if c.drive.linear
+                else Text("errors.singular", {"plan": plan_word(step.plan.value),
+                                              "group": step.group or "I", "point": step.label,
+                                              "phi": f"{math.degrees(ev.phi[k]):g}",
+                                              "condition": f"{cond[k]:.3g}",
+                                              "most": f"{max_condition:.0e}"}), step=step.label,
                 phi_deg=math.degrees(ev.phi[k]), condition=float(cond[k]), file=file)

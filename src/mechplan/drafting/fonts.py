@@ -165,7 +165,12 @@ class _Metrics:
 
 
 def _metrics(font: SheetFont) -> _Metrics | None:
-    path = font_path(font)
+    return _metrics_of(font, os.environ.get(ENV_FONT_DIRS, ""), system_fonts_enabled())
+
+
+@functools.cache       # thousands of calls per sheet: keyed by the enum, not by the file's Path
+def _metrics_of(font: SheetFont, extra: str, system: bool) -> _Metrics | None:
+    path = _font_path(font, extra, system)
     if path is None:
         return None
     # only osifont has placeholder boxes (Ё ё Э э); expanding every glyph of the other fonts

@@ -34,7 +34,8 @@ def _subset(font: SheetFont, chars: str) -> tuple[str, str] | None:
 
 @functools.lru_cache(maxsize=64)
 def _subset_file(path: Path, index: int, chars: str) -> tuple[str, str]:
-    tt = TTFont(str(path), fontNumber=index, recalcTimestamp=False, lazy=False)
+    # lazy: only the tables the subset keeps are parsed (same bytes, ~3× faster)
+    tt = TTFont(str(path), fontNumber=index, recalcTimestamp=False, lazy=True)
     options = subset.Options()
     options.layout_features = ["*"]
     options.name_IDs = ["*"]
