@@ -242,3 +242,18 @@ def test_a_cylinder_mounted_the_other_way_moves_the_boom_alike():
         assert np.allclose(b.ev[c.position("C")][k], x, atol=1e-12)
         assert np.allclose(b.ev[c.velocity_image("C")][k], v, rtol=1e-6, atol=1e-8)
         assert np.allclose(b.ev[c.acceleration_image("C")][k], acc, rtol=1e-4, atol=1e-6)
+
+
+def test_the_api_takes_a_linear_drivers_positions_in_mm():
+    from mechplan import api
+
+    m = api.load(TEMPLATES / "excavator_boom.toml")
+    every = m.solve()                               # with its masses: the force plan too
+    assert np.allclose(every.phi_deg, [1450, 1562.5, 1675, 1787.5, 1900])
+    one = m.solve(1562.5)                           # the quick path at one position
+    two = m.solve([1562.5], plans=["position", "velocity"])
+    assert one.phi_deg[0] == two.phi_deg[0] == 1562.5
+    assert one.omega["2"][0] == pytest.approx(every.omega["2"][1], rel=1e-14)
+    assert two.omega["2"][0] == pytest.approx(every.omega["2"][1], rel=1e-14)
+    sol = solve(load_scene(TEMPLATES / "excavator_boom.toml"))
+    assert np.allclose(every.forces.M_b, sol.ev[sol.construction.driving_force()], rtol=1e-14)
