@@ -96,7 +96,8 @@ def analyse(mech: Mechanism) -> Structure:
             f"freedom but {drivers} driver ([drive], link {mech.drive.link}); add or remove "
             "links or pairs so that W equals the number of drivers", key="links")
     drive = mech.drive
-    view, originals, cylinder = mech, {}, None
+    view, cylinder = mech, None
+    originals: dict[Pair, Pair] = {}
     if drive.kind is DriverKind.CYLINDER:
         view, originals, cylinder = _merged_cylinder(mech)
         known = {GROUND}
