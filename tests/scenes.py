@@ -21,8 +21,19 @@ def _kind(path: Path) -> str:
     return str(tomllib.loads(path.read_text(encoding="utf-8")).get("kind", "mechanism"))
 
 
-#: templates of linkages (the kind every plan, force and sheet test of the linkage half runs on)
-TEMPLATES = [p for p in ALL_TEMPLATES if _kind(p) == "mechanism"]
+def _driver(path: Path) -> str:
+    import tomllib
+
+    drive = tomllib.loads(path.read_text(encoding="utf-8")).get("drive", {})
+    return str(drive.get("kind", "crank")) if isinstance(drive, dict) else "crank"
+
+
+#: templates of crank-driven linkages (the kind every plan, force and sheet test of the linkage
+#: half runs on: their positions are crank angles over a turn)
+TEMPLATES = [p for p in ALL_TEMPLATES if _kind(p) == "mechanism" and _driver(p) == "crank"]
+#: templates of linkages driven by a cylinder or a slider (positions are lengths; no force plan
+#: yet): tests/construct/test_linear_drivers.py and the own-sheets grid run on them
+DRIVER_TEMPLATES = [p for p in ALL_TEMPLATES if _kind(p) == "mechanism" and _driver(p) != "crank"]
 
 
 def construction_of(scene, plans=("position", "velocity", "acceleration")):

@@ -131,7 +131,8 @@ class Mechanism:
         Parameters
         ----------
         phi_deg : float or array_like, optional
-            Crank angles φ in degrees (scene convention). Default: the scene's ``[positions]``.
+            Crank angles φ in degrees (scene convention); a cylinder or slider driver: its
+            length in millimetres. Default: the scene's ``[positions]``.
         positions : int, optional
             Instead of ``phi_deg``: N equal steps from the scene's start position.
         plans : sequence of str, optional
@@ -250,7 +251,9 @@ class Mechanism:
             self._one = one = prepared if prepared is not None else False
         if one is False:
             return None
-        at = np.array([phi_deg * _RADIANS])
+        # a linear driver's positions are its length in mm (as ``solve --at``)
+        at = np.array([phi_deg / 1000.0 if self.scene.mechanism.drive.linear
+                       else phi_deg * _RADIANS])
         block, _rel, _bad, status = one.kernel.run(at, _TOLERANCE, store=False)
         flagged: tuple[tuple[int, str, str, float], ...] = ()
         if status:                  # not buildable, untrusted or flagged: as the fused path says
@@ -288,12 +291,14 @@ class Mechanism:
             # 8, each counted as a step); should it fall back, the numpy path checks its own need.
             # Checked before the angles are allocated.
             ensure_within_budget(n, len(prepared.keys), file=self.scene.path)
-        phi = np.radians(at) if at is not None else crank_positions(self.scene, c, count)
+        linear = self.scene.mechanism.drive.linear      # positions in mm, not degrees
+        phi = ((at / 1000.0 if linear else np.radians(at)) if at is not None
+               else crank_positions(self.scene, c, count))
         result = self._fast.evaluate(prepared, phi)
         if result is None:
             return None
         block, cols = result.block, result.columns
-        phi_deg = np.degrees(phi)
+        phi_deg = phi * 1000.0 if linear else np.degrees(phi)
         phi_deg.flags.writeable = False
         return Solution(phi_deg, _Columns(block, cols["r"], "position"),
                         _Columns(block, cols["v"], "velocity"),
@@ -330,7 +335,8 @@ def _solution(s: _Solved, only_points: tuple[str, ...] | None = None,
                 out[link] = _frozen(ev.get(accessor(link)))
     forces = _forces(s.extras["forces"]) if "forces" in s.extras else None
     flags = tuple((f.k, f.quantity, f.subject, f.estimate) for f in s.flags)
-    return Solution(_frozen(np.degrees(s.phi)), ByName(r, "position"), ByName(v, "velocity"),
+    shown = s.phi * 1000.0 if s.scene.mechanism.drive.linear else np.degrees(s.phi)   # mm / °
+    return Solution(_frozen(shown), ByName(r, "position"), ByName(v, "velocity"),
                     ByName(a, "acceleration"), ByName(angle, "angle"), ByName(omega, "omega"),
                     ByName(epsilon, "epsilon"), forces, flags, s.extras.get("textbook"))
 

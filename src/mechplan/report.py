@@ -37,9 +37,15 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
     theta = sol.construction.drive.absolute(sol.phi)
     failed = {f.k: f for f in sol.failures}
     for k in range(sol.positions):
-        phi_txt = format_number(math.degrees(sol.phi[k]), 2, lang)
-        th_txt = format_number(math.degrees(math.remainder(theta[k], 2 * math.pi)), 2, lang)
-        out += ["", f"## {w['position']} {k}: φ = {phi_txt}° ({w['crank']} {th_txt}° {w['fromx']})"]
+        if sol.scene.mechanism.drive.linear:   # the driver's length: l4 = 1450.0 mm
+            q_txt = format_number(sol.phi[k] * 1000, 1, lang)
+            out += ["", (f"## {w['position']} {k}: {sol.construction['pos.q'].label} = {q_txt} "
+                    f"{unit('mm', lang)}")]
+        else:
+            phi_txt = format_number(math.degrees(sol.phi[k]), 2, lang)
+            th_txt = format_number(math.degrees(math.remainder(theta[k], 2 * math.pi)), 2, lang)
+            out += ["", (f"## {w['position']} {k}: φ = {phi_txt}° ({w['crank']} {th_txt}° "
+                    f"{w['fromx']})")]
         if k in failed:
             out.append(message("estimate.not_built", lang, reason=failed[k].reason))
             continue
@@ -139,6 +145,16 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     mb, mz = float(fa.balancing_moment[k]), float(fa.zhukovsky_moment[k])
     role = w[3] if fa.driving(k) else w[4]
     link = sol.scene.mechanism.drive.link
+    if fa.linear:       # a cylinder or slider: its driving force (two ways), F_red and m_red
+        n = unit("N", lang)
+        pct = scientific(float(fa.difference_percent[k]), 3, lang)
+        return out + [
+            message("drivers.force", lang, link=link, F=format_number(mb, 3, lang), unit=n,
+                    role=role),
+            f"  {w[5]}: F_d = {format_number(mz, 3, lang)} {n}; {w[6]} {pct} %",
+            f"  {w[7]}: F_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {n}",
+            (f"  {w[8]}: m_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
+            f"{unit('kg', lang)}")]
     sense = sense_text(mb, lang)
     nm = unit("N·m", lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} {nm} ({sense}; {role})")

@@ -89,6 +89,13 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
         return np.asarray(pos.angles, dtype=float)
     n = position_count(scene, count)
     ensure_within_budget(n, 1, file=scene.path, key=None if count else "positions.count")
+    drive = scene.mechanism.drive
+    if drive.linear:        # equal steps over the driver's range, both ends included
+        if drive.q_range is None:
+            raise SceneError(f"the {drive.kind.value} driver {drive.link} has no range to spread "
+                             f"{n} positions over; give [drive] range = [from, to]",
+                             file=scene.path, key="drive.range")
+        return np.linspace(drive.q_range[0], drive.q_range[1], n)
     start = pos.start_angle
     if pos.start_extreme is not None:
         ex = [e for e in extreme_positions(c, scene.mechanism, pos.start_extreme.subject)
@@ -102,6 +109,12 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
             )
         start = ex[0].phi
     return np.mod(start + np.arange(n) * 2.0 * math.pi / n, 2.0 * math.pi)
+
+
+def shown_coordinate(scene: Scene, q: float) -> float:
+    """A driver's coordinate as positions are asked for (``solve(at_deg=…)``): φ in degrees, or
+    a linear driver's length in millimetres."""
+    return q * 1000.0 if scene.mechanism.drive.linear else math.degrees(q)
 
 
 def targets_for(scene: Scene, c: Construction, plans: tuple[str, ...]) -> list[str]:
@@ -159,7 +172,8 @@ def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
     ensure_within_budget(n, len(c.ancestors(targets)), file=scene.path,
                          key=None if requested or count else "positions.count")
     if requested:
-        phi = np.radians(check_angles_deg(np.asarray(at_deg, dtype=float)))
+        phi = (np.asarray(at_deg, dtype=float) / 1000.0 if scene.mechanism.drive.linear
+               else np.radians(check_angles_deg(np.asarray(at_deg, dtype=float))))
     else:
         phi = crank_positions(scene, c, count)
     ev = c.evaluate(phi)
@@ -223,14 +237,12 @@ def to_json(sol: Solution) -> dict[str, Any]:
                     )
             if entry:
                 links[lid] = entry
-        entry_k: dict[str, Any] = {
+        entry_k: dict[str, Any] = ({"q": float(sol.phi[k])} if c.drive.linear else {
             "phi_deg": round(math.degrees(float(sol.phi[k])), 10),
             "crank_angle_deg": round(
                 math.degrees(math.remainder(float(theta[k]), 2 * math.pi)), 10
-            ),
-            "points": pts,
-            "links": links,
-        }
+            )})
+        entry_k.update(points=pts, links=links)
         if "forces" in sol.extras:
             entry_k.update(sol.extras["forces"].json(k))
         if "textbook" in sol.extras:
@@ -243,6 +255,7 @@ def to_json(sol: Solution) -> dict[str, Any]:
         "title": scene.title,
         "dof": sol.structure.dof,
         "structure": sol.structure.formula,
+        "driver": _driver_json(scene.mechanism.drive),
         "groups": [
             {"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups
         ],
@@ -257,6 +270,14 @@ def to_json(sol: Solution) -> dict[str, Any]:
     return doc
 
 
+def _driver_json(drive: Any) -> dict[str, Any]:
+    """The driver and its law: its kind, link, coordinate and rates (SI)."""
+    linear = drive.linear
+    return {"kind": drive.kind.value, "link": drive.link,
+            "coordinate": ("l" if drive.kind.value == "cylinder" else "s") if linear else "phi",
+            "unit": "m" if linear else "rad", "rate": drive.omega, "acceleration": drive.epsilon}
+
+
 def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, float, str, float]]:
     """(segment, mm on paper, μ, quantity, physical value) of a plan at position k."""
     rows = []
@@ -269,4 +290,4 @@ def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, f
 
 
 __all__ = ["SegmentKind", "Solution", "crank_positions", "position_count", "segment_table",
-           "solve", "to_json"]
+           "shown_coordinate", "solve", "to_json"]

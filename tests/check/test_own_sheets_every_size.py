@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 import pytest
-from scenes import TEMPLATES
+from scenes import DRIVER_TEMPLATES, TEMPLATES
 
 from mechplan.check import Options, check
 from mechplan.check.report import MISSING, WRONG
@@ -33,17 +33,21 @@ LANGUAGES = ("en", "ru", "vi", "zh")
 PLAN_PANEL = re.compile(r"^(position|velocity|acceleration|force)(?!.*(tables|lever|diagram))")
 
 
+GRID = sorted(TEMPLATES + DRIVER_TEMPLATES)
+
+
 def test_the_grid_is_every_linkage_template():
-    assert sorted(p.stem for p in TEMPLATES) == [
-        "four_bar", "machine_unit", "offset_slider_crank", "press_friction", "quick_return",
-        "shaper", "shaper_flywheel", "slider_crank", "v_engine"]
+    assert sorted(p.stem for p in GRID) == [
+        "excavator_boom", "four_bar", "machine_unit", "offset_slider_crank", "press_friction",
+        "quick_return", "shaper", "shaper_flywheel", "slider_coulisse", "slider_crank",
+        "v_engine"]
 
 
-@pytest.mark.parametrize("path", TEMPLATES, ids=[p.stem for p in TEMPLATES])
+@pytest.mark.parametrize("path", GRID, ids=[p.stem for p in GRID])
 def test_own_sheets_check_clean_at_every_size_standard_and_language(path, tmp_path):
     scene = load_scene(path)
     sol = solve(scene)
-    offset = sorted(p.stem for p in TEMPLATES).index(path.stem)
+    offset = [p.stem for p in GRID].index(path.stem)
     failures: list[str] = []
     case = 0
     for size in SIZES:

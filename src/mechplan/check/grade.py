@@ -131,13 +131,13 @@ def _angles(scene: Scene, sub: Submission, options: Options,
                                                 detail=exc.detail), e.where))
                 continue
             return [value], T("read_from", name=e.name, text=text, where=e.where)
-    if len(scene.positions.angles) == 1:
-        return [math.degrees(scene.positions.angles[0])], T("phi.only")
-    from ..solve import build, crank_positions
+    from ..solve import build, crank_positions, shown_coordinate
 
+    if len(scene.positions.angles) == 1:
+        return [shown_coordinate(scene, scene.positions.angles[0])], T("phi.only")
     _, c = build(scene, ("position", "velocity"))
     phi = crank_positions(scene, c)
-    return [float(math.degrees(p)) for p in phi], T("phi.best")
+    return [float(shown_coordinate(scene, p)) for p in phi], T("phi.best")
 
 
 def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]) -> Any:
@@ -158,7 +158,9 @@ def _solve(scene: Scene, sub: Submission, at_deg: list[float], notes: list[Note]
 
 def _grade(ctx: Ctx, k: int) -> CheckReport:
     """Grade the submission at candidate position k."""
-    phi = math.degrees(float(ctx.ev.phi[k]))
+    from ..solve import shown_coordinate
+
+    phi = shown_coordinate(ctx.scene, float(ctx.ev.phi[k]))   # a linear driver's: mm
     report = CheckReport(str(ctx.scene.path or ""), ctx.sub.path, ctx.sub.kind, round(phi, 10),
                          "")
     drawn = [prepare(ctx, dp, k, report.notes) for dp in (ctx.sheet.plans if ctx.sheet else [])]

@@ -257,7 +257,8 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("scene")
     where = s.add_mutually_exclusive_group()
     where.add_argument("--at", type=angle_deg, nargs="+", metavar="DEG",
-                       help="crank angles φ in degrees")
+                       help="crank angles φ in degrees (a cylinder or slider driver: its "
+                       "length in mm)")
     where.add_argument("--positions", type=_positive_int, metavar="N",
                        help="N ≥ 1 equal steps from the scene's start")
     s.add_argument("--lang", choices=LANGUAGES)

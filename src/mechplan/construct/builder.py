@@ -66,7 +66,7 @@ class Builder:
         self.file = file
         self.assembly_phi = assembly_phi
         drive = mech.drive
-        self.c = Construction(DriveMap(drive.ref_angle, drive.sense))
+        self.c = Construction(DriveMap(drive.ref_angle, drive.sense, drive.linear, drive.q_range))
         self.pos: dict[str, str] = {}
         self.vel: dict[str, str] = {}
         self.acc: dict[str, str] = {}
@@ -159,19 +159,19 @@ class Builder:
     # -- build -------------------------------------------------------------------------------
     def build(self, plans: tuple[str, ...]) -> Construction:
         """Emit the position plan and, as asked, velocity and acceleration plans."""
-        from .plans import acceleration, position, velocity
+        from .plans import acceleration, drivers, position, velocity
 
         position.emit_frame_and_drive(self)
         for group in self.structure.groups:
-            position.emit_group(self, group)
+            drivers.position_group(self, group)
         if "velocity" in plans or "acceleration" in plans or "force" in plans:
             velocity.emit_drive(self)
             for group in self.structure.groups:
-                velocity.emit_group(self, group)
+                drivers.velocity_group(self, group)
         if "acceleration" in plans or "force" in plans:
             acceleration.emit_drive(self)
             for group in self.structure.groups:
-                acceleration.emit_group(self, group)
+                drivers.acceleration_group(self, group)
         if "force" in plans and self.loading is not None:
             from .plans import force
             force.emit(self)

@@ -136,7 +136,7 @@ def length_scale(c: Construction, samples: int = 72) -> float:
         points = [s.id for s in c if s.plan is Plan.POSITION and s.kind is Kind.POINT
                   and s.op is not Op.FIXED_POINT] or [
             s.id for s in c if s.plan is Plan.POSITION and s.kind is Kind.POINT]
-        ev = c.evaluate(np.linspace(0.0, 2.0 * np.pi, samples, endpoint=False))
+        ev = c.evaluate(c.drive.samples(samples))      # over a turn, or a linear driver's range
         ev.evaluate_all(points)
         per_sample = np.zeros(samples)
         for sid in points:
@@ -153,7 +153,8 @@ def plan_sizes(c: Construction, ev: Evaluation | None = None) -> dict[Plan, floa
     """Sizes of the plans that do not depend on how close a position is to a singular one.
 
     The position plan: the mechanism's length scale (:func:`length_scale`); the velocity and
-    acceleration plans: ω1·L and (ω1² + |ε1|)·L of the driving link; the force plan (given an
+    acceleration plans: ω1·L and (ω1² + |ε1|)·L of the driving link (a linear driver: |q̇| and
+    |q̈| + q̇²/L); the force plan (given an
     evaluation): the median over the positions of its largest vector (forces have no intrinsic
     scale).
     """
@@ -167,6 +168,12 @@ def plan_sizes(c: Construction, ev: Evaluation | None = None) -> dict[Plan, floa
             omega = abs(float(step.param("omega")))
     sizes = {Plan.POSITION: length, Plan.VELOCITY: omega * length,
              Plan.ACCELERATION: (omega * omega + epsilon) * length}
+    rates = {step.plan: abs(float(step.param("value"))) for step in c
+             if step.op is Op.DRIVER_RATE}
+    if rates:   # a linear driver: its rate q̇, and q̈ with the centripetal q̇²/L of its links
+        q_dot = rates.get(Plan.VELOCITY, 0.0)
+        sizes[Plan.VELOCITY] = q_dot
+        sizes[Plan.ACCELERATION] = rates.get(Plan.ACCELERATION, 0.0) + q_dot * q_dot / length
     if ev is not None:
         force_max = [np.abs(v).max(axis=-1) for sid, v in ev.values.items()
                      if c[sid].plan is Plan.FORCE and c[sid].kind is Kind.POINT and v.size]

@@ -17,17 +17,31 @@ from .terms import Row
 
 @dataclass(frozen=True, slots=True)
 class DriveMap:
-    """Map the scene's crank angle φ to the absolute crank direction θ = ref + sense·φ."""
+    """Map the scene's crank angle φ to the absolute crank direction θ = ref + sense·φ.
+
+    A linear driver (``linear``): the coordinate is a length q (m), passed on as it is.
+    """
 
     ref: float      # rad, direction of φ = 0, counter-clockwise from +x
     sense: int      # +1 counter-clockwise, -1 clockwise
+    linear: bool = False
+    #: a linear driver's range of q (m): where the mechanism's size is sampled
+    span: tuple[float, float] | None = None
+
+    def samples(self, n: int) -> Array:
+        """n driver coordinates over a turn (a crank) or over the range (a linear driver)."""
+        if self.linear and self.span is not None:
+            return np.linspace(self.span[0], self.span[1], n)
+        return np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
 
     def absolute(self, phi: Array) -> Array:
         """Return θ for φ (radians)."""
         return self.ref + self.sense * np.asarray(phi, dtype=float)
 
     def scene(self, theta: Array) -> Array:
-        """Return φ in [0, 2π) for θ (radians)."""
+        """Return φ in [0, 2π) for θ (radians); a linear driver's q as it is."""
+        if self.linear:
+            return self.sense * (np.asarray(theta, dtype=float) - self.ref)
         return np.mod(self.sense * (np.asarray(theta, dtype=float) - self.ref), 2.0 * np.pi)
 
 
@@ -146,15 +160,24 @@ class Construction:
         """Return the step id of M_b found by Zhukovsky's lever (N·m)."""
         return self._named("M_b_zhukovsky")
 
+    def driving_force(self) -> str:
+        """Return the step id of a linear driver's driving force F_d (N, + pushing q up)."""
+        return self._named("F_d")
+
+    def zhukovsky_force(self) -> str:
+        """Return the step id of F_d found by Zhukovsky's lever (N)."""
+        return self._named("F_d_zhukovsky")
+
     def link_results(self) -> list[str]:
         """Step ids of every link's angle, ω and ε, in construction order."""
         return [sid for key, sid in self.results.items()
                 if key.split("_")[0] in ("angle", "omega", "epsilon")]
 
     def force_results(self) -> list[str]:
-        """Step ids of the balancing moments, reactions and guide offsets."""
+        """Step ids of the balancing moments (or driving forces), reactions and guide offsets."""
         return [sid for key, sid in self.results.items()
-                if key in ("M_b", "M_b_zhukovsky") or key.startswith(("R_", "d_"))]
+                if key in ("M_b", "M_b_zhukovsky", "F_d", "F_d_zhukovsky")
+                or key.startswith(("R_", "d_"))]
 
     def _named(self, key: str) -> str:
         try:

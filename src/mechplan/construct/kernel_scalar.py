@@ -373,3 +373,8 @@ SCALAR_FORMS: dict[OpSpec, Gen] = {
     Op.EPSILON: _rate, Op.NORMAL: _normal, Op.CORIOLIS: _coriolis, Op.COPY: _copy,
     Op.DIFFERENCE: _difference,
 }
+
+# the linear drivers' operations (a cylinder, a slider): their module reads this one's helpers
+from .kernel_drivers import DRIVER_FORMS
+
+SCALAR_FORMS.update(DRIVER_FORMS)

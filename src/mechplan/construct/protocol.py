@@ -51,9 +51,16 @@ def vector_text(value: np.ndarray, lang: str, digits: int = 1, si_unit: str = "N
 def _scalar_text(step: Step, value: float, lang: str) -> str:
     written = step.op.written
     if step.plan is Plan.FORCE:
+        if written is Written.LINEAR or step.label == "F_d":   # a linear driver's force
+            return f"{number(value, 2, lang)} {unit('N', lang)}"
         if written is Written.OFFSET:
             return f"{number(value * 1000, 1, lang)} {mm(lang)}"
         return f"{number(value, 2, lang)} {unit('N·m', lang)}"
+    if written is Written.LINEAR:        # a linear driver: l (mm), l̇ (m/s), l̈ (m/s²)
+        if step.plan is Plan.POSITION:
+            return f"{number(value * 1000, 1, lang)} {mm(lang)}"
+        rate = "m/s" if step.plan is Plan.VELOCITY else "m/s²"
+        return f"{number(value, 3, lang)} {unit(rate, lang)}"
     if written is Written.ANGLE or step.label.startswith("θ"):
         return f"{number(math.degrees(value), 2, lang)}°"
     rate = "rad/s" if step.plan is Plan.VELOCITY else "rad/s²"

@@ -28,7 +28,7 @@ class Flag:
     """A result whose estimated relative error exceeds the tolerance at one position."""
 
     k: int                  # position index
-    phi_deg: float          # crank angle φ (scene convention)
+    phi_deg: float          # crank angle φ (scene convention); a linear driver's length, mm
     quantity: str           # "r", "v", "a", "angle", "omega", "epsilon", "R", "M" …
     subject: str            # point or link ("C", "2", "12")
     label: str              # the step's label on its plan
@@ -86,19 +86,29 @@ def refuse_unbounded(c: Construction, ev: Evaluation, est: ErrorEstimate, target
         if np.any(bad):
             step = c[sid]
             k = int(np.argmax(bad))
-            phi_deg = math.degrees(float(ev.phi[k]))
+            phi_deg = _shown(c, ev.phi[k])
             from .plans.force_friction import unsettled
             locked = unsettled(c, ev, k)
             if locked is not None:
-                raise SingularError(f"force plan at φ = {phi_deg:g}°: {locked}", step=step.label,
-                                    phi_deg=phi_deg, condition=math.inf, file=file)
+                raise SingularError(f"force plan at {_where(c, phi_deg)}: {locked}",
+                                    step=step.label, phi_deg=phi_deg, condition=math.inf,
+                                    file=file)
             bound = f"{rel[k]:.1e}" if math.isfinite(rel[k]) else "no bound"
             raise SingularError(
                 f"{step.plan.value} plan, group {step.group or 'I'}: {step.label} cannot be "
-                f"computed at φ = {phi_deg:g}° (estimated relative error {bound} ≥ 1: a direction "
-                "from nearly coincident points or a meet of nearly parallel loci, the position is "
-                "singular or too close to it); choose another position",
+                f"computed at {_where(c, phi_deg)} (estimated relative error {bound} ≥ 1: a "
+                "direction from nearly coincident points or a meet of nearly parallel loci, the "
+                "position is singular or too close to it); choose another position",
                 step=step.label, phi_deg=phi_deg, condition=math.inf, file=file)
+
+
+def _shown(c: Construction, q: float) -> float:
+    """A position's coordinate as reported: φ in degrees, a linear driver's length in mm."""
+    return float(q) * 1000.0 if c.drive.linear else math.degrees(float(q))
+
+
+def _where(c: Construction, shown: float) -> str:
+    return f"the driver's coordinate {shown:g} mm" if c.drive.linear else f"φ = {shown:g}°"
 
 
 def failures(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],
@@ -115,11 +125,11 @@ def failures(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Seque
     out: list[Failure] = []
     first_of: dict[str, Failure] = {}
     for k in np.flatnonzero(bad):
-        phi_deg = math.degrees(float(ev.phi[k]))
+        phi_deg = _shown(c, ev.phi[k])
         cause = _cause(c, ev, est, targets, int(k), max_condition)
         if cause in first_of and len(out) >= FULL_REASONS:
             # the same cause as an earlier position: say so instead of searching again
-            out.append(Failure(int(k), phi_deg, f"as at φ = {first_of[cause].phi_deg:g}°: "
+            out.append(Failure(int(k), phi_deg, f"as at {_where(c, first_of[cause].phi_deg)}: "
                                                 f"{first_of[cause].reason}"))
             continue
         one = c.evaluate(ev.phi[k:k + 1])
@@ -173,7 +183,7 @@ def flags(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence
         for k in np.flatnonzero((rel > tolerance) & ~skip_mask):
             quantity, subject = names[sid]
             step = c[sid]
-            out.append(Flag(int(k), math.degrees(float(ev.phi[k])), quantity, subject, step.label,
+            out.append(Flag(int(k), _shown(c, ev.phi[k]), quantity, subject, step.label,
                             step.group, float(rel[k])))
     out.sort(key=lambda f: (f.k, f.quantity, f.subject))
     return out

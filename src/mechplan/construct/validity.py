@@ -75,6 +75,22 @@ def unreachable_intervals(c: Construction, step_id: str, samples: int = 3600,
     return intervals
 
 
+def _linear_unreachable(c: Construction, step_id: str, samples: int = 3600
+                        ) -> list[tuple[float, float]]:
+    """Sub-ranges (mm) of a linear driver's range where a meet has no solution (sampled)."""
+    q = c.drive.samples(samples)
+    bad = _gap_function(c, step_id)(q) > 0
+    out: list[tuple[float, float]] = []
+    start = None
+    for i, b in enumerate(bad):
+        if b and start is None:
+            start = i
+        if start is not None and (not b or i == len(bad) - 1):
+            out.append((float(q[start]) * 1000, float(q[i if b else i - 1]) * 1000))
+            start = None
+    return out
+
+
 def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
                  max_condition: float = MAX_CONDITION) -> None:
     """Raise for the first position a user asked for that cannot be built or is singular."""
@@ -83,6 +99,17 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             step = c[sid]
             k = int(np.argmax(ev.gaps[sid] > 0))
             phi_deg = math.degrees(ev.phi[k])
+            if c.drive.linear:      # a cylinder or slider: its range, in mm
+                intervals = _linear_unreachable(c, sid)
+                lo, hi = (c.drive.span or (math.nan, math.nan))
+                args = {"group": step.group, "q": f"{float(ev.phi[k]) * 1000:g}",
+                        "point": step.label, "gap": f"{ev.gaps[sid][k] * 1000:.6g}",
+                        "span": ", ".join(f"{a:g}…{b:g}" for a, b in intervals),
+                        "lo": f"{lo * 1000:g}", "hi": f"{hi * 1000:g}"}
+                key = "drivers.unreachable_in" if intervals else "drivers.unreachable_out"
+                raise UnreachableError(Text(key, args), group=step.group,
+                                       intervals_deg=intervals, gap=float(ev.gaps[sid][k]),
+                                       file=file)
             intervals = [
                 (math.degrees(a), math.degrees(b)) for a, b in unreachable_intervals(c, sid)
             ]
@@ -105,9 +132,14 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             step = c[sid]
             k = int(np.argmax(bad))
             raise SingularError(
-                Text("errors.singular", {"plan": plan_word(step.plan.value),
-                                         "group": step.group or "I", "point": step.label,
-                                         "phi": f"{math.degrees(ev.phi[k]):g}",
-                                         "condition": f"{cond[k]:.3g}",
-                                         "most": f"{max_condition:.0e}"}), step=step.label,
+                Text("drivers.singular", {"plan": plan_word(step.plan.value),
+                                          "group": step.group or "I", "point": step.label,
+                                          "q": f"{float(ev.phi[k]) * 1000:g}",
+                                          "condition": f"{cond[k]:.3g}",
+                                          "most": f"{max_condition:.0e}"}) if c.drive.linear
+                else Text("errors.singular", {"plan": plan_word(step.plan.value),
+                                              "group": step.group or "I", "point": step.label,
+                                              "phi": f"{math.degrees(ev.phi[k]):g}",
+                                              "condition": f"{cond[k]:.3g}",
+                                              "most": f"{max_condition:.0e}"}), step=step.label,
                 phi_deg=math.degrees(ev.phi[k]), condition=float(cond[k]), file=file)

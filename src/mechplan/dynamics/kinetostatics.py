@@ -52,6 +52,10 @@ class ForceAnalysis:
     reduced_moment: Array                       # (N,)
     reduced_inertia: Array                      # (N,)
     friction: FrictionAnalysis | None = None    # with [friction]: M_b⁰, η, the iteration
+    #: a linear driver (cylinder, slider): the two "moments" are its driving force F_d (N) by the
+    #: polygons and by Zhukovsky's lever, omega1 its rate q̇ (m/s), the reduced ones a force
+    #: (N) and a mass (kg)
+    linear: bool = False
 
     @property
     def difference_percent(self) -> Array:
@@ -76,8 +80,10 @@ class ForceAnalysis:
                     k: {"force": _vec(r.force[i]),
                         "offset": _num(r.offset[i]) if r.offset is not None else None}
                     for k, r in self.guide_reactions.items()},
-                "balancing_moment": _num(self.balancing_moment[i]),
-                "zhukovsky_balancing_moment": _num(self.zhukovsky_moment[i]),
+                **({"driving_force": _num(self.balancing_moment[i]),
+                    "zhukovsky_driving_force": _num(self.zhukovsky_moment[i])} if self.linear
+                   else {"balancing_moment": _num(self.balancing_moment[i]),
+                         "zhukovsky_balancing_moment": _num(self.zhukovsky_moment[i])}),
             },
             "reduced": {"moment": _num(self.reduced_moment[i]),
                         "inertia": _num(self.reduced_inertia[i])},
@@ -124,6 +130,12 @@ def analyse_forces(c: Construction, ev: Evaluation, mech: Mechanism, loading: An
     reactions = dict(sorted(reactions.items(), key=lambda kv: (order[kv[1].i], order[kv[1].j])))
     guides = dict(sorted(guides.items(), key=lambda kv: (order[kv[1].i], order[kv[1].j])))
     m_red, j_red = reduced_of(c, ev, mech, loading)
+    if mech.drive.linear:       # the driving force of a cylinder or slider
+        return ForceAnalysis(
+            phi=ev.phi, omega1=ev["vel.rate"], inertia=inertia, reactions=reactions,
+            guide_reactions=guides, balancing_moment=ev[c.driving_force()],
+            zhukovsky_moment=ev[c.zhukovsky_force()], reduced_moment=m_red,
+            reduced_inertia=j_red, linear=True)
     return ForceAnalysis(
         phi=ev.phi, omega1=link_omega(c, ev, mech.drive.link), inertia=inertia,
         reactions=reactions, guide_reactions=guides,

@@ -70,7 +70,8 @@ def reduced_of(
     J_red needs the velocity plan only; M_red needs the loads of the force plan (a construction
     built with ``loading``).
     """
-    omega1 = link_omega(c, ev, mech.drive.link)
+    # a linear driver: reduced to its coordinate (a force in N and a mass in kg, over q̇)
+    omega1 = ev["vel.rate"] if mech.drive.linear else link_omega(c, ev, mech.drive.link)
     forces: list[Array] = []
     velocities: list[Array] = []
     moments: list[Array] = []

@@ -76,21 +76,50 @@ class Link:
         return float(((x2 - x1) ** 2 + (y2 - y1) ** 2) ** 0.5)
 
 
+class DriverKind(enum.Enum):
+    """What the driver moves: a link turning about a frame pivot, or a length (linear drivers)."""
+
+    CRANK = "crank"          # a link turning about a frame pivot; coordinate φ (rad)
+    CYLINDER = "cylinder"    # a linear actuator (RPR): coordinate l, its length between pins (m)
+    SLIDER = "slider"        # a slider on a frame guide: coordinate s along the guide (m)
+
+
 @dataclass(frozen=True, slots=True)
 class Drive:
-    """The driving link: a crank turning about a frame point at constant or accelerating speed."""
+    """The driver and its law: its coordinate q is the independent variable of every plan.
+
+    A crank: ``link`` turns about the frame point ``pivot``; q = φ (rad) measured from
+    ``ref_angle``; ``omega``/``epsilon`` are dφ/dt, d²φ/dt² (signed, + counter-clockwise).
+    A cylinder: ``link`` is the rod sliding on ``guide`` of the barrel ``carrier``; ``pivot`` is the
+    rod's pin; q = l, the distance between the barrel's pivot and the rod's pin (m);
+    ``omega``/``epsilon`` are dl/dt (m/s, + extending) and d²l/dt² (m/s²).
+    A slider: ``link`` slides on the frame guide ``guide`` with its point ``pivot``; q = s, the
+    displacement of that point from the guide's ``through`` point along the guide (m), rates in
+    m/s and m/s². ``q_range`` is the range of q a sweep spreads its positions over (linear drivers).
+    """
 
     link: str
     pivot: str
-    omega: float  # rad/s, signed: + counter-clockwise
-    epsilon: float  # rad/s², signed
-    ref_angle: float  # rad, absolute direction of φ = 0
+    omega: float  # rad/s, signed: + counter-clockwise (linear drivers: m/s)
+    epsilon: float  # rad/s², signed (linear drivers: m/s²)
+    ref_angle: float  # rad, absolute direction of φ = 0 (linear drivers: 0)
     ref_name: str  # what φ is measured from ("Ax", "+x")
+    kind: DriverKind = DriverKind.CRANK
+    carrier: str | None = None  # cylinder: the barrel link
+    guide: str | None = None    # linear drivers: the guide the rod or slider slides on
+    q_range: tuple[float, float] | None = None  # linear drivers: (from, to) of a sweep (m)
 
     @property
     def sense(self) -> int:
-        """+1 counter-clockwise, -1 clockwise."""
+        """+1 counter-clockwise, -1 clockwise (linear drivers: always +1, q is signed)."""
+        if self.linear:
+            return 1
         return 1 if self.omega >= 0 else -1
+
+    @property
+    def linear(self) -> bool:
+        """Tell whether the driver's coordinate is a length (a cylinder or a slider)."""
+        return self.kind is not DriverKind.CRANK
 
 
 @dataclass(frozen=True, slots=True)

@@ -4,10 +4,10 @@ from __future__ import annotations
 
 import enum
 import itertools
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from ..errors import TopologyError
-from .mechanism import GROUND, Mechanism, Pair, PairKind
+from .mechanism import GROUND, DriverKind, Mechanism, Pair, PairKind
 
 
 class GroupKind(enum.StrEnum):
@@ -54,6 +54,8 @@ class Structure:
     higher_pairs: int
     driving_link: str
     groups: tuple[Group, ...]
+    #: a cylinder driver: (barrel, rod); its group lists the barrel and stands for both
+    cylinder: tuple[str, str] | None = None
 
     @property
     def dof(self) -> int:
@@ -63,7 +65,9 @@ class Structure:
     @property
     def formula(self) -> str:
         """Structure formula, e.g. ``I(0,1) → II(2,3) → II(4,5)``."""
-        parts = [f"I({GROUND},{self.driving_link})"] + [g.name for g in self.groups]
+        first = (f"I({self.cylinder[0]},{self.cylinder[1]})" if self.cylinder
+                 else f"I({GROUND},{self.driving_link})")
+        parts = [first] + [g.name for g in self.groups]
         return " → ".join(parts)
 
     @property
@@ -78,27 +82,84 @@ def degrees_of_freedom(mech: Mechanism) -> int:
 
 
 def analyse(mech: Mechanism) -> Structure:
-    """Decompose a one-drive mechanism into the driving link and class II groups."""
+    """Decompose a one-driver mechanism into its first-class mechanism and class II groups.
+
+    A crank or a slider on a frame guide is known once its coordinate is; a cylinder (barrel and
+    rod with their driven prismatic pair) is a link of known length: its rod is merged into its
+    barrel and the barrel joins the group it closes (boom + cylinder: II(boom, barrel)).
+    """
     w = degrees_of_freedom(mech)
-    if w != 1:
+    drivers = 1
+    if w != drivers:
         raise TopologyError(
             f"the mechanism has W = 3·{len(mech.moving)} − 2·{len(mech.pairs)} = {w} degrees of "
-            f"freedom but 1 drive; add or remove links or pairs so that W = 1", key="links")
-    known = {GROUND, mech.drive.link}
-    drive_pairs = [p for p in mech.pairs_of(mech.drive.link) if p.other(mech.drive.link) == GROUND]
-    if len(drive_pairs) != 1 or drive_pairs[0].kind is not PairKind.REVOLUTE:
-        raise TopologyError(f"the driving link {mech.drive.link} must turn about one frame point "
-                            "(a crank)", key="drive.link")
-    remaining = [k for k in mech.moving if k not in known]
+            f"freedom but {drivers} driver ([drive], link {mech.drive.link}); add or remove "
+            "links or pairs so that W equals the number of drivers", key="links")
+    drive = mech.drive
+    view, cylinder = mech, None
+    originals: dict[Pair, Pair] = {}
+    if drive.kind is DriverKind.CYLINDER:
+        view, originals, cylinder = _merged_cylinder(mech)
+        known = {GROUND}
+    else:
+        _check_driving_pair(mech)
+        known = {GROUND, drive.link}
+    remaining = [k for k in view.moving if k not in known]
     groups: list[Group] = []
     while remaining:
-        group = _find_dyad(mech, remaining, known)
+        group = _find_dyad(view, remaining, known)
         if group is None:
-            _raise_undecomposable(mech, remaining, known)
-        groups.append(group)  # type: ignore[arg-type]
-        known.update(group.links)  # type: ignore[union-attr]
+            _raise_undecomposable(view, remaining, known)
+        assert group is not None
+        group = Group(group.links, *(originals.get(p, p) for p in group.pairs))
+        groups.append(group)
+        known.update(group.links)
         remaining = [k for k in remaining if k not in known]
-    return Structure(len(mech.moving), len(mech.pairs), 0, mech.drive.link, tuple(groups))
+    return Structure(len(mech.moving), len(mech.pairs), 0, drive.link, tuple(groups), cylinder)
+
+
+def _check_driving_pair(mech: Mechanism) -> None:
+    drive = mech.drive
+    drive_pairs = [p for p in mech.pairs_of(drive.link) if p.other(drive.link) == GROUND]
+    if drive.kind is DriverKind.SLIDER:
+        if (len(drive_pairs) != 1 or drive_pairs[0].kind is not PairKind.PRISMATIC
+                or drive_pairs[0].a != drive.link):
+            raise TopologyError(f"the driving slider {drive.link} must slide on one frame guide "
+                                f"(it has {len(drive_pairs)} pair(s) with the frame)",
+                                key="drive.link")
+        return
+    if len(drive_pairs) != 1 or drive_pairs[0].kind is not PairKind.REVOLUTE:
+        raise TopologyError(f"the driving link {drive.link} must turn about one frame point "
+                            "(a crank)", key="drive.link")
+
+
+def _merged_cylinder(mech: Mechanism) -> tuple[Mechanism, dict[Pair, Pair], tuple[str, str]]:
+    """The mechanism with the cylinder's rod merged into its barrel (their pair driven)."""
+    rod, barrel = mech.drive.link, mech.drive.carrier
+    assert barrel is not None
+    driven = [p for p in mech.pairs if p.kind is PairKind.PRISMATIC and p.a == rod
+              and p.b == barrel]
+    if len(driven) != 1:
+        raise TopologyError(f"the cylinder's rod {rod} must slide in its barrel {barrel} "
+                            f"(found {len(driven)} such pair(s))", key="drive.link")
+    originals: dict[Pair, Pair] = {}
+    pairs: list[Pair] = []
+    for p in mech.pairs:
+        if p is driven[0]:
+            continue
+        q = replace(p, a=barrel if p.a == rod else p.a, b=barrel if p.b == rod else p.b)
+        if q.a == q.b:
+            raise TopologyError(f"the cylinder's rod {rod} and barrel {barrel} share a second "
+                                f"pair {p.name}; the cylinder could not extend", key="drive.link")
+        originals[q] = p
+        pairs.append(q)
+    ends = [p for p in pairs if p.joins(barrel)]
+    if len(ends) != 2 or any(p.kind is not PairKind.REVOLUTE for p in ends):
+        names = ", ".join(p.name for p in ends)
+        raise TopologyError(f"the cylinder (barrel {barrel}, rod {rod}) must be pinned at both "
+                            f"ends by two revolute pairs (it has {names})", key="drive.link")
+    links = {k: v for k, v in mech.links.items() if k != rod}
+    return replace(mech, links=links, pairs=tuple(pairs)), originals, (barrel, rod)
 
 
 def _outer_pairs(mech: Mechanism, link: str, known: set[str]) -> list[Pair]:

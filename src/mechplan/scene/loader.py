@@ -3,15 +3,17 @@
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 
 from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
 from ..errors import SceneError, TopologyError
 from ..i18n import LANGUAGES
-from ..model.mechanism import GROUND, Drive, Guide, Link, Mechanism, Pair, PairKind
+from ..model.mechanism import GROUND, Drive, DriverKind, Guide, Link, Mechanism, Pair, PairKind
 from ..model.plans import Plan
 from ..model.structure import analyse
 from .document import parse_toml
+from .drivers import linear_assembly_default, linear_drive, linear_positions
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
 from .loads import friction_of, gravity_of, loads_of, masses_of
 from .reader import Table
@@ -55,7 +57,7 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
     _orient_sliders(top, links, guides)
     pairs = _pairs(top, links, guides)
     drive = _drive(top, links, guides, pairs)
-    sides, sketch, assembly_phi = _assembly(top, links)
+    sides, sketch, assembly_phi = _assembly(top, links, drive)
     mech = Mechanism(links=links, pairs=tuple(pairs), guides=guides, drive=drive, sides=sides,
                      sketch=sketch)
     try:
@@ -65,6 +67,9 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
                             key=exc.key) from None
     all_points = {p for link in links.values() for p in link.points}
     positions = _positions(top, drive, all_points, links)
+    if drive.linear and drive.q_range is None:      # the listed lengths span the range
+        drive = replace(drive, q_range=(min(positions.angles), max(positions.angles)))
+        mech = replace(mech, drive=drive)
     masses = masses_of(top, links)
     plans, interest = _analysis(top, all_points)
     if not top.has("analysis") and (masses or top.raw("loads")):
@@ -283,7 +288,10 @@ def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
            pairs: list[Pair]) -> Drive:
     d = top.table("drive", required=True)
     assert d is not None
-    d.check_keys(("link", "speed", "omega", "sense", "from", "angle", "epsilon"))
+    kind = d.string("kind", "crank", choices=tuple(k.value for k in DriverKind))
+    if kind != "crank":
+        return linear_drive(d, DriverKind(kind), links, guides, pairs)
+    d.check_keys(("kind", "link", "speed", "omega", "sense", "from", "angle", "epsilon"))
     link = d.string("link", required=True)
     assert link is not None
     if link not in links or link == GROUND:
@@ -326,18 +334,18 @@ def _reference_angle(d: Table, name: str, guides: dict[str, Guide]) -> float:
                       f"(got {name!r})") from None
 
 
-def _assembly(top: Table, links: dict[str, Link]) -> tuple[dict[str, tuple[str, str, int]],
-                                                            dict[str, tuple[float, float]], float]:
+def _assembly(top: Table, links: dict[str, Link], drive: Drive
+              ) -> tuple[dict[str, tuple[str, str, int]], dict[str, tuple[float, float]], float]:
     sides: dict[str, tuple[str, str, int]] = {}
     sketch: dict[str, tuple[float, float]] = {}
     a = top.table("assembly")
-    phi = 0.0
+    phi = linear_assembly_default(top, drive) if drive.linear else 0.0
     if a is None:
         return sides, sketch, phi
     names = {p for link in links.values() for p in link.points}
     for key, value in a.data.items():
         if key == "at":
-            phi = a.quantity("at", "angle") or 0.0
+            phi = a.quantity("at", "length" if drive.linear else "angle") or 0.0
             continue
         if key not in names:
             raise a.error(key, f"unknown point {key!r}")
@@ -363,6 +371,8 @@ def _assembly(top: Table, links: dict[str, Link]) -> tuple[dict[str, tuple[str, 
 def _positions(top: Table, drive: Drive, points: set[str], links: dict[str, Link]) -> Positions:
     t = top.table("positions")
     drive_t = top.table("drive")
+    if drive.linear:
+        return linear_positions(t, drive)
     if t is None:
         if drive_t is not None and drive_t.has("angle"):
             return Positions(angles=(drive_t.quantity("angle", "angle") or 0.0,))

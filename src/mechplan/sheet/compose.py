@@ -9,10 +9,12 @@ import numpy as np
 
 from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
+from ..construct.terms import pole_label
 from ..drafting.frame import make_frame
 from ..drafting.primitives import Sheet, Text
 from ..errors import DrawingError, MechplanError
-from ..i18n import message, scientific, significant
+from ..i18n import message, scientific, significant, unit
+from ..i18n import number as format_number
 from ..model.mechanism import GROUND, PairKind
 from ..model.plans import Plan
 from ..solve import Solution
@@ -89,7 +91,7 @@ def _position_panel(sol: Solution, mu: float, lang: str) -> Panel:
     # the labelled (first highlighted) position in the title, as every plan of a position has
     # it: a sheet may hold this plan beside velocity plans of other positions (the grid of all
     # positions, cut to fit), and a reader tells the plans' positions apart by their titles
-    title = (plan_title(Plan.POSITION, lang, chosen[0], crank_degrees(sol, chosen[0]))
+    title = (plan_title(Plan.POSITION, lang, chosen[0], position_at(sol, chosen[0], lang))
              if chosen else plan_name(Plan.POSITION, lang))
     panel = position_plan(c, ev_all, ev_traj, scene.mechanism, highlight, extremes, ev_ext, mu,
                           lang, title, [str(k) for k in drawn])
@@ -112,11 +114,11 @@ def _kinematics_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room)
     every = velocity_positions(sol.scene, sol.positions)
     if has[Plan.VELOCITY] and len(every) > len(chosen):
         small = [small_plan(vector_plan(c, sol.ev, k, Plan.VELOCITY, mu[Plan.VELOCITY], lang,
-                                        "-"), k, crank_degrees(sol, k), lang) for k in every]
+                                        "-"), k, position_at(sol, k, lang), lang) for k in every]
         panels += grid("velocity-all", small, r.width, r.height, title=message(
             "layout.velocity_plans", lang))
     for k in chosen:
-        phi_deg = crank_degrees(sol, k)
+        phi_deg = position_at(sol, k, lang)
         if has[Plan.VELOCITY]:
             vp = _marked(vector_plan(c, sol.ev, k, Plan.VELOCITY, mu[Plan.VELOCITY], lang,
                                      plan_title(Plan.VELOCITY, lang, k, phi_deg)),
@@ -144,19 +146,30 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
     panels: list[Panel] = []
     groups = list(dict.fromkeys(s.group for s in c.segments if s.plan is Plan.FORCE))
     for k in plan_positions(sol):
-        phi_deg = crank_degrees(sol, k)
+        phi_deg = position_at(sol, k, lang)
         for group in groups:
             title = plan_title(Plan.FORCE, lang, k, phi_deg, group)
             panels += split_tables(vector_plan(c, sol.ev, k, Plan.FORCE, mu[Plan.FORCE], lang,
                                                title, group), title,
                                    tables_apart(c, Plan.FORCE, r), r)
+        # a linear driver's lever: at the force plans' μ (one μF on the sheet for the checker)
         lever = zhukovsky_lever(c, sol.ev, k, mu[Plan.VELOCITY], lang,
-                                lever_title(lang, phi_deg))
+                                lever_title(lang, phi_deg),
+                                mu[Plan.FORCE] if sol.scene.mechanism.drive.linear else None)
         if lever is not None:
             panels.append(lever)
     mb = balancing_diagram(sol, lang, r)
     eta = efficiency_diagram(sol, lang, r)
     return panels + [d for d in (mb, eta) if d is not None]
+
+
+def position_at(sol: Solution, k: int, lang: str) -> float | str:
+    """φ of position k in degrees (:func:`crank_degrees`), or a linear driver's coordinate as
+    written on its plans' titles: "l4 = 1562.5 mm"."""
+    if not sol.scene.mechanism.drive.linear:
+        return crank_degrees(sol, k)
+    label = pole_label(sol.construction["pos.q"].label, lang)
+    return f"{label} = {format_number(float(sol.phi[k]) * 1000.0, 1, lang)} {unit('mm', lang)}"
 
 
 def crank_degrees(sol: Solution, k: int) -> float:

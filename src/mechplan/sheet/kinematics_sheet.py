@@ -80,7 +80,7 @@ def chords(x: np.ndarray, y: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndar
 def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     """s(φ), v(φ), a(φ) of the output link: exact curves and the graphical differentiation."""
     out = output_link(sol.scene.mechanism)
-    if out is None:
+    if out is None or sol.scene.mechanism.drive.linear:   # diagrams over φ: a crank's turn
         return []
     omega = abs(sol.scene.mechanism.drive.omega)
     sweep_positions = not sol.scene.positions.angles and sol.positions >= 4
@@ -149,14 +149,16 @@ def balancing_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
     return d.panel
 
 
-def small_plan(panel: Panel, k: int, phi_deg: float, lang: str) -> Panel:
+def small_plan(panel: Panel, k: int, phi_deg: float | str, lang: str) -> Panel:
     """A velocity plan without its tables, titled by its position only."""
     keep: list[Primitive | Table] = [
         p for p in panel.primitives if not isinstance(p, Table)
         and not (isinstance(p, Text) and p.height_mm in (TABLE_H, TITLE_H))]
     out = Panel(panel.name, keep)
     x0, _y0, _x1, y1 = out.bounds()
-    title = message("layout.plan.small_title", lang, position=k, phi=number(phi_deg, 1, lang))
+    title = (message("drivers.small_title", lang, position=k, at=phi_deg)   # a linear driver
+             if isinstance(phi_deg, str) else
+             message("layout.plan.small_title", lang, position=k, phi=number(phi_deg, 1, lang)))
     out.primitives.append(Text((x0, y1 + 2.0), title, TABLE_H + 1.0))
     return out
 

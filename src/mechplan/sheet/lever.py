@@ -19,15 +19,19 @@ from ..model.plans import Plan
 from .panels import LABEL_H, SAME_POINT_MM, TABLE_H, TITLE_H, Panel, _finite, mu_text
 
 
-def lever_title(lang: str, phi_deg: float) -> str:
-    """ "Zhukovsky's lever — φ = 30.0°" with the language's decimal mark."""
-    return f"{message('sheet.lever.title', lang)} — φ = {format_number(phi_deg, 1, lang)}°"
+def lever_title(lang: str, phi_deg: float | str) -> str:
+    """ "Zhukovsky's lever — φ = 30.0°" with the language's decimal mark (``phi_deg`` a text: a
+    linear driver's coordinate)."""
+    at = phi_deg if isinstance(phi_deg, str) else f"φ = {format_number(phi_deg, 1, lang)}°"
+    return f"{message('sheet.lever.title', lang)} — {at}"
 
 
 def zhukovsky_lever(
-    c: Construction, ev: Evaluation, k: int, mu_v: float, lang: str, title: str
+    c: Construction, ev: Evaluation, k: int, mu_v: float, lang: str, title: str,
+    mu_f: float | None = None
 ) -> Panel | None:
-    """The velocity plan turned by 90° with every load at the image of its point."""
+    """The velocity plan turned by 90° with every load at the image of its point (the loads at
+    ``mu_f``, else at a scale of their own)."""
     lever = next((s for s in c.of_plan(Plan.FORCE) if spec(s.op).draw is Drawn.LEVER), None)
     if lever is None or lever.id not in ev.values:
         return None
@@ -41,7 +45,9 @@ def zhukovsky_lever(
     for seg in c.segments:
         if (
             seg.plan is Plan.VELOCITY
-            and seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE)
+            and (seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE)
+                 # a linear driver's rate: the rod's sliding velocity laid off from the pole
+                 or c.drive.linear and seg.kind is SegmentKind.SLIDING)
             and seg.start in ev.values
             and seg.end in ev.values
         ):
@@ -64,7 +70,7 @@ def zhukovsky_lever(
     if largest > 0:
         from ..construct.scale import choose_scale
 
-        mu_f = choose_scale(largest, 40.0)
+        mu_f = mu_f or choose_scale(largest, 40.0)
         placer_items: list[tuple[tuple[float, float], str]] = []
         for at, f, label in forces:
             tip = (at[0] + float(f[0]) / mu_f, at[1] + float(f[1]) / mu_f)
@@ -93,7 +99,8 @@ def zhukovsky_lever(
         )
         y = y0 - 6.0
         for line in couples + [
-            f"{lever.label} = {format_number(float(ev[lever.id][k]), 2, lang)} {unit('N·m', lang)}"
+            (f"{lever.label} = {format_number(float(ev[lever.id][k]), 2, lang)} "
+            f"{unit('N' if lever.label == 'F_d' else 'N·m', lang)}")   # a linear driver: F_d
         ]:
             prims.append(Text((x0, y), line, TABLE_H))
             y -= 4.5

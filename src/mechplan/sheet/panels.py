@@ -356,17 +356,22 @@ def position_plan(
             path = [q for q in path if _finite(q)]
             if len(path) > 2:
                 prims.append(Polyline(tuple(path), Role.CHAIN))
-    tip = next(p for p in mech.links[crank].points if p != mech.drive.pivot)
-    centre = _mm(ev_all[_pos(ev_all, mech.drive.pivot)][0], mu)
-    radius = math.dist(centre, _mm(ev_all[_pos(ev_all, tip)][0], mu))
-    prims.append(Circle(centre, radius, Role.CHAIN))
+    centre: tuple[float, float] | None = None
+    if mech.drive.linear:       # a cylinder's or slider's pin carries the positions' numbers
+        tip = mech.drive.pivot
+    else:
+        tip = next(p for p in mech.links[crank].points if p != mech.drive.pivot)
+        centre = _mm(ev_all[_pos(ev_all, mech.drive.pivot)][0], mu)
+        radius = math.dist(centre, _mm(ev_all[_pos(ev_all, tip)][0], mu))
+        prims.append(Circle(centre, radius, Role.CHAIN))
     # the positions' numbers at the crank's tip, outward; placed with the points' labels
     small_labels: list[tuple[tuple[float, float], str, float | None]] = []
     for k in range(ev_all.n):
         draw_links(ev_all, k, Role.OUTLINE if k in highlight else Role.THIN)
         tip_mm = _mm(ev_all[_pos(ev_all, tip)][k], mu)
         if _finite(tip_mm):
-            outward = math.degrees(math.atan2(tip_mm[1] - centre[1], tip_mm[0] - centre[0]))
+            outward = (None if centre is None else
+                       math.degrees(math.atan2(tip_mm[1] - centre[1], tip_mm[0] - centre[0])))
             small_labels.append((tip_mm, numbers[k], outward))
     if ev_ext is not None:
         for k in range(ev_ext.n):
@@ -465,8 +470,11 @@ def _pivot(p: tuple[float, float]) -> list[Primitive]:
     return out
 
 
-def plan_title(plan: Plan, lang: str, k: int, phi_deg: float, group: str | None = None) -> str:
-    """ "Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon)."""
+def plan_title(plan: Plan, lang: str, k: int, phi_deg: float | str,
+               group: str | None = None) -> str:
+    """ "Họa đồ vận tốc — vị trí 1, φ = 30°" (and the group of a force polygon); ``phi_deg`` a
+    text: a linear driver's coordinate ("l4 = 1562.5 mm")."""
     head = plan_name(plan, lang) + (f" {group}" if group else "")
     position = message("sheet.position", lang)
-    return f"{head} — {position} {k}, φ = {format_number(phi_deg, 1, lang)}°"
+    at = phi_deg if isinstance(phi_deg, str) else f"φ = {format_number(phi_deg, 1, lang)}°"
+    return f"{head} — {position} {k}, {at}"

@@ -66,6 +66,7 @@ class Written(enum.Enum):
     RATE = "rate"            # ω or ε with its sense (counter-clockwise / clockwise)
     OFFSET = "offset"        # a distance of the force plan, in millimetres
     MEET = "meet"            # a point found by a construction: its segments after a colon
+    LINEAR = "linear"        # a linear driver's length and its rates (m, m/s, m/s²)
 
 
 class Line(enum.Enum):

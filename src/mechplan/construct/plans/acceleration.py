@@ -27,6 +27,10 @@ A = Plan.ACCELERATION
 
 def emit_drive(b: Builder) -> None:
     """Pole π, frame images, ε1 and the driving vector π b′."""
+    if b.mech.drive.linear:     # a cylinder or a slider: see plans/drivers.py
+        from .drivers import emit_linear_plan
+        emit_linear_plan(b, A)
+        return
     tip, group = start_plan(b, A)
     drive = b.mech.drive
     body = b.bodies[drive.link]

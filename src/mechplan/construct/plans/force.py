@@ -56,9 +56,19 @@ def emit(b: Builder) -> None:
     inertia_and_weights(st)
     external_loads(st)
     friction_loads(st)
+    from . import drivers, force_drivers  # a cylinder or a slider (plans/force_drivers.py)
+
     for g in reversed(b.structure.groups):
+        if drivers.cylinder_in(b, g):
+            force_drivers.cylinder_group(st, g)
+            continue
         {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
          GroupKind.RPP: _rpp}[g.kind](st, g)
+    if b.mech.drive.linear:
+        if b.mech.drive.kind.value == "slider":
+            force_drivers.slider_driver(st)
+        force_drivers.lever(st)
+        return
     _driving_link(st)
     _lever(st)
 

@@ -27,6 +27,10 @@ def emit_frame_and_drive(b: Builder) -> None:
         b.pos[name] = b.add(f"pos.{name}", Op.FIXED_POINT, (), P, Kind.POINT, Role.GIVEN, name,
                             xy=xy)
     drive = b.mech.drive
+    if drive.linear:        # a cylinder or a slider: see plans/drivers.py
+        from .drivers import emit_linear_position
+        emit_linear_position(b)
+        return
     crank = b.mech.links[drive.link]
     pivot = drive.pivot
     tip = next(p for p in crank.points if p != pivot)

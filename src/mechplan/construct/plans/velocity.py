@@ -27,6 +27,10 @@ V = Plan.VELOCITY
 
 def emit_drive(b: Builder) -> None:
     """Pole, frame images, ω1 and the driving vector pb ⊥ AB."""
+    if b.mech.drive.linear:     # a cylinder or a slider: see plans/drivers.py
+        from .drivers import emit_linear_plan
+        emit_linear_plan(b, V)
+        return
     tip, group = start_plan(b, V)
     drive = b.mech.drive
     body = b.bodies[drive.link]
