@@ -159,19 +159,29 @@ class Builder:
     # -- build -------------------------------------------------------------------------------
     def build(self, plans: tuple[str, ...]) -> Construction:
         """Emit the position plan and, as asked, velocity and acceleration plans."""
-        from .plans import acceleration, position, velocity
+        from ..model.structure import Triad
+        from .plans import acceleration, position, triad, velocity
 
         position.emit_frame_and_drive(self)
         for group in self.structure.groups:
-            position.emit_group(self, group)
+            if isinstance(group, Triad):
+                triad.emit_position(self, group)
+            else:
+                position.emit_group(self, group)
         if "velocity" in plans or "acceleration" in plans or "force" in plans:
             velocity.emit_drive(self)
             for group in self.structure.groups:
-                velocity.emit_group(self, group)
+                if isinstance(group, Triad):
+                    triad.emit_velocity(self, group)
+                else:
+                    velocity.emit_group(self, group)
         if "acceleration" in plans or "force" in plans:
             acceleration.emit_drive(self)
             for group in self.structure.groups:
-                acceleration.emit_group(self, group)
+                if isinstance(group, Triad):
+                    triad.emit_acceleration(self, group)
+                else:
+                    acceleration.emit_group(self, group)
         if "force" in plans and self.loading is not None:
             from .plans import force
             force.emit(self)

@@ -9,4 +9,5 @@ from __future__ import annotations
 from .acceleration import *
 from .force import *
 from .position import *
+from .triad import *
 from .velocity import *

@@ -1,0 +1,164 @@
+"""Operations of class III groups (triads): the base link's angle solved on the group's closure,
+its first inner point, and the line of a leg on the position plan (for Assur's special point).
+
+A triad RRR-RRR: legs i = 1, 2, 3 join known points A_i to the base link's points B_i
+(|A_i B_i| = l_i). With the base link's angle θ, B_2 − B_1 = R(θ)·d2 and B_3 − B_1 = R(θ)·d3 (d2,
+d3 in the base link's frame), so B_1 is where the arc (A_1, l_1) meets the arc (A_2 − R(θ)·d2, l_2)
+(branch ``sigma``), and the closure is f(θ) = |B_1 − (A_3 − R(θ)·d3)| − l_3 = 0. It has up to six
+roots; the assembly is the root of branch ``sigma`` where f crosses zero with the sign ``slope``,
+nearest (circularly) to the angle ``theta_ref`` of the assembly position — a rule that needs no
+neighbouring position, so any position is evaluated alone.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...geom import meet
+from ...geom.vec import Array
+from ..step import Step
+from .spec import Drawn, Grade, Hint, HintView, Line, OpSpec, Result, Written, hint, line, measured
+
+#: grid of base-link angles on which the closure's roots are bracketed
+GRID = 48
+#: iterations of the bracketing secant (Illinois) refinement, at most
+ITERATIONS = 60
+
+
+def _rot(d: tuple[float, float], c: Array, s: Array) -> Array:
+    return np.stack((c * d[0] - s * d[1], s * d[0] + c * d[1]), axis=-1)
+
+
+def closure(a1: Array, a2: Array, a3: Array, theta: Array, l1: float, l2: float, l3: float,
+            d2: tuple[float, float], d3: tuple[float, float],
+            sigma: int) -> tuple[Array, Array, Array]:
+    """f(θ), B_1(θ) and the arcs' sine at base angles θ (points broadcast against θ's shape)."""
+    c, s = np.cos(theta), np.sin(theta)
+    b1, _, sine = meet.circle_circle(a1, l1, a2 - _rot(d2, c, s), l2, sigma)
+    r = b1 - (a3 - _rot(d3, c, s))
+    with np.errstate(invalid="ignore"):
+        f = np.sqrt(r[..., 0] * r[..., 0] + r[..., 1] * r[..., 1]) - l3
+    return f, b1, sine
+
+
+def _params(step: Step) -> tuple[float, float, float, tuple[float, float], tuple[float, float]]:
+    return (float(step.param("l1")), float(step.param("l2")), float(step.param("l3")),
+            tuple(step.param("d2")), tuple(step.param("d3")))  # type: ignore[return-value]
+
+
+def roots(a1: Array, a2: Array, a3: Array, step: Step, sigma: int) -> list[tuple[float, int]]:
+    """Every root (θ, sign of f′) of branch ``sigma`` at the first position (assembly)."""
+    l1, l2, l3, d2, d3 = _params(step)
+    th = np.linspace(0.0, 2 * math.pi, 720, endpoint=False)
+    f, _, _ = closure(a1[:1, None, :], a2[:1, None, :], a3[:1, None, :], th[None, :], l1, l2, l3,
+                      d2, d3, sigma)
+    f0, f1 = f[0], np.roll(f[0], -1)
+    out = []
+    for k in np.nonzero(np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1))[0]:
+        lo, hi = th[k], th[k] + 2 * math.pi / th.size
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            fm = closure(a1[:1], a2[:1], a3[:1], np.array([mid]), l1, l2, l3, d2, d3, sigma)[0][0]
+            if not np.isfinite(fm):
+                break
+            if (fm > 0) == (f1[k] > 0):
+                hi = mid
+            else:
+                lo = mid
+            if hi - lo < 1e-15:
+                break
+        out.append((math.remainder(0.5 * (lo + hi), 2 * math.pi), 1 if f1[k] > f0[k] else -1))
+    return out
+
+
+def triad_angle(step: Step, a1: Array, a2: Array, a3: Array) -> Result:
+    """The base link's angle θ: the root of the closure f(θ) on the assembly's branch.
+
+    Bracketed on a grid of ``GRID`` angles (vectorised over positions), refined by the Illinois
+    secant to the last bit. NaN with gap > 0 (min |f| over the branch) where the group does not
+    close; the sine is |f′|·(the arcs' sine) over the group's size (0: the triad's Jacobian is
+    singular).
+    """
+    l1, l2, l3, d2, d3 = _params(step)
+    sigma, slope, ref = int(step.param("sigma")), int(step.param("slope")), step.param("theta_ref")
+    dt = 2 * math.pi / GRID
+    th = np.arange(GRID + 1) * dt + ref - math.pi      # centred on the reference, both ends
+    p1, p2, p3 = a1[:, None, :], a2[:, None, :], a3[:, None, :]
+    f, _, _ = closure(p1, p2, p3, th[None, :], l1, l2, l3, d2, d3, sigma)
+    f0, f1 = f[:, :-1], f[:, 1:]
+    ok = np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1)
+    ok &= np.sign(f1 - f0) == slope
+    dist = np.abs(th[:-1] + 0.5 * dt - ref)             # circular: the grid is centred on ref
+    k = np.argmin(np.where(ok, dist[None, :], np.inf), axis=1)
+    rows = np.arange(f.shape[0])
+    found = ok[rows, k]
+    lo, hi = th[k].astype(float), th[k] + dt
+    flo, fhi = f0[rows, k], f1[rows, k]
+    side = np.zeros(lo.shape)
+    x = lo.copy()
+    active = found.copy()
+    for _ in range(ITERATIONS):
+        if not active.any():
+            break
+        with np.errstate(invalid="ignore", divide="ignore"):
+            x = np.where(active, hi - fhi * (hi - lo) / (fhi - flo), x)
+        fx, _, _ = closure(a1, a2, a3, x, l1, l2, l3, d2, d3, sigma)
+        fx = np.where(np.isfinite(fx), fx, 0.0)
+        same_hi = np.sign(fx) == np.sign(fhi)
+        # Illinois: halve the stale end's value when the same end moves twice
+        upd_hi = active & same_hi
+        upd_lo = active & ~same_hi
+        flo = np.where(upd_hi & (side == 1), 0.5 * flo, flo)
+        fhi = np.where(upd_lo & (side == -1), 0.5 * fhi, fhi)
+        hi, fhi = np.where(upd_hi, x, hi), np.where(upd_hi, fx, fhi)
+        lo, flo = np.where(upd_lo, x, lo), np.where(upd_lo, fx, flo)
+        side = np.where(upd_hi, 1, np.where(upd_lo, -1, side))
+        active &= (fx != 0) & (np.abs(hi - lo) > 4e-16 * (1 + np.abs(x)))
+    theta = np.where(found, x, np.nan)
+    fb, _, cc_sine = closure(a1, a2, a3, theta, l1, l2, l3, d2, d3, sigma)
+    h = 1e-6
+    fp = (closure(a1, a2, a3, theta + h, l1, l2, l3, d2, d3, sigma)[0]
+          - closure(a1, a2, a3, theta - h, l1, l2, l3, d2, d3, sigma)[0]) / (2 * h)
+    size = l1 + l2 + l3 + math.hypot(*d2) + math.hypot(*d3)
+    with np.errstate(invalid="ignore"):
+        sine = np.minimum(1.0, np.abs(fp) * cc_sine / size)
+        miss = np.nanmin(np.where(np.isfinite(f), np.abs(f), np.inf), axis=1)
+    gap = np.where(found, -np.abs(fb), np.where(np.isfinite(miss), miss, size))
+    sine = np.where(found, np.nan_to_num(sine, nan=0.0), 0.0)
+    return theta, gap, sine
+
+
+def triad_point(step: Step, a1: Array, a2: Array, angle: Array) -> Result:
+    """B_1: the arc (A_1, l_1) meets the arc (A_2 − R(θ)·d2, l_2), branch ``sigma``."""
+    l1, l2, _, d2, _ = _params(step)
+    c, s = np.cos(angle), np.sin(angle)
+    return meet.circle_circle(a1, l1, a2 - _rot(d2, c, s), l2, int(step.param("sigma")))
+
+
+def line_through(step: Step, p: Array, q: Array) -> Result:
+    """The line of a leg on the position plan: through P and Q."""
+    d = q - p
+    n = np.sqrt(d[..., 0] * d[..., 0] + d[..., 1] * d[..., 1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        u = d / n[..., None]
+    return line(p, u), None, None
+
+
+# -- check rules ----------------------------------------------------------------------------------
+def triad_point_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
+    """A point of a triad: where the three legs close the group."""
+    return measured(hint("rule.triad_point", label=view.labels(step.id)))
+
+
+# -- the operations -------------------------------------------------------------------------------
+TRIAD_ANGLE = OpSpec("triad_angle", triad_angle, "protocol.op.triad_angle",
+                     written=Written.ANGLE)
+TRIAD_POINT = OpSpec("triad_point", triad_point, "protocol.op.triad_point", Drawn.POINT,
+                     Line.OUTLINE, Grade.POINT, hint_rule=triad_point_hint)
+LINE_THROUGH = OpSpec("line_through", line_through, "protocol.op.line_through",
+                      Drawn.CONSTRUCTION_LINE, Line.DASHED, Grade.DIRECTION, lever=("p", "q"),
+                      through="p")
+
+__all__ = ["LINE_THROUGH", "TRIAD_ANGLE", "TRIAD_POINT"]
