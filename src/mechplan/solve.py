@@ -238,7 +238,8 @@ def to_json(sol: Solution) -> dict[str, Any]:
         "dof": sol.structure.dof,
         "structure": sol.structure.formula,
         "groups": [
-            {"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups
+            {"class": g.klass, "kind": str(g.kind), "links": list(g.links)}
+            for g in sol.structure.groups
         ],
         "positions": positions,
         "accuracy": trust_json(sol),

@@ -25,6 +25,8 @@ from .spec import Drawn, Grade, Hint, HintView, Line, OpSpec, Result, Written, h
 GRID = 48
 #: iterations of the bracketing secant (Illinois) refinement, at most
 ITERATIONS = 60
+#: bisections locating the edge of the arcs' domain in a grid cell
+EDGE_BISECTIONS = 52
 
 
 def _rot(d: tuple[float, float], c: Array, s: Array) -> Array:
@@ -48,57 +50,43 @@ def _params(step: Step) -> tuple[float, float, float, tuple[float, float], tuple
             tuple(step.param("d2")), tuple(step.param("d3")))  # type: ignore[return-value]
 
 
-def roots(a1: Array, a2: Array, a3: Array, step: Step, sigma: int) -> list[tuple[float, int]]:
-    """Every root (θ, sign of f′) of branch ``sigma`` at the first position (assembly)."""
-    l1, l2, l3, d2, d3 = _params(step)
-    th = np.linspace(0.0, 2 * math.pi, 720, endpoint=False)
-    f, _, _ = closure(a1[:1, None, :], a2[:1, None, :], a3[:1, None, :], th[None, :], l1, l2, l3,
-                      d2, d3, sigma)
-    f0, f1 = f[0], np.roll(f[0], -1)
-    out = []
-    for k in np.nonzero(np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1))[0]:
-        lo, hi = th[k], th[k] + 2 * math.pi / th.size
-        for _ in range(200):
-            mid = 0.5 * (lo + hi)
-            fm = closure(a1[:1], a2[:1], a3[:1], np.array([mid]), l1, l2, l3, d2, d3, sigma)[0][0]
-            if not np.isfinite(fm):
-                break
-            if (fm > 0) == (f1[k] > 0):
-                hi = mid
-            else:
-                lo = mid
-            if hi - lo < 1e-15:
-                break
-        out.append((math.remainder(0.5 * (lo + hi), 2 * math.pi), 1 if f1[k] > f0[k] else -1))
-    return out
+def _brackets(a1: Array, a2: Array, a3: Array, th: Array, step: Step,
+              sigma: int) -> tuple[Array, Array, Array, Array, Array]:
+    """Grid cells (N, M) of θ with the closure's values at their ends, and the values (N, M + 1).
 
-
-def triad_angle(step: Step, a1: Array, a2: Array, a3: Array) -> Result:
-    """The base link's angle θ: the root of the closure f(θ) on the assembly's branch.
-
-    Bracketed on a grid of ``GRID`` angles (vectorised over positions), refined by the Illinois
-    secant to the last bit. NaN with gap > 0 (min |f| over the branch) where the group does not
-    close; the sine is |f′|·(the arcs' sine) over the group's size (0: the triad's Jacobian is
-    singular).
+    A cell with one end outside the arcs' domain (where the two branches of the arcs join) is
+    cut at the domain's edge, found by bisection, so that a root beside the edge is bracketed.
     """
     l1, l2, l3, d2, d3 = _params(step)
-    sigma, slope, ref = int(step.param("sigma")), int(step.param("slope")), step.param("theta_ref")
-    dt = 2 * math.pi / GRID
-    th = np.arange(GRID + 1) * dt + ref - math.pi      # centred on the reference, both ends
-    p1, p2, p3 = a1[:, None, :], a2[:, None, :], a3[:, None, :]
-    f, _, _ = closure(p1, p2, p3, th[None, :], l1, l2, l3, d2, d3, sigma)
-    f0, f1 = f[:, :-1], f[:, 1:]
-    ok = np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1)
-    ok &= np.sign(f1 - f0) == slope
-    dist = np.abs(th[:-1] + 0.5 * dt - ref)             # circular: the grid is centred on ref
-    k = np.argmin(np.where(ok, dist[None, :], np.inf), axis=1)
-    rows = np.arange(f.shape[0])
-    found = ok[rows, k]
-    lo, hi = th[k].astype(float), th[k] + dt
-    flo, fhi = f0[rows, k], f1[rows, k]
+    f, _, _ = closure(a1[:, None, :], a2[:, None, :], a3[:, None, :], th[None, :], l1, l2, l3,
+                      d2, d3, sigma)
+    t0 = np.broadcast_to(th[:-1], f[:, :-1].shape).copy()
+    t1 = np.broadcast_to(th[1:], t0.shape).copy()
+    f0, f1 = f[:, :-1].copy(), f[:, 1:].copy()
+    fin0, fin1 = np.isfinite(f0), np.isfinite(f1)
+    rows, cols = np.nonzero(fin0 ^ fin1)
+    if rows.size:
+        left = fin0[rows, cols]
+        good = np.where(left, t0[rows, cols], t1[rows, cols])
+        bad = np.where(left, t1[rows, cols], t0[rows, cols])
+        p1, p2, p3 = a1[rows], a2[rows], a3[rows]
+        for _ in range(EDGE_BISECTIONS):
+            mid = 0.5 * (good + bad)
+            fin = np.isfinite(closure(p1, p2, p3, mid, l1, l2, l3, d2, d3, sigma)[0])
+            good, bad = np.where(fin, mid, good), np.where(fin, bad, mid)
+        fg = closure(p1, p2, p3, good, l1, l2, l3, d2, d3, sigma)[0]
+        t1[rows[left], cols[left]], f1[rows[left], cols[left]] = good[left], fg[left]
+        t0[rows[~left], cols[~left]], f0[rows[~left], cols[~left]] = good[~left], fg[~left]
+    return t0, t1, f0, f1, f
+
+
+def _refine(a1: Array, a2: Array, a3: Array, lo: Array, hi: Array, flo: Array, fhi: Array,
+            active: Array, step: Step, sigma: int) -> tuple[Array, Array, Array]:
+    """Illinois secant on brackets [lo, hi] (f changes sign) to the last bit: (θ, lo, hi)."""
+    l1, l2, l3, d2, d3 = _params(step)
     side = np.zeros(lo.shape)
     x = lo.copy()
-    active = found.copy()
+    active = active.copy()
     for _ in range(ITERATIONS):
         if not active.any():
             break
@@ -107,15 +95,53 @@ def triad_angle(step: Step, a1: Array, a2: Array, a3: Array) -> Result:
         fx, _, _ = closure(a1, a2, a3, x, l1, l2, l3, d2, d3, sigma)
         fx = np.where(np.isfinite(fx), fx, 0.0)
         same_hi = np.sign(fx) == np.sign(fhi)
+        upd_hi, upd_lo = active & same_hi, active & ~same_hi
         # Illinois: halve the stale end's value when the same end moves twice
-        upd_hi = active & same_hi
-        upd_lo = active & ~same_hi
         flo = np.where(upd_hi & (side == 1), 0.5 * flo, flo)
         fhi = np.where(upd_lo & (side == -1), 0.5 * fhi, fhi)
         hi, fhi = np.where(upd_hi, x, hi), np.where(upd_hi, fx, fhi)
         lo, flo = np.where(upd_lo, x, lo), np.where(upd_lo, fx, flo)
         side = np.where(upd_hi, 1, np.where(upd_lo, -1, side))
         active &= (fx != 0) & (np.abs(hi - lo) > 4e-16 * (1 + np.abs(x)))
+    return x, lo, hi
+
+
+def _crossing(f0: Array, f1: Array) -> Array:
+    return np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1)
+
+
+def roots(a1: Array, a2: Array, a3: Array, step: Step, sigma: int) -> list[tuple[float, int]]:
+    """Every root (θ, sign of f′) of branch ``sigma`` at the first position (assembly)."""
+    th = np.linspace(-math.pi, math.pi, 721)
+    t0, t1, f0, f1, _ = _brackets(a1[:1], a2[:1], a3[:1], th, step, sigma)
+    k = np.nonzero(_crossing(f0[0], f1[0]))[0]
+    n = k.size
+    x, _, _ = _refine(np.repeat(a1[:1], n, 0), np.repeat(a2[:1], n, 0), np.repeat(a3[:1], n, 0),
+                      t0[0, k], t1[0, k], f0[0, k], f1[0, k], np.ones(n, bool), step, sigma)
+    return [(math.remainder(float(t), 2 * math.pi), 1 if f1[0, j] > f0[0, j] else -1)
+            for t, j in zip(x, k, strict=True)]
+
+
+def triad_angle(step: Step, a1: Array, a2: Array, a3: Array) -> Result:
+    """The base link's angle θ: the root of the closure f(θ) on the assembly's branch.
+
+    Bracketed on a grid of ``GRID`` angles centred on the assembly's angle (vectorised over
+    positions; cells at the edge of the arcs' domain cut there), refined by the Illinois secant to
+    the last bit. NaN with gap > 0 (min |f| over the branch) where the group does not close; the
+    sine is |f′|·(the arcs' sine) over the group's size (0: the triad's Jacobian is singular).
+    """
+    l1, l2, l3, d2, d3 = _params(step)
+    sigma, slope, ref = int(step.param("sigma")), int(step.param("slope")), step.param("theta_ref")
+    dt = 2 * math.pi / GRID
+    th = np.arange(GRID + 1) * dt + ref - math.pi      # centred on the reference, both ends
+    t0, t1, f0, f1, f = _brackets(a1, a2, a3, th, step, sigma)
+    ok = _crossing(f0, f1) & (np.sign(f1 - f0) == slope)
+    dist = np.abs(0.5 * (t0 + t1) - ref)               # circular: the grid is centred on ref
+    k = np.argmin(np.where(ok, dist, np.inf), axis=1)
+    rows = np.arange(f.shape[0])
+    found = ok[rows, k]
+    x, _, _ = _refine(a1, a2, a3, t0[rows, k], t1[rows, k], f0[rows, k], f1[rows, k], found,
+                      step, sigma)
     theta = np.where(found, x, np.nan)
     fb, _, cc_sine = closure(a1, a2, a3, theta, l1, l2, l3, d2, d3, sigma)
     h = 1e-6
@@ -146,6 +172,20 @@ def line_through(step: Step, p: Array, q: Array) -> Result:
     return line(p, u), None, None
 
 
+def moment_along(step: Step, centre: Array, at: Array, toward: Array, total: Array) -> Result:
+    """Force at ``at`` along (toward − at) whose moment about the centre is −total (a leg's R^n
+    from the moments of the whole triad about its special point); sine: |arm| / |at − centre|."""
+    r = at - centre
+    u = toward - at
+    n = np.sqrt(u[..., 0] * u[..., 0] + u[..., 1] * u[..., 1])
+    with np.errstate(invalid="ignore", divide="ignore"):
+        u = u / n[..., None]
+        arm = r[..., 0] * u[..., 1] - r[..., 1] * u[..., 0]
+        lam = -total / arm
+        sine = np.abs(arm) / np.sqrt(r[..., 0] * r[..., 0] + r[..., 1] * r[..., 1])
+    return lam[..., None] * u, None, sine
+
+
 # -- check rules ----------------------------------------------------------------------------------
 def triad_point_hint(step: Step, view: HintView, at: Array, tol_mm: float) -> Hint:
     """A point of a triad: where the three legs close the group."""
@@ -161,4 +201,7 @@ LINE_THROUGH = OpSpec("line_through", line_through, "protocol.op.line_through",
                       Drawn.CONSTRUCTION_LINE, Line.DASHED, Grade.DIRECTION, lever=("p", "q"),
                       through="p")
 
-__all__ = ["LINE_THROUGH", "TRIAD_ANGLE", "TRIAD_POINT"]
+MOMENT_ALONG = OpSpec("moment_along", moment_along, "protocol.op.moment_along", Drawn.VECTOR,
+                      Line.OUTLINE, Grade.VALUE)
+
+__all__ = ["LINE_THROUGH", "MOMENT_ALONG", "TRIAD_ANGLE", "TRIAD_POINT"]

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from ...model.mechanism import GROUND, Pair, PairKind
 from ...model.plans import Plan
-from ...model.structure import Group, GroupKind
+from ...model.structure import Group, GroupKind, Triad
 from ..builder import Builder
 from ..graph import reaction_key
 from ..ops import Op
@@ -55,6 +55,10 @@ def emit(b: Builder) -> None:
     inertia_and_weights(st)
     external_loads(st)
     for g in reversed(b.structure.groups):
+        if isinstance(g, Triad):
+            from .triad_force import emit as emit_triad
+            emit_triad(st, g)
+            continue
         {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
          GroupKind.RPP: _rpp}[g.kind](st, g)
     _driving_link(st)
