@@ -54,8 +54,8 @@ class Group:
 class Triad:
     """A class III Assur group: a ternary base link joined by three binary links.
 
-    ``legs[i]`` is binary link i; ``outer[i]`` its pair with a known link, ``inner[i]`` its pair with
-    the base link. Supported: all six pairs revolute (RRR-RRR).
+    ``legs[i]`` is binary link i; ``outer[i]`` its pair with a known link, ``inner[i]`` its pair
+    with the base link. Supported: all six pairs revolute (RRR-RRR).
     """
 
     base: str

@@ -50,7 +50,7 @@ def special_legs(b: Builder, g: Triad) -> tuple[int, int, int]:
     return i, j, 3 - i - j
 
 
-# -- position ---------------------------------------------------------------------------------------
+# -- position -------------------------------------------------------------------------------------
 def emit_position(b: Builder, g: Triad) -> None:
     """θ of the base link on the group's closure, B_1, the other points, and S."""
     mech = b.mech
@@ -59,12 +59,12 @@ def emit_position(b: Builder, g: Triad) -> None:
     (x1, y1) = base.points[legs[0][2]]
     d = [(base.points[bb][0] - x1, base.points[bb][1] - y1) for _, _, bb in legs]
     lengths = [mech.links[leg].distance(a, bb) for leg, a, bb in legs]
-    params = dict(l1=lengths[0], l2=lengths[1], l3=lengths[2], d2=d[1], d3=d[2])
+    params = {"l1": lengths[0], "l2": lengths[1], "l3": lengths[2], "d2": d[1], "d3": d[2]}
     a_ids = tuple(b.pos[a] for _, a, _ in legs)
     sid = b.add(f"pos.angle.{g.base}", Op.TRIAD_ANGLE, a_ids, P, Kind.SCALAR, Role.RESULT,
                 f"θ{g.base}", g.name, subject=tuple(a for _, a, _ in legs), sigma=1, slope=1,
                 theta_ref=0.0, **params)
-    sigma = _fix_branch(b, g, sid, d)
+    sigma = _fix_branch(b, g, sid)
     b1 = legs[0][2]
     b.pos[b1] = b.add(f"pos.{b1}", Op.TRIAD_POINT, (a_ids[0], a_ids[1], sid), P, Kind.POINT,
                       Role.RESULT, b1, g.name, subject=(legs[0][1], legs[1][1], b1), sigma=sigma,
@@ -80,8 +80,10 @@ def emit_position(b: Builder, g: Triad) -> None:
     _special_point(b, g)
 
 
-def _candidates(b: Builder, g: Triad, sid: str,
-                d: list[tuple[float, float]]) -> list[tuple[float, int, int, dict[str, np.ndarray]]]:
+Candidate = tuple[float, int, int, dict[str, np.ndarray]]
+
+
+def _candidates(b: Builder, g: Triad, sid: str) -> list[Candidate]:
     ev = b.c.evaluate(b.assembly_phi)
     step = b.c[sid]
     a = [ev[i] for i in step.inputs]
@@ -100,10 +102,10 @@ def _candidates(b: Builder, g: Triad, sid: str,
     return out
 
 
-def _fix_branch(b: Builder, g: Triad, sid: str, d: list[tuple[float, float]]) -> int:
+def _fix_branch(b: Builder, g: Triad, sid: str) -> int:
     """Choose the assembly among the closure's roots at the assembly angle from the sketch or the
     sides of the base link's points; return its arcs' branch."""
-    cands = _candidates(b, g, sid, d)
+    cands = _candidates(b, g, sid)
     where = f"{math.degrees(b.assembly_phi):g}"
     if not cands:
         raise SceneError(f"the class III group {g.name} cannot be assembled at φ = {where}°; set "
@@ -167,13 +169,14 @@ def emit_velocity(b: Builder, g: Triad) -> None:
     i, j, k = special_legs(b, g)
     name = special_name(b, g)
     gn = g.name
-    (li, ai, bi), (lj, aj, bj), (lk, ak, bk) = legs[i], legs[j], legs[k]
+    (_, ai, bi), (_, aj, bj), (_, ak, bk) = legs[i], legs[j], legs[k]
     s = images.meet_lines(b, V, f"vel.{name}", images.perp_line(b, V, b.vel[ai], ai, bi, gn),
                           images.perp_line(b, V, b.vel[aj], aj, bj, gn), vlabel(name), gn,
                           Role.AUXILIARY)
     im = b.bodies[g.base].image(name)
     assert im is not None
     im.vel = s
+    b.segment(V, images.pole(V), s, f"p{vlabel(name)}", f"v_{name}", SegmentKind.ABSOLUTE, gn)
     b.vel[bk] = images.meet_lines(b, V, f"vel.{bk}", images.perp_line(b, V, s, name, bk, gn),
                                   images.perp_line(b, V, b.vel[ak], ak, bk, gn), vlabel(bk), gn)
     _omega(b, g.base, name, b.pos[bk], s, b.vel[bk], gn)
@@ -184,14 +187,14 @@ def emit_velocity(b: Builder, g: Triad) -> None:
     for leg, a, bb in legs:
         _omega(b, leg, a, b.pos[bb], b.vel[a], b.vel[bb], gn)
         images.complete(b, leg, V, gn)
-    b.c.equations[(V, gn)] = (
-        f"v_{name} = v_{ai} + v_{name}{ai} = v_{aj} + v_{name}{aj}; "
-        f"v_{bk} = v_{name} + v_{bk}{name} = v_{ak} + v_{bk}{ak}", [
+    b.c.equations[(V, f"{gn} {name}")] = (
+        f"v_{name} = v_{ai} + v_{name}{ai} = v_{aj} + v_{name}{aj}", [
             (f"v_{ai}", GIVEN, "✓"), (f"v_{name}{ai}", perp(f"{ai}{bi}"), "?"),
-            (f"v_{aj}", GIVEN, "✓"), (f"v_{name}{aj}", perp(f"{aj}{bj}"), "?"),
-            (f"v_{bk}{name}", perp(f"{name}{bk}"), "?"),
+            (f"v_{aj}", GIVEN, "✓"), (f"v_{name}{aj}", perp(f"{aj}{bj}"), "?")])
+    b.c.equations[(V, f"{gn} {bk}")] = (
+        f"v_{bk} = v_{name} + v_{bk}{name} = v_{ak} + v_{bk}{ak}", [
+            (f"v_{name}", GIVEN, "✓"), (f"v_{bk}{name}", perp(f"{name}{bk}"), "?"),
             (f"v_{ak}", GIVEN, "✓"), (f"v_{bk}{ak}", perp(f"{ak}{bk}"), "?")])
-    del li, lj, lk
 
 
 # -- acceleration ---------------------------------------------------------------------------------
@@ -214,6 +217,7 @@ def emit_acceleration(b: Builder, g: Triad) -> None:
     im = b.bodies[g.base].image(name)
     assert im is not None
     im.acc = s
+    b.segment(A, images.pole(A), s, f"π{alabel(name)}", f"a_{name}", SegmentKind.ABSOLUTE, gn)
     n_ks = _normal(b, s, g.base, name, bk, bk, gn)
     normals[lk] = _normal(b, b.acc[ak], lk, ak, bk, bk, gn)
     b.acc[bk] = images.meet_lines(b, A, f"acc.{bk}", images.perp_line(b, A, n_ks, name, bk, gn),
@@ -232,14 +236,17 @@ def emit_acceleration(b: Builder, g: Triad) -> None:
         rows += [(f"a_{a}", GIVEN, "✓"), (f"a^n_{bb}{a}", from_to(bb, a), f"ω{leg}²·l_{a}{bb}"),
                  (f"a^n_{name}{bb}", from_to(name, bb), f"ω{g.base}²·l_{bb}{name}"),
                  (f"a^t_{name}{a}", perp(f"{a}{bb}"), "?")]
-    rows += [(f"a^n_{bk}{name}", from_to(bk, name), f"ω{g.base}²·l_{name}{bk}"),
-             (f"a^t_{bk}{name}", perp(f"{name}{bk}"), "?"), (f"a_{ak}", GIVEN, "✓"),
-             (f"a^n_{bk}{ak}", from_to(bk, ak), f"ω{lk}²·l_{ak}{bk}"),
-             (f"a^t_{bk}{ak}", perp(f"{ak}{bk}"), "?")]
-    b.c.equations[(A, gn)] = (
-        f"a_{name} = a_{ai} + a^n_{bi}{ai} + a^n_{name}{bi} + a^t_{name}{ai} = a_{aj} + "
-        f"a^n_{bj}{aj} + a^n_{name}{bj} + a^t_{name}{aj}; a_{bk} = a_{name} + a^n_{bk}{name} + "
-        f"a^t_{bk}{name} = a_{ak} + a^n_{bk}{ak} + a^t_{bk}{ak}", rows)
+    b.c.equations[(A, f"{gn} {name}")] = (
+        (f"a_{name} = a_{ai} + a^n_{bi}{ai} + a^n_{name}{bi} + a^t_{name}{ai} = a_{aj} + "
+        f"a^n_{bj}{aj} + a^n_{name}{bj} + a^t_{name}{aj}"), rows)
+    b.c.equations[(A, f"{gn} {bk}")] = (
+        (f"a_{bk} = a_{name} + a^n_{bk}{name} + a^t_{bk}{name} = a_{ak} + a^n_{bk}{ak} + "
+        f"a^t_{bk}{ak}"), [
+            (f"a_{name}", GIVEN, "✓"), (f"a^n_{bk}{name}", from_to(bk, name),
+                                        f"ω{g.base}²·l_{name}{bk}"),
+            (f"a^t_{bk}{name}", perp(f"{name}{bk}"), "?"), (f"a_{ak}", GIVEN, "✓"),
+            (f"a^n_{bk}{ak}", from_to(bk, ak), f"ω{lk}²·l_{ak}{bk}"),
+            (f"a^t_{bk}{ak}", perp(f"{ak}{bk}"), "?")])
 
 
 __all__ = ["emit_acceleration", "emit_position", "emit_velocity", "special_legs",

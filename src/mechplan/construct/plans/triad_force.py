@@ -9,6 +9,7 @@ and ∥ A_jB_j — gives R^n_i and R^n_j, and the polygons of the legs the inner
 
 from __future__ import annotations
 
+from ...model.plans import Plan
 from ...model.structure import Triad
 from ..ops import Op
 from ..step import Kind, Role
@@ -18,7 +19,6 @@ from .force import (
     _between,
     _chain,
     _close,
-    _equation,
     _line,
     _moment_sum,
     _pole,
@@ -29,6 +29,8 @@ from .force import (
 )
 from .force_loads import State, Term
 from .triad import _legs, special_legs, special_name
+
+F = Plan.FORCE
 
 
 def emit(st: State, g: Triad) -> None:
@@ -72,9 +74,11 @@ def emit(st: State, g: Triad) -> None:
         leg = legs[n][0]
         _reaction(st, gn, g.outer[n], known[n], leg, outer[n])
         _reaction(st, gn, g.inner[n], g.base, leg, inner[n])
-    _equation(st, gn, [(st.label(rt[i]), perp_to(f"{ai}{bi}"), "✓"), *_rows(st.terms[li]),
-                       *_rows(st.terms[g.base]), (st.label(rt[k]), perp_to(f"{ak}{bk}"), "✓"),
-                       (st.label(rn_k), parallel_to(f"{ak}{bk}"), "✓"), *_rows(st.terms[lk]),
-                       (st.label(rt[j]), perp_to(f"{aj}{bj}"), "✓"), *_rows(st.terms[lj]),
-                       (f"R^n_{pair_key(known[j], lj)}", parallel_to(f"{aj}{bj}"), "?"),
-                       (f"R^n_{pair_key(known[i], li)}", parallel_to(f"{ai}{bi}"), "?")])
+    rows = [(st.label(rt[i]), perp_to(f"{ai}{bi}"), "✓"), *_rows(st.terms[li]),
+            *_rows(st.terms[g.base]), (st.label(rt[k]), perp_to(f"{ak}{bk}"), "✓"),
+            (st.label(rn_k), parallel_to(f"{ak}{bk}"), "✓"), *_rows(st.terms[lk]),
+            (st.label(rt[j]), perp_to(f"{aj}{bj}"), "✓"), *_rows(st.terms[lj]),
+            (f"R^n_{pair_key(known[j], lj)}", parallel_to(f"{aj}{bj}"), "?"),
+            (f"R^n_{pair_key(known[i], li)}", parallel_to(f"{ai}{bi}"), "?")]
+    # the terms are listed in the table under it: the caption names the first and the unknowns
+    b.c.equations[(F, gn)] = (f"{rows[0][0]} + … + {rows[-2][0]} + {rows[-1][0]} = 0", rows)
