@@ -56,8 +56,8 @@ def emit(st: State, g: Triad) -> None:
     t_k = _chain(st, gn, v_b, [Term(st.label(rt[k]), rt[k])])
     n_k = _chain(st, gn, t_k, [Term(st.label(rn_k), rn_k)])
     v_k = _chain(st, gn, n_k, st.terms[lk])
-    a_j = _chain(st, gn, v_k, [Term(st.label(rt[j]), rt[j])])
-    e = _chain(st, gn, a_j, st.terms[legs[j][0]])
+    w_j = _chain(st, gn, v_k, st.terms[legs[j][0]])
+    e = _chain(st, gn, w_j, [Term(st.label(rt[j]), rt[j])])
     (li, ai, bi), (lj, aj, bj) = legs[i], legs[j]
     f = _close(st, gn, _line(st, gn, e, "nj", f"∥{aj}{bj}", b.pos[aj], b.pos[bj], turn=0),
                _line(st, gn, o, "ni", f"∥{ai}{bi}", b.pos[ai], b.pos[bi], turn=0))
@@ -65,7 +65,7 @@ def emit(st: State, g: Triad) -> None:
     _between(st, gn, f, o, f"R^n_{pair_key(known[i], li)}", "Rni", Role.AUXILIARY)
     outer = {i: _between(st, gn, f, a_i, f"R_{pair_key(known[i], li)}", "Ri"),
              k: _between(st, gn, v_b, n_k, f"R_{pair_key(known[k], lk)}", "Rk"),
-             j: _between(st, gn, v_k, f, f"R_{pair_key(known[j], lj)}", "Rj")}
+             j: _between(st, gn, w_j, f, f"R_{pair_key(known[j], lj)}", "Rj")}
     # the base link on each leg: minus the leg's other forces
     inner = {i: _between(st, gn, v_i, f, f"R_{pair_key(g.base, li)}", "Rbi"),
              k: _between(st, gn, v_k, v_b, f"R_{pair_key(g.base, lk)}", "Rbk"),
@@ -77,7 +77,7 @@ def emit(st: State, g: Triad) -> None:
     rows = [(st.label(rt[i]), perp_to(f"{ai}{bi}"), "✓"), *_rows(st.terms[li]),
             *_rows(st.terms[g.base]), (st.label(rt[k]), perp_to(f"{ak}{bk}"), "✓"),
             (st.label(rn_k), parallel_to(f"{ak}{bk}"), "✓"), *_rows(st.terms[lk]),
-            (st.label(rt[j]), perp_to(f"{aj}{bj}"), "✓"), *_rows(st.terms[lj]),
+            *_rows(st.terms[lj]), (st.label(rt[j]), perp_to(f"{aj}{bj}"), "✓"),
             (f"R^n_{pair_key(known[j], lj)}", parallel_to(f"{aj}{bj}"), "?"),
             (f"R^n_{pair_key(known[i], li)}", parallel_to(f"{ai}{bi}"), "?")]
     # the terms are listed in the table under it: the caption names the first and the unknowns
