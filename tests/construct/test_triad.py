@@ -16,9 +16,9 @@ import numpy as np
 import pytest
 
 import mechplan
+from mechplan.construct.ops import Op
 from mechplan.construct.ops.triad import triad_angle
 from mechplan.construct.step import Kind, Role, Step
-from mechplan.construct.ops import Op
 from mechplan.errors import TopologyError, UnreachableError
 from mechplan.model.plans import Plan
 from mechplan.model.structure import analyse
@@ -200,8 +200,8 @@ def test_reactions_balance_every_link(sol):
              "5": [vec("Q_5")]}
     reactions = {"2": ["R_12", "R_32"], "3": ["R_23", "R_43", "R_53"], "4": ["R_04", "R_34"],
                  "5": ["R_05", "R_35"]}
-    for link in loads:
-        total = sum(loads[link]) + sum(vec(r) for r in reactions[link])
+    for link, applied in loads.items():
+        total = sum(applied) + sum(vec(r) for r in reactions[link])
         assert np.max(np.abs(total)) < 1e-9 * max(1.0, float(np.max(np.abs(vec("R_12")))))
 
 
@@ -227,9 +227,9 @@ def test_unreachable_positions_name_group_and_angle():
 
 def _triad_step(sigma, slope, ref, l, d2, d3):
     return Step("pos.angle.3", Op.TRIAD_ANGLE, ("a1", "a2", "a3"), Plan.POSITION, Kind.SCALAR,
-                Role.RESULT, "θ3", "III", tuple(sorted(dict(
-                    sigma=sigma, slope=slope, theta_ref=ref, l1=l[0], l2=l[1], l3=l[2], d2=d2,
-                    d3=d3).items())))
+                Role.RESULT, "θ3", "III", tuple(sorted({
+                    "sigma": sigma, "slope": slope, "theta_ref": ref, "l1": l[0], "l2": l[1],
+                    "l3": l[2], "d2": d2, "d3": d3}.items())))
 
 
 def test_singular_triad_is_flagged_or_refused():
