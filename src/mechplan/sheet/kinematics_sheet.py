@@ -177,6 +177,10 @@ def split_tables(panel: Panel, title: str, apart: bool, r: Room) -> list[Panel]:
     if not apart and y1 - y0 <= r.height:
         return [panel]
     tables = tables_of(panel, title)
+    _tx0, ty0, _tx1, ty1 = tables.bounds()
+    if ty1 - ty0 > r.height:        # taller than a sheet: in parts of whole tables
+        keep = [p for p in tables.primitives if not (isinstance(p, Text) and p.string == title)]
+        tables.refit = lambda w, h: _tables_in_parts(keep, tables.name, title, h)
     return [drawing_of(panel)] + ([tables] if tables.primitives else [])
 
 
@@ -193,7 +197,6 @@ def tables_of(panel: Panel, title: str) -> Panel:
     x0, _y0, _x1, y1 = Panel("", keep).bounds()
     out.primitives.extend(moved(p, -x0, -y1) for p in keep)
     out.primitives.append(Text((0.0, 3.0), title, TITLE_H - 1.5))
-    out.refit = lambda w, h: _tables_in_parts(keep, out.name, title, h)
     return out
 
 
