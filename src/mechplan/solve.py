@@ -257,7 +257,8 @@ def to_json(sol: Solution) -> dict[str, Any]:
         "structure": sol.structure.formula,
         "driver": _driver_json(scene.mechanism.drive),
         "groups": [
-            {"class": 2, "kind": g.kind, "links": list(g.links)} for g in sol.structure.groups
+            {"class": g.klass, "kind": str(g.kind), "links": list(g.links)}
+            for g in sol.structure.groups
         ],
         "positions": positions,
         "accuracy": trust_json(sol),

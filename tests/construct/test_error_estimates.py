@@ -170,7 +170,9 @@ def test_regular_positions_of_every_template_have_tiny_estimates(path):
     ev.evaluate_all(targets)
     est = estimate_errors(c, ev, targets)
     worst = max(float(np.max(est.relative(sid))) for sid in targets)
-    assert worst < 1e-12, worst
+    # a class III group chains more meets (the special point, then the third leg): its bound is
+    # a few 1e-12 (the measured error against mpmath is ~1e-14, tests/construct/test_triad.py)
+    assert worst < (1e-11 if path.stem == "six_bar_triad" else 1e-12), worst
 
 
 

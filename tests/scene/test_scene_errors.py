@@ -96,32 +96,33 @@ def test_unknown_top_level_key():
     assert "did you mean 'positions'" in str(error_of(GOOD + "\n[positons]\ncount = 3\n"))
 
 
-def test_class_three_group_is_named_not_supported():
+def test_class_four_group_is_named_not_supported():
+    # links 2..5 close a four-link contour (2 and 4 ternary) attached at B and D: class IV
     text = """
 [ground]
 A = ["0 mm", "0 mm"]
-D = ["300 mm", "-100 mm"]
-F = ["350 mm", "200 mm"]
+D = ["300 mm", "0 mm"]
 [links.1]
 lengths = { AB = "50 mm" }
 [links.2]
-lengths = { BC = "250 mm" }
+lengths = { BC = "150 mm", BG = "150 mm", CG = "100 mm" }
+side = { G = "right of B->C" }
 [links.3]
-lengths = { DE = "150 mm" }
+lengths = { CE = "120 mm" }
 [links.4]
-lengths = { CE = "120 mm", CG = "120 mm", EG = "120 mm" }
-side = { G = "left of C->E" }
+lengths = { DE = "150 mm", DH = "150 mm", EH = "100 mm" }
+side = { H = "left of D->E" }
 [links.5]
-lengths = { FG = "150 mm" }
+lengths = { GH = "120 mm" }
 [drive]
 link = "1"
 speed = "10 rad/s"
 """
     with pytest.raises(TopologyError) as info:
-        parse_scene(text, "triad.toml")
+        parse_scene(text, "quad.toml")
     msg = str(info.value)
-    assert msg.startswith("triad.toml: ")
-    assert "links 2, 3, 4, 5 form a class III group" in msg and "not supported yet" in msg
+    assert msg.startswith("quad.toml: ")
+    assert "links 2, 3, 4, 5 form a class IV group" in msg and "not supported" in msg
 
 
 def test_loads_are_validated():

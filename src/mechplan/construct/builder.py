@@ -159,19 +159,29 @@ class Builder:
     # -- build -------------------------------------------------------------------------------
     def build(self, plans: tuple[str, ...]) -> Construction:
         """Emit the position plan and, as asked, velocity and acceleration plans."""
-        from .plans import acceleration, drivers, position, velocity
+        from ..model.structure import Triad
+        from .plans import acceleration, drivers, position, triad, velocity
 
         position.emit_frame_and_drive(self)
         for group in self.structure.groups:
-            drivers.position_group(self, group)
+            if isinstance(group, Triad):
+                triad.emit_position(self, group)
+            else:
+                drivers.position_group(self, group)
         if "velocity" in plans or "acceleration" in plans or "force" in plans:
             velocity.emit_drive(self)
             for group in self.structure.groups:
-                drivers.velocity_group(self, group)
+                if isinstance(group, Triad):
+                    triad.emit_velocity(self, group)
+                else:
+                    drivers.velocity_group(self, group)
         if "acceleration" in plans or "force" in plans:
             acceleration.emit_drive(self)
             for group in self.structure.groups:
-                drivers.acceleration_group(self, group)
+                if isinstance(group, Triad):
+                    triad.emit_acceleration(self, group)
+                else:
+                    drivers.acceleration_group(self, group)
         if "force" in plans and self.loading is not None:
             from .plans import force
             force.emit(self)

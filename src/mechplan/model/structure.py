@@ -44,6 +44,55 @@ class Group:
         """All three pairs."""
         return (self.outer1, self.inner, self.outer2)
 
+    @property
+    def klass(self) -> int:
+        """Assur class: 2."""
+        return 2
+
+
+@dataclass(frozen=True, slots=True)
+class Triad:
+    """A class III Assur group: a ternary base link joined by three binary links.
+
+    ``legs[i]`` is binary link i; ``outer[i]`` its pair with a known link, ``inner[i]`` its pair
+    with the base link. Supported: all six pairs revolute (RRR-RRR).
+    """
+
+    base: str
+    legs: tuple[str, str, str]
+    outer: tuple[Pair, Pair, Pair]
+    inner: tuple[Pair, Pair, Pair]
+
+    @property
+    def links(self) -> tuple[str, ...]:
+        """The four links: base first, then the legs."""
+        return (self.base, *self.legs)
+
+    @property
+    def kind(self) -> str:
+        """Outer pairs' letters, then the inner pairs', e.g. ``RRR-RRR``."""
+        return ("".join(p.kind.value for p in self.outer) + "-"
+                + "".join(p.kind.value for p in self.inner))
+
+    @property
+    def name(self) -> str:
+        """The group as the structure formula writes it, e.g. ``III(2,3,4,5)``."""
+        return f"III({','.join(sorted(self.links, key=_link_order))})"
+
+    @property
+    def pairs(self) -> tuple[Pair, ...]:
+        """All six pairs: outer ones, then inner ones."""
+        return (*self.outer, *self.inner)
+
+    @property
+    def klass(self) -> int:
+        """Assur class: 3."""
+        return 3
+
+
+def _link_order(link: str) -> tuple[int, str]:
+    return (int(link), link) if link.isdigit() else (10 ** 9, link)
+
 
 @dataclass(frozen=True, slots=True)
 class Structure:
@@ -53,7 +102,7 @@ class Structure:
     lower_pairs: int
     higher_pairs: int
     driving_link: str
-    groups: tuple[Group, ...]
+    groups: tuple[Group | Triad, ...]
     #: a cylinder driver: (barrel, rod); its group lists the barrel and stands for both
     cylinder: tuple[str, str] | None = None
 
@@ -64,7 +113,7 @@ class Structure:
 
     @property
     def formula(self) -> str:
-        """Structure formula, e.g. ``I(0,1) → II(2,3) → II(4,5)``."""
+        """Structure formula, e.g. ``I(0,1) → II(2,3) → III(4,5,6,7)``."""
         first = (f"I({self.cylinder[0]},{self.cylinder[1]})" if self.cylinder
                  else f"I({GROUND},{self.driving_link})")
         parts = [first] + [g.name for g in self.groups]
@@ -73,7 +122,7 @@ class Structure:
     @property
     def mechanism_class(self) -> int:
         """Highest class among the groups (I when there is none)."""
-        return 2 if self.groups else 1
+        return max((g.klass for g in self.groups), default=1)
 
 
 def degrees_of_freedom(mech: Mechanism) -> int:
@@ -82,7 +131,7 @@ def degrees_of_freedom(mech: Mechanism) -> int:
 
 
 def analyse(mech: Mechanism) -> Structure:
-    """Decompose a one-driver mechanism into its first-class mechanism and class II groups.
+    """Decompose a one-driver mechanism into its first-class mechanism and class II and III groups.
 
     A crank or a slider on a frame guide is known once its coordinate is; a cylinder (barrel and
     rod with their driven prismatic pair) is a link of known length: its rod is merged into its
@@ -105,13 +154,16 @@ def analyse(mech: Mechanism) -> Structure:
         _check_driving_pair(mech)
         known = {GROUND, drive.link}
     remaining = [k for k in view.moving if k not in known]
-    groups: list[Group] = []
+    groups: list[Group | Triad] = []
     while remaining:
-        group = _find_dyad(view, remaining, known)
+        group: Group | Triad | None = _find_dyad(view, remaining, known)
+        if group is None:
+            group = _find_triad(view, remaining, known)
         if group is None:
             _raise_undecomposable(view, remaining, known)
         assert group is not None
-        group = Group(group.links, *(originals.get(p, p) for p in group.pairs))
+        if isinstance(group, Group) and originals:
+            group = Group(group.links, *(originals.get(p, p) for p in group.pairs))
         groups.append(group)
         known.update(group.links)
         remaining = [k for k in remaining if k not in known]
@@ -188,16 +240,49 @@ def _letters(g: Group) -> str:
     return g.outer1.kind.value + g.inner.kind.value + g.outer2.kind.value
 
 
+def _find_triad(mech: Mechanism, remaining: list[str], known: set[str]) -> Triad | None:
+    """A triad of remaining links attached to known ones: a base with three inner pairs, each to a
+    leg with one outer pair to a known link (raise for a triad with pairs not supported)."""
+    for base in remaining:
+        inner = [p for p in mech.pairs_of(base) if p.other(base) in remaining]
+        if len(inner) != 3 or _outer_pairs(mech, base, known):
+            continue
+        legs = tuple(p.other(base) for p in inner)
+        if len(set(legs)) != 3:
+            continue
+        outer = [_outer_pairs(mech, leg, known) for leg in legs]
+        if any(len(o) != 1 for o in outer):
+            continue
+        if any(len([p for p in mech.pairs_of(leg) if p.other(leg) in remaining]) != 1
+               for leg in legs):
+            continue
+        triad = Triad(base, legs, (outer[0][0], outer[1][0], outer[2][0]),  # type: ignore[arg-type]
+                      (inner[0], inner[1], inner[2]))
+        if triad.kind != "RRR-RRR":
+            raise TopologyError(
+                f"links {', '.join(triad.links)} form a class III group (triad, base link {base}) "
+                f"with pairs {', '.join(p.name for p in triad.pairs)} ({triad.kind}); only "
+                "triads with six revolute pairs are supported", key=f"links.{base}")
+        return triad
+    return None
+
+
 def _raise_undecomposable(mech: Mechanism, remaining: list[str], known: set[str]) -> None:
     for quad in itertools.combinations(remaining, 4):
         inside = [p for p in mech.pairs if p.a in quad and p.b in quad]
         outside = [p for p in mech.pairs if (p.a in quad) != (p.b in quad)
                    and (p.a in known or p.b in known)]
-        if len(inside) == 3 and len(outside) == 3:
+        if len(inside) == 4 and len(outside) == 2:
             raise TopologyError(
-                f"links {', '.join(quad)} form a class III group (triad) with pairs "
-                f"{', '.join(p.name for p in inside + outside)}; class III groups are not "
-                "supported yet", key="links")
+                f"links {', '.join(quad)} form a class IV group (a closed four-link contour with "
+                f"pairs {', '.join(p.name for p in inside)}, attached by "
+                f"{', '.join(p.name for p in outside)}); class IV groups are not supported, "
+                "only class II groups and class III triads", key="links")
+    if len(remaining) >= 4:
+        raise TopologyError(
+            f"links {', '.join(remaining)} attached to links {', '.join(sorted(known))} form no "
+            "class II group (dyad) and no class III group (triad); groups of a higher class are "
+            "not supported; check the pairs", key="links")
     raise TopologyError(f"links {', '.join(remaining)} cannot be split into class II groups "
                         f"attached to links {', '.join(sorted(known))}; check the pairs",
                         key="links")

@@ -179,6 +179,10 @@ def split_tables(panel: Panel, title: str, apart: bool, r: Room) -> list[Panel]:
     if not apart and y1 - y0 <= r.height:
         return [panel]
     tables = tables_of(panel, title)
+    _tx0, ty0, _tx1, ty1 = tables.bounds()
+    if ty1 - ty0 > r.height:        # taller than a sheet: in parts of whole tables
+        keep = [p for p in tables.primitives if not (isinstance(p, Text) and p.string == title)]
+        tables.refit = lambda w, h: _tables_in_parts(keep, tables.name, title, h)
     return [drawing_of(panel)] + ([tables] if tables.primitives else [])
 
 
@@ -195,6 +199,34 @@ def tables_of(panel: Panel, title: str) -> Panel:
     x0, _y0, _x1, y1 = Panel("", keep).bounds()
     out.primitives.extend(moved(p, -x0, -y1) for p in keep)
     out.primitives.append(Text((0.0, 3.0), title, TITLE_H - 1.5))
+    return out
+
+
+def _tables_in_parts(keep: list[Primitive | Table], name: str, title: str,
+                     max_h: float) -> list[Panel]:
+    """Tables too tall for a sheet: parts of whole tables (a caption stays with its table)."""
+    from .layout import moved
+
+    blocks: list[list[Primitive | Table]] = [[]]
+    for p in keep:
+        blocks[-1].append(p)
+        if isinstance(p, Table):
+            blocks.append([])
+    parts: list[list[Primitive | Table]] = [[]]
+    for block in (b for b in blocks if b):
+        trial = parts[-1] + block
+        _x0, y0, _x1, y1 = Panel("", trial).bounds()
+        if parts[-1] and y1 - y0 + TITLE_H + 3.0 > max_h:
+            parts.append(block)
+        else:
+            parts[-1] = trial
+    out = []
+    for i, prims in enumerate(parts):
+        x0, _y0, _x1, y1 = Panel("", prims).bounds()
+        panel = Panel(f"{name}.{i + 1}" if len(parts) > 1 else name,
+                      [moved(p, -x0, -y1) for p in prims])
+        panel.primitives.append(Text((0.0, 3.0), title, TITLE_H - 1.5))
+        out.append(panel)
     return out
 
 

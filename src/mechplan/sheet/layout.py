@@ -235,7 +235,8 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
                 left.append(panel)
                 continue
             at = room.put(panel)
-            if at is None and split and placed:
+            # on an empty sheet: only a panel no sheet holds whole is split (else: an error)
+            if at is None and split:
                 parts = _split_into(room, panel)
                 if parts is not None:
                     same = chain(panel.name)

@@ -10,4 +10,5 @@ from .acceleration import *
 from .drivers import *
 from .force import *
 from .position import *
+from .triad import *
 from .velocity import *

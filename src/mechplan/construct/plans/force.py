@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from ...model.mechanism import GROUND, Pair, PairKind
 from ...model.plans import Plan
-from ...model.structure import Group, GroupKind
+from ...model.structure import Group, GroupKind, Triad
 from ..builder import Builder
 from ..graph import reaction_key
 from ..ops import Op
@@ -59,6 +59,10 @@ def emit(b: Builder) -> None:
     from . import drivers, force_drivers  # a cylinder or a slider (plans/force_drivers.py)
 
     for g in reversed(b.structure.groups):
+        if isinstance(g, Triad):
+            from .triad_force import emit as emit_triad
+            emit_triad(st, g)
+            continue
         if drivers.cylinder_in(b, g):
             force_drivers.cylinder_group(st, g)
             continue
