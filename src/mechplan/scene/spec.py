@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 from ..model.loads import Gravity, LoadSpec, MassSpec
 from ..model.mechanism import Mechanism
 from ..model.plans import Plan
+from .centres import CentresSpec
 
 #: the plans a scene may ask for, by name
 PLANS = tuple(plan.value for plan in Plan)
@@ -57,3 +58,5 @@ class Scene:
     gravity: Gravity
     drawing: DrawingSpec
     assembly_phi: float = 0.0
+    #: the [centres] table: centrodes, acceleration poles, inflection circles of chosen links
+    centres: CentresSpec | None = None
