@@ -28,9 +28,8 @@ def _tracker(sol, link, dtheta):
     c, mech = sol.construction, sol.scene.mechanism
     theta0 = float(c.drive.absolute(sol.phi[:1])[0])
     ev = c.evaluate(c.drive.scene(theta0 + np.array([-dtheta, 0.0, dtheta])))
-    pos = lambda p: ev[c.position(p)]            # noqa: E731
     angle = ev[c.link_angle(link)]
-    origin = link_origin(mech, link, pos, angle)
+    origin = link_origin(mech, link, lambda p: ev[c.position(p)], angle)
 
     def track(world0):
         local = rotate(world0 - origin[1], -angle[1])
@@ -100,7 +99,7 @@ def test_a_link_pinned_to_the_frame_has_a_point_centrode():
     sol = solve(parse_scene((ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
                             + '\n[centres]\nlinks = ["3"]\npositions = 36\n'), at_deg=[10.0],
                 scales=False)
-    phi, fixed, moving = analyse_centres(sol).centrodes["3"]
+    _, fixed, moving = analyse_centres(sol).centrodes["3"]
     d = np.array(sol.scene.mechanism.links["0"].points["D"])
     np.testing.assert_allclose(fixed, np.broadcast_to(d, fixed.shape), atol=1e-15)
     np.testing.assert_allclose(moving, 0.0, atol=1e-15)
