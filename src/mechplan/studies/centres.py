@@ -19,9 +19,8 @@ from ..construct.centre_kinematics import (
     inflection_circle,
     velocities_by_centres,
 )
-from ..construct.estimate import length_scale
 from ..construct.graph import Construction, Evaluation
-from ..construct.plans.centres import Centre, Centres, evaluate_centres, ordered
+from ..construct.plans.centres import Centre, Centres, centres_at, label
 from ..geom.vec import Array
 from ..model.mechanism import GROUND, Mechanism
 
@@ -45,13 +44,6 @@ class CentresAnalysis:
     poles: dict[str, Array] = field(default_factory=dict)
     inflection: dict[str, tuple[Array, Array, Array]] = field(default_factory=dict)
     centrodes: dict[str, tuple[Array, Array, Array]] = field(default_factory=dict)
-
-
-def centres_at(c: Construction, ev: Evaluation, mech: Mechanism,
-               position_error: Array | None = None) -> Centres:
-    """All the instant centres at the evaluation's positions."""
-    return evaluate_centres(mech, lambda p: ev[c.position(p)], lambda lk: ev[c.link_angle(lk)],
-                            length_scale(c), ev.n, position_error)
 
 
 def _position_error(sol: Solution) -> Array | None:
@@ -120,16 +112,6 @@ def agreement(c: Construction, ev: Evaluation, mech: Mechanism, by: ByCentres) -
             bad |= ~np.isfinite(w)
     out[bad] = np.nan
     return out
-
-
-def label(centre: Centre | tuple[str, str], symbol: str = "I",
-          links: tuple[str, ...] | None = None) -> str:
-    """``I13`` (``I1,13`` for link ids longer than one character); a pair of links is written in
-    the order of ``links`` (the diagram's: the frame first)."""
-    i, j = (centre.i, centre.j) if isinstance(centre, Centre) else centre
-    if links is not None and i in links and j in links:
-        i, j = ordered(links, i, j)
-    return f"{symbol}{i}{j}" if len(i) == len(j) == 1 else f"{symbol}{i},{j}"
 
 
 def _xy(v: Array) -> list[float]:

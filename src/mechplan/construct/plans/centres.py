@@ -23,6 +23,8 @@ import numpy as np
 
 from ...geom.vec import Array
 from ...model.mechanism import GROUND, Mechanism, Pair, PairKind
+from ..estimate import length_scale
+from ..graph import Construction, Evaluation
 from ..ops import centres as H
 
 #: rounding of one homogeneous operation, in units of the float epsilon
@@ -140,6 +142,23 @@ class Centres:
     def direction(self, i: str, j: str) -> Array:
         """(N, 2) unit directions of the centre where it is at infinity (NaN where finite)."""
         return H.direction(self.of(i, j).h)
+
+
+def label(centre: Centre | tuple[str, str], symbol: str = "I",
+          links: tuple[str, ...] | None = None) -> str:
+    """``I13`` (``I1,13`` for link ids longer than one character); a pair of links is written in
+    the order of ``links`` (the diagram's: the frame first)."""
+    i, j = (centre.i, centre.j) if isinstance(centre, Centre) else centre
+    if links is not None and i in links and j in links:
+        i, j = ordered(links, i, j)
+    return f"{symbol}{i}{j}" if len(i) == len(j) == 1 else f"{symbol}{i},{j}"
+
+
+def centres_at(c: Construction, ev: Evaluation, mech: Mechanism,
+               position_error: Array | None = None) -> Centres:
+    """All the instant centres at an evaluation's positions."""
+    return evaluate_centres(mech, lambda p: ev[c.position(p)], lambda lk: ev[c.link_angle(lk)],
+                            length_scale(c), ev.n, position_error)
 
 
 def evaluate_centres(mech: Mechanism, position: Callable[[str], Array],
