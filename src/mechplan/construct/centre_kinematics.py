@@ -81,7 +81,8 @@ def _key(cs: Centres, a: str, b: str) -> tuple[str, str]:
 
 def velocity(t: Array, r: Array, length: float) -> Array:
     """v of points r (n, 2) of a link moving with t (n, 3): v = v_O + ω·perp(r)."""
-    return -length * perp(t[:, :2]) + t[:, 2:3] * perp(r)
+    out: Array = -length * perp(t[:, :2]) + t[:, 2:3] * perp(r)
+    return out
 
 
 @dataclass(frozen=True)
@@ -111,7 +112,9 @@ def link_origin(mech: Mechanism, link: str, position: Callable[[str], Array],
                 angle: Array) -> Array:
     """World position (n, 2) of a link's frame origin, from one of its points and its angle."""
     p, local = next(iter(mech.links[link].points.items()))
-    return np.asarray(position(p), dtype=float) - rotate(np.asarray(local, dtype=float), angle)
+    out: Array = np.asarray(position(p), dtype=float) - rotate(np.asarray(local, dtype=float),
+                                                               angle)
+    return out
 
 
 def centrodes(cs: Centres, mech: Mechanism, link: str, position: Callable[[str], Array],
@@ -129,16 +132,18 @@ def acceleration_pole(a_point: Array, r_point: Array, omega: Array, epsilon: Arr
     w2 = np.asarray(omega, dtype=float) ** 2
     e = np.asarray(epsilon, dtype=float)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return r_point + (w2[:, None] * a_point + e[:, None] * perp(a_point)) / \
+        out: Array = r_point + (w2[:, None] * a_point + e[:, None] * perp(a_point)) / \
             (w2 * w2 + e * e)[:, None]
+    return out
 
 
 def point_acceleration(a_point: Array, r_point: Array, omega: Array, epsilon: Array,
                        r: Array) -> Array:
     """a at r (n, 2) of the link: a_A + ε·perp(r − A) − ω²·(r − A)."""
     d = r - r_point
-    return a_point + np.asarray(epsilon)[:, None] * perp(d) - \
+    out: Array = a_point + np.asarray(epsilon)[:, None] * perp(d) - \
         (np.asarray(omega) ** 2)[:, None] * d
+    return out
 
 
 def inflection_circle(pole: Array, a_point: Array, r_point: Array, omega: Array,

@@ -15,6 +15,7 @@ import numpy as np
 from ..construct.plans.centres import Centre, Centres, centres_at, label
 from ..drafting.primitives import Arrow, Circle, Line, Role, Text
 from ..i18n import message, number, significant
+from ..model.mechanism import Mechanism
 from ..solve import Solution
 from .link_outline import drawn as draw_figure
 from .link_outline import link_figures
@@ -42,8 +43,21 @@ def centres_panels(sol: Solution, k: int, mu_l: float, lang: str, r: Room) -> li
     size = float(max(hi - lo)) or 1.0
     lo, hi = lo - MARGIN * size, hi + MARGIN * size
     # the view fits half the room's width and two thirds of its height, at the position plan's
-    # scale when it can
+    # scale when it can; the names and arrows around it are shrunk into the room too
     mu = max(mu_l, float((hi - lo)[0]) / (0.5 * r.width), float((hi - lo)[1]) / (0.6 * r.height))
+    for _ in range(4):
+        panel = _view(cs, k, pts, mech, lo, hi, mu, sym, title, lang)
+        x0, y0, x1, y1 = panel.bounds()
+        grow = max((x1 - x0) / (0.95 * r.width), (y1 - y0) / (0.9 * r.height))
+        if grow <= 1.0:
+            break
+        mu *= grow * 1.05
+    return [panel, circle_diagram_panel(cs, sym, lang), centres_table(cs, k, sym, lang)]
+
+
+def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: np.ndarray,
+          hi: np.ndarray, mu: float, sym: str, title: str, lang: str) -> Panel:
+    """The mechanism and its centres at position k, drawn at μ (m per paper mm)."""
     panel = Panel("centres", plan=None)
     prims = panel.primitives
 
@@ -84,7 +98,7 @@ def centres_panels(sol: Solution, k: int, mu_l: float, lang: str, r: Room) -> li
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     ratio = significant(mu * 1000.0, 4, lang)
     prims.append(Text((x0, y1 + 3.0), message("centres.panel.scale", lang, ratio=ratio), LABEL_H))
-    return [panel, circle_diagram_panel(cs, sym, lang), centres_table(cs, k, sym, lang)]
+    return panel
 
 
 def _clip(p: np.ndarray, u: np.ndarray, lo: np.ndarray,
@@ -167,9 +181,10 @@ def circle_diagram_panel(cs: Centres, sym: str, lang: str) -> Panel:
         prims.append(Text((p[0] * 1.15 - 1.0, p[1] * 1.15 - 1.0), lk, LABEL_H))
     x0, _y0, _x1, y1 = panel.bounds()
     prims.append(Text((x0, y1 + 4.0), message("centres.panel.diagram", lang), TITLE_H))
-    order = ", ".join(f"{ctr.order + 1}: {label(ctr, sym)}" for ctr in cs.diagram.centres)
+    names = [f"{ctr.order + 1}: {label(ctr, sym)}" for ctr in cs.diagram.centres]
     _x0, y0, _x1, _y1 = panel.bounds()
-    prims.append(Text((x0, y0 - 5.0), order, 2.5))
+    for row in range(0, len(names), 4):
+        prims.append(Text((x0, y0 - 5.0 - 1.6 * row), ", ".join(names[row:row + 4]), 2.5))
     return panel
 
 

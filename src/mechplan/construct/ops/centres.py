@@ -92,7 +92,8 @@ def normalised(h: Array) -> Array:
 
 def is_infinite(h: Array) -> Array:
     """Which centres (normal form) are at infinity."""
-    return h[:, 2] == 0.0
+    out: Array = h[:, 2] == 0.0
+    return out
 
 
 def point(h: Array, length: float) -> Array:
