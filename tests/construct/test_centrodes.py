@@ -17,9 +17,14 @@ from tests.scenes import ROOT
 ASK = '\n[centres]\nlinks = ["2"]\ninflection = true\npositions = 3600\n'
 
 
-def _scene(name):
+def _template(name):
+    """A template's text without its own [centres] table."""
     text = (ROOT / "templates" / f"{name}.toml").read_text(encoding="utf-8")
-    return parse_scene(text + ASK)
+    return text[:text.index("[centres]")] if "[centres]" in text else text
+
+
+def _scene(name):
+    return parse_scene(_template(name) + ASK)
 
 
 def _tracker(sol, link, dtheta):
@@ -96,9 +101,8 @@ def test_the_moving_centrode_rolls_on_the_fixed_one_without_slipping():
 
 
 def test_a_link_pinned_to_the_frame_has_a_point_centrode():
-    sol = solve(parse_scene((ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
-                            + '\n[centres]\nlinks = ["3"]\npositions = 36\n'), at_deg=[10.0],
-                scales=False)
+    sol = solve(parse_scene(_template("four_bar") + '\n[centres]\nlinks = ["3"]\npositions = 36\n'),
+                at_deg=[10.0], scales=False)
     _, fixed, moving = analyse_centres(sol).centrodes["3"]
     d = np.array(sol.scene.mechanism.links["0"].points["D"])
     np.testing.assert_allclose(fixed, np.broadcast_to(d, fixed.shape), atol=1e-15)

@@ -25,6 +25,12 @@ def _example() -> str:
     return m.group(1)
 
 
+def _four_bar() -> str:
+    """The four-bar template without its own [centres] table."""
+    text = (ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
+    return text[:text.index("[centres]")] if "[centres]" in text else text
+
+
 def _table_keys(heading_row: str, after: str) -> set[str]:
     """The first column of the table that follows ``after`` in docs/centres.md."""
     part = DOC[DOC.index(after):]
@@ -93,7 +99,7 @@ def test_the_cli_prints_the_centres(tmp_path):
 
 
 def test_no_centres_unless_asked():
-    text = (ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
+    text = _four_bar()
     study = solve_text(text, "four_bar.toml")
     assert "centres" not in study.to_json()
     assert "centres" not in study.solution.extras
@@ -108,7 +114,7 @@ def test_no_centres_unless_asked():
     ('[analysis]\nplans = ["centers", "velocity", "centroids"]\n', "analysis.plans"),
 ])
 def test_scene_errors_name_the_key(table, key):
-    text = (ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8") + "\n" + table
+    text = _four_bar() + "\n" + table
     with pytest.raises(SceneError) as err:
         parse_scene(text, "four_bar.toml")
     assert err.value.key == key
@@ -116,7 +122,7 @@ def test_scene_errors_name_the_key(table, key):
 
 
 def test_the_aliases_spell_centres():
-    text = (ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
+    text = _four_bar()
     scene = parse_scene(text + '\n[analysis]\nplans = ["position", "instant_centres"]\n')
     assert scene.plans == ("position", "centres")
     scene = parse_scene(text + '\n[centres]\nlinks = [2]\n')

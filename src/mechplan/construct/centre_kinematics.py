@@ -34,6 +34,7 @@ import numpy as np
 
 from ..geom.vec import Array, perp, rotate
 from ..model.mechanism import GROUND, Mechanism
+from .graph import Construction
 from .plans.centres import Centres
 
 
@@ -126,6 +127,19 @@ def centrodes(cs: Centres, mech: Mechanism, link: str, position: Callable[[str],
     return fixed, rotate(fixed - origin, -np.asarray(angle, dtype=float))
 
 
+def centrodes_over_turn(c: Construction, mech: Mechanism, link: str,
+                        count: int) -> tuple[Array, Array, Array]:
+    """φ (rad, scene convention) and the fixed and moving centrodes of a link at ``count``
+    positions of a turn."""
+    from .plans.centres import centres_at
+
+    phi = np.linspace(0.0, 2.0 * np.pi, count, endpoint=False)
+    ev = c.evaluate(phi)
+    fixed, moving = centrodes(centres_at(c, ev, mech), mech, link,
+                              lambda p: ev[c.position(p)], ev[c.link_angle(link)])
+    return phi, fixed, moving
+
+
 def acceleration_pole(a_point: Array, r_point: Array, omega: Array, epsilon: Array) -> Array:
     """The acceleration pole Q (n, 2) of a link from one point's a and r, ω and ε (NaN when the
     link has ω = ε = 0: every point has the same acceleration)."""
@@ -157,5 +171,6 @@ def inflection_circle(pole: Array, a_point: Array, r_point: Array, omega: Array,
     return pole + diameter / 2.0, np.hypot(diameter[:, 0], diameter[:, 1]) / 2.0, pole + diameter
 
 
-__all__ = ["ByCentres", "acceleration_pole", "centrodes", "inflection_circle",
-           "link_origin", "point_acceleration", "twists", "velocities_by_centres", "velocity"]
+__all__ = ["ByCentres", "acceleration_pole", "centrodes", "centrodes_over_turn",
+           "inflection_circle", "link_origin", "point_acceleration", "twists",
+           "velocities_by_centres", "velocity"]

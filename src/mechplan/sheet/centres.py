@@ -12,8 +12,10 @@ import math
 
 import numpy as np
 
+from ..construct.centre_kinematics import centrodes_over_turn
 from ..construct.plans.centres import Centre, Centres, centres_at, label
-from ..drafting.primitives import Arrow, Circle, Line, Role, Text
+from ..drafting.primitives import Arrow, Circle, Line, Polyline, Role, Text
+from ..geom.vec import rotate
 from ..i18n import message, number, significant
 from ..model.mechanism import Mechanism
 from ..solve import Solution
@@ -45,14 +47,52 @@ def centres_panels(sol: Solution, k: int, mu_l: float, lang: str, r: Room) -> li
     # the view fits half the room's width and two thirds of its height, at the position plan's
     # scale when it can; the names and arrows around it are shrunk into the room too
     mu = max(mu_l, float((hi - lo)[0]) / (0.5 * r.width), float((hi - lo)[1]) / (0.6 * r.height))
+    curves = _centrode_curves(sol, k)
     for _ in range(4):
         panel = _view(cs, k, pts, mech, lo, hi, mu, sym, title, lang)
+        for curve in curves:
+            _clipped_curve(panel, curve, lo, hi, mu)
         x0, y0, x1, y1 = panel.bounds()
         grow = max((x1 - x0) / (0.95 * r.width), (y1 - y0) / (0.9 * r.height))
         if grow <= 1.0:
             break
         mu *= grow * 1.05
     return [panel, circle_diagram_panel(cs, sym, lang), centres_table(cs, k, sym, lang)]
+
+
+def _centrode_curves(sol: Solution, k: int) -> list[np.ndarray]:
+    """The fixed centrodes of the links the scene asks for, and their moving centrodes where the
+    link is at position k (world coordinates, m)."""
+    spec = sol.scene.centres
+    if spec is None:
+        return []
+    c, ev, mech = sol.construction, sol.ev, sol.scene.mechanism
+    out = []
+    for lid in spec.links:
+        _phi, fixed, moving = centrodes_over_turn(c, mech, lid, spec.positions)
+        angle = np.full(len(moving), float(ev[c.link_angle(lid)][k]))
+        first, local = next(iter(mech.links[lid].points.items()))
+        at_k = np.broadcast_to(ev[c.position(first)][k], moving.shape)
+        origin = at_k - rotate(np.asarray(local, dtype=float), angle)
+        out += [fixed, origin + rotate(moving, angle)]
+    return out
+
+
+def _clipped_curve(panel: Panel, curve: np.ndarray, lo: np.ndarray, hi: np.ndarray,
+                   mu: float) -> None:
+    """A dash-dot polyline of the curve's runs inside the view."""
+    inside = np.all(np.isfinite(curve), axis=1) & np.all(curve >= lo, axis=1) & \
+        np.all(curve <= hi, axis=1)
+    run: list[tuple[float, float]] = []
+    for ok, p in zip(inside, curve, strict=True):
+        if ok:
+            run.append((float(p[0]) / mu, float(p[1]) / mu))
+            continue
+        if len(run) > 2:
+            panel.primitives.append(Polyline(tuple(run), Role.CHAIN))
+        run = []
+    if len(run) > 2:
+        panel.primitives.append(Polyline(tuple(run), Role.CHAIN))
 
 
 def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: np.ndarray,

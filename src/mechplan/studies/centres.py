@@ -15,7 +15,7 @@ import numpy as np
 from ..construct.centre_kinematics import (
     ByCentres,
     acceleration_pole,
-    centrodes,
+    centrodes_over_turn,
     inflection_circle,
     velocities_by_centres,
 )
@@ -77,19 +77,9 @@ def analyse_centres(sol: Solution) -> CentresAnalysis:
                 out.poles[lid] = acceleration_pole(a, r, w, e)
                 if spec.inflection:
                     out.inflection[lid] = inflection_circle(cs.point(GROUND, lid), a, r, w, e)
-            out.centrodes[lid] = _centrodes(c, mech, lid, spec.positions)
+            out.centrodes[lid] = centrodes_over_turn(c, mech, lid, spec.positions)
     sol.extras["centres"] = out
     return out
-
-
-def _centrodes(c: Construction, mech: Mechanism, link: str,
-               count: int) -> tuple[Array, Array, Array]:
-    """φ (rad) and the fixed and moving centrodes of a link at ``count`` positions of a turn."""
-    phi = np.linspace(0.0, 2.0 * math.pi, count, endpoint=False)
-    cyc = c.evaluate(phi)
-    fixed, moving = centrodes(centres_at(c, cyc, mech), mech, link,
-                              lambda p: cyc[c.position(p)], cyc[c.link_angle(link)])
-    return phi, fixed, moving
 
 
 def agreement(c: Construction, ev: Evaluation, mech: Mechanism, by: ByCentres) -> Array:
