@@ -44,9 +44,12 @@ def centres_panels(sol: Solution, k: int, mu_l: float, lang: str, r: Room) -> li
     lo, hi = xy.min(axis=0), xy.max(axis=0)
     size = float(max(hi - lo)) or 1.0
     lo, hi = lo - MARGIN * size, hi + MARGIN * size
-    # the view fits half the room's width and two thirds of its height, at the position plan's
-    # scale when it can; the names and arrows around it are shrunk into the room too
-    mu = max(mu_l, float((hi - lo)[0]) / (0.5 * r.width), float((hi - lo)[1]) / (0.6 * r.height))
+    # the view takes a fifth of the room's width and a quarter of its height (at least
+    # 100 × 80 mm, on a small sheet most of it), at the position plan's scale when it can; the
+    # names and arrows around it are shrunk into the room too
+    width = min(0.9 * r.width, max(0.2 * r.width, 100.0))
+    height = min(0.8 * r.height, max(0.25 * r.height, 80.0))
+    mu = max(mu_l, float((hi - lo)[0]) / width, float((hi - lo)[1]) / height)
     curves = _centrode_curves(sol, k)
     for _ in range(4):
         panel = _view(cs, k, pts, mech, lo, hi, mu, sym, title, lang)
