@@ -14,6 +14,7 @@ import numpy as np
 
 from ..construct.centre_kinematics import centrodes_over_turn
 from ..construct.plans.centres import Centre, Centres, centres_at, label
+from ..drafting.labels import LabelPlacer
 from ..drafting.primitives import Arrow, Circle, Line, Polyline, Role, Text
 from ..geom.vec import rotate
 from ..i18n import message, number, significant
@@ -123,20 +124,23 @@ def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: 
     for ctr in cs.diagram.centres:
         if not ctr.primary:
             prims.extend(_kennedy_lines(cs, ctr, k, lo, hi, mm))
-    placed: list[tuple[float, float]] = []
+    marked: dict[str, tuple[float, float]] = {}
     for ctr in cs.diagram.centres:
         name = label(ctr, sym)
         h = cs.values[(ctr.i, ctr.j)].h[k]
         if not np.all(np.isfinite(h)):
             continue
         if (ctr.i, ctr.j) in inside:
-            q = mm(inside[(ctr.i, ctr.j)])
-            prims.append(Circle(q, CENTRE_R, Role.OUTLINE))
-            shift = 2.0 + 4.0 * sum(1 for o in placed if math.dist(o, q) < 3.0)
-            prims.append(Text((q[0] + 1.5, q[1] + shift), name, LABEL_H))
-            placed.append(q)
+            marked[name] = mm(inside[(ctr.i, ctr.j)])
+            prims.append(Circle(marked[name], CENTRE_R, Role.OUTLINE))
         else:
             prims.extend(_far(h, cs.length, lo, hi, mm, name, lang))
+    # the names placed clear of the lines, the other names and each other
+    placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline, Arrow, Text))],
+                         LABEL_H, list(marked.values()))
+    for name, q in marked.items():
+        prims.append(placer.place(q, name))
+    prims.extend(placer.leaders)
     x0, _y0, _x1, y1 = panel.bounds()
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     ratio = significant(mu * 1000.0, 4, lang)
