@@ -12,6 +12,7 @@ Examples
 from __future__ import annotations
 
 import dataclasses
+import math
 import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
@@ -43,6 +44,9 @@ SceneSource = str | os.PathLike[str] | Mapping[str, Any]
 
 
 _KINEMATIC = ("position", "velocity", "acceleration")
+_MAX_ANGLE_DEG = 1e6        # limits.MAX_ANGLE_DEG (checked by tests/api)
+_RADIANS = math.pi / 180.0
+_TOLERANCE = 1e-6           # construct.estimate.DEFAULT_TOLERANCE (checked by tests/api)
 
 
 class Mechanism:
@@ -58,6 +62,8 @@ class Mechanism:
         self.scene = scene
         self._built: dict[tuple[str, ...], tuple[Structure, Construction]] = {}
         self._fast = FastPath(scene)
+        #: the prepared kernel of the default call at one angle (None: not yet; False: none)
+        self._one: Any = None
         self._chosen: dict[object, tuple[str, ...]] = {}
         self._asked: dict[tuple[object, object], tuple[tuple[str, ...] | None, ...]] = {}
 
@@ -153,6 +159,11 @@ class Mechanism:
             Bad arguments, positions where the mechanism cannot be assembled or is singular, or
             a position count over the memory budget.
         """
+        if (type(phi_deg) is float or type(phi_deg) is int) and positions is None \
+                and plans is None and points is None and links is None and fast is not False:
+            quick = self._solve_one(float(phi_deg))        # the default call at one angle
+            if quick is not None:
+                return quick
         from .solve import solve
 
         if phi_deg is not None and positions is not None:
@@ -175,7 +186,7 @@ class Mechanism:
             at = arr
         chosen = self._plans(plans)
         asked = self._outputs(points, links)
-        if fast is not False and "force" not in chosen:
+        if fast is not False and "force" not in chosen and self.scene.textbook is None:
             quick = self._solve_fast(chosen, at, positions, asked)
             if quick is not None:
                 return quick
@@ -224,6 +235,41 @@ class Mechanism:
         self._asked[key] = key                               # type: ignore[assignment]
         return key
 
+
+    def _solve_one(self, phi_deg: float) -> Solution | None:
+        """The default call at one crank angle on the fused kernel, with none of the general
+        path's argument handling (the same kernel, values, estimates and flags); None when the
+        general path must answer (no kernel, a force plan, an angle it refuses, a position the
+        kernel cannot build or trust)."""
+        if not abs(phi_deg) <= _MAX_ANGLE_DEG:        # nan too: the general path says why
+            return None
+        one = self._one
+        if one is None:
+            chosen = self._plans(None)
+            prepared = None
+            if "force" not in chosen and self.scene.textbook is None:
+                prepared = self._fast.prepare(self._build(chosen)[1], chosen, None, None)
+            self._one = one = prepared if prepared is not None else False
+        if one is False:
+            return None
+        at = np.array([phi_deg * _RADIANS])
+        block, _rel, _bad, status = one.kernel.run(at, _TOLERANCE, store=False)
+        flagged: tuple[tuple[int, str, str, float], ...] = ()
+        if status:                  # not buildable, untrusted or flagged: as the fused path says
+            result = self._fast.evaluate(one, at)
+            if result is None:
+                return None
+            block, flagged = result.block, result.flagged
+        block.flags.writeable = False
+        cols = one.columns
+        phi = np.array([phi_deg])
+        phi.flags.writeable = False
+        return Solution(phi, _Columns(block, cols["r"], "position"),
+                        _Columns(block, cols["v"], "velocity"),
+                        _Columns(block, cols["a"], "acceleration"),
+                        _Columns(block, cols["angle"], "angle"),
+                        _Columns(block, cols["omega"], "omega"),
+                        _Columns(block, cols["epsilon"], "epsilon"), None, flagged)
 
     def _solve_fast(self, chosen: tuple[str, ...], at: np.ndarray | None,
                     positions: int | None,
@@ -288,7 +334,7 @@ def _solution(s: _Solved, only_points: tuple[str, ...] | None = None,
     flags = tuple((f.k, f.quantity, f.subject, f.estimate) for f in s.flags)
     return Solution(_frozen(np.degrees(s.phi)), ByName(r, "position"), ByName(v, "velocity"),
                     ByName(a, "acceleration"), ByName(angle, "angle"), ByName(omega, "omega"),
-                    ByName(epsilon, "epsilon"), forces, flags)
+                    ByName(epsilon, "epsilon"), forces, flags, s.extras.get("textbook"))
 
 
 def _take(out: dict[str, np.ndarray], point: str, ev: Evaluation, accessor: Any) -> None:
@@ -311,7 +357,8 @@ def _forces(fa: Any) -> Forces:
         guide_reactions=ByName({k: reaction(x) for k, x in fa.guide_reactions.items()},
                               "guide reaction"),
         M_b=_frozen(fa.balancing_moment), M_b_zhukovsky=_frozen(fa.zhukovsky_moment),
-        M_red=_frozen(fa.reduced_moment), J_red=_frozen(fa.reduced_inertia))
+        M_red=_frozen(fa.reduced_moment), J_red=_frozen(fa.reduced_inertia),
+        friction=fa.friction)
 
 
 # -- reading scenes ---------------------------------------------------------------------------
@@ -406,7 +453,8 @@ def draw(scene: SceneSource | Mechanism | Study, out_dir: str | os.PathLike[str]
     out_dir : path
         Output folder, created if missing.
     formats : sequence of str
-        Any of ``"dxf"``, ``"svg"``, ``"pdf"``, ``"png"``.
+        Any of ``"dxf"``, ``"svg"``, ``"pdf"``, ``"png"``, and ``"html"``: the live page of a
+        linkage, one self-contained file (docs/html.md).
     sheet, standard, language : str, optional
         ``"A0"`` … ``"A4"``; ``"iso"``, ``"gost"``, ``"tcvn"``; ``"en"``, ``"ru"``, ``"vi"``,
         ``"zh"`` (default: the scene's ``[drawing]`` and ``language``).
@@ -424,8 +472,15 @@ def draw(scene: SceneSource | Mechanism | Study, out_dir: str | os.PathLike[str]
     study, stem = _study(scene)
     out = prepare_dir(out_dir)
     written: list[Path] = []
-    for s in study.sheets(sheet, standard, language, name or stem):
-        written += write(s, out, list(formats))
+    fmts = [str(f).lower().lstrip(".") for f in formats]
+    if "html" in fmts:
+        from .live_page import write_page
+
+        written.append(write_page(study, out, name or stem, size=sheet, standard=standard,
+                                  language=language))
+        fmts = [f for f in fmts if f != "html"]
+    for s in study.sheets(sheet, standard, language, name or stem) if fmts else ():
+        written += write(s, out, fmts)
     return written
 
 

@@ -5,16 +5,21 @@ from __future__ import annotations
 import errno
 import reprlib
 
-_OS_REASONS = {errno.EACCES: "permission denied", errno.EPERM: "permission denied",
-               errno.EROFS: "the file system is read-only", errno.ENOSPC: "the disk is full",
-               errno.EDQUOT: "the disk quota is exceeded", errno.ENOTDIR: "a part of it is a file",
-               errno.EEXIST: "a file of that name exists", errno.EISDIR: "it is a folder",
-               errno.ENAMETOOLONG: "the name is too long"}
+_OS_REASONS = {errno.EACCES: "permission", errno.EPERM: "permission",
+               errno.EROFS: "read_only", errno.ENOSPC: "disk_full", errno.EDQUOT: "quota",
+               errno.ENOTDIR: "part_is_file", errno.EEXIST: "exists", errno.EISDIR: "is_folder",
+               errno.ENAMETOOLONG: "name_too_long"}
 
 
 def os_reason(exc: OSError) -> str:
-    """Return a short reason for an operating-system error (for a user message)."""
-    return _OS_REASONS.get(exc.errno or 0, exc.strerror or exc.__class__.__name__)
+    """Return a short reason for an operating-system error (for a user message): a catalogue
+    text said in the message's language where the reason is a known one."""
+    name = _OS_REASONS.get(exc.errno or 0)
+    if name is None:
+        return exc.strerror or exc.__class__.__name__
+    from .i18n import Text
+
+    return Text(f"errors.os.{name}")
 
 
 #: characters of a message, of a key path and of a file name said in an error; the middle of a
@@ -50,7 +55,12 @@ def shown_key(key: str) -> str:
 
 
 class MechplanError(Exception):
-    """Base of every error a user can cause (bad scene, impossible geometry, unreadable file)."""
+    """Base of every error a user can cause (bad scene, impossible geometry, unreadable file).
+
+    The reason (``detail``) is a catalogue message (:class:`mechplan.i18n.Text`: its English
+    sentence, its message id and arguments) wherever the raise site says one: :meth:`text` says
+    the whole error in another language and :attr:`code` is its stable id for programs.
+    """
 
     def __init__(self, message: str, *, file: str | None = None, key: str | None = None) -> None:
         if type(message) is str:        # a catalogue text (a str subclass) keeps its arguments
@@ -66,6 +76,33 @@ class MechplanError(Exception):
         prefix = ": ".join(where)
         said = elide(str(message), MAX_MESSAGE_CHARS)
         super().__init__(f"{prefix}: {said}" if prefix else said)
+
+    @property
+    def code(self) -> str:
+        """A stable machine-readable code: the message id of the reason (``scene.unknown_key``),
+        or the error's class name where the reason is not from the catalogues yet."""
+        key = getattr(self.detail, "key", None)
+        return key if isinstance(key, str) else type(self).__name__
+
+    def text(self, language: str = "en") -> str:
+        """The whole message (file, key and reason) in a language: en, ru, vi or zh."""
+        from .i18n import LANGUAGES, Text, message
+
+        language = language if language in LANGUAGES else "en"
+        where = []
+        if self.file:
+            where.append(elide(str(self.file), MAX_KEY_CHARS))
+        if self.key:
+            where.append(message("errors.where.key", language, key=shown_key(self.key)))
+        detail = self.detail
+        said = elide(detail.tr(language) if isinstance(detail, Text) else str(detail),
+                     MAX_MESSAGE_CHARS)
+        return ": ".join([*where, said])
+
+    def to_json(self, language: str = "en") -> dict[str, object]:
+        """The error as a JSON object: its code, message (in ``language``), file and key."""
+        return {"error": {"code": self.code, "kind": type(self).__name__,
+                          "message": self.text(language), "file": self.file, "key": self.key}}
 
 
 class SceneError(MechplanError):

@@ -255,7 +255,7 @@ class _Formatter(string.Formatter):
 
 
 _DECIMAL_COMMA = re.compile(r"\d,\d")
-_SEPARATORS = {", ": "comma", "; ": "semicolon", " and ": "and"}
+_SEPARATORS = {", ": "comma", "; ": "semicolon", " and ": "and", " or ": "or"}
 
 
 def listed(items: list[Any], sep: str, language: str) -> str:

@@ -12,6 +12,7 @@ import re
 import numpy as np
 
 from .errors import MechplanError, shown
+from .i18n import Text
 
 DEFAULT_BUDGET = 2 * 1024**3
 #: bytes per step and position: a (N, 2) float64 value, its gap or sine, and evaluation temporaries
@@ -31,7 +32,7 @@ def memory_budget() -> int:
         return DEFAULT_BUDGET
     m = re.fullmatch(r"(\d+(?:\.\d+)?)\s*([kKmMgGtT]?[bB]?)", text)
     if not m:
-        raise LimitError(f"MECHPLAN_MEMORY_BUDGET must be a size such as '4 GB' (got {text!r})")
+        raise LimitError(Text("errors.budget.env", {"value": repr(text)}))
     return int(min(float(m.group(1)) * _UNITS[m.group(2).lower()], 2.0**62))
 
 
@@ -52,10 +53,28 @@ def ensure_within_budget(positions: int, steps: int, *, file: str | None = None,
     budget = memory_budget()
     if estimate > budget:
         need = "more than 1024 TB" if estimate >= 1024**5 else f"about {_size(estimate)}"
-        raise LimitError(
-            f"{shown(positions)} positions × {steps} construction steps need {need} "
-            f"of memory, more than the budget of {_size(budget)}; ask for fewer positions "
-            "(e.g. count = 3600) or raise MECHPLAN_MEMORY_BUDGET", file=file, key=key)
+        raise LimitError(Text("errors.budget.steps", {
+            "positions": shown(positions), "steps": str(steps), "need": need,
+            "budget": _size(budget)}), file=file, key=key)
+    return estimate
+
+
+#: memory of a report (the JSON document or the text report, as Python objects and text) per
+#: byte of one position's indented JSON: measured 14.5 for four_bar at 100 000 positions (3.2 GB)
+REPORT_BYTES_FACTOR = 16
+
+
+def ensure_report_within_budget(positions: int, json_bytes: int, *, file: str | None = None,
+                                key: str | None = None) -> int:
+    """Return the estimated bytes of a report of ``positions`` positions whose first position's
+    JSON takes ``json_bytes``; raise :class:`LimitError` with the estimate over the budget."""
+    estimate = positions * json_bytes * REPORT_BYTES_FACTOR
+    budget = memory_budget()
+    if estimate > budget:
+        most = max(1, budget // max(1, json_bytes * REPORT_BYTES_FACTOR))
+        raise LimitError(Text("errors.budget.report", {
+            "positions": shown(positions), "need": _size(estimate), "budget": _size(budget),
+            "most": f"{most:,}"}), file=file, key=key)
     return estimate
 
 

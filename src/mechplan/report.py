@@ -13,6 +13,8 @@ from .i18n import number as format_number
 from .model.plans import Plan
 from .scene.spec import PLANS
 from .solve import Solution, segment_table
+from .textbook_report import cycle_lines
+from .textbook_report import position_lines as textbook_lines
 from .trust_report import summary_lines
 
 
@@ -69,8 +71,10 @@ def text_report(sol: Solution, lang: str | None = None) -> str:
                     )
         out += ["", f"### {w['results']}"]
         out += _results(sol, k, lang)
+        out += textbook_lines(sol, k, lang)
         if "forces" in sol.extras:
             out += [""] + _forces(sol, k, lang)
+    out += cycle_lines(sol, lang)
     out += summary_lines(sol, lang)
     return "\n".join(out)
 
@@ -143,4 +147,7 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {nm}")
     out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
                f"{unit('kg·m²', lang)}")
+    if fa.friction is not None:
+        from .dynamics.friction import report_lines
+        out += report_lines(fa.friction, k, lang)
     return out

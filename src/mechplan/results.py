@@ -48,8 +48,12 @@ class ByName(Mapping[str, V]):
 class _Columns(ByName[np.ndarray]):
     """A :class:`ByName` over the columns of one read-only block: views made on first access."""
 
+    __slots__ = ("_block", "_values", "_views", "_what")
+
     def __init__(self, block: np.ndarray, columns: dict[str, slice | int], what: str) -> None:
-        super().__init__(columns, what)    # type: ignore[arg-type]
+        # ByName's fields set here directly: six of these are made per solve call
+        self._values = columns          # type: ignore[assignment]
+        self._what = what
         self._block = block
         self._views: dict[str, np.ndarray] = {}
 
@@ -106,6 +110,9 @@ class Forces:
         Balancing moment on the crank (N,) from the force polygons and from Zhukovsky's lever.
     M_red, J_red : np.ndarray
         Reduced moment (N·m) and reduced moment of inertia (kg·m²), shape (N,).
+    friction : FrictionAnalysis or None
+        With ``[friction]``: M_b without friction, the efficiency η, the iteration and each
+        pair's friction load (``mechplan.dynamics.friction``; docs/forces.md).
     """
 
     inertia: Mapping[str, InertiaLoad]
@@ -115,6 +122,7 @@ class Forces:
     M_b_zhukovsky: np.ndarray
     M_red: np.ndarray
     J_red: np.ndarray
+    friction: Any = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -135,6 +143,9 @@ class Solution:
         Kinetostatics when the force plan was asked for (a scene with masses or loads).
     flags : tuple of (position, quantity, subject, estimate)
         Results whose estimated relative error exceeds the tolerance (see docs/estimates.md).
+    textbook : TextbookAnswers or None
+        The textbook answers the scene's ``[answers]`` asks for (docs/textbook.md): sliding,
+        relative, rubbing, transmission, strokes, least velocity.
     """
 
     phi_deg: np.ndarray
@@ -146,6 +157,7 @@ class Solution:
     epsilon: Mapping[str, np.ndarray]
     forces: Forces | None
     flags: tuple[tuple[int, str, str, float], ...] = ()
+    textbook: Any = None
 
     @property
     def positions(self) -> int:

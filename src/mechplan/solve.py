@@ -180,6 +180,9 @@ def solve(scene: Scene, at_deg: Sequence[float] | np.ndarray | None = None,
         from .dynamics.loading import Loading
         sol.extras["loading"] = loading or Loading.from_scene(scene)
         sol.extras["forces"] = analyse_forces(c, ev, scene.mechanism, sol.extras["loading"])
+    if scene.textbook is not None:
+        from .textbook_report import attach
+        attach(sol)
     return sol
 
 
@@ -230,9 +233,12 @@ def to_json(sol: Solution) -> dict[str, Any]:
         }
         if "forces" in sol.extras:
             entry_k.update(sol.extras["forces"].json(k))
+        if "textbook" in sol.extras:
+            from .textbook_report import position_json as textbook_json
+            entry_k["textbook"] = textbook_json(sol, k)
         entry_k["error_estimate"] = position_json(sol, k)
         positions.append(entry_k)
-    return {
+    doc = {
         "mechplan": __version__,
         "title": scene.title,
         "dof": sol.structure.dof,
@@ -245,6 +251,10 @@ def to_json(sol: Solution) -> dict[str, Any]:
         "scales": {SCALE_KEYS[plan.value][0]: mu for plan, mu in sol.scales.items()},
         "stats": {"steps_total": len(c.steps), "steps_evaluated": ev.evaluated},
     }
+    if "textbook" in sol.extras:
+        from .textbook_report import cycle_json
+        doc["textbook"] = cycle_json(sol)
+    return doc
 
 
 def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, float, str, float]]:

@@ -11,6 +11,7 @@ if TYPE_CHECKING:      # pint costs ~0.15 s to import: only when a quantity is r
     import pint
 
 from .errors import SceneError, shown
+from .i18n import Text, join
 
 #: dimension name → (pint dimensionality string, SI unit to convert to)
 DIMENSIONS: dict[str, tuple[str, str]] = {
@@ -28,6 +29,9 @@ DIMENSIONS: dict[str, tuple[str, str]] = {
     "area": ("[length]**2", "m**2"),
     "dimensionless": ("", ""),
     "density": ("[mass]/[length]**3", "kg/m**3"),
+    "stiffness": ("[mass]/[time]**2", "N/m"),
+    "damping": ("[mass]/[time]", "N*s/m"),
+    "torsional_damping": ("[mass]*[length]**2/[time]", "N*m*s"),
     # scale factors: physical unit per mm of paper
     "mu_length": ("", "m/mm"),
     "mu_velocity": ("1/[time]", "m/s/mm"),
@@ -57,10 +61,14 @@ _EXAMPLES = {
     "inertia": '"0.1 kg*m^2"',
     "force": '"7850 N" or "7.85 kN"',
     "moment": '"100 N*m"',
+    "stiffness": '"2 N/mm" or "2000 N/m"',
+    "damping": '"5 N*s/m"',
+    "torsional_damping": '"0.01 N*m*s/rad"',
     "pressure": '"1 MPa" or "85 kPa"',
     "area": '"78.5 cm^2"',
     "dimensionless": '"0.35"',
     "density": '"7800 kg/m^3"',
+    "stiffness": '"20 N/mm" or "20000 N/m"',
     "mu_length": '"0.0025 m/mm"',
     "mu_velocity": '"0.1 (m/s)/mm"',
     "mu_acceleration": '"2 (m/s^2)/mm"',
@@ -90,9 +98,18 @@ _EXPONENT = re.compile(r"\s*(?:\(\s*[-+]?\s*\d{1,2}(?:\.\d+)?\s*\)|[-+]?\s*\d{1,
 _TWO_MARKS = re.compile(r"\d[.,]\d*[.,]\d")
 
 
-def _noun(dimension: str) -> str:
-    words = dimension.replace("mu_", "scale factor of ").replace("_", " ")
-    return ("an " if words[0] in "aeiou" else "a ") + words
+def _noun(dimension: str) -> Text:
+    """"a length", "длина": the kind of quantity a key wants, said in any language."""
+    return Text(f"errors.noun.{dimension}")
+
+
+def _example(dimension: str) -> Text:
+    """'"80 mm" or "0.08 m"' with "or" said in any language."""
+    return join(_EXAMPLES[dimension].split(" or "), " or ")
+
+
+def _error(message: str, file: str | None, key: str | None, **args: Any) -> SceneError:
+    return SceneError(Text(f"errors.units.{message}", args), file=file, key=key)
 
 
 def parse_quantity(text: object, dimension: str, *, file: str | None = None,
@@ -102,69 +119,57 @@ def parse_quantity(text: object, dimension: str, *, file: str | None = None,
     Plain numbers are accepted only for ``dimensionless``; a decimal comma ("0,1") is accepted.
     Angles come back in radians, angular speeds in rad/s, scale factors per millimetre of paper.
     """
-    example = _EXAMPLES[dimension]
+    example, noun = _example(dimension), _noun(dimension)
     if isinstance(text, bool):
-        raise SceneError(f"expected {_noun(dimension)} such as {example} (got {text!r})",
-                         file=file, key=key)
+        raise _error("expected", file, key, noun=noun, example=example, value=repr(text))
     if isinstance(text, (int, float)):
         if dimension == "dimensionless" or dimension.startswith("mu_"):
             try:
                 return float(text)
             except OverflowError:
-                raise SceneError(f"{shown(text)} is too large a number", file=file,
-                                 key=key) from None
-        raise SceneError(
-            f"{_noun(dimension)} needs a unit, such as {example} (got {text!r})",
-            file=file, key=key)
+                raise _error("too_large", file, key, value=shown(text)) from None
+        raise _error("needs_unit", file, key, noun=noun, example=example, value=repr(text))
     if not isinstance(text, str) or not text.strip():
-        raise SceneError(f"expected {_noun(dimension)} such as {example} (got {text!r})",
-                         file=file, key=key)
+        raise _error("expected", file, key, noun=noun, example=example, value=repr(text))
     if len(text) > MAX_QUANTITY_CHARS:
-        raise SceneError(f"cannot read {shown(text)} as {_noun(dimension)}: it is {len(text):,} "
-                         f"characters long, more than {MAX_QUANTITY_CHARS}; write it like "
-                         f"{example}", file=file, key=key)
+        raise _error("too_long", file, key, value=shown(text), noun=noun,
+                     length=f"{len(text):,}", most=str(MAX_QUANTITY_CHARS), example=example)
     if _TWO_MARKS.search(text):
-        raise SceneError(f"cannot read {text!r} as {_noun(dimension)}: a number has at most one "
-                         f"decimal mark; write it like {example}", file=file, key=key)
+        raise _error("two_marks", file, key, value=repr(text), noun=noun, example=example)
     cleaned = _DECIMAL_COMMA.sub(".", text.strip()).replace("·", "*").replace("²", "^2")
     cleaned = cleaned.replace("°", " deg").replace("^", "**")
     if any(not _EXPONENT.match(cleaned, m.end()) for m in re.finditer(r"\*\*", cleaned)):
-        raise SceneError(f"cannot read {shown(text)} as {_noun(dimension)}: only plain "
-                         f"exponents below 100 are read (m/s^2); write it like {example}",
-                         file=file, key=key)
+        raise _error("exponent", file, key, value=shown(text), noun=noun, example=example)
     try:
         return _convert(cleaned, text, dimension, file, key)
     except OverflowError:       # "1e200 km^2": beyond a float while converting
-        raise SceneError(f"{shown(text)} is too large a number", file=file, key=key) from None
+        raise _error("too_large", file, key, value=shown(text)) from None
 
 
 def _convert(cleaned: str, text: str, dimension: str, file: str | None, key: str | None) -> float:
     _dim, si_unit = DIMENSIONS[dimension]
-    example = _EXAMPLES[dimension]
+    example, noun = _example(dimension), _noun(dimension)
     ureg = registry()
     try:
         q: Any = ureg.Quantity(cleaned)
     except OverflowError:
         raise
     except Exception as exc:  # noqa: BLE001 - pint raises many unrelated types for bad text
-        raise SceneError(f"cannot read {text!r} as {_noun(dimension)}; write it like "
-                         f"{example} ({exc.__class__.__name__})", file=file, key=key) from None
+        raise _error("unreadable", file, key, value=repr(text), noun=noun, example=example,
+                     reason=exc.__class__.__name__) from None
     if not isinstance(q, ureg.Quantity):
         q = ureg.Quantity(float(q), "")
     target = ureg.Quantity(1.0, si_unit) if si_unit else ureg.Quantity(1.0, "")
     if q.unitless and dimension.startswith("mu_"):
         return float(q.magnitude)  # a bare scale factor is in SI units per mm of paper
     if q.unitless and dimension != "dimensionless":
-        raise SceneError(f"{_noun(dimension)} needs a unit, such as {example} "
-                         f"(got {text!r})", file=file, key=key)
+        raise _error("needs_unit", file, key, noun=noun, example=example, value=repr(text))
     if q.dimensionality != target.dimensionality:
-        raise SceneError(
-            f"{text!r} is not {_noun(dimension)} (its unit is "
-            f"'{q.units:~}' [{q.dimensionality}]); write it like {example}",
-            file=file, key=key)
+        raise _error("wrong_dimension", file, key, value=repr(text), noun=noun,
+                     unit=f"{q.units:~}", dimensionality=str(q.dimensionality), example=example)
     value = float(q.to(si_unit).magnitude) if si_unit else float(q.to("").magnitude)
     if not math.isfinite(value):
-        raise SceneError(f"{text!r} is not a finite number", file=file, key=key)
+        raise _error("not_finite", file, key, value=repr(text))
     return value
 
 

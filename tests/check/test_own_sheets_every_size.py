@@ -35,8 +35,8 @@ PLAN_PANEL = re.compile(r"^(position|velocity|acceleration|force)(?!.*(tables|le
 
 def test_the_grid_is_every_linkage_template():
     assert sorted(p.stem for p in TEMPLATES) == [
-        "four_bar", "machine_unit", "offset_slider_crank", "quick_return", "shaper",
-        "shaper_flywheel", "slider_crank", "v_engine"]
+        "four_bar", "machine_unit", "offset_slider_crank", "press_friction", "quick_return",
+        "shaper", "shaper_flywheel", "slider_crank", "v_engine"]
 
 
 @pytest.mark.parametrize("path", TEMPLATES, ids=[p.stem for p in TEMPLATES])

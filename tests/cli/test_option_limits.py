@@ -113,3 +113,21 @@ def test_api_and_solver_refuse_far_angles() -> None:
     with pytest.raises(LimitError, match="1.5e\\+284° apart"):
         solve(load_scene(FOUR_BAR), at_deg=[1e300])
     assert m.solve(phi_deg=[30.0, 999_999.0]).phi_deg.shape == (2,)
+
+
+def test_a_report_beyond_the_budget_is_refused_at_once_with_its_estimate(capsys, monkeypatch):
+    """Issue 35: `solve --positions 1000000 --json` is refused in about a second (it used to run
+    for over ten minutes to 5.4 GB); the estimate comes from one position's JSON."""
+    start = time.perf_counter()
+    code = main(["solve", FOUR_BAR, "--positions", "1000000", "--json"])
+    err = capsys.readouterr().err
+    assert code == 2 and "Traceback" not in err
+    assert "a report of 1000000 positions needs about" in err and "at most about" in err
+    assert time.perf_counter() - start < 20
+    # the same report under a budget it fits in is written: 3000 positions need about 100 MB
+    monkeypatch.setenv("MECHPLAN_MEMORY_BUDGET", "10 MB")
+    assert main(["solve", FOUR_BAR, "--positions", "3000", "--json"]) == 2
+    assert "more than the budget of 10.0 MB" in capsys.readouterr().err
+    monkeypatch.setenv("MECHPLAN_MEMORY_BUDGET", "1 GB")
+    assert main(["solve", FOUR_BAR, "--positions", "3000", "--json"]) == 0
+    assert capsys.readouterr().out.count('"phi_deg"') >= 3000

@@ -87,6 +87,28 @@ def applied_loads(mech: Mechanism, loading: Loading, kin: Kinematics, phi: np.nd
             out.append((spec.link, None, None, None, np.full(kin.n, spec.moment)))
             continue
         p = kin.pos(spec.point)
+        if spec.kind in (LoadKind.SPRING, LoadKind.CYLINDER):
+            # tension positive pulls the ends together; a cylinder pushes them apart
+            d = kin.pos(spec.other) - p
+            length = np.hypot(d[:, 0], d[:, 1])
+            if spec.kind is LoadKind.SPRING:
+                tension = spec.preload + spec.stiffness * (length - spec.free_length)
+            else:
+                area = math.pi * spec.bore ** 2 / 4
+                rod_area = math.pi * spec.rod ** 2 / 4
+                tension = -(spec.pressure * area - spec.pressure_rod * (area - rod_area)) \
+                    * np.ones_like(length)
+            f = tension[:, None] * d / length[:, None]
+            out.append((spec.link, spec.point, p, f, None))
+            if spec.other_link not in (None, GROUND):
+                out.append((spec.other_link, spec.other, kin.pos(spec.other), -f, None))
+            continue
+        if spec.kind is LoadKind.FORCE and spec.along is not None:
+            d = kin.pos(spec.along[1]) - kin.pos(spec.along[0])
+            ang = np.arctan2(d[:, 1], d[:, 0]) + (spec.angle or 0.0)
+            f = spec.magnitude * np.stack((np.cos(ang), np.sin(ang)), axis=-1)
+            out.append((spec.link, spec.point, p, f, None))
+            continue
         if spec.kind is LoadKind.FORCE:
             if spec.vector is not None:
                 f = np.broadcast_to(np.asarray(spec.vector, dtype=float), p.shape)

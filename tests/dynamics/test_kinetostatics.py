@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import math
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -64,7 +65,9 @@ def test_loaded_templates():
 def test_reactions_match_global_newton_euler(name, which):
     scene = scene_of(name)
     mech = scene.mechanism
-    loading = Loading.from_scene(scene) if which == "scene" else rich_loading(mech)
+    # the global solution is linear: friction (its own tests) is left out of the comparison
+    loading = (replace(Loading.from_scene(scene), friction=None) if which == "scene"
+               else rich_loading(mech))
     c, ev = solved(scene, loading)
     ref = solve_global(mech, loading, c, ev)
     scale = max(float(np.abs(f).max()) for f in ref.force.values())

@@ -46,7 +46,7 @@ def scene(**kw) -> str:
     ({"scheme": "three_row"}, "planetary.scheme", "single_row"),
     ({"ratio": 500}, "planetary.ratio", "nearest"),
     ({"k": 3, "ratio": 4}, None, None),
-    ({"k": 1}, "planetary.planets", "at least 2"),
+    ({"k": 0}, "planetary.planets", "at least 1"),
 ])
 def test_errors_name_the_key(kw, key, words):
     if key is None:

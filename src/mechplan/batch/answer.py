@@ -46,6 +46,16 @@ def _mechanism_rows(doc: dict[str, Any]) -> tuple[list[float], list[dict[str, An
             add(f"R{guide}", "R", [_mag(pos["forces"]["guide_reactions"][guide]["force"])
                                    for pos in positions])
         add("M_b", "M_b", [pos["forces"].get("balancing_moment") for pos in positions])
+    if positions and positions[0].get("textbook"):        # the scene's [answers] (textbook.md)
+        tb = positions[0]["textbook"]
+        for key in tb.get("sliding", {}):
+            add(f"v_rel {key}", "v", [pos["textbook"]["sliding"][key]["v_slide"]
+                                      for pos in positions])
+            add(f"a^k {key}", "a", [pos["textbook"]["sliding"][key].get("a_cor_magnitude")
+                                    for pos in positions])
+        for key in tb.get("rubbing", {}):
+            add(f"v_rub {key}", "v", [pos["textbook"]["rubbing"][key]["v_rub"]
+                                      for pos in positions])
     return phi, rows
 
 

@@ -7,6 +7,7 @@ import re
 from typing import Any
 
 from ..errors import SceneError
+from ..i18n import Text
 from .texts import say
 
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+(?:[.,]\d*)?|[.,]\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
@@ -16,8 +17,7 @@ def split_key(key: str) -> list[str]:
     """Split a key path into its parts; a user error names the key."""
     parts = key.strip().split(".")
     if not key.strip() or any(not p for p in parts):
-        raise SceneError(f"a key path must be names joined by dots, e.g. links.2.lengths.BC "
-                         f"(got {key!r})")
+        raise SceneError(Text("batchvars.key_path", {"value": repr(key)}))
     return parts
 
 
@@ -26,8 +26,7 @@ def get_value(doc: dict[str, Any], key: str, file: str | None = None) -> Any:
     node: Any = doc
     for part in split_key(key):
         if not isinstance(node, dict) or part not in node:
-            raise SceneError(f"the template has no value at {key}; set keys the template already "
-                             "has", file=file, key=key)
+            raise SceneError(Text("batchvars.no_value", {"key": key}), file=file, key=key)
         node = node[part]
     return node
 
@@ -97,8 +96,7 @@ def split_quantity(text: str, key: str) -> tuple[float, str]:
     """Split ``"80 mm"`` / ``"80mm"`` / ``"0,3"`` into (80.0, "mm")."""
     m = _NUMBER.match(text)
     if not m:
-        raise SceneError(f"a value must be a number with an optional unit, e.g. '80 mm' "
-                         f"(got {text!r})", key=key)
+        raise SceneError(Text("batchvars.number", {"value": repr(text)}), key=key)
     return float(m.group(1).replace(",", ".")), m.group(2)
 
 

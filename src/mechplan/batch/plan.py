@@ -22,6 +22,7 @@ import numpy as np
 from ..construct.graph import Construction
 from ..construct.ops import Op
 from ..errors import MechplanError, SceneError
+from ..i18n import Text
 from ..model.mechanism import GROUND, PairKind
 from ..scene import parse_scene
 from ..scene.document import parse_toml
@@ -50,23 +51,23 @@ def parse_vary(spec: str) -> Axis:
     """Parse ``KEY=FROM..TO:STEPS`` (e.g. ``links.1.lengths.AB=60mm..100mm:5``)."""
     m = _VARY.match(spec)
     if not m:
-        raise SceneError("--vary must be KEY=FROM..TO:STEPS, "
-                         f"e.g. links.1.lengths.AB=60mm..100mm:5 (got {spec!r})")
+        raise SceneError(Text("batchvars.vary", {"value": repr(spec)}))
     key, a, b, steps = m.groups()
     low, unit = split_quantity(a, key)
     high, unit2 = split_quantity(b, key)
     unit = unit or unit2
     if unit2 and unit2 != unit:
-        raise SceneError(f"FROM and TO must use the same unit (got {unit!r} and {unit2!r})",
+        raise SceneError(Text("batchvars.same_unit", {"low": "FROM", "high": "TO",
+                                                      "unit": repr(unit), "unit2": repr(unit2)}),
                          key=key)
     if len(steps) > 12:                           # an int of 400 digits is no budget to compute
         check_axis_steps(10**12, key)
     n = int(steps)
     if n < 1:
-        raise SceneError(f"STEPS must be at least 1 (got {n})", key=key)
+        raise SceneError(Text("batchvars.steps", {"value": str(n)}), key=key)
     check_axis_steps(n, key)
     if not (math.isfinite(low) and math.isfinite(high)):
-        raise SceneError(f"FROM and TO must be finite numbers (got {a!r}..{b!r})", key=key)
+        raise SceneError(Text("batchvars.finite", {"value": f"{a!r}..{b!r}"}), key=key)
     return Axis(key, tuple(float(f"{v:.12g}") for v in np.linspace(low, high, n)), unit)
 
 
@@ -189,22 +190,21 @@ def _same(a: Any, b: Any) -> bool:
 def _same_structure(a: dict[str, Any], b: dict[str, Any], where: str) -> None:
     if a.keys() != b.keys() or any(
             getattr(a[k], "inputs", None) != getattr(b[k], "inputs", None) for k in a):
-        raise MechplanError(f"the construction must keep its steps over the sweep (it changes at "
-                            f"{where}); vary dimensions that keep the topology and the groups")
+        raise MechplanError(Text("batchvars.topology", {"where": where}))
 
 
 def make_plan(text: str, file: str, axes: Sequence[Axis], positions: int = 360) -> SweepPlan:
     """Plan a sweep of a mechanism scene over the grid of ``axes`` at ``positions`` crank angles."""
     if positions < 1:
-        raise SceneError(f"positions must be at least 1 (got {positions})")
+        raise SceneError(Text("batchvars.positions", {"value": str(positions)}))
     keys = [ax.key for ax in axes]
     if len(set(keys)) != len(keys):
-        raise SceneError(f"each key may be varied once (got {', '.join(keys)})")
+        raise SceneError(Text("batchvars.once", {"keys": ", ".join(keys)}))
     builder = _Builder(text, file, axes)
     origin = (0,) * len(axes)
     scene0, rec0 = builder(origin)
     if scene0 is None:
-        raise MechplanError(f"the first variant of the sweep must build ({rec0})", file=file)
+        raise MechplanError(Text("batchvars.first", {"reason": str(rec0)}), file=file)
     assert isinstance(rec0, dict)
     deps: dict[str, set[int]] = {name: set() for name in rec0}
     for i, ax in enumerate(axes):

@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..scene.document import parse_toml, read_text
 from ..userfiles import VARIANTS
 from .budget import check_rule, check_students
@@ -81,40 +82,41 @@ def _rule(key: str, spec: Any, file: str) -> Rule:
     split_key(key)
     where = f"rules.{key}"
     if not isinstance(spec, dict):
-        raise SceneError("a rule must be a table: { from, to, step } or { choices = [...] } "
-                         f"(got {spec!r})", file=file, key=where)
+        raise SceneError(Text("batchvars.rule_table", {"value": repr(spec)}), file=file,
+                         key=where)
     unknown = set(spec) - {"from", "to", "step", "digits", "choices"}
     if unknown:
-        raise SceneError(f"a rule's keys must be from, to, step, digits or choices (got "
-                         f"{', '.join(sorted(unknown))})", file=file, key=where)
+        raise SceneError(Text("batchvars.rule_keys", {"keys": ", ".join(sorted(unknown))}),
+                         file=file, key=where)
     if "choices" in spec:
         choices = spec["choices"]
         if not isinstance(choices, list) or not choices:
-            raise SceneError(f"choices must be a non-empty list (got {choices!r})", file=file,
+            raise SceneError(Text("batchvars.choices", {"value": repr(choices)}), file=file,
                              key=where)
         for choice in choices:
             check_value(key, choice, file)
         return Rule(key, choices=tuple(choices))
     if "from" not in spec or "to" not in spec:
-        raise SceneError("a range rule needs both from and to, e.g. { from = \"70 mm\", to = "
-                         "\"90 mm\", step = \"2 mm\" }", file=file, key=where)
+        raise SceneError(Text("batchvars.range"), file=file, key=where)
     low, unit = split_quantity(str(spec["from"]), where)
     high, unit2 = split_quantity(str(spec["to"]), where)
     if unit2 and unit2 != unit:
-        raise SceneError(f"from and to must use the same unit (got {unit!r} and {unit2!r})",
+        raise SceneError(Text("batchvars.same_unit", {"low": "from", "high": "to",
+                                                      "unit": repr(unit), "unit2": repr(unit2)}),
                          file=file, key=where)
     if high < low:
-        raise SceneError(f"to must not be below from (got {spec['from']!r}..{spec['to']!r})",
+        raise SceneError(Text("batchvars.to_below",
+                              {"value": f"{spec['from']!r}..{spec['to']!r}"}),
                          file=file, key=where)
     step = None
     if "step" in spec:
         step, unit3 = split_quantity(str(spec["step"]), where)
         if (unit3 and unit3 != unit) or step <= 0:
-            raise SceneError(f"step must be positive, in the unit of from (got {spec['step']!r})",
+            raise SceneError(Text("batchvars.step", {"value": repr(spec["step"])}),
                              file=file, key=where)
     digits = spec.get("digits")
     if digits is not None and (not isinstance(digits, int) or digits < 0):
-        raise SceneError(f"digits must be a whole number ≥ 0 (got {digits!r})", file=file,
+        raise SceneError(Text("batchvars.digits", {"value": repr(digits)}), file=file,
                          key=where)
     check_rule(low, high, step, digits, file=file, key=where)
     return Rule(key, low, high, unit, step, digits)
@@ -129,16 +131,16 @@ def read_variants(path: str | Path) -> list[Variant]:
         return _from_csv(text, file)
     if path.suffix.lower() == ".toml":
         return _from_toml(text, file)
-    raise SceneError("the variants file must be .csv or .toml "
-                     f"(got {path.suffix or 'no suffix'!r})", file=file)
+    raise SceneError(Text("batchvars.suffix", {"value": repr(path.suffix or "no suffix")}),
+                     file=file)
 
 
 def _from_csv(text: str, file: str) -> list[Variant]:
     reader = csv.DictReader(io.StringIO(text))
     columns = reader.fieldnames or []
     if "id" not in columns:
-        raise SceneError(f"the first row must name the columns, one of them 'id' (got "
-                         f"{', '.join(columns) or 'nothing'})", file=file)
+        raise SceneError(Text("batchvars.columns", {"value": ", ".join(columns) or "—"}),
+                         file=file)
     keys = [c for c in columns if c not in ("id", "name")]
     for key in keys:
         split_key(key)
@@ -154,7 +156,7 @@ def _from_csv(text: str, file: str) -> list[Variant]:
                 check_value(key, value, file)
             out.append(Variant(sid, (row.get("name") or "").strip(), values))
     except csv.Error as exc:    # a cell over the csv module's 128 KB limit, a stray quote
-        raise SceneError(f"not a readable CSV table ({exc})", file=file,
+        raise SceneError(Text("batchvars.csv", {"reason": str(exc)}), file=file,
                          key=f"line {reader.reader.line_num}") from None
     return _unique(out, file)
 
@@ -172,25 +174,24 @@ def _from_toml(text: str, file: str) -> list[Variant]:
     doc = parse_toml(text, file)
     unknown = set(doc) - {"students", "rules", "count", "prefix"}
     if unknown:
-        raise SceneError(f"a variants file's keys must be students, rules, count or prefix (got "
-                         f"{', '.join(sorted(unknown))})", file=file)
+        raise SceneError(Text("batchvars.file_keys", {"keys": ", ".join(sorted(unknown))}),
+                         file=file)
     rule_table, rows = doc.get("rules", {}), doc.get("students", [])
     if not isinstance(rule_table, dict):
-        raise SceneError(f"rules must be a table of key paths (got {type(rule_table).__name__})",
+        raise SceneError(Text("batchvars.rules", {"value": type(rule_table).__name__}),
                          file=file, key="rules")
     if not isinstance(rows, list):
-        raise SceneError(f"students must be an array of tables [[students]] (got "
-                         f"{type(rows).__name__})", file=file, key="students")
+        raise SceneError(Text("batchvars.students", {"value": type(rows).__name__}),
+                         file=file, key="students")
     rules = [_rule(k, v, file) for k, v in rule_table.items()]
     students: list[tuple[str, str, dict[str, Any]]] = []
     for i, st in enumerate(rows):
         where = f"students[{i}]"
         if not isinstance(st, dict) or "id" not in st:
-            raise SceneError("every student needs an id", file=file, key=where)
+            raise SceneError(Text("batchvars.student_id"), file=file, key=where)
         values = st.get("values", {})
         if not isinstance(values, dict):
-            raise SceneError("a student's values must be a table of key paths",
-                             file=file, key=f"{where}.values")
+            raise SceneError(Text("batchvars.values"), file=file, key=f"{where}.values")
         for key, value in values.items():
             check_value(key, value, file)
         students.append((_check_id(str(st["id"]), file, f"{where}.id"), str(st.get("name", "")),
@@ -199,14 +200,14 @@ def _from_toml(text: str, file: str) -> list[Variant]:
         count = doc["count"]
         check_students(count, file=file, key="count")
         if not isinstance(count, int) or count < 1:
-            raise SceneError(f"count must be a whole number ≥ 1 (got {count!r})", file=file,
+            raise SceneError(Text("batchvars.count", {"value": repr(count)}), file=file,
                              key="count")
         prefix = str(doc.get("prefix", "v"))
         width = len(str(count))
         students += [(_check_id(f"{prefix}{k:0{width}d}", file, "prefix"), "", {})
                      for k in range(1, count + 1)]
     if not students:
-        raise SceneError("a variants file needs [[students]] rows or a count", file=file)
+        raise SceneError(Text("batchvars.empty"), file=file)
     check_students(len(students), file=file, key="students")
     out = [Variant(sid, name, {**{r.key: r.draw(sid) for r in rules}, **values})
            for sid, name, values in students]
@@ -217,6 +218,6 @@ def _unique(rows: list[Variant], file: str) -> list[Variant]:
     seen: set[str] = set()
     for row in rows:
         if row.id in seen:
-            raise SceneError(f"student ids must be unique (got {row.id!r} twice)", file=file)
+            raise SceneError(Text("batchvars.unique", {"value": repr(row.id)}), file=file)
         seen.add(row.id)
     return rows

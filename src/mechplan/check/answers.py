@@ -25,6 +25,7 @@ from ..submission.notation import (
     AnswerSpec,
     answer_section,
     closest_answers,
+    compact,
     is_angle_column,
     read_answer,
 )
@@ -57,7 +58,23 @@ def read_name(name: str, kind: str, section: str | None, has_angle: bool,
             tables = ("gears_pair",)
         elif sk == "planetary" or keys.study.pair is None:
             tables = ("gears",)
-    return read_answer(name, tables, has_angle)
+    found = read_answer(name, tables, has_angle)
+    if kind != "linkage" or (found is not None and _known(keys, found[1])):
+        return found
+    from ..studies.linkage import subjects  # "v_rub_B", "γ II(4,5)": a name and its subject
+
+    flat = compact(name)
+    for subject in subjects(keys):
+        tail = compact(subject)
+        if flat.endswith(tail) and len(flat) > len(tail):
+            stem = read_answer(flat[: -len(tail)], tables, has_angle)
+            if stem is not None and _known(keys, f"{stem[1]}.{subject}"):
+                return stem[0], f"{stem[1]}.{subject}"
+    return found
+
+
+def _known(keys: Keys, key: str) -> bool:
+    return key in keys.scalars or key in keys.columns
 
 
 #: the files an answer table may be
@@ -75,14 +92,14 @@ def maybe_check_answers(scene: Any, submission: Any,
     if found is None:
         return None
     if Path(submission).suffix.lower() not in TABLE_SUFFIXES:
-        if found[0] == "dynamics":
+        if found[0] in ("dynamics", "linkage"):
             return None                 # the plans of the linkage are checked elsewhere
         raise CheckError(T("answers.table_needed", kind=T(f"answers.kind.{found[0]}"),
                            suffixes=join(TABLE_SUFFIXES)), file=str(submission))
     from ..studies import solve_file
 
     kind = found[0]
-    if kind != "dynamics":
+    if kind not in ("dynamics", "linkage"):
         table = read_answers(submission, is_angle_column)
         return check_answers(scene, table, solve_file(scene).answers(), kind, options or Options())
     try:                                # a linkage table of the same scene is checked elsewhere

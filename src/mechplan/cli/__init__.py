@@ -12,7 +12,7 @@ from pathlib import Path
 from .. import __version__
 from ..drafting.fields import SHEETS, STANDARDS
 from ..errors import MechplanError, shown
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 
 #: exit code of a run that completed but flagged results or left positions out (see README)
 FLAGGED = 3
@@ -46,10 +46,38 @@ def angle_deg(text: str) -> float:
         raise argparse.ArgumentTypeError(exc.detail) from None
 
 
+#: a report of more positions than this is first measured on one position (see below)
+REPORT_PROBE_FROM = 2000
+
+
+def _ensure_report_fits(args: argparse.Namespace) -> None:
+    """Refuse, before solving, a linkage report (JSON or text) of more positions than the memory
+    budget holds: one position is solved and its JSON measured (well under a second)."""
+    from ..scene.document import parse_toml, read_text, scene_kind
+
+    text = read_text(args.scene)
+    if args.at or scene_kind(parse_toml(text, args.scene), args.scene) != "mechanism":
+        return
+    from ..limits import ensure_report_within_budget
+    from ..scene import parse_scene
+    from ..solve import position_count
+    from ..studies import solve_text
+
+    n = position_count(parse_scene(text, args.scene), args.positions)
+    if n <= REPORT_PROBE_FROM:
+        return
+    probe = solve_text(text, args.scene, count=1, data_dir=args.data_dir)
+    first = probe.to_json()["positions"][0]
+    ensure_report_within_budget(n, len(json.dumps(first, ensure_ascii=False, indent=1)),
+                                file=args.scene,
+                                key="--positions" if args.positions else "positions.count")
+
+
 def _solve(args: argparse.Namespace) -> int:
     from ..studies import solve_file
     from ..studies.mechanism import MechanismStudy
 
+    _ensure_report_fits(args)
     study = solve_file(args.scene, at_deg=args.at, count=args.positions, data_dir=args.data_dir)
     if isinstance(study, MechanismStudy) and (args.sheet or args.standard):
         # the scale factors (μ, segment lengths) of the sheet `mechplan draw --sheet` draws
@@ -59,6 +87,14 @@ def _solve(args: argparse.Namespace) -> int:
         sol.scales = choose_scales(sol.scene, sol.construction, sol.ev, sol.plans, args.sheet,
                                    args.standard)
         sol.extras["sheet"] = (args.sheet, args.standard)
+    if not isinstance(study, MechanismStudy) and (args.answers or args.pin_radius is not None):
+        raise MechplanError(f"--answers and --pin-radius are for a linkage; {args.scene} is "
+                            "another kind of scene")
+    if isinstance(study, MechanismStudy) and (args.answers or args.pin_radius is not None):
+        from ..textbook_report import attach, spec_from_flags
+
+        sol = study.solution
+        attach(sol, spec_from_flags(args.answers or "rubbing", args.pin_radius, sol.scene.textbook))
     if args.json:
         print(json.dumps(study.to_json(), ensure_ascii=False, indent=1))
     else:
@@ -66,8 +102,7 @@ def _solve(args: argparse.Namespace) -> int:
     if args.csv:
         write_csv = getattr(study, "write_csv", None)
         if write_csv is None:
-            raise MechplanError(f"--csv writes the per-angle table of an engine scene; "
-                                f"{args.scene} has none")
+            raise MechplanError(Text("errors.cli.csv", {"scene": str(args.scene)}))
         write_csv(args.csv)
     warnings = study.warnings(args.lang) if hasattr(study, "warnings") else []
     for line in warnings:
@@ -89,10 +124,12 @@ def _draw(args: argparse.Namespace) -> int:
     from ..studies import solve_file
 
     formats = [f.strip().lower() for f in args.format.split(",") if f.strip()]
-    unknown = [f for f in formats if f not in FORMATS]
+    unknown = [f for f in formats if f not in (*FORMATS, "html")]
     if unknown or not formats:
-        raise MechplanError(f"--format must list some of {', '.join(FORMATS)} (got "
-                            f"{args.format!r})")
+        raise MechplanError(Text("errors.cli.format", {"formats": ", ".join((*FORMATS, "html")),
+                                                       "value": repr(args.format)}))
+    page = "html" in formats                   # the live page (docs/html.md)
+    formats = [f for f in formats if f != "html"]
     if args.system_fonts:
         from ..drafting.fonts import ENV_SYSTEM_FONTS
 
@@ -105,9 +142,15 @@ def _draw(args: argparse.Namespace) -> int:
             print(f"mechplan: [{i}/{len(args.scenes)}] {path}", file=sys.stderr, flush=True)
         try:
             study = solve_file(path, data_dir=args.data_dir)
-            for sheet in study.sheets(args.sheet, args.standard, args.lang, Path(path).stem):
+            for sheet in study.sheets(args.sheet, args.standard, args.lang,
+                                      Path(path).stem) if formats else ():
                 for written in write(sheet, out, formats):
                     print(written)
+            if page:
+                from ..live_page import write_page
+
+                print(write_page(study, out, Path(path).stem, size=args.sheet,
+                                 standard=args.standard, language=args.lang))
             for line in getattr(study, "warnings", lambda _lang: [])(args.lang):
                 print(line, file=sys.stderr)          # positions left out, poor estimates
             scale_notes = getattr(study, "scale_notes", None)   # μ not as the scene asks
@@ -119,10 +162,25 @@ def _draw(args: argparse.Namespace) -> int:
                     print(written)
         except MechplanError as exc:
             failed += 1
-            print(f"mechplan: error: {exc}", file=sys.stderr)
+            print(say_error(exc, error_language(args, path)), file=sys.stderr)
     if failed and len(args.scenes) > 1:
-        print(f"mechplan: {failed} of {len(args.scenes)} scenes failed", file=sys.stderr)
+        from ..i18n import message
+
+        print(message("errors.cli.scenes_failed", error_language(args), failed=failed,
+                      total=len(args.scenes)), file=sys.stderr)
     return 2 if failed else 0
+
+
+def _project(args: argparse.Namespace) -> int:
+    from ..note.project import run_project
+
+    formats = tuple(f.strip().lower() for f in args.format.split(",") if f.strip())
+    known = ("docx", "pdf", "svg", "dxf", "png")
+    if not formats or any(f not in known for f in formats):
+        raise MechplanError(f"--format must list some of {', '.join(known)} (got {args.format!r})")
+    for path in run_project(args.project, args.output, formats):
+        print(path)
+    return 0
 
 
 def template_names() -> list[str]:
@@ -136,8 +194,8 @@ def _template_text(name: str) -> str:
     stem = name.removesuffix(".toml")
     names = template_names()
     if stem not in names:
-        raise MechplanError(f"template must be one of {', '.join(names)} (got {name!r}); "
-                            "see mechplan new --list")
+        raise MechplanError(Text("errors.cli.template", {"names": ", ".join(names),
+                                                         "value": repr(name)}))
     return (resources.files("mechplan") / "templates" / f"{stem}.toml").read_text(
         encoding="utf-8")
 
@@ -148,8 +206,7 @@ def _new(args: argparse.Namespace) -> int:
             print(name)
         return 0
     if not args.template:
-        raise MechplanError("name a template (see mechplan new --list), e.g. mechplan new "
-                            "four_bar")
+        raise MechplanError(Text("errors.cli.name_template"))
     text = _template_text(args.template)
     name = f"{Path(args.template).name.removesuffix('.toml')}.toml"
     dest = Path(args.output or name)
@@ -157,17 +214,18 @@ def _new(args: argparse.Namespace) -> int:
     into = bool(args.output) and args.output.endswith(("/", os.sep))
     if into or dest.is_dir():
         if dest.exists() and not dest.is_dir():
-            raise MechplanError(f"{dest} is a file, not a folder; -o {args.output} asks to write "
-                                "into a folder")
+            raise MechplanError(Text("errors.cli.not_folder", {"path": str(dest),
+                                                               "output": args.output}))
         try:
             dest.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
             from ..errors import os_reason
 
-            raise MechplanError(f"cannot create the folder {dest}: {os_reason(exc)}") from None
+            said = Text("errors.cli.cannot_create", {"path": str(dest), "reason": os_reason(exc)})
+            raise MechplanError(said) from None
         dest = dest / name
     if dest.exists():
-        raise MechplanError(f"{dest} exists already; choose another name with -o")
+        raise MechplanError(Text("errors.cli.exists", {"path": str(dest)}))
     from ..render.atomic import write_atomic
 
     write_atomic(dest, text.encode("utf-8"))
@@ -212,6 +270,11 @@ def parser() -> argparse.ArgumentParser:
     s.add_argument("--standard", choices=STANDARDS,
                    help="scale factors of this standard's sheet (as `draw --standard`)")
     s.add_argument("--data-dir", metavar="DIR", help=_DATA_DIR_HELP)
+    s.add_argument("--answers", metavar="LIST",
+                   help="textbook answers: all or relative,rubbing,transmission,stroke,"
+                        "least_velocity (docs/textbook.md)")
+    s.add_argument("--pin-radius", type=float, metavar="MM",
+                   help="radius of every pin in mm, for the rubbing velocities")
     s.set_defaults(func=_solve)
     d = sub.add_parser("draw", help="draw the sheet: DXF, SVG, PDF, PNG",
                        description="Draw the sheets of one or more scenes. A scene that fails is "
@@ -219,7 +282,8 @@ def parser() -> argparse.ArgumentParser:
                        "failed.")
     d.add_argument("scenes", nargs="+", metavar="SCENE")
     d.add_argument("-o", "--output", default=".", help="output folder (default: .)")
-    d.add_argument("--format", default="dxf,svg,pdf", help="comma-separated: dxf,svg,pdf,png")
+    d.add_argument("--format", default="dxf,svg,pdf",
+                   help="comma-separated: dxf,svg,pdf,png,html (html: the live page)")
     d.add_argument("--sheet", choices=SHEETS)
     d.add_argument("--lang", choices=LANGUAGES)
     d.add_argument("--standard", choices=STANDARDS)
@@ -228,6 +292,14 @@ def parser() -> argparse.ArgumentParser:
                    help="measure and embed the system's fonts (e.g. a full CJK font) instead of "
                    "the bundled ones; the sheet then depends on the machine")
     d.set_defaults(func=_draw)
+    pr = sub.add_parser("project", help="a course project: every study's sheets and the note",
+                        description="Solve the studies a project file names and write their "
+                        "sheets and the explanatory note (DOCX, PDF) into the output folder.")
+    pr.add_argument("project", metavar="PROJECT.toml")
+    pr.add_argument("-o", "--output", default=".", help="output folder (default: .)")
+    pr.add_argument("--format", default="docx,pdf,svg,dxf",
+                    help="comma-separated: docx,pdf (the note; pdf also the sheets),svg,dxf,png")
+    pr.set_defaults(func=_project)
     from .batch import add_parser as add_batch
     from .check import add_parser as add_check
 
@@ -252,13 +324,43 @@ def parser() -> argparse.ArgumentParser:
     return p
 
 
+def error_language(args: argparse.Namespace, scene: str | None = None) -> str:
+    """The language errors are said in: ``--lang``, else the ``language`` of the scene (by
+    default the command's first) when it can be read, else English."""
+    lang = getattr(args, "lang", None)
+    if lang in LANGUAGES:
+        return str(lang)
+    scene = scene or getattr(args, "scene", None) or (getattr(args, "scenes", None) or [None])[0]
+    if isinstance(scene, str):
+        try:
+            from ..scene.document import parse_toml, read_text
+
+            said = parse_toml(read_text(scene), scene).get("language")
+        except MechplanError:
+            said = None
+        if said in LANGUAGES:
+            return str(said)
+    return "en"
+
+
+def say_error(exc: MechplanError, language: str) -> str:
+    """``mechplan: error: …`` in a language."""
+    from ..i18n import message
+
+    return message("errors.cli.error", language, message=exc.text(language))
+
+
 def main(argv: list[str] | None = None) -> int:
-    """Entry point; user errors print one message and exit with code 2."""
+    """Entry point; user errors print one message (in the scene's language or ``--lang``) and
+    exit with code 2; with ``--json`` the error is also a JSON object on standard output."""
     args = parser().parse_args(argv)
     try:
         return int(args.func(args))
     except MechplanError as exc:
-        print(f"mechplan: error: {exc}", file=sys.stderr)
+        lang = error_language(args)
+        print(say_error(exc, lang), file=sys.stderr)
+        if getattr(args, "json", False):
+            print(json.dumps(exc.to_json(lang), ensure_ascii=False, indent=1))
         return 2
     except BrokenPipeError:          # output piped into `head`
         sys.stderr.close()

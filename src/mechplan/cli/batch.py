@@ -8,7 +8,7 @@ from typing import Any
 
 from ..drafting.fields import SHEETS, STANDARDS
 from ..errors import MechplanError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 
 
 def _engine_options(p: argparse.ArgumentParser) -> None:
@@ -70,7 +70,7 @@ def _batch(args: argparse.Namespace) -> int:
     from ..batch.variants import read_variants
 
     if args.workers is not None and args.workers < 1:
-        raise MechplanError(f"--jobs must be at least 1 (got {args.workers})")
+        raise MechplanError(Text("batchvars.jobs", {"value": str(args.workers)}))
     variants = read_variants(args.variants)
     formats = [f.strip() for f in args.format.split(",") if f.strip()]
     try:
@@ -90,7 +90,7 @@ def _sweep(args: argparse.Namespace) -> int:
     from ..batch.sweep import run_sweep
 
     if args.workers is not None and args.workers < 1:
-        raise MechplanError(f"--jobs must be at least 1 (got {args.workers})")
+        raise MechplanError(Text("batchvars.jobs", {"value": str(args.workers)}))
     axes = [parse_vary(v) for v in args.vary]
     plot_axes = [k.strip() for k in args.plot_axes.split(",")] if args.plot_axes else None
     try:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ast
 import copy
+import functools
 import hashlib
 import importlib.util
 import math
@@ -258,12 +259,23 @@ class Kernel:
                 numba.set_parallel_chunksize(previous)
         else:
             status = self.function(phi, tolerance, block, xs, rel, bad, store)
-        for col, j, minus in self.deferred:
-            angle = block[:, col]
-            np.arctan2(angle, xs[:, j], out=angle)
-            if minus != 0.0:
-                angle -= minus
+        if n == 1 and self.deferred:    # one position (the API's common call): one ufunc call
+            cols, js, minus = self._deferred_arrays
+            row = block[0]
+            row[cols] = np.arctan2(row[cols], xs[0, js]) - minus
+        else:
+            for col, j, minus in self.deferred:
+                angle = block[:, col]
+                np.arctan2(angle, xs[:, j], out=angle)
+                if minus != 0.0:
+                    angle -= minus
         return block, rel, bad, int(status)
+
+    @functools.cached_property
+    def _deferred_arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The deferred angles as index arrays (columns, x columns, angles subtracted)."""
+        cols, js, minus = zip(*self.deferred, strict=True)
+        return np.array(cols), np.array(js), np.array(minus, dtype=float)
 
     def __call__(self, phi: np.ndarray) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray],
                                                    np.ndarray]:

@@ -87,6 +87,11 @@ def refuse_unbounded(c: Construction, ev: Evaluation, est: ErrorEstimate, target
             step = c[sid]
             k = int(np.argmax(bad))
             phi_deg = math.degrees(float(ev.phi[k]))
+            from .plans.force_friction import unsettled
+            locked = unsettled(c, ev, k)
+            if locked is not None:
+                raise SingularError(f"force plan at φ = {phi_deg:g}°: {locked}", step=step.label,
+                                    phi_deg=phi_deg, condition=math.inf, file=file)
             bound = f"{rel[k]:.1e}" if math.isfinite(rel[k]) else "no bound"
             raise SingularError(
                 f"{step.plan.value} plan, group {step.group or 'I'}: {step.label} cannot be "

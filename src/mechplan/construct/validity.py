@@ -8,6 +8,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..errors import SingularError, UnreachableError
+from ..i18n import Text, plan_word
 from .graph import Construction, Evaluation
 
 #: meets whose condition number 1/|sin| exceeds this are refused (≈ 8 significant digits kept)
@@ -87,9 +88,11 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             ]
             where = ", ".join(f"{a:.9f}°…{b:.9f}°" for a, b in intervals)
             raise UnreachableError(
-                f"group {step.group} cannot be assembled at φ = {phi_deg:g}°: point {step.label} "
-                f"misses by {ev.gaps[sid][k] * 1000:.6g} mm; the mechanism cannot close for φ in "
-                f"{where}", group=step.group, intervals_deg=intervals,
+                Text("errors.unreachable", {"group": step.group, "phi": f"{phi_deg:g}",
+                                            "point": step.label,
+                                            "gap": f"{ev.gaps[sid][k] * 1000:.6g}",
+                                            "where": where}),
+                group=step.group, intervals_deg=intervals,
                 gap=float(ev.gaps[sid][k]), file=file)
     for sid in c.ancestors(ev.values):
         if sid not in ev.sines:
@@ -102,8 +105,9 @@ def ensure_valid(c: Construction, ev: Evaluation, file: str | None = None,
             step = c[sid]
             k = int(np.argmax(bad))
             raise SingularError(
-                f"{step.plan.value} plan, group {step.group or 'I'}: the loci meeting at "
-                f"{step.label} are parallel or nearly so at φ = {math.degrees(ev.phi[k]):g}° "
-                f"(condition number {cond[k]:.3g} > {max_condition:.0e}; a toggle or change "
-                "point); choose another position", step=step.label,
+                Text("errors.singular", {"plan": plan_word(step.plan.value),
+                                         "group": step.group or "I", "point": step.label,
+                                         "phi": f"{math.degrees(ev.phi[k]):g}",
+                                         "condition": f"{cond[k]:.3g}",
+                                         "most": f"{max_condition:.0e}"}), step=step.label,
                 phi_deg=math.degrees(ev.phi[k]), condition=float(cond[k]), file=file)

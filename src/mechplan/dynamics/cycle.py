@@ -211,6 +211,11 @@ class MachineCycle:
                 v = self._velocity(ev, load.point, n)
                 p = dot(value, v)
                 lever += _lever(value, v) * factor
+            other = c.results.get(f"load_{j}_other")     # the far end of a spring or cylinder
+            if other is not None:
+                v2 = self._velocity(ev, load.other, n)
+                p = p + dot(ev[other], v2)
+                lever += _lever(ev[other], v2) * factor
             power += p * factor
         w1 = mech.drive.omega
         energy = np.zeros(n)

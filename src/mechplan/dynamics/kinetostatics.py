@@ -16,6 +16,7 @@ import numpy as np
 from ..construct.graph import Construction, Evaluation, reaction_key
 from ..geom.vec import Array, cross, norm, perp
 from ..model.mechanism import Mechanism, PairKind
+from .friction import FrictionAnalysis, analyse_friction
 from .reduced import link_omega, reduced_of
 
 
@@ -50,6 +51,7 @@ class ForceAnalysis:
     zhukovsky_moment: Array                     # (N,) from Zhukovsky's lever
     reduced_moment: Array                       # (N,)
     reduced_inertia: Array                      # (N,)
+    friction: FrictionAnalysis | None = None    # with [friction]: M_b⁰, η, the iteration
 
     @property
     def difference_percent(self) -> Array:
@@ -79,7 +81,7 @@ class ForceAnalysis:
             },
             "reduced": {"moment": _num(self.reduced_moment[i]),
                         "inertia": _num(self.reduced_inertia[i])},
-        }
+        } | ({} if self.friction is None else {"friction": self.friction.json(i)})
 
 
 def _num(x: Any) -> float | None:
@@ -126,7 +128,7 @@ def analyse_forces(c: Construction, ev: Evaluation, mech: Mechanism, loading: An
         phi=ev.phi, omega1=link_omega(c, ev, mech.drive.link), inertia=inertia,
         reactions=reactions, guide_reactions=guides,
         balancing_moment=ev[c.balancing_moment()], zhukovsky_moment=ev[c.zhukovsky_moment()],
-        reduced_moment=m_red, reduced_inertia=j_red)
+        reduced_moment=m_red, reduced_inertia=j_red, friction=analyse_friction(c, ev, mech))
 
 
 def balancing_force(c: Construction, ev: Evaluation, mech: Mechanism, point: str,

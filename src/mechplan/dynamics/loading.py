@@ -8,7 +8,7 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ..errors import SceneError
-from ..model.loads import Gravity, LoadKind, LoadSpec, MassSpec
+from ..model.loads import FrictionSpec, Gravity, LoadKind, LoadSpec, MassSpec, pair_id
 from ..model.mechanism import GROUND, Mechanism
 
 if TYPE_CHECKING:
@@ -26,11 +26,13 @@ class Loading:
     loads: tuple[LoadSpec, ...] = ()
     gravity: Gravity = field(default_factory=Gravity)
     file: str | None = None
+    friction: FrictionSpec | None = None
 
     @classmethod
     def from_scene(cls, scene: Scene) -> Loading:
         """Take the masses, loads and gravity of a parsed scene."""
-        return cls(dict(scene.masses), tuple(scene.loads), scene.gravity, scene.path)
+        return cls(dict(scene.masses), tuple(scene.loads), scene.gravity, scene.path,
+                   scene.friction)
 
     @property
     def is_empty(self) -> bool:
@@ -52,6 +54,9 @@ class Loading:
                 table=tuple((x, -f) for x, f in spec.table))
         flipped = []
         for spec in self.loads:
+            if spec.kind in (LoadKind.SPRING, LoadKind.CYLINDER) or spec.along is not None:
+                raise ValueError(f"load {spec.key or spec.point}: a {spec.kind.value} depends on "
+                                 "the position and cannot be reversed")
             if spec.kind is LoadKind.FORCE and spec.vector is None and spec.towards is not None:
                 # a force "towards a point" keeps its direction; reverse it by its sign instead
                 raise ValueError(f"load {spec.key or spec.point}: a force towards a point cannot "
@@ -59,7 +64,7 @@ class Loading:
             flipped.append(flip(spec))
         gravity = replace(self.gravity, direction=(-self.gravity.direction[0],
                                                    -self.gravity.direction[1]))
-        return Loading(self.masses, tuple(flipped), gravity, self.file)
+        return Loading(self.masses, tuple(flipped), gravity, self.file, self.friction)
 
     def check(self, mech: Mechanism) -> None:
         """Raise :class:`SceneError` if a mass or load does not fit the mechanism."""
@@ -80,6 +85,12 @@ class Loading:
                                  file=self.file, key=f"{key}.centre")
         for i, spec in enumerate(self.loads):
             self._check_load(mech, spec, spec.key or f"loads[{i}]")
+        if self.friction is not None:
+            known = {pair_id(p.a, p.b) for p in mech.pairs}
+            for name, _ in self.friction.pairs:
+                if name not in known:
+                    raise SceneError(f"there is no pair {name} (pairs: {', '.join(sorted(known))})",
+                                     file=self.file, key=f"{self.friction.key}.pairs.{name}")
 
     def _check_load(self, mech: Mechanism, spec: LoadSpec, key: str) -> None:
         def fail(message: str) -> SceneError:
@@ -90,13 +101,23 @@ class Loading:
             if spec.moment is None:
                 raise fail("a moment load needs its moment, e.g. moment = \"50 N*m\"")
             return
+        if spec.kind in (LoadKind.SPRING, LoadKind.CYLINDER):
+            olink = spec.other_link or GROUND
+            if olink not in mech.links or spec.other not in mech.links[olink].points:
+                raise fail(f"unknown point {spec.other!r} on link {olink}")
         if spec.point is None or spec.point not in mech.links[spec.link].points:
             raise fail(f"unknown point {spec.point!r} on link {spec.link} (it has "
                        f"{', '.join(mech.links[spec.link].points)})")
         points = {p for link in mech.links.values() for p in link.points}
         if spec.towards is not None and spec.towards not in points:
             raise fail(f"unknown point {spec.towards!r} to direct the force towards")
+        if spec.kind in (LoadKind.SPRING, LoadKind.CYLINDER):
+            return
         if spec.kind is LoadKind.FORCE:
+            if spec.along is not None:
+                if spec.magnitude is None or not all(q in points for q in spec.along):
+                    raise fail(f"a force along {spec.along} needs its magnitude and known points")
+                return
             if spec.vector is None and spec.magnitude is None:
                 raise fail("a force needs 'vector', or 'magnitude' with 'angle' or 'towards'")
             if spec.vector is None and spec.towards is None and spec.angle is None:

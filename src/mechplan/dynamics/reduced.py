@@ -90,6 +90,10 @@ def reduced_of(
         else:
             forces.append(ev[step])
             velocities.append(point_velocity(c, ev, mech, spec.point))
+        other = c.results.get(f"load_{j}_other")     # the far end of a spring or cylinder
+        if other is not None:
+            forces.append(ev[other])
+            velocities.append(point_velocity(c, ev, mech, spec.other))
     m_red = reduced_moment(forces, velocities, moments, omegas, omega1)
     massive = [ms for ms in loading.masses.values() if ms.mass > 0]
     turning = [ms for ms in loading.masses.values() if ms.inertia > 0]

@@ -105,6 +105,26 @@ class CamDrawing:
 
 
 @dataclass(frozen=True, slots=True)
+class FollowerDynamics:
+    """The follower's dynamics: its mass (or moment of inertia about the pivot), the closing
+    spring, an optional damper and a constant load, all along the follower's motion.
+
+    Translating: N, N/m, kg, N·s/m; oscillating: N·m, N·m/rad, kg·m², N·m·s/rad. ``stiffness`` or
+    ``preload`` None: chosen so that the follower stays on the cam up to ``speed_max``.
+    """
+
+    mass: float
+    stiffness: float | None = None
+    preload: float | None = None        # spring force at the near position (s = 0)
+    damping: float = 0.0
+    load: float = 0.0                   # constant force pressing the follower onto the cam
+    speed_max: float | None = None      # rad/s; None: the cam speed
+    margin: float = 0.0                 # least contact force kept at every speed up to speed_max
+    follower_stiffness: float | None = None   # the elastic single-mass model: k of the follower
+    damping_ratio: float = 0.0          # ζ of the elastic model
+
+
+@dataclass(frozen=True, slots=True)
 class CamSpec:
     """A cam scene."""
 
@@ -118,3 +138,4 @@ class CamSpec:
     limits: Limits
     drawing: CamDrawing = field(default_factory=CamDrawing)
     path: str = ""
+    dynamics: FollowerDynamics | None = None

@@ -71,6 +71,15 @@ class PlanetarySpec:
     addendum: float = 1.0            # h_a*
     given: tuple[int, ...] | None = None   # check this set (z1, z2[, z3, z4]) instead of the best
     input_speed: float = 1.0         # ω of the input link, rad/s
+    centre_distance: float | None = None   # working a_w of every mesh (shifted gears), m
+    centre_auto: bool = False        # a_w = the larger standard centre distance of the meshes
+    alpha: float = 0.3490658503988659      # pressure angle of the rack, rad
+    max_shift_sum: float = 2.0       # |x_Σ| of a mesh at the working a_w at most
+    mesh_efficiency: tuple[float, float] = (1.0, 1.0)   # η of mesh 1–2 and of the second mesh
+    output_torque: float | None = None     # load on the output link, N·m (torques and forces)
+    speeds: tuple[tuple[str, float], tuple[str, float]] | None = None
+    # a differential (W = 2): the two links turning as given; ``output`` is the third, ``input``
+    # the first given, ``fixed`` is "" (nothing is held)
 
 
 @dataclass(frozen=True)

@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import BinaryIO
 
 from mechplan.errors import DrawingError, os_reason
+from mechplan.i18n import Text
 
 
 @contextlib.contextmanager
@@ -21,15 +22,16 @@ def atomic_open(path: str | os.PathLike[str]) -> Iterator[BinaryIO]:
     target = Path(path)
     directory = target.parent if str(target.parent) else Path(".")
     if not directory.is_dir():
-        raise DrawingError(f"output directory must exist (got {str(directory)!r})", file=str(path))
+        raise DrawingError(Text("errors.atomic.no_folder", {"path": repr(str(directory))}),
+                           file=str(path))
     if target.is_dir():
-        raise DrawingError(f"the output file must not be a folder (got {str(target)!r})",
+        raise DrawingError(Text("errors.atomic.is_folder", {"path": repr(str(target))}),
                            file=str(path))
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
     except OSError as exc:
-        raise DrawingError(f"cannot write in {str(directory)!r} ({os_reason(exc)})",
-                           file=str(path)) from None
+        raise DrawingError(Text("errors.atomic.cannot_write_in", {
+            "path": repr(str(directory)), "reason": os_reason(exc)}), file=str(path)) from None
     try:
         fh = os.fdopen(fd, "wb")
         try:
@@ -40,7 +42,7 @@ def atomic_open(path: str | os.PathLike[str]) -> Iterator[BinaryIO]:
         except OSError as exc:
             if exc.errno is None:        # not from the operating system
                 raise
-            raise DrawingError(f"cannot write the file ({os_reason(exc)})",
+            raise DrawingError(Text("errors.atomic.cannot_write", {"reason": os_reason(exc)}),
                                file=str(path)) from None
         finally:
             # after a failed flush the data is still in the buffer: closing flushes it again and
@@ -58,7 +60,7 @@ def atomic_open(path: str | os.PathLike[str]) -> Iterator[BinaryIO]:
         try:
             os.replace(tmp, target)
         except OSError as exc:
-            raise DrawingError(f"cannot replace the file ({os_reason(exc)})",
+            raise DrawingError(Text("errors.atomic.cannot_replace", {"reason": os_reason(exc)}),
                                file=str(path)) from None
     except BaseException:
         with contextlib.suppress(FileNotFoundError):

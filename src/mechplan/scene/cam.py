@@ -13,6 +13,7 @@ from ..model.cam import (
     CamSpec,
     Contact,
     Follower,
+    FollowerDynamics,
     Law,
     Limits,
     Motion,
@@ -23,7 +24,7 @@ from .document import parse_toml
 from .reader import Table
 
 TOP_KEYS = ("kind", "title", "language", "description", "follower", "motion", "limits", "drawing",
-            "title_block")
+            "title_block", "dynamics")
 LAWS = tuple(law.value for law in Law if law not in (Law.TABLE_S, Law.TABLE_A)) + ("table",)
 KINDS = tuple(k.value for k in PhaseKind)
 FULL_TURN_TOL = math.radians(1e-6)
@@ -36,7 +37,8 @@ def parse_cam(text: str, file: str = "<scene>") -> CamSpec:
     follower = _follower(top)
     stroke, omega, sense, phases = _motion(top, follower)
     limits = _limits(top, follower)
-    return CamSpec(title=top.string("title", Path(file).stem) or "",
+    dyn = _dynamics(top, follower, omega)
+    return CamSpec(dynamics=dyn, title=top.string("title", Path(file).stem) or "",
                    language=top.string("language", "en", choices=LANGUAGES) or "en",
                    follower=follower, phases=phases, stroke=stroke, omega=omega, sense=sense,
                    limits=limits, drawing=_drawing(top), path=file)
@@ -64,10 +66,12 @@ def _follower(top: Table) -> Follower:
     arm = pivot = 0.0
     offset: float | None = 0.0
     if motion is Motion.OSCILLATING:
-        if contact is Contact.FLAT:
-            raise f.error("contact", "must be knife or roller for an oscillating follower (got "
-                          "'flat'); a flat-faced oscillating follower is not supported")
-        arm = f.quantity("arm", "length", required=True, positive=True) or 0.0
+        if contact is Contact.FLAT:           # the face passes through the pivot: no arm
+            if f.has("arm"):
+                raise f.error("arm", "is not used by a flat-faced oscillating follower (its face "
+                                     "passes through the pivot)")
+        else:
+            arm = f.quantity("arm", "length", required=True, positive=True) or 0.0
         pivot = f.quantity("pivot_distance", "length", required=True, positive=True) or 0.0
         if f.has("offset"):
             raise f.error("offset", "is only for a translating follower")
@@ -223,3 +227,40 @@ def _drawing(top: Table) -> CamDrawing:
                       standard=t.string("standard", "iso", choices=STANDARDS) or "iso",
                       ray_step=steps["ray_step"], table_step=steps["table_step"],
                       chord_error=chord, title_block=fields)
+
+
+def _dynamics(top: Table, follower: Follower, omega: float) -> FollowerDynamics | None:
+    """``[dynamics]``: the follower's mass (inertia), spring, damper, load and the top speed."""
+    t = top.table("dynamics")
+    if t is None:
+        return None
+    swinging = follower.motion is Motion.OSCILLATING
+    inertia = "inertia" if swinging else "mass"
+    other = "mass" if swinging else "inertia"
+    t.check_keys((inertia, "stiffness", "preload", "damping", "load", "speed_max", "margin",
+                  "follower_stiffness", "damping_ratio", other))
+    if t.has(other):
+        example = '"0.002 kg*m^2"' if swinging else '"0.5 kg"'
+        raise t.error(other, f"is for {'a translating' if swinging else 'an oscillating'} "
+                             f"follower; give {inertia} = {example}")
+    mass = t.quantity(inertia, "inertia" if swinging else "mass", required=True, positive=True)
+    force = "moment" if swinging else "force"
+    stiffness = t.quantity("stiffness", "moment" if swinging else "stiffness", nonnegative=True)
+    preload = t.quantity("preload", force, nonnegative=True)
+    damping = t.quantity("damping", "torsional_damping" if swinging else "damping", 0.0,
+                         nonnegative=True)
+    load = t.quantity("load", force, 0.0)
+    speed_max = t.quantity("speed_max", "angular_velocity", positive=True)
+    if speed_max is not None and speed_max < omega:
+        raise t.error("speed_max", f"must be at least the cam speed {omega:.6g} rad/s "
+                                   f"(got {t.raw('speed_max')!r})")
+    margin = t.quantity("margin", force, 0.0, nonnegative=True)
+    k_f = t.quantity("follower_stiffness", "moment" if swinging else "stiffness", positive=True)
+    zeta = t.quantity("damping_ratio", "dimensionless", 0.0, nonnegative=True) or 0.0
+    if not zeta < 1:
+        raise t.error("damping_ratio", f"must be below 1 (got {t.raw('damping_ratio')!r})")
+    if t.has("damping_ratio") and k_f is None:
+        raise t.error("damping_ratio", "is for the elastic follower: give follower_stiffness")
+    return FollowerDynamics(mass=mass or 0.0, stiffness=stiffness, preload=preload,
+                            damping=damping or 0.0, load=load or 0.0, speed_max=speed_max,
+                            margin=margin or 0.0, follower_stiffness=k_f, damping_ratio=zeta)

@@ -7,6 +7,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..userfiles import SCENE, FileKind
 from ..userfiles import read_text as read_user_text
 from . import toml
@@ -22,11 +23,14 @@ def read_text(path: str | Path, kind: FileKind = SCENE) -> str:
 
 def study_kind(path: str | Path) -> tuple[str, dict[str, Any]] | None:
     """The study a scene file asks for — its kind (``"dynamics"`` for a mechanism with
-    ``[dynamics]``) and its parsed data — or None for a plain linkage."""
+    ``[dynamics]``, ``"linkage"`` for one with textbook ``[answers]``) and its parsed data — or
+    None for a plain linkage."""
     data = parse_toml(read_text(path), str(path))
     kind = scene_kind(data, str(path))
     if kind == "mechanism":
-        return ("dynamics", data) if "dynamics" in data else None
+        if "dynamics" in data:
+            return "dynamics", data
+        return ("linkage", data) if "answers" in data else None
     return kind, data
 
 
@@ -36,7 +40,7 @@ def parse_toml(text: str, file: str) -> dict[str, Any]:
     try:
         return toml.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise SceneError(f"not valid TOML: {exc}", file=file) from None
+        raise SceneError(Text("errors.toml.invalid", {"reason": str(exc)}), file=file) from None
     except toml.TomlLimitError as exc:
         raise SceneError(str(exc), file=file, key=exc.key) from None
 
@@ -45,6 +49,6 @@ def scene_kind(data: dict[str, Any], file: str) -> str:
     """Return the ``kind`` of a parsed scene (default ``"mechanism"``)."""
     kind = data.get("kind", "mechanism")
     if kind not in SCENE_KINDS:
-        raise SceneError(f"kind must be one of {', '.join(SCENE_KINDS)} (got {kind!r})", file=file,
-                         key="kind")
+        raise SceneError(Text("errors.scene.kind", {"kinds": ", ".join(SCENE_KINDS),
+                                                    "value": repr(kind)}), file=file, key="kind")
     return str(kind)

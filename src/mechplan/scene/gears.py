@@ -48,18 +48,26 @@ def _module(t: Table, name: str = "module") -> float:
 def _planetary(t: Table) -> PlanetarySpec:
     t.check_keys(("scheme", "fixed", "input", "output", "ratio", "deviation", "planets", "module",
                   "modules", "teeth", "z_min", "ring_difference", "addendum", "given",
-                  "input_speed"))
+                  "input_speed", "centre_distance", "pressure_angle", "max_shift_sum",
+                  "mesh_efficiency", "output_torque", "speeds"))
     name = t.string("scheme", required=True)
     if name not in SCHEMES:
         raise t.error("scheme", f"must be one of {', '.join(SCHEMES)} (got {name!r})")
     scheme = Scheme(name)
     a, b, h = scheme.links
+    speeds = _speeds(t, scheme) if t.has("speeds") else None
+    if speeds is not None:
+        known = {link for link, _ in speeds}
+        free = next(n for n in scheme.links if n not in known)
+        t.data = {**t.data, "fixed": "", "input": speeds[0][0], "output": free, "ratio": 1.0}
     fixed, inp, out = (t.string(k, d) for k, d in (("fixed", b), ("input", a), ("output", h)))
+    if speeds is not None:
+        fixed, inp, out = "", speeds[0][0], free
     for key, value in (("fixed", fixed), ("input", inp), ("output", out)):
-        if value not in scheme.links:
+        if speeds is None and value not in scheme.links:
             raise t.error(key, f"must be one of the scheme's links {', '.join(scheme.links)} "
                                f"(got {value!r})")
-    if len({fixed, inp, out}) != 3:
+    if speeds is None and len({fixed, inp, out}) != 3:
         raise t.error("fixed", f"fixed, input and output must be three different links "
                                f"(got {fixed!r}, {inp!r}, {out!r})")
     ratio = t.quantity("ratio", "dimensionless", required=True)
@@ -68,7 +76,7 @@ def _planetary(t: Table) -> PlanetarySpec:
     if ratio == 0:
         raise t.error("ratio", "must not be zero (got 0)")
     deviation = t.quantity("deviation", "dimensionless", 0.02, nonnegative=True)
-    planets = _int(t, "planets", 3, lo=2)
+    planets = _int(t, "planets", 3, lo=1)
     if t.has("module") and t.has("modules"):
         raise t.error("modules", "give either module or modules, not both")
     if t.has("modules"):
@@ -90,7 +98,12 @@ def _planetary(t: Table) -> PlanetarySpec:
     assert planets is not None and deviation is not None and speed is not None
     if not speed != 0:
         raise t.error("input_speed", "must not be zero")
-    return PlanetarySpec(scheme=scheme, fixed=fixed, input=inp, output=out, ratio=ratio,
+    extra = _shifted_and_loaded(t)
+    if speeds is not None:
+        if given is None:
+            raise t.error("given", "is missing: a differential (speeds) needs its tooth numbers")
+        extra["speeds"] = speeds
+    return PlanetarySpec(**extra, scheme=scheme, fixed=fixed, input=inp, output=out, ratio=ratio,
                          deviation=deviation, planets=planets, modules=modules,
                          z_range=(teeth[0], teeth[1]),
                          z_min=_int(t, "z_min", 17, lo=1) or 17,
@@ -98,6 +111,54 @@ def _planetary(t: Table) -> PlanetarySpec:
                          addendum=t.quantity("addendum", "dimensionless", 1.0,
                                              positive=True) or 1.0,
                          given=given, input_speed=speed)
+
+
+def _speeds(t: Table, scheme: Scheme) -> tuple[tuple[str, float], tuple[str, float]]:
+    """``speeds = {"1" = "1 rad/s", "4" = "-0.5 rad/s"}``: two basic links of a differential."""
+    raw = t.raw("speeds")
+    if not isinstance(raw, dict) or len(raw) != 2:
+        raise t.error("speeds", f"must give two of the links {', '.join(scheme.links)} with their "
+                                f"angular velocities, e.g. {{\"1\" = \"1 rad/s\", \"4\" = "
+                                f"\"-0.5 rad/s\"}} (got {raw!r})")
+    for key in ("fixed", "input", "output", "ratio"):
+        if t.has(key):
+            raise t.error(key, "is not used by a differential (speeds): remove it")
+    out = []
+    for link, value in raw.items():
+        if link not in scheme.links:
+            raise t.error(f"speeds.{link}", f"must be one of the scheme's links "
+                                            f"{', '.join(scheme.links)}")
+        out.append((str(link), t.value_quantity(value, f"speeds.{link}", "angular_velocity")))
+    return out[0], out[1]
+
+
+def _shifted_and_loaded(t: Table) -> dict[str, Any]:
+    """centre_distance (a length or "auto"), pressure_angle, max_shift_sum, mesh_efficiency,
+    output_torque."""
+    out: dict[str, Any] = {}
+    if t.has("centre_distance"):
+        raw = t.raw("centre_distance")
+        if raw == "auto":
+            out["centre_auto"] = True
+        else:
+            a_w = t.quantity("centre_distance", "length", positive=True)
+            out["centre_distance"] = a_w
+    alpha = t.quantity("pressure_angle", "angle", 0.3490658503988659, positive=True)
+    if alpha is not None and not alpha < 0.7854:
+        raise t.error("pressure_angle", f"must be below 45 deg (got {t.data['pressure_angle']!r})")
+    out["alpha"] = alpha
+    out["max_shift_sum"] = t.quantity("max_shift_sum", "dimensionless", 2.0, nonnegative=True)
+    if t.has("mesh_efficiency"):
+        raw = t.raw("mesh_efficiency")
+        values = raw if isinstance(raw, list) else [raw, raw]
+        if (len(values) != 2 or any(isinstance(v, bool) or not isinstance(v, (int, float))
+                                    or not 0 < v <= 1 for v in values)):
+            raise t.error("mesh_efficiency", f"must be a number in (0, 1] or two of them [η12, "
+                                             f"η34] (got {raw!r})")
+        out["mesh_efficiency"] = (float(values[0]), float(values[1]))
+    if t.has("output_torque"):
+        out["output_torque"] = t.quantity("output_torque", "moment", nonnegative=True)
+    return out
 
 
 def _ordinary(t: Table) -> OrdinarySpec:

@@ -14,7 +14,7 @@ from ..model.structure import analyse
 from .centres import CENTRES, centres_of, plan_names
 from .document import parse_toml
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
-from .loads import gravity_of, loads_of, masses_of
+from .loads import friction_of, gravity_of, loads_of, masses_of
 from .reader import Table
 from .spec import (
     PLANS,
@@ -23,10 +23,11 @@ from .spec import (
     Positions,
     Scene,
 )
+from .textbook import parse_textbook
 
 TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions",
-            "analysis", "gravity", "loads", "drawing", "title_block", "description", "dynamics",
-            "centres")
+            "analysis", "gravity", "loads", "friction", "drawing", "title_block", "description",
+            "dynamics", "answers", "centres")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 #: scale-factor keys of [drawing.scales] and their dimensions: each plan's, and the moments'
@@ -77,7 +78,8 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
         mechanism=mech, positions=positions, plans=plans, points_of_interest=interest,
         masses=masses, loads=loads_of(top, links, guides, masses), gravity=gravity_of(top),
         drawing=_drawing(top, len(positions.angles) or positions.count),
-        assembly_phi=assembly_phi, centres=centres)
+        assembly_phi=assembly_phi, textbook=parse_textbook(top.data, file, mech),
+        friction=friction_of(top), centres=centres)
 
 
 def _ground(top: Table) -> tuple[dict[str, tuple[float, float]], dict[str, Guide]]:

@@ -5,7 +5,15 @@ from __future__ import annotations
 import itertools
 import math
 
-from ..model.loads import Gravity, LoadKind, LoadSpec, MassSpec
+from ..model.loads import (
+    FrictionSpec,
+    Gravity,
+    LoadKind,
+    LoadSpec,
+    MassSpec,
+    PairFriction,
+    pair_id,
+)
 from ..model.mechanism import GROUND, Guide, Link
 from .reader import Table
 
@@ -98,18 +106,25 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
                       "[\"0 N\", \"-800 N\"], or magnitude = \"800 N\" with angle = \"90 deg\" "
                       "or towards = \"A\" (see docs/reference.md)")
     t.check_keys(("type", "kind", "link", "point", "vector", "magnitude", "angle", "towards",
-                  "toward", "pressure", "bore", "moment", "against", "table", "name"))
-    kind_s = t.string("type", t.string("kind"), choices=tuple(k.value for k in LoadKind))
+                  "toward", "pressure", "bore", "moment", "against", "table", "name", "along",
+                  "between", "links", "stiffness", "free_length", "preload", "rod",
+                  "pressure_rod", "torque"))
+    kinds = (*(k.value for k in LoadKind), "torque")
+    kind_s = t.string("type", t.string("kind"), choices=kinds)
     if kind_s is None:
-        raise t.error("type", f"is missing; one of {', '.join(k.value for k in LoadKind)}")
-    kind = LoadKind(kind_s)
+        raise t.error("type", f"is missing; one of {', '.join(kinds)}")
+    kind = LoadKind.MOMENT if kind_s == "torque" else LoadKind(kind_s)
+    _only_own_keys(t, kind_s)
     link = t.string("link")
+    name = t.string("name")
     if kind is LoadKind.MOMENT:
         if link is None or link not in links or link == GROUND:
             raise t.error("link", f"a moment acts on a moving link; unknown link {link!r}")
-        return LoadSpec(
-            kind, link, moment=t.quantity("moment", "moment", required=True), key=t.path
-        )
+        key = "torque" if t.has("torque") else "moment"
+        return LoadSpec(kind, link, moment=t.quantity(key, "moment", required=True), key=t.path,
+                        name=name)
+    if kind in (LoadKind.SPRING, LoadKind.CYLINDER):
+        return _two_point(t, kind, links, name)
     point = t.string("point", required=True)
     assert point is not None
     owner = _point_link(t, links, point, link)
@@ -119,6 +134,19 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     if towards is not None and towards == point:
         raise t.error("towards", f"a load at {point} cannot point towards {point} itself; name "
                       "another point on its line of action")
+    if kind is LoadKind.FORCE and t.has("along"):
+        along = t.raw("along")
+        if (not isinstance(along, list) or len(along) != 2
+                or not all(isinstance(x, str) for x in along) or along[0] == along[1]):
+            raise t.error("along", 'expected two different points, e.g. along = ["B", "C"]: the '
+                          "force acts along B→C turned by 'angle'")
+        for q in along:
+            if not any(q in lk.points for lk in links.values()):
+                raise t.error("along", f"unknown point {q!r}")
+        mag = t.quantity("magnitude", "force", required=True)
+        return LoadSpec(kind, owner, point, magnitude=mag,
+                        angle=t.quantity("angle", "angle", 0.0), along=(along[0], along[1]),
+                        key=t.path, name=name)
     if kind is LoadKind.FORCE:
         if t.has("vector"):
             v = t.raw("vector")
@@ -172,3 +200,110 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
                       f"(720°, a four-stroke cycle; got {math.degrees(xs[-1] - xs[0]):g}°)")
     return LoadSpec(kind, owner, point, towards=towards, against=against, table=tuple(parsed),
                     key=t.path)
+
+
+#: keys that belong to some load types only (the older types keep their own checks)
+_OWN_KEYS = {"along": ("force",), "torque": ("torque", "moment"),
+             **{k: ("spring", "cylinder") for k in ("between", "links")},
+             **{k: ("spring",) for k in ("stiffness", "free_length", "preload")},
+             **{k: ("cylinder",) for k in ("rod", "pressure_rod")}}
+
+
+def _only_own_keys(t: Table, kind: str) -> None:
+    for key, kinds in _OWN_KEYS.items():
+        if t.has(key) and kind not in kinds:
+            raise t.error(key, f"is not a key of a load of type {kind!r} (it belongs to "
+                          f"{' and '.join(kinds)}; see docs/forces.md)")
+    if kind in ("spring", "cylinder"):
+        for key in ("point", "link", "vector", "magnitude", "angle", "towards", "toward",
+                    "moment", "table", "against") + (("pressure", "bore") if kind == "spring"
+                                                      else ()):
+            if t.has(key):
+                raise t.error(key, f"is not a key of a {kind}; it acts between two points: "
+                              'between = ["D", "E"] (see docs/forces.md)')
+
+
+def _end_link(t: Table, links: dict[str, Link], point: str, link: str | None, j: int) -> str:
+    """The link carrying one end of a spring or cylinder (``"0"``: the frame)."""
+    if link is not None:
+        if link not in links:
+            raise t.error(f"links[{j}]", f"unknown link {link!r}")
+        if point not in links[link].points:
+            raise t.error(f"links[{j}]", f"point {point!r} is not on link {link}")
+        return link
+    owners = [k for k, lk in links.items() if point in lk.points]
+    if not owners:
+        raise t.error(f"between[{j}]", f"unknown point {point!r}")
+    moving = [k for k in owners if k != GROUND]
+    if len(moving) > 1:
+        raise t.error("links", f"point {point!r} is on links {', '.join(moving)}; say which one "
+                      'carries the end, e.g. links = ["2", "0"]')
+    return moving[0] if moving else GROUND
+
+
+def _two_point(t: Table, kind: LoadKind, links: dict[str, Link], name: str | None) -> LoadSpec:
+    """A spring or a double-acting cylinder between two points."""
+    between = t.raw("between", required=True)
+    if (not isinstance(between, list) or len(between) != 2
+            or not all(isinstance(x, str) for x in between) or between[0] == between[1]):
+        raise t.error("between", 'expected two different points, e.g. between = ["D", "E"]')
+    given = t.raw("links", [None, None])
+    if not isinstance(given, list) or len(given) != 2:
+        raise t.error("links", 'expected the two links carrying the ends, e.g. links = ["2", "0"]')
+    ends = [_end_link(t, links, between[j], None if given[j] is None else str(given[j]), j)
+            for j in range(2)]
+    if ends[0] == ends[1]:
+        raise t.error("between", f"both ends are on link {ends[0]}; a {kind.value} joins two "
+                      "different links (or a link and the frame)")
+    if GROUND == ends[0]:
+        between, ends = between[::-1], ends[::-1]
+    common = {"link": ends[0], "point": between[0], "other": between[1],
+              "other_link": ends[1], "key": t.path, "name": name}
+    if kind is LoadKind.SPRING:
+        return LoadSpec(kind, stiffness=t.quantity("stiffness", "stiffness", required=True,
+                                                   nonnegative=True),
+                        free_length=t.quantity("free_length", "length", required=True,
+                                               nonnegative=True),
+                        preload=t.quantity("preload", "force", 0.0), **common)  # type: ignore[arg-type]
+    bore = t.quantity("bore", "length", required=True, positive=True)
+    rod = t.quantity("rod", "length", 0.0, nonnegative=True) or 0.0
+    if bore is not None and rod >= bore:
+        raise t.error("rod", f"the rod diameter must be smaller than the bore (got {rod * 1e3:g} "
+                      f"mm against {bore * 1e3:g} mm)")
+    return LoadSpec(kind, bore=bore, rod=rod, pressure=t.quantity("pressure", "pressure", 0.0),
+                    pressure_rod=t.quantity("pressure_rod", "pressure", 0.0),
+                    **common)  # type: ignore[arg-type]
+
+
+def friction_of(top: Table) -> FrictionSpec | None:
+    """The ``[friction]`` table: default coefficient and pin radius, per-pair values."""
+    t = top.table("friction")
+    if t is None:
+        return None
+    t.check_keys(("f", "pin_radius", "pairs", "tolerance", "max_iterations", "diagram"))
+    f = t.quantity("f", "dimensionless", 0.0, nonnegative=True) or 0.0
+    radius = t.quantity("pin_radius", "length", 0.0, nonnegative=True) or 0.0
+    diagram = t.raw("diagram", False)
+    if not isinstance(diagram, bool):
+        raise t.error("diagram", "expected true or false")
+    iterations = t.raw("max_iterations", 50)
+    if (not isinstance(iterations, int) or isinstance(iterations, bool)
+            or not 1 <= iterations <= 1000):
+        raise t.error("max_iterations",
+                      f"expected a whole number from 1 to 1000 (got {iterations!r})")
+    tol = t.quantity("tolerance", "dimensionless", 1e-10, positive=True) or 1e-10
+    pairs: list[tuple[str, PairFriction]] = []
+    pt = t.table("pairs")
+    if pt is not None:
+        for name in pt.data:
+            parts = str(name).split("-")
+            if len(parts) != 2 or not all(parts):
+                raise pt.error(name, 'a pair is named by its two links, e.g. "1-2" or "0-3"')
+            entry = pt.table(name) if isinstance(pt.raw(name), dict) else None
+            if entry is None:
+                raise pt.error(name, 'expected { f = 0.12, radius = "15 mm" }')
+            entry.check_keys(("f", "radius"))
+            pairs.append((pair_id(*parts), PairFriction(
+                entry.quantity("f", "dimensionless", f, nonnegative=True) or 0.0,
+                entry.quantity("radius", "length", radius, nonnegative=True) or 0.0)))
+    return FrictionSpec(PairFriction(f, radius), tuple(pairs), tol, iterations, diagram, t.path)

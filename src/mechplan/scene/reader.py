@@ -6,6 +6,7 @@ import difflib
 from typing import Any
 
 from ..errors import SceneError, shown
+from ..i18n import Text
 from ..units import parse_quantity
 
 #: largest magnitude (SI) a scene may give per dimension: beyond, squares overflow or lose all
@@ -26,7 +27,8 @@ class Table:
 
     def __init__(self, data: Any, path: str, file: str) -> None:
         if not isinstance(data, dict):
-            raise SceneError(f"expected a table (got {type(data).__name__} {shown(data)})",
+            raise SceneError(Text("errors.table.expected",
+                                  {"value": f"{type(data).__name__} {shown(data)}"}),
                              file=file, key=path or None)
         self.data = data
         self.path = path
@@ -36,7 +38,7 @@ class Table:
         """Return the full key path of a child key."""
         return f"{self.path}.{name}" if self.path else name
 
-    def error(self, name: str | None, message: str) -> SceneError:
+    def error(self, name: str | None, message: str | Text) -> SceneError:
         """Return a SceneError located at a child key (or at this table)."""
         return SceneError(
             message, file=self.file, key=self.key(name) if name else (self.path or None)
@@ -50,7 +52,7 @@ class Table:
         """Return a raw value."""
         if name not in self.data:
             if required:
-                raise self.error(name, "is missing")
+                raise self.error(name, Text("errors.key.missing"))
             return default
         return self.data[name]
 
@@ -58,7 +60,7 @@ class Table:
         """Return a child table."""
         if name not in self.data:
             if required:
-                raise self.error(name, "table is missing")
+                raise self.error(name, Text("errors.key.table_missing"))
             return None
         return Table(self.data[name], self.key(name), self.file)
 
@@ -69,10 +71,11 @@ class Table:
         if value is None:
             return None
         if not isinstance(value, (str, int)) or isinstance(value, bool):
-            raise self.error(name, f"expected text (got {shown(value)})")
+            raise self.error(name, Text("errors.key.expected_text", {"value": shown(value)}))
         value = str(value)
         if choices and value not in choices:
-            raise self.error(name, f"must be one of {', '.join(choices)} (got {shown(value)})")
+            raise self.error(name, Text("errors.key.one_of", {"choices": ", ".join(choices),
+                                                               "value": shown(value)}))
         return value
 
     def quantity(self, name: str, dimension: str, default: float | None = None,
@@ -81,17 +84,19 @@ class Table:
         """Return a quantity in SI units."""
         if name not in self.data:
             if required:
-                raise self.error(name, f"is missing (a {dimension.replace('_', ' ')})")
+                raise self.error(name, Text("errors.key.missing_quantity",
+                                            {"noun": Text(f"errors.noun.{dimension}")}))
             return default
         value = parse_quantity(self.data[name], dimension, file=self.file, key=self.key(name))
         limit = LIMITS.get(dimension, DEFAULT_LIMIT)
         if abs(value) > limit:
-            raise self.error(name, f"must be at most {_limit(dimension)} (got "
-                             f"{shown(self.data[name])}); numbers this large cannot be constructed")
+            raise self.error(name, Text("errors.key.too_large", {
+                "limit": _limit(dimension), "value": shown(self.data[name])}))
         if positive and not value > 0:
-            raise self.error(name, f"must be positive (got {shown(self.data[name])})")
+            raise self.error(name, Text("errors.key.positive", {"value": shown(self.data[name])}))
         if nonnegative and value < 0:
-            raise self.error(name, f"must not be negative (got {shown(self.data[name])})")
+            raise self.error(name, Text("errors.key.not_negative",
+                                        {"value": shown(self.data[name])}))
         return value
 
     def value_quantity(self, value: Any, name: str, dimension: str) -> float:
@@ -99,8 +104,8 @@ class Table:
         out = parse_quantity(value, dimension, file=self.file, key=self.key(name))
         limit = LIMITS.get(dimension, DEFAULT_LIMIT)
         if abs(out) > limit:
-            raise self.error(name, f"must be at most {_limit(dimension)} (got {shown(value)}); "
-                             "numbers this large cannot be constructed")
+            raise self.error(name, Text("errors.key.too_large", {"limit": _limit(dimension),
+                                                                  "value": shown(value)}))
         return out
 
     def check_keys(self, allowed: tuple[str, ...]) -> None:
@@ -108,9 +113,6 @@ class Table:
         for name in self.data:
             if name not in allowed:
                 close = difflib.get_close_matches(name, allowed, n=1)
-                hint = (
-                    f"did you mean '{close[0]}'?"
-                    if close
-                    else f"expected one of {', '.join(allowed)}"
-                )
-                raise self.error(name, f"unknown key; {hint}")
+                raise self.error(name, Text("errors.key.unknown_close", {"close": close[0]})
+                                 if close else
+                                 Text("errors.key.unknown", {"allowed": ", ".join(allowed)}))

@@ -4,9 +4,10 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..model.loads import Gravity, LoadSpec, MassSpec
+from ..model.loads import FrictionSpec, Gravity, LoadSpec, MassSpec
 from ..model.mechanism import Mechanism
 from ..model.plans import Plan
+from ..model.textbook import TextbookSpec
 from .centres import CentresSpec
 
 #: the plans a scene may ask for, by name
@@ -60,3 +61,5 @@ class Scene:
     assembly_phi: float = 0.0
     #: the [centres] table: centrodes, acceleration poles, inflection circles of chosen links
     centres: CentresSpec | None = None
+    textbook: TextbookSpec | None = None     # the [answers] section: textbook answers asked
+    friction: FrictionSpec | None = None      # [friction]: friction in the pairs (docs/forces.md)

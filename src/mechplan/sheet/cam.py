@@ -173,15 +173,24 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
     if g.motion is Motion.OSCILLATING:
         prims.append(Circle((0.0, 0.0), g.pivot / mu, Role.CHAIN))
     pitch = d.dense.pitch[::STEP]
+    steps: dict[int, str] = {}        # the live page's replay: which ray draws what
     if d.spec.follower.contact is not Contact.FLAT:
+        steps[len(prims)] = "profile"
         prims.append(Polyline(tuple(mm(pitch)), Role.DASHED, closed=True))
+    steps[len(prims)] = "profile"
     prims.append(Polyline(tuple(mm(d.profile_points)), Role.OUTLINE, closed=True))
     rays = d.rays
     a, b = follower_positions(g, rays, length)
     for i in range(rays.phi.size):
+        first = len(prims)
         p = rays.pitch[i] / mu
         prims.append(Line((0.0, 0.0), (float(p[0]), float(p[1])), Role.THIN))
-        if d.spec.follower.contact is Contact.FLAT:
+        if d.spec.follower.contact is Contact.FLAT and g.motion is Motion.OSCILLATING:
+            lo, hi = d.face or (0.0, g.pivot)             # the face from the turned pivot
+            t = (b[i] - a[i]) / np.hypot(*(b[i] - a[i]))
+            prims.append(Line(tuple(((a[i] + lo * t) / mu).tolist()),
+                              tuple(((a[i] + hi * t) / mu).tolist()), Role.THIN))
+        elif d.spec.follower.contact is Contact.FLAT:
             lo, hi = d.face or (-0.01, 0.01)
             if g.sense < 0:                  # the s′ side is mirrored with the cam
                 lo, hi = -hi, -lo
@@ -197,6 +206,7 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
         lbl = p * (1 + 6.0 / r) if r > 0 else p
         prims.append(Text((float(lbl[0]), float(lbl[1])), str(i), 2.5, halign=HAlign.CENTER,
                           valign=VAlign.MIDDLE))
+        steps.update(dict.fromkeys(range(first, len(prims)), f"ray-{i}"))
     top = max(y for p in prims if isinstance(p, Circle) for y in (p.center[1] + p.radius,))
     left, _, right, _ = Panel("", prims).bounds()
     y = top + 3.0
@@ -209,7 +219,7 @@ def _inversion(d: CamDesign, lang: str, scale: float) -> tuple[Panel, float]:
         block = text_block((left, y), text, height, right - left, upward=True)
         prims.extend(block)
         y = block[0].position[1] + gap
-    return Panel("cam-inversion", list(prims)), mu
+    return Panel("cam-inversion", list(prims), steps=steps), mu
 
 
 def _results(keep: list[str], lang: str) -> Panel:
@@ -234,6 +244,14 @@ def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[li
         ss1 = _ss1_diagram(d, lang, scale)
         if ss1 is not None:
             panels.append(ss1)
+        from .cam_dynamics import dynamics_panels
+        from .cam_zone import zone_panel
+
+        zone = zone_panel(d, lang, scale)
+        if zone is not None:
+            panels.append(zone)
+
+        panels.extend(dynamics_panels(d, lang, scale, DIAGRAM_W, DIAGRAM_H))
         return panels + [_table(*table, lang), _results(summary, lang)], mu
 
     fields = {"title": spec.title}

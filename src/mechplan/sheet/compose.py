@@ -16,6 +16,7 @@ from ..i18n import message, scientific, significant
 from ..model.mechanism import GROUND, PairKind
 from ..model.plans import Plan
 from ..solve import Solution
+from .friction_diagram import efficiency_diagram
 from .kinematics_sheet import (
     balancing_diagram,
     grid,
@@ -36,6 +37,7 @@ from .scales import (
     tables_apart,
     velocity_positions,
 )
+from .textbook import textbook_panels
 
 GAP = 8.0          # mm between panels
 packing_area = drawing_area      # the drawing area clear of the centring marks and title block
@@ -131,7 +133,7 @@ def _kinematics_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room)
             ap = _marked(vector_plan(c, sol.ev, k, Plan.ACCELERATION, mu[Plan.ACCELERATION],
                                      lang, title), sol, k, Plan.ACCELERATION, lang)
             panels += split_tables(ap, title, tables_apart(c, Plan.ACCELERATION, r), r)
-    panels += kinematic_diagrams(sol, lang, r)
+    panels += kinematic_diagrams(sol, lang, r) + textbook_panels(sol, lang)
     if "centres" in sol.plans and chosen:      # after the plans: they keep their places
         from .centres import centres_panels
 
@@ -158,7 +160,8 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
         if lever is not None:
             panels.append(lever)
     mb = balancing_diagram(sol, lang, r)
-    return panels + ([mb] if mb is not None else [])
+    eta = efficiency_diagram(sol, lang, r)
+    return panels + [d for d in (mb, eta) if d is not None]
 
 
 def crank_degrees(sol: Solution, k: int) -> float:

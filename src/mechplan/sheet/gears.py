@@ -8,7 +8,7 @@ import math
 from collections.abc import Sequence
 
 from ..drafting.primitives import HAlign, Sheet
-from ..i18n import message, number, unit
+from ..i18n import message, number, significant, unit
 from ..synthesis.gears.involute import TIP_MIN, Pair
 from ..synthesis.gears.solve import GearSolution, PlanetaryResult
 from ..synthesis.gears.train import Conditions
@@ -43,10 +43,18 @@ def condition_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, bool
              (f"i_{names[0]}{names[-1]}^h = {n(res.willis_i, 4)};  u_{s.input}{s.output} = "
              f"{n(c.ratio, 4)};  u* = {n(s.ratio, 4)} ± {n(s.deviation * 100, 1)} %;  "
              f"Δu = {n(c.ratio_error * 100, 2)} %"), c.ratio_ok)]
+    if s.speeds is not None:          # a differential: Willis' i only
+        rows = [(message("gears.cond.ratio", lang),
+                 f"i_{names[0]}{names[-1]}^h = {n(res.willis_i, 6)}", True)]
     second = f"{names[-2]}–{names[-1]}"
-    rows.append((message("gears.cond.coaxial", lang),
-                 (f"a_w({names[0]}–{names[1]}) = {_mm(c.a_w[0], lang)} {mm};  a_w({second}) = "
-                 f"{_mm(c.a_w[1], lang)} {mm}"), c.coaxial))
+    coax = (f"a({names[0]}–{names[1]}) = {_mm(c.a_w[0], lang)} {mm};  a({second}) = "
+            f"{_mm(c.a_w[1], lang)} {mm}")
+    if c.working is not None and any(abs(x) > 1e-12 for x in c.shift_sums):
+        coax += (f";  a_w = {_mm(c.working, lang)} {mm}:  x_Σ = {n(c.shift_sums[0], 4)}, "
+                 f"{n(c.shift_sums[1], 4)} (|x_Σ| ≤ {n(s.max_shift_sum, 2)})")
+    elif c.working is None and s.centre_distance is not None:
+        coax += f";  a_w = {_mm(s.centre_distance, lang)} {mm}: |x_Σ| > {n(s.max_shift_sum, 2)}"
+    rows.append((message("gears.cond.coaxial", lang), coax, c.coaxial))
     k = s.planets
     if c.assembly_p is not None:
         total = c.assembly_value * (1 + k * c.assembly_p)
@@ -55,9 +63,10 @@ def condition_rows(res: PlanetaryResult, lang: str) -> list[tuple[str, str, bool
     else:
         text = f"z{names[0]}·u/k = {n(c.assembly_value, 4)};  p: —"
     rows.append((message("gears.cond.assembly", lang), text, c.assembly_p is not None))
-    rows.append((message("gears.cond.neighbour", lang),
-                 (f"2a_w·sin(π/{k}) = {_mm(c.neighbour_span, lang)} {mm} > d_a = "
-                 f"{_mm(c.planet_tip, lang)} {mm}"), c.neighbour_ok))
+    if k > 1:
+        rows.append((message("gears.cond.neighbour", lang),
+                     (f"2a_w·sin(π/{k}) = {_mm(c.neighbour_span, lang)} {mm} > d_a = "
+                      f"{_mm(c.planet_tip, lang)} {mm}"), c.neighbour_ok))
     rows.append((message("gears.cond.undercut", lang), f"min z = {c.z_smallest} ≥ {s.z_min}",
                  c.undercut_ok))
     if c.ring_difference is not None:
@@ -70,7 +79,7 @@ def omega_rows(res: PlanetaryResult, lang: str,
                ordinary: dict[str, float] | None = None) -> list[tuple[str, str, str]]:
     """(link, ω, ω − ω_h) of every gear and the carrier, then the ordinary pair (ω only)."""
     p = res.plan
-    rows = [(name, number(p.omega[name], 3, lang), number(p.relative[name], 3, lang))
+    rows = [(name, significant(p.omega[name], 6, lang), significant(p.relative[name], 6, lang))
             for name in p.names]
     return rows + [(name, number(w, 3, lang), "—") for name, w in (ordinary or {}).items()]
 
@@ -130,16 +139,24 @@ def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, langu
 
 def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:
     """The panels of a gear scene, drawings ``scale`` times their usual size."""
-    from .gears_drawing import mesh_panel, plan_panels
+    from .gearcam import shifted_lines
+    from .gears_drawing import mesh_panel, pair_56_panel, plan_panels
 
     panels: list[Panel] = []
     res = sol.planetary
     if res is not None:
-        panels.extend(plan_panels(res, lang, scale))
+        if res.plan is not None:
+            panels.extend(plan_panels(res, lang, scale, sol.ordinary_plan))
+            if sol.ordinary_plan is not None:
+                panels.append(pair_56_panel(sol.ordinary_plan, res.spec.output, lang, scale))
         head = (message("gears.col.condition", lang), message("gears.col.numbers", lang),
                 message("gears.col.verdict", lang))
         rows = [(a, b, verdict(ok, lang)) for a, b, ok in condition_rows(res, lang)]
         notes = [set_text(res.chosen.z)]
+        if res.plan is None:
+            notes.append(message("gearcam.no_plan", lang))
+        else:
+            notes.extend(shifted_lines(res, lang))
         if sol.ordinary is not None and sol.total_ratio is not None:
             o = sol.ordinary
             notes.append(message("gears.report.ordinary", lang, z5=o.z5, z6=o.z6,
@@ -154,10 +171,11 @@ def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:
                                       message("gears.sheet.others", lang, count=res.found),
                                       ("z", f"D, {unit('mm', lang)}", "u"), others))
         per_s = unit("1/s", lang)
-        panels.append(table_panel("omega", message("gears.report.omega", lang),
-                                  (message("gears.col.link", lang), f"ω, {per_s}",
-                                   f"ω − ω_h, {per_s}"),
-                                  omega_rows(res, lang, sol.ordinary_omega)))
+        if res.plan is not None:
+            panels.append(table_panel("omega", message("gears.report.omega", lang),
+                                      (message("gears.col.link", lang), f"ω, {per_s}",
+                                       f"ω − ω_h, {per_s}"),
+                                      omega_rows(res, lang, sol.ordinary_omega)))
     if sol.pair is not None:
         panels.append(mesh_panel(sol.pair, lang, scale))
         panels.append(table_panel("pair", message("gears.sheet.pair", lang),

@@ -19,11 +19,12 @@ from ..drafting.primitives import (
     Text,
     VAlign,
 )
-from ..i18n import message, number, scale_factor
+from ..i18n import message, number, scale_factor, significant, unit
 from ..synthesis.gears.involute import Pair, flank, tooth_outline
-from ..synthesis.gears.solve import PlanetaryResult
+from ..synthesis.gears.solve import OrdinaryPlan, PlanetaryResult
 from .diagram import Axis, Curve, diagram_panel
 from .fit import drawing_right, text_block
+from .layout import moved
 from .panels import Panel
 
 TEXT_H = 2.5
@@ -50,6 +51,8 @@ def _scheme(res: PlanetaryResult, mu_l: float, sx: float = 1.0) -> list[Primitiv
         x = xs[n]
         central = n in (names[0], names[-1])
         y0, y1 = (0.0, y[n]) if central else (aw - y[n], aw + y[n])
+        if not central and not two:          # a shifted single row's planet: A to B
+            y0, y1 = p.pitch_points["A"] / mu_l, p.pitch_points["B"] / mu_l
         prims.append(Line((x, y0), (x, y1), Role.OUTLINE))
         ring = central and ((n == names[0] and int1) or (n == names[-1] and int2))
         cap = 3.0 if ring else 1.5
@@ -78,13 +81,53 @@ def _scheme(res: PlanetaryResult, mu_l: float, sx: float = 1.0) -> list[Primitiv
     return prims
 
 
-def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Panel]:
+def pair_56_panel(o: OrdinaryPlan, output: str, lang: str, scale: float = 1.0) -> Panel:
+    """The pair 5–6: its kinematic diagram (gear 5 on the planetary output shaft ``output``) beside
+    its linear velocity plan, on a radius scale of its own."""
+    size = 0.45 * PLAN_MM * scale
+    mu_l = round_scale((o.a56 + o.r6) / size)
+    curves = [Curve(np.array([v0, v1]), np.array([y0, y1]), Role.OUTLINE, n)
+              for n, ((y0, v0), (y1, v1)) in o.lines.items()]
+    v_max = max(abs(v) for line in o.lines.values() for (_, v) in line) or 1.0
+    dia = diagram_panel("velocity56", message("gearcam.sheet.pair56", lang, shaft=output),
+                        curves, Axis("v", "m/s", size, round_scale(v_max / size)),
+                        Axis("r", "m", size, mu_l, mu_symbol="μl"), lang)
+    x0 = min(0.0, min(c.x.min() for c in curves) / dia.mu_x - 10.0)
+    dia.panel.primitives.extend(moved(q, x0, 0.0) for q in _pair_56(o, mu_l))
+    return dia.panel
+
+
+def _pair_56(o: OrdinaryPlan, mu_l: float) -> list[Primitive]:
+    """Gear 5 on the output shaft, gear 6 on its parallel shaft, pitch point C."""
+    x = -10.0
+    sx = 0.3
+    r5, a56, r6 = o.r5 / mu_l, o.a56 / mu_l, o.r6 / mu_l
+    prims: list[Primitive] = [
+        Line((x, 0.0), (x, r5), Role.OUTLINE), Line((x - 1.5, r5), (x + 1.5, r5), Role.OUTLINE),
+        Line((x + 1.0, a56 - r6), (x + 1.0, a56 + r6), Role.OUTLINE),
+        Line((x - 0.5, a56 - r6), (x + 2.5, a56 - r6), Role.OUTLINE),
+        Line((x - 0.5, a56 + r6), (x + 2.5, a56 + r6), Role.OUTLINE),
+        Line((x - 6.0, a56), (x + 8.0, a56), Role.CHAIN),
+        Line((x - 5.0, a56 + 0.6), (x + 1.0, a56 + 0.6), Role.OUTLINE),
+        Text((x - 4.0, r5 / 2), "5", TEXT_H, halign=HAlign.RIGHT),
+        Text((x + 3.5, a56 + r6 / 2), "6", TEXT_H),
+        Line((-95.0 * sx, r5), (0.0, r5), Role.DASHED),
+        Text((-95.0 * sx - 3.0, r5), "C", TEXT_H, halign=HAlign.RIGHT, valign=VAlign.MIDDLE),
+    ]
+    return prims
+
+
+def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0,
+                ordinary: OrdinaryPlan | None = None) -> list[Panel]:
     """The diagram with the linear velocity plan, and the angular velocity plan (their size
-    ``scale`` times the usual)."""
+    ``scale`` times the usual); with ``ordinary``, the pair 5–6 in a panel of its own and on the
+    angular velocity plan."""
     size = PLAN_MM * scale
     p = res.plan
+    assert p is not None
     r_max = max(p.radius[n] + (p.a_w if n not in (p.names[0], p.names[-2]) else 0.0)
                 for n in p.names[:-1])
+
     mu_l = round_scale(r_max / size)
     curves = []
     for n in p.names:
@@ -94,18 +137,33 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
         label = f"{n},{p.names[2]}" if n == p.names[1] and res.spec.scheme.two_row else n
         curves.append(Curve(np.array([v0, v1]), np.array([y0, y1]), Role.OUTLINE, label))
     v_all = [v for n in p.names for (_, v) in p.lines[n]]
+    for j, part in enumerate(res.partials or ()):     # a differential: each input alone, thin
+        for n in part.names:
+            if n in part.names[2:-2]:
+                continue
+            (y0, v0), (y1, v1) = part.lines[n]
+            curves.append(Curve(np.array([v0, v1]), np.array([y0, y1]), Role.THIN,
+                                f"{n}{chr(0x2032) * (j + 1)}"))
+            v_all += [v0, v1]
     mu_v = round_scale(max(abs(v) for v in v_all) / size) if any(v_all) else 1.0
+    if res.partials is not None and any(v_all):       # a differential runs both ways: the span
+        mu_v = round_scale((max(0.0, *v_all) - min(0.0, *v_all)) / size)
     dia = diagram_panel("velocity", message("gears.sheet.velocity", lang), curves,
                         Axis("v", "m/s", size, mu_v), Axis("r", "m", size, mu_l, mu_symbol="μl"),
                         lang)
     sx = min(1.0, max(scale, 0.5))           # the diagram narrows on a small sheet
-    dia.panel.primitives.extend(_scheme(res, mu_l, sx))
-    dia.panel.primitives.extend(text_block((-95.0 * sx, -8.0), message("gears.sheet.scheme", lang),
-                                           TITLE_H, 95.0 * sx - 4.0, valign=VAlign.TOP,
-                                           measure_min=0.0))     # clear of the scale factors
+    # the diagram stands left of the plan's leftmost velocity (a differential's run both ways)
+    x0 = min(0.0, min(v_all) / mu_v - 10.0) if min(v_all) < 0 else 0.0
+    scheme = [*_scheme(res, mu_l, sx),
+              *text_block((-95.0 * sx, -8.0), message("gears.sheet.scheme", lang),
+                          TITLE_H, 95.0 * sx - 4.0, valign=VAlign.TOP,
+                          measure_min=0.0)]     # clear of the scale factors
+    dia.panel.primitives.extend(moved(q, x0, 0.0) for q in scheme)
     # angular velocity plan: rays from the pole P parallel to the plan's lines cut the reference
     # line
     w = {n: p.omega[n] for n in p.names}
+    if ordinary is not None:
+        w |= {"5": ordinary.omega5, "6": ordinary.omega6}
     w_max = max(abs(v) for v in w.values()) or 1.0
     H = max(5.0, math.floor(size * mu_v / (mu_l * w_max) / 5.0) * 5.0)
     mu_w = mu_v / (mu_l * H)
@@ -126,9 +184,12 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0) -> list[Pan
     x_in, x_out = xs[res.spec.input], xs[res.spec.output]
     read = x_in / x_out if x_out else math.inf
     width = drawing_right(prims) - (lo - 10.0)
-    prims.extend(text_block((lo - 10.0, -H - 8.0),
-                            f"u_{res.spec.input}{res.spec.output} = {number(x_in, 2, lang)} / "
-                            f"{number(x_out, 2, lang)} = {number(read, 4, lang)}", TEXT_H, width))
+    read_text = (f"u_{res.spec.input}{res.spec.output} = {significant(x_in, 4, lang)} / "
+                 f"{significant(x_out, 4, lang)} = {number(read, 4, lang)}")
+    if res.spec.speeds is not None:
+        read_text = (f"ω_{res.spec.output} = {significant(x_out, 4, lang)} · μω = "
+                     f"{significant(w[res.spec.output], 6, lang)} {unit('1/s', lang)}")
+    prims.extend(text_block((lo - 10.0, -H - 8.0), read_text, TEXT_H, width))
     prims.extend(text_block((lo - 10.0, 14.0), message("gears.sheet.angular", lang,
                                                        H=number(H, 0, lang),
                                                        mu=scale_factor(mu_w, lang)), TITLE_H, width,

@@ -64,6 +64,14 @@ class Panel:
     primitives: list[Primitive | Table] = field(default_factory=list)
     plan: Plan | None = None        # the plan a panel of plans shows (None: a diagram, a table)
     refit: Callable[[float, float], list[Panel]] | None = None
+    #: index in ``primitives`` → id of the construction step that draws it (the replay's order)
+    steps: dict[int, str] = field(default_factory=dict)
+
+    def tag(self, step_id: str, *prims: Primitive) -> None:
+        """Append primitives drawn by one construction step."""
+        for p in prims:
+            self.steps[len(self.primitives)] = step_id
+            self.primitives.append(p)
 
     def bounds(self) -> tuple[float, float, float, float]:
         """(x0, y0, x1, y1) of everything drawn."""
@@ -184,7 +192,8 @@ def vector_plan(
         end = pts[meet.id]
         t_end = (end[0] - through[0]) * u[0] + (end[1] - through[1]) * u[1]
         t0, t1 = min(0.0, t_end) - 8.0, max(0.0, t_end) + 8.0
-        prims.append(
+        panel.tag(
+            s.id,
             Line(
                 (through[0] + t0 * u[0], through[1] + t0 * u[1]),
                 (through[0] + t1 * u[0], through[1] + t1 * u[1]),
@@ -196,7 +205,7 @@ def vector_plan(
         if spec(s.op).draw is Drawn.IMAGE_TRIANGLE and s.id in pts:
             for src in (s.input("a"), s.input("b")):
                 if src in pts and math.dist(pts[src], pts[s.id]) > 1e-6:
-                    prims.append(Line(pts[src], pts[s.id], ROLES[spec(s.op).line]))
+                    panel.tag(s.id, Line(pts[src], pts[s.id], ROLES[spec(s.op).line]))
     # vectors: absolute ones thick, components and relative ones thin
     for seg in segments:
         if seg.start not in pts or seg.end not in pts:
@@ -205,7 +214,8 @@ def vector_plan(
         if math.dist(a, b) < 0.5:
             continue
         thick = seg.kind in (SegmentKind.ABSOLUTE, SegmentKind.DRIVE, SegmentKind.REACTION)
-        prims.append(
+        panel.tag(
+            seg.end,
             Arrow(
                 a,
                 b,
@@ -216,6 +226,7 @@ def vector_plan(
         )
     # points closer than SAME_POINT_MM are one point on paper, with one label "c≡d"
     seen: list[tuple[tuple[float, float], list[str]]] = []
+    first: list[str] = []           # the step that draws each labelled point first
     for s in steps:
         if s.id not in pts or s.kind is not Kind.POINT:
             continue
@@ -223,13 +234,17 @@ def vector_plan(
                     None)
         if here is None:
             seen.append((pts[s.id], here := []))
+            first.append(s.id)
         here.append(pole_label(s.label, lang))
-        prims.append(Circle(pts[s.id], 0.5, Role.OUTLINE))
+        panel.tag(s.id, Circle(pts[s.id], 0.5, Role.OUTLINE))
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Arrow))], LABEL_H,
                          [xy for xy, _ in seen])
-    for anchor, labels in seen:
-        prims.append(placer.place(anchor, "≡".join(dict.fromkeys(labels))))
-    prims.extend(placer.leaders)
+    owners: list[str] = []          # the step of each leader, in the order the placer drew them
+    for (anchor, labels), sid in zip(seen, first, strict=True):
+        panel.tag(sid, placer.place(anchor, "≡".join(dict.fromkeys(labels))))
+        owners += [sid] * (len(placer.leaders) - len(owners))
+    for sid, leader in zip(owners, placer.leaders, strict=False):
+        panel.tag(sid, leader)
     _title_and_tables(panel, c, ev, k, plan, mu, lang, title, segments, group)
     return panel
 

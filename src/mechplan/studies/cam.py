@@ -12,6 +12,7 @@ import numpy as np
 from ..i18n import message, number
 from ..model.cam import Contact, Law, Motion, PhaseKind
 from ..sheet.cam import table_rows, units_of
+from ..sheet.cam_dynamics import dynamics_lines
 from ..synthesis.cam import CamDesign, design, profile_table
 from .answers import Keys, Own, Written
 
@@ -35,6 +36,8 @@ def follower_text(d: CamDesign, lang: str) -> str:
              if f.motion is Motion.TRANSLATING
              else message("cam.arm", lang, l=number(f.arm * 1e3, 1, lang),
                           a=number(f.pivot_distance * 1e3, 1, lang)))
+    if f.motion is Motion.OSCILLATING and f.contact is Contact.FLAT:
+        where = message("gearcam.cam.pivot_face", lang, a=number(f.pivot_distance * 1e3, 1, lang))
     return message("cam.report.follower", lang,
                    motion=message(f"cam.motion.{f.motion.value}", lang),
                    contact=contact, where=where)
@@ -102,7 +105,12 @@ class CamStudy:
                 u0=u.u0, u1=u.u1, u2=u.u2))
         lines.append("")
         lim = spec.limits
-        if spec.follower.contact is Contact.FLAT:
+        swinging_flat = translating is False and spec.follower.contact is Contact.FLAT
+        if swinging_flat:
+            lines.append(message("gearcam.cam.r0_convex_osc", lang,
+                                 rho=number(lim.min_curvature * 1e3, 2, lang),
+                                 r0=number(d.r0_min * 1e3, 3, lang)))
+        elif spec.follower.contact is Contact.FLAT:
             lines.append(message("cam.report.r0_convex", lang,
                                  rho=number(lim.min_curvature * 1e3, 2, lang),
                                  r0=number(d.r0_min * 1e3, 3, lang)))
@@ -133,13 +141,15 @@ class CamStudy:
                              pw=number(deg(d.rho_profile_min.phi), 2, lang)))
         if d.face is not None:
             lo, hi = d.face
-            lines.append(message("cam.report.face", lang, lo=number(lo * 1e3, 2, lang),
-                                 hi=number(hi * 1e3, 2, lang), w=number((hi - lo) * 1e3, 2, lang)))
+            lines.append(message("gearcam.cam.face_osc" if swinging_flat else "cam.report.face",
+                                 lang, lo=number(lo * 1e3, 2, lang), hi=number(hi * 1e3, 2, lang),
+                                 w=number((hi - lo) * 1e3, 2, lang)))
         lines.append(message("cam.report.profile", lang, n=len(d.profile_points),
                              err=number(d.chord_error * 1e6, 3, lang),
                              tol=number(spec.drawing.chord_error * 1e6, 3, lang)))
         for msgid, values in d.notes:
             lines.append(message(msgid, lang, **{k: number(v, 2, lang) for k, v in values.items()}))
+        lines.extend(dynamics_lines(d, lang))
         lines.append("")
         lines.append(message("cam.report.table", lang,
                              step=number(deg(spec.drawing.table_step), 1, lang)))
@@ -196,6 +206,7 @@ class CamStudy:
             "profile": {"chord_error": d.chord_error, "bound": spec.drawing.chord_error,
                         "points": d.profile_points.tolist()},
             "notes": [k for k, _ in d.notes],
+            "dynamics": _dynamics_json(d),
         }
 
     def answers(self) -> Keys:
@@ -247,6 +258,33 @@ class CamStudy:
 
         pts = [(float(x) * 1e3, float(y) * 1e3) for x, y in self.design.profile_points]
         return [write_profile_dxf(pts, Path(out_dir) / f"{name}-profile.dxf")]
+
+
+def _dynamics_json(d: CamDesign) -> dict[str, Any] | None:
+    """The follower's dynamics in SI (N or N·m along the follower, rad/s, N·m on the cam)."""
+    r = d.dynamics
+    if r is None:
+        return None
+    step = max(1, r.phi.size // 360)
+    return {"stiffness": r.stiffness, "preload": r.preload, "spring_max": r.spring_max,
+            "spring_chosen": r.chosen, "speed": r.speed, "speed_max": r.speed_max,
+            "jump_speed": r.jump_speed if math.isfinite(r.jump_speed) else None,
+            "jump_phi": r.jump_phi if math.isfinite(r.jump_phi) else None,
+            "contact_min": list(r.contact_min),
+            "torque_max": [r.torque_extremes[0], r.torque_extremes[1]],
+            "torque_min": [r.torque_extremes[2], r.torque_extremes[3]],
+            "torque_mean": r.torque_mean,
+            "elastic": None if r.elastic is None else {
+                "natural_frequency": r.elastic.natural_frequency,
+                "damping_ratio": r.elastic.damping_ratio, "error_max": r.elastic.error_max,
+                "residual": [{"dwell": k, "phi": p, "amplitude": a}
+                             for k, p, a in r.elastic.residual],
+                "residual_first_turn": [{"dwell": k, "phi": p, "amplitude": a}
+                                        for k, p, a in r.elastic.first_residual]},
+            "cycle": {"phi": r.phi[::step].tolist(), "contact": r.contact[::step].tolist(),
+                      "contact_speed_max": r.contact_max_speed[::step].tolist(),
+                      "normal": r.normal[::step].tolist() if r.normal is not None else None,
+                      "torque": r.torque[::step].tolist()}}
 
 
 def solve_cam(text: str, file: str) -> CamStudy:

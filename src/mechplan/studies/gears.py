@@ -19,12 +19,17 @@ if TYPE_CHECKING:
 
 
 def _conditions_json(c: Conditions) -> dict[str, Any]:
-    return {"z": list(c.z), "ratio": c.ratio, "ratio_error": c.ratio_error, "ratio_ok": c.ratio_ok,
+    finite = math.isfinite(c.ratio)          # a differential asks for no ratio
+    return {"z": list(c.z), "ratio": c.ratio if finite else None,
+            "ratio_error": c.ratio_error if finite else None, "ratio_ok": c.ratio_ok,
             "a_w_m": list(c.a_w), "coaxial": c.coaxial, "assembly_z1u_over_k": c.assembly_value,
             "assembly_p": c.assembly_p, "z_smallest": c.z_smallest, "undercut_ok": c.undercut_ok,
             "ring_difference": c.ring_difference, "ring_ok": c.ring_ok,
-            "neighbour_span_m": c.neighbour_span, "planet_tip_diameter_m": c.planet_tip,
-            "neighbour_ok": c.neighbour_ok, "size_m": c.size, "valid": c.valid}
+            "neighbour_span_m": c.neighbour_span if math.isfinite(c.neighbour_span) else None,
+            "planet_tip_diameter_m": c.planet_tip,
+            "neighbour_ok": c.neighbour_ok, "size_m": c.size, "valid": c.valid,
+            "working_centre_distance_m": c.working,
+            "shift_sums": [x if math.isfinite(x) else None for x in c.shift_sums]}
 
 
 @dataclass(frozen=True)
@@ -34,6 +39,12 @@ class GearStudy:
     solution: GearSolution
 
     def report(self, language: str | None = None) -> str:
+        from ..sheet.gearcam import (
+            differential_head,
+            shifted_lines,
+            superposition_lines,
+            torque_lines,
+        )
         from ..sheet.gears import condition_rows, omega_rows, pair_lines, set_text, verdict
 
         sol = self.solution
@@ -43,12 +54,15 @@ class GearStudy:
         res = sol.planetary
         if res is not None:
             s = res.spec
-            out.append(message("gears.report.scheme", lang,
-                               scheme=message(f"gears.scheme.{s.scheme.value}", lang),
-                               fixed=s.fixed, input=s.input, output=s.output, k=s.planets))
-            out.append(message("gears.report.target", lang, io=f"{s.input}{s.output}",
-                               u=n(s.ratio), dev=n(s.deviation * 100, 1), lo=s.z_range[0],
-                               hi=s.z_range[1], zmin=s.z_min))
+            if s.speeds is not None:
+                out.extend(differential_head(res, lang))
+            else:
+                out.append(message("gears.report.scheme", lang,
+                                   scheme=message(f"gears.scheme.{s.scheme.value}", lang),
+                                   fixed=s.fixed, input=s.input, output=s.output, k=s.planets))
+                out.append(message("gears.report.target", lang, io=f"{s.input}{s.output}",
+                                   u=n(s.ratio), dev=n(s.deviation * 100, 1), lo=s.z_range[0],
+                                   hi=s.z_range[1], zmin=s.z_min))
             if s.given is not None:
                 out.append(message("gears.report.given", lang, z=set_text(res.chosen.z),
                                    verdict=verdict(res.chosen.valid, lang)))
@@ -63,14 +77,22 @@ class GearStudy:
                            f"{unit('mm', lang)};  u = {n(c.ratio)}")
             if not res.others:
                 out.append("  " + message("gears.report.none_other", lang))
-            out.append(message("gears.report.omega", lang))
-            per_s = unit("1/s", lang)
-            for link, w, rel in omega_rows(res, lang):
-                out.append(f"  {link}:  ω = {w} {per_s};  ω − ω_h = {rel} {per_s}")
-            for link, w5 in sol.ordinary_omega.items():
-                out.append(f"  {link}:  ω = {number(w5, 3, lang)} {per_s}")
-            out.append(message("gears.report.plan_ratio", lang, plan=n(res.plan.ratio, 6),
-                               willis=n(res.chosen.ratio, 6)))
+            if res.plan is None:
+                out.append(message("gearcam.no_plan", lang))
+            else:
+                out.extend(shifted_lines(res, lang))
+                out.append(message("gears.report.omega", lang))
+                per_s = unit("1/s", lang)
+                for link, w, rel in omega_rows(res, lang):
+                    out.append(f"  {link}:  ω = {w} {per_s};  ω − ω_h = {rel} {per_s}")
+                for link, w5 in sol.ordinary_omega.items():
+                    out.append(f"  {link}:  ω = {number(w5, 3, lang)} {per_s}")
+                if s.speeds is None:
+                    out.append(message("gears.report.plan_ratio", lang,
+                                       plan=n(res.plan.ratio, 6), willis=n(res.chosen.ratio, 6)))
+                else:
+                    out.extend(superposition_lines(res, lang))
+                out.extend(torque_lines(res, lang))
         o = sol.ordinary
         if o is not None:
             if sol.total_ratio is not None:
@@ -96,12 +118,15 @@ class GearStudy:
         if res is not None and res.spec.given is not None and not res.chosen.valid:
             failed += [f"{name}: {numbers} — {verdict(ok, lang)}"
                        for name, numbers, ok in condition_rows(res, lang) if not ok]
+        flags = []
+        if res is not None and res.plan is None:
+            flags.append(message("gearcam.no_plan", lang))
         if sol.pair is not None:
             p = sol.pair
             lines = pair_lines(p, lang)[-5:-1]       # pointed tip and interference, per gear
             bad = [flag for pair in zip(p.pointed, p.interference) for flag in pair]
             failed += [line for line, fails in zip(lines, bad, strict=True) if fails]
-        return [message("gears.warning.failed", lang, check=c) for c in failed]
+        return flags + [message("gears.warning.failed", lang, check=c) for c in failed]
 
     def to_json(self) -> dict[str, Any]:
         sol = self.solution
@@ -115,9 +140,20 @@ class GearStudy:
                 "willis_i": res.willis_i, "chosen": _conditions_json(res.chosen),
                 "found": res.found, "survivors_by_condition": res.counts,
                 "others": [_conditions_json(c) for c in res.others],
-                "omega_rad_s": res.plan.omega, "omega_relative_rad_s": res.plan.relative,
-                "ratio_from_velocity_plan": res.plan.ratio,
-            }
+                "omega_rad_s": res.plan.omega if res.plan else None,
+                "omega_relative_rad_s": res.plan.relative if res.plan else None,
+                "ratio_from_velocity_plan": (res.plan.ratio if res.plan
+                                             and math.isfinite(res.plan.ratio) else None),
+                "working_centre_distance_m": res.chosen.working,
+                }
+            from ..synthesis.gears.forces import train_forces
+            if res.partials is not None and s.speeds is not None:
+                doc["planetary"]["differential"] = {
+                    "speeds_rad_s": dict(s.speeds),
+                    "omega_each_input_alone_rad_s": [q.omega for q in res.partials]}
+            forces = train_forces(res)
+            if forces is not None:
+                doc["planetary"]["torques"] = forces.to_json()
         if sol.ordinary is not None:
             o = sol.ordinary
             doc["ordinary"] = {"z5": o.z5, "z6": o.z6, "ratio": o.ratio,
@@ -146,6 +182,10 @@ class GearStudy:
             k.scalars |= {f"z{i}": float(z) for i, z in enumerate(c.z, start=1)}
             k.scalars |= {"k": float(sol.planetary.spec.planets), "u": c.ratio, "a_w": c.a_w[0],
                           "assembly": c.assembly_value}
+            if sol.planetary.spec.speeds is not None:     # a differential asks for no ratio
+                del k.scalars["u"]
+            if c.working is not None:
+                k.scalars["a_w"] = c.working
         if sol.pair is not None:
             p = sol.pair
             spec = p.spec
@@ -189,12 +229,18 @@ def _own_gears(k: Keys, name: str, phi: float | None, w: Written) -> Own | None:
     z = np.array([round(v) for v in zs if v is not None])
     used = tuple(f"z{i}" for i in range(1, n + 1))
     if name == "u":
+        if spec.speeds is not None:
+            return None
         i = train.willis_i(spec.scheme, z)
         u = float(train.ratio_from_i(i, spec.scheme, spec.fixed, spec.input, spec.output))
         sign = "−" if train.willis_sign(spec.scheme) < 0 else ""
         i_text = "z3/z1" if len(z) == 3 else "z2·z4/(z1·z3)"
         return u, f"Willis: i^h = {sign}{i_text}", used
     if name == "a_w":
+        if train.shifted(spec):             # both meshes at the working centre distance
+            a_w = train.working_distance(spec, tuple(int(v) for v in z))
+            if a_w is not None:
+                return a_w, "a_w (shifted gears)", used
         return float(train.centre_distance(spec, z)[0]), "a_w = m(z₁ ± z₂)/2", used
     if name == "assembly":
         a, b = train.assembly_terms(spec, z)

@@ -93,7 +93,12 @@ class MechanismStudy:
         return doc
 
     def answers(self) -> Keys:
-        """The exact answers of the machine's dynamics (the scene must have ``[dynamics]``)."""
+        """The exact answers of the machine's dynamics (a scene with ``[dynamics]``), else the
+        linkage's textbook answers (strokes, K, γ, sliding and rubbing velocities …)."""
+        if self.dynamics is None:
+            from .linkage import linkage_answers
+
+            return linkage_answers(self.solution)
         from .machine import dynamics_answers
 
         return dynamics_answers(self.to_json()["dynamics"])

@@ -259,7 +259,7 @@ def units_ascii(text: str) -> str:
 # -- answers of the dynamics, engine, cam and gear studies ---------------------------------------
 #: the catalogue's answer tables of each study kind
 ANSWER_TABLES = {"dynamics": ("dynamics",), "engine": ("engine",), "cam": ("cam",),
-                 "gears": ("gears", "gears_pair")}
+                 "gears": ("gears", "gears_pair"), "linkage": ("linkage",)}
 
 
 @dataclass(frozen=True, slots=True)
@@ -288,7 +288,7 @@ def answer_names() -> dict[str, dict[str, list[AnswerSpec]]]:
     """table → compact spelling → the quantities it may mean."""
     data = catalogue()["answers"]
     out: dict[str, dict[str, list[AnswerSpec]]] = {}
-    for table in ("dynamics", "engine", "cam", "gears", "gears_pair"):
+    for table in ("dynamics", "engine", "cam", "gears", "gears_pair", "linkage"):
         names: dict[str, list[AnswerSpec]] = {}
         for canonical, e in data[table].items():
             spec = AnswerSpec(canonical, e["dimension"], float(e.get("pct", 0)), e.get("floor"),

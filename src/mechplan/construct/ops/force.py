@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -64,6 +65,17 @@ def force_load(step: Step, *operands: Array) -> Result:
         return np.broadcast_to(vec, x["at"].shape).copy(), None, None
     if mode == "towards":
         return float(step.param("magnitude")) * unit(x["target"] - x["at"]), None, None
+    if mode == "along":
+        u = unit(x["to"] - x["start"])
+        c, s = math.cos(step.param("turn")), math.sin(step.param("turn"))
+        turned = np.stack((c * u[..., 0] - s * u[..., 1], s * u[..., 0] + c * u[..., 1]), axis=-1)
+        return float(step.param("magnitude")) * turned, None, None
+    if mode == "pull":
+        # tension T = t0 + k·(L − L0) pulls ``at`` towards ``other`` (T < 0 pushes it away)
+        r = x["other"] - x["at"]
+        tension = float(step.param("t0")) + float(step.param("k")) * (
+            norm(r) - float(step.param("l0")))
+        return tension[..., None] * unit(r), None, None
     if mode == "guide":
         value = np.full(x["at"].shape[:-1], float(step.param("value")))
     elif mode == "table_phi":
@@ -77,6 +89,7 @@ def force_load(step: Step, *operands: Array) -> Result:
 
 
 _LOAD_OPERANDS = {"vector": ("at",), "towards": ("at", "target"),
+                  "along": ("at", "start", "to"), "pull": ("at", "other"),
                   "guide": ("at", "towards", "angle"),
                   "table_phi": ("crank", "at", "towards", "angle"),
                   "table_s": ("at", "origin", "towards", "angle")}
@@ -253,3 +266,109 @@ __all__ = ["BALANCING_MOMENT", "DIFFERENCE", "FORCE_CLOSE", "FORCE_INERTIA", "FO
            "FORCE_LOAD", "FORCE_REVERSE", "FORCE_SUM", "GUIDE_OFFSET", "INERTIA_OFFSET",
            "LINE_OF_ACTION", "MOMENT_ARM_TANGENTIAL", "MOMENT_CLOSE", "MOMENT_INERTIA",
            "MOMENT_SUM", "ZHUKOVSKY"]
+
+
+# -- friction in the pairs ------------------------------------------------------------------------
+@dataclass(eq=False)
+class FrictionLoop:
+    """What the friction iteration needs of its construction (held by the ``FRICTION_ITERATE``
+    step): the construction, the reaction results whose magnitudes set the friction loads, the
+    balancing moment's result, the tolerance and the bound on passes.
+    """
+
+    construction: object
+    reactions: tuple[str, ...]
+    balancing: str = "M_b"
+    tolerance: float = 1e-10
+    max_iterations: int = 50
+    #: steps built on the friction loads (by the number of steps when found): the rest is
+    #: evaluated once and kept for every next pass
+    _downstream: tuple[int, frozenset[str]] = (-1, frozenset())
+
+    def downstream(self, start: str) -> frozenset[str]:
+        """The steps that depend on ``start`` (kinematics do not: they are kept between passes)."""
+        c: Any = self.construction
+        if self._downstream[0] != len(c.steps):
+            found = {start}
+            for sid, st in c.steps.items():
+                if any(i in found for i in st.inputs):
+                    found.add(sid)
+            self._downstream = (len(c.steps), frozenset(found))
+        return self._downstream[1]
+
+
+def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
+    """Friction by the courses' iteration; the value is the friction-free balancing moment M_b⁰.
+
+    Pass 0 has no friction (the friction loads are zero); each next pass takes the friction
+    moments f·r·|R| and forces f·|N| from the reactions of the pass before, until the reactions
+    change by less than ``tolerance`` of the largest one. The reactions' magnitudes (N, P), the
+    passes made and the last relative change (N,) are left in ``shared`` for the friction steps.
+    """
+    loop: FrictionLoop = step.param("loop")
+    c: Any = loop.construction          # a Construction (not imported: it imports the ops)
+    phi = c.drive.scene(theta)
+    n, p = theta.shape[0], len(loop.reactions)
+    basis = np.zeros((n, p))
+    residual = np.full(n, np.inf)
+    mb0 = np.zeros(n)
+    passes = 0
+    downstream = loop.downstream(step.id)
+    kept: dict[str, Array] = {}
+    kept_shared: dict = {}
+    for passes in range(1, loop.max_iterations + 1):
+        inner = c.evaluate(phi, overrides={step.id: mb0})
+        inner.values.update(kept)
+        inner.shared.update(kept_shared)
+        inner.shared[("friction", step.id)] = {"basis": basis}
+        new = (np.stack([norm(inner[c.results[r]]) for r in loop.reactions], axis=-1)
+               if p else basis)
+        if passes == 1:
+            mb0 = np.array(inner[c.results[loop.balancing]])
+            kept = {k: v for k, v in inner.values.items() if k not in downstream}
+            kept_shared = {k: v for k, v in inner.shared.items() if k[0] != "friction"}
+        scale = np.maximum(np.max(new, axis=-1, initial=0.0), 1e-300)
+        residual = np.max(np.abs(new - basis), axis=-1, initial=0.0) / scale
+        basis = new
+        if passes > 1 and not np.any(residual > loop.tolerance):
+            break
+    # a position where the passes did not settle (self-locking: the reactions grow without
+    # bound) gets no friction loads at all: NaN, so nothing built on them passes for a result
+    basis = np.where((residual <= loop.tolerance)[:, None], basis, np.nan)
+    shared[("friction", step.id)] = {"basis": basis, "passes": passes, "residual": residual,
+                                     "tolerance": loop.tolerance}
+    return mb0, None, None
+
+
+def _basis(step: Step, shared: dict) -> Array:
+    """|R| of this pair from the pass before (zeros on the friction-free pass)."""
+    out: Array = shared[("friction", step.input("loop"))]["basis"][:, step.param("index")]
+    return out
+
+
+def friction_couple(step: Step, loop: Array, *omegas: Array, shared: dict) -> Result:
+    """M_f = −ρ·|R|·sign(ω_j − ω_i) on link j of a revolute pair (ρ = f·r, the friction circle).
+
+    Inputs after the loop: ω_j, then ω_i (absent when link i is the frame).
+    """
+    w_rel = omegas[0] - (omegas[1] if len(omegas) > 1 else 0.0)
+    return -float(step.param("rho")) * _basis(step, shared) * np.sign(w_rel), None, None
+
+
+def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *carrier: Array,
+                   shared: dict) -> Result:
+    """F_f = −f·|N|·sign(v_rel·u)·u on a slider; v_rel = its point's velocity minus the velocity
+    of the carrier's point under it (``carrier``: that image; absent for a frame guide)."""
+    u = direction(angle)
+    v_rel = velocity - carrier[0] if carrier else velocity
+    sense = np.sign(dot(v_rel, u))
+    return (-float(step.param("f")) * _basis(step, shared) * sense)[..., None] * u, None, None
+
+
+FRICTION_ITERATE = OpSpec("friction_iterate", friction_iterate, "protocol.op.friction_iterate",
+                          grade=Grade.VALUE)
+FRICTION_COUPLE = OpSpec("friction_couple", friction_couple, "protocol.op.friction_couple",
+                         grade=Grade.VALUE)
+FRICTION_FORCE = OpSpec("friction_force", friction_force, "protocol.op.friction_force",
+                        Drawn.VECTOR, Line.OUTLINE, Grade.VALUE)
+__all__ += ["FRICTION_COUPLE", "FRICTION_FORCE", "FRICTION_ITERATE"]

@@ -32,6 +32,7 @@ from ..step import Kind, Role
 from ..terms import UNKNOWN, Row
 from ..terms import parallel as parallel_to
 from ..terms import perp as perp_to
+from .force_friction import friction_loads
 from .force_loads import (
     LoadingLike,
     State,
@@ -54,6 +55,7 @@ def emit(b: Builder) -> None:
     st = State(b, loading, {k: [] for k in b.mech.moving})
     inertia_and_weights(st)
     external_loads(st)
+    friction_loads(st)
     for g in reversed(b.structure.groups):
         {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
          GroupKind.RPP: _rpp}[g.kind](st, g)
@@ -374,7 +376,7 @@ def _lever(st: State) -> None:
     layout, labels = "", []
     for link, t in st.applied:
         if t.force is not None:
-            inputs += [b.vel[t.where], t.force]
+            inputs += [t.velocity or b.vel[t.where], t.force]
             layout += "F"
             labels.append(t.label)
         if t.couple is not None:

@@ -49,6 +49,7 @@ class Term:
     direction: Direction = GIVEN
     magnitude: str = "✓"
     where: str = ""               # name of the point of application (for its velocity image)
+    velocity: str | None = None   # its velocity image's step when ``where`` is not enough
 
 
 @dataclass
@@ -153,19 +154,27 @@ def external_loads(st: State) -> None:
         kind = spec.kind.value
         sid = f"force.load.{j}"
         if kind == "moment":
-            m = st.add(sid, Op.CONSTANT, (), Kind.SCALAR, Role.GIVEN, f"M{link}", group,
-                       subject=(link,), value=float(spec.moment))
+            m = st.add(sid, Op.CONSTANT, (), Kind.SCALAR, Role.GIVEN, spec.name or f"M{link}",
+                       group, subject=(link,), value=float(spec.moment))
             b.result(f"load_{j}", m)
-            add_load(st, link, Term(f"M{link}", couple=m))
+            add_load(st, link, Term(spec.name or f"M{link}", couple=m))
+            continue
+        if kind in ("spring", "cylinder"):
+            _two_point_load(st, j, spec, seen)
             continue
         point = spec.point
-        n = seen.get(point, 0)
-        seen[point] = n + 1
-        label = f"F_{point}" + "′" * n
+        label = _label(seen, point, spec.name)
         p = b.pos[point]
         direction_text, magnitude_text = GIVEN, "✓"
         if kind == "force":
-            if spec.vector is not None:
+            if spec.along is not None:
+                start, to = spec.along
+                f = st.add(sid, Op.FORCE_LOAD, (p, b.pos[start], b.pos[to]), Kind.POINT,
+                           Role.GIVEN, label, group, subject=(point, start, to), mode="along",
+                           magnitude=float(spec.magnitude), turn=float(spec.angle or 0.0))
+                direction_text = (from_to(start, to) if not spec.angle
+                                  else Direction(Relation.SYMBOL, f"∠({start}{to}, F)"))
+            elif spec.vector is not None:
                 f = st.add(sid, Op.FORCE_LOAD, (p,), Kind.POINT, Role.GIVEN, label, group,
                            subject=(point,), mode="vector", vector=tuple(spec.vector))
             elif spec.towards is not None:
@@ -209,6 +218,36 @@ def external_loads(st: State) -> None:
         b.result(f"load_{j}", f)
         add_load(st, link, Term(label, f, p, direction=direction_text, magnitude=magnitude_text,
                              where=point))
+
+
+def _label(seen: dict[str, int], point: str, name: str | None) -> str:
+    """``F_B``, ``F_B′``, … (or the load's own name) for the n-th load at a point."""
+    n = seen.get(point, 0)
+    seen[point] = n + 1
+    return (name or f"F_{point}") + "′" * (n if name is None else 0)
+
+
+def _two_point_load(st: State, j: int, spec: Any, seen: dict[str, int]) -> None:
+    """A spring or cylinder: a force at each end on a moving link, equal and opposite."""
+    b = st.b
+    if spec.kind.value == "spring":
+        t0, k, l0 = float(spec.preload or 0.0), float(spec.stiffness), float(spec.free_length)
+        magnitude = "c·Δl"
+    else:
+        t0, k, l0 = -spec.cylinder_push(), 0.0, 0.0
+        magnitude = "p·A − p′·A′"
+    ends = ((spec.point, spec.link, spec.other), (spec.other, spec.other_link, spec.point))
+    for n, (at, link, other) in enumerate(ends):
+        if link is None or link == GROUND:
+            continue
+        group = group_of(b, link)
+        label = _label(seen, at, None if spec.name is None else spec.name + "′" * n)
+        f = st.add(f"force.load.{j}" + ("" if n == 0 else ".other"), Op.FORCE_LOAD,
+                   (b.pos[at], b.pos[other]), Kind.POINT, Role.GIVEN, label, group,
+                   subject=(at, other), mode="pull", t0=t0, k=k, l0=l0)
+        b.result(f"load_{j}" + ("" if n == 0 else "_other"), f)
+        add_load(st, link, Term(label, f, b.pos[at], direction=parallel_to(f"{at}{other}"),
+                                magnitude=magnitude, where=at))
 
 
 # -- building blocks of the group constructions ----------------------------------------------

@@ -22,6 +22,7 @@ from .base_radius import (
     translating_zone,
 )
 from .chords import profile_angles
+from .dynamics import DynamicsResult, follower_dynamics
 from .graphical import PhaseComparison, compare
 from .motion import motion, phase_starts
 from .profile import Geometry, Sample, polar, sample
@@ -58,6 +59,7 @@ class CamDesign:
     chord_error: float                # largest measured chord deviation, m
     face: tuple[float, float] | None = None     # flat face: extent from the axis (−, +), m
     notes: list[tuple[str, dict[str, float]]] = field(default_factory=list)
+    dynamics: DynamicsResult | None = None
 
     @property
     def phase_starts(self) -> np.ndarray:
@@ -98,6 +100,8 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
     f, lim = spec.follower, spec.limits
     m = motion(spec.phases, spec.stroke, phi)
     given = lim.base_radius
+    if f.contact is Contact.FLAT and f.motion is Motion.OSCILLATING:
+        return _oscillating_flat_r0(spec, m.s, m.s1, m.s2)
     if f.contact is Contact.FLAT:
         r_min = flat_r0(m.s, m.s2, lim.min_curvature)
         if given is None:
@@ -160,6 +164,31 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
     return given, 0.0, r_min, None
 
 
+def _oscillating_flat_r0(spec: CamSpec, s: np.ndarray, s1: np.ndarray, s2: np.ndarray
+                         ) -> tuple[float, float, float, Zone | None]:
+    """(r0 used, 0, least r0, None) of an oscillating flat-faced follower's cam."""
+    from .oscillating_flat import least_r0
+
+    f, lim = spec.follower, spec.limits
+    if np.min(s1) <= -1.0:
+        raise SceneError(f"the follower swings back faster than the cam turns (ψ′ = "
+                         f"{float(np.min(s1)):.4g} ≤ −1): a flat face cannot follow it; lengthen "
+                         f"the return", file=spec.path, key="motion.phases")
+    r_min = least_r0(f.pivot_distance, s, s1, s2, lim.min_curvature)
+    if r_min is None:
+        raise SceneError(f"no base radius below the pivot distance {f.pivot_distance * 1e3:g} mm "
+                         f"gives a convex profile; move the pivot farther from the cam",
+                         file=spec.path, key="follower.pivot_distance")
+    given = lim.base_radius
+    if given is None:
+        return r_min, 0.0, r_min, None
+    if not r_min * (1 - 1e-9) <= given < f.pivot_distance:
+        raise SceneError(f"must be at least {r_min * 1e3:.3f} mm for a convex profile and less "
+                         f"than the pivot distance {f.pivot_distance * 1e3:g} mm (got "
+                         f"{given * 1e3:g} mm)", file=spec.path, key="limits.base_radius")
+    return given, 0.0, r_min, None
+
+
 def design(spec: CamSpec) -> CamDesign:
     """Synthesise the cam of a scene; raise :class:`SceneError` naming the key when impossible."""
     phi = np.linspace(0.0, 2 * math.pi, DENSE, endpoint=False)
@@ -201,7 +230,12 @@ def design(spec: CamSpec) -> CamDesign:
     notes: list[tuple[str, dict[str, float]]] = []
     if spec.follower.contact is Contact.FLAT:
         margin = spec.follower.face_margin
-        face = (float(dense.s1.min()) - margin, float(dense.s1.max()) + margin)
+        if spec.follower.motion is Motion.OSCILLATING:          # distances from the pivot
+            pivot = np.array([spec.sense * spec.follower.pivot_distance, 0.0])
+            along = np.hypot(*(dense.follower - pivot).T)
+            face = (float(along.min()) - margin, float(along.max()) + margin)
+        else:
+            face = (float(dense.s1.min()) - margin, float(dense.s1.max()) + margin)
     if spec.follower.contact is Contact.ROLLER:
         if roller > 0.4 * r0:
             notes.append(("cam.note.roller_r0",
@@ -209,9 +243,17 @@ def design(spec: CamSpec) -> CamDesign:
         if roller > 0.8 * rho_p.value:
             notes.append(("cam.note.roller_rho", {"rr_mm": roller * 1e3,
                                                   "limit_mm": 0.8 * rho_p.value * 1e3}))
+    alpha = None
+    if spec.follower.motion is Motion.TRANSLATING:
+        alpha = (np.zeros_like(phi) if spec.follower.contact is Contact.FLAT
+                 else np.asarray(dense.alpha))
+    try:
+        dyn = follower_dynamics(spec, phi, alpha)
+    except SceneError as exc:
+        raise SceneError(exc.detail, file=spec.path, key=exc.key) from None
     return CamDesign(spec, g, r_min, zone, dense, sample(g, tphi), sample(g, rphi), alpha_rise,
                      alpha_return, rho_p, rho_w, compare(spec.phases, spec.stroke), angles, points,
-                     err, face, notes)
+                     err, face, notes, dyn)
 
 
 def profile_table(table: Sample) -> list[dict[str, float]]:

@@ -125,7 +125,15 @@ def sample(g: Geometry, phi: np.ndarray | float) -> Sample:
 
 
 def _flat(g: Geometry, phi: np.ndarray, s: np.ndarray, s1: np.ndarray, s2: np.ndarray) -> Sample:
-    """A translating flat-faced follower: contact at x = s′ on the face y = r0 + s."""
+    """A translating flat-faced follower: contact at x = s′ on the face y = r0 + s (an oscillating
+    one: :mod:`.oscillating_flat`)."""
+    if g.motion is Motion.OSCILLATING:
+        from .oscillating_flat import flat_oscillating
+
+        f = flat_oscillating(g.r0, g.pivot, s, s1, s2, phi)
+        out = Sample(phi, s, s1, s2, f["contact"], f["direction"], f["profile"], f["normal"],
+                     f["radius"], f["profile"], f["radius"], np.zeros_like(s))
+        return _mirrored(out) if g.sense < 0 else out
     c = np.stack([s1, g.r0 + s], axis=1)
     C = _rot(c, -phi)
     n_out = _rot(np.tile([0.0, 1.0], (s.size, 1)), -phi)

@@ -8,12 +8,15 @@ gears and the carrier through y = 0, the planet block through its pitch point wi
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from fractions import Fraction
 
 import numpy as np
 
-from ...model.gears import PlanetarySpec, Scheme
-from .train import centre_distance
+from ...errors import SceneError
+from ...model.gears import PlanetarySpec
+from .train import centre_distance, drawable_distance, mesh_teeth
 
 
 @dataclass(frozen=True)
@@ -23,47 +26,101 @@ class TrainPlan:
     names: tuple[str, ...]                   # gears, then "h"
     omega: dict[str, float]                  # absolute, rad/s (counter-clockwise seen along +axis)
     relative: dict[str, float]               # ω − ω_h
-    radius: dict[str, float]                 # pitch radius of each gear, m
+    radius: dict[str, float]                 # working pitch radius of each gear (its mesh), m
     a_w: float                               # radius of the planet axis, m
     pitch_points: dict[str, float]           # "A" (1–2), "B" (planet–last central): radius, m
     lines: dict[str, tuple[tuple[float, float], tuple[float, float]]]  # link: (y, v) ends
-    ratio: float                             # ω_in/ω_out read off the plan
+    ratio: float                             # ω_in/ω_out read off the plan (nan: two inputs)
 
 
-def velocity_plan(spec: PlanetarySpec, z: tuple[int, ...]) -> TrainPlan:
-    """Solve the pitch-point velocity equations for the set ``z``."""
+def _solve_exact(a: list[list[Fraction]], b: list[Fraction]) -> list[Fraction]:
+    """Gaussian elimination in rationals (the plan's equations are solved exactly, so a train
+    of ratio 10⁴ loses no digits to cancellation)."""
+    n = len(b)
+    rows = [row[:] + [rhs] for row, rhs in zip(a, b, strict=True)]
+    for col in range(n):
+        piv = next((r for r in range(col, n) if rows[r][col] != 0), None)
+        if piv is None:
+            raise ZeroDivisionError("singular")
+        rows[col], rows[piv] = rows[piv], rows[col]
+        for r in range(n):
+            if r != col and rows[r][col] != 0:
+                f = rows[r][col] / rows[col][col]
+                rows[r] = [x - f * y for x, y in zip(rows[r], rows[col], strict=True)]
+    return [rows[j][n] / rows[j][j] for j in range(n)]
+
+
+def working_radii(spec: PlanetarySpec, z: tuple[int, ...], a_w: float
+                  ) -> tuple[dict[str, Fraction], Fraction, Fraction]:
+    """Working pitch radii of the gears (each mesh at ``a_w``: r_w = a_w·z/(z_c ± z_p)) and the
+    radii of the pitch points A (mesh 1) and B (mesh 2) from the central axis, exact."""
+    names = spec.scheme.gear_names
+    aw = Fraction(a_w)
+    (za, zp1, int1, _), (zb, zp2, int2, _) = mesh_teeth(spec, z)
+    s1 = za - zp1 if int1 else za + zp1
+    s2 = zb - zp2 if int2 else zb + zp2
+    radius = {names[0]: aw * za / s1, names[1]: aw * zp1 / s1, names[-1]: aw * zb / s2}
+    if spec.scheme.two_row:
+        radius[names[2]] = aw * zp2 / s2
+    return radius, radius[names[0]], radius[names[-1]]
+
+
+def velocity_plan(spec: PlanetarySpec, z: tuple[int, ...], a_w: float | None = None,
+                  speeds: dict[str, float] | None = None) -> TrainPlan:
+    """Solve the pitch-point velocity equations for the set ``z`` at the working centre distance
+    ``a_w`` (default: :func:`working_distance`), with the fixed link held and the input turning at
+    ``input_speed`` — or, for a differential, with the two links of ``speeds`` turning as given.
+
+    Raises SceneError when the set is not coaxial and no working centre distance makes it so: its
+    plan cannot be drawn (the planet's axis would sit at two radii)."""
     sch = spec.scheme
     names = sch.gear_names
-    m1, m2 = spec.modules
-    if sch is Scheme.SINGLE_ROW:
-        m2 = m1
-    a_w = float(centre_distance(spec, np.asarray([z]))[0][0])
-    mods = (m1, m1, m2, m2) if sch.two_row else (m1, m1, m1)
-    radius = {n: mods[j] * z[j] / 2 for j, n in enumerate(names)}
-    y_a, y_b = radius[names[0]], radius[names[-1]]
+    a_w = drawable_distance(spec, z) if a_w is None else a_w
+    if a_w is None:
+        a12, a34 = (float(v[0]) for v in centre_distance(spec, np.asarray([z])))
+        raise SceneError(f"the set {list(z)} is not coaxial (a_w = {a12 * 1000:.6g} mm of the "
+                         f"first mesh, {a34 * 1000:.6g} mm of the second): its velocity plan cannot"
+                         f" be drawn; give centre_distance (or \"auto\") to work both meshes at one"
+                         f" distance with shifted gears", key="planetary.centre_distance")
+    if not a_w > 0:
+        raise SceneError(f"must be positive (got {a_w})", key="planetary.centre_distance")
+    radius, y_a, y_b = working_radii(spec, z, a_w)
+    aw = Fraction(a_w)
     # unknowns: ω_a, ω_planet block, ω_b, ω_h
-    A = np.zeros((4, 4))
-    rhs = np.zeros(4)
-    A[0] = (y_a, -(y_a - a_w), 0.0, -a_w)        # pitch point A: gear a = planet block
-    A[1] = (0.0, -(y_b - a_w), y_b, -a_w)        # pitch point B: gear b = planet block
+    rows = [[y_a, -(y_a - aw), Fraction(0), -aw],      # pitch point A: gear a = planet block
+            [Fraction(0), -(y_b - aw), y_b, -aw]]      # pitch point B: gear b = planet block
+    rhs = [Fraction(0), Fraction(0)]
     col = {names[0]: 0, names[-1]: 2, "h": 3}
-    A[2, col[spec.fixed]] = 1.0
-    A[3, col[spec.input]] = 1.0
-    rhs[3] = spec.input_speed
-    w_a, w_p, w_b, w_h = np.linalg.solve(A, rhs)
-    omega = {names[0]: w_a, names[-1]: w_b, "h": w_h}
+    known = speeds if speeds is not None else {spec.fixed: 0.0, spec.input: spec.input_speed}
+    for link, w in known.items():
+        row = [Fraction(0)] * 4
+        row[col[link]] = Fraction(1)
+        rows.append(row)
+        rhs.append(Fraction(w))
+    try:
+        w_a, w_p, w_b, w_h = _solve_exact(rows, rhs)
+    except ZeroDivisionError:
+        raise SceneError(f"the set {list(z)} with {' and '.join(known)} given is locked or "
+                         f"undetermined (i^h = 1: the two central gears turn alike relative to the "
+                         f"carrier); choose other links or other tooth numbers",
+                         key="planetary.given") from None
+    exact = {names[0]: w_a, names[-1]: w_b, "h": w_h}
     for n in names[1:-1]:
-        omega[n] = w_p
-    omega = {n: float(omega[n]) for n in (*names, "h")}
-    planet_ys = (y_a, y_b, a_w)
-    lines = {names[0]: ((0.0, 0.0), (y_a, w_a * y_a)),
-             names[-1]: ((0.0, 0.0), (y_b, w_b * y_b)),
-             "h": ((0.0, 0.0), (a_w, w_h * a_w))}
-    lo, hi = min(planet_ys), max(planet_ys)
-    v = (lambda y: w_h * a_w + w_p * (y - a_w))
+        exact[n] = w_p
+    omega = {n: float(exact[n]) for n in (*names, "h")}
+    ya, yb, awf = float(y_a), float(y_b), float(a_w)
+    lines = {names[0]: ((0.0, 0.0), (ya, omega[names[0]] * ya)),
+             names[-1]: ((0.0, 0.0), (yb, omega[names[-1]] * yb)),
+             "h": ((0.0, 0.0), (awf, omega["h"] * awf))}
+    lo, hi = min(ya, yb, awf), max(ya, yb, awf)
+    v = (lambda y: omega["h"] * awf + omega[names[1]] * (y - awf))
     for n in names[1:-1]:
         lines[n] = ((lo, float(v(lo))), (hi, float(v(hi))))
+    if speeds is None:
+        ratio = float(exact[spec.input] / exact[spec.output]) if exact[spec.output] else math.inf
+    else:
+        ratio = math.nan
     return TrainPlan(names=(*names, "h"), omega=omega,
-                     relative={n: omega[n] - omega["h"] for n in omega}, radius=radius,
-                     a_w=a_w, pitch_points={"A": y_a, "B": y_b}, lines=lines,
-                     ratio=omega[spec.input] / omega[spec.output])
+                     relative={n: float(exact[n] - exact["h"]) for n in exact},
+                     radius={n: float(r) for n, r in radius.items()},
+                     a_w=awf, pitch_points={"A": ya, "B": yb}, lines=lines, ratio=ratio)

@@ -11,6 +11,7 @@ Two enumerations give the same sets:
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 
@@ -37,22 +38,46 @@ def _coaxial_pairs(spec: PlanetarySpec) -> tuple[np.ndarray, np.ndarray, np.ndar
     return z1[keep], z2[keep], qS_r[keep], (1 if int2 else -1)
 
 
-def _single_row(spec: PlanetarySpec) -> np.ndarray:
+def _single_row(spec: PlanetarySpec, delta: int = 0) -> np.ndarray:
     lo, hi = spec.z_range
     zs = np.arange(lo, hi + 1, dtype=np.int64)
     z1, z2 = (a.ravel() for a in np.meshgrid(zs, zs, indexing="ij"))
-    z3 = z1 + 2 * z2
-    keep = z3 <= hi
+    z3 = z1 + 2 * z2 + delta
+    keep = (z3 <= hi) & (z3 >= lo)
     return np.stack([z1[keep], z2[keep], z3[keep]], axis=1)
 
 
+def offsets(spec: PlanetarySpec) -> range:
+    """Tooth-sum offsets δ of the last gear from its unshifted coaxial value: 0 alone, or with a
+    working centre distance every δ that shift sums within ``max_shift_sum`` may reach."""
+    if not train.shifted(spec):
+        return range(1)
+    reach = math.ceil(2.5 * spec.max_shift_sum) + 2
+    if spec.centre_distance is not None:     # the given a_w may sit far from the standard ones
+        m = spec.modules[1] if spec.scheme.two_row else spec.modules[0]
+        reach += math.ceil(2 * spec.centre_distance / m)
+    return range(-reach, reach + 1)
+
+
+def _keep_shifted(spec: PlanetarySpec, z: np.ndarray) -> np.ndarray:
+    return z[train.shift_ok(spec, z)] if train.shifted(spec) and z.shape[0] else z
+
+
 def plain_sets(spec: PlanetarySpec) -> Iterator[np.ndarray]:
-    """Every coaxial set in the range, in blocks of shape (n, g) (the plain enumeration)."""
+    """Every coaxial set in the range (with a working centre distance: coaxial with shifted
+    gears), in blocks of shape (n, g) (the plain enumeration)."""
+    for delta in offsets(spec):
+        for block in _plain_sets(spec, delta):
+            yield _keep_shifted(spec, block)
+
+
+def _plain_sets(spec: PlanetarySpec, delta: int) -> Iterator[np.ndarray]:
     if spec.scheme is Scheme.SINGLE_ROW:
-        yield _single_row(spec)
+        yield _single_row(spec, delta)
         return
     lo, hi = spec.z_range
     z1, z2, qS, tau = _coaxial_pairs(spec)
+    qS = qS + delta
     z3 = np.arange(lo, hi + 1, dtype=np.int64)
     step = max(1, BLOCK // z3.size)
     for start in range(0, z1.size, step):
@@ -73,11 +98,18 @@ def ratio_mask(spec: PlanetarySpec, z: np.ndarray) -> np.ndarray:
 
 
 def candidate_sets(spec: PlanetarySpec) -> np.ndarray:
-    """Coaxial sets in the range whose ratio may meet the band (a superset of those that do)."""
+    """Coaxial sets in the range (with a working centre distance: coaxial with shifted gears)
+    whose ratio may meet the band (a superset of those that do)."""
+    parts = [_keep_shifted(spec, _candidate_sets(spec, delta)) for delta in offsets(spec)]
+    return np.concatenate(parts) if len(parts) > 1 else parts[0]
+
+
+def _candidate_sets(spec: PlanetarySpec, delta: int) -> np.ndarray:
     if spec.scheme is Scheme.SINGLE_ROW:
-        return _single_row(spec)
+        return _single_row(spec, delta)
     lo, hi = spec.z_range
     z1, z2, qS, tau = _coaxial_pairs(spec)
+    qS = qS + delta
     band = spec.deviation * abs(spec.ratio)
     u_lo, u_hi = spec.ratio - band, spec.ratio + band
     i_a = train.i_from_ratio(u_lo, spec.scheme, spec.fixed, spec.input, spec.output)

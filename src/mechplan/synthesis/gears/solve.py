@@ -26,8 +26,9 @@ class PlanetaryResult:
     others: tuple[train.Conditions, ...]
     found: int
     counts: dict[str, int]
-    plan: TrainPlan
+    plan: TrainPlan | None      # None: the set is not coaxial and cannot be drawn
     willis_i: float
+    partials: tuple[TrainPlan, TrainPlan] | None = None   # differential: each input alone
 
 
 @dataclass(frozen=True)
@@ -38,6 +39,19 @@ class OrdinaryResult:
     z5: int
     z6: int
     ratio: float          # u56 = ω5/ω6 = −z6/z5
+
+
+@dataclass(frozen=True)
+class OrdinaryPlan:
+    """The ordinary pair 5–6 on the train's velocity plan: gear 5 on the planetary output shaft
+    (the central axis), gear 6 on a parallel axis at a56; v = ω·(y − y_axis) along the radius."""
+
+    r5: float
+    r6: float
+    a56: float
+    omega5: float
+    omega6: float
+    lines: dict[str, tuple[tuple[float, float], tuple[float, float]]]
 
 
 @dataclass(frozen=True)
@@ -57,9 +71,23 @@ class GearSolution:
         return self.planetary.chosen.ratio * self.ordinary.ratio
 
     @property
+    def ordinary_plan(self) -> OrdinaryPlan | None:
+        """Gear 5 and gear 6 on the velocity plan (None without both stages and a plan)."""
+        if self.planetary is None or self.ordinary is None or self.planetary.plan is None:
+            return None
+        o = self.ordinary
+        r5, r6 = o.spec.module * o.z5 / 2, o.spec.module * o.z6 / 2
+        a56 = r5 + r6
+        w5 = self.planetary.plan.omega[self.planetary.spec.output]
+        w6 = -w5 * r5 / r6                    # the pitch point: ω5·r5 = ω6·(r5 − a56)
+        lines = {"5": ((0.0, 0.0), (r5, w5 * r5)),
+                 "6": ((r5, w5 * r5), (a56 + r6, w6 * r6))}
+        return OrdinaryPlan(r5, r6, a56, w5, w6, lines)
+
+    @property
     def ordinary_omega(self) -> dict[str, float]:
         """ω5 (on the planetary output shaft) and ω6 = ω5/u56, rad/s (empty without both stages)."""
-        if self.planetary is None or self.ordinary is None:
+        if self.planetary is None or self.ordinary is None or self.planetary.plan is None:
             return {}
         w5 = self.planetary.plan.omega[self.planetary.spec.output]
         return {"5": w5, "6": w5 / self.ordinary.ratio}
@@ -68,6 +96,8 @@ class GearSolution:
 def solve_planetary(spec: PlanetarySpec) -> PlanetaryResult:
     """Search the sets (or check the given one) and draw up the plan of the chosen set."""
     train.check_links(spec)
+    if spec.speeds is not None:
+        return solve_differential(spec)
     if spec.given is not None:
         chosen = train.conditions(spec, spec.given)
         result = search.search(spec)
@@ -76,9 +106,25 @@ def solve_planetary(spec: PlanetarySpec) -> PlanetaryResult:
         chosen = train.conditions(spec, tuple(int(v) for v in result.sets[0]))
     others = tuple(train.conditions(spec, tuple(int(v) for v in z))
                    for z in result.sets[:LISTED + 1] if tuple(int(v) for v in z) != chosen.z)
-    i = float(train.willis_i(spec.scheme, np.asarray([chosen.z]))[0])
+    i = float(train.willis_exact(spec.scheme, chosen.z))
+    plan = velocity_plan(spec, chosen.z, chosen.working) if chosen.coaxial else None
     return PlanetaryResult(spec, chosen, others[:LISTED], int(result.sets.shape[0]),
-                           result.counts, velocity_plan(spec, chosen.z), i)
+                           result.counts, plan, i)
+
+
+def solve_differential(spec: PlanetarySpec) -> PlanetaryResult:
+    """A differential (two links turning as given): the plan of both inputs, and of each input
+    with the other held — the plan of both is their superposition."""
+    assert spec.given is not None and spec.speeds is not None
+    chosen = train.conditions(spec, spec.given)
+    i = float(train.willis_exact(spec.scheme, chosen.z))
+    plan = partials = None
+    if chosen.coaxial:
+        (l1, w1), (l2, w2) = spec.speeds
+        plan = velocity_plan(spec, chosen.z, chosen.working, speeds={l1: w1, l2: w2})
+        partials = (velocity_plan(spec, chosen.z, chosen.working, speeds={l1: w1, l2: 0.0}),
+                    velocity_plan(spec, chosen.z, chosen.working, speeds={l1: 0.0, l2: w2}))
+    return PlanetaryResult(spec, chosen, (), 0, {}, plan, i, partials)
 
 
 def solve_ordinary(spec: OrdinarySpec, z_min: int = 17, deviation: float = 0.02) -> OrdinaryResult:

@@ -1,0 +1,34 @@
+"""The diagram of the instantaneous efficiency η(φ) over the positions (a scene with friction
+that asks for it: ``[friction] diagram = true``). η is read from the solution, never computed."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..i18n import message
+from ..solve import Solution
+from .diagram import Axis, Curve, Marker, diagram_panel
+from .panels import Panel
+from .scales import Room
+
+
+def efficiency_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
+    """η(φ) at the positions of a sweep; gaps where the balancing moment does not drive."""
+    spec = sol.scene.friction
+    forces = sol.extras.get("forces")
+    friction = getattr(forces, "friction", None)
+    if (spec is None or not spec.diagram or friction is None or sol.scene.positions.angles
+            or sol.positions < 4):
+        return None
+    eta = np.asarray(friction.efficiency, dtype=float)
+    if not np.isfinite(eta).any():
+        return None
+    n = sol.positions
+    x = np.arange(n + 1) * 360.0 / n
+    y = np.append(eta, eta[0])
+    # every position where η is defined is marked with its number (a lone one has no line)
+    markers = [Marker(float(x[k]), float(y[k]), str(k)) for k in range(n) if np.isfinite(y[k])]
+    d = diagram_panel("force-diagram-eta", message("forces.diagram.efficiency", lang),
+                      [Curve(x, y)], Axis("φ", "°", min(180.0, 0.42 * r.width)),
+                      Axis("η", "", min(50.0, 0.18 * r.height)), lang, markers=markers)
+    return d.panel

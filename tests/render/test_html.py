@@ -1,0 +1,295 @@
+"""The live page (``draw --format html``): one self-contained file whose embedded data are the
+construction's own values, its replay steps in the order of the protocol, in every language."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from html.parser import HTMLParser
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scenes import ALL_TEMPLATES, ROOT
+
+from mechplan import api
+from mechplan.construct.protocol import protocol
+from mechplan.errors import MechplanError
+from mechplan.i18n import LANGUAGES
+from mechplan.live_page import page_text
+from mechplan.model.plans import Plan
+from mechplan.sheet.live import UI
+from mechplan.studies import solve_file
+
+SVG_NS = "http://www.w3.org/2000/svg"       # a namespace name, not a reference to fetch
+
+
+def _data(page: str) -> dict:
+    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.DOTALL)
+    assert m, "the page embeds its document"
+    return json.loads(m.group(1).replace("<\\/", "</"))
+
+
+@pytest.fixture(scope="module")
+def four_bar():
+    study = solve_file(str(ROOT / "templates" / "four_bar.toml"))
+    page = page_text(study, name="four_bar")
+    return study, page, _data(page)
+
+
+class _Refs(HTMLParser):
+    def __init__(self) -> None:
+        super().__init__()
+        self.refs: list[tuple[str, str, str]] = []
+        self.tags: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        self.tags.append(tag)
+        for name, value in attrs:
+            if name in ("src", "href", "action", "srcset", "data", "poster", "xlink:href"):
+                self.refs.append((tag, name, value or ""))
+
+
+def test_one_file_without_external_references(four_bar):
+    _study, page, _doc = four_bar
+    parser = _Refs()
+    parser.feed(page)
+    assert parser.refs == []                        # no script, style, font or image fetched
+    assert "link" not in parser.tags and "iframe" not in parser.tags
+    body = page.replace(SVG_NS, "")
+    assert not re.search(r"https?://", body), "no URL anywhere but the SVG namespace"
+    assert not re.search(r"\bfetch\s*\(|XMLHttpRequest|\bimport\s*\(|WebSocket|EventSource",
+                         body)
+    assert re.search(r"url\(data:font/", page), "the fonts are inlined as data"
+    assert "default-src 'none'" in page              # and the page forbids any other load
+
+
+def test_positions_are_the_constructions_own(four_bar):
+    """The animation's points equal the construction evaluated at the same crank angles, and
+    close the loop: |BC|, |DC| and the crank pin on its circle, from the scene's lengths."""
+    study, _page, doc = four_bar
+    sol = study.solution
+    c = sol.construction
+    mu = sol.scales[Plan.POSITION]
+    a = doc["animation"]
+    phi = np.radians(np.asarray(a["phi_deg"]))
+    ev = c.evaluate(phi)
+    pos = next(p for p in a["panels"] if p["id"] == "position")["points"]
+
+    def xy(name):
+        v = np.asarray(pos[name]["xy"], dtype=float).reshape(-1, 2)
+        return v * np.array([1.0, -1.0]) * mu          # the page's y runs down; back to m
+
+    for name in ("B", "C", "E"):
+        exact = np.asarray(ev[c.position(name)])
+        assert np.abs(xy(name) - exact).max() <= 0.006 * mu   # paper precision 0.01 mm
+    # independent: the crank pin at (80 mm)(cos φ, sin φ) about A = (0, 0), φ the slider's angle
+    pin = 0.080 * np.column_stack([np.cos(phi), np.sin(phi)])
+    assert np.abs(xy("B") - pin).max() <= 0.006 * mu
+    bc = np.hypot(*(xy("C") - xy("B")).T)
+    dc = np.hypot(*(xy("C") - np.array([0.250, 0.0])).T)
+    assert np.abs(bc - 0.260).max() < 0.02 * mu and np.abs(dc - 0.180).max() < 0.02 * mu
+    assert len(phi) == 360 and np.allclose(np.diff(np.unwrap(phi)), 2 * math.pi / 360, atol=1e-5)
+
+
+def test_velocity_values_follow_the_slider(four_bar):
+    """v_B at every frame is ω·l_AB (closed form); its paper length is v_B / μv."""
+    study, _page, doc = four_bar
+    mu_v = study.solution.scales[Plan.VELOCITY]
+    vb = next(v for v in doc["animation"]["values"] if v["quantity"] == "v_B")
+    assert np.allclose(vb["value"], 10.0 * 0.080, atol=1e-9)
+    assert np.allclose(vb["mm"], 0.8 / mu_v, atol=0.006)
+
+
+def test_replay_steps_in_the_order_of_the_protocol(four_bar):
+    study, _page, doc = four_bar
+    sol = study.solution
+    mu = sol.scales
+    for r in doc["replays"]:
+        plan = Plan(r["plan"])
+        groups = {s["group"] for s in r["steps"]}
+        expected = [text for _p, _label, text in protocol(sol.construction, sol.ev, r["k"], "en",
+                                                          mu, (plan,))]
+        said = [s["sentence"]["en"] for s in r["steps"]]
+        if plan is Plan.FORCE:               # one polygon per group: its steps, in order
+            ids = [s.id for s in sol.construction.of_plan(plan) if s.group in groups
+                   and s.id in sol.ev.values and s.op.message is not None]
+            assert [s["id"] for s in r["steps"]] == ids
+        else:
+            assert said == expected
+        n = len(r["steps"])
+        for lang in LANGUAGES:
+            ks = [p["k"] for p in r["prims"][lang]]
+            assert all(-1 <= k < n for k in ks)
+            assert any(k >= 0 for k in ks), "the replay draws something step by step"
+        for row in r["rows"]:
+            assert 0 <= row["step"] < n
+
+
+def test_segment_found_at_its_step(four_bar):
+    """In the velocity replay, pb is found at the step that draws b, and its arrow appears
+    then: the measured segment and its arrow come with the same sentence."""
+    study, _page, doc = four_bar
+    r = next(r for r in doc["replays"] if r["plan"] == "velocity")
+    row = next(x for x in r["rows"] if x["quantity"] == "v_B")
+    step = r["steps"][row["step"]]
+    assert "pb" in step["sentence"]["en"]
+    drawn = [p for p in r["prims"]["en"] if p["k"] == row["step"]]
+    assert any("h" in p for p in drawn), "the arrow pb appears at that step"
+    assert float(row["value"]["en"]) == pytest.approx(0.8, abs=5e-4)
+    mu_v = study.solution.scales[Plan.VELOCITY]
+    assert float(row["mm"]["en"]) == pytest.approx(0.8 / mu_v, abs=0.05)
+
+
+def test_every_language_is_in_the_page(four_bar):
+    _study, _page, doc = four_bar
+    assert sorted(doc["languages"]) == sorted(LANGUAGES)
+    for lang in LANGUAGES:
+        assert all(doc["ui"][lang][k] for k in UI)
+        assert doc["ui"][lang]["decimal"] in (".", ",")
+    assert doc["ui"]["ru"]["decimal"] == ","
+    r = doc["replays"][1]
+    texts = {lang: [s["sentence"][lang] for s in r["steps"]] for lang in LANGUAGES}
+    assert len({tuple(t) for t in texts.values()}) == len(LANGUAGES)   # each its own words
+    assert "," in " ".join(texts["ru"]) and "мм" in " ".join(texts["ru"])
+
+
+def test_dead_centres_and_sheet_positions_on_the_slider(four_bar):
+    _study, _page, doc = four_bar
+    a = doc["animation"]
+    kinds = {m["kind"] for m in a["marks"]}
+    assert {"dead", "chosen"} <= kinds
+    # the rocker's two extreme positions: ω3 = 0 there (independently: the velocity of C)
+    vc = np.asarray(next(v for v in a["values"] if v["quantity"] == "v_C")["value"])
+    for m in a["marks"]:
+        if m["kind"] == "dead":
+            assert vc[m["k"]] < 0.05 * vc.max()
+
+
+@pytest.mark.parametrize("path", ALL_TEMPLATES, ids=lambda p: p.stem)
+def test_page_weight(path: Path, tmp_path: Path) -> None:
+    """Every template's page is one file of at most 3 MB."""
+    written = api.draw(path, tmp_path, formats=["html"])
+    assert [p.suffix for p in written] == [".html"]
+    size = written[0].stat().st_size
+    assert 50_000 < size <= 3_000_000
+
+
+def test_other_kinds_give_their_sheets_in_every_language(tmp_path: Path) -> None:
+    """A gears scene's page holds its sheets (the SVG's primitives) in the four languages."""
+    path = api.draw(ROOT / "templates" / "planetary_two_row.toml", tmp_path, formats=["html"])[0]
+    page = path.read_text(encoding="utf-8")
+    doc = _data(page)
+    assert doc["replays"] == [] and doc["animation"] is None
+    assert sorted(doc["sheets"]) == sorted(LANGUAGES)
+    for lang in LANGUAGES:
+        sheets = doc["sheets"][lang]
+        assert sheets and all(len(s["prims"]) > 50 for s in sheets)
+    texts = {lang: {p["t"] for s in doc["sheets"][lang] for p in s["prims"] if "t" in p}
+             for lang in LANGUAGES}
+    assert texts["en"] != texts["ru"] and texts["en"] != texts["zh"]
+    assert len(page.encode()) <= 3_000_000
+
+
+def test_a_failing_scene_writes_no_page(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text((ROOT / "templates" / "four_bar.toml").read_text(encoding="utf-8")
+                   .replace('link = "1"', 'link = "9"'), encoding="utf-8")
+    out = tmp_path / "out"
+    with pytest.raises(MechplanError) as html_error:
+        api.draw(bad, out, formats=["html"])
+    with pytest.raises(MechplanError) as svg_error:
+        api.draw(bad, out, formats=["svg"])
+    assert str(html_error.value) == str(svg_error.value)
+    assert not list(out.glob("*.html"))
+
+
+def test_diagram_cursor_follows_the_slider():
+    """The cursor of s(φ) in the slider-crank's animation is the piston's travel at every frame:
+    x = r cos φ + √(l² − r² sin² φ) (closed form), drawn on its axes (an affine map to mm)."""
+    study = solve_file(str(ROOT / "templates" / "slider_crank.toml"))
+    doc = _data(page_text(study, name="slider_crank"))
+    a = doc["animation"]
+    phi = np.radians(np.asarray(a["phi_deg"]))
+    panel = next(p for p in a["panels"] if p["id"] == "diagram-s")
+    xy = np.asarray(panel["points"]["diagram-s"]["xy"], dtype=float).reshape(-1, 2)
+    r, l = 0.100, 0.400
+    s = r * np.cos(phi) + np.sqrt(l**2 - (r * np.sin(phi))**2)
+    s -= s.min()
+    slope, icpt = np.polyfit(s, -xy[:, 1], 1)            # page y runs down
+    assert np.abs(slope * s + icpt + xy[:, 1]).max() < 0.01   # within paper precision
+    assert slope > 0
+    steps = np.diff(xy[:, 0])
+    assert np.allclose(steps, steps[0], atol=0.011) and steps[0] > 0   # φ along the axis
+    assert set(panel["static"]) == set(LANGUAGES) and all(panel["static"].values())
+
+
+def test_machine_dynamics_diagrams_have_a_cursor_at_the_crank_angle():
+    """With [dynamics], ω(φ) of the cycle is in the animation; its cursor's x is the cycle angle
+    of each frame ((φ − φ0) mod Φ at μφ) and its y the crank's ω there."""
+    study = solve_file(str(ROOT / "templates" / "machine_unit.toml"))
+    dyn = study.dynamics
+    doc = _data(page_text(study, name="machine_unit"))
+    a = doc["animation"]
+    panel = next(p for p in a["panels"] if p["id"] == "dynamics-omega")
+    xy = np.asarray(panel["points"]["dynamics-omega"]["xy"], dtype=float).reshape(-1, 2)
+    phi = np.radians(np.asarray(a["phi_deg"]))
+    theta = np.mod(phi - dyn.phi0, dyn.spec.cycle)
+    slope, _ = np.polyfit(theta, xy[:, 0], 1)
+    assert np.abs(np.polyval(np.polyfit(theta, xy[:, 0], 1), theta) - xy[:, 0]).max() < 0.01
+    assert slope > 0
+    omega = np.interp(theta, dyn.theta, dyn.omega)
+    fit = np.polyfit(omega, -xy[:, 1], 1)
+    assert np.abs(np.polyval(fit, omega) + xy[:, 1]).max() < 0.01
+    assert {p["id"] for p in a["panels"]} >= {"dynamics-moments", "dynamics-energy",
+                                              "dynamics-inertia", "dynamics-omega"}
+
+
+def test_engine_polar_diagram_traced_with_one_scale():
+    """The engine's page animates the polar diagram of pin 1: the traced point is (T, Z) at one
+    scale on both axes, and Q there is the distance from the pole (0, −K_r)."""
+    study = solve_file(str(ROOT / "templates" / "motorcycle_engine.toml"))
+    doc = _data(page_text(study, name="engine"))
+    a = doc["animation"]
+    polar = next(p for p in a["panels"] if p["id"] == "engine-polar")
+    xy = np.asarray(polar["points"]["Q"]["xy"], dtype=float).reshape(-1, 2)
+    vals = {v["quantity"]: np.asarray(v["value"], dtype=float) for v in a["values"]}
+    sx = np.polyfit(vals["T"], xy[:, 0], 1)[0]
+    sy = np.polyfit(vals["Z"], -xy[:, 1], 1)[0]
+    assert sx == pytest.approx(sy, rel=1e-3) and sx > 0          # one scale: a true polar plot
+    k_r = study.dense.pins[1].K_r * 1e-3
+    assert np.allclose(vals["Q"], np.hypot(vals["T"], vals["Z"] + k_r), rtol=1e-5, atol=1e-5)
+    assert polar["points"]["Q"]["grow"] and len(a["phi_deg"]) == a["frames"] >= 360
+    assert doc["sheets"] and not doc["replays"]
+
+
+@pytest.mark.parametrize("stem", ["cam_cycloidal", "cam_oscillating"])
+def test_cam_follower_touches_the_turning_cam(stem):
+    """In the cam's animation the roller stays on the turning cam: the roller centre, turned back
+    by the frame's angle of the cam, lies one roller radius from the working profile (measured on
+    the page's own polyline); the replay lays the rays in order, then the profile."""
+    study = solve_file(str(ROOT / "templates" / f"{stem}.toml"))
+    g = study.design.geometry
+    assert g.roller > 0
+    doc = _data(page_text(study, name=stem))
+    cam = next(p for p in doc["animation"]["panels"] if p["id"] == "cam")
+    rotor = next(it for it in cam["items"] if it["kind"] == "rotor")
+    outline = next(p for p in rotor["shape"] if "d" in p and p["d"].endswith("Z"))
+    pts = np.array([[float(v) for v in xy.split()] for xy in
+                    re.split("[ML]", outline["d"].rstrip("Z")) if xy])
+    b = np.asarray(cam["points"]["B"]["xy"], dtype=float).reshape(-1, 2)
+    mu = doc["replays"][0]["mu"]["en"]
+    mu_m = float(re.search(r"= ([\d.]+)", mu).group(1)) / 1000.0        # m per paper mm
+    for k in range(0, len(b), 17):
+        a = math.radians(-rotor["angle"][k])
+        rot = np.array([[math.cos(a), -math.sin(a)], [math.sin(a), math.cos(a)]])
+        p = rot @ b[k]
+        seg = np.diff(np.vstack([pts, pts[:1]]), axis=0)
+        t = np.clip(((p - pts) * seg).sum(1) / (seg * seg).sum(1), 0.0, 1.0)
+        dist = np.hypot(*(pts + t[:, None] * seg - p).T).min()
+        assert dist == pytest.approx(g.roller / mu_m, abs=0.05)
+    steps = doc["replays"][0]["steps"]
+    n = study.design.rays.phi.size
+    assert [s["id"] for s in steps] == ["base", *(f"ray-{i}" for i in range(n)), "profile"]
+    assert all(s["sentence"][lang] for s in steps for lang in LANGUAGES)

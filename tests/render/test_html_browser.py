@@ -1,0 +1,162 @@
+"""The live page in a real browser (Debian's chromium driven by Playwright): stepping through a
+plan shows exactly the step's elements and highlights its sentence, the slider moves the
+mechanism to the solved position, the language switch re-labels the page, no console error."""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scenes import ROOT
+
+from mechplan.i18n import message
+from mechplan.live_page import write_page
+from mechplan.model.plans import Plan
+from mechplan.studies import solve_file
+
+pytestmark = pytest.mark.external
+
+#: where the screenshots go (kept as CI artefacts when MECHPLAN_ARTEFACTS names a folder)
+ARTEFACTS = os.environ.get("MECHPLAN_ARTEFACTS")
+
+
+def _elements(prim: dict) -> int:
+    """How many SVG elements the page draws for one primitive (an arrow: shaft and head)."""
+    if "t" in prim or "c" in prim:
+        return 1
+    return int(bool(prim.get("d"))) + int(bool(prim.get("h")))
+
+
+@pytest.fixture
+def browser(require):
+    exe = shutil.which("chromium") or shutil.which("chromium-browser")
+    require(exe is not None, "Chromium (apt-get install --no-install-recommends chromium)")
+    try:
+        from playwright.sync_api import sync_playwright
+    except ImportError:
+        require(False, "Playwright for Python (pip install playwright)")
+    with sync_playwright() as p:
+        b = p.chromium.launch(executable_path=exe, args=["--no-sandbox", "--disable-gpu"])
+        yield b
+        b.close()
+
+
+@pytest.fixture(scope="module")
+def four_bar(tmp_path_factory):
+    out = tmp_path_factory.mktemp("page")
+    study = solve_file(str(ROOT / "templates" / "four_bar.toml"))
+    path = write_page(study, out, "four_bar")
+    text = path.read_text(encoding="utf-8")
+    m = re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.DOTALL)
+    return study, path, json.loads(m.group(1).replace("<\\/", "</"))
+
+
+def _shot(page, name: str, tmp: Path) -> None:
+    folder = Path(ARTEFACTS) if ARTEFACTS else tmp
+    folder.mkdir(parents=True, exist_ok=True)
+    page.screenshot(path=str(folder / name), full_page=True)
+
+
+def test_replay_steps_and_slider_in_chromium(browser, four_bar, tmp_path):
+    study, path, doc = four_bar
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    errors: list[str] = []
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.on("request", lambda r: errors.append(f"request {r.url}")
+            if not r.url.startswith(("file:", "data:")) else None)
+    page.goto(path.as_uri())
+    page.wait_for_selector("body[data-ready='1']")
+
+    # the velocity plan of the first chosen position, five presses of "next"
+    index = next(i for i, r in enumerate(doc["replays"]) if r["plan"] == "velocity")
+    r = doc["replays"][index]
+    page.select_option("#plan", str(index))
+    page.focus("#next")
+    presses = min(5, len(r["steps"]) - 1)
+    for _ in range(presses):
+        page.click("#next")
+    k = presses
+    assert page.get_attribute("#counter", "data-step") == str(k + 1)
+    current = page.locator("#protocol li.current")
+    assert current.count() == 1
+    assert current.text_content() == r["steps"][k]["sentence"]["en"]
+    assert page.locator("#protocol li").nth(k).get_attribute("aria-current") == "step"
+    shown = page.locator("#r-svg > *:not(.off)").count()
+    assert shown == sum(_elements(p) for p in r["prims"]["en"] if p["k"] <= k)
+    now = page.locator(f"#r-svg > [data-k='{k}']").count()
+    assert now == sum(_elements(p) for p in r["prims"]["en"] if p["k"] == k)
+    # one more with the keyboard: the step's own elements appear, nothing else
+    page.focus("#r-svg")
+    page.keyboard.press("ArrowRight")
+    assert page.get_attribute("#counter", "data-step") == str(k + 2)
+    after = page.locator("#r-svg > *:not(.off)").count()
+    assert after - shown == sum(_elements(p) for p in r["prims"]["en"] if p["k"] == k + 1)
+    rows = page.locator("#segments tr[data-k]:not(.off)").count()
+    assert rows == sum(1 for x in r["rows"] if x["step"] <= k + 1)
+    _shot(page, "html-replay.png", tmp_path)
+
+    # the animation: the slider moves B to its solved position at that crank angle
+    page.click("#tab-anim")
+    page.focus("#phi")
+    for _ in range(30):
+        page.keyboard.press("ArrowRight")
+    assert page.get_attribute("#phi-out", "data-frame") == "30"
+    sol = study.solution
+    c, mu = sol.construction, sol.scales[Plan.POSITION]
+    phi = np.radians(doc["animation"]["phi_deg"][30])
+    solved = np.asarray(c.evaluate(np.array([phi]))[c.position("B")])[0] / mu
+    dot = page.locator("svg[data-panel='position'] circle[data-point='B']")
+    cx, cy = float(dot.get_attribute("cx")), float(dot.get_attribute("cy"))
+    assert (cx, -cy) == pytest.approx(tuple(solved), abs=0.006)
+    # on screen: the page's own transform (viewBox → pixels) puts the dot's centre there
+    screen = dot.evaluate("e => { const m = e.getScreenCTM(); const p = new DOMPoint("
+                          "+e.getAttribute('cx'), +e.getAttribute('cy')).matrixTransform(m);"
+                          " return [p.x, p.y]; }")
+    box = dot.bounding_box()
+    assert screen[0] == pytest.approx(box["x"] + box["width"] / 2, abs=1.0)
+    assert screen[1] == pytest.approx(box["y"] + box["height"] / 2, abs=1.0)
+    before = (cx, cy)
+    page.keyboard.press("ArrowRight")
+    moved = (float(dot.get_attribute("cx")), float(dot.get_attribute("cy")))
+    assert moved != before
+    _shot(page, "html-animation.png", tmp_path)
+
+    # the language switch: the page's words and the protocol in Russian
+    page.click("#tab-replay")
+    page.select_option("#language", "ru")
+    assert page.text_content("#tab-replay") == message("html.replay", "ru")
+    assert page.locator("#protocol li.current").text_content() == \
+        r["steps"][k + 1]["sentence"]["ru"]
+    assert page.evaluate("document.documentElement.lang") == "ru"
+    assert errors == []
+    page.close()
+
+
+def test_sheets_page_of_gears_in_chromium(browser, tmp_path):
+    """A kind without a replay yet shows its sheets; switching the language redraws them."""
+    path = write_page(solve_file(str(ROOT / "templates" / "planetary_two_row.toml")), tmp_path,
+                      "gears")
+    page = browser.new_page(viewport={"width": 1400, "height": 1000})
+    errors: list[str] = []
+    page.on("pageerror", lambda e: errors.append(str(e)))
+    page.on("console", lambda m: errors.append(m.text) if m.type == "error" else None)
+    page.goto(path.as_uri())
+    page.wait_for_selector("body[data-ready='1']")
+    assert page.is_visible("#s-svg") and not page.is_visible("#tab-replay")
+    first = page.locator("#s-svg text").all_text_contents()
+    assert len(first) > 50
+    other = "zh" if page.evaluate("document.documentElement.lang") != "zh" else "ru"
+    page.select_option("#language", other)
+    second = page.locator("#s-svg text").all_text_contents()
+    assert second != first
+    assert any(("\u4e00" <= c <= "\u9fff") if other == "zh" else ("а" <= c <= "я")
+               for t in second for c in t)
+    assert errors == []
+    _shot(page, "html-gears-sheets.png", tmp_path)
+    page.close()
