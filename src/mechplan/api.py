@@ -106,10 +106,12 @@ class Mechanism:
         return out
 
     def _check_plans(self, plans: Sequence[str] | None) -> tuple[str, ...]:
+        from .scene.centres import CENTRES
         from .scene.spec import PLANS
 
         chosen = tuple(plans) if plans is not None else self.scene.plans
-        unknown = [p for p in chosen if p not in PLANS]
+        # the instant centres are the study's (mechplan solve): the API's solution leaves them
+        unknown = [p for p in chosen if p not in (*PLANS, CENTRES)]
         if unknown or not chosen:
             raise SceneError(f"plans must be among {', '.join(PLANS)} (got {list(chosen)!r})",
                              file=self.scene.path)

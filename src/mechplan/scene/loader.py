@@ -12,6 +12,7 @@ from ..i18n import LANGUAGES
 from ..model.mechanism import GROUND, Drive, DriverKind, Guide, Link, Mechanism, Pair, PairKind
 from ..model.plans import Plan
 from ..model.structure import analyse
+from .centres import CENTRES, centres_of, plan_names
 from .document import parse_toml
 from .drivers import linear_assembly_default, linear_drive, linear_positions
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
@@ -28,7 +29,7 @@ from .textbook import parse_textbook
 
 TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions",
             "analysis", "gravity", "loads", "friction", "drawing", "title_block", "description",
-            "dynamics", "answers")
+            "dynamics", "answers", "centres")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 #: scale-factor keys of [drawing.scales] and their dimensions: each plan's, and the moments'
@@ -74,13 +75,16 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
     plans, interest = _analysis(top, all_points)
     if not top.has("analysis") and (masses or top.raw("loads")):
         plans = (*plans, "force")      # a scene with masses or loads asks for its forces
+    centres = centres_of(top, links)
+    if centres is not None and CENTRES not in plans:
+        plans = (*plans, CENTRES)      # a [centres] table asks for the instant centres
     return Scene(
         path=file, title=top.string("title", Path(file).stem) or "", language=language or "en",
         mechanism=mech, positions=positions, plans=plans, points_of_interest=interest,
         masses=masses, loads=loads_of(top, links, guides, masses), gravity=gravity_of(top),
         drawing=_drawing(top, len(positions.angles) or positions.count),
         assembly_phi=assembly_phi, textbook=parse_textbook(top.data, file, mech),
-        friction=friction_of(top))
+        friction=friction_of(top), centres=centres)
 
 
 def _ground(top: Table) -> tuple[dict[str, tuple[float, float]], dict[str, Guide]]:
@@ -406,8 +410,11 @@ def _analysis(top: Table, points: set[str]) -> tuple[tuple[str, ...], tuple[str,
         return ("position", "velocity", "acceleration"), ()
     t.check_keys(("plans", "points"))
     plans = t.raw("plans", ["position", "velocity", "acceleration"])
-    if not isinstance(plans, list) or any(p not in PLANS for p in plans):
-        raise t.error("plans", f"expected a list from {', '.join(PLANS)} (got {plans!r})")
+    if isinstance(plans, list):
+        plans = plan_names(plans)
+    if not isinstance(plans, list) or any(p not in (*PLANS, CENTRES) for p in plans):
+        raise t.error("plans", f"expected a list from {', '.join((*PLANS, CENTRES))} "
+                      f"(got {plans!r})")
     interest = t.raw("points", [])
     if not isinstance(interest, list):
         raise t.error("points", "expected a list of point names")

@@ -8,6 +8,7 @@ from ..model.loads import FrictionSpec, Gravity, LoadSpec, MassSpec
 from ..model.mechanism import Mechanism
 from ..model.plans import Plan
 from ..model.textbook import TextbookSpec
+from .centres import CentresSpec
 
 #: the plans a scene may ask for, by name
 PLANS = tuple(plan.value for plan in Plan)
@@ -58,5 +59,7 @@ class Scene:
     gravity: Gravity
     drawing: DrawingSpec
     assembly_phi: float = 0.0
+    #: the [centres] table: centrodes, acceleration poles, inflection circles of chosen links
+    centres: CentresSpec | None = None
     textbook: TextbookSpec | None = None     # the [answers] section: textbook answers asked
     friction: FrictionSpec | None = None      # [friction]: friction in the pairs (docs/forces.md)

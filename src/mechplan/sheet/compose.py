@@ -135,7 +135,12 @@ def _kinematics_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room)
             ap = _marked(vector_plan(c, sol.ev, k, Plan.ACCELERATION, mu[Plan.ACCELERATION],
                                      lang, title), sol, k, Plan.ACCELERATION, lang)
             panels += split_tables(ap, title, tables_apart(c, Plan.ACCELERATION, r), r)
-    return panels + kinematic_diagrams(sol, lang, r) + textbook_panels(sol, lang)
+    panels += kinematic_diagrams(sol, lang, r) + textbook_panels(sol, lang)
+    if "centres" in sol.plans and chosen:      # after the plans: they keep their places
+        from .centres import centres_panels
+
+        panels += centres_panels(sol, chosen[0], mu[Plan.POSITION], lang, r)
+    return panels
 
 
 def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> list[Panel]:

@@ -27,6 +27,11 @@ class MechanismStudy:
         from ..report import text_report
 
         text = text_report(self.solution, language)
+        if "centres" in self.solution.plans:
+            from .centres_report import centres_report
+
+            text = (text.rstrip("\n") + "\n\n"
+                    + centres_report(self.solution, language or self.solution.scene.language))
         if self.dynamics is not None:
             from .machine import dynamics_report
 
@@ -74,6 +79,10 @@ class MechanismStudy:
         from ..solve import to_json
 
         doc = to_json(self.solution)
+        if "centres" in self.solution.plans:
+            from .centres import centres_json
+
+            doc["centres"] = centres_json(self.solution)
         if self.dynamics is not None:
             from .machine import dynamics_json
 
