@@ -1,0 +1,93 @@
+"""Parse a linkage-synthesis scene (``kind = "synthesis"``) into a
+:class:`~mechplan.model.synthesis.SynthesisSpec`."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
+from ..errors import SceneError
+from ..i18n import LANGUAGES, Text
+from ..model.synthesis import PROBLEMS, SynthesisSpec
+from .document import parse_toml
+from .reader import Table
+
+TOP_KEYS = ("kind", "title", "language", "description", "synthesis", "drive", "positions",
+            "drawing", "title_block")
+#: the keys each problem takes besides ``problem``, ``K`` and ``gamma_min``
+PROBLEM_KEYS = {
+    "crank_rocker": ("swing", "rocker", "frame", "frame_angle"),
+    "slider_crank": ("stroke", "offset", "lambda"),
+    "coulisse": ("frame", "crank", "coulisse", "stroke"),
+    "shaper": ("frame", "crank", "stroke", "rod"),
+}
+LENGTHS = ("rocker", "frame", "stroke", "offset", "crank", "coulisse", "rod")
+MAX_K = 1e3
+
+
+def _error(t: Table, key: str, msgid: str, **values: str) -> SceneError:
+    return t.error(key, Text(f"synth.error.{msgid}", values))
+
+
+def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
+    """Parse the text of a synthesis scene; every error names the file and the key."""
+    top = Table(parse_toml(text, file), "", file)
+    top.check_keys(TOP_KEYS)
+    s = top.table("synthesis", required=True)
+    assert s is not None
+    problem = s.string("problem", required=True, choices=PROBLEMS) or ""
+    s.check_keys(("problem", "K", "gamma_min") + PROBLEM_KEYS[problem])
+    k_raw = s.raw("K", required=True)
+    k = s.quantity("K", "dimensionless", required=True) or 0.0
+    if not 1.0 <= k < MAX_K or not math.isfinite(k):
+        raise _error(s, "K", "k_range", value=repr(k_raw))
+    values: dict[str, float | None] = {}
+    for key in LENGTHS:
+        if key in PROBLEM_KEYS[problem]:
+            values[key] = s.quantity(key, "length", positive=True)
+    swing = s.quantity("swing", "angle", positive=True) if problem == "crank_rocker" else None
+    frame_angle = (s.quantity("frame_angle", "angle", positive=True)
+                   if problem == "crank_rocker" else None)
+    if values.get("frame") is not None and frame_angle is not None:
+        raise _error(s, "frame_angle", "frame_or_angle")
+    lam = s.quantity("lambda", "dimensionless", positive=True) if problem == "slider_crank" \
+        else None
+    if values.get("offset") is not None and lam is not None:
+        raise _error(s, "lambda", "offset_or_lambda")
+    gamma = s.quantity("gamma_min", "angle", positive=True)
+    speed, sense = 10.0, 1
+    d = top.table("drive")
+    if d is not None:
+        d.check_keys(("speed", "sense"))
+        speed = d.quantity("speed", "angular_velocity", 10.0, positive=True) or 10.0
+        sense = 1 if d.string("sense", "ccw", choices=("ccw", "cw")) == "ccw" else -1
+    count = 12
+    p = top.table("positions")
+    if p is not None:
+        p.check_keys(("count",))
+        count = p.raw("count", 12)
+        if not isinstance(count, int) or isinstance(count, bool) or not 1 <= count <= 360:
+            raise _error(p, "count", "count", value=repr(count))
+    sheet = standard = None
+    dr = top.table("drawing")
+    if dr is not None:
+        dr.check_keys(("sheet", "standard"))
+        sheet = dr.string("sheet", None, choices=SHEETS)
+        standard = dr.string("standard", None, choices=STANDARDS)
+    fields: dict[str, str] = {}
+    tb = top.table("title_block")
+    if tb is not None:
+        tb.check_keys(TITLE_BLOCK_FIELDS)
+        for key in tb.data:
+            fields[key] = tb.string(key) or ""
+    return SynthesisSpec(
+        problem=problem, k=k, title=top.string("title", "") or "",
+        language=top.string("language", "en", choices=LANGUAGES) or "en", path=file,
+        swing=swing, rocker=values.get("rocker"), frame=values.get("frame"),
+        frame_angle=frame_angle, stroke=values.get("stroke"), offset=values.get("offset"),
+        rod_ratio=lam, crank=values.get("crank"), coulisse=values.get("coulisse"),
+        rod=values.get("rod"), gamma_limit=gamma, speed=speed, sense=sense, positions=count,
+        sheet=sheet, standard=standard, title_block=fields)
+
+
