@@ -1,0 +1,251 @@
+"""Linkage synthesis from the time ratio K (issue 31): closed forms, the round trip through the
+analysis, a textbook answer, infeasible requests, the hand-off scene, the sheet."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from mechplan.errors import SceneError
+from mechplan.studies import solve_text
+from mechplan.studies.synthesis import SynthesisStudy
+
+DEG = math.pi / 180
+
+
+def scene(problem: str, **keys: object) -> str:
+    lines = ['kind = "synthesis"', "[synthesis]", f'problem = "{problem}"']
+    lines += [f"{k} = {v!r}" if not isinstance(v, str) else f'{k} = "{v}"'
+              for k, v in keys.items()]
+    return "\n".join(lines) + "\n"
+
+
+def study(problem: str, **keys: object) -> SynthesisStudy:
+    s = solve_text(scene(problem, **keys), "t.toml")
+    assert isinstance(s, SynthesisStudy)
+    return s
+
+
+def k_of(theta: float) -> float:
+    return (math.pi + theta) / (math.pi - theta)
+
+
+@pytest.mark.parametrize("k, theta_deg", [(1.2, 180 * 0.2 / 2.2), (1.4, 30.0), (1.6, 180 * 0.6 / 2.6),
+                                          (2.0, 60.0)])
+def test_theta_from_k_is_the_closed_form(k, theta_deg):
+    s = study("coulisse", K=k, frame="100 mm", coulisse="500 mm")
+    assert s.design.theta == pytest.approx(theta_deg * DEG, abs=1e-14)
+
+
+CRANK_ROCKERS = [
+    dict(K=1.2, swing="45 deg", rocker="300 mm"),
+    dict(K=1.4, swing="40 deg", rocker="300 mm", frame="250 mm"),
+    dict(K=1.1, swing="60 deg", rocker="120 mm"),
+    dict(K=1.5, swing="30 deg", rocker="200 mm", frame_angle="20 deg"),
+]
+
+
+@pytest.mark.parametrize("keys", CRANK_ROCKERS)
+def test_crank_rocker_closed_forms(keys):
+    """Independently of the circle: in the triangles A D C at the two dead centres (AC = l ± r),
+    the angle at A between them is θ and the angle at D is ψ (law of cosines)."""
+    s = study("crank_rocker", **keys)
+    n = s.design.lengths
+    r, l_, c, d = n["r"], n["l"], n["c"], n["d"]
+
+    def at_a(ac):
+        return math.acos((d * d + ac * ac - c * c) / (2 * d * ac))
+
+    def at_d(ac):
+        return math.acos((d * d + c * c - ac * ac) / (2 * d * c))
+    theta = abs(at_a(l_ + r) - at_a(l_ - r))
+    assert k_of(theta) == pytest.approx(keys["K"], abs=1e-12)
+    assert abs(at_d(l_ + r) - at_d(l_ - r)) == pytest.approx(
+        float(keys["swing"].split()[0]) * DEG, abs=1e-12)
+    assert c == pytest.approx(float(keys["rocker"].split()[0]) / 1e3, abs=1e-15)
+    if "frame_angle" in keys:      # ψ0: at D between the frame line and DC1 (folded)
+        assert at_d(l_ - r) == pytest.approx(float(keys["frame_angle"].split()[0]) * DEG,
+                                             abs=1e-12)
+    if "frame" in keys:
+        assert d == pytest.approx(float(keys["frame"].split()[0]) / 1e3, abs=1e-12)
+    # Grashof with the crank shortest: a crank-rocker
+    v = sorted([r, l_, c, d])
+    assert v[0] == r and v[0] + v[3] <= v[1] + v[2]
+    # the smallest transmission angle, closed form at φ = 0 and 180°
+    mus = [math.acos((l_ ** 2 + c ** 2 - bd ** 2) / (2 * l_ * c)) for bd in (d - r, d + r)]
+    gamma = min(min(m, math.pi - m) for m in mus)
+    assert s.design.conditions["gamma_min"] == pytest.approx(gamma, abs=1e-12)
+
+
+@pytest.mark.parametrize("keys", CRANK_ROCKERS)
+def test_crank_rocker_round_trip_through_the_analysis(keys):
+    """The produced scene, solved by mechplan: the rocker's extremes give back K and ψ."""
+    s = study("crank_rocker", **keys)
+    assert s.check.k == pytest.approx(keys["K"], abs=1e-9)
+    assert s.check.output == pytest.approx(float(keys["swing"].split()[0]) * DEG, abs=1e-9)
+    # γ over 3600 engine positions: its minimum is the closed form's (it is at φ = 0 or 180°)
+    assert s.check.gamma_min == pytest.approx(s.design.conditions["gamma_min"], abs=1e-9)
+    # the dead centres of the report are the extremes the analysis finds
+    assert sorted(s.check.extremes_phi) == pytest.approx(
+        sorted(s.design.conditions["dead_centres_phi"]), abs=1e-9)
+
+
+def test_best_crank_rocker_beats_every_member_of_the_family():
+    s = study("crank_rocker", K=1.2, swing="45 deg", rocker="300 mm")
+    best = s.design.conditions["gamma_min"]
+    family = [m.gamma_min for m in s.design.family if m.valid]
+    assert len(family) > 40 and best >= max(family) - 1e-12
+    # γmin falls toward zero at both ends of the arc
+    assert family[0] < best / 2 and family[-1] < best / 10
+
+
+SLIDERS = [dict(K=1.15, stroke="160 mm"), dict(K=1.15, stroke="160 mm", offset="30 mm"),
+           dict(K=1.3, stroke="200 mm", **{"lambda": 0.3}), dict(K=1.0, stroke="160 mm",
+                                                                **{"lambda": 0.25})]
+
+
+@pytest.mark.parametrize("keys", SLIDERS)
+def test_slider_crank_closed_forms_and_round_trip(keys):
+    s = study("slider_crank", **keys)
+    n = s.design.lengths
+    r, l_, e = n["r"], n["l"], n["e"]
+    h = float(keys["stroke"].split()[0]) / 1e3
+    # H = √((l+r)² − e²) − √((l−r)² − e²) and θ = asin(e/(l−r)) − asin(e/(l+r))
+    assert math.sqrt((l_ + r) ** 2 - e * e) - math.sqrt((l_ - r) ** 2 - e * e) == \
+        pytest.approx(h, abs=1e-12)
+    theta = math.asin(e / (l_ - r)) - math.asin(e / (l_ + r))
+    assert k_of(theta) == pytest.approx(keys["K"], abs=1e-12)
+    if "offset" in keys:
+        assert e == pytest.approx(0.03, abs=1e-15)
+    if "lambda" in keys:
+        assert r / l_ == pytest.approx(keys["lambda"], abs=1e-12)
+    if keys["K"] == 1.0:
+        assert e == 0.0 and r == pytest.approx(h / 2, abs=1e-15)
+    assert s.design.conditions["gamma_min"] == pytest.approx(
+        math.pi / 2 - math.asin((e + r) / l_), abs=1e-12)
+    assert s.check.k == pytest.approx(keys["K"], abs=1e-9)
+    assert s.check.output == pytest.approx(h, abs=1e-9)
+    assert s.check.gamma_min == pytest.approx(s.design.conditions["gamma_min"], abs=1e-9)
+
+
+def test_best_offset_slider_crank_maximises_gamma():
+    best = study("slider_crank", K=1.15, stroke="160 mm")
+    g = best.design.conditions["gamma_min"]
+    for e_mm in (5, 20, 40, 60, 80, 100):
+        other = study("slider_crank", K=1.15, stroke="160 mm", offset=f"{e_mm} mm")
+        assert other.design.conditions["gamma_min"] <= g + 1e-12
+
+
+def test_coulisse_textbook_example():
+    """机械设计基础 exercise 2-8 (quoted at howoman.com/ptwg71tf/482.html): a swinging-coulisse
+    mechanism with frame 100 mm and K = 1.4 — printed answers θ = ψ = 30°, crank l1 = 26 mm."""
+    s = study("coulisse", K=1.4, frame="100 mm", coulisse="300 mm")
+    assert math.degrees(s.design.theta) == pytest.approx(30.0, abs=1e-12)
+    assert s.design.lengths["r"] * 1e3 == pytest.approx(26.0, abs=0.5)
+    assert s.design.lengths["r"] == pytest.approx(0.1 * math.sin(15 * DEG), abs=1e-15)
+    assert s.check.k == pytest.approx(1.4, abs=1e-9)
+    assert s.check.output == pytest.approx(30 * DEG, abs=1e-9)
+
+
+@pytest.mark.parametrize("keys", [dict(K=1.6, frame="300 mm", stroke="400 mm"),
+                                  dict(K=1.8, crank="90 mm", stroke="500 mm", rod="200 mm")])
+def test_shaper_round_trip_and_pressure_angle(keys):
+    s = study("shaper", **keys)
+    n = s.design.lengths
+    psi = s.design.theta
+    assert 2 * n["L"] * math.sin(psi / 2) == pytest.approx(
+        float(keys["stroke"].split()[0]) / 1e3, abs=1e-12)
+    assert n["r"] == pytest.approx(n["a"] * math.sin(psi / 2), abs=1e-15)
+    assert s.check.k == pytest.approx(keys["K"], abs=1e-9)
+    assert s.check.output == pytest.approx(float(keys["stroke"].split()[0]) / 1e3, abs=1e-9)
+    # the ram line halfway: the largest deviation of B is L(1 − cos(ψ/2))/2, γ = 90° − α
+    dev = n["L"] * (1 - math.cos(psi / 2)) / 2
+    assert s.design.conditions["pressure_max"] == pytest.approx(math.asin(dev / n["rod"]),
+                                                               abs=1e-12)
+    assert s.check.gamma_min == pytest.approx(s.design.conditions["gamma_min"], abs=1e-6)
+
+
+@pytest.mark.parametrize("problem, keys, key", [
+    ("crank_rocker", dict(K=1.0, swing="45 deg", rocker="300 mm"), "synthesis.K"),
+    ("crank_rocker", dict(K=1.4, swing="40 deg", rocker="300 mm", frame="400 mm"),
+     "synthesis.frame"),
+    ("crank_rocker", dict(K=1.2, swing="45 deg", rocker="300 mm", gamma_min="50 deg"),
+     "synthesis.gamma_min"),
+    ("crank_rocker", dict(K=1.2, swing="45 deg"), "synthesis.rocker"),
+    ("crank_rocker", dict(K=1.2, swing="200 deg", rocker="300 mm"), "synthesis.swing"),
+    ("slider_crank", dict(K=1.15, stroke="160 mm", offset="900 mm"), "synthesis.offset"),
+    ("slider_crank", dict(K=1.0, stroke="160 mm"), "synthesis.lambda"),
+    ("slider_crank", dict(K=1.3, stroke="160 mm", **{"lambda": 0.01}), "synthesis.lambda"),
+    ("coulisse", dict(K=1.6, frame="300 mm", coulisse="350 mm"), "synthesis.coulisse"),
+    ("coulisse", dict(K=1.6, frame="300 mm", crank="50 mm", coulisse="900 mm"),
+     "synthesis.crank"),
+    ("shaper", dict(K=1.6, frame="300 mm", stroke="400 mm", rod="5 mm"), "synthesis.rod"),
+    ("crank_rocker", dict(K=0.5, swing="45 deg", rocker="300 mm"), "synthesis.K"),
+])
+def test_infeasible_requests_name_the_key(problem, keys, key):
+    with pytest.raises(SceneError) as err:
+        study(problem, **keys)
+    assert err.value.key == key
+    assert "t.toml" in str(err.value)
+
+
+def test_errors_speak_every_language():
+    with pytest.raises(SceneError) as err:
+        study("crank_rocker", K=1.4, swing="40 deg", rocker="300 mm", frame="400 mm")
+    from mechplan.cli import say_error
+
+    texts = {lang: say_error(err.value, lang) for lang in ("en", "ru", "vi", "zh")}
+    assert all("400" in t and "synthesis.frame" in t for t in texts.values())
+    assert len(set(texts.values())) == 4
+
+
+def test_written_scene_is_taken_by_solve_and_draw(tmp_path):
+    """The hand-off: the scene file is read by the loader as it is and drawn."""
+    from mechplan.studies import solve_file
+
+    s = study("crank_rocker", K=1.2, swing="45 deg", rocker="300 mm")
+    [path] = s.write_files(tmp_path, "cr")
+    m = solve_file(path)
+    assert m.report().strip()
+    assert m.sheets(None, None, None, "cr-mechanism")
+
+
+def test_produced_scene_passes_the_checker_invariant(tmp_path):
+    """mechplan's own sheet of the synthesised crank-rocker checks clean (0 wrong, 0 missing)."""
+    from mechplan.check import Options, check
+    from mechplan.check.report import MISSING, WRONG
+    from mechplan.errors import CheckError
+    from mechplan.render.dxf import to_bytes
+    from mechplan.scene import load_scene
+    from mechplan.sheet.compose import compose
+    from mechplan.solve import solve
+
+    s = study("crank_rocker", K=1.2, swing="45 deg", rocker="300 mm")
+    [path] = s.write_files(tmp_path, "cr")
+    sc = load_scene(path)
+    comp = compose(solve(sc), "A1", "iso", "en", name="cr")
+    checked = 0
+    for i, sheet in enumerate(comp.sheets):
+        dxf = tmp_path / f"cr-{i}.dxf"
+        dxf.write_bytes(to_bytes(sheet))
+        try:
+            report = check(sc, dxf, Options())
+        except CheckError:          # "no plan on the sheet"
+            continue
+        for p in report.plans:
+            checked += 1
+            assert not [x.name for x in p.segments if x.verdict in (WRONG, MISSING)], p.name
+    assert checked
+
+
+def test_report_json_and_sheet_in_every_language():
+    s = study("crank_rocker", K=1.2, swing="45 deg", rocker="300 mm")
+    doc = s.to_json()
+    assert doc["round_trip"]["K"] == pytest.approx(1.2, abs=1e-9)
+    assert doc["scene"]["links"]["1"]["lengths"]["AB"].endswith(" mm")
+    for lang in ("en", "ru", "vi", "zh"):
+        text = s.report(lang)
+        assert "θ = 180°·(K − 1)/(K + 1)" in text
+        sheets = s.sheets("A3", "iso", lang, "cr")
+        assert sheets
