@@ -31,18 +31,18 @@ def k_of(theta: float) -> float:
     return (math.pi + theta) / (math.pi - theta)
 
 
-@pytest.mark.parametrize("k, theta_deg", [(1.2, 180 * 0.2 / 2.2), (1.4, 30.0), (1.6, 180 * 0.6 / 2.6),
-                                          (2.0, 60.0)])
+@pytest.mark.parametrize("k, theta_deg", [(1.2, 180 * 0.2 / 2.2), (1.4, 30.0),
+                                          (1.6, 180 * 0.6 / 2.6), (2.0, 60.0)])
 def test_theta_from_k_is_the_closed_form(k, theta_deg):
     s = study("coulisse", K=k, frame="100 mm", coulisse="500 mm")
     assert s.design.theta == pytest.approx(theta_deg * DEG, abs=1e-14)
 
 
 CRANK_ROCKERS = [
-    dict(K=1.2, swing="45 deg", rocker="300 mm"),
-    dict(K=1.4, swing="40 deg", rocker="300 mm", frame="250 mm"),
-    dict(K=1.1, swing="60 deg", rocker="120 mm"),
-    dict(K=1.5, swing="30 deg", rocker="200 mm", frame_angle="20 deg"),
+    {'K': 1.2, 'swing': "45 deg", 'rocker': "300 mm"},
+    {'K': 1.4, 'swing': "40 deg", 'rocker': "300 mm", 'frame': "250 mm"},
+    {'K': 1.1, 'swing': "60 deg", 'rocker': "120 mm"},
+    {'K': 1.5, 'swing': "30 deg", 'rocker': "200 mm", 'frame_angle': "20 deg"},
 ]
 
 
@@ -91,6 +91,24 @@ def test_crank_rocker_round_trip_through_the_analysis(keys):
         sorted(s.design.conditions["dead_centres_phi"]), abs=1e-9)
 
 
+@pytest.mark.parametrize("problem, keys, subject", [
+    ("crank_rocker", {"K": 1.3, "swing": "50 deg", "rocker": "250 mm"}, "dead_centres_phi"),
+    ("slider_crank", {"K": 1.2, "stroke": "100 mm"}, "dead_centres_phi"),
+    ("coulisse", {"K": 1.5, "frame": "200 mm", "coulisse": "500 mm"}, "dead_centres_phi")])
+@pytest.mark.parametrize("sense", ["ccw", "cw"])
+def test_reported_crank_angles_are_the_analysis_angles(problem, keys, subject, sense):
+    """Dead centres and γmin's place are crank angles as `mechplan solve` counts them."""
+    text = scene(problem, **keys) + f'[drive]\nsense = "{sense}"\n'
+    s = solve_text(text, "t.toml")
+    assert sorted(s.check.extremes_phi) == pytest.approx(
+        sorted(s.design.conditions[subject]), abs=1e-9)
+    assert s.check.k == pytest.approx(keys["K"], abs=1e-9)
+    at = s.design.conditions.get("gamma_min_at_phi", s.design.conditions.get(
+        "pressure_max_at_phi"))
+    if at is not None:
+        assert math.cos(s.check.gamma_phi - at) == pytest.approx(1.0, abs=1e-9)
+
+
 def test_best_crank_rocker_beats_every_member_of_the_family():
     s = study("crank_rocker", K=1.2, swing="45 deg", rocker="300 mm")
     best = s.design.conditions["gamma_min"]
@@ -100,7 +118,7 @@ def test_best_crank_rocker_beats_every_member_of_the_family():
     assert family[0] < best / 2 and family[-1] < best / 10
 
 
-SLIDERS = [dict(K=1.15, stroke="160 mm"), dict(K=1.15, stroke="160 mm", offset="30 mm"),
+SLIDERS = [{'K': 1.15, 'stroke': "160 mm"}, {'K': 1.15, 'stroke': "160 mm", 'offset': "30 mm"},
            dict(K=1.3, stroke="200 mm", **{"lambda": 0.3}), dict(K=1.0, stroke="160 mm",
                                                                 **{"lambda": 0.25})]
 
@@ -148,8 +166,9 @@ def test_coulisse_textbook_example():
     assert s.check.output == pytest.approx(30 * DEG, abs=1e-9)
 
 
-@pytest.mark.parametrize("keys", [dict(K=1.6, frame="300 mm", stroke="400 mm"),
-                                  dict(K=1.8, crank="90 mm", stroke="500 mm", rod="200 mm")])
+@pytest.mark.parametrize("keys", [{'K': 1.6, 'frame': "300 mm", 'stroke': "400 mm"},
+                                  {'K': 1.8, 'crank': "90 mm", 'stroke': "500 mm",
+                                   'rod': "200 mm"}])
 def test_shaper_round_trip_and_pressure_angle(keys):
     s = study("shaper", **keys)
     n = s.design.lengths
@@ -167,21 +186,21 @@ def test_shaper_round_trip_and_pressure_angle(keys):
 
 
 @pytest.mark.parametrize("problem, keys, key", [
-    ("crank_rocker", dict(K=1.0, swing="45 deg", rocker="300 mm"), "synthesis.K"),
-    ("crank_rocker", dict(K=1.4, swing="40 deg", rocker="300 mm", frame="400 mm"),
+    ("crank_rocker", {'K': 1.0, 'swing': "45 deg", 'rocker': "300 mm"}, "synthesis.K"),
+    ("crank_rocker", {'K': 1.4, 'swing': "40 deg", 'rocker': "300 mm", 'frame': "400 mm"},
      "synthesis.frame"),
-    ("crank_rocker", dict(K=1.2, swing="45 deg", rocker="300 mm", gamma_min="50 deg"),
+    ("crank_rocker", {'K': 1.2, 'swing': "45 deg", 'rocker': "300 mm", 'gamma_min': "50 deg"},
      "synthesis.gamma_min"),
-    ("crank_rocker", dict(K=1.2, swing="45 deg"), "synthesis.rocker"),
-    ("crank_rocker", dict(K=1.2, swing="200 deg", rocker="300 mm"), "synthesis.swing"),
-    ("slider_crank", dict(K=1.15, stroke="160 mm", offset="900 mm"), "synthesis.offset"),
-    ("slider_crank", dict(K=1.0, stroke="160 mm"), "synthesis.lambda"),
+    ("crank_rocker", {'K': 1.2, 'swing': "45 deg"}, "synthesis.rocker"),
+    ("crank_rocker", {'K': 1.2, 'swing': "200 deg", 'rocker': "300 mm"}, "synthesis.swing"),
+    ("slider_crank", {'K': 1.15, 'stroke': "160 mm", 'offset': "900 mm"}, "synthesis.offset"),
+    ("slider_crank", {'K': 1.0, 'stroke': "160 mm"}, "synthesis.lambda"),
     ("slider_crank", dict(K=1.3, stroke="160 mm", **{"lambda": 0.01}), "synthesis.lambda"),
-    ("coulisse", dict(K=1.6, frame="300 mm", coulisse="350 mm"), "synthesis.coulisse"),
-    ("coulisse", dict(K=1.6, frame="300 mm", crank="50 mm", coulisse="900 mm"),
+    ("coulisse", {'K': 1.6, 'frame': "300 mm", 'coulisse': "350 mm"}, "synthesis.coulisse"),
+    ("coulisse", {'K': 1.6, 'frame': "300 mm", 'crank': "50 mm", 'coulisse': "900 mm"},
      "synthesis.crank"),
-    ("shaper", dict(K=1.6, frame="300 mm", stroke="400 mm", rod="5 mm"), "synthesis.rod"),
-    ("crank_rocker", dict(K=0.5, swing="45 deg", rocker="300 mm"), "synthesis.K"),
+    ("shaper", {'K': 1.6, 'frame': "300 mm", 'stroke': "400 mm", 'rod': "5 mm"}, "synthesis.rod"),
+    ("crank_rocker", {'K': 0.5, 'swing': "45 deg", 'rocker': "300 mm"}, "synthesis.K"),
 ])
 def test_infeasible_requests_name_the_key(problem, keys, key):
     with pytest.raises(SceneError) as err:

@@ -4,7 +4,6 @@
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
 from ..errors import SceneError

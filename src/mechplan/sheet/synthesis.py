@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
 from ..construct.scale import round_scale
 from ..drafting.primitives import Circle, HAlign, Line, Primitive, Role, Sheet, Table, Text, VAlign
 from ..i18n import message, significant

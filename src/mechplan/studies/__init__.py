@@ -1,9 +1,10 @@
 """One entry for every kind of scene: read it, solve what it asks for, report, JSON and sheets.
 
 A scene file says what it describes with its top-level ``kind`` key: ``"mechanism"`` (the default: a
-linkage, optionally with ``[dynamics]``/``[engine]`` sections), ``"cam"``, ``"gears"`` or
-``"engine"`` or ``"synthesis"`` (a linkage from K and its stroke or swing). Each kind is solved by its own package and presented by its module here
-(``studies/<kind>.py``); the CLI and the public API only see :class:`Study`.
+linkage, optionally with ``[dynamics]``/``[engine]`` sections), ``"cam"``, ``"gears"``,
+``"engine"`` or ``"synthesis"`` (a linkage from K and its stroke or swing). Each kind is solved by
+its own package and presented by its module here (``studies/<kind>.py``); the CLI and the public
+API only see :class:`Study`.
 """
 
 from __future__ import annotations

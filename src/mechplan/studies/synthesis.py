@@ -138,11 +138,17 @@ class SynthesisStudy:
                                  margin=number(c["grashof_margin"] * 1e3, 3, lang)))
         elif d.problem == "coulisse":
             lines.append(message("synth.result.coulisse_angle", lang))
-        if "gamma_min" in c:
-            at = c.get("gamma_min_at_phi", c.get("pressure_max_at_phi", 0.0))
+        if "gamma_min_at_phi" in c:
             lines.append(message("synth.result.gamma", lang,
                                  gamma=number(deg(c["gamma_min"]), 3, lang),
-                                 phi=number(deg(at), 1, lang)))
+                                 phi=number(deg(c["gamma_min_at_phi"]), 1, lang)))
+        elif "pressure_max" in c:
+            kind = "slider" if d.problem == "slider_crank" else "shaper"
+            values = {"phi": number(deg(c["pressure_max_at_phi"]), 1, lang)} \
+                if kind == "slider" else {}
+            lines.append(message(f"synth.result.gamma_{kind}", lang,
+                                 gamma=number(deg(c["gamma_min"]), 3, lang),
+                                 alpha=number(deg(c["pressure_max"]), 3, lang), **values))
         lines.append(message("synth.result.dead", lang,
                              p1=number(deg(c["dead_centres_phi"][0]), 3, lang),
                              p2=number(deg(c["dead_centres_phi"][1]), 3, lang)))

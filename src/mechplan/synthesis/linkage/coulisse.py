@@ -67,8 +67,10 @@ def coulisse(spec: SynthesisSpec) -> LinkageDesign:
     A1 = g.polar(r, math.pi + psi / 2)
     B2 = g.add(O3, (big_l * half, big_l * cos_half))
     B1 = g.add(O3, (-big_l * half, big_l * cos_half))
-    phi2, phi1 = -psi / 2 % (2 * math.pi), (math.pi + psi / 2) % (2 * math.pi)
-    sweep = ((phi1 - phi2) * spec.sense) % (2 * math.pi)
+    # crank angles as the analysis counts them: from +x in the sense of rotation
+    phi2 = (-spec.sense * psi / 2) % (2 * math.pi)
+    phi1 = (spec.sense * (math.pi + psi / 2)) % (2 * math.pi)
+    sweep = (phi1 - phi2) % (2 * math.pi)
     ground: dict[str, object] = {"O1": ["0 mm", "0 mm"], "O3": ["0 mm", mm(-a)]}
     links: dict[str, object] = {
         "1": {"name": link_name("crank", spec), "lengths": {"O1A": mm(r)}},

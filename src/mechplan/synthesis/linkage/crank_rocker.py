@@ -152,9 +152,10 @@ def crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
     B_ext = g.add(A, g.mul(g.unit(g.sub(circ.C2, A)), r))
     B_fold = g.sub(A, g.mul(g.unit(g.sub(circ.C1, A)), r))
     side = g.cross(g.sub(circ.D, B_ext), g.sub(circ.C2, B_ext))
-    phi_ext = g.angle_of(moved(B_ext)) % (2 * math.pi)
-    phi_fold = g.angle_of(moved(B_fold)) % (2 * math.pi)
-    sweep = ((phi_fold - phi_ext) * spec.sense) % (2 * math.pi)    # ext → fold, driven sense
+    # crank angles as the analysis counts them: from +x in the sense of rotation
+    phi_ext = (spec.sense * g.angle_of(moved(B_ext))) % (2 * math.pi)
+    phi_fold = (spec.sense * g.angle_of(moved(B_fold))) % (2 * math.pi)
+    sweep = (phi_fold - phi_ext) % (2 * math.pi)                   # ext → fold, driven sense
     scene = base(spec, {"A": ["0 mm", "0 mm"], "D": [mm(d), "0 mm"]}, {
         "1": {"name": link_name("crank", spec), "lengths": {"AB": mm(r)}},
         "2": {"name": link_name("coupler", spec), "lengths": {"BC": mm(l_)}},
@@ -166,7 +167,7 @@ def crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
     for i in range(FAMILY_SAMPLES):
         ti = circ.t_lo + (circ.t_hi - circ.t_lo) * (i + 0.5) / FAMILY_SAMPLES
         gm = circ.gamma(ti)
-        family.append(Candidate(ti, circ.lengths(ti), gm, gm == gm))
+        family.append(Candidate(ti, circ.lengths(ti), gm, not math.isnan(gm)))
     strokes = [
         Stroke("point", circ.D, role="given", label="D"),
         Stroke("line", circ.D, circ.C1, role="given", label="C1"),

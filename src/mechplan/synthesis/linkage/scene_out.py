@@ -26,7 +26,7 @@ def link_name(role: str, spec: SynthesisSpec) -> str:
 
 
 def base(spec: SynthesisSpec, ground: dict[str, Any], links: dict[str, Any],
-         start: dict[str, str], assembly: dict[str, str] | None = None) -> dict[str, Any]:
+         start: dict[str, str], assembly: dict[str, Any] | None = None) -> dict[str, Any]:
     """A whole scene: title, language, ground, links, drive (link 1), assembly, positions."""
     scene: dict[str, Any] = {
         "title": spec.title or message(f"synth.problem.{spec.problem}", spec.language),

@@ -83,14 +83,14 @@ def _pick(spec: SynthesisSpec, circ: _Circle) -> tuple[float, float, float, Step
         return spec.offset, n["r"], n["l"], Step("synth.sc.choice_offset", {"e": spec.offset})
     eps = 1e-12 * circ.e_max
     if spec.rod_ratio is not None:
+        lam = spec.rod_ratio
         lo = math.tan(circ.theta / 2) ** 2
-        if not lo < spec.rod_ratio < 1.0:
-            raise _error(spec, "lambda", "lambda_range", value=repr(spec.rod_ratio),
-                         lo=repr(round(lo, 6)))
-        e = g.bisect(lambda e: circ.lengths(e)["r"] / circ.lengths(e)["l"] - spec.rod_ratio,
+        if not lo < lam < 1.0:
+            raise _error(spec, "lambda", "lambda_range", value=repr(lam), lo=repr(round(lo, 6)))
+        e = g.bisect(lambda e: circ.lengths(e)["r"] / circ.lengths(e)["l"] - lam,
                      eps, circ.e_max - eps)
         n = circ.lengths(e)
-        return e, n["r"], n["l"], Step("synth.sc.choice_lambda", {"lam": spec.rod_ratio})
+        return e, n["r"], n["l"], Step("synth.sc.choice_lambda", {"lam": lam})
     e = g.maximise(circ.gamma, eps, circ.e_max - eps)
     n = circ.lengths(e)
     return e, n["r"], n["l"], Step("synth.sc.choice_best", {"gamma": circ.gamma(e)})
@@ -106,7 +106,7 @@ def slider_crank(spec: SynthesisSpec) -> LinkageDesign:
     e, r, l_, choice = _pick(spec, circ)
     A = circ.pivot(e)
     alpha = pressure_max(r, l_, e)
-    if alpha != alpha:
+    if math.isnan(alpha):
         raise _error(spec, "K", "no_crank", value=repr(spec.k))
     gamma_min = math.pi / 2 - alpha
     if spec.gamma_limit is not None and not gamma_min >= spec.gamma_limit:
@@ -121,9 +121,10 @@ def slider_crank(spec: SynthesisSpec) -> LinkageDesign:
     def moved(p: g.Vec) -> g.Vec:
         return g.sub(p, A)
 
-    phi_ext = g.angle_of(moved(B_ext)) % (2 * math.pi)
-    phi_fold = g.angle_of(moved(B_fold)) % (2 * math.pi)
-    sweep = ((phi_fold - phi_ext) * spec.sense) % (2 * math.pi)
+    # crank angles as the analysis counts them: from +x in the sense of rotation
+    phi_ext = (spec.sense * g.angle_of(moved(B_ext))) % (2 * math.pi)
+    phi_fold = (spec.sense * g.angle_of(moved(B_fold))) % (2 * math.pi)
+    sweep = (phi_fold - phi_ext) % (2 * math.pi)
     c_ext = moved(circ.C2)
     scene = base(spec, {"A": ["0 mm", "0 mm"], "G": ["0 mm", mm(-e)],
                         "guides": {"g": {"through": "G", "angle": "0 deg"}}}, {
@@ -137,7 +138,7 @@ def slider_crank(spec: SynthesisSpec) -> LinkageDesign:
         for i in range(FAMILY_SAMPLES):
             ei = circ.e_max * (i + 0.5) / FAMILY_SAMPLES
             gm = circ.gamma(ei)
-            family.append(Candidate(ei, circ.lengths(ei), gm, gm == gm))
+            family.append(Candidate(ei, circ.lengths(ei), gm, not math.isnan(gm)))
     strokes = [Stroke("line", (circ.C1[0] - 0.15 * circ.H, circ.C1[1]),
                       (circ.C2[0] + 0.15 * circ.H, circ.C2[1]), role="given", label="C1"),
                Stroke("point", circ.C2, role="given", label="C2")]
@@ -146,7 +147,8 @@ def slider_crank(spec: SynthesisSpec) -> LinkageDesign:
         strokes += [Stroke("line", circ.C2, P), Stroke("line", circ.C1, P, label="P"),
                     Stroke("circle", circ.O, r=circ.R, label="O"),
                     Stroke("line", (A[0] - 0.1 * circ.H, e), (circ.C2[0], e), label="e")]
-    strokes += [Stroke("line", A, circ.C1, role="result"), Stroke("line", A, circ.C2, role="result"),
+    strokes += [Stroke("line", A, circ.C1, role="result"),
+                Stroke("line", A, circ.C2, role="result"),
                 Stroke("circle", A, r=r, role="result", label="A"),
                 Stroke("line", A, B_ext, role="mechanism", label="B2"),
                 Stroke("line", B_ext, circ.C2, role="mechanism"),
@@ -161,7 +163,7 @@ def slider_crank(spec: SynthesisSpec) -> LinkageDesign:
                  Step("synth.sc.lengths", {"r": r, "l": l_, "e": e, "lam": r / l_})]
     conditions = {
         "turns_fully": "1", "gamma_min": gamma_min, "pressure_max": alpha,
-        "pressure_max_at_phi": math.pi / 2,
+        "pressure_max_at_phi": (spec.sense * math.pi / 2) % (2 * math.pi),
         "dead_centres_phi": [phi_ext, phi_fold],
         "working_stroke_phi": max(sweep, 2 * math.pi - sweep),
         "working_from": "C2" if sweep > math.pi else "C1",
