@@ -268,3 +268,20 @@ def test_report_json_and_sheet_in_every_language():
         assert "θ = 180°·(K − 1)/(K + 1)" in text
         sheets = s.sheets("A3", "iso", lang, "cr")
         assert sheets
+
+
+def test_cli_synth_writes_the_scene(tmp_path, capsys):
+    from mechplan.cli import main
+    from mechplan.scene import load_scene
+
+    src = tmp_path / "sc.toml"
+    src.write_text(scene("slider_crank", K=1.15, stroke="160 mm", offset="30 mm"),
+                   encoding="utf-8")
+    assert main(["synth", str(src), "-o", str(tmp_path / "out")]) == 0
+    out = capsys.readouterr().out
+    assert "sc-mechanism.toml" in out
+    sc = load_scene(tmp_path / "out" / "sc-mechanism.toml")
+    assert sc.mechanism.links["1"].name
+    four_bar = tmp_path / "m.toml"
+    four_bar.write_text('[ground]\nA = ["0 mm", "0 mm"]\n', encoding="utf-8")
+    assert main(["synth", str(four_bar), "-o", str(tmp_path / "out")]) == 2
