@@ -285,3 +285,65 @@ def test_cli_synth_writes_the_scene(tmp_path, capsys):
     four_bar = tmp_path / "m.toml"
     four_bar.write_text('[ground]\nA = ["0 mm", "0 mm"]\n', encoding="utf-8")
     assert main(["synth", str(four_bar), "-o", str(tmp_path / "out")]) == 2
+
+
+FUNCTION = {"function": "log10", "x_range": [1, 2], "input_start": "30 deg",
+            "input_range": "90 deg", "output_start": "270 deg", "output_range": "-60 deg",
+            "frame": "100 mm"}
+
+
+def fg_scene(**over: object) -> str:
+    keys = {**FUNCTION, **over}
+    lines = ['kind = "synthesis"', "[synthesis]", 'problem = "function"']
+    for k, v in keys.items():
+        lines.append(f'{k} = "{v}"' if isinstance(v, str) else f"{k} = {v!r}")
+    return "\n".join(lines) + "\n"
+
+
+def rocker_by_intersection(a, b, c, d, phi, psi_near):
+    """ψ of DC from B = a·e^{iφ} and |BC| = b, |DC| = c: both circle meets, the nearer one."""
+    bx, by = a * math.cos(phi), a * math.sin(phi)
+    best = None
+    # solve |D + c·e^{iψ} − B| = b: P cos ψ + Q sin ψ = R
+    p, q = 2 * c * (d - bx), -2 * c * by
+    r = b * b - c * c - (d - bx) ** 2 - by ** 2
+    base, amp = math.atan2(q, p), math.hypot(p, q)
+    for sgn in (1, -1):
+        psi = base + sgn * math.acos(r / amp)
+        diff = abs(math.remainder(psi - psi_near, 2 * math.pi))
+        if best is None or diff < best[0]:
+            best = (diff, psi)
+    return best[1]
+
+
+def test_function_generator_meets_the_function_at_the_precision_points():
+    s = solve_text(fg_scene(), "t.toml")
+    n, cond = s.design.lengths, s.design.conditions
+    # Chebyshev spacing on [1, 2]
+    assert cond["precision_x"] == pytest.approx(
+        [1.5 - 0.5 * math.cos(math.pi / 6), 1.5, 1.5 + 0.5 * math.cos(math.pi / 6)], abs=1e-15)
+    for x, phi in zip(cond["precision_x"], cond["precision_phi"]):
+        want = 270 * DEG - 60 * DEG * math.log10(x) / math.log10(2)
+        assert phi == pytest.approx(30 * DEG + 90 * DEG * (x - 1), abs=1e-14)
+        got = rocker_by_intersection(n["a"], n["b"], n["c"], n["d"], phi, want)
+        assert math.remainder(got - want, 2 * math.pi) == pytest.approx(0.0, abs=1e-12)
+    assert not cond["branch_defect"] and not cond["circuit_defect"]
+    # between the points the linkage errs; the error vanishes at them
+    assert 1e-4 < cond["structural_error_max"] < 0.02
+    # the round trip: the engine meets ψ at the points and gives the same structural error
+    assert s.check.output < 1e-9
+    sampled = max(abs(e[3]) for e in cond["structural_error"])
+    assert s.check.structural_max == pytest.approx(sampled, abs=1e-9)
+
+
+def test_function_generator_given_points_and_errors():
+    s = solve_text(fg_scene(points=[1.1, 1.5, 1.9]), "t.toml")
+    assert s.design.conditions["precision_x"] == [1.1, 1.5, 1.9]
+    assert s.check.output < 1e-9
+    for bad, key in (({"points": [1.5, 1.1, 1.9]}, "synthesis.points"),
+                     ({"x_range": [2, 1]}, "synthesis.x_range"),
+                     ({"output_range": "0 deg"}, "synthesis.output_range"),
+                     ({"function": "gamma"}, "synthesis.function")):
+        with pytest.raises(SceneError) as err:
+            solve_text(fg_scene(**bad), "t.toml")
+        assert err.value.key == key

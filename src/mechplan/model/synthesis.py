@@ -4,7 +4,9 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-PROBLEMS = ("crank_rocker", "slider_crank", "coulisse", "shaper")
+PROBLEMS = ("crank_rocker", "slider_crank", "coulisse", "shaper", "function")
+#: the functions a four-bar function generator may be asked for (x in radians for sin, cos, tan)
+FUNCTIONS = ("log10", "ln", "exp", "sqrt", "square", "cube", "reciprocal", "sin", "cos", "tan")
 #: how a crank-rocker is picked from its family on the construction circle
 CHOICES = ("frame", "frame_angle", "best")
 
@@ -32,6 +34,13 @@ class SynthesisSpec:
     coulisse: float | None = None       # O3B (coulisse)
     rod: float | None = None            # BC of the shaper
     gamma_limit: float | None = None    # the admissible minimum transmission angle [γ]
+    function: str | None = None         # y = f(x) of a function generator
+    x_range: tuple[float, float] | None = None
+    points: tuple[float, ...] | None = None        # precision points x (None: Chebyshev)
+    input_start: float = 0.0            # φ at x0 (rad, from the frame line A→D)
+    input_range: float | None = None    # Δφ over the x range
+    output_start: float = 0.0           # ψ at x0 (rad, of DC from the frame line)
+    output_range: float | None = None   # Δψ over the x range
     speed: float = 10.0
     sense: int = 1
     positions: int = 12

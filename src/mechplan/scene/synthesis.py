@@ -4,11 +4,12 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
 from ..errors import SceneError
 from ..i18n import LANGUAGES, Text
-from ..model.synthesis import PROBLEMS, SynthesisSpec
+from ..model.synthesis import FUNCTIONS, PROBLEMS, SynthesisSpec
 from .document import parse_toml
 from .reader import Table
 
@@ -20,6 +21,8 @@ PROBLEM_KEYS = {
     "slider_crank": ("stroke", "offset", "lambda"),
     "coulisse": ("frame", "crank", "coulisse", "stroke"),
     "shaper": ("frame", "crank", "stroke", "rod"),
+    "function": ("function", "x_range", "points", "input_start", "input_range", "output_start",
+                 "output_range", "frame"),
 }
 LENGTHS = ("rocker", "frame", "stroke", "offset", "crank", "coulisse", "rod")
 MAX_K = 1e3
@@ -36,11 +39,16 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
     s = top.table("synthesis", required=True)
     assert s is not None
     problem = s.string("problem", required=True, choices=PROBLEMS) or ""
-    s.check_keys(("problem", "K", "gamma_min") + PROBLEM_KEYS[problem])
-    k_raw = s.raw("K", required=True)
-    k = s.quantity("K", "dimensionless", required=True) or 0.0
-    if not 1.0 <= k < MAX_K or not math.isfinite(k):
-        raise _error(s, "K", "k_range", value=repr(k_raw))
+    if problem == "function":
+        s.check_keys(("problem", *PROBLEM_KEYS[problem]))
+        k = 1.0
+    else:
+        s.check_keys(("problem", "K", "gamma_min", *PROBLEM_KEYS[problem]))
+        k_raw = s.raw("K", required=True)
+        k = s.quantity("K", "dimensionless", required=True) or 0.0
+        if not 1.0 <= k < MAX_K or not math.isfinite(k):
+            raise _error(s, "K", "k_range", value=repr(k_raw))
+    fg: dict[str, Any] = _function_keys(s) if problem == "function" else {}
     values: dict[str, float | None] = {}
     for key in LENGTHS:
         if key in PROBLEM_KEYS[problem]:
@@ -87,6 +95,38 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
         frame_angle=frame_angle, stroke=values.get("stroke"), offset=values.get("offset"),
         rod_ratio=lam, crank=values.get("crank"), coulisse=values.get("coulisse"),
         rod=values.get("rod"), gamma_limit=gamma, speed=speed, sense=sense, positions=count,
-        sheet=sheet, standard=standard, title_block=fields)
+        sheet=sheet, standard=standard, title_block=fields, **fg)
+
+
+def _numbers(s: Table, key: str, count: int | None) -> tuple[float, ...] | None:
+    """A list of plain numbers (``count`` of them when given, else 3)."""
+    raw = s.raw(key)
+    if raw is None:
+        return None
+    want = count or 3
+    if not isinstance(raw, list) or len(raw) != want or not all(
+            isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+            for v in raw):
+        raise _error(s, key, "numbers", n=str(want), value=repr(raw))
+    return tuple(float(v) for v in raw)
+
+
+def _function_keys(s: Table) -> dict[str, Any]:
+    """The keys of a function generator."""
+    s.string("function", required=True, choices=FUNCTIONS)
+    x_range = _numbers(s, "x_range", 2)
+    if x_range is None:
+        raise _error(s, "x_range", "numbers", n="2", value="—")
+    if not x_range[0] < x_range[1]:
+        raise _error(s, "x_range", "x_order", value=repr(list(x_range)))
+    points = _numbers(s, "points", 3)
+    if points is not None and not (x_range[0] <= points[0] < points[1] < points[2]
+                                   <= x_range[1]):
+        raise _error(s, "points", "points_order", value=repr(list(points)))
+    return {"function": s.string("function"), "x_range": x_range, "points": points,
+            "input_start": s.quantity("input_start", "angle", 0.0) or 0.0,
+            "input_range": s.quantity("input_range", "angle", required=True),
+            "output_start": s.quantity("output_start", "angle", 0.0) or 0.0,
+            "output_range": s.quantity("output_range", "angle", required=True)}
 
 

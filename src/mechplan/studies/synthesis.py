@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..i18n import message, number
+from ..i18n import message, number, significant
 from ..model.synthesis import SynthesisSpec
 from ..scene.writer import to_toml
 from ..synthesis.linkage import LinkageDesign, k_of_theta, synthesise
@@ -21,8 +21,8 @@ from .answers import Keys
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
 
-ANGLES = ("theta", "psi", "angle", "gamma", "psi0", "alpha")
-RATIOS = ("k", "lam")
+ANGLES = ("theta", "psi", "angle", "gamma", "psi0", "alpha", "phi", "phi0", "dphi", "dpsi")
+RATIOS = ("k", "lam", "x", "y", "x0", "x1", "k1", "k2", "k3")
 #: crank positions over a turn where the analysis samples the transmission angle
 CYCLE_SAMPLES = 3600
 
@@ -49,9 +49,10 @@ class RoundTrip:
 
     k: float
     output: float
-    gamma_min: float
-    gamma_phi: float
-    extremes_phi: tuple[float, float]
+    gamma_min: float = math.nan
+    gamma_phi: float = math.nan
+    extremes_phi: tuple[float, ...] = ()
+    structural_max: float = math.nan    # a function generator: the largest |Δy| the engine gives
 
 
 def round_trip(d: LinkageDesign) -> RoundTrip:
@@ -61,6 +62,8 @@ def round_trip(d: LinkageDesign) -> RoundTrip:
     from ..solve import solve
 
     scene = parse_scene(to_toml(d.scene), "<synthesised>")
+    if d.output_kind == "function":
+        return _function_round_trip(d, scene)
     sol = solve(scene, count=1)
     mech = scene.mechanism
     ex = extreme_positions(sol.construction, mech, d.output)
@@ -91,6 +94,29 @@ def round_trip(d: LinkageDesign) -> RoundTrip:
     else:
         g_min = g_phi = math.nan
     return RoundTrip(k, out, g_min, g_phi, (ex[0].phi, ex[1].phi))
+
+
+def _function_round_trip(d: LinkageDesign, scene: Any) -> RoundTrip:
+    """The function generator solved by the engine at its precision points (``output``: the
+    largest miss of ψ, rad) and along its range (``structural_max``: the largest |Δy|)."""
+    from ..solve import solve
+
+    c = d.conditions
+    sol = solve(scene)
+    dd = np.array([d.lengths["d"], 0.0])
+
+    def psi_at(phi: np.ndarray) -> np.ndarray:
+        cp = sol.construction.evaluate(phi)["pos.C"] - dd
+        return np.arctan2(cp[:, 1], cp[:, 0])
+
+    def wrapped(x: np.ndarray) -> np.ndarray:
+        return np.angle(np.exp(1j * x))
+
+    miss = wrapped(psi_at(np.array(c["precision_phi"])) - np.array(c["precision_psi"]))
+    samples = np.array(c["structural_error"])
+    dy = wrapped(psi_at(samples[:, 1]) - samples[:, 2]) * c["y_per_rad"]
+    return RoundTrip(math.nan, float(np.max(np.abs(miss))),
+                     structural_max=float(np.max(np.abs(dy))))
 
 
 @dataclass(frozen=True)
@@ -133,6 +159,8 @@ class SynthesisStudy:
         deg = math.degrees
         mm = {k: number(v * 1e3, 3, lang) for k, v in d.lengths.items()}
         lines = [message(f"synth.result.{d.problem}", lang, **mm)]
+        if d.problem == "function":
+            return lines + self.function_lines(lang)
         if "grashof" in c:
             lines.append(message("synth.result.grashof", lang,
                                  margin=number(c["grashof_margin"] * 1e3, 3, lang)))
@@ -170,6 +198,29 @@ class SynthesisStudy:
                                  gamma=number(deg(rt.gamma_min), 3, lang),
                                  phi=number(deg(rt.gamma_phi), 1, lang),
                                  n=CYCLE_SAMPLES))
+        return lines
+
+    def function_lines(self, lang: str) -> list[str]:
+        """A function generator's linkage type, defects, structural error and round trip."""
+        d, c, rt = self.design, self.design.conditions, self.check
+        n = d.lengths
+        if not c["grashof"]:
+            kind = "non_grashof"
+        elif min(n.values()) == n["a"]:
+            kind = "crank_rocker"
+        elif min(n.values()) == n["d"]:
+            kind = "double_crank"
+        else:
+            kind = "double_rocker"
+        lines = [message(f"synth.fg.kind_{kind}", lang)]
+        for defect in ("branch_defect", "circuit_defect"):
+            lines.append(message(f"synth.fg.{defect}_{'yes' if c[defect] else 'no'}", lang))
+        lines.append(message("synth.fg.error", lang,
+                             e=significant(c["structural_error_max"], 4, lang),
+                             x=number(c["structural_error_at_x"], 4, lang)))
+        lines.append(message("synth.fg.round_trip", lang,
+                             miss=significant(math.degrees(rt.output), 3, lang),
+                             e=significant(rt.structural_max, 4, lang)))
         return lines
 
     def report(self, language: str | None = None) -> str:

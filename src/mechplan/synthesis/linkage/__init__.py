@@ -12,6 +12,7 @@ from ...model.synthesis import SynthesisSpec
 from .coulisse import coulisse
 from .crank_rocker import crank_rocker
 from .design import LinkageDesign, k_of_theta, theta_of_k
+from .function import function_generator
 from .slider_crank import slider_crank
 
 
@@ -23,6 +24,8 @@ def synthesise(spec: SynthesisSpec) -> LinkageDesign:
         return slider_crank(spec)
     if spec.problem in ("coulisse", "shaper"):
         return coulisse(spec)
+    if spec.problem == "function":
+        return function_generator(spec)
     raise SceneError(f"unknown synthesis problem {spec.problem!r}", file=spec.path,
                      key="synthesis.problem")
 
