@@ -2,8 +2,21 @@
 
 from __future__ import annotations
 
+import math
+
 from ..construct.scale import round_scale
-from ..drafting.primitives import Circle, HAlign, Line, Primitive, Role, Sheet, Table, Text, VAlign
+from ..drafting.primitives import (
+    Arc,
+    Circle,
+    HAlign,
+    Line,
+    Primitive,
+    Role,
+    Sheet,
+    Table,
+    Text,
+    VAlign,
+)
 from ..i18n import message, significant
 from ..synthesis.linkage.design import LinkageDesign, Stroke
 from .diagram import mu_text
@@ -14,7 +27,7 @@ from .panels import Panel
 #: the construction's larger side on paper at enlargement 1 (mm)
 DRAWING_MM = 150.0
 LINE_ROLES = {"given": Role.THIN, "aux": Role.DASHED, "result": Role.THIN,
-              "mechanism": Role.OUTLINE, "family": Role.CHAIN}
+              "mechanism": Role.OUTLINE, "family": Role.OUTLINE}
 LABEL_MM = 3.5
 DOT_MM = 0.8
 
@@ -23,7 +36,7 @@ def _extent(strokes: list[Stroke]) -> tuple[float, float, float, float]:
     xs: list[float] = []
     ys: list[float] = []
     for s in strokes:
-        if s.kind == "circle":
+        if s.kind in ("circle", "arc"):
             xs += [s.a[0] - s.r, s.a[0] + s.r]
             ys += [s.a[1] - s.r, s.a[1] + s.r]
         else:
@@ -51,6 +64,10 @@ def construction_panel(d: LinkageDesign, lang: str, enlargement: float) -> Panel
         if s.kind == "line":
             prims.append(Line(at(s.a), at(s.b), role))
             where = at(s.b)
+        elif s.kind == "arc":
+            prims.append(Arc(at(s.a), s.r / mu, math.degrees(s.b[0]), math.degrees(s.b[1]),
+                             role))
+            where = at(s.a)
         elif s.kind == "circle":
             prims.append(Circle(at(s.a), max(s.r / mu, DOT_MM), role))
             prims.append(Circle(at(s.a), DOT_MM, Role.OUTLINE))

@@ -176,6 +176,7 @@ def crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
         Stroke("line", circ.C2, circ.P),
         Stroke("line", circ.C1, circ.P, label="P"),
         Stroke("circle", circ.O, r=circ.R, label="O"),
+        Stroke("arc", circ.O, (circ.t_lo, circ.t_hi), r=circ.R, role="family"),
         Stroke("line", circ.C2, circ.F, role="aux", label="F"),
         Stroke("line", A, circ.C1, role="result"),
         Stroke("line", A, circ.C2, role="result"),

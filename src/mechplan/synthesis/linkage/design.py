@@ -31,8 +31,9 @@ class Step:
 class Stroke:
     """A drawn element of the construction (SI coordinates, metres).
 
-    ``kind``: ``"point"``, ``"line"`` (a segment a→b), ``"circle"`` (centre a, radius r), and
-    ``role``: ``"given"``, ``"aux"``, ``"result"`` or ``"family"``.
+    ``kind``: ``"point"``, ``"line"`` (a segment a→b), ``"circle"`` (centre a, radius r),
+    ``"arc"`` (centre a, radius r, counter-clockwise from angle b[0] to b[1], rad), and
+    ``role``: ``"given"``, ``"aux"``, ``"result"``, ``"mechanism"`` or ``"family"``.
     """
 
     kind: str
