@@ -347,3 +347,47 @@ def test_function_generator_given_points_and_errors():
         with pytest.raises(SceneError) as err:
             solve_text(fg_scene(**bad), "t.toml")
         assert err.value.key == key
+
+
+def guided_positions(b_len, thetas, bs):
+    return [(x + b_len * math.cos(t), y + b_len * math.sin(t)) for (x, y), t in zip(bs, thetas)]
+
+
+def guidance_scene(bs, cs) -> str:
+    def pts(ps):
+        return "[" + ", ".join(f'["{x * 1e3!r} mm", "{y * 1e3!r} mm"]' for x, y in ps) + "]"
+    return (f'kind = "synthesis"\n[synthesis]\nproblem = "guidance"\nB = {pts(bs)}\n'
+            f"C = {pts(cs)}\n")
+
+
+@pytest.mark.parametrize("thetas_deg", [(20, 0, -25), (-10, 15, 40)])
+def test_three_position_guidance_pivots_and_round_trip(thetas_deg):
+    """A and D are equidistant from the three positions of B and of C (independently: the
+    distances), and the engine carries the coupler through the three positions."""
+    bs = [(0.0, 0.1), (0.06, 0.13), (0.13, 0.12)]
+    cs = guided_positions(0.15, [t * DEG for t in thetas_deg], bs)
+    s = solve_text(guidance_scene(bs, cs), "t.toml")
+    cond, n = s.design.conditions, s.design.lengths
+    a_pt, d_pt = cond["A"], cond["D"]
+    for p in bs:
+        assert math.dist(a_pt, p) == pytest.approx(n["a"], abs=1e-12)
+    for p in cs:
+        assert math.dist(d_pt, p) == pytest.approx(n["c"], abs=1e-12)
+    assert n["b"] == pytest.approx(0.15, abs=1e-12)
+    assert n["d"] == pytest.approx(math.dist(a_pt, d_pt), abs=1e-15)
+    if not cond["branch_defect"] and not cond["circuit_defect"]:
+        assert s.check.output < 1e-9
+
+
+def test_guidance_errors():
+    bs = [(0.0, 0.1), (0.05, 0.1), (0.1, 0.1)]          # collinear: no circle
+    cs = guided_positions(0.15, [0.3, 0.1, -0.2], bs)
+    with pytest.raises(SceneError) as err:
+        solve_text(guidance_scene(bs, cs), "t.toml")
+    assert err.value.key == "synthesis.B"
+    bs = [(0.0, 0.1), (0.06, 0.13), (0.13, 0.12)]
+    cs = guided_positions(0.15, [0.3, 0.1, -0.2], bs)
+    cs[2] = (cs[2][0] + 0.01, cs[2][1])                  # not the same coupler
+    with pytest.raises(SceneError) as err:
+        solve_text(guidance_scene(bs, cs), "t.toml")
+    assert err.value.key == "synthesis.C"

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-PROBLEMS = ("crank_rocker", "slider_crank", "coulisse", "shaper", "function")
+PROBLEMS = ("crank_rocker", "slider_crank", "coulisse", "shaper", "function", "guidance")
 #: the functions a four-bar function generator may be asked for (x in radians for sin, cos, tan)
 FUNCTIONS = ("log10", "ln", "exp", "sqrt", "square", "cube", "reciprocal", "sin", "cos", "tan")
 #: how a crank-rocker is picked from its family on the construction circle
@@ -41,6 +41,8 @@ class SynthesisSpec:
     input_range: float | None = None    # Δφ over the x range
     output_start: float = 0.0           # ψ at x0 (rad, of DC from the frame line)
     output_range: float | None = None   # Δψ over the x range
+    guide_b: tuple[tuple[float, float], ...] | None = None   # three positions of B (guidance)
+    guide_c: tuple[tuple[float, float], ...] | None = None   # three positions of C
     speed: float = 10.0
     sense: int = 1
     positions: int = 12

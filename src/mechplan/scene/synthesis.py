@@ -21,6 +21,7 @@ PROBLEM_KEYS = {
     "slider_crank": ("stroke", "offset", "lambda"),
     "coulisse": ("frame", "crank", "coulisse", "stroke"),
     "shaper": ("frame", "crank", "stroke", "rod"),
+    "guidance": ("B", "C"),
     "function": ("function", "x_range", "points", "input_start", "input_range", "output_start",
                  "output_range", "frame"),
 }
@@ -39,7 +40,7 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
     s = top.table("synthesis", required=True)
     assert s is not None
     problem = s.string("problem", required=True, choices=PROBLEMS) or ""
-    if problem == "function":
+    if problem in ("function", "guidance"):
         s.check_keys(("problem", *PROBLEM_KEYS[problem]))
         k = 1.0
     else:
@@ -49,6 +50,8 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
         if not 1.0 <= k < MAX_K or not math.isfinite(k):
             raise _error(s, "K", "k_range", value=repr(k_raw))
     fg: dict[str, Any] = _function_keys(s) if problem == "function" else {}
+    if problem == "guidance":
+        fg = {"guide_b": _positions(s, "B"), "guide_c": _positions(s, "C")}
     values: dict[str, float | None] = {}
     for key in LENGTHS:
         if key in PROBLEM_KEYS[problem]:
@@ -130,3 +133,14 @@ def _function_keys(s: Table) -> dict[str, Any]:
             "output_range": s.quantity("output_range", "angle", required=True)}
 
 
+
+
+def _positions(s: Table, key: str) -> tuple[tuple[float, float], ...]:
+    """Three positions of a point: [["x mm", "y mm"], …]."""
+    raw = s.raw(key, required=True)
+    if not isinstance(raw, list) or len(raw) != 3 or not all(
+            isinstance(p, list) and len(p) == 2 for p in raw):
+        raise _error(s, key, "three_points", value=repr(raw)[:80])
+    return tuple((s.value_quantity(p[0], f"{key}[{i}][0]", "length"),
+                  s.value_quantity(p[1], f"{key}[{i}][1]", "length"))
+                 for i, p in enumerate(raw))

@@ -79,7 +79,9 @@ def construction_panel(d: LinkageDesign, lang: str, enlargement: float) -> Panel
             prims.append(Text((where[0] + 1.5, where[1] + 1.5), s.label, LABEL_MM,
                               halign=HAlign.LEFT, valign=VAlign.BOTTOM))
     x0, _, x1, y1 = Panel("", prims).bounds()
-    title = "synth.sheet.construction_fg" if d.problem == "function" else "synth.sheet.construction"
+    title = {"function": "synth.sheet.construction_fg",
+             "guidance": "synth.sheet.construction_gd"}.get(d.problem,
+                                                            "synth.sheet.construction")
     heading = [message(title, lang),
                mu_text("μl", mu, "m", lang)]
     prims.extend(text_block((x0, y1 + 4.0), heading, 3.5, max(x1 - x0, 60.0), upward=True))

@@ -22,7 +22,9 @@ if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
 
 ANGLES = ("theta", "psi", "angle", "gamma", "psi0", "alpha", "phi", "phi0", "dphi", "dpsi")
-RATIOS = ("k", "lam", "x", "y", "x0", "x1", "k1", "k2", "k3")
+RATIOS = ("k", "lam", "x0", "x1", "k1", "k2", "k3")
+#: values that are numbers (4 decimals) in some sentences and lengths in others
+NUMBERS_OF = {"synth.fg.point": ("x", "y")}
 #: crank positions over a turn where the analysis samples the transmission angle
 CYCLE_SAMPLES = 3600
 
@@ -33,7 +35,7 @@ def say(step: Step, lang: str) -> str:
     for key, v in step.values.items():
         if key in ANGLES:
             values[key] = number(math.degrees(v), 4, lang)
-        elif key in RATIOS:
+        elif key in RATIOS or key in NUMBERS_OF.get(step.msgid, ()):
             values[key] = number(v, 4, lang)
         elif key == "n":
             values[key] = str(int(v))
@@ -64,6 +66,8 @@ def round_trip(d: LinkageDesign) -> RoundTrip:
     scene = parse_scene(to_toml(d.scene), "<synthesised>")
     if d.output_kind == "function":
         return _function_round_trip(d, scene)
+    if d.output_kind == "guidance":
+        return _guidance_round_trip(d, scene)
     sol = solve(scene, count=1)
     mech = scene.mechanism
     ex = extreme_positions(sol.construction, mech, d.output)
@@ -119,6 +123,19 @@ def _function_round_trip(d: LinkageDesign, scene: Any) -> RoundTrip:
                      structural_max=float(np.max(np.abs(dy))))
 
 
+def _guidance_round_trip(d: LinkageDesign, scene: Any) -> RoundTrip:
+    """The guided linkage solved by the engine at its three crank angles: the largest distance of
+    B and C from the given positions (m) is ``output``."""
+    from ..solve import solve
+
+    c = d.conditions
+    sol = solve(scene)
+    ev = sol.construction.evaluate(np.array(c["precision_phi"]))
+    miss = max(float(np.max(np.hypot(*(ev["pos.B"] - np.array(c["positions_b"])).T))),
+               float(np.max(np.hypot(*(ev["pos.C"] - np.array(c["positions_c"])).T))))
+    return RoundTrip(math.nan, miss)
+
+
 @dataclass(frozen=True)
 class SynthesisStudy:
     """A linkage synthesised from its scene, and checked by analysing what it produced."""
@@ -161,6 +178,8 @@ class SynthesisStudy:
         lines = [message(f"synth.result.{d.problem}", lang, **mm)]
         if d.problem == "function":
             return lines + self.function_lines(lang)
+        if d.problem == "guidance":
+            return lines + self.guidance_lines(lang)
         if "grashof" in c:
             lines.append(message("synth.result.grashof", lang,
                                  margin=number(c["grashof_margin"] * 1e3, 3, lang)))
@@ -198,6 +217,21 @@ class SynthesisStudy:
                                  gamma=number(deg(rt.gamma_min), 3, lang),
                                  phi=number(deg(rt.gamma_phi), 1, lang),
                                  n=CYCLE_SAMPLES))
+        return lines
+
+    def guidance_lines(self, lang: str) -> list[str]:
+        """A guided linkage's type, defects, sense and round trip."""
+        c, rt = self.design.conditions, self.check
+        lines = [message("synth.gd.crank_" + ("yes" if c["crank"] else "no"), lang)]
+        for defect in ("branch_defect", "order_defect", "circuit_defect"):
+            lines.append(message(f"synth.gd.{defect}_{'yes' if c[defect] else 'no'}", lang))
+        lines.append(message("synth.gd.sense", lang,
+                             sense=message("synth.sense." + ("ccw" if c["sense"] > 0 else "cw"),
+                                           lang),
+                             phis=", ".join(number(math.degrees(p), 3, lang) + "°"
+                                            for p in c["precision_phi"])))
+        lines.append(message("synth.gd.round_trip", lang,
+                             miss=significant(rt.output * 1e3, 3, lang)))
         return lines
 
     def function_lines(self, lang: str) -> list[str]:

@@ -13,6 +13,7 @@ from .coulisse import coulisse
 from .crank_rocker import crank_rocker
 from .design import LinkageDesign, k_of_theta, theta_of_k
 from .function import function_generator
+from .guidance import guidance
 from .slider_crank import slider_crank
 
 
@@ -26,6 +27,8 @@ def synthesise(spec: SynthesisSpec) -> LinkageDesign:
         return coulisse(spec)
     if spec.problem == "function":
         return function_generator(spec)
+    if spec.problem == "guidance":
+        return guidance(spec)
     raise SceneError(f"unknown synthesis problem {spec.problem!r}", file=spec.path,
                      key="synthesis.problem")
 
