@@ -375,8 +375,27 @@ def test_three_position_guidance_pivots_and_round_trip(thetas_deg):
         assert math.dist(d_pt, p) == pytest.approx(n["c"], abs=1e-12)
     assert n["b"] == pytest.approx(0.15, abs=1e-12)
     assert n["d"] == pytest.approx(math.dist(a_pt, d_pt), abs=1e-15)
-    if not cond["branch_defect"] and not cond["circuit_defect"]:
-        assert s.check.output < 1e-9
+    assert not cond["branch_defect"] and not cond["circuit_defect"]
+    assert s.check.output < 1e-9
+
+
+def test_guidance_reports_a_branch_defect():
+    """Positions taken from one four-bar on alternating assemblies: the pivots are found again
+    and the branch defect is reported."""
+    a, b, c, d = 0.04, 0.12, 0.08, 0.1
+    bs, cs = [], []
+    for phi_deg, side in ((30, 1), (120, -1), (200, 1)):
+        bx, by = a * math.cos(phi_deg * DEG), a * math.sin(phi_deg * DEG)
+        e = math.hypot(d - bx, by)
+        ux, uy = (d - bx) / e, -by / e
+        along = (b * b - c * c + e * e) / (2 * e)
+        h = math.sqrt(b * b - along * along)
+        bs.append((bx, by))
+        cs.append((bx + along * ux - side * h * uy, by + along * uy + side * h * ux))
+    s = solve_text(guidance_scene(bs, cs), "t.toml")
+    assert s.design.conditions["A"] == pytest.approx([0.0, 0.0], abs=1e-12)
+    assert s.design.conditions["D"] == pytest.approx([0.1, 0.0], abs=1e-12)
+    assert s.design.conditions["branch_defect"]
 
 
 def test_guidance_errors():
