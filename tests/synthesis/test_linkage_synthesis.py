@@ -230,8 +230,13 @@ def test_written_scene_is_taken_by_solve_and_draw(tmp_path):
     assert m.sheets(None, None, None, "cr-mechanism")
 
 
-def test_produced_scene_passes_the_checker_invariant(tmp_path):
-    """mechplan's own sheet of the synthesised crank-rocker checks clean (0 wrong, 0 missing)."""
+@pytest.mark.parametrize("problem, keys, lang", [
+    ("crank_rocker", {"K": 1.2, "swing": "45 deg", "rocker": "300 mm"}, "en"),
+    ("slider_crank", {"K": 1.15, "stroke": "160 mm", "offset": "30 mm"}, "ru"),
+    ("coulisse", {"K": 1.6, "frame": "300 mm", "coulisse": "600 mm"}, "vi"),
+    ("shaper", {"K": 1.6, "frame": "300 mm", "stroke": "400 mm", "rod": "150 mm"}, "zh")])
+def test_produced_scene_passes_the_checker_invariant(tmp_path, problem, keys, lang):
+    """mechplan's own sheet of the synthesised linkage checks clean (0 wrong, 0 missing)."""
     from mechplan.check import Options, check
     from mechplan.check.report import MISSING, WRONG
     from mechplan.errors import CheckError
@@ -240,10 +245,10 @@ def test_produced_scene_passes_the_checker_invariant(tmp_path):
     from mechplan.sheet.compose import compose
     from mechplan.solve import solve
 
-    s = study("crank_rocker", K=1.2, swing="45 deg", rocker="300 mm")
+    s = study(problem, **keys)
     [path] = s.write_files(tmp_path, "cr")
     sc = load_scene(path)
-    comp = compose(solve(sc), "A1", "iso", "en", name="cr")
+    comp = compose(solve(sc), "A1", "iso", lang, name="cr")
     checked = 0
     for i, sheet in enumerate(comp.sheets):
         dxf = tmp_path / f"cr-{i}.dxf"
