@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from ..construct.scale import round_scale
 from ..drafting.primitives import (
     Arc,
@@ -19,7 +21,7 @@ from ..drafting.primitives import (
 )
 from ..i18n import message, significant
 from ..synthesis.linkage.design import LinkageDesign, Stroke
-from .diagram import mu_text
+from .diagram import Axis, Curve, diagram_panel, mu_text
 from .fit import text_block, text_panel
 from .layout import fitted_layout
 from .panels import Panel
@@ -88,6 +90,16 @@ def construction_panel(d: LinkageDesign, lang: str, enlargement: float) -> Panel
     return Panel("synthesis-construction", prims)
 
 
+def error_panel(d: LinkageDesign, lang: str, enlargement: float) -> Panel:
+    """The structural error Δy(x) of a function generator (zero at the precision points)."""
+    samples = np.array(d.conditions["structural_error"], dtype=float)
+    dg = diagram_panel("synthesis-error", message("synth.sheet.error", lang),
+                       [Curve(samples[:, 0], samples[:, 3])],
+                       Axis("x", "", 120.0 * enlargement), Axis("Δy", "", 40.0 * enlargement),
+                       lang, x_zero=False)
+    return dg.panel
+
+
 def synthesis_sheets(d: LinkageDesign, protocol: list[str], results: list[str],
                      title: str, size: str | None, standard: str | None, lang: str,
                      name: str, fields: dict[str, str]) -> list[Sheet]:
@@ -95,7 +107,8 @@ def synthesis_sheets(d: LinkageDesign, protocol: list[str], results: list[str],
     size, standard = size or "A2", standard or "iso"
 
     def build(scale: float) -> list[Panel]:
-        return [construction_panel(d, lang, scale),
+        extra = [error_panel(d, lang, scale)] if d.problem == "function" else []
+        return [construction_panel(d, lang, scale), *extra,
                 text_panel("synthesis-protocol", message("synth.sheet.protocol", lang), protocol),
                 text_panel("synthesis-results", message("synth.sheet.results", lang), results)]
 

@@ -182,10 +182,10 @@ def function_generator(spec: SynthesisSpec) -> LinkageDesign:
         "branch_defect": branch_defect, "circuit_defect": circuit_defect,
         "precision_x": xs, "precision_phi": phis, "precision_psi": psis,
         "structural_error_max": float(abs(dy[i])), "structural_error_at_x": float(x_dense[i]),
-        # every 36th sample: x, φ, the wanted ψ and the error in y
+        # every 6th sample: x, φ, the wanted ψ and the error in y
         "structural_error": [[float(x), float(p), float(w), float(e)] for x, p, w, e in
-                             zip(x_dense[::36], np.asarray(phi_of(x_dense))[::36],
-                                 psi_of(x_dense)[::36], dy[::36])],
+                             zip(x_dense[::6], np.asarray(phi_of(x_dense))[::6],
+                                 psi_of(x_dense)[::6], dy[::6])],
         "y_per_rad": (y1 - y0) / spec.output_range,
         "K1": k1, "K2": k2, "K3": k3, "crank_turned": bool(turn_a), "rocker_turned": bool(turn_c),
     }
