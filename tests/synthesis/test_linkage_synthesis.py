@@ -415,3 +415,24 @@ def test_guidance_errors():
     with pytest.raises(SceneError) as err:
         solve_text(guidance_scene(bs, cs), "t.toml")
     assert err.value.key == "synthesis.C"
+
+
+def test_two_position_guidance_pivots_on_a_given_line():
+    """The pivots lie on the given line and are equidistant from both positions of B (of C);
+    the pole is equidistant from B1, B2 and from C1, C2; the engine meets both positions."""
+    bs = [(0.0, 0.1), (0.06, 0.13)]
+    cs = guided_positions(0.15, [20 * DEG, 0.0], bs)
+    text = guidance_scene(bs, cs) + (
+        'pivot_line = { through = ["0 mm", "-20 mm"], angle = "10 deg" }\n')
+    s = solve_text(text, "t.toml")
+    cond, n = s.design.conditions, s.design.lengths
+    for pt in (cond["A"], cond["D"]):     # on the line through (0, −0.02) at 10°
+        assert (pt[1] + 0.02) * math.cos(10 * DEG) - pt[0] * math.sin(10 * DEG) == \
+            pytest.approx(0.0, abs=1e-15)
+    assert math.dist(cond["A"], bs[0]) == pytest.approx(math.dist(cond["A"], bs[1]), abs=1e-15)
+    assert math.dist(cond["D"], cs[0]) == pytest.approx(math.dist(cond["D"], cs[1]), abs=1e-15)
+    assert n["b"] == pytest.approx(0.15, abs=1e-12)
+    assert s.check.output < 1e-9
+    with pytest.raises(SceneError) as err:
+        solve_text(guidance_scene(bs, cs), "t.toml")
+    assert err.value.key == "synthesis.pivot_line"

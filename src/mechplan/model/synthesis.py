@@ -43,6 +43,7 @@ class SynthesisSpec:
     output_range: float | None = None   # Δψ over the x range
     guide_b: tuple[tuple[float, float], ...] | None = None   # three positions of B (guidance)
     guide_c: tuple[tuple[float, float], ...] | None = None   # three positions of C
+    pivot_line: tuple[tuple[float, float], float] | None = None  # two positions: (point, angle)
     speed: float = 10.0
     sense: int = 1
     positions: int = 12

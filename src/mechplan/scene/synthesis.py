@@ -21,7 +21,7 @@ PROBLEM_KEYS = {
     "slider_crank": ("stroke", "offset", "lambda"),
     "coulisse": ("frame", "crank", "coulisse", "stroke"),
     "shaper": ("frame", "crank", "stroke", "rod"),
-    "guidance": ("B", "C"),
+    "guidance": ("B", "C", "pivot_line"),
     "function": ("function", "x_range", "points", "input_start", "input_range", "output_start",
                  "output_range", "frame"),
 }
@@ -51,7 +51,10 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
             raise _error(s, "K", "k_range", value=repr(k_raw))
     fg: dict[str, Any] = _function_keys(s) if problem == "function" else {}
     if problem == "guidance":
-        fg = {"guide_b": _positions(s, "B"), "guide_c": _positions(s, "C")}
+        fg = {"guide_b": _positions(s, "B"), "guide_c": _positions(s, "C"),
+              "pivot_line": _line(s)}
+        if len(fg["guide_b"]) != len(fg["guide_c"]):
+            raise _error(s, "C", "same_count")
     values: dict[str, float | None] = {}
     for key in LENGTHS:
         if key in PROBLEM_KEYS[problem]:
@@ -138,9 +141,23 @@ def _function_keys(s: Table) -> dict[str, Any]:
 def _positions(s: Table, key: str) -> tuple[tuple[float, float], ...]:
     """Three positions of a point: [["x mm", "y mm"], …]."""
     raw = s.raw(key, required=True)
-    if not isinstance(raw, list) or len(raw) != 3 or not all(
+    if not isinstance(raw, list) or len(raw) not in (2, 3) or not all(
             isinstance(p, list) and len(p) == 2 for p in raw):
         raise _error(s, key, "three_points", value=repr(raw)[:80])
     return tuple((s.value_quantity(p[0], f"{key}[{i}][0]", "length"),
                   s.value_quantity(p[1], f"{key}[{i}][1]", "length"))
                  for i, p in enumerate(raw))
+
+
+def _line(s: Table) -> tuple[tuple[float, float], float] | None:
+    """``pivot_line = { through = ["x mm", "y mm"], angle = "0 deg" }``."""
+    t = s.table("pivot_line")
+    if t is None:
+        return None
+    t.check_keys(("through", "angle"))
+    raw = t.raw("through", required=True)
+    if not isinstance(raw, list) or len(raw) != 2:
+        raise _error(t, "through", "three_points", value=repr(raw)[:80])
+    point = (t.value_quantity(raw[0], "through[0]", "length"),
+             t.value_quantity(raw[1], "through[1]", "length"))
+    return point, t.quantity("angle", "angle", 0.0) or 0.0
