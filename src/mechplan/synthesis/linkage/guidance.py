@@ -145,7 +145,8 @@ def guidance(spec: SynthesisSpec) -> LinkageDesign:
         lo, hi = min(ts) - 0.2 * d, max(ts) + 0.2 * d
         strokes += [Stroke("line", (px + lo * u[0], py + lo * u[1]),
                            (px + hi * u[0], py + hi * u[1]), role="given"),
-                    Stroke("point", pole, role="aux", label="P12")]
+                    Stroke("point", pole, role="aux", label="P12"),
+                    Stroke("line", A, pole), Stroke("line", D, pole)]
     strokes += [Stroke("point", A, role="result", label="A"),
                 Stroke("point", D, role="result", label="D"),
                 Stroke("line", A, D, role="mechanism")]
