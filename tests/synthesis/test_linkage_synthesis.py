@@ -436,3 +436,25 @@ def test_two_position_guidance_pivots_on_a_given_line():
     with pytest.raises(SceneError) as err:
         solve_text(guidance_scene(bs, cs), "t.toml")
     assert err.value.key == "synthesis.pivot_line"
+
+
+def test_function_generator_by_least_squares():
+    """With five Chebyshev points Freudenstein's K solve the normal equations (checked with
+    numpy apart), and the engine's ψ at the points is the linkage's own (intersection)."""
+    import numpy as np
+
+    s = solve_text(fg_scene(count=5), "t.toml")
+    cond, n = s.design.conditions, s.design.lengths
+    assert len(cond["precision_x"]) == 5
+    phi, psi = np.array(cond["precision_phi"]), np.array(cond["precision_psi"])
+    m = np.column_stack([np.cos(psi), -np.cos(phi), np.ones(5)])
+    k = np.array([cond["K1"], cond["K2"], cond["K3"]])
+    residual = m @ k - np.cos(phi - psi)
+    assert np.abs(m.T @ residual).max() < 1e-12          # the normal equations
+    assert np.abs(residual).max() > 1e-9                 # 5 points: not met exactly
+    misses = [abs(math.remainder(rocker_by_intersection(n["a"], n["b"], n["c"], n["d"], p, w)
+                                 - w, 2 * math.pi)) for p, w in zip(phi, psi)]
+    assert s.check.output == pytest.approx(max(misses), abs=1e-9)
+    with pytest.raises(SceneError) as err:
+        solve_text(fg_scene(count=5, points=[1.1, 1.5, 1.9]), "t.toml")
+    assert err.value.key == "synthesis.count"

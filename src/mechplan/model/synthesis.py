@@ -37,6 +37,7 @@ class SynthesisSpec:
     function: str | None = None         # y = f(x) of a function generator
     x_range: tuple[float, float] | None = None
     points: tuple[float, ...] | None = None        # precision points x (None: Chebyshev)
+    point_count: int = 3                # Chebyshev points (more than 3: least squares)
     input_start: float = 0.0            # φ at x0 (rad, from the frame line A→D)
     input_range: float | None = None    # Δφ over the x range
     output_start: float = 0.0           # ψ at x0 (rad, of DC from the frame line)

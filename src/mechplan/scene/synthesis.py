@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from typing import Any
 
@@ -22,8 +23,8 @@ PROBLEM_KEYS = {
     "coulisse": ("frame", "crank", "coulisse", "stroke"),
     "shaper": ("frame", "crank", "stroke", "rod"),
     "guidance": ("B", "C", "pivot_line"),
-    "function": ("function", "x_range", "points", "input_start", "input_range", "output_start",
-                 "output_range", "frame"),
+    "function": ("function", "x_range", "points", "count", "input_start", "input_range",
+                 "output_start", "output_range", "frame"),
 }
 LENGTHS = ("rocker", "frame", "stroke", "offset", "crank", "coulisse", "rod")
 MAX_K = 1e3
@@ -104,13 +105,17 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
         sheet=sheet, standard=standard, title_block=fields, **fg)
 
 
+MAX_POINTS = 50
+
+
 def _numbers(s: Table, key: str, count: int | None) -> tuple[float, ...] | None:
-    """A list of plain numbers (``count`` of them when given, else 3)."""
+    """A list of plain numbers (``count`` of them; None: from 3 to MAX_POINTS)."""
     raw = s.raw(key)
     if raw is None:
         return None
     want = count or 3
-    if not isinstance(raw, list) or len(raw) != want or not all(
+    sized = len(raw) == want if count else 3 <= len(raw) <= MAX_POINTS  # type: ignore[arg-type]
+    if not isinstance(raw, list) or not sized or not all(
             isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
             for v in raw):
         raise _error(s, key, "numbers", n=str(want), value=repr(raw))
@@ -125,11 +130,17 @@ def _function_keys(s: Table) -> dict[str, Any]:
         raise _error(s, "x_range", "numbers", n="2", value="—")
     if not x_range[0] < x_range[1]:
         raise _error(s, "x_range", "x_order", value=repr(list(x_range)))
-    points = _numbers(s, "points", 3)
-    if points is not None and not (x_range[0] <= points[0] < points[1] < points[2]
-                                   <= x_range[1]):
+    points = _numbers(s, "points", None)
+    if points is not None and not (x_range[0] <= points[0] and points[-1] <= x_range[1] and all(
+            p < q for p, q in itertools.pairwise(points))):
         raise _error(s, "points", "points_order", value=repr(list(points)))
+    count = s.raw("count", 3)
+    if not isinstance(count, int) or isinstance(count, bool) or not 3 <= count <= MAX_POINTS:
+        raise _error(s, "count", "numbers", n=f"3…{MAX_POINTS}", value=repr(count))
+    if points is not None and s.has("count"):
+        raise _error(s, "count", "points_or_count")
     return {"function": s.string("function"), "x_range": x_range, "points": points,
+            "point_count": count,
             "input_start": s.quantity("input_start", "angle", 0.0) or 0.0,
             "input_range": s.quantity("input_range", "angle", required=True),
             "output_start": s.quantity("output_start", "angle", 0.0) or 0.0,

@@ -249,7 +249,8 @@ class SynthesisStudy:
         lines = [message(f"synth.fg.kind_{kind}", lang)]
         for defect in ("branch_defect", "circuit_defect"):
             lines.append(message(f"synth.fg.{defect}_{'yes' if c[defect] else 'no'}", lang))
-        lines.append(message("synth.fg.error", lang,
+        exact = len(c["precision_x"]) == 3
+        lines.append(message("synth.fg.error" if exact else "synth.fg.error_lsq", lang,
                              e=significant(c["structural_error_max"], 4, lang),
                              x=number(c["structural_error_at_x"], 4, lang)))
         lines.append(message("synth.fg.round_trip", lang,

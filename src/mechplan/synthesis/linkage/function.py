@@ -49,12 +49,13 @@ def chebyshev(x0: float, x1: float, n: int = 3) -> list[float]:
 
 
 def freudenstein(phi: list[float], psi: list[float]) -> tuple[float, float, float]:
-    """K1, K2, K3 from three (φ, ψ) pairs (rad)."""
+    """K1, K2, K3 from three (φ, ψ) pairs (rad) exactly, from more by least squares."""
     m = np.array([[math.cos(s), -math.cos(p), 1.0] for p, s in zip(phi, psi)])
     rhs = np.array([math.cos(p - s) for p, s in zip(phi, psi)])
-    if abs(np.linalg.det(m)) < 1e-12:
+    sv = np.linalg.svd(m, compute_uv=False)
+    if sv[-1] < 1e-12 * sv[0]:
         raise np.linalg.LinAlgError("singular")
-    k1, k2, k3 = np.linalg.solve(m, rhs)
+    k1, k2, k3 = np.linalg.lstsq(m, rhs, rcond=None)[0]
     return float(k1), float(k2), float(k3)
 
 
@@ -91,7 +92,7 @@ def function_generator(spec: SynthesisSpec) -> LinkageDesign:
         raise _error(spec, "x_range", "function_range", f=spec.function, x0=repr(x0),
                      x1=repr(x1))
     d = spec.frame if spec.frame is not None else DEFAULT_FRAME
-    xs = list(spec.points) if spec.points is not None else chebyshev(x0, x1)
+    xs = list(spec.points) if spec.points is not None else chebyshev(x0, x1, spec.point_count)
 
     def phi_of(x: np.ndarray | float) -> np.ndarray | float:
         return spec.input_start + spec.input_range * (x - x0) / (x1 - x0)  # type: ignore[operator]
@@ -173,7 +174,8 @@ def function_generator(spec: SynthesisSpec) -> LinkageDesign:
     for j, (x, (p, s)) in enumerate(zip(xs, asked), start=1):
         protocol.append(Step("synth.fg.point", {"n": j, "x": x, "y": float(f(np.array(x))),
                                                 "phi": p, "psi": s}))
-    protocol += [Step("synth.fg.solve", {"k1": k1, "k2": k2, "k3": k3}),
+    protocol += [Step("synth.fg.solve" if len(xs) == 3 else "synth.fg.lstsq",
+                      {"k1": k1, "k2": k2, "k3": k3, "n": len(xs)}),
                  Step("synth.fg.lengths", {"d": d, "a": a_s, "b": b, "c": c_s})]
     if turn_a or turn_c:
         protocol.append(Step("synth.fg.turned", {"a": a, "c": c}))
