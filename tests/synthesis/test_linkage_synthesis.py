@@ -458,3 +458,16 @@ def test_function_generator_by_least_squares():
     with pytest.raises(SceneError) as err:
         solve_text(fg_scene(count=5, points=[1.1, 1.5, 1.9]), "t.toml")
     assert err.value.key == "synthesis.count"
+
+
+def test_slider_crank_chosen_by_its_gamma_min():
+    s = study("slider_crank", K=1.15, stroke="160 mm", gamma="45 deg")
+    n = s.design.lengths
+    # γmin = 90° − asin((e + r)/l), independently
+    assert 90 * DEG - math.asin((n["e"] + n["r"]) / n["l"]) == pytest.approx(45 * DEG, abs=1e-12)
+    assert s.check.k == pytest.approx(1.15, abs=1e-9)
+    assert s.check.output == pytest.approx(0.16, abs=1e-9)
+    assert s.check.gamma_min == pytest.approx(45 * DEG, abs=1e-9)
+    with pytest.raises(SceneError) as err:
+        study("slider_crank", K=1.15, stroke="160 mm", gamma="80 deg")
+    assert err.value.key == "synthesis.gamma"

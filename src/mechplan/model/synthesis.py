@@ -34,6 +34,7 @@ class SynthesisSpec:
     coulisse: float | None = None       # O3B (coulisse)
     rod: float | None = None            # BC of the shaper
     gamma_limit: float | None = None    # the admissible minimum transmission angle [γ]
+    gamma_target: float | None = None   # a slider-crank chosen by its γmin
     function: str | None = None         # y = f(x) of a function generator
     x_range: tuple[float, float] | None = None
     points: tuple[float, ...] | None = None        # precision points x (None: Chebyshev)

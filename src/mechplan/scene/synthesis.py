@@ -19,7 +19,7 @@ TOP_KEYS = ("kind", "title", "language", "description", "synthesis", "drive", "p
 #: the keys each problem takes besides ``problem``, ``K`` and ``gamma_min``
 PROBLEM_KEYS = {
     "crank_rocker": ("swing", "rocker", "frame", "frame_angle"),
-    "slider_crank": ("stroke", "offset", "lambda"),
+    "slider_crank": ("stroke", "offset", "lambda", "gamma"),
     "coulisse": ("frame", "crank", "coulisse", "stroke"),
     "shaper": ("frame", "crank", "stroke", "rod"),
     "guidance": ("B", "C", "pivot_line"),
@@ -70,6 +70,10 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
     if values.get("offset") is not None and lam is not None:
         raise _error(s, "lambda", "offset_or_lambda")
     gamma = s.quantity("gamma_min", "angle", positive=True)
+    gamma_target = s.quantity("gamma", "angle", positive=True) if problem == "slider_crank" \
+        else None
+    if gamma_target is not None and (values.get("offset") is not None or lam is not None):
+        raise _error(s, "gamma", "offset_or_lambda")
     speed, sense = 10.0, 1
     d = top.table("drive")
     if d is not None:
@@ -101,8 +105,8 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
         swing=swing, rocker=values.get("rocker"), frame=values.get("frame"),
         frame_angle=frame_angle, stroke=values.get("stroke"), offset=values.get("offset"),
         rod_ratio=lam, crank=values.get("crank"), coulisse=values.get("coulisse"),
-        rod=values.get("rod"), gamma_limit=gamma, speed=speed, sense=sense, positions=count,
-        sheet=sheet, standard=standard, title_block=fields, **fg)
+        rod=values.get("rod"), gamma_limit=gamma, gamma_target=gamma_target, speed=speed,
+        sense=sense, positions=count, sheet=sheet, standard=standard, title_block=fields, **fg)
 
 
 MAX_POINTS = 50

@@ -92,6 +92,17 @@ def _pick(spec: SynthesisSpec, circ: _Circle) -> tuple[float, float, float, Step
         n = circ.lengths(e)
         return e, n["r"], n["l"], Step("synth.sc.choice_lambda", {"lam": lam})
     e = g.maximise(circ.gamma, eps, circ.e_max - eps)
+    if spec.gamma_target is not None:
+        target, best = spec.gamma_target, circ.gamma(e)
+        if not target <= best:
+            raise _error(spec, "gamma", "gamma_unreachable",
+                         value=repr(round(math.degrees(target), 6)),
+                         best=repr(round(math.degrees(best), 4)))
+        found = g.roots(lambda x: circ.gamma(x) - target, eps, circ.e_max - eps)
+        e = min(found, key=lambda x: circ.lengths(x)["l"]) if found else e
+        n = circ.lengths(e)
+        return e, n["r"], n["l"], Step("synth.sc.choice_gamma", {"gamma": target,
+                                                                 "n": len(found)})
     n = circ.lengths(e)
     return e, n["r"], n["l"], Step("synth.sc.choice_best", {"gamma": circ.gamma(e)})
 
