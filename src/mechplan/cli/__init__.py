@@ -303,9 +303,11 @@ def parser() -> argparse.ArgumentParser:
     pr.set_defaults(func=_project)
     from .batch import add_parser as add_batch
     from .check import add_parser as add_check
+    from .synth import add_parser as add_synth
 
     add_check(sub)
     add_batch(sub)
+    add_synth(sub)
     names = template_names()
     n = sub.add_parser("new", help="start a scene from a bundled template",
                        description="Copy a bundled template to start a scene.",

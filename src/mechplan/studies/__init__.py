@@ -1,9 +1,10 @@
 """One entry for every kind of scene: read it, solve what it asks for, report, JSON and sheets.
 
 A scene file says what it describes with its top-level ``kind`` key: ``"mechanism"`` (the default: a
-linkage, optionally with ``[dynamics]``/``[engine]`` sections), ``"cam"``, ``"gears"`` or
-``"engine"``. Each kind is solved by its own package and presented by its module here
-(``studies/<kind>.py``); the CLI and the public API only see :class:`Study`.
+linkage, optionally with ``[dynamics]``/``[engine]`` sections), ``"cam"``, ``"gears"``,
+``"engine"`` or ``"synthesis"`` (a linkage from K and its stroke or swing). Each kind is solved by
+its own package and presented by its module here (``studies/<kind>.py``); the CLI and the public
+API only see :class:`Study`.
 """
 
 from __future__ import annotations
@@ -73,6 +74,10 @@ def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
         from .gears import solve_gear_text
 
         return solve_gear_text(text, file)
+    if kind == "synthesis":
+        from .synthesis import solve_synthesis_text
+
+        return solve_synthesis_text(text, file)
     raise SceneError(f"scenes of kind {kind!r} are not supported by this build", file=file,
                      key="kind")
 
