@@ -68,7 +68,6 @@ _EXAMPLES = {
     "area": '"78.5 cm^2"',
     "dimensionless": '"0.35"',
     "density": '"7800 kg/m^3"',
-    "stiffness": '"20 N/mm" or "20000 N/m"',
     "mu_length": '"0.0025 m/mm"',
     "mu_velocity": '"0.1 (m/s)/mm"',
     "mu_acceleration": '"2 (m/s^2)/mm"',

@@ -260,9 +260,9 @@ class Kernel:
         else:
             status = self.function(phi, tolerance, block, xs, rel, bad, store)
         if n == 1 and self.deferred:    # one position (the API's common call): one ufunc call
-            cols, js, minus = self._deferred_arrays
+            cols, js, subtracted = self._deferred_arrays
             row = block[0]
-            row[cols] = np.arctan2(row[cols], xs[0, js]) - minus
+            row[cols] = np.arctan2(row[cols], xs[0, js]) - subtracted
         else:
             for col, j, minus in self.deferred:
                 angle = block[:, col]

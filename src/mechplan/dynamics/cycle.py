@@ -212,7 +212,7 @@ class MachineCycle:
                 p = dot(value, v)
                 lever += _lever(value, v) * factor
             other = c.results.get(f"load_{j}_other")     # the far end of a spring or cylinder
-            if other is not None:
+            if other is not None and load.other is not None:
                 v2 = self._velocity(ev, load.other, n)
                 p = p + dot(ev[other], v2)
                 lever += _lever(ev[other], v2) * factor

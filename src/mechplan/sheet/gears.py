@@ -79,6 +79,7 @@ def omega_rows(res: PlanetaryResult, lang: str,
                ordinary: dict[str, float] | None = None) -> list[tuple[str, str, str]]:
     """(link, ω, ω − ω_h) of every gear and the carrier, then the ordinary pair (ω only)."""
     p = res.plan
+    assert p is not None, "a train that cannot be drawn has no velocity plan"
     rows = [(name, significant(p.omega[name], 6, lang), significant(p.relative[name], 6, lang))
             for name in p.names]
     return rows + [(name, number(w, 3, lang), "—") for name, w in (ordinary or {}).items()]

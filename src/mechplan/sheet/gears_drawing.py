@@ -36,6 +36,7 @@ def _scheme(res: PlanetaryResult, mu_l: float, sx: float = 1.0) -> list[Primitiv
     """Upper half of the train in section: gears as lines across their pitch diameters; the
     gears' places along the axis ``sx`` times the usual 95 mm."""
     p = res.plan
+    assert p is not None, "a train that cannot be drawn has no drawing"
     sch = res.spec.scheme
     names = sch.gear_names
     int1, int2 = sch.internal

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...model.mechanism import Mechanism, Pair
-from ...model.structure import Structure
+from ...model.structure import Group, Structure
 from ...model.textbook import Answer, TextbookSpec
 from ..graph import Construction, Evaluation
 from .least import LeastVelocity, least_velocity, slowest_links
@@ -75,6 +75,8 @@ def textbook_answers(c: Construction, ev: Evaluation, mech: Mechanism, structure
                 out.rubbing.append(Rubbing(p, r, dw, v))
     if Answer.TRANSMISSION in spec.asked:
         for g in structure.groups:
+            if not isinstance(g, Group):    # a triad's legs: no one transmission angle
+                continue
             out.transmission.append(transmission(c, ev, mech, g))
             out.least_gamma[g.name] = least_transmission(c, mech, g)
     if Answer.STROKE in spec.asked:
