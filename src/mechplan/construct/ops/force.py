@@ -297,7 +297,7 @@ class FrictionLoop:
         return self._downstream[1]
 
 
-def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
+def friction_iterate(step: Step, theta: Array, *, shared: dict[Any, Any]) -> Result:
     """Friction by the courses' iteration; the value is the friction-free balancing moment M_b⁰.
 
     Pass 0 has no friction (the friction loads are zero); each next pass takes the friction
@@ -315,7 +315,7 @@ def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
     passes = 0
     downstream = loop.downstream(step.id)
     kept: dict[str, Array] = {}
-    kept_shared: dict = {}
+    kept_shared: dict[Any, Any] = {}
     for passes in range(1, loop.max_iterations + 1):
         inner = c.evaluate(phi, overrides={step.id: mb0})
         inner.values.update(kept)
@@ -340,13 +340,13 @@ def friction_iterate(step: Step, theta: Array, *, shared: dict) -> Result:
     return mb0, None, None
 
 
-def _basis(step: Step, shared: dict) -> Array:
+def _basis(step: Step, shared: dict[Any, Any]) -> Array:
     """|R| of this pair from the pass before (zeros on the friction-free pass)."""
     out: Array = shared[("friction", step.input("loop"))]["basis"][:, step.param("index")]
     return out
 
 
-def friction_couple(step: Step, loop: Array, *omegas: Array, shared: dict) -> Result:
+def friction_couple(step: Step, loop: Array, *omegas: Array, shared: dict[Any, Any]) -> Result:
     """M_f = −ρ·|R|·sign(ω_j − ω_i) on link j of a revolute pair (ρ = f·r, the friction circle).
 
     Inputs after the loop: ω_j, then ω_i (absent when link i is the frame).
@@ -356,7 +356,7 @@ def friction_couple(step: Step, loop: Array, *omegas: Array, shared: dict) -> Re
 
 
 def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *carrier: Array,
-                   shared: dict) -> Result:
+                   shared: dict[Any, Any]) -> Result:
     """F_f = −f·|N|·sign(v_rel·u)·u on a slider; v_rel = its point's velocity minus the velocity
     of the carrier's point under it (``carrier``: that image; absent for a frame guide)."""
     u = direction(angle)

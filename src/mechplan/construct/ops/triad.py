@@ -79,7 +79,7 @@ def edges(a1: Array, a2: Array, step: Step) -> Array:
 
 def _params(step: Step) -> tuple[float, float, float, tuple[float, float], tuple[float, float]]:
     return (float(step.param("l1")), float(step.param("l2")), float(step.param("l3")),
-            tuple(step.param("d2")), tuple(step.param("d3")))  # type: ignore[return-value]
+            tuple(step.param("d2")), tuple(step.param("d3")))
 
 
 def _brackets(a1: Array, a2: Array, a3: Array, th: Array, step: Step,
@@ -128,7 +128,8 @@ def _refine(a1: Array, a2: Array, a3: Array, lo: Array, hi: Array, flo: Array, f
 
 
 def _crossing(f0: Array, f1: Array) -> Array:
-    return np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1)
+    out: Array = np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1)
+    return out
 
 
 def roots(a1: Array, a2: Array, a3: Array, step: Step, sigma: int) -> list[tuple[float, int]]:

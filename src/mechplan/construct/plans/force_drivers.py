@@ -20,6 +20,7 @@ from ...model.structure import Group
 from ..ops import Op
 from ..step import Kind, Role
 from ..terms import UNKNOWN, parallel
+from ..terms import perp as perp_to
 from . import force as fp
 from .drivers import _sides, first_group
 from .force_loads import State, Term
@@ -58,9 +59,9 @@ def cylinder_group(st: State, g: Group) -> None:
     fp._reaction(st, gn, outer_p, m1, partner, r1)
     fp._reaction(st, gn, outer_e, m2, at_e, r2)
     on_k = fp._reaction(st, gn, inner, at_k, partner, r_in)
-    fp._equation(st, gn, [(st.label(t1), fp.perp_to(f"{p1}{k}"), "✓"),
+    fp._equation(st, gn, [(st.label(t1), perp_to(f"{p1}{k}"), "✓"),
                           *fp._rows(st.terms[partner]), *fp._rows(cylinder),
-                          (st.label(t2), fp.perp_to(f"{e}{k}"), "✓"),
+                          (st.label(t2), perp_to(f"{e}{k}"), "✓"),
                           (f"R^n_{fp.pair_key(m2, at_e)}", parallel(f"{e}{k}"), "?"),
                           (f"R^n_{fp.pair_key(m1, partner)}", parallel(f"{p1}{k}"), "?")])
     # the rod alone: its loads and the force at its pin, closed by the barrel's force on it
