@@ -12,8 +12,8 @@ import zipfile
 from pathlib import Path
 
 import ezdxf
-import numpy as np
 import pytest
+from check.sheets import PlanSpec, exact_sheet, move, write_dxf
 from ezdxf.math import Matrix44
 
 from mechplan.batch import Variant, run_class
@@ -25,8 +25,6 @@ from mechplan.lms.sheets import MOODLE_COLUMNS
 from mechplan.model.plans import Plan
 from mechplan.scene import load_scene
 from mechplan.solve import solve
-
-from check.sheets import PlanSpec, exact_sheet, move, write_dxf
 
 TEMPLATES = Path(__file__).resolve().parents[2] / "src" / "mechplan" / "templates"
 CLASS = [Variant("v1", "", {"links.1.lengths.OA": "90 mm"}),
@@ -129,7 +127,7 @@ def _worksheet(out: Path) -> list[list[str]]:
 
 
 def test_worksheet_grades_by_the_rule(klass):
-    root, variants, done, files = klass
+    _root, variants, done, files = klass
     rows = {r[0]: r for r in _worksheet(done.out)[1:]}
     g = MOODLE_COLUMNS.index("Grade")
     c = MOODLE_COLUMNS.index("Feedback comments")
@@ -149,14 +147,15 @@ def test_worksheet_grades_by_the_rule(klass):
     # Dave is not in the worksheet (nor on the roster): never written in, listed
     assert "Participant 106" not in rows
     problems = (done.out / "problems.csv").read_text(encoding="utf-8")
-    for who, what in (("Dave Stranger", "not on the roster"), ("Dave Stranger", "not in the "
-                      "grading worksheet"), ("Carol White", "handed in nothing"),
+    assert ".submissions" not in problems and "00_" not in problems   # the student's names
+    for who, what in (("Dave Stranger", "not on the roster"), ("Dave Stranger", ("not in the "
+                      "grading worksheet")), ("Carol White", "handed in nothing"),
                       ("Bob Jones", "broken.dxf"), ("Nguyễn Văn Bình", "note.pdf")):
         assert any(who in line and what in line for line in problems.splitlines()), (who, what)
 
 
 def test_worksheet_imports_back_as_moodle_wrote_it(klass):
-    root, _, done, _ = klass
+    _root, _, done, _ = klass
     raw = done.out.joinpath("grading_worksheet.csv").read_bytes()
     assert raw.startswith(b"\xef\xbb\xbf")                      # same encoding (BOM kept)
     assert raw.count(b"\r\n") == 6 and raw.replace(b"\r\n", b"").count(b"\n") == 0
@@ -188,6 +187,9 @@ def test_same_work_names_the_copied_pair(klass):
     assert (frozenset(("Иван Петров (101)", "Trần Thị Cúc (103)")), "same geometry") in pairs
     assert (frozenset(("Иван Петров (101)", "Dave Stranger (106)")), "identical file") in pairs
     assert not any("Nguyễn" in s.first + s.second for s in done.same)
+    # the copy of variant 1 handed in for variant 3 fits variant 1 better than its own
+    fits = [s for s in done.same if s.evidence == "fits another variant"]
+    assert any(s.first == "Trần Thị Cúc (103)" and s.second == "v1" for s in fits), fits
     text = (done.out / "same_work.csv").read_text(encoding="utf-8")
     assert "Trần Thị Cúc (103)" in text
 
@@ -214,7 +216,7 @@ def test_moodle_quiz_one_question_per_value(klass):
 
 
 def test_canvas_download_and_gradebook(klass, tmp_path):
-    root, variants, _, files = klass
+    _root, variants, _, files = klass
     download = tmp_path / "submissions"
     download.mkdir()
     (download / "ivanp_5001_90001_sheet.dxf").write_bytes(files["own"].read_bytes())
@@ -253,4 +255,3 @@ def test_cli_round_trip_and_resume(klass, capsys):
     assert "same work" in said
     # nothing checked again: the reports are the first run's
     assert {p: p.stat().st_mtime_ns for p in (out / "reports").rglob("*.txt")} == stamp
-    assert np.isclose(1.0, 1.0)

@@ -94,9 +94,10 @@ def _variant(p: Participant, person: Person | None, variants: dict[str, VariantF
 
 
 def _check_one(scene: str, sub: str, tol: tuple[float, float], lang: str, folder: str,
-               stem: str, digest: str, rule: Rule) -> dict[str, Any]:
+               stem: str, digest: str, rule: Rule, light: bool = False) -> dict[str, Any]:
     """Check one file (or find it checked: ``<stem>.json`` with the same digest); write its
-    report (text) and, for a drawing, its overlay DXF into ``folder``."""
+    report (text) and, for a drawing, its overlay DXF into ``folder`` (not when ``light``: a
+    check against another variant, for the same-work list)."""
     from ..check.grade import Options, check
     from ..check.overlay import write_overlay
     from ..check.report import Tolerance
@@ -111,12 +112,13 @@ def _check_one(scene: str, sub: str, tol: tuple[float, float], lang: str, folder
     try:
         report = check(scene, sub, Options(tolerance={None: Tolerance(tol[0], tol[1])}))
     except MechplanError as exc:
-        row["error"] = str(exc)
+        row["error"] = str(exc).replace(sub, Path(sub).name[3:])
     else:
         g = grade_report(report, rule)
         summary = report.summary()
         row |= {"grade": g.grade, "earned": g.earned, "possible": g.possible, "lost": g.lost,
                 "passed": report.passed, "nothing_found": report.nothing_found, **summary}
+    if not light and "grade" in row:
         write_atomic(Path(folder) / f"{stem}.txt", (report.text(lang) + "\n").encode())
         if report.kind == "dxf":
             try:
@@ -214,7 +216,12 @@ def round_trip(variants_path: Path, download: Path, out: Path, *, roster: Path |
         for i, row in sorted(done, key=lambda x: x[0]):
             idx, key, original = where[i]
             row["folder"], row["file"] = key, original
+            row["call"] = i
             results[idx].files.append(row)
+        others = _other_variants(results, calls, variants, the_rule)
+        fits = list(run_tasks(_indexed, [(i, c[:9]) for i, c in enumerate(others)],
+                              workers=jobs if jobs > 0 else None, progress=progress,
+                              desc="other variants", unit="file"))
         prints = []
         for r in results:
             who = f"{r.p.name} ({r.p.id})"
@@ -228,14 +235,49 @@ def round_trip(variants_path: Path, download: Path, out: Path, *, roster: Path |
                 if m.name.lower().endswith(GRADED):
                     sub = _read_quietly(read_submission, private, r, m)
                     prints.append(fingerprint(who, m.data, sub))
-        same = same_work(prints)
+        same = same_work(prints) + _better_fits(results, others, fits, lang)
         written = _write_outputs(out, results, problems, same, the_rule, sheet, people,
                                  variants, lang, reports)
     return RoundTrip(results, problems, same, out, written)
 
 
+def _other_variants(results: list[Result], calls: list[tuple[Any, ...]],
+                    variants: dict[str, VariantFile], rule: Rule) -> list[tuple[Any, ...]]:
+    """Checks of every file graded below the maximum against every other variant (light:
+    no report written), for the same-work list."""
+    out = []
+    for r in results:
+        for f in r.files:
+            if f.get("grade") is None or f["grade"] >= rule.max_grade or f.get("nothing_found"):
+                continue
+            _, sub, tol, lang, folder, stem, digest, _ = calls[f["call"]]
+            for vid, v in variants.items():
+                if vid != r.variant:
+                    out.append((str(v.scene), sub, tol, lang, folder, f"{stem}@{safe_name(vid)}",
+                                hashlib.sha256((digest + vid).encode()).hexdigest(), rule, True,
+                                r, f, vid))
+    return out
+
+
+def _better_fits(results: list[Result], others: list[tuple[Any, ...]],
+                 fits: list[tuple[int, dict[str, Any]]], lang: str) -> list[Same]:
+    """Submissions that fit another variant better than their own."""
+    best: dict[tuple[int, int], tuple[float, str, Result, dict[str, Any]]] = {}
+    for i, row in fits:
+        *_, r, f, vid = others[i]
+        if row.get("grade") is not None and row["grade"] > f["grade"]:
+            k = (id(r), f["call"])
+            if k not in best or row["grade"] > best[k][0]:
+                best[k] = (row["grade"], vid, r, f)
+    return [Same(f"{r.p.name} ({r.p.id})", vid, "fits another variant",
+                 message("lms.same.fits", lang, file=f["file"], own=r.variant,
+                         own_grade=significant(f["grade"], 6, lang), other=vid,
+                         grade=significant(g, 6, lang)))
+            for g, vid, r, f in best.values()]
+
+
 def _indexed(i: int, call: tuple[Any, ...]) -> tuple[int, dict[str, Any]]:
-    return i, _check_one(*call)
+    return i, _check_one(*call[:9])
 
 
 def _read_quietly(reader: Any, private: Path, r: Result, m: Member) -> Any:
