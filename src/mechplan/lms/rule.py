@@ -5,7 +5,6 @@ the tolerances, the grade scale. ``DEFAULT_RULE`` is the documented default (doc
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -85,11 +84,10 @@ def _optional(doc: dict[str, Any], key: str, file: str) -> float | None:
 
 def parse_rule(text: str, file: str = "<rule>") -> Rule:
     """A rule from TOML text (keys left out keep the default)."""
-    try:
-        given = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CheckError(say("rule_toml", reason=str(exc)), file=file) from None
-    doc = tomllib.loads(DEFAULT_RULE)
+    from ..scene.document import parse_toml
+
+    given = parse_toml(text, file)
+    doc = parse_toml(DEFAULT_RULE, "<default rule>")
     for k, v in given.items():
         if k not in doc:
             raise CheckError(say("rule_key", keys=", ".join(doc)), file=file, key=k)

@@ -85,9 +85,9 @@ def _variant(p: Participant, person: Person | None, variants: dict[str, VariantF
             if v and v in variants:
                 return v
     for m in p.files:
-        v = variant_in("/".join(m.parts), variants)
-        if v:
-            return v
+        named = variant_in("/".join(m.parts), variants)
+        if named:
+            return named
     if p.id in variants:
         return p.id
     return next(iter(variants)) if len(variants) == 1 else ""
