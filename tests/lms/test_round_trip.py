@@ -255,3 +255,36 @@ def test_cli_round_trip_and_resume(klass, capsys):
     assert "same work" in said
     # nothing checked again: the reports are the first run's
     assert {p: p.stat().st_mtime_ns for p in (out / "reports").rglob("*.txt")} == stamp
+
+
+def test_canvas_qti_package(klass):
+    _, variants, done, _ = klass
+    qti = "{http://www.imsglobal.org/xsd/ims_qtiasiv1p2}"
+    with zipfile.ZipFile(done.out / "quiz_canvas_qti.zip") as zf:
+        manifest = ET.fromstring(zf.read("imsmanifest.xml"))
+        hrefs = [f.get("href") for f in manifest.iter() if f.tag.endswith("}file")]
+        tests = {}
+        for href in hrefs:
+            test = ET.fromstring(zf.read(href)).find(f"{qti}assessment")
+            tests[test.get("title")] = test
+    assert set(tests) == {"mechplan v1", "mechplan v2", "mechplan v3"}
+    for vid, test in tests.items():
+        key = json.loads((variants / vid.split()[1] / "answer_key.json").read_text("utf-8"))
+        items = list(test.iter(f"{qti}item"))
+        assert len(items) == sum(1 for r in key["rows"] for x in r["values"] if x is not None)
+    key = json.loads((variants / "v1" / "answer_key.json").read_text(encoding="utf-8"))
+    vb = next(r for r in key["rows"] if r["quantity"] == "v_B")["values"][1]
+    item = next(i for i in tests["mechplan v1"].iter(f"{qti}item")
+                if i.get("title") == "v1 v_B φ=30°")
+    kinds = [f.findtext(f"{qti}fieldentry") for f in item.iter(f"{qti}qtimetadatafield")]
+    assert "numerical_question" in kinds
+    low = float(item.find(f".//{qti}vargte").text)
+    high = float(item.find(f".//{qti}varlte").text)
+    assert low == pytest.approx(0.98 * vb, rel=1e-5) and high == pytest.approx(1.02 * vb, rel=1e-5)
+
+
+def test_the_documented_default_rule_is_the_default():
+    from mechplan.lms.rule import DEFAULT_RULE
+
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "lms.md").read_text(encoding="utf-8")
+    assert DEFAULT_RULE.strip() in doc

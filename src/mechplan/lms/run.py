@@ -35,7 +35,7 @@ from .variants import VariantFile, load_variants, variant_in
 GRADED = (".dxf", ".toml", ".csv", ".tsv")
 PRIVATE = ".submissions"
 OUTPUTS = ("grading_worksheet.csv", "feedback_files.zip", "canvas_gradebook.csv", "problems.csv",
-           "same_work.csv", "lms_summary.csv", "quiz_moodle.xml")
+           "same_work.csv", "lms_summary.csv", "quiz_moodle.xml", "quiz_canvas_qti.zip")
 
 
 @dataclass
@@ -304,7 +304,7 @@ def _csv(rows: list[list[Any]]) -> bytes:
 def _write_outputs(out: Path, results: list[Result], problems: list[Problem], same: list[Same],
                    rule: Rule, sheet: Any, people: list[Person],
                    variants: dict[str, VariantFile], lang: str, reports: Path) -> list[Path]:
-    from .quiz import moodle_quiz
+    from .quiz import canvas_qti, moodle_quiz
 
     written = []
     moodle = [r for r in results if r.p.lms == "moodle"]
@@ -357,6 +357,14 @@ def _write_outputs(out: Path, results: list[Result], problems: list[Problem], sa
     if keys:
         written.append(write_atomic(out / "quiz_moodle.xml",
                                     moodle_quiz(keys, rule.tolerance_pct, lang)))
+        seen: dict[str, dict[str, Any]] = {}
+        for r in results:                  # Canvas: a quiz per variant, assigned to its students
+            key = variants[r.variant].answer_key() if r.variant else None
+            if key is not None:
+                seen.setdefault(r.variant, key)
+        written.append(write_atomic(out / "quiz_canvas_qti.zip", canvas_qti(
+            [(f"mechplan {vid}", k) for vid, k in sorted(seen.items())],
+            rule.tolerance_pct, lang)))
     return written
 
 
