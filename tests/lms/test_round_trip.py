@@ -38,11 +38,12 @@ WORKSHEET = ('\ufeff' + ",".join(f'"{c}"' for c in MOODLE_COLUMNS) + "\r\n" + ""
     f'"Monday, 2 March 2026, 10:00 AM","-",""\r\n' for pid, name, mail in (
         ("101", "Иван Петров", "ivan@uni.ru"), ("102", "Nguyễn Văn Bình", "binh@uni.vn"),
         ("103", "Trần Thị Cúc", "cuc@uni.vn"), ("104", "Anna Smith", "anna@uni.edu"),
-        ("105", "Bob Jones", "bob@uni.edu"))))
+        ("105", "Bob Jones", "bob@uni.edu"), ("107", "Lê Thị Đào", "dao@uni.vn"))))
 ROSTER = ("First name,Last name,ID number,Email address,variant\n"
           "Иван,Петров,s101,ivan@uni.ru,v1\nVăn Bình,Nguyễn,s102,binh@uni.vn,v2\n"
           "Thị Cúc,Trần,s103,cuc@uni.vn,v3\nAnna,Smith,s104,anna@uni.edu,v1\n"
-          "Bob,Jones,s105,bob@uni.edu,v2\nCarol,White,s107,carol@uni.edu,v3\n")
+          "Bob,Jones,s105,bob@uni.edu,v2\nCarol,White,s107,carol@uni.edu,v3\n"
+          "Thị Đào,Lê,s108,dao@uni.vn,v3\n")
 
 
 def _velocity_sheet(scene_file: Path, path: Path, mutate=None) -> Path:
@@ -101,6 +102,12 @@ def klass(tmp_path_factory):
     vals = {r["quantity"]: r["values"][k] for r in key["rows"]}
     table = (f'"φ" = "30°"\n[values]\nVA = "{vals["v_A"]:.6g} m/s"\n'
              f'VB = "{vals["v_B"] * 1.3:.6g} m/s"\n"ω2" = "{vals["ω2"]:.6g} rad/s"\n')
+    key3 = json.loads((variants / "v3" / "answer_key.json").read_text(encoding="utf-8"))
+    v3 = {r["quantity"]: r["values"][k] for r in key3["rows"]}
+    # a CSV table of "name, value" rows in another notation, all right for variant 3
+    dao = "φ,30°\n" + "".join(f"{n},{v3[q]:.6g} {u}\n" for n, q, u in (
+        ("VA", "v_A", "m/s"), ("VB", "v_B", "m/s"), ("VS2", "v_S2", "m/s"),
+        ("w2", "ω2", "rad/s"), ("aB", "a_B", "m/s^2")))
     moodle = {
         "Иван Петров_101_assignsubmission_file_/sheet.dxf": own.read_bytes(),
         "Nguyễn Văn Bình_102_assignsubmission_file_/plan.dxf": wrong.read_bytes(),
@@ -110,6 +117,8 @@ def klass(tmp_path_factory):
         "Anna Smith_104_assignsubmission_file_/answers.toml": table.encode(),
         "Bob Jones_105_assignsubmission_file_/broken.dxf": b"0\nSECTION\n2\nENTITIES\ngarbage",
         "Dave Stranger_106_assignsubmission_file_/dave.dxf": own.read_bytes(),
+        # Moodle without "Download submissions in folders": flat names
+        "Lê Thị Đào_107_assignsubmission_file_bảng.csv": dao.encode(),
     }
     download = root / "moodle.zip"
     download.write_bytes(_zip(moodle))
@@ -132,6 +141,8 @@ def test_worksheet_grades_by_the_rule(klass):
     g = MOODLE_COLUMNS.index("Grade")
     c = MOODLE_COLUMNS.index("Feedback comments")
     assert rows["Participant 101"][g] == "100"                 # own sheet, everything right
+    assert rows["Participant 107"][g] == "100"                 # a right table, flat layout
+    assert "bảng.csv: 5 of 5 right" in rows["Participant 107"][c]
     # the wrong point b: graded as the rule says from the rows mechplan check finds
     report = check(variants / "v2" / "scene.toml", files["wrong"], Options())
     assert any(r.verdict == WRONG and r.cause == NEW for r in report.rows)
@@ -158,7 +169,7 @@ def test_worksheet_imports_back_as_moodle_wrote_it(klass):
     _root, _, done, _ = klass
     raw = done.out.joinpath("grading_worksheet.csv").read_bytes()
     assert raw.startswith(b"\xef\xbb\xbf")                      # same encoding (BOM kept)
-    assert raw.count(b"\r\n") == 6 and raw.replace(b"\r\n", b"").count(b"\n") == 0
+    assert raw.count(b"\r\n") == 7 and raw.replace(b"\r\n", b"").count(b"\n") == 0
     before = list(csv.reader(io.StringIO(WORKSHEET.lstrip("\ufeff"), newline="")))
     after = _worksheet(done.out)
     assert after[0] == list(MOODLE_COLUMNS) == before[0]
@@ -288,3 +299,17 @@ def test_the_documented_default_rule_is_the_default():
 
     doc = (Path(__file__).resolve().parents[2] / "docs" / "lms.md").read_text(encoding="utf-8")
     assert DEFAULT_RULE.strip() in doc
+
+
+def test_same_table_in_another_order(tmp_path):
+    from mechplan.lms.samework import fingerprint, same_work
+    from mechplan.submission.read import read_submission
+
+    rows = ["φ,30°", "VA,17.3 m/s", "VB,10.7 m/s", "VS2,14 m/s", "w2,-37.8 rad/s", "aB,2738 m/s^2"]
+    a, b, c = tmp_path / "a.csv", tmp_path / "b.csv", tmp_path / "c.csv"
+    a.write_text("\n".join(rows) + "\n", encoding="utf-8")
+    b.write_text("\n".join([rows[0], *reversed(rows[1:])]) + "\n", encoding="utf-8")
+    c.write_text("\n".join([*rows[:-1], "aB,2700 m/s^2"]) + "\n", encoding="utf-8")
+    prints = [fingerprint(p.stem, p.read_bytes(), read_submission(p)) for p in (a, b, c)]
+    assert [(s.first, s.second, s.evidence) for s in same_work(prints)] == [("a", "b",
+                                                                            "same table")]

@@ -8,7 +8,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from .layout import CANVAS, MOODLE
+from .layout import CANVAS, MOODLE, MOODLE_FLAT
 
 
 def add_arguments(p: Any) -> None:
@@ -27,7 +27,8 @@ def wanted(args: argparse.Namespace) -> bool:
     if args.roster or args.worksheet or args.rule or sub.suffix.lower() == ".zip":
         return True
     if sub.is_dir():
-        return any(MOODLE.match(e.name) or CANVAS.match(e.name) for e in sub.iterdir())
+        return any(MOODLE.match(e.name) or MOODLE_FLAT.match(e.name) or CANVAS.match(e.name)
+                   for e in sub.iterdir())
     return False
 
 

@@ -12,6 +12,9 @@ from .archive import Member
 #: a Moodle participant's folder: full name, participant id, the plugin
 MOODLE = re.compile(r"^(?P<name>.+?)_(?P<id>\d+)_assign(?:submission|feedback)_"
                     r"(?P<plugin>[a-z]+)_?$")
+#: Moodle without "Download submissions in folders": ``Full Name_<id>_assignsubmission_file_<file>``
+MOODLE_FLAT = re.compile(r"^(?P<name>.+?)_(?P<id>\d+)_assignsubmission_(?P<plugin>[a-z]+)_"
+                         r"(?P<file>.+)$")
 #: a Canvas file: optional "late_", login, user id, submission id, the student's file name
 CANVAS = re.compile(r"^(?P<late>late_)?(?P<login>[^/]+?)(?:_late)?_(?P<id>\d+)_(?P<sub>\d+)_"
                     r"(?P<file>.+)$", re.IGNORECASE)
@@ -43,6 +46,13 @@ def participants(members: list[Member]) -> tuple[list[Participant], list[Member]
             key = f"moodle:{g['id']}"
             p = found.setdefault(key, Participant(key, g["name"], g["id"], "moodle", folder))
             p.files.append(Member(m.parts[moodle + 1:], m.data))
+            continue
+        flat = MOODLE_FLAT.match(m.parts[0]) if len(m.parts) == 1 else None
+        if flat:
+            key = f"moodle:{flat['id']}"
+            folder = f"{flat['name']}_{flat['id']}_assignsubmission_file_"
+            p = found.setdefault(key, Participant(key, flat["name"], flat["id"], "moodle", folder))
+            p.files.append(Member((flat["file"],), m.data))
             continue
         c = CANVAS.match(m.parts[0]) if m.parts else None
         if c:
