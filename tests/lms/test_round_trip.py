@@ -159,6 +159,7 @@ def test_worksheet_grades_by_the_rule(klass):
     assert "Participant 106" not in rows
     problems = (done.out / "problems.csv").read_text(encoding="utf-8")
     assert ".submissions" not in problems and "00_" not in problems   # the student's names
+    assert "Maximum Grade" not in problems                    # the rule's 100 is the worksheet's
     for who, what in (("Dave Stranger", "not on the roster"), ("Dave Stranger", ("not in the "
                       "grading worksheet")), ("Carol White", "handed in nothing"),
                       ("Bob Jones", "broken.dxf"), ("Nguyễn Văn Bình", "note.pdf")):
@@ -240,8 +241,11 @@ def test_canvas_download_and_gradebook(klass, tmp_path):
     rule = tmp_path / "rule.toml"
     rule.write_text('max_grade = 10\n[penalty]\ncarried = 0\n[canvas]\nassignment = '
                     '"Course project"\nassignment_id = "777"\n', encoding="utf-8")
-    done = round_trip(variants, download, tmp_path / "out", roster=roster, rule=rule)
-    table = list(csv.reader((tmp_path / "out" / "canvas_gradebook.csv").open(encoding="utf-8")))
+    out = download / "graded"              # inside the download: never read as submissions
+    round_trip(variants, download, out, roster=roster, rule=rule)
+    done = round_trip(variants, download, out, roster=roster, rule=rule)
+    assert len(done.results) == 2 and not any("graded" in p.file for p in done.problems)
+    table = list(csv.reader((out / "canvas_gradebook.csv").open(encoding="utf-8")))
     assert table[0] == ["Student", "ID", "SIS User ID", "SIS Login ID", "Section",
                         "Course project (777)"]
     assert table[1][0].strip() == "Points Possible" and table[1][5] == "10"
@@ -299,6 +303,15 @@ def test_the_documented_default_rule_is_the_default():
 
     doc = (Path(__file__).resolve().parents[2] / "docs" / "lms.md").read_text(encoding="utf-8")
     assert DEFAULT_RULE.strip() in doc
+
+
+def test_a_worksheet_with_another_maximum_is_flagged(klass, tmp_path):
+    root, variants, _, _ = klass
+    sheet = tmp_path / "ws.csv"
+    sheet.write_text(WORKSHEET.replace('"100.00"', '"10.00"'), encoding="utf-8")
+    done = round_trip(variants, root / "moodle.zip", tmp_path / "out",
+                      roster=root / "roster.csv", worksheet=sheet)
+    assert any("Maximum Grade is 10.00" in p.problem for p in done.problems)
 
 
 def test_same_table_in_another_order(tmp_path):

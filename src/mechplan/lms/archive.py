@@ -134,13 +134,15 @@ def _read_member(zf: zipfile.ZipFile, info: zipfile.ZipInfo, entry: str, archive
     return body
 
 
-def read_folder(folder: Path) -> list[Member]:
-    """Every regular file under a folder (links are not followed; zips inside expanded)."""
+def read_folder(folder: Path, skip: Path | None = None) -> list[Member]:
+    """Every regular file under a folder (links are not followed; zips inside expanded; the
+    folder ``skip`` — the output, when it is inside — left out)."""
     budget = _Budget()
     out: list[Member] = []
     root = str(folder)
+    skipped = skip.resolve() if skip is not None else None
     for here, dirs, files in os.walk(folder, followlinks=False):
-        dirs.sort()
+        dirs[:] = sorted(d for d in dirs if (Path(here) / d).resolve() != skipped)
         rel = Path(here).relative_to(folder).parts
         for name in sorted(files):
             path = Path(here) / name
@@ -162,10 +164,11 @@ def read_folder(folder: Path) -> list[Member]:
     return out
 
 
-def read_download(path: Path) -> list[Member]:
-    """The files of a submissions download: a zip, or a folder it was unpacked into."""
+def read_download(path: Path, out: Path | None = None) -> list[Member]:
+    """The files of a submissions download: a zip, or a folder it was unpacked into (without
+    the output folder ``out`` if it is inside)."""
     if path.is_dir():
-        return read_folder(path)
+        return read_folder(path, out)
     from ..userfiles import FileKind, read_bytes
 
     data = read_bytes(path, FileKind("lms_archive", MAX_TOTAL), error=ArchiveError)

@@ -161,7 +161,7 @@ def round_trip(variants_path: Path, download: Path, out: Path, *, roster: Path |
     the_rule = load_rule(rule)
     people = read_roster(roster) if roster else []
     sheet = read_worksheet(worksheet) if worksheet else None
-    members = read_download(download)       # refuses a hostile archive before writing anything
+    members = read_download(download, out)     # refuses a hostile archive before writing anything
     found, loose = participants(members)
     out = prepare_output(out)
     problems = [Problem("", "/".join(m.parts), message("lms.problem.whose", lang)) for m in loose]
@@ -293,6 +293,13 @@ def _read_quietly(reader: Any, private: Path, r: Result, m: Member) -> Any:
     return None
 
 
+def _number(text: str) -> float | None:
+    try:
+        return float(text.replace(",", "."))
+    except ValueError:
+        return None
+
+
 def _csv(rows: list[list[Any]]) -> bytes:
     from ..batch.csvsafe import csv_safe
 
@@ -315,6 +322,14 @@ def _write_outputs(out: Path, results: list[Result], problems: list[Problem], sa
                                        rule.max_grade, rule.decimals)
         problems += [Problem(n, "", message("lms.problem.not_in_worksheet", lang))
                      for n in missing]
+        if sheet is not None:
+            maxima = {r[sheet.header.index("Maximum Grade")] for r in sheet.rows
+                      if "Maximum Grade" in sheet.header
+                      and len(r) > sheet.header.index("Maximum Grade")}
+            if any(_number(m) not in (None, rule.max_grade) for m in maxima):
+                problems.append(Problem("", "grading_worksheet.csv", message(
+                    "lms.problem.max_grade", lang, worksheet=", ".join(sorted(maxima)),
+                    rule=significant(rule.max_grade, 6, lang))))
         written.append(write_atomic(out / "grading_worksheet.csv", data))
         written.append(write_atomic(out / "feedback_files.zip",
                                     lambda fh: _feedback_zip(fh, moodle, reports)))
