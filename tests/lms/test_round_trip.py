@@ -185,6 +185,8 @@ def test_feedback_zip_layout(klass):
     with zipfile.ZipFile(done.out / "feedback_files.zip") as zf:
         names = set(zf.namelist())
         report = zf.read("Иван Петров_101_assignsubmission_file_/sheet_report.txt").decode()
+        pdf = zf.read("Nguyễn Văn Bình_102_assignsubmission_file_/plan_overlay.pdf")
+    assert pdf.startswith(b"%PDF")
     assert "Иван Петров_101_assignsubmission_file_/sheet_overlay.dxf" in names
     assert "Nguyễn Văn Bình_102_assignsubmission_file_/plan_overlay.dxf" in names
     assert "Anna Smith_104_assignsubmission_file_/answers_report.txt" in names

@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from .. import __version__
 from ..i18n import message, significant
 from ..render.atomic import write_atomic
 from .archive import Member, read_download, safe_name
@@ -123,7 +124,9 @@ def _check_one(scene: str, sub: str, tol: tuple[float, float], lang: str, folder
         if report.kind == "dxf":
             try:
                 write_overlay(report, Path(folder) / f"{stem}_overlay.dxf", lang)
+                write_overlay(report, Path(folder) / f"{stem}_overlay.pdf", lang)
                 row["overlay"] = f"{stem}_overlay.dxf"
+                row["overlay_pdf"] = f"{stem}_overlay.pdf"
             except MechplanError as exc:
                 row["overlay_error"] = str(exc)
         row["report"] = f"{stem}.txt"
@@ -206,7 +209,7 @@ def round_trip(variants_path: Path, download: Path, out: Path, *, roster: Path |
                 path = own / name
                 write_atomic(path, m.data)
                 digest = hashlib.sha256(m.data + scene.read_bytes() + repr(the_rule).encode()
-                                        + lang.encode()).hexdigest()
+                                        + lang.encode() + __version__.encode()).hexdigest()
                 calls.append((str(scene), str(path), (the_rule.tolerance_mm,
                               the_rule.tolerance_pct), lang, str(mine), name, digest, the_rule))
                 where.append((len(results) - 1, key, m.name))
@@ -391,7 +394,8 @@ def _feedback_zip(fh: Any, moodle: list[Result], reports: Path) -> None:
             for f in r.files:
                 stem = safe_name(Path(f["file"]).stem)
                 for name, shown in ((f.get("report"), f"{stem}_report.txt"),
-                                    (f.get("overlay"), f"{stem}_overlay.dxf")):
+                                    (f.get("overlay"), f"{stem}_overlay.dxf"),
+                                    (f.get("overlay_pdf"), f"{stem}_overlay.pdf")):
                     if name:
                         src = reports / f["folder"] / name
                         if src.is_file() and not src.is_symlink():
