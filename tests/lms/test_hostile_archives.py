@@ -91,9 +91,12 @@ def test_odd_names_stay_inside_the_output(tmp_path):
     odd = "Ann\u202e:*?<>|\t_7_assignsubmission_file_/..a\\b:c*.toml"
     download = tmp_path / "all.zip"
     download.write_bytes(_zip({odd: TABLE,
-                               "Ann_8_assignsubmission_file_/sub/./x.toml": TABLE}))
+                               "Ann_8_assignsubmission_file_/sub/./x.toml": TABLE,
+                               "Eve ..\u2215.._9_assignsubmission_file_/...toml": TABLE}))
     out = tmp_path / "out"
     done = round_trip(SCENE, download, out)
     for p in tmp_path.rglob("*"):
         assert p in (download, out) or out in p.parents, p
-    assert len(done.results) == 2 and all(len(r.files) == 1 for r in done.results)
+    assert len(done.results) == 3 and all(len(r.files) == 1 for r in done.results)
+    with zipfile.ZipFile(out / "feedback_files.zip") as zf:
+        assert all(".." not in n.split("/") for n in zf.namelist())
