@@ -51,7 +51,8 @@ def run(args: argparse.Namespace) -> int:
     for p in done.problems:
         print(message("lms.cli.problem", lang, student=p.who, file=p.file, problem=p.problem))
     for s in done.same:
-        print(message("lms.cli.same", lang, first=s.first, second=s.second, evidence=s.evidence,
+        evidence = message("lms.evidence." + s.evidence.replace(" ", "_"), lang)
+        print(message("lms.cli.same", lang, first=s.first, second=s.second, evidence=evidence,
                       detail=s.detail))
     for path in done.written:
         print(message("check.cli.wrote", lang, path=str(path)), file=sys.stderr)
