@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from mechplan.cli import main
+from mechplan.errors import CheckError
 from mechplan.lms import archive, round_trip
 from mechplan.lms.archive import ArchiveError, read_zip
 
@@ -100,3 +101,11 @@ def test_odd_names_stay_inside_the_output(tmp_path):
     assert len(done.results) == 3 and all(len(r.files) == 1 for r in done.results)
     with zipfile.ZipFile(out / "feedback_files.zip") as zf:
         assert all(".." not in n.split("/") for n in zf.namelist())
+
+
+def test_an_empty_download_is_refused(tmp_path):
+    download = tmp_path / "all.zip"
+    download.write_bytes(_zip({"Ann_1_assignsubmission_file_/": b""}))
+    with pytest.raises(CheckError, match="no"):
+        round_trip(SCENE, download, tmp_path / "out")
+    assert not (tmp_path / "out").exists()

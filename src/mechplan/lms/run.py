@@ -166,6 +166,11 @@ def round_trip(variants_path: Path, download: Path, out: Path, *, roster: Path |
     sheet = read_worksheet(worksheet) if worksheet else None
     members = read_download(download, out)     # refuses a hostile archive before writing anything
     found, loose = participants(members)
+    if not found and not loose:
+        from ..check.texts import T
+        from ..errors import CheckError
+
+        raise CheckError(T("error.no_submissions"), file=str(download))
     out = prepare_output(out)
     problems = [Problem("", "/".join(m.parts), message("lms.problem.whose", lang)) for m in loose]
     emails: dict[str, str] = {}

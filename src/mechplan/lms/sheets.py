@@ -96,7 +96,9 @@ def fill_worksheet(sheet: Worksheet, filled: Iterable[Filled], max_grade: float,
                         lineterminator=sheet.newline)
     writer.writerow(sheet.header)
     writer.writerows(rows)
-    return buf.getvalue().encode(sheet.encoding), missing
+    # the worksheet's own encoding; a character it cannot hold (a re-saved cp1251 sheet and a
+    # Vietnamese file name in a comment) becomes "?" rather than failing the class
+    return buf.getvalue().encode(sheet.encoding, errors="replace"), missing
 
 
 @dataclass
