@@ -68,6 +68,9 @@ def add_parser(subparsers: Any) -> None:
     p.add_argument("--lang", choices=LANGUAGES, default=None,
                    help="language of the report, its hints and the overlay's notes: en, ru, vi "
                    "or zh (default: the scene's language); ru and vi write a decimal comma")
+    from ..lms.cli import add_arguments
+
+    add_arguments(p)
     p.set_defaults(func=run)
 
 
@@ -142,7 +145,8 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
     from ..check.overlay import write_overlay
 
     outputs = [Path(o) for o in args.output]
-    for o in outputs if not Path(args.submission).is_dir() else ():
+    many = Path(args.submission).is_dir() or Path(args.submission).suffix.lower() == ".zip"
+    for o in outputs if not many else ():
         if o.suffix.lower() not in (".json", ".svg", ".dxf", ".pdf", *TEXT_SUFFIXES):
             raise CheckError(T("error.output_kind", path=str(o)))
     if args.label_distance is not None and not args.label_distance > 0:
@@ -160,6 +164,10 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
                                high=f"{MAX_PAPER_MM:g} mm"))
     options = Options(at_deg=args.at, tolerance=parse_tolerances(args.tolerance),
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
+    from ..lms import cli as lms
+
+    if lms.wanted(args):                    # a Moodle or Canvas download (docs/lms.md)
+        return lms.run(args)
     if Path(args.submission).is_dir():
         return _run_class(args, options)
     from ..check.answers import maybe_check_answers
