@@ -44,6 +44,8 @@ class ClassJob:
     size: str | None = None
     standard: str | None = None
     language: str | None = None
+    #: the formats of each student's explanatory note ("docx", "pdf"); none: no note
+    note: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -79,7 +81,7 @@ def _comment(text: str) -> str:
 def _fingerprint(job: ClassJob, scene: str) -> str:
     h = hashlib.sha256()
     for part in (__version__, scene, ",".join(job.formats), str(job.size), str(job.standard),
-                 str(job.language)):
+                 str(job.language), ",".join(job.note)):
         h.update(part.encode())
         h.update(b"\0")
     return h.hexdigest()
@@ -140,13 +142,37 @@ def _solve_and_write(job: ClassJob, variant: Variant, scene: str, scene_file: st
         raise MechplanError(f"{len(failures)} of {solution.positions} positions cannot be built; "
                             f"φ = {first.phi_deg:g}°: {first.reason}", file=scene_file)
     language = job.language or str(parse_toml(scene, scene_file).get("language", "en"))
-    for sheet in study.sheets(job.size, job.standard, job.language, job.name):
+    sheets = study.sheets(job.size, job.standard, job.language, job.name)
+    for sheet in sheets:
         write(sheet, folder, list(job.formats))
+    if job.note:
+        _write_note(job, variant, scene, scene_file, study, sheets, language, folder)
     key = answer_key(study.to_json(), variant.id, variant.name, variant.values)
     write_atomic(folder / "answer_key.json",
                  json.dumps(key, ensure_ascii=False, indent=1).encode())
     write_atomic(folder / "answer_key.pdf", answer_pdf(key, language))
     return headline(key)
+
+
+def _write_note(job: ClassJob, variant: Variant, scene: str, scene_file: str, study: Any,
+                sheets: list[Any], language: str, folder: Path) -> None:
+    """The student's explanatory note (docs/note.md) beside their sheets: the project of one
+    study, with the student's name and variant on its title page."""
+    from ..note.build import build_note
+    from ..note.project import DEFAULT_TRADITION, ROLES, Project
+    from ..note.write import note_files
+    from ..scene.document import scene_kind
+
+    kind = scene_kind(parse_toml(scene, scene_file), scene_file)
+    role = next(r for r, k in ROLES.items() if k == kind)
+    lang = language if language in DEFAULT_TRADITION else "en"
+    project = Project(file=scene_file, title="", language=lang,
+                      tradition=DEFAULT_TRADITION[lang], studies={role: Path(scene_file)},
+                      people={"student": variant.name, "variant": variant.id},
+                      sheet=job.size)
+    note = build_note(project, {role: study}, sheets)
+    for name, data in note_files(note, job.name, job.note).items():
+        write_atomic(folder / name, data)
 
 
 def write_summary(path: Path, rows: Sequence[dict[str, Any]]) -> Path:
@@ -170,7 +196,8 @@ def run_class(template: str | Path, variants: Sequence[Variant], out_dir: str | 
               formats: Sequence[str] = ("dxf", "svg", "pdf"), workers: int | None = None,
               scheduler: str | None = None, progress: bool | None = None,
               size: str | None = None, standard: str | None = None,
-              language: str | None = None, variants_file: str | None = None) -> ClassResult:
+              language: str | None = None, variants_file: str | None = None,
+              note: Sequence[str] = ()) -> ClassResult:
     """Solve and draw every variant of a class; write ``summary.csv`` at the top of ``out_dir``.
 
     Every key a variant sets is checked against the template first: a key the template does not
@@ -185,7 +212,7 @@ def run_class(template: str | Path, variants: Sequence[Variant], out_dir: str | 
         with_values(doc, variant.values, variants_file)
     out = prepare_output(out_dir)
     job = ClassJob(text, str(template), template.stem, str(out.resolve()),
-                   tuple(formats), size, standard, language)
+                   tuple(formats), size, standard, language, tuple(note))
     rows: list[dict[str, Any] | None] = [None] * len(variants)
     skipped = 0
     calls = [(job, v, i) for i, v in enumerate(variants)]

@@ -38,6 +38,8 @@ def add_parser(subparsers: Any) -> None:
     b.add_argument("--sheet", choices=SHEETS)
     b.add_argument("--standard", choices=STANDARDS)
     b.add_argument("--lang", choices=LANGUAGES)
+    b.add_argument("--note", action="store_true",
+                   help="also each student's explanatory note (DOCX and PDF; docs/note.md)")
     b.set_defaults(func=_batch)
     s = subparsers.add_parser(
         "sweep", help="a design space: summaries of every variant of a grid over the cycle",
@@ -77,7 +79,8 @@ def _batch(args: argparse.Namespace) -> int:
         result = run_class(args.template, variants, args.output, formats=formats,
                            workers=args.workers, scheduler=args.scheduler,
                            progress=args.progress, size=args.sheet, standard=args.standard,
-                           language=args.lang, variants_file=args.variants)
+                           language=args.lang, variants_file=args.variants,
+                           note=("docx", "pdf") if args.note else ())
     except KeyboardInterrupt:
         return _interrupted()
     print(f"{result.summary}: {result.solved} solved, {result.skipped} complete already, "

@@ -20,7 +20,7 @@ from ..i18n import LANGUAGES
 ROLES: dict[str, str] = {"linkage": "mechanism", "engine": "engine", "gears": "gears",
                          "cam": "cam"}
 TRADITIONS: tuple[str, ...] = ("gost", "tcvn", "gb", "plain")
-_DEFAULT_TRADITION = {"ru": "gost", "vi": "tcvn", "zh": "gb", "en": "plain"}
+DEFAULT_TRADITION = {"ru": "gost", "vi": "tcvn", "zh": "gb", "en": "plain"}
 _STANDARD = {"gost": "gost", "tcvn": "tcvn", "gb": "iso", "plain": "iso"}
 _PEOPLE = ("student", "group", "variant", "instructor", "school", "year", "code")
 
@@ -68,7 +68,7 @@ def read_project(path: str | os.PathLike[str]) -> Project:
     if language not in LANGUAGES:
         raise SceneError(f"project.language must be one of {', '.join(LANGUAGES)} "
                          f"(got {language!r})", file=file, key="project.language")
-    tradition = _text(head, "tradition", file, "project") or _DEFAULT_TRADITION[language]
+    tradition = _text(head, "tradition", file, "project") or DEFAULT_TRADITION[language]
     if tradition not in TRADITIONS:
         raise SceneError(f"project.tradition must be one of {', '.join(TRADITIONS)} "
                          f"(got {tradition!r})", file=file, key="project.tradition")
