@@ -28,12 +28,14 @@ from ..model.engine import (
     ThermalSpec,
 )
 from ..units import registry
+from ..model.engine_balance import BalanceSpec
 from .document import parse_toml
+from .engine_balance import parse_balance
 from .reader import Table
 from .spec import DrawingSpec, Scene
 
 TOP_KEYS = ("kind", "title", "language", "engine", "masses", "indicator", "articulated", "drawing",
-            "title_block", "output")
+            "title_block", "output", "balance")
 
 
 @dataclass(frozen=True)
@@ -44,6 +46,7 @@ class EngineScene:
     drawing: DrawingSpec
     path: str
     linkage: Scene | None = None
+    balance: BalanceSpec | None = None
 
 
 def parse_engine_scene(text: str, file: str = "<scene>", *,
@@ -125,7 +128,11 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
                       indicator=ind, articulated=articulated, grid=grid, table_step=step,
                       language=language, csv=csv_path)
     linkage = articulated_linkage(spec, file) if articulated is not None else None
-    return EngineScene(spec, _drawing(top, 1), file, linkage)
+    bal = top.table("balance")
+    throws = 1 if layout is Layout.ARTICULATED else (
+        (n_cyl + 1) // 2 if layout is Layout.V else n_cyl)
+    balance = parse_balance(bal, throws) if bal is not None else None
+    return EngineScene(spec, _drawing(top, 1), file, linkage, balance)
 
 
 def _rod_length(e: Table, R: float) -> float:

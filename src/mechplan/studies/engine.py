@@ -21,10 +21,13 @@ from ..dynamics.engine.analysis import (
     grids,
     wear,
 )
+from ..dynamics.engine.balance import Balance, balance
 from ..dynamics.engine.model import EngineModel
+from ..model.engine_balance import BalanceSpec
 from ..i18n import message, number, scientific
 from ..scene.engine import EngineScene, parse_engine_scene
 from ..sheet.engine import COLUMNS, table_cells
+from .engine_balance import balance_json, report_lines
 from .answers import Keys, Own, Written, span, written_all
 
 if TYPE_CHECKING:
@@ -65,6 +68,13 @@ class EngineStudy:
     def checks(self) -> Checks:
         """Consistency checks."""
         return consistency_checks(self.model, grids(self.model)[0])
+
+    @cached_property
+    def balance(self) -> Balance:
+        """Free forces and moments, counterweights, balance shafts (the scene's [balance] or the
+        defaults)."""
+        d = self.dense
+        return balance(self.model, self.scene.balance or BalanceSpec(), d.phi, d.pins)
 
     @cached_property
     def wear(self) -> tuple[np.ndarray, np.ndarray]:
@@ -141,6 +151,8 @@ class EngineStudy:
         if ch.pair_torque_error is not None:
             lines.append(message("engine.check.pair", lang,
                                  error=scientific(ch.pair_torque_error, 2, lang)))
+        if self.scene.balance is not None:
+            lines += report_lines(self.balance, d.phi, lang)
         return "\n".join(lines) + "\n"
 
     def _table_text(self, lang: str) -> list[str]:
@@ -168,6 +180,8 @@ class EngineStudy:
                          for p, q in t.pins.items()},
                 "journals": [[float(J[k, 0]), float(J[k, 1])] for J in t.journals]})
         rays, sums = self.wear
+        extra = ({"balance": balance_json(self.balance, d.phi)}
+                 if self.scene.balance is not None else {})
         return {
             "mechplan": __version__, "kind": "engine", "title": spec.title,
             "engine": {"strokes": spec.strokes, "omega": spec.speed, "bore": spec.bore, "R": spec.R,
@@ -192,7 +206,7 @@ class EngineStudy:
                        "inertia_torque_mean": ch.inertia_mean, "brix_dp_max": ch.brix_dp_max,
                        "p_max": ch.p_max, "series_da_max": ch.da_max, "a_max": ch.a_max,
                        "series_dPj_max": ch.dPj_max, "two_mass_dM_max": ch.two_mass_dM_max,
-                       "pair_torque_error": ch.pair_torque_error}}
+                       "pair_torque_error": ch.pair_torque_error}, **extra}
 
     def to_csv(self, dense: bool = False) -> str:
         """The per-angle table as CSV (comma-separated, decimal point, units in the headings)."""
