@@ -12,6 +12,6 @@ class BalanceSpec:
 
     positions: tuple[float, ...] | None = None   # axial position of each throw (pin), m
     orders: int = 6                              # highest harmonic order reported
-    share: float = 0.5                           # share of the reciprocating mass on the counterweights
+    share: float = 0.5                           # reciprocating share on the counterweights
     cw_radius: float | None = None               # radius of a cheek's counterweight centre, m
     shafts: bool = False                         # size Lanchester balance shafts for the 2nd order

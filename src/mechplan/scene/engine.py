@@ -27,8 +27,8 @@ from ..model.engine import (
     RodMasses,
     ThermalSpec,
 )
-from ..units import registry
 from ..model.engine_balance import BalanceSpec
+from ..units import registry
 from .document import parse_toml
 from .engine_balance import parse_balance
 from .reader import Table

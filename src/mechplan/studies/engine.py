@@ -23,12 +23,12 @@ from ..dynamics.engine.analysis import (
 )
 from ..dynamics.engine.balance import Balance, balance
 from ..dynamics.engine.model import EngineModel
-from ..model.engine_balance import BalanceSpec
 from ..i18n import message, number, scientific
+from ..model.engine_balance import BalanceSpec
 from ..scene.engine import EngineScene, parse_engine_scene
 from ..sheet.engine import COLUMNS, table_cells
-from .engine_balance import balance_json, report_lines
 from .answers import Keys, Own, Written, span, written_all
+from .engine_balance import balance_json, report_lines
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
