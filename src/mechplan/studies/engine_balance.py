@@ -9,57 +9,7 @@ import numpy as np
 
 from ..dynamics.engine.balance import Balance, extremes, turning
 from ..i18n import message, number
-
-
-def orders_cells(b: Balance, lang: str) -> list[list[str]]:
-    """Heading and rows of the orders table: amplitudes exact and by the series, free force and
-    moment (maxima over the turn), the parts turning with and against the crank."""
-    def n(x: float, k: int = 2) -> str:
-        return number(x, k, lang)
-
-    m = "M" if b.spacing_given else "M_a"
-    head = [message(f"balance.col.{c}", lang) for c in
-            ("order", "A", "A_series", "F", "F_series", "dF", m, m + "_series", "forward",
-             "backward")]
-    rows = [head]
-    for k, o in b.orders.items():
-        f, bk = turning(o.F)
-        Fs = extremes(o.F_series)[0] if o.F_series is not None else None
-        Ms = extremes(o.M_series)[0] if o.M_series is not None else None
-        rows.append([str(k), number(o.A, 6, lang),
-                     "—" if o.A_series is None else number(o.A_series, 6, lang),
-                     n(o.F_max), "—" if Fs is None else n(Fs),
-                     "—" if Fs is None else n(o.F_max - Fs), n(o.M_max),
-                     "—" if Ms is None else n(Ms), n(abs(f)), n(abs(bk))])
-    return rows
-
-
-def counterweight_cells(b: Balance, lang: str) -> list[list[str]]:
-    """Throw, counterweight mass reduced to R, m·r of one cheek, one cheek's mass."""
-    cw = b.counterweights
-    head = [message(f"balance.col.{c}", lang) for c in ("throw", "z", "reduced", "mr", "mass")]
-    rows = [head]
-    for p in sorted(cw.reduced):
-        rows.append([str(p), number(b.positions[p] * (1e3 if b.spacing_given else 1.0),
-                                    1 if b.spacing_given else 0, lang),
-                     number(cw.reduced[p], 4, lang), number(cw.per_cheek[p] * 1e3, 3, lang),
-                     "—" if cw.mass is None else number(cw.mass[p], 4, lang)])
-    return rows
-
-
-def journal_cells(b: Balance, phi: np.ndarray, lang: str) -> list[list[str]]:
-    """Journal, max and mean load (kN) before and after the counterweights."""
-    cw = b.counterweights
-    head = [message(f"balance.col.{c}", lang) for c in
-            ("journal", "max_before", "max_after", "mean_before", "mean_after")]
-    rows = [head]
-    span = phi[-1] - phi[0]
-    for j, (J0, J1) in enumerate(zip(cw.journals_before, cw.journals_after)):
-        m0, m1 = np.hypot(J0[:, 0], J0[:, 1]), np.hypot(J1[:, 0], J1[:, 1])
-        rows.append([str(j + 1)] + [number(v * 1e-3, 3, lang) for v in (
-            float(m0.max()), float(m1.max()), float(np.trapezoid(m0, phi) / span),
-            float(np.trapezoid(m1, phi) / span))])
-    return rows
+from ..sheet.engine_balance import counterweight_cells, journal_cells, orders_cells
 
 
 def report_lines(b: Balance, phi: np.ndarray, lang: str) -> list[str]:

@@ -147,6 +147,8 @@ class Balance:
     total_exact: Array               # (N, 2) reciprocating free force over one turn, exact
     total_series: Array              # the same with the 1st and 2nd orders of the λ-series
     residual: float                  # max |exact − Σ reported orders| (the orders left out), N
+    terms: dict[int, Array]          # cylinder → m_j·c_k (k = 0 … orders): its share of each order
+    arms: dict[int, float]           # cylinder → z − z0
 
 
 def positions_of(model: EngineModel, spec: BalanceSpec) -> tuple[dict[int, float], bool]:
@@ -259,4 +261,5 @@ def balance(model: EngineModel, spec: BalanceSpec, phi: Array, pins: dict[int, P
     return Balance(pos, given, z0, rotF + scene_cw_F, rotM + scene_cw_M, orders, cws,
                    rotF + cw_F + first.F, rotM + cw_M + first.M,
                    rotF + scene_cw_F + first.F, rotM + scene_cw_M + first.M, shafts,
-                   np.asarray(exact), series, residual)
+                   np.asarray(exact), series, residual,
+                   {n: model.m_j[n] * coeff[n][:top + 1] for n in coeff}, arm)
