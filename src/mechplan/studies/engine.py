@@ -29,6 +29,7 @@ from ..scene.engine import EngineScene, parse_engine_scene
 from ..sheet.engine import COLUMNS, table_cells
 from .answers import Keys, Own, Written, span, written_all
 from .engine_balance import balance_json, report_lines
+from .engine_thermal import thermal_json, thermal_lines
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
@@ -91,6 +92,8 @@ class EngineStudy:
             return number(x, k, lang)
 
         lines = [message("engine.report.title", lang, title=spec.title), ""]
+        if self.scene.cycle is not None:
+            lines += [*thermal_lines(self.scene.cycle, spec.V_h, lang), ""]
         lines.append(message("engine.report.geometry", lang, strokes=spec.strokes,
                              cylinders=len(spec.cylinders), n=n(spec.speed * 30 / math.pi, 0),
                              D=n(spec.bore * 1e3, 1), R=n(spec.R * 1e3, 2), L=n(spec.L * 1e3, 2),
@@ -182,6 +185,8 @@ class EngineStudy:
         rays, sums = self.wear
         extra = ({"balance": balance_json(self.balance, d.phi)}
                  if self.scene.balance is not None else {})
+        if self.scene.cycle is not None:
+            extra["thermal"] = thermal_json(self.scene.cycle, spec.V_h)
         return {
             "mechplan": __version__, "kind": "engine", "title": spec.title,
             "engine": {"strokes": spec.strokes, "omega": spec.speed, "bore": spec.bore, "R": spec.R,

@@ -1,0 +1,76 @@
+"""Parse an engine scene's ``[thermal]`` table (the thermal calculation of the cycle) and turn its
+result into the indicator diagram's thermal parameters."""
+
+from __future__ import annotations
+
+from ..model.engine import IndicatorKind, IndicatorSpec, ThermalSpec
+from ..model.engine_thermal import FUELS, Cycle, CycleSpec, thermal_cycle
+from .reader import Table
+
+KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alpha", "epsilon",
+        "p0", "T0", "dT", "p_a", "p_r", "T_r", "n1", "n2", "xi_z", "lambda_p", "K", "phi_i",
+        "eta_m", "power_kW", "stroke_bore")
+
+
+def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
+            what: str) -> float:
+    v = t.quantity(name, "dimensionless", default, required=default is None)
+    assert v is not None
+    if not lo <= v <= hi:
+        raise t.error(name, f"{what} must lie in [{lo:g}, {hi:g}] (got {v:g})")
+    return v
+
+
+def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: float,
+                  stroke_bore: float) -> tuple[Cycle, IndicatorSpec]:
+    """The thermal calculation and the indicator diagram it gives (rounded as the courses do)."""
+    t.check_keys(KEYS)
+    fuel = t.string("fuel", "petrol", choices=tuple(FUELS)) or "petrol"
+    C0, H0, O0, Hu0, m0 = FUELS[fuel]
+    diesel = (t.string("cycle", "diesel" if fuel == "diesel" else "otto",
+                       choices=("otto", "diesel")) == "diesel")
+    C = _number(t, "C", C0, 0.0, 1.0, "the carbon mass fraction")
+    H = _number(t, "H", H0, 0.0, 1.0, "the hydrogen mass fraction")
+    O = _number(t, "O", O0, 0.0, 1.0, "the oxygen mass fraction")
+    if abs(C + H + O - 1.0) > 0.02:
+        raise t.error("C", f"C + H + O must be 1 (got {C + H + O:g})")
+    Hu = _number(t, "heating_value", Hu0 * 1e-3, 10.0, 150.0, "the lower heating value in MJ/kg")
+    m_f = _number(t, "fuel_molar_mass", m0, 0.0, 1000.0, "the fuel's molar mass in kg/kmol")
+    alpha = _number(t, "alpha", None, 0.5, 5.0, "the excess-air ratio α")
+    if diesel and alpha < 1.0:
+        raise t.error("alpha", f"a diesel burns with excess air: α ≥ 1 (got {alpha:g})")
+    eps = _number(t, "epsilon", None, 2.0, 30.0, "the compression ratio ε")
+    p_amb = t.quantity("p0", "pressure", p0, positive=True)
+    p_a = t.quantity("p_a", "pressure", required=True, positive=True)
+    p_r = t.quantity("p_r", "pressure", required=True, positive=True)
+    assert p_amb is not None and p_a is not None and p_r is not None
+    if not eps * p_a > p_r:
+        raise t.error("p_r", "the residual gases need ε·p_a > p_r")
+    T0 = _number(t, "T0", 293.0, 200.0, 400.0, "the ambient temperature in K")
+    dT = _number(t, "dT", 10.0 if not diesel else 15.0, 0.0, 60.0, "the charge heating in K")
+    T_r = _number(t, "T_r", None, 500.0, 1300.0, "the residual-gas temperature in K")
+    n1 = _number(t, "n1", None, 1.2, 1.45, "the compression polytrope n1")
+    n2 = _number(t, "n2", None, 1.1, 1.4, "the expansion polytrope n2")
+    xi = _number(t, "xi_z", None, 0.5, 1.0, "the heat-use coefficient ξ_z")
+    lam_p = _number(t, "lambda_p", 1.7 if diesel else 0.0, 0.0, 3.0,
+                    "the pressure-rise ratio λ_p") if diesel else 0.0
+    if diesel and lam_p < 1.0:
+        raise t.error("lambda_p", f"must be at least 1 (got {lam_p:g})")
+    K = _number(t, "K", 0.5, 0.0, 1.0, "H2/CO in the products K")
+    phi_i = _number(t, "phi_i", 0.96 if not diesel else 0.95, 0.8, 1.0,
+                    "the fullness of the diagram φ_i")
+    eta_m = _number(t, "eta_m", 0.8, 0.3, 1.0, "the mechanical efficiency η_m")
+    power = t.quantity("power_kW", "dimensionless", positive=True)
+    S_D = _number(t, "stroke_bore", stroke_bore, 0.3, 3.0, "the stroke-to-bore ratio S/D")
+    spec = CycleSpec(diesel, C, H, O, Hu * 1e3, m_f if not diesel else 0.0, alpha, eps,
+                     speed * 30.0 / 3.141592653589793, p_amb, T0, dT, p_a, p_r, T_r, n1, n2, xi,
+                     lam_p, K, phi_i, eta_m, strokes, cylinders,
+                     power * 1e3 if power is not None else None, S_D)
+    cycle = thermal_cycle(spec)
+    if not cycle.rho < eps:
+        raise t.error("xi_z", f"the combustion ends after the expansion stroke (ρ = {cycle.rho:g} "
+                      f"≥ ε); lower xi_z or raise lambda_p")
+    thermal = ThermalSpec(eps, p_a, p_r, n1, n2, cycle.p_z, cycle.rho)
+    if 1.2 * cycle.p_c > 0.85 * cycle.p_z:
+        thermal = ThermalSpec(eps, p_a, p_r, n1, n2, cycle.p_z, cycle.rho, rounding=False)
+    return cycle, IndicatorSpec(IndicatorKind.THERMAL, thermal=thermal, epsilon=eps)
