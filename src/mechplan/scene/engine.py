@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import SceneError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 from ..model.engine import (
     ArticulatedSpec,
     CylinderSpec,
@@ -121,8 +121,7 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
     th = top.table("thermal")
     if th is not None:
         if top.has("indicator"):
-            raise top.error("indicator", "give either [thermal] (the thermal calculation) or "
-                            "[indicator], not both")
+            raise top.error("indicator", Text("cycle.error.exclusive"))
         cycle, ind = parse_thermal(th, strokes=int(strokes), cylinders=n_cyl, speed=omega,
                                    p0=p0, stroke_bore=2.0 * R / bore)
     else:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from ..i18n import Text
 from ..model.engine_balance import BalanceSpec
 from .reader import Table
 
@@ -13,7 +14,7 @@ def parse_balance(t: Table, throws: int) -> BalanceSpec:
     """The balancing inputs; ``throws``: the number of crank throws (pins) of the engine."""
     t.check_keys(KEYS)
     if t.has("throw_spacing") and t.has("throw_positions"):
-        raise t.error("throw_positions", "give either throw_spacing or throw_positions, not both")
+        raise t.error("throw_positions", Text("balance.error.either"))
     positions = None
     if t.has("throw_spacing"):
         a = t.quantity("throw_spacing", "length", required=True, positive=True)
@@ -22,20 +23,19 @@ def parse_balance(t: Table, throws: int) -> BalanceSpec:
     elif t.has("throw_positions"):
         raw = t.raw("throw_positions")
         if not isinstance(raw, list) or len(raw) != throws:
-            raise t.error("throw_positions", f"expected one axial position per crank throw "
-                          f"({throws}), e.g. [\"0 mm\", \"90 mm\", …] (got {raw!r})")
+            raise t.error("throw_positions", Text("balance.error.positions",
+                                                  {"count": throws, "got": repr(raw)}))
         positions = tuple(t.value_quantity(v, f"throw_positions[{i}]", "length")
                           for i, v in enumerate(raw))
     orders = t.raw("orders", 6)
     if not isinstance(orders, int) or isinstance(orders, bool) or not 2 <= orders <= 24:
-        raise t.error("orders", f"must be a whole number from 2 to 24 (got {orders!r})")
+        raise t.error("orders", Text("balance.error.orders", {"got": repr(orders)}))
     share = t.quantity("counterweight_share", "dimensionless", 0.5)
     assert share is not None
     if not 0.0 <= share <= 1.0:
-        raise t.error("counterweight_share", f"the share of the reciprocating mass balanced by the "
-                      f"counterweights must lie in [0, 1] (got {share:g})")
+        raise t.error("counterweight_share", Text("balance.error.share", {"value": share}))
     radius = t.quantity("counterweight_radius", "length", positive=True)
     shafts = t.raw("balance_shafts", False)
     if not isinstance(shafts, bool):
-        raise t.error("balance_shafts", f"expected true or false (got {shafts!r})")
+        raise t.error("balance_shafts", Text("balance.error.bool", {"got": repr(shafts)}))
     return BalanceSpec(positions, orders, share, radius, shafts)

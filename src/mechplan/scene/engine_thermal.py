@@ -3,6 +3,7 @@ result into the indicator diagram's thermal parameters."""
 
 from __future__ import annotations
 
+from ..i18n import Text
 from ..model.engine import IndicatorKind, IndicatorSpec, ThermalSpec
 from ..model.engine_thermal import FUELS, Cycle, CycleSpec, thermal_cycle
 from .reader import Table
@@ -14,10 +15,11 @@ KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alp
 
 def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
             what: str) -> float:
+    """A plain number ``name`` (``what`` it is, for the reader of the code) within [lo, hi]."""
     v = t.quantity(name, "dimensionless", default, required=default is None)
     assert v is not None
     if not lo <= v <= hi:
-        raise t.error(name, f"{what} must lie in [{lo:g}, {hi:g}] (got {v:g})")
+        raise t.error(name, Text("cycle.error.range", {"lo": lo, "hi": hi, "value": v}))
     return v
 
 
@@ -33,19 +35,19 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
     H = _number(t, "H", H0, 0.0, 1.0, "the hydrogen mass fraction")
     O = _number(t, "O", O0, 0.0, 1.0, "the oxygen mass fraction")
     if abs(C + H + O - 1.0) > 0.02:
-        raise t.error("C", f"C + H + O must be 1 (got {C + H + O:g})")
+        raise t.error("C", Text("cycle.error.sum", {"value": C + H + O}))
     Hu = _number(t, "heating_value", Hu0 * 1e-3, 10.0, 150.0, "the lower heating value in MJ/kg")
     m_f = _number(t, "fuel_molar_mass", m0, 0.0, 1000.0, "the fuel's molar mass in kg/kmol")
     alpha = _number(t, "alpha", None, 0.5, 5.0, "the excess-air ratio α")
     if diesel and alpha < 1.0:
-        raise t.error("alpha", f"a diesel burns with excess air: α ≥ 1 (got {alpha:g})")
+        raise t.error("alpha", Text("cycle.error.diesel_alpha", {"value": alpha}))
     eps = _number(t, "epsilon", None, 2.0, 30.0, "the compression ratio ε")
     p_amb = t.quantity("p0", "pressure", p0, positive=True)
     p_a = t.quantity("p_a", "pressure", required=True, positive=True)
     p_r = t.quantity("p_r", "pressure", required=True, positive=True)
     assert p_amb is not None and p_a is not None and p_r is not None
     if not eps * p_a > p_r:
-        raise t.error("p_r", "the residual gases need ε·p_a > p_r")
+        raise t.error("p_r", Text("cycle.error.residual"))
     T0 = _number(t, "T0", 293.0, 200.0, 400.0, "the ambient temperature in K")
     dT = _number(t, "dT", 10.0 if not diesel else 15.0, 0.0, 60.0, "the charge heating in K")
     T_r = _number(t, "T_r", None, 500.0, 1300.0, "the residual-gas temperature in K")
@@ -55,7 +57,7 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
     lam_p = _number(t, "lambda_p", 1.7 if diesel else 0.0, 0.0, 3.0,
                     "the pressure-rise ratio λ_p") if diesel else 0.0
     if diesel and lam_p < 1.0:
-        raise t.error("lambda_p", f"must be at least 1 (got {lam_p:g})")
+        raise t.error("lambda_p", Text("cycle.error.lambda_p", {"value": lam_p}))
     K = _number(t, "K", 0.5, 0.0, 1.0, "H2/CO in the products K")
     phi_i = _number(t, "phi_i", 0.96 if not diesel else 0.95, 0.8, 1.0,
                     "the fullness of the diagram φ_i")
@@ -68,8 +70,7 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
                      power * 1e3 if power is not None else None, S_D)
     cycle = thermal_cycle(spec)
     if not cycle.rho < eps:
-        raise t.error("xi_z", f"the combustion ends after the expansion stroke (ρ = {cycle.rho:g} "
-                      f"≥ ε); lower xi_z or raise lambda_p")
+        raise t.error("xi_z", Text("cycle.error.rho", {"rho": cycle.rho}))
     thermal = ThermalSpec(eps, p_a, p_r, n1, n2, cycle.p_z, cycle.rho)
     if 1.2 * cycle.p_c > 0.85 * cycle.p_z:
         thermal = ThermalSpec(eps, p_a, p_r, n1, n2, cycle.p_z, cycle.rho, rounding=False)

@@ -27,11 +27,12 @@ def report_lines(b: Balance, phi: np.ndarray, lang: str) -> list[str]:
     out.append(message("balance.report.orders", lang))
     out += table(orders_cells(b, lang))
     rf, rm = extremes(b.rotating_F)[0], extremes(b.rotating_M)[0]
-    out.append(message("balance.report.rotating", lang, F=n(rf), M=n(rm)))
+    unit = message("balance.unit.Nm" if b.spacing_given else "balance.unit.Na", lang)
+    out.append(message("balance.report.rotating", lang, F=n(rf), M=n(rm), unit=unit))
     out.append(message("balance.report.first_before", lang, F=n(extremes(b.before_F)[0]),
-                       M=n(extremes(b.before_M)[0])))
+                       M=n(extremes(b.before_M)[0]), unit=unit))
     out.append(message("balance.report.first_after", lang, share=n(b.counterweights.share, 2),
-                       F=n(extremes(b.after_F)[0]), M=n(extremes(b.after_M)[0])))
+                       F=n(extremes(b.after_F)[0]), M=n(extremes(b.after_M)[0]), unit=unit))
     dif = float(np.max(np.hypot(*(b.total_exact - b.total_series).T)))
     top = float(np.max(np.hypot(*b.total_exact.T)))
     out.append(message("balance.report.series", lang, dF=n(dif), F=n(top),
