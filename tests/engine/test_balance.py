@@ -333,3 +333,27 @@ def test_orders_against_direct_summation_over_the_turn(name):
                          (b.orders[1].F_max, F1, scale), (b.orders[1].M_max, M1, scale * A)):
         close(got, float(np.max(np.hypot(*want.T))), s, 1e-5)
     assert np.max(np.abs(b.total_exact - Fx[::8])) < 1e-9 * scale
+
+
+def test_star_panels_polygons_close_where_the_order_is_balanced():
+    """In-line four: the 1st-order force polygon closes (no resultant drawn); the 2nd-order one
+    has a dashed resultant along the cylinders (at φ = 0 the order's force points outwards)."""
+    from mechplan.drafting.primitives import Line, Role
+    from mechplan.sheet.engine_balance import star_panel
+
+    st = solved(scene([0, 180, 180, 0]))
+    b = st.balance
+    banks = {n: 0.0 for n in range(1, 5)}
+
+    def resultants(k):
+        panel = star_panel(b, st.model.phases, banks, k, "en")
+        return [p for p in panel.primitives if isinstance(p, Line) and p.role is Role.DASHED]
+
+    assert resultants(1) == []
+    (r2,) = resultants(2)
+    assert r2.end[0] - r2.start[0] > 10.0
+    assert abs(r2.end[1] - r2.start[1]) < 1e-9
+    # the star of the 2nd order has all four cranks on one ray
+    from mechplan.drafting.primitives import Text
+    panel = star_panel(b, st.model.phases, banks, 2, "en")
+    assert any(isinstance(p, Text) and p.string == "1,2,3,4" for p in panel.primitives)

@@ -140,9 +140,9 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
                       language=language, csv=csv_path)
     linkage = articulated_linkage(spec, file) if articulated is not None else None
     bal = top.table("balance")
-    throws = 1 if layout is Layout.ARTICULATED else (
+    n_pins = 1 if layout is Layout.ARTICULATED else (
         (n_cyl + 1) // 2 if layout is Layout.V else n_cyl)
-    balance = parse_balance(bal, throws) if bal is not None else None
+    balance = parse_balance(bal, n_pins) if bal is not None else None
     return EngineScene(spec, _drawing(top, 1), file, linkage, balance, cycle)
 
 

@@ -21,6 +21,7 @@ from ..drafting.primitives import (
     VAlign,
 )
 from ..dynamics.engine.analysis import Checks, EngineResult
+from ..dynamics.engine.balance import Balance
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene
@@ -47,6 +48,9 @@ class EngineData(Protocol):
 
     @property
     def wear(self) -> tuple[np.ndarray, np.ndarray]: ...
+
+    @property
+    def balance(self) -> Balance: ...
 
 
 #: per-cylinder columns of the table: (attribute, CSV name, scale to the printed unit)
@@ -108,8 +112,7 @@ def _balance_panels(study: EngineData, lang: str, scale: float) -> list[Panel]:
     m = study.model
     bank = {c.number: c.bank for c in study.scene.engine.cylinders}
     banks = {n: b - bank[1] for n, b in bank.items()}
-    return balance_panels(study.balance, m.phases, banks,  # type: ignore[attr-defined]
-                          study.dense.phi, lang, scale)
+    return balance_panels(study.balance, m.phases, banks, study.dense.phi, lang, scale)
 
 
 def _deg(phi: np.ndarray) -> np.ndarray:

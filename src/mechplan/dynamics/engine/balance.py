@@ -251,10 +251,10 @@ def balance(model: EngineModel, spec: BalanceSpec, phi: Array, pins: dict[int, P
     exact = sum(np.outer(a, axis_of(model, n) * model.m_j[n]) for n, a in acc.items())
     series = np.zeros((N_FFT, 2))
     for c in eng.cylinders:
-        s = series_harmonics(model, c.number)
+        sh = series_harmonics(model, c.number)
         u = axis_of(model, c.number) * model.m_j[c.number]
         for k in (1, 2):
-            series += course(s[k] * u, k, grid)
+            series += course(sh[k] * u, k, grid)
     rebuilt = sum(course(o.F, o.k, grid) for o in orders.values())
     total0 = sum(coeff[n][0] * axis_of(model, n) * model.m_j[n] for n in acc).real
     residual = float(np.max(np.abs(exact - rebuilt - total0)))
