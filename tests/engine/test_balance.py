@@ -357,3 +357,21 @@ def test_star_panels_polygons_close_where_the_order_is_balanced():
     from mechplan.drafting.primitives import Text
     panel = star_panel(b, st.model.phases, banks, 2, "en")
     assert any(isinstance(p, Text) and p.string == "1,2,3,4" for p in panel.primitives)
+
+
+def test_sixty_degree_v6_on_three_pins():
+    """60° V6, pins at 0/120/240° (two rods per pin): per pin the 1st order is m_jRω² turning with
+    the crank plus ½m_jRω² turning against it; over the pins (z = −a, 0, a) each gives a couple
+    √3·a times that. Counterweights for the rotating masses and half the reciprocating ones leave
+    only the couple √3/2·a·m_jRω² turning against the crank (the balance shaft's job)."""
+    st = solved(scene([0, 0, 120, 120, 240, 240], [0, 60] * 3, layout="v"))
+    b = st.balance
+    s = MJ * RW2 * A
+    hi, lo = extremes(b.orders[1].M)
+    close(hi, 1.5 * math.sqrt(3) * s, s)
+    close(lo, 0.5 * math.sqrt(3) * s, s)
+    close(b.orders[1].F_max, 0.0, MJ * RW2)
+    hi, lo = extremes(b.after_M)
+    close(hi, math.sqrt(3) / 2 * s, s)
+    close(lo, math.sqrt(3) / 2 * s, s)
+    close(extremes(b.rotating_M)[0], math.sqrt(3) * A * (2 * MR + CRANK) * RW2, s)
