@@ -187,3 +187,19 @@ def test_thermal_and_indicator_together_refused():
     with pytest.raises(SceneError) as e:
         parse_engine_scene(text, "d.toml")
     assert "indicator" in str(e.value)
+
+
+def test_end_of_intake_from_the_losses():
+    """Δp_a = (β² + ξ)·w²·ρ_k/2 with ρ_k = p0/(287·T0): 3.0 × 90² × 1.2063/2 = 14.66 kPa."""
+    text = SCENE.format(extra="", alpha=1.4, epsilon=17).replace(
+        'p_a = "88 kPa"',
+        'intake_losses = 3.0\nintake_velocity = "90 m/s"\nT0 = 293\np0 = "100 kPa"')
+    st = EngineStudy(parse_engine_scene(text, "d.toml"))
+    rho_k = 100e3 / (287.0 * 293.0)
+    assert abs(st.scene.cycle.spec.p_a - (100e3 - 3.0 * 8100.0 * rho_k / 2)) < 1e-6
+    both = SCENE.format(extra="intake_losses = 3.0", alpha=1.4, epsilon=17)
+    with pytest.raises(SceneError, match="thermal.p_a"):
+        parse_engine_scene(both, "d.toml")
+    none = SCENE.format(extra="", alpha=1.4, epsilon=17).replace('p_a = "88 kPa"', "")
+    with pytest.raises(SceneError, match="thermal.p_a"):
+        parse_engine_scene(none, "d.toml")

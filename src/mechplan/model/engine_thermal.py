@@ -2,7 +2,8 @@
 fuel → air and products, intake with residual gases, compression, combustion, expansion, the mean
 indicated pressure, efficiencies, power and the cylinder for a given power.
 
-Choices stated: p_a, n1, n2, ξ_z (and λ_p of a diesel) are given, not read off the courses'
+Choices stated: p_a (or the intake losses at the rated speed), n1, n2, ξ_z (and λ_p of a
+diesel) are given, not read off the courses'
 nomograms; the mean molar heat capacities (kJ/(kmol·K), t in °C) are Kolchin–Demidov's fits of
 the individual gases — fresh charge (air) 20.6 + 2.638·10⁻³t, products at t_c from the 0–1500 °C
 fits, at t_z from the 1501–2800 °C fits — mixed by the products' mole fractions; p_k = p0,

@@ -10,7 +10,7 @@ from .reader import Table
 
 KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alpha", "epsilon",
         "p0", "T0", "dT", "p_a", "p_r", "T_r", "n1", "n2", "xi_z", "lambda_p", "K", "phi_i",
-        "eta_m", "power_kW", "stroke_bore")
+        "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity")
 
 
 def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
@@ -21,6 +21,26 @@ def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
     if not lo <= v <= hi:
         raise t.error(name, Text("cycle.error.range", {"lo": lo, "hi": hi, "value": v}))
     return v
+
+
+def _intake(t: Table, p0: float, T0: float) -> float:
+    """p_a given, or p0 − Δp_a with Δp_a = (β² + ξ)·w²·ρ_k/2 (Kolchin–Demidov, at the rated
+    speed) from ``intake_losses`` (β² + ξ) and ``intake_velocity`` w."""
+    if t.has("p_a"):
+        if t.has("intake_losses") or t.has("intake_velocity"):
+            raise t.error("p_a", Text("cycle.error.intake_both"))
+        v = t.quantity("p_a", "pressure", required=True, positive=True)
+        assert v is not None
+        return v
+    if not (t.has("intake_losses") and t.has("intake_velocity")):
+        raise t.error("p_a", Text("cycle.error.intake_missing"))
+    k = _number(t, "intake_losses", None, 1.0, 10.0, "β² + ξ of the intake")
+    w = t.quantity("intake_velocity", "velocity", required=True, positive=True)
+    assert w is not None
+    p_a = p0 - k * w * w * p0 / (287.0 * T0) / 2.0
+    if not p_a > 0.3 * p0:
+        raise t.error("intake_velocity", Text("cycle.error.intake_loss", {"p_a": p_a * 1e-3}))
+    return p_a
 
 
 def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: float,
@@ -43,12 +63,12 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
         raise t.error("alpha", Text("cycle.error.diesel_alpha", {"value": alpha}))
     eps = _number(t, "epsilon", None, 2.0, 30.0, "the compression ratio ε")
     p_amb = t.quantity("p0", "pressure", p0, positive=True)
-    p_a = t.quantity("p_a", "pressure", required=True, positive=True)
     p_r = t.quantity("p_r", "pressure", required=True, positive=True)
-    assert p_amb is not None and p_a is not None and p_r is not None
+    assert p_amb is not None and p_r is not None
+    T0 = _number(t, "T0", 293.0, 200.0, 400.0, "the ambient temperature in K")
+    p_a = _intake(t, p_amb, T0)
     if not eps * p_a > p_r:
         raise t.error("p_r", Text("cycle.error.residual"))
-    T0 = _number(t, "T0", 293.0, 200.0, 400.0, "the ambient temperature in K")
     dT = _number(t, "dT", 10.0 if not diesel else 15.0, 0.0, 60.0, "the charge heating in K")
     T_r = _number(t, "T_r", None, 500.0, 1300.0, "the residual-gas temperature in K")
     n1 = _number(t, "n1", None, 1.2, 1.45, "the compression polytrope n1")
