@@ -8,6 +8,7 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..model.loads import FrictionSpec, Gravity, LoadKind, LoadSpec, MassSpec, pair_id
 from ..model.mechanism import GROUND, Mechanism
 
@@ -71,26 +72,59 @@ class Loading:
         for link, ms in self.masses.items():
             key = f"links.{link}"
             if link not in mech.links or link == GROUND:
-                raise SceneError(f"masses are given for link {link!r}, which is not a moving link "
-                                 f"(links are {', '.join(mech.moving)})", file=self.file, key=key)
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_loading.masses_are_given",
+                        {"link": repr(link), "moving": ", ".join(mech.moving)},
+                    ),
+                    file=self.file,
+                    key=key,
+                )
             if not (ms.mass >= 0 and math.isfinite(ms.mass)):
-                raise SceneError(f"the mass of link {link} must not be negative (got {ms.mass} kg)",
-                                 file=self.file, key=f"{key}.mass")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_loading.mass_link_link",
+                        {"link": str(link), "mass": str(ms.mass)},
+                    ),
+                    file=self.file,
+                    key=f"{key}.mass",
+                )
             if not (ms.inertia >= 0 and math.isfinite(ms.inertia)):
-                raise SceneError(f"the moment of inertia J_S of link {link} must not be negative "
-                                 f"(got {ms.inertia} kg·m²)", file=self.file, key=f"{key}.J")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_loading.moment_inertia_j",
+                        {"link": str(link), "inertia": str(ms.inertia)},
+                    ),
+                    file=self.file,
+                    key=f"{key}.J",
+                )
             if ms.centre not in mech.links[link].points:
-                raise SceneError(f"the centre of mass {ms.centre!r} is not a point of link {link} "
-                                 f"(it has {', '.join(mech.links[link].points)})",
-                                 file=self.file, key=f"{key}.centre")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_loading.centre_mass_centre",
+                        {
+                            "centre": repr(ms.centre),
+                            "link": str(link),
+                            "points": ", ".join(mech.links[link].points),
+                        },
+                    ),
+                    file=self.file,
+                    key=f"{key}.centre",
+                )
         for i, spec in enumerate(self.loads):
             self._check_load(mech, spec, spec.key or f"loads[{i}]")
         if self.friction is not None:
             known = {pair_id(p.a, p.b) for p in mech.pairs}
             for name, _ in self.friction.pairs:
                 if name not in known:
-                    raise SceneError(f"there is no pair {name} (pairs: {', '.join(sorted(known))})",
-                                     file=self.file, key=f"{self.friction.key}.pairs.{name}")
+                    raise SceneError(
+                        Text(
+                            "errmsg.dynamics_loading.there_no_pair",
+                            {"name": str(name), "known": ", ".join(sorted(known))},
+                        ),
+                        file=self.file,
+                        key=f"{self.friction.key}.pairs.{name}",
+                    )
 
     def _check_load(self, mech: Mechanism, spec: LoadSpec, key: str) -> None:
         def fail(message: str) -> SceneError:
