@@ -151,7 +151,7 @@ class Loading:
                     {
                         "point": repr(spec.point),
                         "link": str(spec.link),
-                        "points": str(", ".join(mech.links[spec.link].points)),
+                        "points": ", ".join(mech.links[spec.link].points),
                     },
                 )
             )

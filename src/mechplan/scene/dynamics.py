@@ -132,7 +132,7 @@ def _indicator(t: Table, mech: Mechanism) -> IndicatorSpec:
             None,
             Text(
                 "errmsg.scene_dynamics.four_stroke_cycle",
-                {"value": str(", ".join(names) or "none")},
+                {"value": ", ".join(names) or "none"},
             ),
         )
     strokes = tuple((s, _rows(st, s.value, "length", "pressure")) for s in order)
