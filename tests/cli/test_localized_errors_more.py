@@ -4,6 +4,7 @@ drawing frame and of the Python API are said in the user's language (``--lang`` 
 
 from __future__ import annotations
 
+import json
 import re
 from pathlib import Path
 
@@ -27,10 +28,10 @@ MISTAKES = {
         "motion.swing", "errmsg.scene_cam.oscillating_follower_give",
         "относится к коромысловому толкателю", "dành cho cần lắc", "is for an oscillating"),
     "phases out of order": (
-        "cam_cycloidal", ('{ kind = "rise", angle = "60 deg", law = "cycloidal" },\n'
-                          '    { kind = "far_dwell", angle = "20 deg" },',
-                          '{ kind = "far_dwell", angle = "20 deg" },\n'
-                          '    { kind = "rise", angle = "60 deg", law = "cycloidal" },'),
+        "cam_cycloidal", (('{ kind = "rise", angle = "60 deg", law = "cycloidal" },\n'
+                          '    { kind = "far_dwell", angle = "20 deg" },'),
+                          ('{ kind = "far_dwell", angle = "20 deg" },\n'
+                          '    { kind = "rise", angle = "60 deg", law = "cycloidal" },')),
         "motion.phases[0].kind", "errmsg.scene_cam.value_start_from",
         "дальнего положения (после подъёма)", "vị trí xa (sau pha đi)", "far position"),
     "impossible planetary ratio": (
@@ -64,7 +65,7 @@ def _scene(tmp_path: Path, mistake: str) -> Path:
 @pytest.mark.parametrize("lang", ["ru", "vi"])
 @pytest.mark.parametrize("mistake", sorted(MISTAKES))
 def test_scene_mistakes_are_said_in_the_chosen_language(mistake, lang, tmp_path, capsys):
-    _, _, key, msgid, ru, vi, english = MISTAKES[mistake]
+    _, _, key, _msgid, ru, vi, english = MISTAKES[mistake]
     path = _scene(tmp_path, mistake)
     code = main(["solve", str(path), "--lang", lang])
     err = capsys.readouterr().err
@@ -82,8 +83,6 @@ def test_english_and_json_code_are_kept(mistake, tmp_path, capsys):
     assert main(["solve", str(path), "--lang", "en"]) == 2
     assert english in capsys.readouterr().err
     assert main(["solve", str(path), "--json", "--lang", "zh"]) == 2
-    import json
-
     doc = json.loads(capsys.readouterr().out)["error"]
     assert doc["code"] == msgid and doc["key"] == key
     assert english not in doc["message"] and re.search(r"[\u4e00-\u9fff]", doc["message"])
@@ -121,3 +120,27 @@ def test_every_errmsg_id_is_in_every_language_with_its_placeholders():
         assert ids <= set(said), lang
         same = [k for k in ids if said[k] == catalogue("en")[k] and re.search(r"[a-z]{4}", said[k])]
         assert not same, (lang, same)           # no English left untranslated
+
+
+def test_toml_limit_reason_is_a_catalogue_text():
+    """The reason a scene's TOML is refused (a number of thousands of digits) keeps its message id
+    and arguments, so a reader of the limit error can say it in the user's language."""
+    from mechplan.scene import toml
+
+    with pytest.raises(toml.TomlLimitError) as info:
+        toml.loads("a = " + "9" * 5000)
+    reason = info.value.args[0]
+    assert "numbers this large cannot be computed exactly" in str(reason)
+    assert "столь большие числа нельзя вычислить точно" in reason.tr("ru")
+    assert "số lớn như vậy không thể tính chính xác" in reason.tr("vi")
+
+
+def test_gear_tooth_list_of_wrong_length_in_russian(tmp_path, capsys):
+    path = tmp_path / "g.toml"
+    path.write_text(_template("planetary_single_row").replace("teeth = [17, 150]", "teeth = [17]"),
+                    encoding="utf-8")
+    assert main(["solve", str(path), "--lang", "ru"]) == 2
+    err = capsys.readouterr().err
+    assert "ключ 'planetary.teeth'" in err and "должно быть списком из 2 целых чисел" in err, err
+    assert main(["solve", str(path)]) == 2          # the scene's language: English
+    assert "must be a list of 2 whole numbers (got [17])" in capsys.readouterr().err

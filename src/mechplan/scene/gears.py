@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..errors import SceneError
-from ..i18n import LANGUAGES, Text
+from ..i18n import LANGUAGES, Text, join
 from ..model.gears import GearScene, OrdinarySpec, PairSpec, PlanetarySpec, Scheme, ShiftRule
 from .document import parse_toml
 from .reader import Table
@@ -36,7 +36,7 @@ def _ints(t: Table, name: str, count: tuple[int, ...], lo: int = 1) -> tuple[int
             name,
             Text(
                 "errmsg.scene_gears.list_str_whole",
-                {"str": " or ".join(map(str, count)), "value": repr(value)},
+                {"str": join(count, " or "), "value": repr(value)},
             ),
         )
     if any(v < lo for v in value):
