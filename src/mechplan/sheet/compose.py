@@ -13,6 +13,7 @@ from ..construct.terms import pole_label
 from ..drafting.frame import make_frame
 from ..drafting.primitives import Sheet, Text
 from ..errors import DrawingError, MechplanError
+from ..i18n import Text as Msg
 from ..i18n import message, scientific, significant, unit
 from ..i18n import number as format_number
 from ..model.mechanism import GROUND, PairKind
@@ -241,9 +242,11 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
         fixed = ", ".join(f"{k} = {significant(v, 6, 'en')}"
                           for k, v in scene.drawing.scales.items())
         raise DrawingError(
-            f"the panel '{found.name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not "
-            f"fit on an {size} sheet at the scale factors {fixed or 'chosen'}; use a "
-            "larger sheet (--sheet A1 or A0) or larger scale factors in [drawing.scales]",
+            Msg("errmsg.sheet_compose.panel_name_value", {"name": str(found.name),
+                                                           "value": f'{x1 - x0:.0f}',
+                                                           "value2": f'{y1 - y0:.0f}',
+                                                           "size": str(size),
+                                                           "value3": str(fixed or 'chosen')}),
             file=scene.path)
     groups = [list(zip(p, o)) for p, o in found]
     sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)
