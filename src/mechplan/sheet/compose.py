@@ -158,10 +158,10 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
             panels += split_tables(vector_plan(c, sol.ev, k, Plan.FORCE, mu[Plan.FORCE], lang,
                                                title, group), title,
                                    tables_apart(c, Plan.FORCE, r), r)
-        # a linear driver's lever: at the force plans' μ (one μF on the sheet for the checker)
+        # the lever's loads at the force plans' μF: one μF on the sheet (the checker reads the
+        # μF line nearest a polygon, and the lever's may be the nearest)
         lever = zhukovsky_lever(c, sol.ev, k, mu[Plan.VELOCITY], lang,
-                                lever_title(lang, phi_deg),
-                                mu[Plan.FORCE] if sol.scene.mechanism.drive.linear else None)
+                                lever_title(lang, phi_deg), mu[Plan.FORCE])
         if lever is not None:
             panels.append(lever)
     mb = balancing_diagram(sol, lang, r)
