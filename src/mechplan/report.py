@@ -158,6 +158,11 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     sense = sense_text(mb, lang)
     nm = unit("N·m", lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} {nm} ({sense}; {role})")
+    if fa.second is not None:       # W = 2: the second crank's own balancing moment
+        m2 = float(fa.second[1][k])
+        out.append("### " + message("twoinputs.balancing", lang, link=fa.second[0],
+                                    value=f"{format_number(m2, 3, lang)} {nm} "
+                                          f"({sense_text(m2, lang)})"))
     out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} {nm}; {w[6]} "
                f"{scientific(float(fa.difference_percent[k]), 3, lang)} %")
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {nm}")

@@ -156,6 +156,10 @@ class Construction:
         """Return the step id of the balancing moment M_b on the driving link (N·m)."""
         return self._named("M_b")
 
+    def second_balancing_moment(self, link: str) -> str:
+        """Return the step id of the balancing moment on a second driving crank (W = 2, N·m)."""
+        return self._named(f"M_b{link}")
+
     def zhukovsky_moment(self) -> str:
         """Return the step id of M_b found by Zhukovsky's lever (N·m)."""
         return self._named("M_b_zhukovsky")
@@ -177,7 +181,7 @@ class Construction:
         """Step ids of the balancing moments (or driving forces), reactions and guide offsets."""
         return [sid for key, sid in self.results.items()
                 if key in ("M_b", "M_b_zhukovsky", "F_d", "F_d_zhukovsky")
-                or key.startswith(("R_", "d_"))]
+                or key.startswith(("R_", "d_", "M_b"))]
 
     def _named(self, key: str) -> str:
         try:
