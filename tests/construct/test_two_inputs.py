@@ -126,3 +126,28 @@ def test_a_second_driver_that_is_the_first_is_refused():
     text = TEMPLATE.read_text(encoding="utf-8").replace('link = "4"', 'link = "1"')
     with pytest.raises(Exception, match="drive2"):
         parse_scene(text, "five.toml")
+
+
+def test_json_names_the_second_driver_and_its_law():
+    from mechplan.solve import to_json
+
+    doc = to_json(solve(_scene(), at_deg=[30.0]))
+    assert doc["dof"] == 2 and doc["structure"] == "I(0,1), I(0,4) → II(2,3)"
+    second = doc["second_driver"]
+    assert second["link"] == "4" and second["rate"] == -10.0 and second["acceleration"] == -7.0
+    assert second["phase"] == pytest.approx(math.pi / 2, abs=1e-15)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru", "vi", "zh"])
+def test_the_protocol_writes_the_second_crank_in_every_language(lang):
+    from mechplan.construct.protocol import protocol
+    from mechplan.i18n import has_message
+
+    assert has_message("protocol.op.second_crank_angle", lang)
+    assert has_message("check.op.second_crank_angle", lang)
+    from mechplan.model.plans import Plan
+
+    sol = solve(_scene(), at_deg=[30.0])
+    lines = protocol(sol.construction, sol.ev, 0, lang, sol.scales, (Plan.POSITION,))
+    second = [s for _, label, s in lines if label == "θ4"]
+    assert len(second) == 1 and "60" in second[0] and "φ4" in second[0], second

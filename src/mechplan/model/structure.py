@@ -144,12 +144,12 @@ def analyse(mech: Mechanism) -> Structure:
     w = degrees_of_freedom(mech)
     drivers = len(mech.drivers)
     if w != drivers:
-        given = ", ".join(f"[{key}] link {d.link}"
+        given = "; ".join(f"[{key}], link {d.link}"
                           for key, d in zip(("drive", "drive2"), mech.drivers, strict=False))
         raise TopologyError(
             f"the mechanism has W = 3·{len(mech.moving)} − 2·{len(mech.pairs)} = {w} degrees of "
             f"freedom but {drivers} driver{'s' if drivers > 1 else ''} ({given}); add or remove "
-            "links or pairs (or a driver) so that W equals the number of drivers", key="links")
+            "links or pairs so that W equals the number of drivers", key="links")
     drive = mech.drive
     view, cylinder = mech, None
     originals: dict[Pair, Pair] = {}
