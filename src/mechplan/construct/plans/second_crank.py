@@ -46,6 +46,7 @@ def emit_position(b: Builder) -> None:
     if drive is None:
         return
     group = group_name(drive)
+    b.c.second_driver = drive.link
     offset, ratio = law(b.mech.drive, drive)
     crank = b.mech.links[drive.link]
     pivot = drive.pivot
