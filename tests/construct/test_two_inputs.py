@@ -151,3 +151,12 @@ def test_the_protocol_writes_the_second_crank_in_every_language(lang):
     lines = protocol(sol.construction, sol.ev, 0, lang, sol.scales, (Plan.POSITION,))
     second = [s for _, label, s in lines if label == "θ4"]
     assert len(second) == 1 and "60" in second[0] and "φ4" in second[0], second
+
+
+def test_instant_centres_are_refused_naming_the_key():
+    from mechplan.errors import SceneError
+
+    text = TEMPLATE.read_text(encoding="utf-8") + '\n[centres]\nlinks = ["2"]\n'
+    with pytest.raises(SceneError, match="Kennedy") as err:
+        parse_scene(text, "five.toml")
+    assert err.value.key == "centres"

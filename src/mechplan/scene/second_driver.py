@@ -35,4 +35,9 @@ def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
     if drive.link == first.link:
         raise d.error("link", f"link {drive.link} is already the first driver ([drive] link)")
     phase = d.quantity("phase", "angle", 0.0) or 0.0
+    if top.has("centres"):
+        raise top.error("centres", "instant centres are found by Kennedy's theorem for W = 1; "
+                        f"with two drivers ([drive] link {first.link}, [drive2] link "
+                        f"{drive.link}) it reaches only the centres of the pairs (a five-bar's "
+                        "I02, I03, I13, I14, I24 need the velocities); remove [centres]")
     return replace(drive, phase=phase)
