@@ -160,3 +160,35 @@ def test_instant_centres_are_refused_naming_the_key():
     with pytest.raises(SceneError, match="Kennedy") as err:
         parse_scene(text, "five.toml")
     assert err.value.key == "centres"
+
+
+@pytest.mark.parametrize(("sense1", "from1", "speed2", "sense2", "from2", "phase", "deg"), [
+    ("cw", "-x", "20 rad/s", "ccw", "+y", 30.0, 40.0),
+    ("ccw", "+x", "5 rad/s", "cw", "-y", -45.0, 100.0),
+    ("cw", "+y", "15 rad/s", "cw", "+x", 200.0, 250.0),
+])
+def test_the_second_crank_follows_its_law(sense1, from1, speed2, sense2, from2, phase, deg):
+    """θ2 = ref2 + s2·(phase + |ω2|/|ω1|·φ1), φ1 the scene's angle of the first crank."""
+    text = TEMPLATE.read_text(encoding="utf-8")
+    text = text.replace('sense = "ccw"\n', f'sense = "{sense1}"\nfrom = "{from1}"\n', 1)
+    head, _, tail = text.partition("[drive2]")
+    tail = (tail.replace('speed = "10 rad/s"', f'speed = "{speed2}"')
+            .replace('sense = "cw"', f'sense = "{sense2}"')
+            .replace('from = "-x"', f'from = "{from2}"')
+            .replace('phase = "90 deg"', f'phase = "{phase} deg"'))
+    sol = solve(parse_scene(head + "[drive2]" + tail, "five.toml"), at_deg=[deg],
+                plans=("position", "velocity", "acceleration"))
+    c, ev = sol.construction, sol.ev
+    refs = {"+x": 0.0, "-x": 180.0, "+y": 90.0, "-y": -90.0}
+    s1, s2 = (1 if sense1 == "ccw" else -1), (1 if sense2 == "ccw" else -1)
+    ratio = float(speed2.split()[0]) / 10.0
+    theta1 = refs[from1] + s1 * deg
+    theta4 = refs[from2] + s2 * (phase + ratio * deg)
+    for link, want in (("1", theta1), ("4", theta4)):
+        got = math.degrees(ev[c.link_angle(link)][0])
+        assert math.remainder(got - want, 360.0) == pytest.approx(0.0, abs=1e-11), link
+    assert ev[c.omega("4")][0] == s2 * float(speed2.split()[0])
+    # the dyad closes between the two pins: |BC| and |DC| hold
+    b, cc, d = (ev[c.position(p)][0] for p in "BCD")
+    assert np.hypot(*(cc - b)) == pytest.approx(L2, abs=1e-15)
+    assert np.hypot(*(cc - d)) == pytest.approx(L3, abs=1e-15)
