@@ -55,7 +55,7 @@ def _extreme_phis(sol: Solution) -> list[float]:
     mech = sol.scene.mechanism
     subjects: list[str] = []
     for lk in mech.links.values():
-        if lk.id in (GROUND, mech.drive.link):
+        if lk.id in (GROUND, *(d.link for d in mech.drivers)):     # W = 2: both cranks
             continue
         if lk.slides_on and mech.guides[lk.slides_on].link == GROUND:
             subjects.append(next(iter(lk.points)))
