@@ -16,7 +16,7 @@ from scenes import ALL_TEMPLATES, ROOT
 from mechplan import api
 from mechplan.construct.protocol import protocol
 from mechplan.errors import MechplanError
-from mechplan.i18n import LANGUAGES
+from mechplan.i18n import LANGUAGES, number
 from mechplan.live_page import page_text
 from mechplan.model.plans import Plan
 from mechplan.sheet.live import UI
@@ -181,7 +181,7 @@ def test_other_kinds_give_their_sheets_in_every_language(tmp_path: Path) -> None
     path = api.draw(ROOT / "templates" / "planetary_two_row.toml", tmp_path, formats=["html"])[0]
     page = path.read_text(encoding="utf-8")
     doc = _data(page)
-    assert doc["replays"] == [] and doc["animation"] is None
+    assert [r["id"] for r in doc["replays"]] == ["gears-velocity", "gears-angular"]
     assert sorted(doc["sheets"]) == sorted(LANGUAGES)
     for lang in LANGUAGES:
         sheets = doc["sheets"][lang]
@@ -293,3 +293,75 @@ def test_cam_follower_touches_the_turning_cam(stem):
     n = study.design.rays.phi.size
     assert [s["id"] for s in steps] == ["base", *(f"ray-{i}" for i in range(n)), "profile"]
     assert all(s["sentence"][lang] for s in steps for lang in LANGUAGES)
+
+
+#: the planetary templates' tooth sets and input speeds, as their scenes give them (rpm)
+TRAINS = {"planetary_single_row": 960.0, "planetary_two_row": 1500.0}
+
+
+def _willis(stem: str, z: tuple[int, ...], w_in: float) -> dict[str, float]:
+    """ω of every link from the tooth numbers (Willis: the train seen from the carrier is an
+    ordinary train), the central gear held, the sun the input."""
+    if stem == "planetary_single_row":          # sun 1, planet 2, ring 3 held: ω1/ωh = 1 + z3/z1
+        z1, z2, z3 = z
+        wh = w_in / (1 + z3 / z1)
+        return {"1": w_in, "2": wh * (1 - z3 / z2), "3": 0.0, "h": wh}
+    z1, z2, z3, z4 = z                          # 1 outside 2; 3 inside ring 4, held
+    wh = w_in / (1 + z2 * z4 / (z1 * z3))
+    w2 = wh - z1 / z2 * (w_in - wh)             # (ω2 − ωh)/(ω1 − ωh) = −z1/z2
+    return {"1": w_in, "2": w2, "3": w2, "4": 0.0, "h": wh}
+
+
+@pytest.mark.parametrize("stem", sorted(TRAINS))
+def test_planetary_train_turns_at_the_willis_ratios(stem):
+    """Each wheel and the carrier of the turning train is rotated by ω·t with the ω of the Willis
+    ratios of its tooth numbers; every planet's centre stays on the carrier radius
+    a_w = m(z1 + z2)/2, at the carrier's angle plus 2πj/k; the slider's φ is the input's ω·t."""
+    study = solve_file(str(ROOT / "templates" / f"{stem}.toml"))
+    res = study.solution.planetary
+    z = tuple(res.chosen.z)
+    w_in = TRAINS[stem] * 2 * math.pi / 60
+    w = _willis(stem, z, w_in)
+    doc = _data(page_text(study, name=stem))
+    a = doc["animation"]
+    t = np.asarray(a["time"])
+    assert a["frames"] == t.size >= 360
+    assert np.allclose(np.radians(a["phi_deg"]), w_in * t, rtol=1e-6, atol=1e-6)
+    # one turn of the carrier over the cycle
+    assert w["h"] * (t[-1] + t[1]) == pytest.approx(2 * math.pi, rel=1e-6)   # 7 digits
+    train = next(p for p in a["panels"] if p["id"] == "gears-train")
+    rotors = {it["name"]: it for it in train["items"] if it["kind"] == "rotor"}
+    for n, omega in w.items():
+        planet = n in res.spec.scheme.gear_names[1:-1]
+        rot = rotors["2-0"] if planet else rotors[n]      # the planet block turns as one
+        # the page turns a body by −angle (y down): counter-clockwise ω·t
+        assert np.allclose(-np.radians(rot["angle"]), omega * t, rtol=1e-6, atol=1e-5), n
+    m = res.spec.modules[0]
+    a_w = m * (z[0] + z[1]) / 2
+    mu = train["scale"]
+    k = res.spec.planets
+    for j in range(k):
+        c = np.asarray(rotors[f"2-{j}"]["centre"], dtype=float).reshape(-1, 2)
+        assert np.allclose(np.hypot(*c.T) * mu, a_w, atol=0.008 * mu)   # 0.01 mm rounding
+        ang = np.arctan2(-c[:, 1], c[:, 0])
+        want = w["h"] * t + 2 * math.pi * j / k
+        assert np.allclose(np.angle(np.exp(1j * (ang - want))), 0.0, atol=1e-3)
+        assert np.allclose(c, np.asarray(train["points"][f"O{j + 1}"]["xy"]).reshape(-1, 2))
+    # the velocity plan replayed line by line: the given and held links first, the planet,
+    # then the carrier; each line's sentence states its ω (Willis), each step draws its line
+    vel = next(r for r in doc["replays"] if r["id"] == "gears-velocity")
+    held = res.spec.fixed
+    assert [s["id"] for s in vel["steps"]] == ["base", "line-1", f"line-{held}", "line-2", "line-h"]
+    for i, s in enumerate(vel["steps"]):
+        assert sum(1 for p in vel["prims"]["en"] if p["k"] == i) >= 2      # line and label
+        n = s["id"][5:]
+        if n and n != held:
+            assert number(w[n], 4, "en") in s["sentence"]["en"]
+        assert all(s["sentence"][lang] for lang in LANGUAGES)
+    if stem == "planetary_two_row":             # the ordinary pair 17/34 on the output shaft h
+        w |= {"5": w["h"], "6": -w["h"] * 17 / 34}
+    ang = next(r for r in doc["replays"] if r["id"] == "gears-angular")
+    rays = [s for s in ang["steps"] if s["id"].startswith("ray-")]
+    assert {s["id"][4:] for s in rays} >= {"1", "h"}
+    for s in rays:
+        assert number(w[s["id"][4:]], 4, "en") in s["sentence"]["en"]

@@ -195,7 +195,7 @@ function buildAnimation() {
         const g = el("g");
         g.append(...it.shape.flatMap(draw));
         svg.append(g);
-        return [g, null, it.angle];
+        return [g, null, it.angle, it.centre];   // a planet: carried along its centre's path
       }
       const e = el("path", { class: it.kind === "link" || it.thick ? "role-outline" : "role-thin" });
       e.dataset.item = it.kind === "link" ? it.link : it.name;
@@ -265,8 +265,9 @@ function frame(k) {
   state.frame = ((k % A.frames) + A.frames) % A.frames;
   const f = state.frame;
   for (const a of anim) {
-    for (const [e, d, angle] of a.items) {
-      if (angle) e.setAttribute("transform", `rotate(${angle[f] ?? 0})`);
+    for (const [e, d, angle, c] of a.items) {
+      const at = c ? `translate(${c[2 * f]} ${c[2 * f + 1]}) ` : "";
+      if (angle) e.setAttribute("transform", `${at}rotate(${angle[f] ?? 0})`);
       else e.setAttribute("d", d[f] || "M0 0");
     }
     for (const [c, t, p] of a.pts) {
