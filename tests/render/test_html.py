@@ -107,6 +107,8 @@ def test_replay_steps_in_the_order_of_the_protocol(four_bar):
     sol = study.solution
     mu = sol.scales
     for r in doc["replays"]:
+        if r["plan"] == "centres":          # Kennedy's construction: its own test below
+            continue
         plan = Plan(r["plan"])
         groups = {s["group"] for s in r["steps"]}
         expected = [text for _p, _label, text in protocol(sol.construction, sol.ev, r["k"], "en",
@@ -365,3 +367,68 @@ def test_planetary_train_turns_at_the_willis_ratios(stem):
     assert {s["id"][4:] for s in rays} >= {"1", "h"}
     for s in rays:
         assert number(w[s["id"][4:]], 4, "en") in s["sentence"]["en"]
+
+
+def _meet(p1, p2, q1, q2):
+    """Where line p1–p2 meets line q1–q2 (rows of points; NaN where parallel)."""
+    d1, d2 = p2 - p1, q2 - q1
+    den = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
+    w = q1 - p1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (w[:, 0] * d2[:, 1] - w[:, 1] * d2[:, 0]) / den
+    return p1 + t[:, None] * d1
+
+
+@pytest.mark.parametrize("stem", ["four_bar", "slider_crank", "quick_return", "shaper"])
+def test_centres_replayed_in_the_solvers_order_and_moving(stem):
+    """The instant centres' replay lists every centre once, in the order Kennedy's search finds
+    them, each step drawing its centre and its chord; in the animation each centre is where the
+    solver puts it at that crank angle (within the page's 0.01 mm), and for the four-bar where
+    the lines of its links meet (I02 on AB × DC, I13 on AD × BC, computed here)."""
+    from mechplan.construct.plans.centres import centres_at, circle_diagram
+
+    study = solve_file(str(ROOT / "templates" / f"{stem}.toml"))
+    sol = study.solution
+    mech = sol.scene.mechanism
+    doc = _data(page_text(study, name=stem))
+    reps = [r for r in doc["replays"] if r["plan"] == "centres"]
+    assert len(reps) == 1
+    r = reps[0]
+    order = [c.key for c in circle_diagram(mech).centres]
+    n = len(mech.moving) + 1
+    assert len(order) == n * (n - 1) // 2
+    assert [s["id"] for s in r["steps"]] == ["base", *order]
+    for i in range(1, len(r["steps"])):
+        assert sum(1 for p in r["prims"]["en"] if p["k"] == i) >= 3   # centre, chord, number
+        assert all(r["steps"][i]["sentence"][lang] for lang in LANGUAGES)
+    assert [x["step"] for x in r["rows"]] == list(range(1, len(order) + 1))
+
+    a = doc["animation"]
+    panel = next(p for p in a["panels"] if p["id"] == "centres")
+    assert sorted(panel["points"]) == sorted(order)
+    mu = sol.scales[Plan.POSITION]
+    c = sol.construction
+    sense = 1.0 if mech.drive.omega >= 0 else -1.0
+    phi = float(sol.phi[0]) + sense * np.arange(a["frames"]) * 2 * math.pi / a["frames"]
+    ev = c.evaluate(phi)
+    cs = centres_at(c, ev, mech)
+    shown = 0
+    for key in order:
+        page = np.array([np.nan if v is None else v for v in panel["points"][key]["xy"]],
+                        dtype=float).reshape(-1, 2) * np.array([1.0, -1.0]) * mu
+        ctr = next(x for x in cs.diagram.centres if x.key == key)
+        want = cs.point(ctr.i, ctr.j)
+        ok = np.isfinite(page).all(axis=1)
+        shown += int(ok.sum())
+        assert np.allclose(page[ok], want[ok], atol=0.008 * mu)
+    assert shown > a["frames"] * 3
+    if stem == "four_bar":
+        def at(p):
+            return np.asarray(ev[c.position(p)], dtype=float)
+        A, B, C, D = at("A"), at("B"), at("C"), at("D")
+        for key, want in (("02", _meet(A, B, D, C)), ("13", _meet(A, D, B, C))):
+            page = np.array([np.nan if v is None else v for v in panel["points"][key]["xy"]],
+                            dtype=float).reshape(-1, 2) * np.array([1.0, -1.0]) * mu
+            ok = np.isfinite(page).all(axis=1)
+            assert ok.sum() > 100
+            assert np.allclose(page[ok], want[ok], atol=0.008 * mu)
