@@ -21,7 +21,7 @@ from ..i18n import number as format_number
 from ..model.mechanism import PairKind
 from ..model.plans import Plan
 from ..solve import Solution
-from .centres import MARGIN, centres_panels
+from .centres import centres_panels
 from .compose import crank_degrees
 from .layout import moved
 from .live import Doc, each
@@ -29,6 +29,8 @@ from .scales import room
 
 #: the circle diagram stands this far right of the centres' view (mm)
 GAP = 14.0
+#: the animation's view: the mechanism's box over the turn grown by this share of its size
+MARGIN = 0.4
 
 
 def _construction(c: Centre, cs: Centres, k: int, sym: str, lang: str) -> str:
@@ -107,8 +109,9 @@ def centres_replay(sol: Solution, k: int, mu_l: float) -> Doc:
 
 def centres_anim(sol: Solution, ev: Evaluation, position: Doc, mu: dict[Plan, float]) -> Doc:
     """The mechanism (the position panel's links) with its centres at every frame, in a fixed
-    view: the mechanism's box grown as on the sheet's centre panel. A centre at infinity, or far
-    beyond the view, is left out at that frame."""
+    view: the box of the mechanism's points over the turn, grown by ``MARGIN`` (the wheel zooms
+    out to centres beyond it). A centre at infinity, or far beyond the view, is left out at that
+    frame."""
     c, mech = sol.construction, sol.scene.mechanism
     cs = centres_at(c, ev, mech)
     mu_l = mu[Plan.POSITION]
