@@ -432,3 +432,52 @@ def test_centres_replayed_in_the_solvers_order_and_moving(stem):
             ok = np.isfinite(page).all(axis=1)
             assert ok.sum() > 100
             assert np.allclose(page[ok], want[ok], atol=0.008 * mu)
+
+
+def test_engine_crank_train_moves_with_the_polar_cursor():
+    """The engine's crank train (cylinder 1) at every frame of the polar diagram's cursor: the
+    crank pin A on the crank circle at the frame's φ from TDC, the rod |AB| = L, the piston pin
+    B on the cylinder's axis at the closed-form travel R(1 − cos φ) + L(1 − √(1 − λ² sin² φ))."""
+    study = solve_file(str(ROOT / "templates" / "motorcycle_engine.toml"))
+    R, L = study.model.spec.R, study.model.spec.L
+    doc = _data(page_text(study, name="engine"))
+    a = doc["animation"]
+    train = next(p for p in a["panels"] if p["id"] == "engine-train")
+    mu = train["scale"]
+    pa = np.asarray(train["points"]["A"]["xy"], dtype=float).reshape(-1, 2) * [1, -1] * mu
+    pb = np.asarray(train["points"]["B"]["xy"], dtype=float).reshape(-1, 2) * [1, -1] * mu
+    assert len(pa) == a["frames"] >= 360
+    phi = np.radians(np.asarray(a["phi_deg"]))
+    tol = 0.008 * mu                                            # the page's 0.01 mm
+    assert np.allclose(np.hypot(*pa.T), R, atol=tol)
+    assert np.allclose(np.hypot(*(pb - pa).T), L, atol=2 * tol)
+    assert np.allclose(pb[:, 0], 0.0, atol=tol)
+    lam = R / L
+    travel = R * (1 - np.cos(phi)) + L * (1 - np.sqrt(1 - (lam * np.sin(phi)) ** 2))
+    assert np.allclose(R + L - pb[:, 1], travel, atol=tol)
+    assert np.allclose(np.angle(np.exp(1j * (np.arctan2(-pa[:, 0], pa[:, 1]) - phi))), 0.0,
+                       atol=1e-3)
+    frames = train["items"][0]["d"]
+    assert len(frames) == a["frames"] and all(frames)
+
+
+def test_wittenbauer_diagram_has_a_cursor():
+    """A machine with [dynamics]: the Wittenbauer diagram's cursor is at (J_red, ΔT) of the
+    crank's cycle angle at every frame, at the dynamics sheet's μJ and μT."""
+    from mechplan.sheet.dynamics import dynamics_scales
+
+    study = solve_file(str(ROOT / "templates" / "machine_unit.toml"))
+    dyn = study.dynamics
+    doc = _data(page_text(study, name="machine_unit"))
+    a = doc["animation"]
+    panel = next(p for p in a["panels"] if p["id"] == "dynamics-wittenbauer")
+    xy = np.asarray(panel["points"]["dynamics-wittenbauer"]["xy"], dtype=float).reshape(-1, 2)
+    theta = np.mod(np.radians(np.asarray(a["phi_deg"])) - dyn.phi0, dyn.spec.cycle)
+    j = np.interp(theta, dyn.theta, dyn.J_red)
+    t = np.interp(theta, dyn.theta, dyn.dT)
+    sc = dynamics_scales(dyn)
+    fx, fy = np.polyfit(j, xy[:, 0], 1), np.polyfit(t, -xy[:, 1], 1)
+    assert np.abs(np.polyval(fx, j) - xy[:, 0]).max() < 0.01
+    assert np.abs(np.polyval(fy, t) + xy[:, 1]).max() < 0.01
+    assert fx[0] == pytest.approx(1 / sc.mu_J, rel=1e-3)
+    assert fy[0] == pytest.approx(1 / sc.mu_T, rel=1e-3)

@@ -432,6 +432,9 @@ def _dynamics_anims(dyn: MachineDynamics, phi: np.ndarray) -> list[Doc]:
                                      **extra) for lang in LANGUAGES}
         y = np.interp(theta, dyn.theta, curves[0][0])
         out.append(cursor_panel(f"dynamics-{key}", title, drawn, x, y, label))
+    from .live_more import wittenbauer
+
+    out.append(wittenbauer(dyn, theta))             # ΔT(J_red) with its cursor
     return out
 
 
