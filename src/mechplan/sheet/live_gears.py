@@ -95,7 +95,7 @@ def gear_replays(res: PlanetaryResult, ordinary: OrdinaryPlan | None = None) -> 
                   if sid.startswith("partial")}
         steps.append({"id": "partials", "group": "", "label": each(lambda _l: "′, ″"),
                       "sentence": each(lambda lang: message("htmlmore.gears.partials", lang))})
-    far = {n: max((0, 1), key=lambda e, n=n: abs(p.lines[n][e][1])) for n in order}
+    far = {n: (0 if abs(p.lines[n][0][1]) >= abs(p.lines[n][1][1]) else 1) for n in order}
     rows = [{"step": index[f"line-{n}"], "name": each(lambda _l, n=n: n),
              "mm": each(lambda lang, n=n: _mm(lang, abs(ends[f"line-{n}"].points[far[n]][0]))),
              "quantity": f"v{n}",
@@ -217,8 +217,8 @@ def gear_animation(res: PlanetaryResult, frames: int | None = None) -> Doc:
     points: Doc = {"O": {"label": each(lambda _l: "O"), "xy": np.zeros((t.size, 2)),
                          "trace": False}}
     for j in range(k):
-        a = carrier + 2 * math.pi * j / k
-        centre = np.column_stack([a_w * np.cos(a), a_w * np.sin(a)])
+        turned = carrier + 2 * math.pi * j / k
+        centre = np.column_stack([a_w * np.cos(turned), a_w * np.sin(turned)])
         shape = [q for n in planets for q in _wheel(p.radius[n] / mu, False, False, 2)]
         items.append({"kind": "rotor", "name": f"{planets[0]}-{j}", "shape": shape,
                       "angle": angle(planets[0]), "centre": centre, "omega": p.omega[planets[0]]})
