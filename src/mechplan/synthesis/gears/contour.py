@@ -158,13 +158,17 @@ def _scan(f, x1: np.ndarray, x2: np.ndarray, iterations: int = 52
     return pts
 
 
-def _branches(pts: list[list[tuple[float, float]]]) -> np.ndarray:
-    """Join the k-th root of consecutive columns into the k-th branch (NaN rows between)."""
+def _branches(pts: list[list[tuple[float, float]]], gap: float) -> np.ndarray:
+    """Join the k-th root of consecutive columns into the k-th branch (NaN rows between); a jump
+    longer than ``gap`` between neighbours breaks the branch (two lines, not one joined)."""
     width = max((len(r) for r in pts), default=0)
+    nan = (math.nan, math.nan)
     out = []
     for k in range(width):
-        out.append(np.asarray([r[k] if len(r) > k else (math.nan, math.nan) for r in pts]
-                              + [(math.nan, math.nan)]))
+        b = np.asarray([r[k] if len(r) > k else nan for r in pts] + [nan])
+        jump = np.hypot(*np.diff(b, axis=0).T) > gap
+        keep = np.insert(b, np.flatnonzero(jump) + 1, nan, axis=0)
+        out.append(keep)
     return np.vstack(out) if out else np.empty((0, 2))
 
 
@@ -174,7 +178,8 @@ def _roots(f, x1: np.ndarray, x2: np.ndarray) -> np.ndarray:
     along2 = _scan(f, x1, x2)
     along1 = [[(b, a) for a, b in row] for row in _scan(lambda a, b: f(b, a), x2, x1)]
     n2, n1 = sum(map(len, along2)), sum(map(len, along1))
-    return _branches(along2 if n2 >= n1 else along1)
+    gap = 3 * max(float(np.ptp(x1)) / max(x1.size - 1, 1), float(np.ptp(x2)) / max(x2.size - 1, 1))
+    return _branches(along2 if n2 >= n1 else along1, gap)
 
 
 def blocking_contour(p: PairSpec, c: ContourSpec | None = None,
@@ -214,8 +219,8 @@ def blocking_contour(p: PairSpec, c: ContourSpec | None = None,
     if best is None:
         rule = "max_eps"
         if not mask.any():
-            raise SceneError(f"no profile shifts x1, x2 satisfy every limit of the blocking contour "
-                             f"for z1 = {p.z1}, z2 = {p.z2} (top land ≥ {c.tip_land:g}·m, "
+            raise SceneError("no profile shifts x1, x2 satisfy every limit of the blocking "
+                             f"contour for z1 = {p.z1}, z2 = {p.z2} (top land ≥ {c.tip_land:g}·m, "
                              f"ε_α ≥ {c.eps_min:g}); lower the limits", key="pair.contour")
         eps = np.where(mask, pair_arrays(p, X1, X2).eps, -np.inf)
         i, j = np.unravel_index(int(np.argmax(eps)), eps.shape)

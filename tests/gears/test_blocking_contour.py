@@ -8,8 +8,12 @@ import numpy as np
 import pytest
 
 from mechplan.model.gears import PairSpec
-from mechplan.synthesis.gears.contour import (ContourSpec, admissible, blocking_contour,
-                                              specific_sliding)
+from mechplan.synthesis.gears.contour import (
+    ContourSpec,
+    admissible,
+    blocking_contour,
+    specific_sliding,
+)
 
 M = 0.004
 ALPHA = math.radians(20.0)
@@ -134,3 +138,33 @@ def test_specific_sliding_ends() -> None:
     aw = _alpha_w(12, 30, 0.3, 0.2)
     k = np.argmin(np.abs(s.eta1))
     assert s.u[k] == pytest.approx(M * 12 / 2 * math.cos(ALPHA) * math.tan(aw), abs=s.g / 100)
+
+
+def test_scene_contour_rule_json_and_sheet() -> None:
+    from mechplan.studies.gears import solve_gear_text
+
+    text = ('kind = "gears"\n[pair]\nmodule = "4 mm"\nteeth = [12, 30]\nshift_rule = "contour"\n'
+            'tip_land = 0.4\nmin_contact_ratio = 1.25\n')
+    study = solve_gear_text(text, "pair.toml")
+    doc = study.to_json()["pair"]
+    x1, x2 = doc["x"]
+    assert doc["contour"]["recommended"] == [x1, x2]
+    f = _closed_form(12, 30, x1, x2)
+    assert f["s_a1"] >= 0.4 * M - 1e-12 and f["eps"] >= 1.25 and x1 >= 5 / 17
+    assert doc["contact_ratio"] == pytest.approx(f["eps"], rel=1e-10)
+    s = doc["contour"]["specific_sliding"]
+    assert s["eta1"][0] is None and s["eta2"][-1] is None
+    assert "blocking contour" in study.report("en")
+    texts = " ".join(getattr(p, "string", "") for sh in study.sheets(None, None, "ru", "pair")
+                     for p in sh.primitives)
+    assert "Блокирующий" in texts and "Удельные скольжения" in texts
+
+
+def test_scene_rejects_bad_contour_keys() -> None:
+    from mechplan.errors import SceneError
+    from mechplan.studies.gears import solve_gear_text
+
+    base = 'kind = "gears"\n[pair]\nmodule = "4 mm"\nteeth = [12, 30]\n'
+    for bad in ('contour = "yes"\n', 'tip_land = -1\n', 'min_contact_ratio = true\n'):
+        with pytest.raises(SceneError):
+            solve_gear_text(base + bad, "pair.toml")
