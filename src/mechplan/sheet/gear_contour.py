@@ -29,24 +29,33 @@ def chosen_line(c: Contour, lang: str) -> str:
                    x2=number(c.recommended[1], 4, lang), eps=number(c.eps, 4, lang))
 
 
-def _labelled(line: np.ndarray, role: Role, label: str) -> list[Curve]:
-    """A NaN-separated line as one curve per branch, the longest one labelled at its end."""
+def _labelled(line: np.ndarray, role: Role, label: str, at: float = 0.5) -> list[Curve]:
+    """A NaN-separated line as one curve per branch, the longest one labelled at the fraction
+    ``at`` of its points."""
     cut = np.flatnonzero(~np.isfinite(line[:, 0]))
     parts = [b for b in np.split(line, cut) if np.isfinite(b[:, 0]).sum() > 1]
     parts = [b[np.isfinite(b[:, 0])] for b in parts]
     if not parts:
         return []
     longest = max(range(len(parts)), key=lambda k: len(parts[k]))
-    return [Curve(b[:, 0], b[:, 1], role, label if k == longest else None)
-            for k, b in enumerate(parts)]
+    out = [Curve(b[:, 0], b[:, 1], role) for k, b in enumerate(parts) if k != longest]
+    # labelled inside the longest branch (the ends crowd at the grid's edges): its first part
+    # carries the label at its end, the rest continues the line
+    b = parts[longest]
+    mid = min(max(1, int(len(b) * at)), len(b) - 1)
+    out.append(Curve(b[: mid + 1, 0], b[: mid + 1, 1], role, label))
+    if len(b) - mid > 1:
+        out.append(Curve(b[mid:, 0], b[mid:, 1], role))
+    return out
 
 
 def contour_panel(c: Contour, pair: Pair, lang: str, scale: float) -> Panel:
     """The contour diagram: one line per limit, the balanced-sliding line dashed, the admissible
     region hatched by vertical thin lines, the chosen point marked."""
     curves: list[Curve] = []
-    for name in LIMITS:
-        curves += _labelled(c.lines[name], Role.OUTLINE, limit_label(name, c, lang))
+    for i, name in enumerate(LIMITS):       # labels staggered along their lines
+        curves += _labelled(c.lines[name], Role.OUTLINE, limit_label(name, c, lang),
+                            0.2 + 0.6 * i / (len(LIMITS) - 1))
     curves += _labelled(c.balanced, Role.DASHED, message("contour.line.balanced", lang))
     hatch_x, hatch_y = [], []
     for i in range(0, c.x1.size, HATCH_EVERY):
