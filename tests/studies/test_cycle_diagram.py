@@ -131,6 +131,30 @@ def test_errors_name_the_key(tmp_path: Path, members: str, key: str) -> None:
     assert err.value.key == key
 
 
+def test_a_cylinder_driven_linkage_is_refused() -> None:
+    root = Path(__file__).resolve().parents[2] / "templates"
+    text = '[[members]]\nname = "boom"\nscene = "excavator_boom.toml"\n'
+    with pytest.raises(SceneError) as err:
+        solve_text('kind = "cycle"\n' + text, str(root / "m.toml"))
+    assert err.value.key == "members[0].scene" and "crank" in str(err.value)
+
+
+def test_rocker_output_of_a_crank_rocker(tmp_path: Path) -> None:
+    """A four-bar's rocker: θ_w + θ_r = 360°, the working stroke the longer (K ≥ 1)."""
+    root = Path(__file__).resolve().parents[2] / "templates"
+    st = solve_text('kind = "cycle"\n[[members]]\nname = "r"\nscene = "four_bar.toml"\n',
+                    str(root / "m.toml"))
+    work, ret = st.members[0].spans
+    assert work.kind == "work" and work.angle >= ret.angle
+    assert work.angle + ret.angle == pytest.approx(2 * math.pi, abs=1e-12)
+    # closed form: crank and coupler collinear, a = 80, b = 260, c = 180, d = 250 (mm)
+    a, b, c, d = 80.0, 260.0, 180.0, 250.0
+    ext = math.acos(((b + a) ** 2 + d ** 2 - c ** 2) / (2 * (b + a) * d))
+    fold = math.acos(((b - a) ** 2 + d ** 2 - c ** 2) / (2 * (b - a) * d))
+    theta = abs(fold - ext)
+    assert work.angle == pytest.approx(math.pi + theta, abs=1e-9)
+
+
 def test_template_draws_both_diagrams() -> None:
     root = Path(__file__).resolve().parents[2] / "templates"
     st = solve_file(root / "machine_cycle.toml")

@@ -70,6 +70,10 @@ class MemberCycle:
 def linkage_cycle(c: Construction, mech: Mechanism, name: str, phase: float,
                   subject: str | None, working: Working, key: str) -> MemberCycle:
     """The working stroke and the return of a linkage's output from its exact extremes."""
+    if mech.drive.linear:
+        raise SceneError(f"member {name!r}: its mechanism is driven by a {mech.drive.kind.value}, "
+                         "not a crank on the shaft; a cycle diagram needs a crank-driven linkage",
+                         key=key.rsplit(".", 1)[0] + ".scene")
     outs = [subject] if subject else default_outputs(mech)
     if not outs:
         raise SceneError(f"member {name!r}: the mechanism has no slider on the frame nor rocker "
