@@ -168,3 +168,15 @@ def test_scene_rejects_bad_contour_keys() -> None:
     for bad in ('contour = "yes"\n', 'tip_land = -1\n', 'min_contact_ratio = true\n'):
         with pytest.raises(SceneError):
             solve_gear_text(base + bad, "pair.toml")
+
+
+def test_an_empty_contour_is_an_error_in_every_language() -> None:
+    from mechplan.errors import SceneError
+    from mechplan.studies.gears import solve_gear_text
+
+    text = ('kind = "gears"\n[pair]\nmodule = "4 mm"\nteeth = [12, 30]\nshift_rule = "contour"\n'
+            'min_contact_ratio = 2.5\n')
+    with pytest.raises(SceneError) as err:
+        solve_gear_text(text, "pair.toml")
+    assert err.value.key == "pair.shift_rule"
+    assert "blocking contour" in err.value.text("en") and "контура" in err.value.text("ru")

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..model.cam import Phase, PhaseKind
 from ..model.cycle import Working
 from ..model.mechanism import Mechanism
@@ -71,20 +72,19 @@ def linkage_cycle(c: Construction, mech: Mechanism, name: str, phase: float,
                   subject: str | None, working: Working, key: str) -> MemberCycle:
     """The working stroke and the return of a linkage's output from its exact extremes."""
     if mech.drive.linear:
-        raise SceneError(f"member {name!r}: its mechanism is driven by a {mech.drive.kind.value}, "
-                         "not a crank on the shaft; a cycle diagram needs a crank-driven linkage",
+        raise SceneError(Text("cycle.error.linear", {"name": name,
+                                                     "kind": mech.drive.kind.value}),
                          key=key.rsplit(".", 1)[0] + ".scene")
     outs = [subject] if subject else default_outputs(mech)
     if not outs:
-        raise SceneError(f"member {name!r}: the mechanism has no slider on the frame nor rocker "
-                         "to take the cycle of; name it with output", key=key)
+        raise SceneError(Text("cycle.error.no_output", {"name": name}), key=key)
     try:
         st = stroke(c, mech, outs[0])
     except SceneError as exc:
         raise SceneError(exc.detail, key=key) from None
     if st.phi_min is None or st.phi_max is None or st.theta_up is None:
-        raise SceneError(f"member {name!r}: output {outs[0]} must have exactly one maximum and "
-                         f"one minimum over a turn (got {len(st.extremes)} extremes)", key=key)
+        raise SceneError(Text("cycle.error.extremes", {"name": name, "output": outs[0],
+                                                       "count": str(len(st.extremes))}), key=key)
     up = {Working.LONGER: st.working_up, Working.TO_MAX: True, Working.TO_MIN: False}[working]
     if up:
         spans = (Span("work", st.phi_min, st.theta_up, 0.0, 1.0),

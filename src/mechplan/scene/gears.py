@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..errors import SceneError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 from ..model.gears import GearScene, OrdinarySpec, PairSpec, PlanetarySpec, Scheme, ShiftRule
 from .document import parse_toml
 from .reader import Table
@@ -210,7 +210,7 @@ def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, i
 def _flag(t: Table, key: str) -> bool:
     v = t.raw(key, False)
     if not isinstance(v, bool):
-        raise t.error(key, f"must be true or false (got {v!r})")
+        raise t.error(key, Text("contour.error.flag", {"value": repr(v)}))
     return v
 
 
@@ -218,7 +218,7 @@ def _fraction(t: Table, key: str, default: float) -> float:
     """A plain positive number (the contour's limits: s_a/m, ε_α)."""
     v = t.raw(key, default)
     if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 < v < 10:
-        raise t.error(key, f"must be a positive number below 10 (got {v!r})")
+        raise t.error(key, Text("contour.error.fraction", {"value": repr(v)}))
     return float(v)
 
 

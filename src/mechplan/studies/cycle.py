@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..errors import SceneError
-from ..i18n import message, number
+from ..i18n import Text, message, number
 from .answers import Keys
 
 if TYPE_CHECKING:
@@ -114,7 +114,8 @@ def solve_cycle_text(text: str, file: str, data_dir: str | Path | None = None) -
         key = f"members[{i}].scene"
         path = folder / m.scene
         if not path.is_file():
-            raise SceneError(f"member {m.name!r}: scene file {m.scene!r} not found in {folder}",
+            raise SceneError(Text("cycle.error.missing", {"name": m.name, "scene": m.scene,
+                                                          "folder": str(folder)}),
                              file=file, key=key)
         sub = read_text(path)
         kind = scene_kind(parse_toml(sub, str(path)), str(path))
@@ -135,8 +136,8 @@ def solve_cycle_text(text: str, file: str, data_dir: str | Path | None = None) -
                 members.append(cam_cycle(cam.phases, cam.stroke, m.name, m.phase))
                 speeds.append(float(cam.omega))
             else:
-                raise SceneError(f"member {m.name!r}: a {kind} scene has no cycle to draw; give a "
-                                 "mechanism or a cam scene", key=key)
+                raise SceneError(Text("cycle.error.kind", {"name": m.name, "kind": kind}),
+                                 key=key)
         except SceneError as exc:
             if exc.file:
                 raise

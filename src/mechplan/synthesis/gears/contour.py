@@ -22,6 +22,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.gears import PairSpec
 
 LIMITS = ("undercut1", "undercut2", "tip1", "tip2", "contact", "interference1", "interference2")
@@ -219,9 +220,9 @@ def blocking_contour(p: PairSpec, c: ContourSpec | None = None,
     if best is None:
         rule = "max_eps"
         if not mask.any():
-            raise SceneError("no profile shifts x1, x2 satisfy every limit of the blocking "
-                             f"contour for z1 = {p.z1}, z2 = {p.z2} (top land ≥ {c.tip_land:g}·m, "
-                             f"ε_α ≥ {c.eps_min:g}); lower the limits", key="pair.contour")
+            raise SceneError(Text("contour.error.empty", {"z1": p.z1, "z2": p.z2,
+                                                          "k": c.tip_land, "eps": c.eps_min}),
+                             key="pair.shift_rule")
         eps = np.where(mask, pair_arrays(p, X1, X2).eps, -np.inf)
         i, j = np.unravel_index(int(np.argmax(eps)), eps.shape)
         best, best_eps = (float(x1[i]), float(x2[j])), float(eps[i, j])
