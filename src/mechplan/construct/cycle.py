@@ -72,18 +72,18 @@ def linkage_cycle(c: Construction, mech: Mechanism, name: str, phase: float,
                   subject: str | None, working: Working, key: str) -> MemberCycle:
     """The working stroke and the return of a linkage's output from its exact extremes."""
     if mech.drive.linear:
-        raise SceneError(Text("cycle.error.linear", {"name": name,
+        raise SceneError(Text("machine_cycle.error.linear", {"name": name,
                                                      "kind": mech.drive.kind.value}),
                          key=key.rsplit(".", 1)[0] + ".scene")
     outs = [subject] if subject else default_outputs(mech)
     if not outs:
-        raise SceneError(Text("cycle.error.no_output", {"name": name}), key=key)
+        raise SceneError(Text("machine_cycle.error.no_output", {"name": name}), key=key)
     try:
         st = stroke(c, mech, outs[0])
     except SceneError as exc:
         raise SceneError(exc.detail, key=key) from None
     if st.phi_min is None or st.phi_max is None or st.theta_up is None:
-        raise SceneError(Text("cycle.error.extremes", {"name": name, "output": outs[0],
+        raise SceneError(Text("machine_cycle.error.extremes", {"name": name, "output": outs[0],
                                                        "count": str(len(st.extremes))}), key=key)
     up = {Working.LONGER: st.working_up, Working.TO_MAX: True, Working.TO_MIN: False}[working]
     if up:

@@ -19,7 +19,7 @@ def parse_machine(text: str, file: str = "<scene>") -> MachineSpec:
     top.check_keys(("kind", "title", "language", "start", "members"))
     raw = top.raw("members", required=True)
     if not isinstance(raw, list) or not raw or not all(isinstance(m, dict) for m in raw):
-        raise top.error("members", Text("cycle.error.members"))
+        raise top.error("members", Text("machine_cycle.error.members"))
     members = []
     for i, m in enumerate(raw):
         t = Table(m, f"members[{i}]", file)
@@ -33,7 +33,7 @@ def parse_machine(text: str, file: str = "<scene>") -> MachineSpec:
             working=Working(t.string("working", "longer", choices=WORKING))))
     names = [m.name for m in members]
     if len(set(names)) != len(names):
-        raise top.error("members", Text("cycle.error.names", {"names": ", ".join(names)}))
+        raise top.error("members", Text("machine_cycle.error.names", {"names": ", ".join(names)}))
     return MachineSpec(title=top.string("title", "") or "",
                        language=top.string("language", "en", choices=LANGUAGES) or "en",
                        members=tuple(members), start=top.quantity("start", "angle"), file=file)

@@ -35,7 +35,7 @@ class CycleView:
 
 
 def _kind(kind: str, lang: str) -> str:
-    return message(f"cycle.kind.{kind}", lang)
+    return message(f"machine_cycle.kind.{kind}", lang)
 
 
 def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
@@ -73,7 +73,7 @@ def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
         prims.append(Line((x, -1.5), (x, 0.0), Role.THIN))
         prims.append(Text((x, -2.0), f"{deg}", 1.8, halign=HAlign.CENTER, valign=VAlign.TOP))
     prims.append(Text((w + 2.0, -2.0), "ψ, °", TEXT_H, valign=VAlign.TOP))
-    title = message("cycle.sheet.rectangular", lang,
+    title = message("machine_cycle.sheet.rectangular", lang,
                     start=number(math.degrees(st.origin), 1, lang))
     prims.extend(text_block((0.0, n * h + 4.0), title, TITLE_H, w, upward=True))
     return Panel("cycle-rectangular", list(prims))
@@ -114,7 +114,7 @@ def circular_panel(st: CycleView, lang: str, k: float) -> Panel:
         prims.append(Text((r0 + 1.0, 1.0), m.name, 1.8, valign=VAlign.BOTTOM))
     prims.append(Line((0.0, 0.0), (r_out + 4.0, 0.0), Role.DASHED))
     prims.append(Text((r_out + 5.0, 0.0), "ψ = 0", TEXT_H, valign=VAlign.MIDDLE))
-    prims.extend(text_block((-r_out, r_out + 4.0), message("cycle.sheet.circular", lang),
+    prims.extend(text_block((-r_out, r_out + 4.0), message("machine_cycle.sheet.circular", lang),
                             TITLE_H, 2 * r_out, upward=True))
     return Panel("cycle-circular", list(prims))
 
@@ -133,7 +133,7 @@ def legend_panel(st: CycleView, lang: str, k: float) -> Panel:
 def cycle_sheets(st: CycleView, title: str, size: str | None, standard: str | None,
                  lang: str, name: str) -> list[Sheet]:
     """The rectangular and the circular cycle diagrams and their legend on framed sheets."""
-    title = title or message("cycle.sheet.title", lang)
+    title = title or message("machine_cycle.sheet.title", lang)
     return fitted_sheets(lambda k: [rectangular_panel(st, lang, k), circular_panel(st, lang, k),
                                     legend_panel(st, lang, k)],
                          size=size or "A3", standard=standard or "iso", language=lang, name=name,

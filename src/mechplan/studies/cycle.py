@@ -40,21 +40,21 @@ class CycleStudy:
         lang = language or self.language
         def n(x: float, d: int = 2) -> str:
             return number(x, d, lang)
-        out = [message("cycle.report.title", lang, title=self.spec.title,
+        out = [message("machine_cycle.report.title", lang, title=self.spec.title,
                        start=n(math.degrees(self.origin)))]
         for m in self.members:
-            out.append(message(f"cycle.report.member.{m.kind}", lang, name=m.name,
+            out.append(message(f"machine_cycle.report.member.{m.kind}", lang, name=m.name,
                                phase=_signed(math.degrees(m.phase), lang), output=m.subject))
             for s in m.spans:
-                out.append(message("cycle.report.span", lang,
-                                   kind=message(f"cycle.kind.{s.kind}", lang),
+                out.append(message("machine_cycle.report.span", lang,
+                                   kind=message(f"machine_cycle.kind.{s.kind}", lang),
                                    angle=n(math.degrees(s.angle)),
                                    start=n(math.degrees(s.start) % 360.0 + 0.0)))
-            out.append(message("cycle.report.on_shaft", lang, spans="; ".join(
-                f"{message(f'cycle.kind.{k}', lang)} {n(a)}…{n(b)}°"
+            out.append(message("machine_cycle.report.on_shaft", lang, spans="; ".join(
+                f"{message(f'machine_cycle.kind.{k}', lang)} {n(a)}…{n(b)}°"
                 for k, a, b in self.spans_deg(m))))
         if self.speed_mismatch:
-            out.append(message("cycle.warning.speeds", lang, speeds=", ".join(
+            out.append(message("machine_cycle.warning.speeds", lang, speeds=", ".join(
                 n(abs(w), 4) for w in self.speeds)))
         return "\n".join(out)
 
@@ -114,7 +114,7 @@ def solve_cycle_text(text: str, file: str, data_dir: str | Path | None = None) -
         key = f"members[{i}].scene"
         path = folder / m.scene
         if not path.is_file():
-            raise SceneError(Text("cycle.error.missing", {"name": m.name, "scene": m.scene,
+            raise SceneError(Text("machine_cycle.error.missing", {"name": m.name, "scene": m.scene,
                                                           "folder": str(folder)}),
                              file=file, key=key)
         sub = read_text(path)
@@ -136,7 +136,7 @@ def solve_cycle_text(text: str, file: str, data_dir: str | Path | None = None) -
                 members.append(cam_cycle(cam.phases, cam.stroke, m.name, m.phase))
                 speeds.append(float(cam.omega))
             else:
-                raise SceneError(Text("cycle.error.kind", {"name": m.name, "kind": kind}),
+                raise SceneError(Text("machine_cycle.error.kind", {"name": m.name, "kind": kind}),
                                  key=key)
         except SceneError as exc:
             if exc.file:
