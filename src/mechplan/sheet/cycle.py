@@ -8,6 +8,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from ..drafting.fonts import text_width_mm
 from ..drafting.primitives import Arc, Circle, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
 from ..i18n import message, number
 from .fit import text_block
@@ -21,6 +22,7 @@ if TYPE_CHECKING:
 WIDTH = 180.0       # mm for 360° of the rectangular diagram
 STRIP = 14.0        # mm, the height of one member's strip
 TEXT_H = 2.5
+SMALL_H = 1.8       # mm, the phases' names and angles
 TITLE_H = 3.5
 RING = 10.0         # mm, the width of one member's ring
 HUB = 15.0          # mm, the radius inside the innermost ring
@@ -47,8 +49,8 @@ def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
         y0 = (n - 1 - row) * h
         prims.append(Polyline(((0, y0), (w, y0), (w, y0 + h), (0, y0 + h)), Role.OUTLINE,
                               closed=True))
-        prims.append(Text((-2.0, y0 + h / 2), m.name, TEXT_H, halign=HAlign.RIGHT,
-                          valign=VAlign.MIDDLE))
+        prims.append(Text((-2.0, y0 + h / 2), f"{row + 1}. {m.name}", TEXT_H,
+                          halign=HAlign.RIGHT, valign=VAlign.MIDDLE))
         for s, a, b in m.on_shaft(st.origin):
             xa, xb = a / (2 * math.pi) * w, b / (2 * math.pi) * w
             prims.append(Line((xa, y0), (xa, y0 + h), Role.THIN))
@@ -61,12 +63,13 @@ def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
             pad = 0.2 * h
             prims.append(Line((xa, y0 + pad + la * (h - 2 * pad)),
                               (xb, y0 + pad + lb * (h - 2 * pad)), Role.OUTLINE))
-            if xb - xa > 12.0:
-                prims.append(Text(((xa + xb) / 2, y0 + h - 1.0), _kind(s.kind, lang), 1.8,
+            # a phase's name and angle only where they fit between its boundaries
+            name, angle = _kind(s.kind, lang), f"{number(math.degrees(b - a), 1, lang)}°"
+            if text_width_mm(name, SMALL_H) < xb - xa - 1.0:
+                prims.append(Text(((xa + xb) / 2, y0 + h - 1.0), name, SMALL_H,
                                   halign=HAlign.CENTER, valign=VAlign.TOP))
-            if b - a > math.radians(8):
-                prims.append(Text(((xa + xb) / 2, y0 + 1.0),
-                                  f"{number(math.degrees(b - a), 1, lang)}°", 1.8,
+            if text_width_mm(angle, SMALL_H) < xb - xa - 1.0:
+                prims.append(Text(((xa + xb) / 2, y0 + 1.0), angle, SMALL_H,
                                   halign=HAlign.CENTER, valign=VAlign.BOTTOM))
     for deg in range(0, 361, 30):
         x = deg / 360 * w
@@ -105,13 +108,14 @@ def circular_panel(st: CycleView, lang: str, k: float) -> Panel:
                 prims.append(Arc((0.0, 0.0), r0 + 0.7 * ring, math.degrees(a), math.degrees(b),
                                  Role.OUTLINE))
             mid = (a + b) / 2
-            if (b - a) * (r0 + r1) / 2 > 10.0:
+            angle = f"{number(math.degrees(b - a), 1, lang)}°"
+            if (b - a) * (r0 + r1) / 2 > text_width_mm(angle, SMALL_H) + 2.0:
                 rm = (r0 + r1) / 2
-                prims.append(Text((rm * math.cos(mid), rm * math.sin(mid)),
-                                  f"{number(math.degrees(b - a), 1, lang)}°", 1.8,
+                prims.append(Text((rm * math.cos(mid), rm * math.sin(mid)), angle, SMALL_H,
                                   halign=HAlign.CENTER, valign=VAlign.MIDDLE))
-        # the member's name just above ψ = 0 inside its ring
-        prims.append(Text((r0 + 1.0, 1.0), m.name, 1.8, valign=VAlign.BOTTOM))
+        # the member's number (the legend's) just above ψ = 0 inside its ring
+        prims.append(Text((r0 + ring / 2, 0.5), str(row + 1), SMALL_H, halign=HAlign.CENTER,
+                          valign=VAlign.BOTTOM))
     prims.append(Line((0.0, 0.0), (r_out + 4.0, 0.0), Role.DASHED))
     prims.append(Text((r_out + 5.0, 0.0), "ψ = 0", TEXT_H, valign=VAlign.MIDDLE))
     prims.extend(text_block((-r_out, r_out + 4.0), message("machine_cycle.sheet.circular", lang),
@@ -122,11 +126,11 @@ def circular_panel(st: CycleView, lang: str, k: float) -> Panel:
 def legend_panel(st: CycleView, lang: str, k: float) -> Panel:
     """Each member's phases in words (kind, angle, ψ from … to …)."""
     lines = []
-    for m in st.members:
+    for i, m in enumerate(st.members, start=1):
         spans = "; ".join(f"{_kind(sp.kind, lang)} {number(math.degrees(a), 1, lang)}–"
                           f"{number(math.degrees(b), 1, lang)}°"
                           for sp, a, b in m.on_shaft(st.origin))
-        lines.append(f"{m.name}: {spans}")
+        lines.append(f"{i}. {m.name}: {spans}")
     return Panel("cycle-legend", list(text_block((0.0, 0.0), lines, TEXT_H, WIDTH * k)))
 
 
