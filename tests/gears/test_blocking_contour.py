@@ -101,6 +101,10 @@ def test_recommended_is_admissible_and_balanced() -> None:
     ok = admissible(p, c.spec, pts[:, 0], pts[:, 1])
     best = max(_closed_form(12, 30, float(a), float(b))["eps"] for a, b in pts[ok])
     assert c.eps >= best - 1e-9
+    # ε_α grows as x1 + x2 falls: the best balanced point is where the line leaves the contour,
+    # on one limit (here interference of gear 1: B1 at the start of its involute, ρ_p1 = ρ_l1)
+    f_b = _closed_form(12, 30, x1, x2)
+    assert f_b["rho_p1"] == pytest.approx(f_b["rho_l1"], abs=1e-9 * M)
 
 
 def test_mask_matches_the_closed_forms() -> None:

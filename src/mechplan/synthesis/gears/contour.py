@@ -16,6 +16,7 @@ point of the largest ε_α.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -215,7 +216,7 @@ def blocking_contour(p: PairSpec, c: ContourSpec | None = None,
             eps = pair_arrays(p, cand[:, 0], cand[:, 1]).eps
             k = int(np.nanargmax(eps))
             best, best_eps = (float(cand[k, 0]), float(cand[k, 1])), float(eps[k])
-            best = _refine_balanced(p, c, best, float(x1[1] - x1[0]))
+            best = _refine_balanced(p, c, best, balanced, unbalance)
             best_eps = float(pair_arrays(p, *best).eps)
     if best is None:
         rule = "max_eps"
@@ -229,30 +230,51 @@ def blocking_contour(p: PairSpec, c: ContourSpec | None = None,
     return Contour(c, x1, x2, lines, mask, balanced, best, rule, best_eps)
 
 
-def _refine_balanced(p: PairSpec, c: ContourSpec, start: tuple[float, float], h: float
+def _refine_balanced(p: PairSpec, c: ContourSpec, start: tuple[float, float],
+                     pts: np.ndarray, unbalance: Callable[[np.ndarray, np.ndarray], np.ndarray]
                      ) -> tuple[float, float]:
-    """Walk along the balanced line near ``start`` (x1 within ± one grid step) for the largest
-    admissible ε_α, solving x2 for each x1 by Brent's method."""
-    def x2_of(x1: float) -> float | None:
-        def d(x2: float) -> float:
-            q = pair_arrays(p, x1, x2)
-            return float(q.sliding[0] - q.sliding[1])
-        a, b = start[1] - 2 * h, start[1] + 2 * h
-        try:
-            fa, fb = d(a), d(b)
-            if not (math.isfinite(fa) and math.isfinite(fb)) or fa * fb > 0:
-                return None
-            return float(brentq(d, a, b, xtol=1e-13))
-        except ValueError:
-            return None
-    best, best_eps = start, float(pair_arrays(p, *start).eps)
-    for x1 in np.linspace(start[0] - h, start[0] + h, 41):
-        x2 = x2_of(float(x1))
-        if x2 is None or not bool(admissible(p, c, x1, x2)):
+    """Move the best admissible balanced point to where the balanced line leaves the contour:
+    towards its neighbour on the line (``pts``, NaN-separated branches) of larger ε_α that is not
+    admissible, bisecting (60 steps) with each trial point put back on the line by Brent's
+    method along the segment's normal."""
+    i = int(np.nanargmin(np.hypot(pts[:, 0] - start[0], pts[:, 1] - start[1])))
+    eps0 = float(pair_arrays(p, *start).eps)
+    best = start
+    for j in (i - 1, i + 1):
+        if not 0 <= j < len(pts) or not np.isfinite(pts[j, 0]):
             continue
-        e = float(pair_arrays(p, x1, x2).eps)
-        if e > best_eps:
-            best, best_eps = (float(x1), x2), e
+        q = (float(pts[j, 0]), float(pts[j, 1]))
+        if bool(admissible(p, c, *q)) or not float(pair_arrays(p, *q).eps) > eps0:
+            continue
+        d = np.subtract(q, start)
+        step = float(np.hypot(*d))
+        n = np.array([-d[1], d[0]]) / step
+
+        def on_line(t: float, d: np.ndarray = d, n: np.ndarray = n, step: float = step
+                    ) -> tuple[float, float] | None:
+            m = np.asarray(start) + t * d
+
+            def g(u: float) -> float:
+                x = m + u * n
+                return float(unbalance(np.array(x[0]), np.array(x[1])))
+            try:
+                u = brentq(g, -step, step, xtol=1e-15)
+            except ValueError:
+                return None
+            x = m + u * n
+            return float(x[0]), float(x[1])
+        lo, hi = 0.0, 1.0
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            x = on_line(mid)
+            if x is not None and bool(admissible(p, c, *x)):
+                lo = mid
+            else:
+                hi = mid
+        x = on_line(lo)
+        if x is not None and bool(admissible(p, c, *x)) and \
+                float(pair_arrays(p, *x).eps) > float(pair_arrays(p, *best).eps):
+            best = x
     return best
 
 
