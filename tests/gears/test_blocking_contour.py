@@ -184,3 +184,13 @@ def test_an_empty_contour_is_an_error_in_every_language() -> None:
         solve_gear_text(text, "pair.toml")
     assert err.value.key == "pair.shift_rule"
     assert "blocking contour" in err.value.text("en") and "контура" in err.value.text("ru")
+
+
+def test_contour_drawn_beside_another_rule() -> None:
+    from mechplan.studies.gears import solve_gear_text
+
+    text = ('kind = "gears"\n[pair]\nmodule = "4 mm"\nteeth = [12, 30]\n'
+            'shift_rule = "no_undercut"\ncontour = true\n')
+    doc = solve_gear_text(text, "pair.toml").to_json()["pair"]
+    assert doc["x"] == [pytest.approx(5 / 17), 0.0]           # the rule's shifts, not the contour's
+    assert doc["contour"]["recommended"] != doc["x"]
