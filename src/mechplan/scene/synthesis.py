@@ -23,6 +23,7 @@ PROBLEM_KEYS = {
     "coulisse": ("frame", "crank", "coulisse", "stroke"),
     "shaper": ("frame", "crank", "stroke", "rod"),
     "guidance": ("B", "C", "pivot_line"),
+    "path": ("points", "crank_rotations", "coupler_rotations", "rocker_rotations"),
     "function": ("function", "x_range", "points", "count", "input_start", "input_range",
                  "output_start", "output_range", "frame"),
 }
@@ -41,7 +42,7 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
     s = top.table("synthesis", required=True)
     assert s is not None
     problem = s.string("problem", required=True, choices=PROBLEMS) or ""
-    if problem in ("function", "guidance"):
+    if problem in ("function", "guidance", "path"):
         s.check_keys(("problem", *PROBLEM_KEYS[problem]))
         k = 1.0
     else:
@@ -56,6 +57,10 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
               "pivot_line": _line(s)}
         if len(fg["guide_b"]) != len(fg["guide_c"]):
             raise _error(s, "C", "same_count")
+    if problem == "path":
+        from .synthesis_path import path_keys
+
+        fg = path_keys(s)
     values: dict[str, float | None] = {}
     for key in LENGTHS:
         if key in PROBLEM_KEYS[problem]:

@@ -82,7 +82,8 @@ def construction_panel(d: LinkageDesign, lang: str, enlargement: float) -> Panel
                               halign=HAlign.LEFT, valign=VAlign.BOTTOM))
     x0, _, x1, y1 = Panel("", prims).bounds()
     title = {"function": "synth.sheet.construction_fg",
-             "guidance": "synth.sheet.construction_gd"}.get(d.problem,
+             "guidance": "synth.sheet.construction_gd",
+             "path": "synth.sheet.construction_pg"}.get(d.problem,
                                                             "synth.sheet.construction")
     heading = [message(title, lang),
                mu_text("μl", mu, "m", lang)]
