@@ -13,6 +13,7 @@ angles, on the first position's assembly) is reported with branch, order and cir
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
@@ -138,7 +139,7 @@ def path_generation(spec: SynthesisSpec) -> LinkageDesign:
     sides = [side(bj, cj) for bj, cj in zip(bjs, cjs)]
     branch_defect = any(s != sides[0] for s in sides)
     turns = [(sense * bj) % (2 * math.pi) for bj in beta]
-    order_defect_turn = any(t2 <= t1 for t1, t2 in zip(turns[1:], turns[2:]))
+    order_defect_turn = any(t2 <= t1 for t1, t2 in itertools.pairwise(turns))
     sweep = turns[-1]
     ok, margin = grashof({"1": a, "2": b, "3": c, "0": d})
     crank = ok and min(a, b, c, d) in (a, d)
@@ -168,7 +169,7 @@ def path_generation(spec: SynthesisSpec) -> LinkageDesign:
         strokes.append(Stroke("point", (pj.real, pj.imag), role="given", label=f"P{j}"))
     # the coupler curve over a turn (or the reachable part of it)
     curve = coupler_points(a_, w, z, d_, ws, zs, phi1 + np.linspace(0, 2 * math.pi, 361))
-    for q0, q1 in zip(curve[:-1], curve[1:]):
+    for q0, q1 in itertools.pairwise(curve):
         if not (np.isnan(q0) or np.isnan(q1)):
             strokes.append(Stroke("line", (q0.real, q0.imag), (q1.real, q1.imag),
                                   role="family"))
