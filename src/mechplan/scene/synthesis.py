@@ -18,7 +18,7 @@ TOP_KEYS = ("kind", "title", "language", "description", "synthesis", "drive", "p
             "drawing", "title_block")
 #: the keys each problem takes besides ``problem``, ``K`` and ``gamma_min``
 PROBLEM_KEYS = {
-    "crank_rocker": ("swing", "rocker", "frame", "frame_angle"),
+    "crank_rocker": ("swing", "rocker", "frame", "frame_angle", "lambda"),
     "slider_crank": ("stroke", "offset", "lambda", "gamma"),
     "coulisse": ("frame", "crank", "coulisse", "stroke"),
     "shaper": ("frame", "crank", "stroke", "rod"),
@@ -70,10 +70,12 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
                    if problem == "crank_rocker" else None)
     if values.get("frame") is not None and frame_angle is not None:
         raise _error(s, "frame_angle", "frame_or_angle")
-    lam = s.quantity("lambda", "dimensionless", positive=True) if problem == "slider_crank" \
-        else None
+    lam = s.quantity("lambda", "dimensionless", positive=True) \
+        if problem in ("slider_crank", "crank_rocker") else None
     if values.get("offset") is not None and lam is not None:
         raise _error(s, "lambda", "offset_or_lambda")
+    if lam is not None and (values.get("frame") is not None or frame_angle is not None):
+        raise _error(s, "lambda", "frame_or_lambda")
     gamma = s.quantity("gamma_min", "angle", positive=True)
     gamma_target = s.quantity("gamma", "angle", positive=True) if problem == "slider_crank" \
         else None
