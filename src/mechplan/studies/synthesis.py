@@ -327,10 +327,12 @@ class SynthesisStudy:
         results = self.result_lines(lang)
         if self.design.family:
             results = [say(self.design.choice, lang), *results]
+        from .synthesis_table import condition_rows
+
         return synthesis_sheets(self.design, self.protocol_lines(lang), results,
                                 self.title(lang), size or self.spec.sheet,
                                 standard or self.spec.standard, lang, name,
-                                dict(self.spec.title_block))
+                                dict(self.spec.title_block), condition_rows(self, lang))
 
     def write_files(self, out_dir: str | Path, name: str) -> list[Path]:
         """Write the produced mechanism scene, ``<name>-mechanism.toml``."""
