@@ -6,13 +6,12 @@ from __future__ import annotations
 import math
 
 import pytest
+from scenes import ROOT
 
 from mechplan.drafting.primitives import Table, Text
 from mechplan.i18n import message
 from mechplan.studies import solve_file
 from mechplan.studies.synthesis_table import condition_rows
-
-from scenes import ROOT
 
 
 def study(name: str):
