@@ -133,3 +133,36 @@ def test_path_report_json_and_scene_in_every_language():
     assert "BE" in j["scene"]["links"]["2"]["lengths"]
     s2 = solve_text(s.scene_text(), "m.toml")
     assert not isinstance(s2, SynthesisStudy)
+
+
+@pytest.mark.parametrize("name, lang", [("synth_path", "vi"), ("synth_central_rocker", "zh")])
+def test_produced_scene_sheet_checks_clean(tmp_path, name, lang):
+    """The produced scene (the path generator with its coupler point E, the central crank-rocker)
+    is loaded, drawn, and mechplan's checker finds its own plans 0 wrong, 0 missing."""
+    from scenes import ROOT
+
+    from mechplan.check import Options, check
+    from mechplan.check.report import MISSING, WRONG
+    from mechplan.errors import CheckError
+    from mechplan.render.dxf import to_bytes
+    from mechplan.scene import load_scene
+    from mechplan.sheet.compose import compose
+    from mechplan.solve import solve
+    from mechplan.studies import solve_file
+
+    s = solve_file(ROOT / "templates" / f"{name}.toml")
+    [path] = s.write_files(tmp_path, "pg")
+    sc = load_scene(path)
+    comp = compose(solve(sc), "A1", "iso", lang, name="pg")
+    checked = 0
+    for i, sheet in enumerate(comp.sheets):
+        dxf = tmp_path / f"pg-{i}.dxf"
+        dxf.write_bytes(to_bytes(sheet))
+        try:
+            report = check(sc, dxf, Options())
+        except CheckError:
+            continue
+        for p in report.plans:
+            checked += 1
+            assert not [x.name for x in p.segments if x.verdict in (WRONG, MISSING)], p.name
+    assert checked
