@@ -1,0 +1,417 @@
+"""Grade a student's instant centres: the centres labelled on a drawing (their places on paper)
+and the rows of a table (``I13 = (x, y) mm``, ``I13x``, ``I13y``, the distance ``I13A``).
+
+The exact centres come from Kennedy's construction (:mod:`mechplan.construct.plans.centres`) at
+the sheet's position. A drawing's paper frame is that of a position plan graded on the sheet
+(its μl and the place of its points) or, for a drawing of its own (an instant-centre panel at
+its own scale), the uniform scale and shift that put the labelled pins — the primary centres of
+the revolute pairs — best on their exact places; the frame whose pins fit best is used. A wrong
+centre's hint names the two lines of its Kennedy construction and how far it is off each (lines
+drawn through the student's own centres, so a centre right from wrong neighbours is carried).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..construct.ops import centres as H
+from ..construct.plans.centres import Centre, Centres, centres_at, label, ordered
+from ..model.mechanism import PairKind
+from ..model.plans import Plan
+from ..submission.centre_marks import CentreMark, CentreName
+from ..submission.read import Entry
+from .report import CARRIED, MISSING, NEW, OK, SWAPPED, WRONG, CentreRow, CheckReport, Finding
+from .texts import T
+
+#: how far an arrow toward a far centre may point off it (degrees)
+ARROW_DEG = 3.0
+
+
+@dataclass
+class _Frame:
+    """paper = shift + world / mu."""
+
+    mu: float
+    shift: np.ndarray
+    source: object
+
+    def paper(self, r: np.ndarray) -> np.ndarray:
+        return self.shift + np.asarray(r) / self.mu
+
+
+def grade_centres(ctx, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
+                  marks: Sequence[CentreMark], entries: Sequence[tuple[CentreName, Entry]]
+                  ) -> None:
+    """Grade the drawn and written centres at position k into ``report.centres``."""
+    if not marks and not entries:
+        return
+    cs = centres_at(ctx.c, ctx.ev, ctx.scene.mechanism)
+    drawn = [m for m in marks if m.at is not None]
+    if drawn:
+        # a drawing of the centres is graded at the position it fits best (a sheet may hold
+        # plans of several positions; the panel of centres is drawn at one)
+        tries = []
+        for kk in ([k] if ctx.ev.n == 1 or ctx.options.at_deg is not None else range(ctx.ev.n)):
+            trial = CheckReport(report.scene, report.submission, report.kind, report.phi_deg, "",
+                                plans=report.plans)
+            _grade_drawn(ctx, cs, kk, trial, drawn)
+            tries.append((_score(trial), kk, trial))
+        _, kk, best = min(tries, key=lambda t: t[:2])
+        report.centres, report.centres_mu = best.centres, best.centres_mu
+        report.centres_frame = best.centres_frame
+        report.findings += best.findings
+        report.notes += best.notes
+        if kk != k:
+            from ..solve import shown_coordinate
+
+            report.centres_phi = round(shown_coordinate(ctx.scene, float(ctx.ev.phi[kk])), 10)
+    if entries:
+        _grade_table(ctx, cs, k, report, entries)
+
+
+def _score(r: CheckReport) -> tuple[int, float]:
+    """Fewer wrong and missing centres first, then the smaller sum of errors."""
+    bad = sum(c.verdict in (WRONG, MISSING) for c in r.centres)
+    return bad, sum(min(c.error, 1e6) for c in r.centres if c.error is not None
+                    and math.isfinite(c.error))
+
+
+# -- drawn centres -------------------------------------------------------------------------------
+def _exact(cs: Centres, ctr: Centre, k: int) -> tuple[np.ndarray | None, np.ndarray | None]:
+    """(point m, None) for a finite centre, (None, direction) at infinity, (None, None) if
+    indeterminate."""
+    h = cs.values[(ctr.i, ctr.j)].h[k:k + 1]
+    if not np.all(np.isfinite(h)):
+        return None, None
+    if H.is_infinite(h)[0]:
+        return None, H.direction(h)[0]
+    return H.point(h, cs.length)[0], None
+
+
+def _frames(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
+            pins: dict[tuple[str, str], list[np.ndarray]]) -> list[_Frame]:
+    out: list[_Frame] = []
+    for pr in report.plans:
+        if pr.plan != Plan.POSITION.value or not pr.mu:
+            continue
+        steps = {lbl: sid for key, m in ctx.book.plans.items() if key[0] is Plan.POSITION
+                 for sid, lbl in m.items()}
+        for lbl, at in pr.exact_mm.items():
+            if lbl in steps:
+                r = np.asarray(ctx.ev[steps[lbl]][k], dtype=float)
+                out.append(_Frame(pr.mu, np.asarray(at) - r / pr.mu, pr.name))
+                break
+    world, paper = [], []
+    for key, ats in pins.items():
+        r, _ = _exact(cs, cs.diagram.centre(*key), k)
+        if r is not None:
+            world.append(r)
+            paper.append(ats[0])
+    if len({(round(p[0], 3), round(p[1], 3)) for p in paper}) >= 2:
+        w, p = np.array(world), np.array(paper)
+        wc, pc = w - w.mean(axis=0), p - p.mean(axis=0)
+        s = float(np.sum(wc * pc)) / float(np.sum(wc * wc)) if np.sum(wc * wc) > 0 else 0.0
+        if s > 0:
+            out.append(_Frame(1.0 / s, p.mean(axis=0) - s * w.mean(axis=0), "pins"))
+    return out
+
+
+def _grade_drawn(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
+                 marks: list[CentreMark]) -> None:
+    links = cs.diagram.links
+    by_key: dict[tuple[str, str], list[CentreMark]] = {}
+    for m in marks:
+        if m.name.rest or m.name.i not in links or m.name.j not in links:
+            continue
+        by_key.setdefault(ordered(links, m.name.i, m.name.j), []).append(m)
+    if not by_key:
+        return
+    pins = {key: [np.asarray(m.at) for m in ms if m.direction is None]
+            for key, ms in by_key.items()
+            if (ctr := _find(cs, key)) is not None and ctr.pair is not None
+            and ctr.pair.kind is PairKind.REVOLUTE}
+    pins = {key: v for key, v in pins.items() if v}
+    frames = _frames(ctx, cs, k, report, pins)
+    if not frames:
+        report.notes.append(_note("centres.no_frame"))
+        return
+    frame = min(frames, key=lambda f: _fit(cs, k, f, pins))
+    tol = ctx.options.tol(Plan.POSITION)
+    pivot = np.mean([v[0] for v in pins.values()], axis=0) if pins else frame.shift
+    rows: dict[tuple[str, str], CentreRow] = {}
+    chosen: dict[tuple[str, str], CentreMark] = {}
+    for key, ms in by_key.items():
+        ctr = _find(cs, key)
+        if ctr is None:
+            continue
+        best = min(ms, key=lambda m: _error(cs, ctr, k, frame, m, tol, pivot)[0])
+        chosen[key] = best
+        err, allowed, exact_mm, how = _error(cs, ctr, k, frame, best, tol, pivot)
+        row = CentreRow(label(ctr), best.written, exact_mm, best.at, err, allowed,
+                        OK if err <= allowed else WRONG, found=how, where=best.where)
+        rows[key] = row
+    _swaps(cs, k, frame, tol, pivot, chosen, rows)
+    for key, row in rows.items():
+        if row.verdict == WRONG and row.cause != SWAPPED:
+            _why(cs, _find(cs, key), k, frame, chosen, rows, row)
+    for ctr in cs.diagram.centres:
+        key = (ctr.i, ctr.j)
+        if key not in rows and _exact(cs, ctr, k) != (None, None):
+            rows[key] = CentreRow(label(ctr), "", None, None, None, None, MISSING,
+                                  hint=T("centres.missing_hint"))
+    order = {(c.i, c.j): c.order for c in cs.diagram.centres}
+    report.centres.extend(rows[key] for key in sorted(rows, key=lambda x: order.get(x, 99)))
+    report.centres_mu = frame.mu
+    report.centres_frame = T("centres.frame_pins") if frame.source == "pins" else \
+        T("centres.frame_plan", plan=frame.source)
+    for key, row in rows.items():
+        if row.verdict == WRONG and row.cause in (NEW, SWAPPED):
+            report.findings.append(Finding("wrong centre", T("centres.plan"), row.label,
+                                           row.hint, error=""))
+
+
+def _find(cs: Centres, key: tuple[str, str]) -> Centre | None:
+    try:
+        return cs.diagram.centre(*key)
+    except KeyError:
+        return None
+
+
+def _fit(cs: Centres, k: int, f: _Frame, pins: dict[tuple[str, str], list[np.ndarray]]) -> float:
+    errs = []
+    for key, ats in pins.items():
+        r, _ = _exact(cs, cs.diagram.centre(*key), k)
+        if r is not None:
+            errs.append(min(float(np.hypot(*(f.paper(r) - a))) for a in ats))
+    return float(np.median(errs)) if errs else math.inf
+
+
+def _error(cs: Centres, ctr: Centre, k: int, f: _Frame, m: CentreMark, tol,  # type: ignore
+           pivot: np.ndarray) -> tuple[float, float, tuple[float, float] | None, str]:
+    """(error, allowed, exact place on paper, how it was read): mm for a point, degrees for an
+    arrow."""
+    r, u = _exact(cs, ctr, k)
+    at = np.asarray(m.at, dtype=float)
+    if r is None and u is None:
+        return 0.0, 0.0, None, "indeterminate"
+    if r is not None:
+        p = f.paper(r)
+        exact = (float(p[0]), float(p[1]))
+        if m.direction is not None and not m.infinite:
+            to = p - at
+            ang = _angle(np.asarray(m.direction), to, signed=True)
+            return ang, ARROW_DEG, exact, "arrow"
+        if m.infinite:
+            return math.inf, 0.0, exact, "infinity"
+        return float(np.hypot(*(p - at))), tol.allowed_mm(float(np.hypot(*(p - pivot)))), \
+            exact, "point"
+    if m.infinite or m.direction is not None:
+        if m.direction is None:
+            return 0.0, ARROW_DEG, None, "infinity"
+        return _angle(np.asarray(m.direction), u, signed=False), ARROW_DEG, None, "infinity"
+    return math.inf, 0.0, None, "point"
+
+
+def _angle(a: np.ndarray, b: np.ndarray, signed: bool) -> float:
+    nb = float(np.hypot(*b))
+    if not nb > 0:
+        return 0.0
+    c = float(np.clip(np.dot(a, b) / (np.hypot(*a) * nb), -1.0, 1.0))
+    ang = math.degrees(math.acos(c))
+    return ang if signed else min(ang, 180.0 - ang)
+
+
+def _swaps(cs, k, frame, tol, pivot, chosen, rows) -> None:  # type: ignore[no-untyped-def]
+    wrong = [key for key, r in rows.items() if r.verdict == WRONG and chosen[key].direction is None]
+    for n, a in enumerate(wrong):
+        for b in wrong[n + 1:]:
+            if rows[a].cause == SWAPPED or rows[b].cause == SWAPPED:
+                continue
+            ea = _error(cs, _find(cs, b), k, frame, chosen[a], tol, pivot)
+            eb = _error(cs, _find(cs, a), k, frame, chosen[b], tol, pivot)
+            if ea[0] <= ea[1] and eb[0] <= eb[1]:
+                for x, y in ((a, b), (b, a)):
+                    rows[x].cause = SWAPPED
+                    rows[x].hint = T("centres.swapped", a=rows[x].label, b=rows[y].label)
+
+
+def _why(cs: Centres, ctr: Centre, k: int, frame: _Frame,  # type: ignore[no-untyped-def]
+         chosen: dict[tuple[str, str], CentreMark], rows, row: CentreRow) -> None:
+    """The hint of a wrong centre: its pair, or the two lines of its Kennedy construction and how
+    far the drawn centre is off each; carried when it lies on the lines through the student's
+    own (wrong) centres."""
+    row.cause = NEW
+    r, _u = _exact(cs, ctr, k)
+    if ctr.pair is not None:
+        pair = ctr.pair
+        if pair.kind is PairKind.PRISMATIC:
+            row.hint = T("centres.hint_prismatic", centre=row.label, a=pair.a, b=pair.b)
+        else:
+            row.hint = T("centres.hint_pin", centre=row.label, point=pair.point)
+        return
+    if r is None:
+        row.hint = T("centres.hint_infinite", centre=row.label)
+        return
+    tri = cs.values[(ctr.i, ctr.j)].triangles[k]
+    lines, offs, own_ok = [], [], True
+    for t in tri:
+        kk = ctr.via[int(t)]
+        a, b = ordered(cs.diagram.links, ctr.i, kk), ordered(cs.diagram.links, ctr.j, kk)
+        lines.append(T("centres.line", a=label(a), b=label(b)))
+        pa, pb = (_paper_of(cs, x, k, frame, chosen) for x in (a, b))
+        off = _off_line(np.asarray(row.at_mm), pa, pb)
+        offs.append(off)
+        own_ok = own_ok and off is not None and off <= (row.tolerance or 0.0) and \
+            any(rows.get(x) is not None and rows[x].verdict == WRONG for x in (a, b))
+    offs_txt = ", ".join("?" if o is None else T("centres.off", d=o) for o in offs)
+    if own_ok and len(offs) == 2:
+        row.cause = CARRIED
+        row.hint = T("centres.hint_carried", centre=row.label, l1=lines[0], l2=lines[1])
+        return
+    row.hint = T("centres.hint_kennedy", centre=row.label, l1=lines[0] if lines else "",
+                 l2=lines[1] if len(lines) > 1 else "", offs=offs_txt)
+
+
+def _paper_of(cs: Centres, key: tuple[str, str], k: int, frame: _Frame,
+              chosen: dict[tuple[str, str], CentreMark]) -> tuple[np.ndarray, bool]:
+    """A centre on paper as the student drew it (else exact): (point or direction, finite)."""
+    m = chosen.get(key)
+    if m is not None and m.direction is None and not m.infinite and m.at is not None:
+        return np.asarray(m.at, dtype=float), True
+    r, u = _exact(cs, cs.diagram.centre(*key), k)
+    if r is not None:
+        return frame.paper(r), True
+    return (np.asarray(u) if u is not None else np.full(2, np.nan)), False
+
+
+def _off_line(p: np.ndarray, a: tuple[np.ndarray, bool], b: tuple[np.ndarray, bool]
+              ) -> float | None:
+    """Distance of p from the line through two centres (one may be a direction)."""
+    (pa, fa), (pb, fb) = a, b
+    if not fa and not fb:
+        return None
+    base, d = (pa, pb - pa) if fa and fb else ((pa, pb) if fa else (pb, pa))
+    n = float(np.hypot(*d))
+    if not n > 0 or not np.all(np.isfinite(d)):
+        return None
+    return abs(float(np.cross(d / n, p - base)))
+
+
+def _note(key: str, **args):  # type: ignore[no-untyped-def]
+    from ..submission.read import Note
+
+    return Note("warning", T(key, **args))
+
+
+# -- a table of centres ------------------------------------------------------------------------
+def _grade_table(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
+                 entries: Sequence[tuple[CentreName, Entry]]) -> None:
+    from .report import ValueRow
+
+    tol = ctx.options.tol(Plan.POSITION)
+    mu_l = ctx.scales.get(Plan.POSITION) or cs.length / 100.0
+    links = cs.diagram.links
+    mech_pts = {p for lk in ctx.scene.mechanism.links.values() for p in lk.points}
+    for name, e in entries:
+        ctr = _find(cs, ordered(links, name.i, name.j)) if name.i in links and \
+            name.j in links and name.i != name.j else None
+        text = e.value or e.text or e.length or ""
+        if ctr is None:
+            report.notes.append(_note("centres.unknown", name=e.name))
+            continue
+        r, _u = _exact(cs, ctr, k)
+        parts = _numbers(text)
+        rest = name.rest
+        wanted: list[tuple[str, float | None, float | None]] = []
+        if rest == "" and len(parts) == 2:
+            wanted = [("x", parts[0], None if r is None else r[0]),
+                      ("y", parts[1], None if r is None else r[1])]
+        elif rest.lower() in ("x", "y") and len(parts) == 1:
+            i = 0 if rest.lower() == "x" else 1
+            wanted = [(rest.lower(), parts[0], None if r is None else r[i])]
+        elif rest in mech_pts and len(parts) == 1 and ctx.c.has_position(rest):
+            at = np.asarray(ctx.ev[ctx.c.position(rest)][k], dtype=float)
+            wanted = [(rest, parts[0], None if r is None else float(np.hypot(*(r - at))))]
+        elif rest == "" and len(parts) == 0 and r is None and _inf_text(text):
+            report.values.append(ValueRow(e.name, label(ctr), "", None, None, verdict=OK,
+                                          where=e.where))
+            continue
+        else:
+            report.notes.append(_note("centres.unread", name=e.name, text=text))
+            continue
+        for what, got, exact in wanted:
+            row = ValueRow(e.name if len(wanted) == 1 else f"{e.name}.{what}", label(ctr), "m",
+                           got, exact, where=e.where)
+            if got is None:
+                continue
+            if exact is None:
+                row.verdict, row.cause = WRONG, NEW
+                row.hint = T("centres.hint_infinite", centre=label(ctr))
+            else:
+                row.tolerance = max(tol.pct / 100.0 * abs(exact), tol.mm * mu_l)
+                row.error_pct = 100.0 * (got - exact) / abs(exact) if exact else None
+                row.verdict = OK if abs(got - exact) <= row.tolerance else WRONG
+                if row.verdict == WRONG:
+                    row.cause = NEW
+                    row.hint = T("centres.hint_table", centre=label(ctr))
+            report.values.append(row)
+
+
+def _inf_text(text: str) -> bool:
+    from ..submission.centre_marks import says_infinity
+
+    return says_infinity(text)
+
+
+def _numbers(text: str) -> list[float]:
+    """The values of ``"(120.5, 80.2) mm"``, ``"120,5; 80,2 mm"``, ``"0.12 m"`` in metres (a bare
+    number is millimetres, as the sheet's table writes them)."""
+    t = text.strip().strip("()[]")
+    unit = "mm"
+    for u in ("mm", "cm", "m", "мм", "см", "м"):
+        if t.endswith(u):
+            unit, t = u, t[: -len(u)].strip().strip("()[]")
+            break
+    scale = {"mm": 1e-3, "мм": 1e-3, "cm": 1e-2, "см": 1e-2, "m": 1.0, "м": 1.0}[unit]
+    pieces = [p for p in (t.split(";") if ";" in t else _comma_split(t)) if p.strip()]
+    out = []
+    for p in pieces:
+        try:
+            out.append(float(p.strip().replace(",", ".").replace("−", "-")) * scale)
+        except ValueError:          # not a number: the row is reported unread
+            return []
+    return out
+
+
+def _comma_split(t: str) -> list[str]:
+    """"120.5, 80.2" → two numbers; "120,5" (a decimal comma) → one."""
+    if ", " in t or t.count(",") > 1:
+        return t.split(", ") if ", " in t else t.split(",")
+    return t.split()
+
+
+def centres_text(report: CheckReport, lang: str) -> list[str]:
+    """The text report's section of drawn centres."""
+    from ..i18n import message, num
+    from .report import verdict_text
+    from .texts import tr
+
+    out = [T("centres.title", frame=report.centres_frame).tr(lang)]
+    if report.centres_phi is not None:
+        out.append("   " + T("centres.at", phi=report.centres_phi).tr(lang))
+    if report.centres_mu:
+        out.append("   " + T("centres.mu", mu=report.centres_mu).tr(lang))
+    sym = message("centres.symbol", lang)
+    for c in report.centres:
+        name = sym + c.label[1:] if c.label.startswith("I") else c.label
+        err = "—" if c.error is None or not math.isfinite(c.error) else num(c.error, ".1f", lang)
+        unit = T("centres.deg" if c.found in ("arrow", "infinity") else "centres.mm").tr(lang)
+        out.append(f"   {name:<8}{c.written:<12}{err:>8} {unit:<4} "
+                   f"{verdict_text(c.verdict, c.cause, lang)}")
+        if c.verdict in (WRONG, MISSING) and c.hint:
+            out.append(f"        → {tr(c.hint, lang)}")
+    return out
