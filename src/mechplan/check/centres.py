@@ -75,6 +75,8 @@ def grade_centres(ctx, k: int, report: CheckReport,  # type: ignore[no-untyped-d
 
 def _score(r: CheckReport) -> tuple[int, float]:
     """Fewer wrong and missing centres first, then the smaller sum of errors."""
+    if not r.centres:                   # not placed at this position
+        return 10 ** 9, math.inf
     bad = sum(c.verdict in (WRONG, MISSING) for c in r.centres)
     return bad, sum(min(c.error, 1e6) for c in r.centres if c.error is not None
                     and math.isfinite(c.error))
@@ -95,8 +97,12 @@ def _exact(cs: Centres, ctr: Centre, k: int) -> tuple[np.ndarray | None, np.ndar
 def _frames(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
             pins: dict[tuple[str, str], list[np.ndarray]]) -> list[_Frame]:
     out: list[_Frame] = []
+    from ..solve import shown_coordinate
+
+    phi = shown_coordinate(ctx.scene, float(ctx.ev.phi[k]))
     for pr in report.plans:
-        if pr.plan != Plan.POSITION.value or not pr.mu:
+        at = pr.phi_deg if pr.phi_deg is not None else report.phi_deg
+        if pr.plan != Plan.POSITION.value or not pr.mu or abs(at - phi) > 1e-6:
             continue
         steps = {lbl: sid for key, m in ctx.book.plans.items() if key[0] is Plan.POSITION
                  for sid, lbl in m.items()}
@@ -111,13 +117,32 @@ def _frames(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-un
         if r is not None:
             world.append(r)
             paper.append(ats[0])
-    if len({(round(p[0], 3), round(p[1], 3)) for p in paper}) >= 2:
-        w, p = np.array(world), np.array(paper)
-        wc, pc = w - w.mean(axis=0), p - p.mean(axis=0)
-        s = float(np.sum(wc * pc)) / float(np.sum(wc * wc)) if np.sum(wc * wc) > 0 else 0.0
-        if s > 0:
-            out.append(_Frame(1.0 / s, p.mean(axis=0) - s * w.mean(axis=0), "pins"))
+    fit = _fit_pins(np.array(world).reshape(-1, 2), np.array(paper).reshape(-1, 2),
+                    ctx.options.tol(Plan.POSITION).mm)
+    if fit is not None:
+        out.append(fit)
     return out
+
+
+def _fit_pins(world: np.ndarray, paper: np.ndarray, tol: float) -> _Frame | None:
+    """The uniform scale and shift that put the pins on their drawn places (least squares); a
+    pin drawn or labelled wrong is left out (the worst first) while more than two remain."""
+    keep = np.ones(len(world), dtype=bool)
+    while True:
+        w, p = world[keep], paper[keep]
+        if len({(round(x, 3), round(y, 3)) for x, y in p}) < 2:
+            return None
+        wc, pc = w - w.mean(axis=0), p - p.mean(axis=0)
+        ww = float(np.sum(wc * wc))
+        s = float(np.sum(wc * pc)) / ww if ww > 0 else 0.0
+        if not s > 0:
+            return None
+        frame = _Frame(1.0 / s, p.mean(axis=0) - s * w.mean(axis=0), "pins")
+        res = np.hypot(*(frame.paper(world) - paper).T)
+        res[~keep] = -1.0
+        if keep.sum() <= 2 or res.max() <= tol:
+            return frame
+        keep[int(np.argmax(res))] = False
 
 
 def _grade_drawn(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
@@ -160,7 +185,7 @@ def _grade_drawn(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[
             _why(cs, _find(cs, key), k, frame, chosen, rows, row)
     for ctr in cs.diagram.centres:
         key = (ctr.i, ctr.j)
-        if key not in rows and _exact(cs, ctr, k) != (None, None):
+        if key not in rows and any(v is not None for v in _exact(cs, ctr, k)):
             rows[key] = CentreRow(label(ctr), "", None, None, None, None, MISSING,
                                   hint=T("centres.missing_hint"))
     order = {(c.i, c.j): c.order for c in cs.diagram.centres}
@@ -298,7 +323,8 @@ def _off_line(p: np.ndarray, a: tuple[np.ndarray, bool], b: tuple[np.ndarray, bo
     n = float(np.hypot(*d))
     if not n > 0 or not np.all(np.isfinite(d)):
         return None
-    return abs(float(np.cross(d / n, p - base)))
+    u, w = d / n, p - base
+    return abs(float(u[0] * w[1] - u[1] * w[0]))
 
 
 def _note(key: str, **args):  # type: ignore[no-untyped-def]
@@ -315,6 +341,9 @@ def _grade_table(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[
     tol = ctx.options.tol(Plan.POSITION)
     mu_l = ctx.scales.get(Plan.POSITION) or cs.length / 100.0
     links = cs.diagram.links
+    pins = [r for ctr in cs.diagram.centres if ctr.primary
+            and (r := _exact(cs, ctr, k)[0]) is not None]
+    middle = np.mean(pins, axis=0) if pins else np.zeros(2)
     mech_pts = {p for lk in ctx.scene.mechanism.links.values() for p in lk.points}
     for name, e in entries:
         ctr = _find(cs, ordered(links, name.i, name.j)) if name.i in links and \
@@ -352,13 +381,32 @@ def _grade_table(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[
                 row.verdict, row.cause = WRONG, NEW
                 row.hint = T("centres.hint_infinite", centre=label(ctr))
             else:
-                row.tolerance = max(tol.pct / 100.0 * abs(exact), tol.mm * mu_l)
+                # ±1 mm of paper at the scene's μl or 2 % of the centre's distance from the
+                # mechanism (a far centre is drawn with long lines), as on a drawing
+                far = float(np.hypot(*(r - middle))) if r is not None else 0.0
+                row.tolerance = max(tol.pct / 100.0 * far, tol.mm * mu_l)
                 row.error_pct = 100.0 * (got - exact) / abs(exact) if exact else None
                 row.verdict = OK if abs(got - exact) <= row.tolerance else WRONG
                 if row.verdict == WRONG:
                     row.cause = NEW
-                    row.hint = T("centres.hint_table", centre=label(ctr))
+                    row.hint = _rule(cs, ctr, k)
             report.values.append(row)
+
+
+def _rule(cs: Centres, ctr: Centre, k: int) -> object:
+    """Where a centre is by its rule: a pair's pin or direction, or the two lines of Kennedy's
+    theorem it lies on."""
+    name = label(ctr)
+    if ctr.pair is not None:
+        if ctr.pair.kind is PairKind.PRISMATIC:
+            return T("centres.hint_prismatic", centre=name, a=ctr.pair.a, b=ctr.pair.b)
+        return T("centres.hint_pin", centre=name, point=ctr.pair.point)
+    lines = []
+    for t in cs.values[(ctr.i, ctr.j)].triangles[k]:
+        kk = ctr.via[int(t)]
+        a, b = ordered(cs.diagram.links, ctr.i, kk), ordered(cs.diagram.links, ctr.j, kk)
+        lines.append(T("centres.line", a=label(a), b=label(b)))
+    return T("centres.hint_lines", centre=name, l1=lines[0], l2=lines[-1])
 
 
 def _inf_text(text: str) -> bool:

@@ -94,8 +94,9 @@ def centre_entries(entries: Sequence[Entry],
                    links: Sequence[str]) -> tuple[list[tuple[CentreName, Entry]], list[Entry]]:
     """The entries of a table that name centres, and the others."""
     found, rest = [], []
+    anyone = {*links, *"0123456789"}        # a centre of links the mechanism has not is reported
     for e in entries:
-        name = read_centre(e.name, links)
+        name = read_centre(e.name, links) or read_centre(e.name, sorted(anyone))
         (rest.append(e) if name is None else found.append((name, e)))
     return found, rest
 
