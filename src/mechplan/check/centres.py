@@ -25,7 +25,7 @@ from ..model.plans import Plan
 from ..submission.centre_marks import CentreMark, CentreName
 from ..submission.read import Entry
 from .report import CARRIED, MISSING, NEW, OK, SWAPPED, WRONG, CentreRow, CheckReport, Finding
-from .texts import T
+from .texts import T, join
 
 #: how far an arrow toward a far centre may point off it (degrees)
 ARROW_DEG = 3.0
@@ -292,7 +292,7 @@ def _why(cs: Centres, ctr: Centre, k: int, frame: _Frame,  # type: ignore[no-unt
         offs.append(off)
         own_ok = own_ok and off is not None and off <= (row.tolerance or 0.0) and \
             any(rows.get(x) is not None and rows[x].verdict == WRONG for x in (a, b))
-    offs_txt = ", ".join("?" if o is None else T("centres.off", d=o) for o in offs)
+    offs_txt = join(["?" if o is None else T("centres.off", d=o) for o in offs])
     if own_ok and len(offs) == 2:
         row.cause = CARRIED
         row.hint = T("centres.hint_carried", centre=row.label, l1=lines[0], l2=lines[1])
