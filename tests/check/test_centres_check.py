@@ -13,6 +13,7 @@ import numpy as np
 import pytest
 
 from mechplan.check import Options, check
+from mechplan.check.overlay import marks
 from mechplan.check.report import MISSING, NEW, OK, SWAPPED, WRONG
 from mechplan.render.dxf import to_bytes
 from mechplan.scene import load_scene
@@ -117,6 +118,9 @@ def test_a_centre_moved_5_mm_is_wrong_by_5_mm_with_its_kennedy_lines(four_bar_pa
     assert any(f.subject == "I13" for f in report.findings)
     for lang in ("en", "ru", "vi", "zh"):
         assert "I12–I23" in report.text(lang)
+    # the overlay draws the error from the drawn centre to the exact one
+    errors = [m for m in marks(report) if m.layer == "ERRORS" and m.end is not None]
+    assert any(m.start == rows["I13"].at_mm and m.end == rows["I13"].exact_mm for m in errors)
 
 
 def test_two_exchanged_centre_labels_are_found_as_swapped(four_bar_panel, tmp_path):
@@ -218,3 +222,39 @@ def test_a_centre_at_infinity_in_a_table_is_accepted_and_a_number_is_not(tmp_pat
     rows = {v.name: v for v in report.values}
     assert rows["P03"].verdict == OK
     assert rows["I23x"].verdict == WRONG
+
+
+def test_a_centre_at_infinity_is_graded_by_its_arrow_or_accepted_as_written(tmp_path):
+    """The slider-crank's I03 (the slider's guide, ⊥ at infinity): right with the panel's arrow,
+    wrong with an arrow turned 45°, and accepted written "I03 ∞" with no arrow."""
+    scene = load_scene(f"{TEMPLATES}/slider_crank.toml")
+    comp = compose(solve(scene), "A3", "iso", "en", name="slider_crank")
+    i = next(n for n, pl in enumerate(comp.placements) if any(p.name == "centres" for p, _ in pl))
+    path = tmp_path / "panel.dxf"
+    path.write_bytes(to_bytes(comp.sheets[i]))
+    rows = {c.label: c for c in check(scene, path, Options()).centres}
+    assert rows["I03"].verdict == OK and rows["I03"].found == "infinity"
+
+    doc = ezdxf.readfile(path)
+    msp = doc.modelspace()
+    text = next(e for e in msp.query("TEXT") if "∞" in e.dxf.text and "I03" in e.dxf.text)
+    at = _xy(text.dxf.insert)
+    heads = [e for e in msp.query("SOLID") if math.dist(_xy(e.dxf.vtx0), at) < 12.0]
+    assert heads
+    tip = _xy(heads[0].dxf.vtx0)
+    for h in heads:                      # turn the head 45° about its tip
+        for v in ("vtx0", "vtx1", "vtx2", "vtx3"):
+            if h.dxf.hasattr(v):
+                d = _xy(h.dxf.get(v)) - tip
+                c, s = math.cos(math.pi / 4), math.sin(math.pi / 4)
+                h.dxf.set(v, (tip[0] + c * d[0] - s * d[1], tip[1] + s * d[0] + c * d[1]))
+    doc.saveas(tmp_path / "turned.dxf")
+    rows = {c.label: c for c in check(scene, tmp_path / "turned.dxf", Options()).centres}
+    assert rows["I03"].verdict == WRONG and rows["I03"].error == pytest.approx(45.0, abs=1.0)
+
+    for h in heads:
+        msp.delete_entity(h)
+    text.dxf.text = "I03 ∞"
+    doc.saveas(tmp_path / "no_arrow.dxf")
+    rows = {c.label: c for c in check(scene, tmp_path / "no_arrow.dxf", Options()).centres}
+    assert rows["I03"].verdict == OK

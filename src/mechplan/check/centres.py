@@ -23,9 +23,21 @@ from ..construct.plans.centres import Centre, Centres, centres_at, label, ordere
 from ..model.mechanism import PairKind
 from ..model.plans import Plan
 from ..submission.centre_marks import CentreMark, CentreName
-from ..submission.read import Entry
-from .report import CARRIED, MISSING, NEW, OK, SWAPPED, WRONG, CentreRow, CheckReport, Finding
-from .texts import T, join
+from ..submission.read import Entry, Note
+from .context import Ctx
+from .report import (
+    CARRIED,
+    MISSING,
+    NEW,
+    OK,
+    SWAPPED,
+    WRONG,
+    CentreRow,
+    CheckReport,
+    Finding,
+    Tolerance,
+)
+from .texts import T, Text, join
 
 #: how far an arrow toward a far centre may point off it (degrees)
 ARROW_DEG = 3.0
@@ -43,14 +55,14 @@ class _Frame:
         return self.shift + np.asarray(r) / self.mu
 
 
-def grade_centres(ctx, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
+def grade_centres(ctx: Ctx, k: int, report: CheckReport,
                   marks: Sequence[CentreMark], entries: Sequence[tuple[CentreName, Entry]]
                   ) -> None:
     """Grade the drawn and written centres at position k into ``report.centres``."""
     if not marks and not entries:
         return
     cs = centres_at(ctx.c, ctx.ev, ctx.scene.mechanism)
-    drawn = [m for m in marks if m.at is not None]
+    drawn = [m for m in marks if m.at is not None or m.infinite]   # "I23 ∞" needs no arrow
     if drawn:
         # a drawing of the centres is graded at the position it fits best (a sheet may hold
         # plans of several positions; the panel of centres is drawn at one)
@@ -94,7 +106,7 @@ def _exact(cs: Centres, ctr: Centre, k: int) -> tuple[np.ndarray | None, np.ndar
     return H.point(h, cs.length)[0], None
 
 
-def _frames(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
+def _frames(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
             pins: dict[tuple[str, str], list[np.ndarray]]) -> list[_Frame]:
     out: list[_Frame] = []
     from ..solve import shown_coordinate
@@ -106,10 +118,10 @@ def _frames(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-un
             continue
         steps = {lbl: sid for key, m in ctx.book.plans.items() if key[0] is Plan.POSITION
                  for sid, lbl in m.items()}
-        for lbl, at in pr.exact_mm.items():
+        for lbl, place in pr.exact_mm.items():
             if lbl in steps:
-                r = np.asarray(ctx.ev[steps[lbl]][k], dtype=float)
-                out.append(_Frame(pr.mu, np.asarray(at) - r / pr.mu, pr.name))
+                world_at = np.asarray(ctx.ev[steps[lbl]][k], dtype=float)
+                out.append(_Frame(pr.mu, np.asarray(place) - world_at / pr.mu, pr.name))
                 break
     world, paper = [], []
     for key, ats in pins.items():
@@ -145,7 +157,7 @@ def _fit_pins(world: np.ndarray, paper: np.ndarray, tol: float) -> _Frame | None
         keep[int(np.argmax(res))] = False
 
 
-def _grade_drawn(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
+def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
                  marks: list[CentreMark]) -> None:
     links = cs.diagram.links
     by_key: dict[tuple[str, str], list[CentreMark]] = {}
@@ -155,7 +167,8 @@ def _grade_drawn(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[
         by_key.setdefault(ordered(links, m.name.i, m.name.j), []).append(m)
     if not by_key:
         return
-    pins = {key: [np.asarray(m.at) for m in ms if m.direction is None]
+    pins = {key: [np.asarray(m.at) for m in ms
+                  if m.direction is None and not m.infinite and m.at is not None]
             for key, ms in by_key.items()
             if (ctr := _find(cs, key)) is not None and ctr.pair is not None
             and ctr.pair.kind is PairKind.REVOLUTE}
@@ -173,7 +186,7 @@ def _grade_drawn(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[
         ctr = _find(cs, key)
         if ctr is None:
             continue
-        best = min(ms, key=lambda m: _error(cs, ctr, k, frame, m, tol, pivot)[0])
+        best = ms[int(np.argmin([_error(cs, ctr, k, frame, m, tol, pivot)[0] for m in ms]))]
         chosen[key] = best
         err, allowed, exact_mm, how = _error(cs, ctr, k, frame, best, tol, pivot)
         row = CentreRow(label(ctr), best.written, exact_mm, best.at, err, allowed,
@@ -182,7 +195,7 @@ def _grade_drawn(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[
     _swaps(cs, k, frame, tol, pivot, chosen, rows)
     for key, row in rows.items():
         if row.verdict == WRONG and row.cause != SWAPPED:
-            _why(cs, _find(cs, key), k, frame, chosen, rows, row)
+            _why(cs, cs.diagram.centre(*key), k, frame, chosen, rows, row)
     for ctr in cs.diagram.centres:
         key = (ctr.i, ctr.j)
         if key not in rows and any(v is not None for v in _exact(cs, ctr, k)):
@@ -215,12 +228,12 @@ def _fit(cs: Centres, k: int, f: _Frame, pins: dict[tuple[str, str], list[np.nda
     return float(np.median(errs)) if errs else math.inf
 
 
-def _error(cs: Centres, ctr: Centre, k: int, f: _Frame, m: CentreMark, tol,  # type: ignore
+def _error(cs: Centres, ctr: Centre, k: int, f: _Frame, m: CentreMark, tol: Tolerance,
            pivot: np.ndarray) -> tuple[float, float, tuple[float, float] | None, str]:
     """(error, allowed, exact place on paper, how it was read): mm for a point, degrees for an
     arrow."""
     r, u = _exact(cs, ctr, k)
-    at = np.asarray(m.at, dtype=float)
+    at = np.asarray(m.at if m.at is not None else (math.nan, math.nan), dtype=float)
     if r is None and u is None:
         return 0.0, 0.0, None, "indeterminate"
     if r is not None:
@@ -234,6 +247,8 @@ def _error(cs: Centres, ctr: Centre, k: int, f: _Frame, m: CentreMark, tol,  # t
             return math.inf, 0.0, exact, "infinity"
         return float(np.hypot(*(p - at))), tol.allowed_mm(float(np.hypot(*(p - pivot)))), \
             exact, "point"
+    if u is None:
+        return 0.0, 0.0, None, "indeterminate"
     if m.infinite or m.direction is not None:
         if m.direction is None:
             return 0.0, ARROW_DEG, None, "infinity"
@@ -250,22 +265,25 @@ def _angle(a: np.ndarray, b: np.ndarray, signed: bool) -> float:
     return ang if signed else min(ang, 180.0 - ang)
 
 
-def _swaps(cs, k, frame, tol, pivot, chosen, rows) -> None:  # type: ignore[no-untyped-def]
+def _swaps(cs: Centres, k: int, frame: _Frame, tol: Tolerance, pivot: np.ndarray,
+           chosen: dict[tuple[str, str], CentreMark],
+           rows: dict[tuple[str, str], CentreRow]) -> None:
     wrong = [key for key, r in rows.items() if r.verdict == WRONG and chosen[key].direction is None]
     for n, a in enumerate(wrong):
         for b in wrong[n + 1:]:
             if rows[a].cause == SWAPPED or rows[b].cause == SWAPPED:
                 continue
-            ea = _error(cs, _find(cs, b), k, frame, chosen[a], tol, pivot)
-            eb = _error(cs, _find(cs, a), k, frame, chosen[b], tol, pivot)
+            ea = _error(cs, cs.diagram.centre(*b), k, frame, chosen[a], tol, pivot)
+            eb = _error(cs, cs.diagram.centre(*a), k, frame, chosen[b], tol, pivot)
             if ea[0] <= ea[1] and eb[0] <= eb[1]:
                 for x, y in ((a, b), (b, a)):
                     rows[x].cause = SWAPPED
                     rows[x].hint = T("centres.swapped", a=rows[x].label, b=rows[y].label)
 
 
-def _why(cs: Centres, ctr: Centre, k: int, frame: _Frame,  # type: ignore[no-untyped-def]
-         chosen: dict[tuple[str, str], CentreMark], rows, row: CentreRow) -> None:
+def _why(cs: Centres, ctr: Centre, k: int, frame: _Frame,
+         chosen: dict[tuple[str, str], CentreMark], rows: dict[tuple[str, str], CentreRow],
+         row: CentreRow) -> None:
     """The hint of a wrong centre: its pair, or the two lines of its Kennedy construction and how
     far the drawn centre is off each; carried when it lies on the lines through the student's
     own (wrong) centres."""
@@ -280,6 +298,9 @@ def _why(cs: Centres, ctr: Centre, k: int, frame: _Frame,  # type: ignore[no-unt
         return
     if r is None:
         row.hint = T("centres.hint_infinite", centre=row.label)
+        return
+    if row.at_mm is None:               # written "∞" for a finite centre
+        row.hint = _rule(cs, ctr, k)
         return
     tri = cs.values[(ctr.i, ctr.j)].triangles[k]
     lines, offs, own_ok = [], [], True
@@ -327,14 +348,12 @@ def _off_line(p: np.ndarray, a: tuple[np.ndarray, bool], b: tuple[np.ndarray, bo
     return abs(float(u[0] * w[1] - u[1] * w[0]))
 
 
-def _note(key: str, **args):  # type: ignore[no-untyped-def]
-    from ..submission.read import Note
-
+def _note(key: str, **args: object) -> Note:
     return Note("warning", T(key, **args))
 
 
 # -- a table of centres ------------------------------------------------------------------------
-def _grade_table(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[no-untyped-def]
+def _grade_table(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
                  entries: Sequence[tuple[CentreName, Entry]]) -> None:
     from .report import ValueRow
 
@@ -393,7 +412,7 @@ def _grade_table(ctx, cs: Centres, k: int, report: CheckReport,  # type: ignore[
             report.values.append(row)
 
 
-def _rule(cs: Centres, ctr: Centre, k: int) -> object:
+def _rule(cs: Centres, ctr: Centre, k: int) -> Text:
     """Where a centre is by its rule: a pair's pin or direction, or the two lines of Kennedy's
     theorem it lies on."""
     name = label(ctr)
