@@ -258,3 +258,34 @@ def test_a_centre_at_infinity_is_graded_by_its_arrow_or_accepted_as_written(tmp_
     doc.saveas(tmp_path / "no_arrow.dxf")
     rows = {c.label: c for c in check(scene, tmp_path / "no_arrow.dxf", Options()).centres}
     assert rows["I03"].verdict == OK
+
+
+def test_the_table_of_centres_drawn_on_a_sheet_is_read_and_graded(tmp_path):
+    """mechplan's table of centres (name, x, y mm; or ∞ and the direction) is read back: every
+    row right on the own sheet, a number changed by 20 mm wrong."""
+    scene = load_scene(f"{TEMPLATES}/four_bar.toml")
+    comp = compose(solve(scene), "A3", "iso", "ru", name="four_bar")
+    i = next(n for n, pl in enumerate(comp.placements)
+             if any(x.name == "centres-table" for x, _ in pl))
+    path = tmp_path / "table.dxf"
+    path.write_bytes(to_bytes(comp.sheets[i]))
+    rows = [v for v in check(scene, path, Options()).values if v.quantity.startswith("I")]
+    assert len(rows) == 12 and all(v.verdict == OK for v in rows)
+    doc = ezdxf.readfile(path)
+    msp = doc.modelspace()
+    name = next(t for t in msp.query("TEXT") if t.dxf.text == "P13"
+                and any(abs(_xy(c.dxf.insert)[1] - _xy(t.dxf.insert)[1]) < 1.0
+                        and _xy(c.dxf.insert)[0] > _xy(t.dxf.insert)[0] for c in msp.query("TEXT")
+                        if c.dxf.text.replace(",", "").replace("-", "").isdigit()))
+    y = _xy(name.dxf.insert)[1]
+    x_cell = min((c for c in msp.query("TEXT") if abs(_xy(c.dxf.insert)[1] - y) < 1.0
+                  and _xy(c.dxf.insert)[0] > _xy(name.dxf.insert)[0]),
+                 key=lambda c: _xy(c.dxf.insert)[0])
+    x_mm = float(x_cell.dxf.text.replace(",", ".").replace("−", "-"))
+    x_cell.dxf.text = f"{x_mm + 20.0:.1f}".replace(".", ",")
+    doc.saveas(tmp_path / "table_wrong.dxf")
+    report = check(scene, tmp_path / "table_wrong.dxf", Options())
+    rows = {v.name: v for v in report.values if v.quantity.startswith("I")}
+    assert rows["P13.x"].verdict == WRONG and rows["P13.y"].verdict == OK
+    assert rows["P13.x"].submitted - rows["P13.x"].exact == pytest.approx(0.020, abs=1e-4)
+    assert "I01–I03" in rows["P13.x"].hint

@@ -13,6 +13,7 @@ drawn through the student's own centres, so a centre right from wrong neighbours
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
@@ -36,6 +37,7 @@ from .report import (
     CheckReport,
     Finding,
     Tolerance,
+    ValueRow,
 )
 from .texts import T, Text, join
 
@@ -63,11 +65,12 @@ def grade_centres(ctx: Ctx, k: int, report: CheckReport,
         return
     cs = centres_at(ctx.c, ctx.ev, ctx.scene.mechanism)
     drawn = [m for m in marks if m.at is not None or m.infinite]   # "I23 ∞" needs no arrow
+    ks = [k] if ctx.ev.n == 1 or ctx.options.at_deg is not None else list(range(ctx.ev.n))
     if drawn:
         # a drawing of the centres is graded at the position it fits best (a sheet may hold
         # plans of several positions; the panel of centres is drawn at one)
         tries = []
-        for kk in ([k] if ctx.ev.n == 1 or ctx.options.at_deg is not None else range(ctx.ev.n)):
+        for kk in ks:
             trial = CheckReport(report.scene, report.submission, report.kind, report.phi_deg, "",
                                 plans=report.plans)
             _grade_drawn(ctx, cs, kk, trial, drawn)
@@ -81,8 +84,18 @@ def grade_centres(ctx: Ctx, k: int, report: CheckReport,
             from ..solve import shown_coordinate
 
             report.centres_phi = round(shown_coordinate(ctx.scene, float(ctx.ev.phi[kk])), 10)
+        ks = [kk]                       # a table beside the drawing is of the same position
     if entries:
-        _grade_table(ctx, cs, k, report, entries)
+        # a table of a sheet with plans of several positions: the position it fits best
+        trials = []
+        for kk in ks:
+            trial = CheckReport(report.scene, report.submission, report.kind, report.phi_deg, "")
+            _grade_table(ctx, cs, kk, trial, entries)
+            wrong = sum(v.verdict == WRONG for v in trial.values)
+            trials.append((wrong, 0 if kk == k else 1, kk, trial))
+        *_, best_table = min(trials, key=lambda t: t[:3])
+        report.values += best_table.values
+        report.notes += best_table.notes
 
 
 def _score(r: CheckReport) -> tuple[int, float]:
@@ -355,8 +368,6 @@ def _note(key: str, **args: object) -> Note:
 # -- a table of centres ------------------------------------------------------------------------
 def _grade_table(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
                  entries: Sequence[tuple[CentreName, Entry]]) -> None:
-    from .report import ValueRow
-
     tol = ctx.options.tol(Plan.POSITION)
     mu_l = ctx.scales.get(Plan.POSITION) or cs.length / 100.0
     links = cs.diagram.links
@@ -372,7 +383,7 @@ def _grade_table(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
             report.notes.append(_note("centres.unknown", name=e.name))
             continue
         r, _u = _exact(cs, ctr, k)
-        parts = _numbers(text)
+        parts = _numbers(text) if not _inf_text(text) else []
         rest = name.rest
         wanted: list[tuple[str, float | None, float | None]] = []
         if rest == "" and len(parts) == 2:
@@ -384,9 +395,8 @@ def _grade_table(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
         elif rest in mech_pts and len(parts) == 1 and ctx.c.has_position(rest):
             at = np.asarray(ctx.ev[ctx.c.position(rest)][k], dtype=float)
             wanted = [(rest, parts[0], None if r is None else float(np.hypot(*(r - at))))]
-        elif rest == "" and len(parts) == 0 and r is None and _inf_text(text):
-            report.values.append(ValueRow(e.name, label(ctr), "", None, None, verdict=OK,
-                                          where=e.where))
+        elif rest == "" and _inf_text(text) and len(parts) <= 1:
+            report.values.append(_infinite_row(e, ctr, r, _u, text))
             continue
         else:
             report.notes.append(_note("centres.unread", name=e.name, text=text))
@@ -410,6 +420,32 @@ def _grade_table(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
                     row.cause = NEW
                     row.hint = _rule(cs, ctr, k)
             report.values.append(row)
+
+
+def _infinite_row(e: Entry, ctr: Centre, r: np.ndarray | None, u: np.ndarray | None,
+                  text: str) -> ValueRow:
+    """A centre written "∞" (with its direction "∞ 90°" or not): right when it is at infinity
+    (and the direction is right either way, within 3°)."""
+    m = re.search(r"([+\-−]?\d+(?:[.,]\d+)?)\s*°", text)
+    angle = float(m.group(1).replace(",", ".").replace("−", "-")) if m else None
+    row = ValueRow(e.name, label(ctr), "deg" if angle is not None else "", angle, None,
+                   where=e.where)
+    if r is not None or u is None:
+        row.verdict, row.cause = WRONG, NEW
+        row.hint = T("centres.hint_finite", centre=label(ctr))
+        return row
+    exact = math.degrees(math.atan2(u[1], u[0])) % 180.0
+    if angle is None:
+        row.verdict = OK
+        return row
+    row.exact = exact if abs(exact - angle % 180.0) <= 90.0 else exact + 180.0
+    off = abs(math.remainder(angle - exact, 180.0))
+    row.tolerance = ARROW_DEG
+    row.verdict = OK if off <= ARROW_DEG else WRONG
+    if row.verdict == WRONG:
+        row.cause = NEW
+        row.hint = T("centres.hint_infinite_dir", centre=label(ctr), angle=exact)
+    return row
 
 
 def _rule(cs: Centres, ctr: Centre, k: int) -> Text:

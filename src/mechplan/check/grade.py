@@ -22,7 +22,7 @@ from ..errors import CheckError, MechplanError
 from ..geom.sketch import nearest
 from ..model.plans import Plan
 from ..scene.spec import Scene
-from ..submission.centre_marks import centre_entries, find_centre_marks
+from ..submission.centre_marks import centre_entries, find_centre_marks, table_rows
 from ..submission.drawn_plans import DrawnPlan, DrawnSheet, find_plans
 from ..submission.labels import PlanKey, asks_for_forces
 from ..submission.read import Note, Submission, read_submission
@@ -89,22 +89,25 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
     links = ("0", *scene.mechanism.moving)
     marks = find_centre_marks(sub, links, options.label_distance, options.snap) \
         if sub.kind == "dxf" else []
+    drawn_table = table_rows(sub, links) if sub.kind == "dxf" else []   # a table of centres
     if sub.kind == "dxf":
         try:
             sheet = find_plans(sub, book, options.label_distance, options.snap,
                                mu_elsewhere=options.mu)
         except CheckError:
-            if not any(m.at is not None for m in marks):
+            if not drawn_table and not any(m.at is not None for m in marks):
                 raise
             sheet = DrawnSheet([], [], options.label_distance or 5.0, [])   # centres alone
         notes.extend(sheet.notes)
         centre_rows, other = centre_entries(sheet.other_entries, links)
+        centre_rows += drawn_table
         interp = interpret(other, qi, si, from_sheet=True)
     else:
         centre_rows, other = centre_entries(sub.entries, links)
         interp = interpret(other, qi, si, from_sheet=False)
     notes.extend(interp.notes)
-    if sheet is not None and not sheet.plans and not interp.values and not marks:
+    if sheet is not None and not sheet.plans and not interp.values and not marks and \
+            not centre_rows:
         why = "; ".join(str(n) for n in notes if n.level != "info")[:600]
         raise CheckError(T("error.no_plan", why=why or T("error.no_labelled_points")),
                          file=sub.path)

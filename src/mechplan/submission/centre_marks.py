@@ -101,6 +101,43 @@ def centre_entries(entries: Sequence[Entry],
     return found, rest
 
 
+#: a table row's cells stand on one line to the right of its name, within this many mm
+ROW_REACH_MM = 80.0
+_NUMBER = re.compile(r"^[+\-−]?\d+(?:[.,]\d+)?$")
+_ANGLE = re.compile(r"([+\-−]?\d+(?:[.,]\d+)?)\s*°")
+
+
+def table_rows(sub: Submission, links: Sequence[str]) -> list[tuple[CentreName, Entry]]:
+    """The rows of a table of centres drawn on a sheet (mechplan's own: name, x, y in mm of
+    the scene's frame, or name, ∞, direction °): a name whose row holds numbers to its right."""
+    out = []
+    for t, name, cells in _rows(sub, links):
+        if says_infinity(cells[0].text):
+            angle = next((m.group(1) for c in cells[1:] if (m := _ANGLE.search(c.text))), None)
+            text = "∞" + (f" {angle}°" if angle is not None else "")
+        else:
+            text = f"({cells[0].text.strip()}; {cells[1].text.strip()}) mm"
+        out.append((name, Entry(t.text.strip(), t.where, text=text, at=t.centre)))
+    return out
+
+
+def _rows(sub: Submission, links: Sequence[str]) -> list[tuple[SheetText, CentreName,
+                                                                list[SheetText]]]:
+    out = []
+    for t in sub.texts:
+        name = read_centre(t.text, links)
+        if name is None or name.rest:
+            continue
+        row = sorted((c for c in sub.texts if c is not t
+                      and abs(c.centre[1] - t.centre[1]) < 0.6 * max(t.height, 1e-9)
+                      and 0.0 < c.centre[0] - t.centre[0] < ROW_REACH_MM),
+                     key=lambda c: c.centre[0])
+        if len(row) >= 2 and (says_infinity(row[0].text) or
+                              all(_NUMBER.match(c.text.strip()) for c in row[:2])):
+            out.append((t, name, row))
+    return out
+
+
 def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None = None,
                       snap: float = 0.2) -> list[CentreMark]:
     """Every centre labelled on a drawn sheet: a text naming one centre (texts listing several —
@@ -108,8 +145,9 @@ def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None =
     beside (within ``tol`` mm; by default twice the texts' height, 3 … 10 mm, as for the labels of
     plans), or the arrowhead it is written at."""
     texts: list[tuple[SheetText, CentreName]] = []
+    in_tables = {id(t) for t, _, _ in _rows(sub, links)}
     for t in sub.texts:
-        if ":" in t.text or "=" in t.text:
+        if ":" in t.text or "=" in t.text or id(t) in in_tables:
             continue
         name = read_centre(t.text, links, whole=False)
         if name is None or _count_names(t.text, links) != 1:
