@@ -11,6 +11,8 @@ import statistics
 from collections.abc import Sequence
 from dataclasses import dataclass
 
+import numpy as np
+
 from .notation import SUBSCRIPTS, catalogue
 from .read import Entry, Point, SheetText, Submission
 from .sketch import drawn_graph, place_labels
@@ -123,19 +125,25 @@ def table_rows(sub: Submission, links: Sequence[str]) -> list[tuple[CentreName, 
 
 def _rows(sub: Submission, links: Sequence[str]) -> list[tuple[SheetText, CentreName,
                                                                 list[SheetText]]]:
-    out = []
-    for t in sub.texts:
-        name = read_centre(t.text, links)
-        if name is None or name.rest:
-            continue
-        row = sorted((c for c in sub.texts if c is not t
-                      and abs(c.centre[1] - t.centre[1]) < 0.6 * max(t.height, 1e-9)
-                      and 0.0 < c.centre[0] - t.centre[0] < ROW_REACH_MM),
-                     key=lambda c: c.centre[0])
+    out: list[tuple[SheetText, CentreName, list[SheetText]]] = []
+    names = [(i, t, n) for i, t in enumerate(sub.texts) if len(t.text) <= MAX_TEXT
+             and (n := read_centre(t.text, links)) is not None and not n.rest]
+    if not names:
+        return out
+    at = np.array([t.centre for t in sub.texts], dtype=float).reshape(-1, 2)
+    for i, t, name in names:
+        dx, dy = at[:, 0] - t.centre[0], np.abs(at[:, 1] - t.centre[1])
+        near = np.flatnonzero((dy < 0.6 * max(t.height, 1e-9)) & (dx > 0.0) &
+                              (dx < ROW_REACH_MM))
+        row = sorted((sub.texts[j] for j in near if j != i), key=lambda c: c.centre[0])
         if len(row) >= 2 and (says_infinity(row[0].text) or
                               all(_NUMBER.match(c.text.strip()) for c in row[:2])):
             out.append((t, name, row))
     return out
+
+
+#: texts longer than this are no centre names (a paragraph of notes)
+MAX_TEXT = 60
 
 
 def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None = None,
@@ -147,7 +155,7 @@ def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None =
     texts: list[tuple[SheetText, CentreName]] = []
     in_tables = {id(t) for t, _, _ in _rows(sub, links)}
     for t in sub.texts:
-        if ":" in t.text or "=" in t.text or id(t) in in_tables:
+        if len(t.text) > MAX_TEXT or ":" in t.text or "=" in t.text or id(t) in in_tables:
             continue
         name = read_centre(t.text, links, whole=False)
         if name is None or _count_names(t.text, links) != 1:
