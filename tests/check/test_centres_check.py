@@ -37,7 +37,8 @@ def test_centre_names_of_every_tradition_are_read(text, links, want):
     assert name is not None and (name.i, name.j, name.rest) == want
 
 
-@pytest.mark.parametrize("text", ["P3", "I14", "Pc5", "I1", "pb", "I13 is here"])
+@pytest.mark.parametrize("text", ["P3", "I14", "Pc5", "I1", "pb", "I13 is here", "I(0,1)",
+                                  "III(2,3,4,5)"])
 def test_other_names_are_no_centres(text):
     assert read_centre(text, FOUR) is None
 

@@ -17,7 +17,9 @@ from .notation import SUBSCRIPTS, catalogue
 from .read import Entry, Point, SheetText, Submission
 from .sketch import drawn_graph, place_labels
 
-_SEP = r"[\s_,.\-–{}()\[\]]*"
+#: between the letter and the digits; no parenthesis: "I(0,1)" is a structural formula (the
+#: class I mechanism of links 0 and 1), not a centre
+_SEP = r"[\s_,.\-–{}]*"
 
 
 @dataclass(frozen=True, slots=True)
