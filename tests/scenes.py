@@ -36,6 +36,18 @@ TEMPLATES = [p for p in ALL_TEMPLATES if _kind(p) == "mechanism" and _driver(p) 
 DRIVER_TEMPLATES = [p for p in ALL_TEMPLATES if _kind(p) == "mechanism" and _driver(p) != "crank"]
 
 
+def _two_inputs(path: Path) -> bool:
+    import tomllib
+
+    return "drive2" in tomllib.loads(path.read_text(encoding="utf-8"))
+
+
+#: crank templates with a second driving crank (W = 2, ``[drive2]``): every plan, force and
+#: sheet test runs on them; Kennedy's theorem cannot find all their instant centres (a five-bar
+#: has only its pairs' centres from it), so the instant-centre tests leave them out
+TWO_INPUT_TEMPLATES = [p for p in TEMPLATES if _two_inputs(p)]
+
+
 def construction_of(scene, plans=("position", "velocity", "acceleration")):
     """Build a scene's construction."""
     return build_construction(scene.mechanism, analyse(scene.mechanism), plans, scene.assembly_phi)

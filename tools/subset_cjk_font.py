@@ -22,6 +22,8 @@ from pathlib import Path
 
 from fontTools import subset
 from fontTools.pens.cu2quPen import Cu2QuPen
+from fontTools.pens.recordingPen import DecomposingRecordingPen
+from fontTools.pens.transformPen import TransformPen
 from fontTools.pens.ttGlyphPen import TTGlyphPen
 from fontTools.ttLib import TTFont, newTable
 
@@ -88,6 +90,46 @@ def to_truetype(font: TTFont, max_err: float = 1.0) -> None:
     font.sfntVersion = "\x00\x01\x00\x00"
 
 
+#: characters Noto Sans CJK lacks but the sheets write in Chinese (10⁻¹², M_b⁰, S₄): their
+#: glyphs are taken from matplotlib's DejaVu Sans (Bitstream Vera licence, free to copy), scaled
+SUPPLEMENT = [(0x2070, 0x209F)]
+
+
+def borrowed(font: TTFont, wanted: set[int]) -> list[int]:
+    """Add to the TrueType `font` the glyphs of `wanted` it lacks and DejaVu Sans has; return
+    the code points added."""
+    import matplotlib
+
+    donor = TTFont(Path(matplotlib.get_data_path()) / "fonts" / "ttf" / "DejaVuSans.ttf")
+    dcmap, dglyphs = donor.getBestCmap(), donor.getGlyphSet()
+    scale = font["head"].unitsPerEm / donor["head"].unitsPerEm
+    cmap = font.getBestCmap()
+    order = list(font.getGlyphOrder())
+    glyf, hmtx = font["glyf"], font["hmtx"]
+    added = []
+    for cp in sorted(wanted):
+        if cp in cmap or cp not in dcmap:
+            continue
+        name = f"uni{cp:04X}"
+        pen = TTGlyphPen(None)
+        outline = DecomposingRecordingPen(dglyphs)      # composites drawn as plain contours
+        dglyphs[dcmap[cp]].draw(outline)
+        outline.replay(TransformPen(pen, (scale, 0, 0, scale, 0, 0)))
+        glyf[name] = pen.glyph()
+        advance = round(donor["hmtx"][dcmap[cp]][0] * scale)
+        glyf[name].recalcBounds(glyf)
+        hmtx[name] = (advance, getattr(glyf[name], "xMin", 0))
+        order.append(name)
+        for table in font["cmap"].tables:
+            if table.isUnicode():
+                table.cmap[cp] = name
+        added.append(cp)
+    font.setGlyphOrder(order)
+    glyf.glyphOrder = order
+    font["maxp"].numGlyphs = len(order)
+    return added
+
+
 def main() -> int:
     source = Path(sys.argv[1]) if len(sys.argv) > 1 else SOURCE
     font = TTFont(source, fontNumber=SC_INDEX)
@@ -108,9 +150,14 @@ def main() -> int:
     sub.populate(unicodes=unicodes)
     sub.subset(font)
     to_truetype(font)
+    extra = set()
+    for a, b in SUPPLEMENT:
+        extra.update(range(a, b + 1))
+    added = borrowed(font, (extra | project_characters()) - set(unicodes))
     OUT.parent.mkdir(parents=True, exist_ok=True)
     font.save(OUT)
-    print(f"{OUT}: {len(unicodes)} characters, {OUT.stat().st_size / 1e6:.2f} MB")
+    print(f"{OUT}: {len(unicodes)} characters, {len(added)} more from DejaVu Sans, "
+          f"{OUT.stat().st_size / 1e6:.2f} MB")
     return 0
 
 

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .errors import MechplanError, SceneError
+from .i18n import Text
 from .results import (
     ByName,
     Forces,
@@ -113,7 +114,8 @@ class Mechanism:
         # the instant centres are the study's (mechplan solve): the API's solution leaves them
         unknown = [p for p in chosen if p not in (*PLANS, CENTRES)]
         if unknown or not chosen:
-            raise SceneError(f"plans must be among {', '.join(PLANS)} (got {list(chosen)!r})",
+            raise SceneError(Text("errmsg.api.plans_among_plans", {"plans": ', '.join(PLANS),
+                                                                   "chosen": repr(list(chosen))}),
                              file=self.scene.path)
         return tuple(p for p in (*_KINEMATIC, "force") if p in chosen or p == "position")
 
@@ -168,19 +170,20 @@ class Mechanism:
         from .solve import solve
 
         if phi_deg is not None and positions is not None:
-            raise MechplanError("give either phi_deg or positions, not both")
+            raise MechplanError(Text("errmsg.api.give_either_phi"))
         if positions is not None and (isinstance(positions, bool)
                                       or not isinstance(positions, (int, np.integer))
                                       or positions < 1):
-            raise MechplanError(f"positions must be a whole number ≥ 1 (got {positions!r})")
+            raise MechplanError(
+                Text("errmsg.api.positions_whole_number", {"positions": repr(positions)})
+            )
         at: np.ndarray | None = None
         if phi_deg is not None:
             arr = np.asarray(phi_deg, dtype=float)
             if arr.ndim == 0:
                 arr = arr.reshape(1)
             if arr.ndim != 1 or arr.size == 0 or not np.isfinite(arr).all():
-                raise MechplanError(f"phi_deg must be finite crank angles in degrees "
-                                    f"(got {phi_deg!r})")
+                raise MechplanError(Text("errmsg.api.phi_deg_finite", {"phi_deg": repr(phi_deg)}))
             from .limits import check_angles_deg
 
             check_angles_deg(arr, "phi_deg")
@@ -192,8 +195,7 @@ class Mechanism:
             if quick is not None:
                 return quick
         elif fast and "force" in chosen:
-            raise MechplanError("fast=True computes kinematics only; the force plan runs on the "
-                                "numpy path (leave fast unset)")
+            raise MechplanError(Text("errmsg.api.fast_true_computes"))
         scene = dataclasses.replace(self.scene, points_of_interest=())
         built = self._build(chosen)
         wanted = None
@@ -222,17 +224,26 @@ class Mechanism:
             if asked is None:
                 continue
             if isinstance(asked, str):
-                raise MechplanError(f"{what} must be a sequence of names (got {asked!r}); "
-                                    f"e.g. {what}=({asked!r},)")
+                raise MechplanError(Text("errmsg.api.what_sequence_names", {"what": str(what),
+                                                                            "asked": repr(asked),
+                                                                            "what2": str(what),
+                                                                            "asked2": repr(asked)}))
             unknown = [str(x) for x in asked if str(x) not in known]
             if unknown:
-                raise MechplanError(f"{what} must be among {', '.join(known)} "
-                                    f"(got {', '.join(map(repr, unknown))})")
+                raise MechplanError(
+                    Text(
+                        "errmsg.api.what_among_known",
+                        {
+                            "what": str(what),
+                            "known": ", ".join(known),
+                            "repr": ", ".join(map(repr, unknown)),
+                        },
+                    )
+                )
         key = (None if points is None else tuple(map(str, points)),
                None if links is None else tuple(map(str, links)))
         if key[0] == () and key[1] == ():
-            raise MechplanError("points and links must not both be empty (got points=() and "
-                                "links=()); ask for at least one point or link")
+            raise MechplanError(Text("errmsg.api.points_links_not"))
         self._asked[key] = key                               # type: ignore[assignment]
         return key
 
@@ -391,7 +402,7 @@ def loads(text: str | Mapping[str, Any], name: str = "<scene>") -> Mechanism | S
             name = "<dict>"
         text = to_toml(text)
     elif not isinstance(text, str):
-        raise SceneError(f"a scene must be TOML text or a dict (got {type(text).__name__})",
+        raise SceneError(Text("errmsg.api.scene_toml_text", {"name": str(type(text).__name__)}),
                          file=name)
     from .scene.document import parse_toml, scene_kind
 
@@ -516,7 +527,7 @@ def check(scene: SceneSource | Mechanism, submission: str | os.PathLike[str], *,
     else:
         loaded = load(scene)
         if not isinstance(loaded, Mechanism):
-            raise SceneError("only mechanism scenes can be checked", key="kind")
+            raise SceneError(Text("errmsg.api.only_mechanism_scenes"), key="kind")
         spec = loaded.scene
     return run_check(spec, str(submission), Options(at_deg=at_deg))
 

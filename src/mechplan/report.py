@@ -158,6 +158,13 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     sense = sense_text(mb, lang)
     nm = unit("N·m", lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} {nm} ({sense}; {role})")
+    if fa.second is not None:       # W = 2: the second crank's own balancing moment
+        m2 = float(fa.second[1][k])
+        drive2 = sol.scene.mechanism.drive2
+        role2 = w[3] if drive2 is not None and m2 * drive2.omega > 0 else w[4]
+        out.append("### " + message("twoinputs.balancing", lang, link=fa.second[0],
+                                    value=f"{format_number(m2, 3, lang)} {nm} "
+                                          f"({sense_text(m2, lang)}; {role2})"))
     out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} {nm}; {w[6]} "
                f"{scientific(float(fa.difference_percent[k]), 3, lang)} %")
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {nm}")

@@ -37,6 +37,8 @@ class Global:
     # prismatic: couple with the force at the pair point
     couple: dict[tuple[str, str], np.ndarray]
     balancing: np.ndarray
+    #: W = 2: the second crank's balancing moment
+    second: np.ndarray | None = None
 
 
 class Kinematics:
@@ -185,8 +187,11 @@ def solve_global(mech: Mechanism, loading: Loading, c, ev) -> Global:
             put(a, pair.b, None, p, -ones, col + 1)
             col += 2
         layout.append(pair)
-    put(a, mech.drive.link, None, zeros2, ones, col)
-    assert col + 1 == size
+    first = col
+    for drive in mech.drivers:          # one balancing moment per crank (W = 2: two)
+        put(a, drive.link, None, zeros2, ones, col)
+        col += 1
+    assert col == size
     for link, _, point, force, couple in applied_loads(mech, loading, kin, ev.phi):
         put(known, link, force, point, couple)
     x = np.linalg.solve(a, -known[..., None])[..., 0]
@@ -206,7 +211,8 @@ def solve_global(mech: Mechanism, loading: Loading, c, ev) -> Global:
             couples[(pair.b, pair.a)] = x[:, col + 1]
             couples[(pair.a, pair.b)] = -x[:, col + 1]
             col += 2
-    return Global(forces, couples, x[:, col])
+    return Global(forces, couples, x[:, first],
+                  x[:, first + 1] if mech.drive2 is not None else None)
 
 
 def rich_loading(mech: Mechanism) -> Loading:

@@ -90,6 +90,10 @@ def test_reactions_match_global_newton_euler(name, which):
     mb = ev[c.results["M_b"]]
     size = max(float(np.abs(ref.balancing).max()), 1e-30)
     assert np.abs(mb - ref.balancing).max() < TOL * size
+    if mech.drive2 is not None:         # W = 2: the second crank's own balancing moment
+        m2 = ev[c.results[f"M_b{mech.drive2.link}"]]
+        assert ref.second is not None
+        assert np.abs(m2 - ref.second).max() < TOL * max(float(np.abs(ref.second).max()), 1e-30)
 
 
 @pytest.mark.parametrize("name", SCENES)
@@ -107,6 +111,8 @@ def test_virtual_power_and_zhukovsky(name):
             power += couple * kin.scalar("omega", link)
     omega1 = kin.scalar("omega", mech.drive.link)
     mb, mz = ev[c.results["M_b"]], ev[c.results["M_b_zhukovsky"]]
+    if mech.drive2 is not None:         # W = 2: the second crank's balancing moment works too
+        power += ev[c.results[f"M_b{mech.drive2.link}"]] * kin.scalar("omega", mech.drive2.link)
     scale = np.abs(mb * omega1).max() + np.abs(power).max()
     assert np.abs(mb * omega1 + power).max() < TOL * scale
     assert np.abs(mz - mb).max() < TOL * np.abs(mb).max()
@@ -152,6 +158,8 @@ def test_every_force_polygon_closes(name):
                 moment += p[:, 0] * r[:, 1] - p[:, 1] * r[:, 0]
         if link == mech.drive.link:
             moment += mb
+        if mech.drive2 is not None and link == mech.drive2.link:     # W = 2
+            moment += ev[c.results[f"M_b{link}"]]
         assert np.abs(force).max() < TOL * scale, link
         assert np.abs(moment).max() < TOL * scale, link     # lengths here are below 1 m
 

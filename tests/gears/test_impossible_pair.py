@@ -18,9 +18,12 @@ TWO_ROW = (ROOT / "templates" / "planetary_two_row.toml").read_text(encoding="ut
 def test_addendum_10_is_an_error_naming_the_key(tmp_path, capsys) -> None:
     scene = tmp_path / "g.toml"
     scene.write_text(TWO_ROW.replace("addendum = 1.0 ", "addendum = 10.0 "), encoding="utf-8")
-    assert main(["solve", str(scene)]) == 2
+    assert main(["solve", str(scene), "--lang", "en"]) == 2
     err = capsys.readouterr().err
     assert "g.toml" in err and "key 'pair.addendum'" in err and "cannot be cut" in err
+    assert main(["solve", str(scene)]) == 2          # the template's own language: Russian
+    err = capsys.readouterr().err
+    assert "ключ 'pair.addendum'" in err and "нельзя нарезать" in err and "cannot" not in err
 
 
 def test_tooth_crossing_below_its_tip() -> None:

@@ -184,12 +184,13 @@ def test_librecad_draws_every_text_within_the_width_the_sheet_measured() -> None
     root = Path(__file__).resolve().parents[2]
     sheet = solve_file(root / "templates" / "slider_crank.toml").sheets(None, "gost", "ru",
                                                                         "s")[0]
-    texts = {t.string: t for t in sheet.flat() if isinstance(t, Text)}
+    # one string may be written at two heights (a centre's name on the drawing and in a table)
+    texts = {(t.string, round(t.height_mm, 6)): t for t in sheet.flat() if isinstance(t, Text)}
     fonts = stroke_fonts()
     doc = dxf_backend.to_document(sheet)
     condensed = 0
     for e in doc.modelspace().query("TEXT"):
-        t = texts.get(e.dxf.text)
+        t = texts.get((e.dxf.text, round(e.dxf.height, 6)))
         if t is None or e.dxf.layer == dxf_backend.TITLE_VALUES_LAYER:
             continue
         font = fonts[e.dxf.style]

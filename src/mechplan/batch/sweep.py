@@ -72,7 +72,8 @@ def _variant(plan: SweepPlan, index: tuple[int, ...]
                 guides[name[len("__guide__."):]] = value
             else:
                 steps[name] = value
-    return Construction(drive, steps, base.segments, base.equations, base.results), guides, ""
+    return (Construction(drive, steps, base.segments, base.equations, base.results,
+                         second_driver=base.second_driver), guides, "")
 
 
 def evaluate_chunk(plan: SweepPlan, start: int, stop: int

@@ -160,9 +160,10 @@ class Builder:
     def build(self, plans: tuple[str, ...]) -> Construction:
         """Emit the position plan and, as asked, velocity and acceleration plans."""
         from ..model.structure import Triad
-        from .plans import acceleration, drivers, position, triad, velocity
+        from .plans import acceleration, drivers, position, second_crank, triad, velocity
 
         position.emit_frame_and_drive(self)
+        second_crank.emit_position(self)      # W = 2: the second crank (plans/second_crank.py)
         for group in self.structure.groups:
             if isinstance(group, Triad):
                 triad.emit_position(self, group)
@@ -170,6 +171,7 @@ class Builder:
                 drivers.position_group(self, group)
         if "velocity" in plans or "acceleration" in plans or "force" in plans:
             velocity.emit_drive(self)
+            second_crank.emit_velocity(self)
             for group in self.structure.groups:
                 if isinstance(group, Triad):
                     triad.emit_velocity(self, group)
@@ -177,6 +179,7 @@ class Builder:
                     drivers.velocity_group(self, group)
         if "acceleration" in plans or "force" in plans:
             acceleration.emit_drive(self)
+            second_crank.emit_acceleration(self)
             for group in self.structure.groups:
                 if isinstance(group, Triad):
                     triad.emit_acceleration(self, group)

@@ -378,3 +378,8 @@ SCALAR_FORMS: dict[OpSpec, Gen] = {
 from .kernel_drivers import DRIVER_FORMS
 
 SCALAR_FORMS.update(DRIVER_FORMS)
+
+# a second crank (W = 2): its angle from the first's
+from .kernel_inputs import INPUT_FORMS
+
+SCALAR_FORMS.update(INPUT_FORMS)

@@ -32,6 +32,8 @@ from mechplan.drafting.primitives import (
 from mechplan.errors import DrawingError
 from mechplan.i18n import message
 
+from ..i18n import Text as Msg
+
 
 class Standard(Enum):
     """Drafting standard of the frame and title block."""
@@ -164,8 +166,16 @@ def _fit(text: str, width: float, height: float, max_h: float, max_lines: int,
         if factor >= min_factor:
             return [(text, h, min(1.0, factor))]
     raise DrawingError(
-        f"title-block field '{what}' must fit its {width:.0f} × {height:.0f} mm cell "
-        f"(got {text!r}, {text_width_mm(text, 1.8):.0f} mm wide at 1.8 mm); shorten it"
+        Msg(
+            "errmsg.drafting_frame.title_block_field",
+            {
+                "what": str(what),
+                "width": f"{width:.0f}",
+                "height": f"{height:.0f}",
+                "text": repr(text),
+                "text2": f"{text_width_mm(text, 1.8):.0f}",
+            },
+        )
     )
 
 
@@ -350,12 +360,17 @@ def _clean_fields(fields: Mapping[str, object] | None) -> dict[str, str]:
     for key, value in (fields or {}).items():
         if key not in TITLE_FIELDS:
             raise DrawingError(
-                f"title-block field must be one of {', '.join(TITLE_FIELDS)} (got {key!r})",
+                Msg(
+                    "errmsg.drafting_frame.title_block_field2",
+                    {"title_fields": ", ".join(TITLE_FIELDS), "key": repr(key)},
+                ),
                 key=str(key),
             )
         text = "" if value is None else str(value).strip()
         if "\n" in text or "\r" in text:
-            raise DrawingError(f"title-block field must be one line (got {text!r})", key=key)
+            raise DrawingError(
+                Msg("errmsg.drafting_frame.title_block_field3", {"text": repr(text)}), key=key
+            )
         out[key] = text
     return out
 
@@ -364,15 +379,24 @@ def paper_size(size: str, orientation: Orientation | str | None = None) -> tuple
     """Return (width, height) in mm of ISO sheet `size`; A4 is portrait, others landscape."""
     key = str(size).upper()
     if key not in PAPER_SIZES_MM:
-        raise DrawingError(f"sheet size must be one of {', '.join(PAPER_SIZES_MM)} (got {size!r})")
+        raise DrawingError(
+            Msg(
+                "errmsg.drafting_frame.sheet_size_one",
+                {"paper_sizes_mm": ", ".join(PAPER_SIZES_MM), "size": repr(size)},
+            )
+        )
     short, long_ = PAPER_SIZES_MM[key]
     if orientation is None:
         orientation = Orientation.PORTRAIT if key == "A4" else Orientation.LANDSCAPE
     try:
         orient = Orientation(orientation)
     except ValueError as exc:
-        raise DrawingError(f"orientation must be 'landscape' or 'portrait' (got {orientation!r})"
-                           ) from exc
+        raise DrawingError(
+            Msg(
+                "errmsg.drafting_frame.orientation_landscape_portrait",
+                {"orientation": repr(orientation)},
+            )
+        ) from exc
     return (long_, short) if orient is Orientation.LANDSCAPE else (short, long_)
 
 
@@ -394,17 +418,26 @@ def make_frame(
         std = Standard(standard)
     except ValueError as exc:
         raise DrawingError(
-            f"standard must be one of {', '.join(s.value for s in Standard)} (got {standard!r})"
+            Msg(
+                "errmsg.drafting_frame.standard_one_value",
+                {"value": ", ".join(s.value for s in Standard), "standard": repr(standard)},
+            )
         ) from exc
     if language not in LANGUAGES:
-        raise DrawingError(f"language must be one of {LANGUAGES} (got {language!r})")
+        raise DrawingError(
+            Msg(
+                "errmsg.drafting_frame.language_one_languages",
+                {"languages": str(LANGUAGES), "language": repr(language)},
+            )
+        )
     f = _clean_fields(fields)
     w, h = paper_size(size, orientation)
     ml, mb, mr, mt = _MARGINS[std]
     frame = Rect(ml, mb, w - mr, h - mt)
     tw, th = _TITLE_SIZE[std]
     if tw > frame.width + 1e-9 or th > frame.height:
-        raise DrawingError(f"sheet {size} is too small for the {std.value} title block")
+        raise DrawingError(Msg("errmsg.drafting_frame.sheet_size_too", {"size": str(size),
+                                                                         "value": str(std.value)}))
     title = Rect(frame.x1 - tw, frame.y0, frame.x1, frame.y0 + th)
 
     b = _Builder(title.x0, title.y0)

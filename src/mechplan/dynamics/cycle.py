@@ -20,6 +20,7 @@ import numpy as np
 from ..construct.builder import build_construction
 from ..errors import SceneError
 from ..geom.vec import Array, dot
+from ..i18n import Text
 from ..model.dynamics import DynamicsSpec, IndicatorSpec
 from ..model.loads import LoadKind, LoadSpec
 from ..model.mechanism import GROUND
@@ -59,9 +60,13 @@ class MachineCycle:
     def __init__(self, scene: Scene, spec: DynamicsSpec, phi0: float) -> None:
         mech = scene.mechanism
         if mech.drive.epsilon != 0.0:
-            raise SceneError("the drive's angular acceleration must be 0 for the machine's "
-                             f"dynamics (got {mech.drive.epsilon:g} rad/s²); the mean speed is "
-                             "the drive's speed", file=scene.path, key="drive.epsilon")
+            raise SceneError(
+                Text(
+                    "errmsg.dynamics_cycle.drive_s_angular", {"epsilon": f"{mech.drive.epsilon:g}"}
+                ),
+                file=scene.path,
+                key="drive.epsilon",
+            )
         self.scene, self.spec, self.phi0 = scene, spec, phi0
         self.omega1 = abs(mech.drive.omega)
         base = Loading.from_scene(scene)
@@ -96,12 +101,17 @@ class MachineCycle:
         elif abs(span - cycle) < 1e-6:
             period = cycle
         else:
-            raise SceneError(f"a load table against the crank angle must cover the cycle: one "
-                             f"turn or the whole {math.degrees(cycle):g}° (got "
-                             f"{math.degrees(span):g}°)", file=self.scene.path, key=f"{key}.table")
+            raise SceneError(
+                Text(
+                    "errmsg.dynamics_cycle.load_table_against",
+                    {"cycle": f"{math.degrees(cycle):g}", "span": f"{math.degrees(span):g}"},
+                ),
+                file=self.scene.path,
+                key=f"{key}.table",
+            )
         if abs(fs[-1] - fs[0]) > 1e-6 * max(float(np.abs(fs).max()), 1e-300):
-            raise SceneError(f"a load table over the cycle must be periodic: its last value "
-                             f"must equal its first (got {fs[0]:g} N and {fs[-1]:g} N)",
+            raise SceneError(Text("errmsg.dynamics_cycle.load_table_over", {"fs": f'{fs[0]:g}',
+                                                                            "fs2": f'{fs[-1]:g}'}),
                              file=self.scene.path, key=f"{key}.table")
         return _Tabled(i, xs, fs, period)
 
@@ -113,15 +123,31 @@ class MachineCycle:
             xs = np.array([x for x, _ in ind.table])
             ps = np.array([p for _, p in ind.table])
             if abs(xs[0]) > 1e-6 or abs(xs[-1] - cycle) > 1e-6:
-                raise SceneError(f"the indicator diagram must cover the cycle from 0° to "
-                                 f"{math.degrees(cycle):g}° (got {math.degrees(xs[0]):g}° … "
-                                 f"{math.degrees(xs[-1]):g}°)", file=self.scene.path,
-                                 key=f"{ind.key}.table")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_cycle.indicator_diagram_cover",
+                        {
+                            "cycle": f"{math.degrees(cycle):g}",
+                            "xs": f"{math.degrees(xs[0]):g}",
+                            "xs2": f"{math.degrees(xs[-1]):g}",
+                        },
+                    ),
+                    file=self.scene.path,
+                    key=f"{ind.key}.table",
+                )
             if abs(ps[-1] - ps[0]) > 1e-6 * float(np.abs(ps).max()):
-                raise SceneError(f"the indicator diagram must be periodic: the pressure at "
-                                 f"{math.degrees(cycle):g}° must equal the pressure at 0° (got "
-                                 f"{ps[0]:g} Pa and {ps[-1]:g} Pa)", file=self.scene.path,
-                                 key=f"{ind.key}.table")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_cycle.indicator_diagram_periodic",
+                        {
+                            "cycle": f"{math.degrees(cycle):g}",
+                            "ps": f"{ps[0]:g}",
+                            "ps2": f"{ps[-1]:g}",
+                        },
+                    ),
+                    file=self.scene.path,
+                    key=f"{ind.key}.table",
+                )
             return xs, (ps - ind.ambient) * area
         # per stroke: pressure against the piston's displacement from the starting dead centre,
         # evaluated exactly at each θ (see _stroke_force); here only checked
@@ -129,11 +155,18 @@ class MachineCycle:
         speeds = np.hypot(*self._velocity(probe, ind.point, 73).T)
         self._r0 = probe[self.c.position(ind.point)][0]
         if speeds[0] > 1e-6 * speeds.max():
-            raise SceneError(f"an indicator diagram by strokes starts at a dead centre: the first "
-                             f"position must be one (the piston {ind.point} moves at "
-                             f"{speeds[0]:.3g} m/s there); set positions.start = {{ extreme = "
-                             f"\"{ind.point}\", which = \"max\" }}", file=self.scene.path,
-                             key="positions.start")
+            raise SceneError(
+                Text(
+                    "errmsg.dynamics_cycle.indicator_diagram_strokes",
+                    {
+                        "point": str(ind.point),
+                        "speeds": f"{speeds[0]:.3g}",
+                        "point2": str(ind.point),
+                    },
+                ),
+                file=self.scene.path,
+                key="positions.start",
+            )
         travel = float(np.hypot(*(probe[self.c.position(ind.point)] - self._r0).T).max())
         self._strokes: list[tuple[Array, Array]] = []
         for stroke, rows in ind.strokes:
@@ -141,10 +174,19 @@ class MachineCycle:
             order = np.argsort(xs)
             xs, ps = xs[order], np.array([p for _, p in rows])[order]
             if xs[0] > 1e-3 * travel or xs[-1] < travel * (1 - 1e-3):
-                raise SceneError(f"the {stroke.value} stroke's table must cover the piston's "
-                                 f"travel 0 … {travel * 1000:.1f} mm (got {xs[0] * 1000:g} … "
-                                 f"{xs[-1] * 1000:g} mm)", file=self.scene.path,
-                                 key=f"{ind.key}.strokes.{stroke.value}")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_cycle.value_stroke_s",
+                        {
+                            "value": str(stroke.value),
+                            "value2": f"{travel * 1000:.1f}",
+                            "value3": f"{xs[0] * 1000:g}",
+                            "value4": f"{xs[-1] * 1000:g}",
+                        },
+                    ),
+                    file=self.scene.path,
+                    key=f"{ind.key}.strokes.{stroke.value}",
+                )
             self._strokes.append((xs, (ps - ind.ambient) * area))
         return np.zeros(0), np.zeros(0)
 

@@ -20,6 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..model.engine import ThermalSpec
 from .engine.kinematics import SliderCrank
 
@@ -324,17 +325,20 @@ def volume_table_diagram(rows: Sequence[tuple[float, float]], strokes: int, V_h:
     p = np.asarray([r[1] for r in rows], float)
     span = float(V.max() - V.min())
     if abs(V[0] - V[-1]) > 1e-6 * span or abs(p[0] - p[-1]) > 1e-6 * max(abs(p).max(), 1.0):
-        raise SceneError("the p(V) table must be a closed cycle: its last row must repeat the "
-                         f"first (got first ({V[0]:g} m³, {p[0]:g} Pa), "
-                         f"last ({V[-1]:g} m³, {p[-1]:g} Pa))", file=file, key=key)
+        raise SceneError(Text("errmsg.dynamics_indicator.p_v_table", {"v": f'{V[0]:g}',
+                                                                      "p": f'{p[0]:g}',
+                                                                      "v2": f'{V[-1]:g}',
+                                                                      "p2": f'{p[-1]:g}'}),
+                         file=file, key=key)
     runs = _runs(V)
     if len(runs) != strokes or not V[runs[0][1]] > V[runs[0][0]]:
-        raise SceneError(f"the p(V) table must go around the cycle in {strokes} strokes, the first "
-                         f"from TDC to BDC (got {len(runs)} monotone runs of V)",
+        raise SceneError(Text("errmsg.dynamics_indicator.p_v_table2", {"strokes": str(strokes),
+                                                                       "runs": str(len(runs))}),
                          file=file, key=key)
     if abs(span - V_h) > 0.01 * V_h:
-        raise SceneError(f"the p(V) table's swept volume must equal the displacement F_p·2R = "
-                         f"{V_h:.6g} m³ within 1 % (got {span:.6g} m³)", file=file, key=key)
+        raise SceneError(Text("errmsg.dynamics_indicator.p_v_table3", {"v_h": f'{V_h:.6g}',
+                                                                       "span": f'{span:.6g}'}),
+                         file=file, key=key)
     V_c, V_a = float(V.min()), float(V.max())
     branches = []
     for i, j in runs:
@@ -359,13 +363,22 @@ def angle_table_diagram(rows: Sequence[tuple[float, float]], strokes: int, kin: 
     p = np.asarray([r[1] for r in rows], float)
     cycle = math.pi * strokes
     if abs(phi[0]) > 1e-9 or abs(phi[-1] - cycle) > 1e-9 or abs(p[0] - p[-1]) > 1e-6 * abs(p).max():
-        raise SceneError("the p(φ) table must be a closed cycle from 0° to "
-                         f"{math.degrees(cycle):g}° "
-                         f"with equal pressures at both ends (got {math.degrees(phi[0]):g}°…"
-                         f"{math.degrees(phi[-1]):g}°, {p[0]:g} Pa…{p[-1]:g} Pa)",
-                         file=file, key=key)
+        raise SceneError(
+            Text(
+                "errmsg.dynamics_indicator.p_table_closed",
+                {
+                    "cycle": f"{math.degrees(cycle):g}",
+                    "phi": f"{math.degrees(phi[0]):g}",
+                    "phi2": f"{math.degrees(phi[-1]):g}",
+                    "p": f"{p[0]:g}",
+                    "p2": f"{p[-1]:g}",
+                },
+            ),
+            file=file,
+            key=key,
+        )
     if np.any(np.diff(phi) <= 0):
-        raise SceneError("the crank angles of the p(φ) table must increase strictly",
+        raise SceneError(Text("errmsg.dynamics_indicator.crank_angles_p"),
                          file=file, key=key)
     V_h = F_p * 2.0 * kin.R
     V_c = V_h / (epsilon - 1.0)

@@ -56,6 +56,9 @@ class ForceAnalysis:
     #: polygons and by Zhukovsky's lever, omega1 its rate q̇ (m/s), the reduced ones a force
     #: (N) and a mass (kg)
     linear: bool = False
+    #: a second driving crank (W = 2): its link and its balancing moment M_b (N·m) from its own
+    #: polygon; ``balancing_moment`` is the first crank's
+    second: tuple[str, Array] | None = None
 
     @property
     def difference_percent(self) -> Array:
@@ -84,6 +87,8 @@ class ForceAnalysis:
                     "zhukovsky_driving_force": _num(self.zhukovsky_moment[i])} if self.linear
                    else {"balancing_moment": _num(self.balancing_moment[i]),
                          "zhukovsky_balancing_moment": _num(self.zhukovsky_moment[i])}),
+                **({} if self.second is None else {"second_balancing_moment": {
+                    "link": self.second[0], "value": _num(self.second[1][i])}}),
             },
             "reduced": {"moment": _num(self.reduced_moment[i]),
                         "inertia": _num(self.reduced_inertia[i])},
@@ -140,7 +145,9 @@ def analyse_forces(c: Construction, ev: Evaluation, mech: Mechanism, loading: An
         phi=ev.phi, omega1=link_omega(c, ev, mech.drive.link), inertia=inertia,
         reactions=reactions, guide_reactions=guides,
         balancing_moment=ev[c.balancing_moment()], zhukovsky_moment=ev[c.zhukovsky_moment()],
-        reduced_moment=m_red, reduced_inertia=j_red, friction=analyse_friction(c, ev, mech))
+        reduced_moment=m_red, reduced_inertia=j_red, friction=analyse_friction(c, ev, mech),
+        second=None if mech.drive2 is None else (
+            mech.drive2.link, ev[c.second_balancing_moment(mech.drive2.link)]))
 
 
 def balancing_force(c: Construction, ev: Evaluation, mech: Mechanism, point: str,

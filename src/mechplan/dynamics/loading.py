@@ -8,6 +8,7 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..model.loads import FrictionSpec, Gravity, LoadKind, LoadSpec, MassSpec, pair_id
 from ..model.mechanism import GROUND, Mechanism
 
@@ -71,80 +72,147 @@ class Loading:
         for link, ms in self.masses.items():
             key = f"links.{link}"
             if link not in mech.links or link == GROUND:
-                raise SceneError(f"masses are given for link {link!r}, which is not a moving link "
-                                 f"(links are {', '.join(mech.moving)})", file=self.file, key=key)
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_loading.masses_are_given",
+                        {"link": repr(link), "moving": ", ".join(mech.moving)},
+                    ),
+                    file=self.file,
+                    key=key,
+                )
             if not (ms.mass >= 0 and math.isfinite(ms.mass)):
-                raise SceneError(f"the mass of link {link} must not be negative (got {ms.mass} kg)",
-                                 file=self.file, key=f"{key}.mass")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_loading.mass_link_link",
+                        {"link": str(link), "mass": str(ms.mass)},
+                    ),
+                    file=self.file,
+                    key=f"{key}.mass",
+                )
             if not (ms.inertia >= 0 and math.isfinite(ms.inertia)):
-                raise SceneError(f"the moment of inertia J_S of link {link} must not be negative "
-                                 f"(got {ms.inertia} kg·m²)", file=self.file, key=f"{key}.J")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_loading.moment_inertia_j",
+                        {"link": str(link), "inertia": str(ms.inertia)},
+                    ),
+                    file=self.file,
+                    key=f"{key}.J",
+                )
             if ms.centre not in mech.links[link].points:
-                raise SceneError(f"the centre of mass {ms.centre!r} is not a point of link {link} "
-                                 f"(it has {', '.join(mech.links[link].points)})",
-                                 file=self.file, key=f"{key}.centre")
+                raise SceneError(
+                    Text(
+                        "errmsg.dynamics_loading.centre_mass_centre",
+                        {
+                            "centre": repr(ms.centre),
+                            "link": str(link),
+                            "points": ", ".join(mech.links[link].points),
+                        },
+                    ),
+                    file=self.file,
+                    key=f"{key}.centre",
+                )
         for i, spec in enumerate(self.loads):
             self._check_load(mech, spec, spec.key or f"loads[{i}]")
         if self.friction is not None:
             known = {pair_id(p.a, p.b) for p in mech.pairs}
             for name, _ in self.friction.pairs:
                 if name not in known:
-                    raise SceneError(f"there is no pair {name} (pairs: {', '.join(sorted(known))})",
-                                     file=self.file, key=f"{self.friction.key}.pairs.{name}")
+                    raise SceneError(
+                        Text(
+                            "errmsg.dynamics_loading.there_no_pair",
+                            {"name": str(name), "known": ", ".join(sorted(known))},
+                        ),
+                        file=self.file,
+                        key=f"{self.friction.key}.pairs.{name}",
+                    )
 
     def _check_load(self, mech: Mechanism, spec: LoadSpec, key: str) -> None:
         def fail(message: str) -> SceneError:
             return SceneError(message, file=self.file, key=key)
         if spec.link not in mech.links or spec.link == GROUND:
-            raise fail(f"a load acts on a moving link (got link {spec.link!r})")
+            raise fail(Text("errmsg.dynamics_loading.load_acts_moving", {"link": repr(spec.link)}))
         if spec.kind is LoadKind.MOMENT:
             if spec.moment is None:
-                raise fail("a moment load needs its moment, e.g. moment = \"50 N*m\"")
+                raise fail(Text("errmsg.dynamics_loading.moment_load_needs"))
             return
         if spec.kind in (LoadKind.SPRING, LoadKind.CYLINDER):
             olink = spec.other_link or GROUND
             if olink not in mech.links or spec.other not in mech.links[olink].points:
-                raise fail(f"unknown point {spec.other!r} on link {olink}")
+                raise fail(
+                    Text(
+                        "errmsg.dynamics_loading.unknown_point_other",
+                        {"other": repr(spec.other), "olink": str(olink)},
+                    )
+                )
         if spec.point is None or spec.point not in mech.links[spec.link].points:
-            raise fail(f"unknown point {spec.point!r} on link {spec.link} (it has "
-                       f"{', '.join(mech.links[spec.link].points)})")
+            raise fail(
+                Text(
+                    "errmsg.dynamics_loading.unknown_point_point",
+                    {
+                        "point": repr(spec.point),
+                        "link": str(spec.link),
+                        "points": ", ".join(mech.links[spec.link].points),
+                    },
+                )
+            )
         points = {p for link in mech.links.values() for p in link.points}
         if spec.towards is not None and spec.towards not in points:
-            raise fail(f"unknown point {spec.towards!r} to direct the force towards")
+            raise fail(
+                Text(
+                    "errmsg.dynamics_loading.unknown_point_towards", {"towards": repr(spec.towards)}
+                )
+            )
         if spec.kind in (LoadKind.SPRING, LoadKind.CYLINDER):
             return
         if spec.kind is LoadKind.FORCE:
             if spec.along is not None:
                 if spec.magnitude is None or not all(q in points for q in spec.along):
-                    raise fail(f"a force along {spec.along} needs its magnitude and known points")
+                    raise fail(
+                        Text(
+                            "errmsg.dynamics_loading.force_along_along", {"along": str(spec.along)}
+                        )
+                    )
                 return
             if spec.vector is None and spec.magnitude is None:
-                raise fail("a force needs 'vector', or 'magnitude' with 'angle' or 'towards'")
+                raise fail(Text("errmsg.scene_loads.force_needs_vector"))
             if spec.vector is None and spec.towards is None and spec.angle is None:
-                raise fail("a force given by its magnitude needs 'angle' or 'towards'")
+                raise fail(Text("errmsg.dynamics_loading.force_given_magnitude"))
             if spec.vector is None and spec.towards == spec.point:
-                raise fail(f"a force at {spec.point} cannot point towards {spec.point} itself; "
-                           "give another point or an angle")
+                raise fail(
+                    Text(
+                        "errmsg.dynamics_loading.force_point_cannot",
+                        {"point": str(spec.point), "point2": str(spec.point)},
+                    )
+                )
             return
         if mech.links[spec.link].slides_on is None:
-            raise fail(f"a {spec.kind.value} load acts on a slider along its guide; link "
-                       f"{spec.link} does not slide")
+            raise fail(
+                Text(
+                    "errmsg.dynamics_loading.value_load_acts",
+                    {"value": str(spec.kind.value), "link": str(spec.link)},
+                )
+            )
         if spec.towards is None:
-            raise fail("give the sense along the guide, e.g. towards = \"A\"")
+            raise fail(Text("errmsg.dynamics_loading.give_sense_along"))
         if spec.kind is LoadKind.PRESSURE:
             if spec.bore is None or not spec.bore > 0:
-                raise fail(f"a pressure needs the piston's bore diameter > 0 (got {spec.bore}); "
-                           "e.g. bore = \"100 mm\"")
+                raise fail(
+                    Text("errmsg.dynamics_loading.pressure_needs_piston", {"bore": str(spec.bore)})
+                )
             if spec.pressure is None:
-                raise fail("a pressure load needs its pressure, e.g. pressure = \"1 MPa\"")
+                raise fail(Text("errmsg.dynamics_loading.pressure_load_needs"))
             return
         if spec.against not in ("crank_angle", "displacement"):
             raise fail(
-                f"a table is given against crank_angle or displacement (got {spec.against!r})"
+                Text("errmsg.dynamics_loading.table_given_against", {"against": repr(spec.against)})
             )
         xs = [x for x, _ in spec.table]
         if len(xs) < 2 or any(b <= a for a, b in itertools.pairwise(xs)):
-            raise fail("a table needs at least two rows with a strictly increasing first column")
+            raise fail(Text("errmsg.dynamics_loading.table_needs_least"))
         if spec.against == "crank_angle" and xs[-1] - xs[0] > 4 * math.pi * (1 + 1e-12):
-            raise fail(f"a table against the crank angle spans two turns at most (it spans "
-                       f"{math.degrees(xs[-1] - xs[0]):g}°)")
+            raise fail(
+                Text(
+                    "errmsg.dynamics_loading.table_against_crank",
+                    {"value": f"{math.degrees(xs[-1] - xs[0]):g}"},
+                )
+            )

@@ -9,6 +9,7 @@ import numpy as np
 
 from ..errors import SceneError
 from ..geom.vec import Array
+from ..i18n import Text
 from ..model.dynamics import DynamicsSpec, Unknown
 from ..scene.spec import Scene
 from .cycle import CycleState, MachineCycle
@@ -86,20 +87,22 @@ def _split(spec: DynamicsSpec, theta: Array, st: CycleState,
     if spec.unknown is Unknown.RESISTING:
         if spec.constant_moment is None:
             if not A_given > 0:
-                raise SceneError(f"the work of the given loads over the cycle must be positive to "
-                                 f"balance a constant resisting moment (got {A_given:.4g} J); "
-                                 "check the senses of the loads or use unknown = \"driving\"",
-                                 file=file, key="dynamics.unknown")
+                raise SceneError(
+                    Text("errmsg.dynamics_machine.work_given_loads", {"a_given": f"{A_given:.4g}"}),
+                    file=file,
+                    key="dynamics.unknown",
+                )
             M = A_given / cycle
         else:
             M = spec.constant_moment
         return st.M_given, np.full_like(theta, M), M, A_given - M * cycle
     if spec.constant_moment is None:
         if not A_given < 0:
-            raise SceneError(f"the given loads must absorb work over the cycle to be balanced by "
-                             f"a constant driving moment (their work is {A_given:.4g} J); check "
-                             "the senses of the loads or use unknown = \"resisting\"",
-                             file=file, key="dynamics.unknown")
+            raise SceneError(
+                Text("errmsg.dynamics_machine.given_loads_absorb", {"a_given": f"{A_given:.4g}"}),
+                file=file,
+                key="dynamics.unknown",
+            )
         M = -A_given / cycle
     else:
         M = spec.constant_moment
@@ -119,11 +122,18 @@ def machine_dynamics(scene: Scene, spec: DynamicsSpec, phi0: float,
     if spec.constant_moment is not None:
         scale = max(float(cumulative_work(theta, np.abs(M_d))[-1]), 1e-300)
         if abs(net) > spec.balance_tolerance * scale:
-            raise SceneError(f"the driving and resisting works over the cycle must balance within "
-                             f"{spec.balance_tolerance:.0%} "
-                             f"(net work {net:.4g} J of {scale:.4g} J); "
-                             "remove constant_moment to find it from the cycle",
-                             file=scene.path, key="dynamics.constant_moment")
+            raise SceneError(
+                Text(
+                    "errmsg.dynamics_machine.driving_resisting_works",
+                    {
+                        "balance_tolerance": f"{spec.balance_tolerance:.0%}",
+                        "net": f"{net:.4g}",
+                        "scale": f"{scale:.4g}",
+                    },
+                ),
+                file=scene.path,
+                key="dynamics.constant_moment",
+            )
     A_d, A_c = cumulative_work(theta, M_d), cumulative_work(theta, M_c)
     dT = A_d - A_c
     drawn = np.arange(0, n + 1, m)

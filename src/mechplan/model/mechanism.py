@@ -108,6 +108,8 @@ class Drive:
     carrier: str | None = None  # cylinder: the barrel link
     guide: str | None = None    # linear drivers: the guide the rod or slider slides on
     q_range: tuple[float, float] | None = None  # linear drivers: (from, to) of a sweep (m)
+    #: a second crank (``[drive2]``, W = 2): its φ at the first driver's φ = 0 (rad, in its sense)
+    phase: float = 0.0
 
     @property
     def sense(self) -> int:
@@ -134,6 +136,13 @@ class Mechanism:
         default_factory=dict
     )  # assembly: point → (P, Q, ±1)
     sketch: dict[str, tuple[float, float]] = field(default_factory=dict)  # assembly by sketch
+    #: a second driver (W = 2): a crank whose φ2 = phase + |ω2|/|ω1|·φ1 (docs/two_inputs.md)
+    drive2: Drive | None = None
+
+    @property
+    def drivers(self) -> tuple[Drive, ...]:
+        """Every driver: ``drive``, then ``drive2`` when there is one."""
+        return (self.drive,) if self.drive2 is None else (self.drive, self.drive2)
 
     @property
     def moving(self) -> list[str]:

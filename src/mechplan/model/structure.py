@@ -105,6 +105,8 @@ class Structure:
     groups: tuple[Group | Triad, ...]
     #: a cylinder driver: (barrel, rod); its group lists the barrel and stands for both
     cylinder: tuple[str, str] | None = None
+    #: a second driving crank (W = 2): its first-class mechanism I(0,k) follows the first
+    second: str | None = None
 
     @property
     def dof(self) -> int:
@@ -116,6 +118,8 @@ class Structure:
         """Structure formula, e.g. ``I(0,1) → II(2,3) → III(4,5,6,7)``."""
         first = (f"I({self.cylinder[0]},{self.cylinder[1]})" if self.cylinder
                  else f"I({GROUND},{self.driving_link})")
+        if self.second is not None:
+            first += f", I({GROUND},{self.second})"
         parts = [first] + [g.name for g in self.groups]
         return " → ".join(parts)
 
@@ -138,11 +142,13 @@ def analyse(mech: Mechanism) -> Structure:
     barrel and the barrel joins the group it closes (boom + cylinder: II(boom, barrel)).
     """
     w = degrees_of_freedom(mech)
-    drivers = 1
+    drivers = len(mech.drivers)
     if w != drivers:
+        given = "; ".join(f"[{key}], link {d.link}"
+                          for key, d in zip(("drive", "drive2"), mech.drivers, strict=False))
         raise TopologyError(
             f"the mechanism has W = 3·{len(mech.moving)} − 2·{len(mech.pairs)} = {w} degrees of "
-            f"freedom but {drivers} driver ([drive], link {mech.drive.link}); add or remove "
+            f"freedom but {drivers} driver{'s' if drivers > 1 else ''} ({given}); add or remove "
             "links or pairs so that W equals the number of drivers", key="links")
     drive = mech.drive
     view, cylinder = mech, None
@@ -153,6 +159,10 @@ def analyse(mech: Mechanism) -> Structure:
     else:
         _check_driving_pair(mech)
         known = {GROUND, drive.link}
+    second = mech.drive2
+    if second is not None:
+        _check_second_crank(mech, second.link)
+        known.add(second.link)
     remaining = [k for k in view.moving if k not in known]
     groups: list[Group | Triad] = []
     while remaining:
@@ -167,7 +177,18 @@ def analyse(mech: Mechanism) -> Structure:
         groups.append(group)
         known.update(group.links)
         remaining = [k for k in remaining if k not in known]
-    return Structure(len(mech.moving), len(mech.pairs), 0, drive.link, tuple(groups), cylinder)
+    return Structure(len(mech.moving), len(mech.pairs), 0, drive.link, tuple(groups), cylinder,
+                     second.link if second is not None else None)
+
+
+def _check_second_crank(mech: Mechanism, link: str) -> None:
+    pairs = [p for p in mech.pairs_of(link) if p.other(link) == GROUND]
+    if link == mech.drive.link or mech.drive.linear:
+        raise TopologyError(f"the second driver {link} must be a crank other than the first "
+                            f"driver (a crank, link {mech.drive.link})", key="drive2.link")
+    if len(pairs) != 1 or pairs[0].kind is not PairKind.REVOLUTE:
+        raise TopologyError(f"the second driving link {link} must turn about one frame point "
+                            "(a crank)", key="drive2.link")
 
 
 def _check_driving_pair(mech: Mechanism) -> None:

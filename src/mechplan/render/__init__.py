@@ -16,6 +16,8 @@ from mechplan.drafting.primitives import Sheet, Text
 from mechplan.errors import DrawingError
 from mechplan.render.atomic import atomic_open, write_atomic
 
+from ..i18n import Text as Msg
+
 FORMATS: tuple[str, ...] = ("dxf", "svg", "pdf", "png")
 
 log = logging.getLogger(__name__)
@@ -68,7 +70,12 @@ def write(
     fmts = [str(f).lower().lstrip(".") for f in formats]
     unknown = [f for f in fmts if f not in FORMATS]
     if unknown or not fmts:
-        raise DrawingError(f"formats must be among {', '.join(FORMATS)} (got {list(formats)!r})")
+        raise DrawingError(
+            Msg(
+                "errmsg.render.formats_among_formats",
+                {"formats": ", ".join(FORMATS), "formats2": repr(list(formats))},
+            )
+        )
     if is_dir:
         target.mkdir(parents=True, exist_ok=True)
         paths = [target / f"{sheet.name}.{f}" for f in fmts]

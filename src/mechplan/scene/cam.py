@@ -7,7 +7,7 @@ from pathlib import Path
 
 from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
 from ..errors import SceneError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 from ..model.cam import (
     CamDrawing,
     CamSpec,
@@ -47,7 +47,7 @@ def parse_cam(text: str, file: str = "<scene>") -> CamSpec:
 def _required(top: Table, name: str) -> Table:
     t = top.table(name)
     if t is None:
-        raise top.error(name, "table is missing")
+        raise top.error(name, Text("errors.key.table_missing"))
     return t
 
 
@@ -61,32 +61,32 @@ def _follower(top: Table) -> Follower:
     if contact is Contact.ROLLER:
         roller = f.quantity("roller_radius", "length", required=True, positive=True) or 0.0
     elif f.has("roller_radius"):
-        raise f.error("roller_radius", f"is only for a roller follower (the contact is "
-                      f"{contact.value!r})")
+        raise f.error(
+            "roller_radius",
+            Text("errmsg.scene_cam.only_roller_follower", {"value": repr(contact.value)}),
+        )
     arm = pivot = 0.0
     offset: float | None = 0.0
     if motion is Motion.OSCILLATING:
         if contact is Contact.FLAT:           # the face passes through the pivot: no arm
             if f.has("arm"):
-                raise f.error("arm", "is not used by a flat-faced oscillating follower (its face "
-                                     "passes through the pivot)")
+                raise f.error("arm", Text("errmsg.scene_cam.not_used_flat"))
         else:
             arm = f.quantity("arm", "length", required=True, positive=True) or 0.0
         pivot = f.quantity("pivot_distance", "length", required=True, positive=True) or 0.0
         if f.has("offset"):
-            raise f.error("offset", "is only for a translating follower")
+            raise f.error("offset", Text("errmsg.scene_cam.only_translating_follower"))
     else:
         for k in ("arm", "pivot_distance"):
             if f.has(k):
-                raise f.error(k, "is only for an oscillating follower")
+                raise f.error(k, Text("errmsg.scene_cam.only_oscillating_follower"))
         raw = f.raw("offset", "0 mm")
         if raw == "best":
             offset = None
         else:
             offset = f.value_quantity(raw, "offset", "length")
         if contact is Contact.FLAT and offset is None:
-            raise f.error("offset", "must be a length for a flat-faced follower (got 'best'); "
-                          "the offset does not change a flat-faced follower's profile")
+            raise f.error("offset", Text("errmsg.scene_cam.length_flat_faced"))
     margin = f.quantity("face_margin", "length", 0.005, nonnegative=True) or 0.0
     return Follower(motion, contact, offset, roller, arm, pivot, margin)
 
@@ -96,45 +96,52 @@ def _motion(top: Table, follower: Follower) -> tuple[float, float, int, tuple[Ph
     m.check_keys(("stroke", "swing", "speed", "sense", "phases"))
     if follower.motion is Motion.OSCILLATING:
         if m.has("stroke"):
-            raise m.error("stroke", "is for a translating follower; give the swing of an "
-                          "oscillating follower as swing = \"20 deg\"")
+            raise m.error("stroke", Text("errmsg.scene_cam.translating_follower_give"))
         stroke = m.quantity("swing", "angle", required=True) or 0.0
         if not 0 < stroke < math.pi / 2:
-            raise m.error("swing", f"must be between 0° and 90° (got {m.raw('swing')!r})")
+            raise m.error(
+                "swing", Text("errmsg.scene_cam.between_value", {"value": repr(m.raw("swing"))})
+            )
         unit = "angle"
     else:
         if m.has("swing"):
-            raise m.error("swing", "is for an oscillating follower; give stroke = \"20 mm\"")
+            raise m.error("swing", Text("errmsg.scene_cam.oscillating_follower_give"))
         stroke = m.quantity("stroke", "length", required=True) or 0.0
         if not stroke > 0:
-            raise m.error("stroke", f"must be positive (got {m.raw('stroke')!r})")
+            raise m.error(
+                "stroke", Text("errmsg.scene_cam.positive_value2", {"value": repr(m.raw("stroke"))})
+            )
         unit = "length"
     omega = m.quantity("speed", "angular_velocity", required=True) or 0.0
     if not omega > 0:
-        raise m.error("speed", f"must be positive; give the sense with sense = \"cw\" "
-                      f"(got {m.raw('speed')!r})")
+        raise m.error(
+            "speed", Text("errmsg.scene_cam.positive_give_sense", {"value": repr(m.raw("speed"))})
+        )
     sense = 1 if m.string("sense", "ccw", choices=("ccw", "cw")) == "ccw" else -1
     raw = m.raw("phases", required=True)
     if not isinstance(raw, list) or not raw:
-        raise m.error("phases", "expected a list of phase tables ([[motion.phases]])")
+        raise m.error("phases", Text("errmsg.scene_cam.expected_list_phase"))
     phases = tuple(_phase(Table(p, f"{m.key('phases')}[{i}]", m.file), stroke, unit)
                    for i, p in enumerate(raw))
     total = sum(p.angle for p in phases)
     if abs(total - 2 * math.pi) > FULL_TURN_TOL:
-        raise m.error("phases", f"angles must sum to 360° (got {math.degrees(total):.6g}°)")
+        raise m.error(
+            "phases",
+            Text("errmsg.scene_cam.angles_sum_total", {"total": f"{math.degrees(total):.6g}"}),
+        )
     level = 0
     needs = {PhaseKind.RISE: 0, PhaseKind.FAR_DWELL: 1, PhaseKind.RETURN: 1,
              PhaseKind.NEAR_DWELL: 0}
     for p in phases:
         if needs[p.kind] != level:
-            where = "the far position (after a rise)" if needs[p.kind] else \
-                "the near position (after a return or at the start)"
-            raise SceneError(f"a {p.kind.value} must start from {where}; order the phases "
-                             "rise, far_dwell, return, near_dwell",
+            where = Text("errmsg.scene_cam.far_position") if needs[p.kind] else \
+                Text("errmsg.scene_cam.near_position")
+            raise SceneError(Text("errmsg.scene_cam.value_start_from", {"value": str(p.kind.value),
+                                                                        "where": where}),
                              file=m.file, key=p.key + ".kind")
         level = {PhaseKind.RISE: 1, PhaseKind.RETURN: 0}.get(p.kind, level)
     if level != 0:
-        raise m.error("phases", "must end at the near position: add a return")
+        raise m.error("phases", Text("errmsg.scene_cam.end_near_position"))
     return stroke, omega, sense, phases
 
 
@@ -143,35 +150,51 @@ def _phase(t: Table, stroke: float, unit: str) -> Phase:
     kind = PhaseKind(t.string("kind", required=True, choices=KINDS))
     angle = t.quantity("angle", "angle", required=True) or 0.0
     if not angle > 0:
-        raise t.error("angle", f"must be positive (got {t.raw('angle')!r})")
+        raise t.error(
+            "angle", Text("errmsg.scene_cam.positive_value", {"value": repr(t.raw("angle"))})
+        )
     moving = kind in (PhaseKind.RISE, PhaseKind.RETURN)
     if not moving:
         for k in ("law", "blend", "s", "a"):
             if t.has(k):
-                raise t.error(k, f"is not used by a {kind.value}")
+                raise t.error(
+                    k, Text("errmsg.scene_cam.not_used_value", {"value": str(kind.value)})
+                )
         return Phase(kind, angle, key=t.path)
     name = t.string("law", required=True, choices=LAWS)
     blend = 0.1
     if name == "uniform":
         blend = t.quantity("blend", "dimensionless", 0.1) or 0.0
         if not 0 < blend < 0.5:
-            raise t.error("blend", f"must be between 0 and 0.5 (got {t.raw('blend')!r})")
+            raise t.error(
+                "blend", Text("errmsg.scene_cam.between_value2", {"value": repr(t.raw("blend"))})
+            )
     elif t.has("blend"):
-        raise t.error("blend", "is only for the uniform law")
+        raise t.error("blend", Text("errmsg.scene_cam.only_uniform_law"))
     if name != "table":
         for k in ("s", "a"):
             if t.has(k):
-                raise t.error(k, "is only for law = \"table\"")
+                raise t.error(k, Text("errmsg.scene_cam.only_law_table"))
         return Phase(kind, angle, Law(name), blend, key=t.path)
     if t.has("s") == t.has("a"):
-        raise t.error("law", "a table law needs exactly one of s (displacements) or a "
-                      "(acceleration shape), equally spaced over the phase")
+        raise t.error("law", Text("errmsg.scene_cam.table_law_needs"))
     if t.has("s"):
         values = _values(t, "s", unit, 4)
         start, end = (0.0, stroke) if kind is PhaseKind.RISE else (stroke, 0.0)
         if abs(values[0] - start) > 1e-9 * stroke or abs(values[-1] - end) > 1e-9 * stroke:
-            raise t.error("s", f"must run from {start:g} to {end:g} (SI) over a {kind.value} "
-                          f"(got {values[0]:g} … {values[-1]:g})")
+            raise t.error(
+                "s",
+                Text(
+                    "errmsg.scene_cam.run_from_start",
+                    {
+                        "start": f"{start:g}",
+                        "end": f"{end:g}",
+                        "value": str(kind.value),
+                        "values": f"{values[0]:g}",
+                        "values2": f"{values[-1]:g}",
+                    },
+                ),
+            )
         return Phase(kind, angle, Law.TABLE_S, table=tuple(values), key=t.path)
     values = _values(t, "a", "dimensionless", 3)
     return Phase(kind, angle, Law.TABLE_A, table=tuple(values), key=t.path + ".a")
@@ -180,7 +203,8 @@ def _phase(t: Table, stroke: float, unit: str) -> Phase:
 def _values(t: Table, name: str, dimension: str, least: int) -> list[float]:
     raw = t.raw(name)
     if not isinstance(raw, list) or len(raw) < least:
-        raise t.error(name, f"expected a list of at least {least} values (got {raw!r})")
+        raise t.error(name, Text("errmsg.scene_cam.expected_list_least", {"least": str(least),
+                                                                          "raw": repr(raw)}))
     return [t.value_quantity(v, f"{name}[{i}]", dimension) for i, v in enumerate(raw)]
 
 
@@ -193,7 +217,7 @@ def _limits(top: Table, follower: Follower) -> Limits:
     ret = t.quantity("pressure_angle_return", "angle", math.radians(70.0))
     for k, v in (("pressure_angle_rise", rise), ("pressure_angle_return", ret)):
         if v is None or not 0 < v < math.pi / 2:
-            raise t.error(k, f"must be between 0° and 90° (got {t.raw(k)!r})")
+            raise t.error(k, Text("errmsg.scene_cam.between_k", {"k": repr(t.raw(k))}))
     base = t.quantity("base_radius", "length", positive=True)
     rho = t.quantity("min_curvature_radius", "length", 0.0, nonnegative=True) or 0.0
     return Limits(rise or 0.0, ret or 0.0, base, rho)
@@ -206,7 +230,7 @@ def _drawing(top: Table) -> CamDrawing:
         tb.check_keys(TITLE_BLOCK_FIELDS)
         for k, v in tb.data.items():
             if isinstance(v, (dict, list)) or "\n" in str(v):
-                raise tb.error(k, f"expected one line of text (got {v!r})")
+                raise tb.error(k, Text("errmsg.scene_cam.expected_one_line", {"v": repr(v)}))
             fields[k] = str(v)
     t = top.table("drawing")
     if t is None:
@@ -217,12 +241,12 @@ def _drawing(top: Table) -> CamDrawing:
     for k, default in (("ray_step", d.ray_step), ("table_step", d.table_step)):
         v = t.quantity(k, "angle", default) or default
         if not math.radians(0.5) <= v <= math.radians(90):
-            raise t.error(k, f"must be between 0.5° and 90° (got {t.raw(k)!r})")
+            raise t.error(k, Text("errmsg.scene_cam.between_k2", {"k": repr(t.raw(k))}))
         steps[k] = v
     chord = t.quantity("chord_error", "length", d.chord_error, positive=True) or d.chord_error
     if not 1e-8 <= chord <= 1e-3:
         raise t.error("chord_error",
-                      f"must be between 0.01 µm and 1 mm (got {t.raw('chord_error')!r})")
+                      Text("errmsg.scene_cam.between_m_mm", {"value": repr(t.raw('chord_error'))}))
     return CamDrawing(sheet=t.string("sheet", "A1", choices=SHEETS) or "A1",
                       standard=t.string("standard", "iso", choices=STANDARDS) or "iso",
                       ray_step=steps["ray_step"], table_step=steps["table_step"],
@@ -241,8 +265,18 @@ def _dynamics(top: Table, follower: Follower, omega: float) -> FollowerDynamics 
                   "follower_stiffness", "damping_ratio", other))
     if t.has(other):
         example = '"0.002 kg*m^2"' if swinging else '"0.5 kg"'
-        raise t.error(other, f"is for {'a translating' if swinging else 'an oscillating'} "
-                             f"follower; give {inertia} = {example}")
+        raise t.error(
+            other,
+            Text(
+                "errmsg.scene_cam.value_follower_give",
+                {
+                    "value": Text("errmsg.scene_cam.a_translating" if swinging
+                                  else "errmsg.scene_cam.an_oscillating"),
+                    "inertia": str(inertia),
+                    "example": str(example),
+                },
+            ),
+        )
     mass = t.quantity(inertia, "inertia" if swinging else "mass", required=True, positive=True)
     force = "moment" if swinging else "force"
     stiffness = t.quantity("stiffness", "moment" if swinging else "stiffness", nonnegative=True)
@@ -252,15 +286,23 @@ def _dynamics(top: Table, follower: Follower, omega: float) -> FollowerDynamics 
     load = t.quantity("load", force, 0.0)
     speed_max = t.quantity("speed_max", "angular_velocity", positive=True)
     if speed_max is not None and speed_max < omega:
-        raise t.error("speed_max", f"must be at least the cam speed {omega:.6g} rad/s "
-                                   f"(got {t.raw('speed_max')!r})")
+        raise t.error(
+            "speed_max",
+            Text(
+                "errmsg.scene_cam.least_cam_speed",
+                {"omega": f"{omega:.6g}", "value": repr(t.raw("speed_max"))},
+            ),
+        )
     margin = t.quantity("margin", force, 0.0, nonnegative=True)
     k_f = t.quantity("follower_stiffness", "moment" if swinging else "stiffness", positive=True)
     zeta = t.quantity("damping_ratio", "dimensionless", 0.0, nonnegative=True) or 0.0
     if not zeta < 1:
-        raise t.error("damping_ratio", f"must be below 1 (got {t.raw('damping_ratio')!r})")
+        raise t.error(
+            "damping_ratio",
+            Text("errmsg.scene_cam.below_value", {"value": repr(t.raw("damping_ratio"))}),
+        )
     if t.has("damping_ratio") and k_f is None:
-        raise t.error("damping_ratio", "is for the elastic follower: give follower_stiffness")
+        raise t.error("damping_ratio", Text("errmsg.scene_cam.elastic_follower_give"))
     return FollowerDynamics(mass=mass or 0.0, stiffness=stiffness, preload=preload,
                             damping=damping or 0.0, load=load or 0.0, speed_max=speed_max,
                             margin=margin or 0.0, follower_stiffness=k_f, damping_ratio=zeta)

@@ -42,7 +42,7 @@ def parse_toml(text: str, file: str) -> dict[str, Any]:
     except tomllib.TOMLDecodeError as exc:
         raise SceneError(Text("errors.toml.invalid", {"reason": str(exc)}), file=file) from None
     except toml.TomlLimitError as exc:
-        raise SceneError(str(exc), file=file, key=exc.key) from None
+        raise SceneError(exc.args[0], file=file, key=exc.key) from None
 
 
 def scene_kind(data: dict[str, Any], file: str) -> str:

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import SceneError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 from ..model.engine import (
     ArticulatedSpec,
     CylinderSpec,
@@ -27,13 +27,17 @@ from ..model.engine import (
     RodMasses,
     ThermalSpec,
 )
+from ..model.engine_balance import BalanceSpec
+from ..model.engine_thermal import Cycle
 from ..units import registry
 from .document import parse_toml
+from .engine_balance import parse_balance
+from .engine_thermal import parse_thermal
 from .reader import Table
 from .spec import DrawingSpec, Scene
 
 TOP_KEYS = ("kind", "title", "language", "engine", "masses", "indicator", "articulated", "drawing",
-            "title_block", "output")
+            "title_block", "output", "balance", "thermal")
 
 
 @dataclass(frozen=True)
@@ -44,6 +48,8 @@ class EngineScene:
     drawing: DrawingSpec
     path: str
     linkage: Scene | None = None
+    balance: BalanceSpec | None = None
+    cycle: Cycle | None = None
 
 
 def parse_engine_scene(text: str, file: str = "<scene>", *,
@@ -111,8 +117,16 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
     if abs(math.radians(cycle) / step - round(math.radians(cycle) / step)) > 1e-6:
         raise e.error("table_step", f"must divide the cycle of {cycle:g}° (got "
                       f"{math.degrees(step):g}°)")
-    ind = _indicator(top.table("indicator", required=True), strokes,  # type: ignore[arg-type]
-                     file, data_dir)
+    cycle = None
+    th = top.table("thermal")
+    if th is not None:
+        if top.has("indicator"):
+            raise top.error("indicator", Text("cycle.error.exclusive"))
+        cycle, ind = parse_thermal(th, strokes=int(strokes), cylinders=n_cyl, speed=omega,
+                                   p0=p0, stroke_bore=2.0 * R / bore)
+    else:
+        ind = _indicator(top.table("indicator", required=True),  # type: ignore[arg-type]
+                         strokes, file, data_dir)
     out = top.table("output")
     csv_path = None
     if out is not None:
@@ -125,7 +139,11 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
                       indicator=ind, articulated=articulated, grid=grid, table_step=step,
                       language=language, csv=csv_path)
     linkage = articulated_linkage(spec, file) if articulated is not None else None
-    return EngineScene(spec, _drawing(top, 1), file, linkage)
+    bal = top.table("balance")
+    n_pins = 1 if layout is Layout.ARTICULATED else (
+        (n_cyl + 1) // 2 if layout is Layout.V else n_cyl)
+    balance = parse_balance(bal, n_pins) if bal is not None else None
+    return EngineScene(spec, _drawing(top, 1), file, linkage, balance, cycle)
 
 
 def _rod_length(e: Table, R: float) -> float:

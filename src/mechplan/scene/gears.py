@@ -5,7 +5,7 @@ from __future__ import annotations
 from typing import Any
 
 from ..errors import SceneError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text, join
 from ..model.gears import GearScene, OrdinarySpec, PairSpec, PlanetarySpec, Scheme, ShiftRule
 from .document import parse_toml
 from .reader import Table
@@ -19,9 +19,10 @@ def _int(t: Table, name: str, default: int | None = None, lo: int | None = None)
     if value is None:
         return None
     if isinstance(value, bool) or not isinstance(value, int):
-        raise t.error(name, f"must be a whole number (got {value!r})")
+        raise t.error(name, Text("errmsg.scene_gears.whole_number_value", {"value": repr(value)}))
     if lo is not None and value < lo:
-        raise t.error(name, f"must be at least {lo} (got {value})")
+        raise t.error(name, Text("errmsg.scene_gears.least_lo_value", {"lo": str(lo),
+                                                                       "value": str(value)}))
     return int(value)
 
 
@@ -31,17 +32,25 @@ def _ints(t: Table, name: str, count: tuple[int, ...], lo: int = 1) -> tuple[int
         return None
     if (not isinstance(value, list) or len(value) not in count
             or any(isinstance(v, bool) or not isinstance(v, int) for v in value)):
-        raise t.error(name, f"must be a list of {' or '.join(map(str, count))} whole numbers "
-                      f"(got {value!r})")
+        raise t.error(
+            name,
+            Text(
+                "errmsg.scene_gears.list_str_whole",
+                {"str": join(count, " or "), "value": repr(value)},
+            ),
+        )
     if any(v < lo for v in value):
-        raise t.error(name, f"every number must be at least {lo} (got {value!r})")
+        raise t.error(name, Text("errmsg.scene_gears.every_number_least", {"lo": str(lo),
+                                                                           "value": repr(value)}))
     return tuple(int(v) for v in value)
 
 
 def _module(t: Table, name: str = "module") -> float:
     m = t.quantity(name, "length", required=True) or 0.0
     if not m > 0:
-        raise t.error(name, f"must be positive (got {t.data[name]!r}); a module such as \"2 mm\"")
+        raise t.error(
+            name, Text("errmsg.scene_gears.positive_data_module", {"data": repr(t.data[name])})
+        )
     return m
 
 
@@ -52,7 +61,13 @@ def _planetary(t: Table) -> PlanetarySpec:
                   "mesh_efficiency", "output_torque", "speeds"))
     name = t.string("scheme", required=True)
     if name not in SCHEMES:
-        raise t.error("scheme", f"must be one of {', '.join(SCHEMES)} (got {name!r})")
+        raise t.error(
+            "scheme",
+            Text(
+                "errmsg.scene_gears.one_schemes_name",
+                {"schemes": ", ".join(SCHEMES), "name": repr(name)},
+            ),
+        )
     scheme = Scheme(name)
     a, b, h = scheme.links
     speeds = _speeds(t, scheme) if t.has("speeds") else None
@@ -65,43 +80,51 @@ def _planetary(t: Table) -> PlanetarySpec:
         fixed, inp, out = "", speeds[0][0], free
     for key, value in (("fixed", fixed), ("input", inp), ("output", out)):
         if speeds is None and value not in scheme.links:
-            raise t.error(key, f"must be one of the scheme's links {', '.join(scheme.links)} "
-                               f"(got {value!r})")
+            raise t.error(
+                key,
+                Text(
+                    "errmsg.scene_gears.one_scheme_s",
+                    {"links": ", ".join(scheme.links), "value": repr(value)},
+                ),
+            )
     if speeds is None and len({fixed, inp, out}) != 3:
-        raise t.error("fixed", f"fixed, input and output must be three different links "
-                               f"(got {fixed!r}, {inp!r}, {out!r})")
+        raise t.error("fixed", Text("errmsg.scene_gears.fixed_input_output", {"fixed": repr(fixed),
+                                                                              "inp": repr(inp),
+                                                                              "out": repr(out)}))
     ratio = t.quantity("ratio", "dimensionless", required=True)
     if ratio is None or fixed is None or inp is None or out is None:   # required: never None here
-        raise t.error("ratio", "is missing")
+        raise t.error("ratio", Text("errors.key.missing"))
     if ratio == 0:
-        raise t.error("ratio", "must not be zero (got 0)")
+        raise t.error("ratio", Text("errmsg.scene_gears.not_zero"))
     deviation = t.quantity("deviation", "dimensionless", 0.02, nonnegative=True)
     planets = _int(t, "planets", 3, lo=1)
     if t.has("module") and t.has("modules"):
-        raise t.error("modules", "give either module or modules, not both")
+        raise t.error("modules", Text("errmsg.scene_gears.give_either_module"))
     if t.has("modules"):
         raw = t.raw("modules")
         if not isinstance(raw, list) or len(raw) != 2:
-            raise t.error("modules", f"must be two modules [m12, m34] (got {raw!r})")
+            raise t.error("modules", Text("errmsg.scene_gears.two_modules_m", {"raw": repr(raw)}))
         mods = tuple(t.value_quantity(v, f"modules[{j}]", "length") for j, v in enumerate(raw))
         if not all(m > 0 for m in mods):
-            raise t.error("modules", f"must be positive (got {raw!r})")
+            raise t.error("modules", Text("errmsg.scene_gears.positive_raw", {"raw": repr(raw)}))
         modules = (mods[0], mods[1])
     else:
         m = _module(t)
         modules = (m, m)
     teeth = _ints(t, "teeth", (2,), lo=1) or (17, 120)
     if teeth[0] > teeth[1]:
-        raise t.error("teeth", f"must be [smallest, largest] (got {list(teeth)})")
+        raise t.error(
+            "teeth", Text("errmsg.scene_gears.smallest_largest_teeth", {"teeth": str(list(teeth))})
+        )
     given = _ints(t, "given", (len(scheme.gear_names),), lo=1)
     speed = t.quantity("input_speed", "angular_velocity", 1.0)
     assert planets is not None and deviation is not None and speed is not None
     if not speed != 0:
-        raise t.error("input_speed", "must not be zero")
+        raise t.error("input_speed", Text("errmsg.scene_gears.not_zero2"))
     extra = _shifted_and_loaded(t)
     if speeds is not None:
         if given is None:
-            raise t.error("given", "is missing: a differential (speeds) needs its tooth numbers")
+            raise t.error("given", Text("errmsg.scene_gears.missing_differential_speeds"))
         extra["speeds"] = speeds
     return PlanetarySpec(**extra, scheme=scheme, fixed=fixed, input=inp, output=out, ratio=ratio,
                          deviation=deviation, planets=planets, modules=modules,
@@ -117,17 +140,23 @@ def _speeds(t: Table, scheme: Scheme) -> tuple[tuple[str, float], tuple[str, flo
     """``speeds = {"1" = "1 rad/s", "4" = "-0.5 rad/s"}``: two basic links of a differential."""
     raw = t.raw("speeds")
     if not isinstance(raw, dict) or len(raw) != 2:
-        raise t.error("speeds", f"must give two of the links {', '.join(scheme.links)} with their "
-                                f"angular velocities, e.g. {{\"1\" = \"1 rad/s\", \"4\" = "
-                                f"\"-0.5 rad/s\"}} (got {raw!r})")
+        raise t.error(
+            "speeds",
+            Text(
+                "errmsg.scene_gears.give_two_links",
+                {"links": ", ".join(scheme.links), "raw": repr(raw)},
+            ),
+        )
     for key in ("fixed", "input", "output", "ratio"):
         if t.has(key):
-            raise t.error(key, "is not used by a differential (speeds): remove it")
+            raise t.error(key, Text("errmsg.scene_gears.not_used_differential"))
     out = []
     for link, value in raw.items():
         if link not in scheme.links:
-            raise t.error(f"speeds.{link}", f"must be one of the scheme's links "
-                                            f"{', '.join(scheme.links)}")
+            raise t.error(
+                f"speeds.{link}",
+                Text("errmsg.scene_gears.one_scheme_s2", {"links": ", ".join(scheme.links)}),
+            )
         out.append((str(link), t.value_quantity(value, f"speeds.{link}", "angular_velocity")))
     return out[0], out[1]
 
@@ -145,7 +174,10 @@ def _shifted_and_loaded(t: Table) -> dict[str, Any]:
             out["centre_distance"] = a_w
     alpha = t.quantity("pressure_angle", "angle", 0.3490658503988659, positive=True)
     if alpha is not None and not alpha < 0.7854:
-        raise t.error("pressure_angle", f"must be below 45 deg (got {t.data['pressure_angle']!r})")
+        raise t.error(
+            "pressure_angle",
+            Text("errmsg.scene_gears.below_deg_data", {"data": repr(t.data["pressure_angle"])}),
+        )
     out["alpha"] = alpha
     out["max_shift_sum"] = t.quantity("max_shift_sum", "dimensionless", 2.0, nonnegative=True)
     if t.has("mesh_efficiency"):
@@ -153,8 +185,9 @@ def _shifted_and_loaded(t: Table) -> dict[str, Any]:
         values = raw if isinstance(raw, list) else [raw, raw]
         if (len(values) != 2 or any(isinstance(v, bool) or not isinstance(v, (int, float))
                                     or not 0 < v <= 1 for v in values)):
-            raise t.error("mesh_efficiency", f"must be a number in (0, 1] or two of them [η12, "
-                                             f"η34] (got {raw!r})")
+            raise t.error(
+                "mesh_efficiency", Text("errmsg.scene_gears.number_two_them", {"raw": repr(raw)})
+            )
         out["mesh_efficiency"] = (float(values[0]), float(values[1]))
     if t.has("output_torque"):
         out["output_torque"] = t.quantity("output_torque", "moment", nonnegative=True)
@@ -166,7 +199,7 @@ def _ordinary(t: Table) -> OrdinarySpec:
     teeth = _ints(t, "teeth", (2,))
     ratio = t.quantity("ratio", "dimensionless", positive=True)
     if (teeth is None) == (ratio is None):
-        raise t.error("teeth", "give either teeth = [z5, z6] or ratio (the |u| wanted)")
+        raise t.error("teeth", Text("errmsg.scene_gears.give_either_teeth"))
     return OrdinarySpec(module=_module(t), teeth=(teeth[0], teeth[1]) if teeth else None,
                         ratio=ratio)
 
@@ -177,25 +210,32 @@ def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, i
                   "shift_rule", "z_min"))
     teeth = _ints(t, "teeth", (2,)) or z_from_ordinary
     if teeth is None and ordinary is None:
-        raise t.error("teeth", "is missing (z1, z2 of the pair)")
+        raise t.error("teeth", Text("errmsg.scene_gears.missing_z_z"))
     teeth = teeth or (0, 0)            # 0, 0: the ordinary stage's gears once they are chosen
     if t.has("module"):
         module = _module(t)
     elif ordinary is not None:
         module = ordinary.module
     else:
-        raise t.error("module", "is missing (a length such as \"4 mm\")")
+        raise t.error("module", Text("errmsg.scene_gears.missing_length_such"))
     alpha = t.quantity("pressure_angle", "angle", 0.3490658503988659, positive=True)
     assert alpha is not None
     if not alpha < 0.7854:
-        raise t.error("pressure_angle", f"must be below 45 deg (got {t.data['pressure_angle']!r})")
+        raise t.error(
+            "pressure_angle",
+            Text("errmsg.scene_gears.below_deg_data2", {"data": repr(t.data["pressure_angle"])}),
+        )
     rule = ShiftRule(t.string("shift_rule", "given", choices=RULES))
     shifts_raw = t.raw("shifts", [0.0, 0.0])
     if (not isinstance(shifts_raw, list) or len(shifts_raw) != 2
             or any(isinstance(v, bool) or not isinstance(v, (int, float)) for v in shifts_raw)):
-        raise t.error("shifts", f"must be two numbers [x1, x2] (got {shifts_raw!r})")
+        raise t.error(
+            "shifts", Text("errmsg.scene_gears.two_numbers_x", {"shifts_raw": repr(shifts_raw)})
+        )
     if t.has("shifts") and rule is not ShiftRule.GIVEN:
-        raise t.error("shifts", f"are chosen by shift_rule = {rule.value!r}; remove one of them")
+        raise t.error(
+            "shifts", Text("errmsg.scene_gears.are_chosen_shift", {"value": repr(rule.value)})
+        )
     return PairSpec(module=module, z1=teeth[0], z2=teeth[1], alpha=alpha,
                     addendum=t.quantity("addendum", "dimensionless", 1.0, positive=True) or 1.0,
                     clearance=t.quantity("clearance", "dimensionless", 0.25,
@@ -214,7 +254,7 @@ def parse_gears(text: str, file: str = "<scene>") -> GearScene:
     o = top.table("ordinary")
     q = top.table("pair")
     if p is None and q is None:
-        raise SceneError("a gear scene needs a [planetary] or a [pair] table", file=file)
+        raise SceneError(Text("errmsg.scene_gears.gear_scene_needs"), file=file)
     planetary = _planetary(p) if p else None
     ordinary = _ordinary(o) if o else None
     pair = None

@@ -29,7 +29,7 @@ from .textbook import parse_textbook
 
 TOP_KEYS = ("kind", "title", "language", "ground", "links", "drive", "assembly", "positions",
             "analysis", "gravity", "loads", "friction", "drawing", "title_block", "description",
-            "dynamics", "answers", "centres")
+            "dynamics", "answers", "centres", "drive2")
 LINK_KEYS = ("name", "lengths", "side", "points", "slides", "guides", "guide", "mass", "centre",
              "center", "J", "inertia")
 #: scale-factor keys of [drawing.scales] and their dimensions: each plan's, and the moments'
@@ -59,8 +59,10 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
     pairs = _pairs(top, links, guides)
     drive = _drive(top, links, guides, pairs)
     sides, sketch, assembly_phi = _assembly(top, links, drive)
+    from .second_driver import second_drive
+
     mech = Mechanism(links=links, pairs=tuple(pairs), guides=guides, drive=drive, sides=sides,
-                     sketch=sketch)
+                     sketch=sketch, drive2=second_drive(top, links, guides, pairs, drive))
     try:
         analyse(mech)
     except TopologyError as exc:
@@ -296,6 +298,12 @@ def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
     if kind != "crank":
         return linear_drive(d, DriverKind(kind), links, guides, pairs)
     d.check_keys(("kind", "link", "speed", "omega", "sense", "from", "angle", "epsilon"))
+    return crank_drive(d, links, guides, pairs)
+
+
+def crank_drive(d: Table, links: dict[str, Link], guides: dict[str, Guide],
+                pairs: list[Pair]) -> Drive:
+    """A crank named by a drive table (``[drive]``, ``[drive2]``) with its speed and sense."""
     link = d.string("link", required=True)
     assert link is not None
     if link not in links or link == GROUND:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import itertools
 import math
 
+from ..i18n import Text
 from ..model.loads import (
     FrictionSpec,
     Gravity,
@@ -34,9 +35,10 @@ def masses_of(top: Table, links: dict[str, Link]) -> dict[str, MassSpec]:
             continue
         if isinstance(centre_raw, dict):
             if len(centre_raw) != 1:
-                raise t.error("centre", "expected one point, "
-                              "e.g. centre = { S2 = \"midpoint B C\" }"
-                              f" (got {centre_raw!r})")
+                raise t.error(
+                    "centre",
+                    Text("errmsg.scene_loads.expected_one_point", {"centre_raw": repr(centre_raw)}),
+                )
             centre = next(iter(centre_raw))
         elif isinstance(centre_raw, str):
             centre = centre_raw
@@ -45,12 +47,20 @@ def masses_of(top: Table, links: dict[str, Link]) -> dict[str, MassSpec]:
         else:
             raise t.error(
                 "centre",
-                'a link with a mass needs its centre of mass, e.g. centre = "S2" '
-                'or centre = { S2 = "midpoint B C" }',
+                Text("errmsg.scene_loads.link_mass_needs"),
             )
         if centre not in links[lid].points:
-            raise t.error("centre", f"point {centre!r} is not on link {lid} (it has "
-                          f"{', '.join(links[lid].points)})")
+            raise t.error(
+                "centre",
+                Text(
+                    "errmsg.scene_loads.point_centre_not",
+                    {
+                        "centre": repr(centre),
+                        "lid": str(lid),
+                        "points": ", ".join(links[lid].points),
+                    },
+                ),
+            )
         masses[lid] = MassSpec(lid, mass or 0.0, centre, inertia or 0.0)
     return masses
 
@@ -62,7 +72,7 @@ def gravity_of(top: Table) -> Gravity:
     t.check_keys(("g", "direction", "enabled"))
     enabled = t.raw("enabled", True)
     if not isinstance(enabled, bool):
-        raise t.error("enabled", "expected true or false")
+        raise t.error("enabled", Text("errmsg.scene_loads.expected_true_false"))
     g = t.quantity("g", "acceleration", 9.81, nonnegative=True) or 0.0
     direction = t.string("direction", "-y") or "-y"
     axes = {"-y": (0.0, -1.0), "+y": (0.0, 1.0), "y": (0.0, 1.0), "-x": (-1.0, 0.0),
@@ -79,7 +89,7 @@ def loads_of(top: Table, links: dict[str, Link], guides: dict[str, Guide],
            masses: dict[str, MassSpec]) -> tuple[LoadSpec, ...]:
     raw = top.raw("loads", [])
     if not isinstance(raw, list):
-        raise top.error("loads", "expected [[loads]] entries")
+        raise top.error("loads", Text("errmsg.scene_loads.expected_loads_entries"))
     out: list[LoadSpec] = []
     for i, entry in enumerate(raw):
         t = Table(entry, f"loads[{i}]", top.file)
@@ -91,20 +101,23 @@ def _point_link(t: Table, links: dict[str, Link], point: str, link: str | None) 
     owners = [k for k, lk in links.items() if point in lk.points and k != GROUND]
     if link is not None:
         if link not in links or link == GROUND:
-            raise t.error("link", f"unknown moving link {link!r}")
+            raise t.error(
+                "link", Text("errmsg.scene_loads.unknown_moving_link", {"link": repr(link)})
+            )
         if point not in links[link].points:
-            raise t.error("point", f"point {point!r} is not on link {link}")
+            raise t.error("point", Text("errmsg.scene_loads.point_point_not", {"point": repr(point),
+                                                                               "link": str(link)}))
         return link
     if not owners:
-        raise t.error("point", f"unknown point {point!r} (no moving link carries it)")
+        raise t.error(
+            "point", Text("errmsg.scene_loads.unknown_point_point", {"point": repr(point)})
+        )
     return owners[-1]
 
 
 def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpec:
     if "force" in t.data:
-        raise t.error("force", "unknown key; a load of type = \"force\" takes vector = "
-                      "[\"0 N\", \"-800 N\"], or magnitude = \"800 N\" with angle = \"90 deg\" "
-                      "or towards = \"A\" (see docs/reference.md)")
+        raise t.error("force", Text("errmsg.scene_loads.unknown_key_load"))
     t.check_keys(("type", "kind", "link", "point", "vector", "magnitude", "angle", "towards",
                   "toward", "pressure", "bore", "moment", "against", "table", "name", "along",
                   "between", "links", "stiffness", "free_length", "preload", "rod",
@@ -112,14 +125,18 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     kinds = (*(k.value for k in LoadKind), "torque")
     kind_s = t.string("type", t.string("kind"), choices=kinds)
     if kind_s is None:
-        raise t.error("type", f"is missing; one of {', '.join(kinds)}")
+        raise t.error(
+            "type", Text("errmsg.scene_loads.missing_one_kinds", {"kinds": ", ".join(kinds)})
+        )
     kind = LoadKind.MOMENT if kind_s == "torque" else LoadKind(kind_s)
     _only_own_keys(t, kind_s)
     link = t.string("link")
     name = t.string("name")
     if kind is LoadKind.MOMENT:
         if link is None or link not in links or link == GROUND:
-            raise t.error("link", f"a moment acts on a moving link; unknown link {link!r}")
+            raise t.error(
+                "link", Text("errmsg.scene_loads.moment_acts_moving", {"link": repr(link)})
+            )
         key = "torque" if t.has("torque") else "moment"
         return LoadSpec(kind, link, moment=t.quantity(key, "moment", required=True), key=t.path,
                         name=name)
@@ -130,19 +147,24 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     owner = _point_link(t, links, point, link)
     towards = t.string("towards") or t.string("toward")
     if towards is not None and not any(towards in lk.points for lk in links.values()):
-        raise t.error("towards", f"unknown point {towards!r}")
+        raise t.error(
+            "towards", Text("errmsg.scene_loads.unknown_point_towards", {"towards": repr(towards)})
+        )
     if towards is not None and towards == point:
-        raise t.error("towards", f"a load at {point} cannot point towards {point} itself; name "
-                      "another point on its line of action")
+        raise t.error(
+            "towards",
+            Text(
+                "errmsg.scene_loads.load_point_cannot", {"point": str(point), "point2": str(point)}
+            ),
+        )
     if kind is LoadKind.FORCE and t.has("along"):
         along = t.raw("along")
         if (not isinstance(along, list) or len(along) != 2
                 or not all(isinstance(x, str) for x in along) or along[0] == along[1]):
-            raise t.error("along", 'expected two different points, e.g. along = ["B", "C"]: the '
-                          "force acts along B→C turned by 'angle'")
+            raise t.error("along", Text("errmsg.scene_loads.expected_two_different2"))
         for q in along:
             if not any(q in lk.points for lk in links.values()):
-                raise t.error("along", f"unknown point {q!r}")
+                raise t.error("along", Text("errmsg.scene_loads.unknown_point_q", {"q": repr(q)}))
         mag = t.quantity("magnitude", "force", required=True)
         return LoadSpec(kind, owner, point, magnitude=mag,
                         angle=t.quantity("angle", "angle", 0.0), along=(along[0], along[1]),
@@ -151,7 +173,7 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
         if t.has("vector"):
             v = t.raw("vector")
             if not isinstance(v, list) or len(v) != 2:
-                raise t.error("vector", "expected [Fx, Fy] with units, e.g. [\"0 N\", \"-100 N\"]")
+                raise t.error("vector", Text("errmsg.scene_loads.expected_fx_fy"))
             vec = (
                 t.value_quantity(v[0], "vector", "force"),
                 t.value_quantity(v[1], "vector", "force"),
@@ -159,18 +181,18 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
             return LoadSpec(kind, owner, point, vector=vec, key=t.path)
         mag = t.quantity("magnitude", "force", required=True, nonnegative=True)
         if towards is None and not t.has("angle"):
-            raise t.error(None, "a force needs 'vector', or 'magnitude' with 'angle' or 'towards'")
+            raise t.error(None, Text("errmsg.scene_loads.force_needs_vector"))
         return LoadSpec(kind, owner, point, magnitude=mag, angle=t.quantity("angle", "angle"),
                         towards=towards, key=t.path)
     if links[owner].slides_on is None:
-        raise t.error("point", f"a {kind.value} load acts on a slider along its guide; link "
-                      f"{owner} does not slide")
+        raise t.error("point", Text("errmsg.scene_loads.value_load_acts", {"value": str(kind.value),
+                                                                           "owner": str(owner)}))
     if towards is None:
-        raise t.error("towards", "give the sense along the cylinder axis, e.g. towards = \"A\"")
+        raise t.error("towards", Text("errmsg.scene_loads.give_sense_along"))
     if kind is LoadKind.PRESSURE:
         if not t.has("bore"):
             raise t.error(
-                "bore", 'a pressure needs the piston\'s bore diameter, e.g. bore = "100 mm"'
+                "bore", Text("errmsg.scene_loads.pressure_needs_piston")
             )
         return LoadSpec(
             kind,
@@ -184,20 +206,25 @@ def _load(t: Table, links: dict[str, Link], guides: dict[str, Guide]) -> LoadSpe
     against = t.string("against", "crank_angle", choices=("crank_angle", "displacement"))
     rows = t.raw("table", required=True)
     if not isinstance(rows, list) or len(rows) < 2:
-        raise t.error("table", "expected at least two rows [x, F]")
+        raise t.error("table", Text("errmsg.scene_loads.expected_least_two"))
     xdim = "angle" if against == "crank_angle" else "length"
     parsed = []
     for j, row in enumerate(rows):
         if not isinstance(row, list) or len(row) != 2:
-            raise t.error(f"table[{j}]", "expected a row [x, F]")
+            raise t.error(f"table[{j}]", Text("errmsg.scene_loads.expected_row_x"))
         parsed.append((t.value_quantity(row[0], f"table[{j}]", xdim),
                        t.value_quantity(row[1], f"table[{j}]", "force")))
     xs = [r[0] for r in parsed]
     if any(b <= a for a, b in itertools.pairwise(xs)):
-        raise t.error("table", "the first column must increase strictly")
+        raise t.error("table", Text("errmsg.scene_loads.first_column_increase"))
     if against == "crank_angle" and xs[-1] - xs[0] > 4 * math.pi + 1e-9:
-        raise t.error("table", "a table against crank angle spans at most two crank turns "
-                      f"(720°, a four-stroke cycle; got {math.degrees(xs[-1] - xs[0]):g}°)")
+        raise t.error(
+            "table",
+            Text(
+                "errmsg.scene_loads.table_against_crank",
+                {"value": f"{math.degrees(xs[-1] - xs[0]):g}"},
+            ),
+        )
     return LoadSpec(kind, owner, point, towards=towards, against=against, table=tuple(parsed),
                     key=t.path)
 
@@ -212,32 +239,50 @@ _OWN_KEYS = {"along": ("force",), "torque": ("torque", "moment"),
 def _only_own_keys(t: Table, kind: str) -> None:
     for key, kinds in _OWN_KEYS.items():
         if t.has(key) and kind not in kinds:
-            raise t.error(key, f"is not a key of a load of type {kind!r} (it belongs to "
-                          f"{' and '.join(kinds)}; see docs/forces.md)")
+            raise t.error(
+                key,
+                Text(
+                    "errmsg.scene_loads.not_key_load",
+                    {"kind": repr(kind), "kinds": " and ".join(kinds)},
+                ),
+            )
     if kind in ("spring", "cylinder"):
         for key in ("point", "link", "vector", "magnitude", "angle", "towards", "toward",
                     "moment", "table", "against") + (("pressure", "bore") if kind == "spring"
                                                       else ()):
             if t.has(key):
-                raise t.error(key, f"is not a key of a {kind}; it acts between two points: "
-                              'between = ["D", "E"] (see docs/forces.md)')
+                raise t.error(key, Text("errmsg.scene_loads.not_key_kind", {"kind": str(kind)}))
 
 
 def _end_link(t: Table, links: dict[str, Link], point: str, link: str | None, j: int) -> str:
     """The link carrying one end of a spring or cylinder (``"0"``: the frame)."""
     if link is not None:
         if link not in links:
-            raise t.error(f"links[{j}]", f"unknown link {link!r}")
+            raise t.error(
+                f"links[{j}]", Text("errmsg.scene_loads.unknown_link_link", {"link": repr(link)})
+            )
         if point not in links[link].points:
-            raise t.error(f"links[{j}]", f"point {point!r} is not on link {link}")
+            raise t.error(
+                f"links[{j}]",
+                Text(
+                    "errmsg.scene_loads.point_point_not2", {"point": repr(point), "link": str(link)}
+                ),
+            )
         return link
     owners = [k for k, lk in links.items() if point in lk.points]
     if not owners:
-        raise t.error(f"between[{j}]", f"unknown point {point!r}")
+        raise t.error(
+            f"between[{j}]", Text("errmsg.scene_loads.unknown_point_point2", {"point": repr(point)})
+        )
     moving = [k for k in owners if k != GROUND]
     if len(moving) > 1:
-        raise t.error("links", f"point {point!r} is on links {', '.join(moving)}; say which one "
-                      'carries the end, e.g. links = ["2", "0"]')
+        raise t.error(
+            "links",
+            Text(
+                "errmsg.scene_loads.point_point_links",
+                {"point": repr(point), "moving": ", ".join(moving)},
+            ),
+        )
     return moving[0] if moving else GROUND
 
 
@@ -246,15 +291,19 @@ def _two_point(t: Table, kind: LoadKind, links: dict[str, Link], name: str | Non
     between = t.raw("between", required=True)
     if (not isinstance(between, list) or len(between) != 2
             or not all(isinstance(x, str) for x in between) or between[0] == between[1]):
-        raise t.error("between", 'expected two different points, e.g. between = ["D", "E"]')
+        raise t.error("between", Text("errmsg.scene_loads.expected_two_different"))
     given = t.raw("links", [None, None])
     if not isinstance(given, list) or len(given) != 2:
-        raise t.error("links", 'expected the two links carrying the ends, e.g. links = ["2", "0"]')
+        raise t.error("links", Text("errmsg.scene_loads.expected_two_links"))
     ends = [_end_link(t, links, between[j], None if given[j] is None else str(given[j]), j)
             for j in range(2)]
     if ends[0] == ends[1]:
-        raise t.error("between", f"both ends are on link {ends[0]}; a {kind.value} joins two "
-                      "different links (or a link and the frame)")
+        raise t.error(
+            "between",
+            Text(
+                "errmsg.scene_loads.both_ends_are", {"ends": str(ends[0]), "value": str(kind.value)}
+            ),
+        )
     if GROUND == ends[0]:
         between, ends = between[::-1], ends[::-1]
     common = {"link": ends[0], "point": between[0], "other": between[1],
@@ -268,8 +317,13 @@ def _two_point(t: Table, kind: LoadKind, links: dict[str, Link], name: str | Non
     bore = t.quantity("bore", "length", required=True, positive=True)
     rod = t.quantity("rod", "length", 0.0, nonnegative=True) or 0.0
     if bore is not None and rod >= bore:
-        raise t.error("rod", f"the rod diameter must be smaller than the bore (got {rod * 1e3:g} "
-                      f"mm against {bore * 1e3:g} mm)")
+        raise t.error(
+            "rod",
+            Text(
+                "errmsg.scene_loads.rod_diameter_smaller",
+                {"value": f"{rod * 1000.0:g}", "value2": f"{bore * 1000.0:g}"},
+            ),
+        )
     return LoadSpec(kind, bore=bore, rod=rod, pressure=t.quantity("pressure", "pressure", 0.0),
                     pressure_rod=t.quantity("pressure_rod", "pressure", 0.0),
                     **common)  # type: ignore[arg-type]
@@ -285,12 +339,14 @@ def friction_of(top: Table) -> FrictionSpec | None:
     radius = t.quantity("pin_radius", "length", 0.0, nonnegative=True) or 0.0
     diagram = t.raw("diagram", False)
     if not isinstance(diagram, bool):
-        raise t.error("diagram", "expected true or false")
+        raise t.error("diagram", Text("errmsg.scene_loads.expected_true_false2"))
     iterations = t.raw("max_iterations", 50)
     if (not isinstance(iterations, int) or isinstance(iterations, bool)
             or not 1 <= iterations <= 1000):
-        raise t.error("max_iterations",
-                      f"expected a whole number from 1 to 1000 (got {iterations!r})")
+        raise t.error(
+            "max_iterations",
+            Text("errmsg.scene_loads.expected_whole_number", {"iterations": repr(iterations)}),
+        )
     tol = t.quantity("tolerance", "dimensionless", 1e-10, positive=True) or 1e-10
     pairs: list[tuple[str, PairFriction]] = []
     pt = t.table("pairs")
@@ -298,10 +354,10 @@ def friction_of(top: Table) -> FrictionSpec | None:
         for name in pt.data:
             parts = str(name).split("-")
             if len(parts) != 2 or not all(parts):
-                raise pt.error(name, 'a pair is named by its two links, e.g. "1-2" or "0-3"')
+                raise pt.error(name, Text("errmsg.scene_loads.pair_named_two"))
             entry = pt.table(name) if isinstance(pt.raw(name), dict) else None
             if entry is None:
-                raise pt.error(name, 'expected { f = 0.12, radius = "15 mm" }')
+                raise pt.error(name, Text("errmsg.scene_loads.expected_f_radius"))
             entry.check_keys(("f", "radius"))
             pairs.append((pair_id(*parts), PairFriction(
                 entry.quantity("f", "dimensionless", f, nonnegative=True) or 0.0,

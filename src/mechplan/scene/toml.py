@@ -13,6 +13,8 @@ import math
 import tomllib
 from typing import Any
 
+from ..i18n import Text
+
 #: characters of TOML text parsed at most (a scene is a few kilobytes)
 MAX_TEXT_CHARS = 4 * 1024 * 1024
 #: tables and arrays inside each other (a scene needs 6, a submitted table 3)
@@ -40,20 +42,30 @@ def loads(text: str) -> dict[str, Any]:
     document beyond a limit (too long, too deep, a number too large, a string too long).
     """
     if len(text) > MAX_TEXT_CHARS:
-        raise TomlLimitError("size", f"the text is {len(text):,} characters long, more than the "
-                             f"limit of {MAX_TEXT_CHARS:,}", size=len(text), limit=MAX_TEXT_CHARS)
+        raise TomlLimitError(
+            "size",
+            Text(
+                "errmsg.scene_toml.text_text_characters",
+                {"text": f"{len(text):,}", "max_text_chars": f"{MAX_TEXT_CHARS:,}"},
+            ),
+            size=len(text),
+            limit=MAX_TEXT_CHARS,
+        )
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError:
         raise
-    except RecursionError:      # tomllib recurses per level: far past MAX_NESTING
+    except RecursionError:  # tomllib recurses per level: far past MAX_NESTING
         raise _too_deep(None) from None
-    except ValueError as exc:   # an integer of more than 4300 digits
+    except ValueError as exc:  # an integer of more than 4300 digits
         if "digits" not in str(exc):
             raise
-        raise TomlLimitError("number", f"a number is beyond ±{MAX_NUMBER} (it has thousands of "
-                             "digits); numbers this large cannot be computed exactly",
-                             value="…", limit=MAX_NUMBER) from None
+        raise TomlLimitError(
+            "number",
+            Text("errmsg.scene_toml.number_beyond_max", {"max_number": str(MAX_NUMBER)}),
+            value="…",
+            limit=MAX_NUMBER,
+        ) from None
     check(data)
     return data
 
@@ -86,20 +98,46 @@ def check(data: dict[str, Any]) -> None:
             if abs(value) > MAX_NUMBER:
                 digits = (f"{len(str(abs(value)))}" if value.bit_length() < 14_000   # str() stops
                           else f"about {int(value.bit_length() * math.log10(2)) + 1}")  # at 4300
-                raise TomlLimitError("number", f"must be within ±{MAX_NUMBER} (got a number "
-                                     f"of {digits} digits); numbers this large cannot be "
-                                     "computed exactly", path, value=f"{digits} digits",
-                                     limit=MAX_NUMBER)
+                raise TomlLimitError(
+                    "number",
+                    Text(
+                        "errmsg.scene_toml.within_max_number",
+                        {"max_number": str(MAX_NUMBER), "digits": str(digits)},
+                    ),
+                    path,
+                    value=f"{digits} digits",
+                    limit=MAX_NUMBER,
+                )
         elif isinstance(value, float) and not (math.isfinite(value) and abs(value) <= MAX_NUMBER):
-            raise TomlLimitError("number", f"must be a finite number within ±{MAX_NUMBER:.3g} "
-                                 f"(got {value!r})", path, value=repr(value), limit=MAX_NUMBER)
+            raise TomlLimitError(
+                "number",
+                Text(
+                    "errmsg.scene_toml.finite_number_within",
+                    {"max_number": f"{MAX_NUMBER:.3g}", "value": repr(value)},
+                ),
+                path,
+                value=repr(value),
+                limit=MAX_NUMBER,
+            )
 
 
 def _too_deep(path: str | None) -> TomlLimitError:
-    return TomlLimitError("nesting", f"tables and lists are nested more than {MAX_NESTING} levels "
-                          "deep; a scene needs at most 6", path or None, limit=MAX_NESTING)
+    return TomlLimitError(
+        "nesting",
+        Text("errmsg.scene_toml.tables_lists_are", {"max_nesting": str(MAX_NESTING)}),
+        path or None,
+        limit=MAX_NESTING,
+    )
 
 
 def _too_long(path: str | None, length: int) -> TomlLimitError:
-    return TomlLimitError("string", f"a text of {length:,} characters is longer than the limit "
-                          f"of {MAX_STRING_CHARS:,}", path, length=length, limit=MAX_STRING_CHARS)
+    return TomlLimitError(
+        "string",
+        Text(
+            "errmsg.scene_toml.text_length_characters",
+            {"length": f"{length:,}", "max_string_chars": f"{MAX_STRING_CHARS:,}"},
+        ),
+        path,
+        length=length,
+        limit=MAX_STRING_CHARS,
+    )

@@ -11,13 +11,17 @@ from typing import Any
 import numpy as np
 
 from ..errors import SceneError, shown_key
+from ..i18n import Text
 from .toml import MAX_NESTING
 
 
 def _toml_value(value: Any, key: str, depth: int = 1) -> str:
-    if depth > MAX_NESTING:         # also a table that contains itself
-        raise SceneError(f"tables and lists are nested more than {MAX_NESTING} levels deep",
-                         file="<dict>", key=shown_key(key))
+    if depth > MAX_NESTING:  # also a table that contains itself
+        raise SceneError(
+            Text("errmsg.scene_writer.tables_lists_are", {"max_nesting": str(MAX_NESTING)}),
+            file="<dict>",
+            key=shown_key(key),
+        )
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, (int, np.integer)):
@@ -40,13 +44,19 @@ def _toml_value(value: Any, key: str, depth: int = 1) -> str:
     if isinstance(value, (list, tuple)):
         items = ", ".join(_toml_value(v, f"{key}[{i}]", depth + 1) for i, v in enumerate(value))
         return "[" + items + "]"
-    raise SceneError(f"must be text, a number, a list or a table (got {type(value).__name__})",
-                     file="<dict>", key=key)
+    raise SceneError(
+        Text("errmsg.scene_writer.text_number_list", {"name": str(type(value).__name__)}),
+        file="<dict>",
+        key=key,
+    )
 
 
 def to_toml(data: Mapping[str, Any]) -> str:
     """Return TOML text for a scene given as a dict (inline tables, read back unchanged)."""
     if not isinstance(data, Mapping):
-        raise SceneError(f"a scene must be a table (got {type(data).__name__})", file="<dict>")
+        raise SceneError(
+            Text("errmsg.scene_writer.scene_table_name", {"name": str(type(data).__name__)}),
+            file="<dict>",
+        )
     return "".join(f"{json.dumps(str(k), ensure_ascii=False)} = {_toml_value(v, str(k))}\n"
                    for k, v in data.items())

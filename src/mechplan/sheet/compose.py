@@ -13,6 +13,7 @@ from ..construct.terms import pole_label
 from ..drafting.frame import make_frame
 from ..drafting.primitives import Sheet, Text
 from ..errors import DrawingError, MechplanError
+from ..i18n import Text as Msg
 from ..i18n import message, scientific, significant, unit
 from ..i18n import number as format_number
 from ..model.mechanism import GROUND, PairKind
@@ -54,7 +55,7 @@ def _extreme_phis(sol: Solution) -> list[float]:
     mech = sol.scene.mechanism
     subjects: list[str] = []
     for lk in mech.links.values():
-        if lk.id in (GROUND, mech.drive.link):
+        if lk.id in (GROUND, *(d.link for d in mech.drivers)):     # W = 2: both cranks
             continue
         if lk.slides_on and mech.guides[lk.slides_on].link == GROUND:
             subjects.append(next(iter(lk.points)))
@@ -157,10 +158,10 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
             panels += split_tables(vector_plan(c, sol.ev, k, Plan.FORCE, mu[Plan.FORCE], lang,
                                                title, group), title,
                                    tables_apart(c, Plan.FORCE, r), r)
-        # a linear driver's lever: at the force plans' μ (one μF on the sheet for the checker)
+        # the lever's loads at the force plans' μF: one μF on the sheet (the checker reads the
+        # μF line nearest a polygon, and the lever's may be the nearest)
         lever = zhukovsky_lever(c, sol.ev, k, mu[Plan.VELOCITY], lang,
-                                lever_title(lang, phi_deg),
-                                mu[Plan.FORCE] if sol.scene.mechanism.drive.linear else None)
+                                lever_title(lang, phi_deg), mu[Plan.FORCE])
         if lever is not None:
             panels.append(lever)
     mb = balancing_diagram(sol, lang, r)
@@ -241,9 +242,11 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
         fixed = ", ".join(f"{k} = {significant(v, 6, 'en')}"
                           for k, v in scene.drawing.scales.items())
         raise DrawingError(
-            f"the panel '{found.name}' ({x1 - x0:.0f} × {y1 - y0:.0f} mm) does not "
-            f"fit on an {size} sheet at the scale factors {fixed or 'chosen'}; use a "
-            "larger sheet (--sheet A1 or A0) or larger scale factors in [drawing.scales]",
+            Msg("errmsg.sheet_compose.panel_name_value", {"name": str(found.name),
+                                                           "value": f'{x1 - x0:.0f}',
+                                                           "value2": f'{y1 - y0:.0f}',
+                                                           "size": str(size),
+                                                           "value3": str(fixed or 'chosen')}),
             file=scene.path)
     groups = [list(zip(p, o)) for p, o in found]
     sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)

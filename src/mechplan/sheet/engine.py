@@ -21,6 +21,7 @@ from ..drafting.primitives import (
     VAlign,
 )
 from ..dynamics.engine.analysis import Checks, EngineResult
+from ..dynamics.engine.balance import Balance
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene
@@ -47,6 +48,9 @@ class EngineData(Protocol):
 
     @property
     def wear(self) -> tuple[np.ndarray, np.ndarray]: ...
+
+    @property
+    def balance(self) -> Balance: ...
 
 
 #: per-cylinder columns of the table: (attribute, CSV name, scale to the printed unit)
@@ -90,12 +94,25 @@ def engine_sheets(study: EngineData, size: str, standard: str, language: str,
         out = [f(study, lang, scale) for f in (indicator_panel, forces_panel, tz_panel,
                                                torque_panel, polar_panel, developed_panel,
                                                wear_panel)]
-        return out + table_panels(study, lang)
+        out += table_panels(study, lang)
+        if study.scene.balance is not None:
+            out += _balance_panels(study, lang, scale)
+        return out
 
     fields = {"title": study.scene.engine.title or message("engine.sheet.title", lang)}
     fields.update({k: v for k, v in study.scene.drawing.title_block.items() if v})
     return fitted_sheets(panels, size=size, standard=standard, language=lang, name=name,
                          fields=fields)
+
+
+def _balance_panels(study: EngineData, lang: str, scale: float) -> list[Panel]:
+    """The balancing panels (sheet/engine_balance.py) of a scene with a [balance] table."""
+    from .engine_balance import balance_panels
+
+    m = study.model
+    bank = {c.number: c.bank for c in study.scene.engine.cylinders}
+    banks = {n: b - bank[1] for n, b in bank.items()}
+    return balance_panels(study.balance, m.phases, banks, study.dense.phi, lang, scale)
 
 
 def _deg(phi: np.ndarray) -> np.ndarray:

@@ -39,7 +39,7 @@ def output_link(mech: Mechanism) -> Output | None:
     """The last link of the chain that slides on a frame guide or turns about a frame pivot."""
     found: Output | None = None
     for lk in mech.links.values():
-        if lk.id in (GROUND, mech.drive.link):
+        if lk.id in (GROUND, *(d.link for d in mech.drivers)):     # W = 2: both cranks
             continue
         if lk.slides_on and mech.guides[lk.slides_on].link == GROUND:
             g = mech.guides[lk.slides_on]

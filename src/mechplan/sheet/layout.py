@@ -19,6 +19,7 @@ from shapely.geometry.base import BaseGeometry
 from ..drafting.frame import FrameLayout, make_frame
 from ..drafting.primitives import Arc, Arrow, Circle, Line, Polyline, Primitive, Sheet, Table, Text
 from ..errors import DrawingError
+from ..i18n import Text as Msg
 from .panels import Panel
 
 GAP = 8.0          # mm between panels
@@ -432,15 +433,20 @@ def _too_large(panel: Panel, build: Callable[[float], Sequence[Panel]], ks: Sequ
     ax0, ay0, ax1, ay1 = area.bounds
     smallest = (reductions or ks)[-1]
     bigger = SIZES[SIZES.index(size.upper()) + 1:] if size.upper() in SIZES else ()
-    hint = "it fits on no sheet up to A0"
+    hint = Msg("errmsg.sheet_layout.fits_no_sheet")
     for other in bigger:
         if not isinstance(_search(build, _area(other, standard, language, fields), ks,
                                   reductions), Panel):
-            hint = f"the smallest sheet that takes it is {other} (--sheet {other})"
+            hint = Msg("errmsg.sheet_layout.smallest_sheet", {"size": other})
             break
-    return DrawingError(f"the panel '{panel.name}' must fit the drawing area of an {size} sheet "
-                        f"({ax1 - ax0:.0f} × {ay1 - ay0:.0f} mm) (got {x1 - x0:.0f} × "
-                        f"{y1 - y0:.0f} mm at the smallest enlargement {smallest:g}); {hint}")
+    return DrawingError(Msg("errmsg.sheet_layout.panel_name_fit", {"name": str(panel.name),
+                                                                    "size": str(size),
+                                                                    "value": f'{ax1 - ax0:.0f}',
+                                                                    "value2": f'{ay1 - ay0:.0f}',
+                                                                    "value3": f'{x1 - x0:.0f}',
+                                                                    "value4": f'{y1 - y0:.0f}',
+                                                                    "smallest": f'{smallest:g}',
+                                                                    "hint": hint}))
 
 
 def fitted_layout(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,

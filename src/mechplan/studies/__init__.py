@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..scene.document import parse_toml, read_text, scene_kind
 
 if TYPE_CHECKING:
@@ -78,7 +79,7 @@ def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
         from .synthesis import solve_synthesis_text
 
         return solve_synthesis_text(text, file)
-    raise SceneError(f"scenes of kind {kind!r} are not supported by this build", file=file,
+    raise SceneError(Text("errmsg.studies.scenes_kind_kind", {"kind": repr(kind)}), file=file,
                      key="kind")
 
 

@@ -21,11 +21,15 @@ from ..dynamics.engine.analysis import (
     grids,
     wear,
 )
+from ..dynamics.engine.balance import Balance, balance
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number, scientific
+from ..model.engine_balance import BalanceSpec
 from ..scene.engine import EngineScene, parse_engine_scene
 from ..sheet.engine import COLUMNS, table_cells
 from .answers import Keys, Own, Written, span, written_all
+from .engine_balance import balance_json, report_lines
+from .engine_thermal import thermal_json, thermal_lines
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
@@ -67,6 +71,13 @@ class EngineStudy:
         return consistency_checks(self.model, grids(self.model)[0])
 
     @cached_property
+    def balance(self) -> Balance:
+        """Free forces and moments, counterweights, balance shafts (the scene's [balance] or the
+        defaults)."""
+        d = self.dense
+        return balance(self.model, self.scene.balance or BalanceSpec(), d.phi, d.pins)
+
+    @cached_property
     def wear(self) -> tuple[np.ndarray, np.ndarray]:
         """Wear diagram of pin 1 at the table's angles (the last angle repeats the first)."""
         t = self.table.pins[1]
@@ -81,6 +92,8 @@ class EngineStudy:
             return number(x, k, lang)
 
         lines = [message("engine.report.title", lang, title=spec.title), ""]
+        if self.scene.cycle is not None:
+            lines += [*thermal_lines(self.scene.cycle, spec.V_h, lang), ""]
         lines.append(message("engine.report.geometry", lang, strokes=spec.strokes,
                              cylinders=len(spec.cylinders), n=n(spec.speed * 30 / math.pi, 0),
                              D=n(spec.bore * 1e3, 1), R=n(spec.R * 1e3, 2), L=n(spec.L * 1e3, 2),
@@ -141,6 +154,8 @@ class EngineStudy:
         if ch.pair_torque_error is not None:
             lines.append(message("engine.check.pair", lang,
                                  error=scientific(ch.pair_torque_error, 2, lang)))
+        if self.scene.balance is not None:
+            lines += report_lines(self.balance, d.phi, lang)
         return "\n".join(lines) + "\n"
 
     def _table_text(self, lang: str) -> list[str]:
@@ -168,6 +183,10 @@ class EngineStudy:
                          for p, q in t.pins.items()},
                 "journals": [[float(J[k, 0]), float(J[k, 1])] for J in t.journals]})
         rays, sums = self.wear
+        extra = ({"balance": balance_json(self.balance, d.phi)}
+                 if self.scene.balance is not None else {})
+        if self.scene.cycle is not None:
+            extra["thermal"] = thermal_json(self.scene.cycle, spec.V_h)
         return {
             "mechplan": __version__, "kind": "engine", "title": spec.title,
             "engine": {"strokes": spec.strokes, "omega": spec.speed, "bore": spec.bore, "R": spec.R,
@@ -192,7 +211,7 @@ class EngineStudy:
                        "inertia_torque_mean": ch.inertia_mean, "brix_dp_max": ch.brix_dp_max,
                        "p_max": ch.p_max, "series_da_max": ch.da_max, "a_max": ch.a_max,
                        "series_dPj_max": ch.dPj_max, "two_mass_dM_max": ch.two_mass_dM_max,
-                       "pair_torque_error": ch.pair_torque_error}}
+                       "pair_torque_error": ch.pair_torque_error}, **extra}
 
     def to_csv(self, dense: bool = False) -> str:
         """The per-angle table as CSV (comma-separated, decimal point, units in the headings)."""

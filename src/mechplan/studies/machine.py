@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..errors import SceneError
-from ..i18n import message, number, scientific
+from ..i18n import Text, message, number, scientific
 from ..model.dynamics import DynamicsSpec, Unknown
 from .answers import Keys, Own, Written, span, written_all
 
@@ -26,8 +26,11 @@ def solve_dynamics(sol: Solution, spec: DynamicsSpec) -> MachineDynamics:
     phi = crank_positions(scene, sol.construction)
     steps = np.diff(np.unwrap(phi))
     if phi.shape[0] < 4 or not np.allclose(steps, 2 * math.pi / phi.shape[0], atol=1e-9):
-        raise SceneError(f"the dynamics needs the positions at equal steps over a turn (count ≥ 4; "
-                         f"got {phi.shape[0]} positions)", file=scene.path, key="positions")
+        raise SceneError(
+            Text("errmsg.studies_machine.dynamics_needs_positions", {"shape": str(phi.shape[0])}),
+            file=scene.path,
+            key="positions",
+        )
     return machine_dynamics(scene, spec, float(phi[0]), int(phi.shape[0]))
 
 

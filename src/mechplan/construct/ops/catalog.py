@@ -9,6 +9,7 @@ from __future__ import annotations
 from .acceleration import *
 from .drivers import *
 from .force import *
+from .inputs import *
 from .position import *
 from .triad import *
 from .velocity import *

@@ -73,8 +73,11 @@ def emit(b: Builder) -> None:
             force_drivers.slider_driver(st)
         force_drivers.lever(st)
         return
+    second = None
+    if b.mech.drive2 is not None:       # W = 2: the second crank's own equilibrium first
+        second = _driving_link(st, second=True)
     _driving_link(st)
-    _lever(st)
+    _lever(st, second)
 
 
 def _segment(st: State, start: str, end: str, quantity: str, group: str,
@@ -361,16 +364,21 @@ def _rpp(st: State, g: Group) -> None:
 
 
 # -- the driving link and Zhukovsky's lever --------------------------------------------------
-def _driving_link(st: State) -> None:
+def _driving_link(st: State, second: bool = False) -> str:
+    """A driving crank's own equilibrium: M_b from ΣM about its pivot, R_0k closing its polygon.
+
+    ``second``: the second crank of a mechanism with W = 2 (its moment ``M_b{link}``)."""
     b = st.b
-    drive = b.mech.drive
+    drive = b.mech.drive2 if second else b.mech.drive
+    assert drive is not None
     link, pivot = drive.link, drive.pivot
     gn = f"I({GROUND},{link})"
     terms = st.terms[link]
     total = _moment_sum(st, gn, link, pivot, terms, "drive")
-    mb = st.add("force.M_b", Op.BALANCING_MOMENT, (total,), Kind.SCALAR, Role.RESULT, "M_b", gn,
+    sid, label = ("force.M_b", "M_b") if not second else (f"force.M_b.{link}", f"M_b{link}")
+    mb = st.add(sid, Op.BALANCING_MOMENT, (total,), Kind.SCALAR, Role.RESULT, label, gn,
                 subject=(pivot, link, st.label(total)))
-    b.result("M_b", mb)
+    b.result(label, mb)
     o = _pole(st, gn)
     e = _chain(st, gn, o, terms)
     r01 = _between(st, gn, e, o, f"R_{pair_key(GROUND, link)}", "R01")
@@ -378,10 +386,15 @@ def _driving_link(st: State) -> None:
                 if p.other(link) == GROUND and p.kind is PairKind.REVOLUTE)
     _reaction(st, gn, pair, GROUND, link, r01)
     _equation(st, gn, [*_rows(terms), (f"R_{pair_key(GROUND, link)}", UNKNOWN, "?")])
+    return mb
 
 
-def _lever(st: State) -> None:
-    """Zhukovsky's lever: every load at its velocity image turned by 90°, moments about p."""
+def _lever(st: State, second: str | None = None) -> None:
+    """Zhukovsky's lever: every load at its velocity image turned by 90°, moments about p.
+
+    With a second crank (W = 2) its balancing moment ``second`` (from its own polygon) is one
+    more couple on the lever: the lever then gives the first crank's M_b.
+    """
     b = st.b
     drive = b.mech.drive
     omega1 = b.bodies[drive.link].omega
@@ -399,6 +412,13 @@ def _lever(st: State) -> None:
             inputs += [t.couple, omega]
             layout += "M"
             labels.append(t.label)
+    drive2 = b.mech.drive2
+    if second is not None and drive2 is not None:
+        omega2 = b.bodies[drive2.link].omega
+        assert omega2 is not None
+        inputs += [second, omega2]
+        layout += "M"
+        labels.append(st.label(second))
     sid = st.add("force.M_b.zhukovsky", Op.ZHUKOVSKY, tuple(inputs), Kind.SCALAR, Role.RESULT,
                  "M_b", "lever", subject=tuple(labels), layout=layout)
     b.result("M_b_zhukovsky", sid)

@@ -78,6 +78,8 @@ def group_of(b: Builder, link: str) -> str:
     for g in b.structure.groups:
         if link in g.links:
             return g.name
+    if b.mech.drive2 is not None and link == b.mech.drive2.link:    # W = 2: the second crank
+        return f"I({GROUND},{link})"
     return f"I({GROUND},{b.mech.drive.link})"
 
 

@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.cam import CamSpec, Contact, Motion, PhaseKind
 from .base_radius import (
     Zone,
@@ -106,14 +107,28 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
         r_min = flat_r0(m.s, m.s2, lim.min_curvature)
         if given is None:
             if not r_min > 0:
-                raise SceneError("is missing: convexity alone allows any base radius here "
-                                 f"(ρ = r0 + s + s″ ≥ ρmin for r0 > {r_min * 1e3:.3f} mm); "
-                                 "give the base radius", file=spec.path, key="limits.base_radius")
+                raise SceneError(
+                    Text(
+                        "errmsg.synthesis_cam.missing_convexity_alone",
+                        {"value": f"{r_min * 1000.0:.3f}"},
+                    ),
+                    file=spec.path,
+                    key="limits.base_radius",
+                )
             return r_min, 0.0, r_min, None
         if given < r_min:
-            raise SceneError(f"must be at least {r_min * 1e3:.3f} mm for a convex profile "
-                             f"(ρ = r0 + s + s″ ≥ {lim.min_curvature * 1e3:g} mm) "
-                             f"(got {given * 1e3:g} mm)", file=spec.path, key="limits.base_radius")
+            raise SceneError(
+                Text(
+                    "errmsg.synthesis_cam.least_value_mm2",
+                    {
+                        "value": f"{r_min * 1000.0:.3f}",
+                        "value2": f"{lim.min_curvature * 1000.0:g}",
+                        "value3": f"{given * 1000.0:g}",
+                    },
+                ),
+                file=spec.path,
+                key="limits.base_radius",
+            )
         return given, 0.0, r_min, None
     limit = limit_per_angle(spec.phases, phi, lim.alpha_rise, lim.alpha_return)
     if f.motion is Motion.TRANSLATING:
@@ -122,20 +137,33 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
         if given is None:
             return zone.r0, e, zone.r0, zone
         if given <= abs(e):
-            raise SceneError(f"must exceed the offset |e| = {abs(e) * 1e3:g} mm "
-                             f"(got {given * 1e3:g} mm)", file=spec.path, key="limits.base_radius")
+            raise SceneError(
+                Text(
+                    "errmsg.synthesis_cam.exceed_offset_e",
+                    {"value": f"{abs(e) * 1000.0:g}", "value2": f"{given * 1000.0:g}"},
+                ),
+                file=spec.path,
+                key="limits.base_radius",
+            )
         if given < zone.r0 * (1 - 1e-9):
-            raise SceneError(f"cannot meet the allowable pressure angles: it must be at least "
-                             f"{zone.r0 * 1e3:.3f} mm with e = {e * 1e3:g} mm "
-                             f"(got {given * 1e3:g} mm)",
-                             file=spec.path, key="limits.base_radius")
+            raise SceneError(
+                Text(
+                    "errmsg.synthesis_cam.cannot_meet_allowable2",
+                    {
+                        "value": f"{zone.r0 * 1000.0:.3f}",
+                        "value2": f"{e * 1000.0:g}",
+                        "value3": f"{given * 1000.0:g}",
+                    },
+                ),
+                file=spec.path,
+                key="limits.base_radius",
+            )
         return given, e, zone.r0, zone
     g0 = _geometry(spec, f.arm, 0.0)
     coarse = phi[::10]
     r_osc = oscillating_r0(g0, coarse, limit[::10])
     if r_osc is None:
-        raise SceneError("cannot be met by any base radius with this pivot distance and arm; "
-                         "lengthen the arm or move the pivot", file=spec.path,
+        raise SceneError(Text("errmsg.synthesis_cam.cannot_met_any"), file=spec.path,
                          key="limits.pressure_angle_rise")
 
     def fails(r: float) -> bool:
@@ -155,12 +183,20 @@ def _base_radius(spec: CamSpec, phi: np.ndarray) -> tuple[float, float, float, Z
     if given is None:
         return r_min, 0.0, r_min, None
     if not abs(f.pivot_distance - f.arm) < given < f.pivot_distance + f.arm:
-        raise SceneError(f"must lie between |a − l| and a + l (got {given * 1e3:g} mm)",
-                         file=spec.path, key="limits.base_radius")
+        raise SceneError(
+            Text("errmsg.synthesis_cam.lie_between_l", {"value": f"{given * 1000.0:g}"}),
+            file=spec.path,
+            key="limits.base_radius",
+        )
     if max_ratio(_geometry(spec, given, 0.0), phi, limit, m) > 1.0 + 1e-9:
-        raise SceneError(f"cannot meet the allowable pressure angles: it must be at least "
-                         f"{r_min * 1e3:.3f} mm (got {given * 1e3:g} mm)", file=spec.path,
-                         key="limits.base_radius")
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_cam.cannot_meet_allowable",
+                {"value": f"{r_min * 1000.0:.3f}", "value2": f"{given * 1000.0:g}"},
+            ),
+            file=spec.path,
+            key="limits.base_radius",
+        )
     return given, 0.0, r_min, None
 
 
@@ -171,21 +207,36 @@ def _oscillating_flat_r0(spec: CamSpec, s: np.ndarray, s1: np.ndarray, s2: np.nd
 
     f, lim = spec.follower, spec.limits
     if np.min(s1) <= -1.0:
-        raise SceneError(f"the follower swings back faster than the cam turns (ψ′ = "
-                         f"{float(np.min(s1)):.4g} ≤ −1): a flat face cannot follow it; lengthen "
-                         f"the return", file=spec.path, key="motion.phases")
+        raise SceneError(
+            Text("errmsg.synthesis_cam.follower_swings_back", {"s1": f"{float(np.min(s1)):.4g}"}),
+            file=spec.path,
+            key="motion.phases",
+        )
     r_min = least_r0(f.pivot_distance, s, s1, s2, lim.min_curvature)
     if r_min is None:
-        raise SceneError(f"no base radius below the pivot distance {f.pivot_distance * 1e3:g} mm "
-                         f"gives a convex profile; move the pivot farther from the cam",
-                         file=spec.path, key="follower.pivot_distance")
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_cam.no_base_radius", {"value": f"{f.pivot_distance * 1000.0:g}"}
+            ),
+            file=spec.path,
+            key="follower.pivot_distance",
+        )
     given = lim.base_radius
     if given is None:
         return r_min, 0.0, r_min, None
     if not r_min * (1 - 1e-9) <= given < f.pivot_distance:
-        raise SceneError(f"must be at least {r_min * 1e3:.3f} mm for a convex profile and less "
-                         f"than the pivot distance {f.pivot_distance * 1e3:g} mm (got "
-                         f"{given * 1e3:g} mm)", file=spec.path, key="limits.base_radius")
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_cam.least_value_mm",
+                {
+                    "value": f"{r_min * 1000.0:.3f}",
+                    "value2": f"{f.pivot_distance * 1000.0:g}",
+                    "value3": f"{given * 1000.0:g}",
+                },
+            ),
+            file=spec.path,
+            key="limits.base_radius",
+        )
     return given, 0.0, r_min, None
 
 
@@ -208,15 +259,27 @@ def design(spec: CamSpec) -> CamDesign:
         if bad.any():
             worst = _extreme(dense.radius_pitch, phi, convex, largest=False)
             raise SceneError(
-                f"must be less than the least convex radius of curvature of the pitch curve, "
-                f"ρmin = {worst.value * 1e3:.3f} mm at φ = {math.degrees(worst.phi):.2f}° "
-                f"(got {roller * 1e3:g} mm): the profile would be undercut (a cusp) at "
-                f"φ = {_intervals(bad, phi)}; use a smaller roller or a larger base radius",
-                file=spec.path, key="follower.roller_radius")
+                Text(
+                    "errmsg.synthesis_cam.less_than_least",
+                    {
+                        "value": f"{worst.value * 1000.0:.3f}",
+                        "phi": f"{math.degrees(worst.phi):.2f}",
+                        "value2": f"{roller * 1000.0:g}",
+                        "bad": str(_intervals(bad, phi)),
+                    },
+                ),
+                file=spec.path,
+                key="follower.roller_radius",
+            )
     if spec.follower.contact is Contact.FLAT and np.any(dense.radius <= 0):
-        raise SceneError("gives a profile that is not convex (ρ = r0 + s + s″ ≤ 0 at "
-                         f"φ = {_intervals(dense.radius <= 0, phi)}); increase it",
-                         file=spec.path, key="limits.base_radius")
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_cam.gives_profile_that",
+                {"value": str(_intervals(dense.radius <= 0, phi))},
+            ),
+            file=spec.path,
+            key="limits.base_radius",
+        )
     alpha_rise = _extreme(np.abs(dense.alpha), phi, rise)
     alpha_return = _extreme(np.abs(dense.alpha), phi, ret)
     rho_p = _extreme(dense.radius_pitch, phi, convex, largest=False)

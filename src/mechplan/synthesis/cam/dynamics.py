@@ -22,6 +22,7 @@ import numpy as np
 from scipy.optimize import linprog, minimize_scalar
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.cam import CamSpec, FollowerDynamics
 from .elastic import ElasticResult, elastic_follower
 from .motion import motion
@@ -74,16 +75,23 @@ def choose_spring(d: FollowerDynamics, s: np.ndarray, s1: np.ndarray, s2: np.nda
     if f0 is not None:
         at_rest = s <= 1e-12 * stroke
         if np.any(need[at_rest] > f0 * (1 + 1e-12) + 1e-12):
-            raise SceneError(f"is too small: at the near position the follower needs at least "
-                             f"{float(np.max(need[at_rest])):.6g} (SI) to stay on the cam",
-                             key=f"{key}.preload")
+            raise SceneError(
+                Text(
+                    "errmsg.synthesis_cam_dynamics.too_small_near",
+                    {"need": f"{float(np.max(need[at_rest])):.6g}"},
+                ),
+                key=f"{key}.preload",
+            )
         moving = ~at_rest
         return max(0.0, float(np.max((need[moving] - f0) / s[moving]))) if moving.any() \
             else 0.0, f0
     res = linprog(c=[1.0, stroke / 2], A_ub=np.column_stack([-np.ones_like(s), -s]), b_ub=-need,
                   bounds=[(0, None), (0, None)], method="highs")
-    if not res.success:                      # pragma: no cover - the problem is always feasible
-        raise SceneError(f"no spring found: {res.message}", key=f"{key}.stiffness")
+    if not res.success:  # pragma: no cover - the problem is always feasible
+        raise SceneError(
+            Text("errmsg.synthesis_cam_dynamics.no_spring_found", {"message": str(res.message)}),
+            key=f"{key}.stiffness",
+        )
     f0, k = (float(v) for v in res.x)
     tiny = 1e-9 * max(1.0, float(np.max(np.abs(need))))      # the solver's round-off
     return (0.0 if k * stroke < tiny else k), (0.0 if f0 < tiny else f0)

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.cam import Law
 
 PI = math.pi
@@ -141,12 +142,18 @@ def normalised(law: Law, x: np.ndarray, *, blend: float = 0.1, table: tuple[floa
         y1, v1, _ = _table_a(values, np.array([1.0]))
         vmax = float(np.abs(_table_a(values, np.linspace(0, 1, 201))[1]).max())
         if not y1[0] > 0:
-            raise SceneError("the acceleration table must move the follower forward (its double "
-                             f"integral is {y1[0]:.4g}); start with positive values", key=key)
+            raise SceneError(
+                Text("errmsg.synthesis_cam_laws.acceleration_table_move", {"y1": f"{y1[0]:.4g}"}),
+                key=key,
+            )
         if abs(v1[0]) > 1e-6 * max(vmax, 1e-300):
-            raise SceneError("the acceleration table must end at rest: its integral must be 0 "
-                             f"(got {v1[0] / y1[0]:.4g} of the mean velocity); "
-                             "balance the positive and negative parts", key=key)
+            raise SceneError(
+                Text(
+                    "errmsg.synthesis_cam_laws.acceleration_table_end",
+                    {"value": f"{v1[0] / y1[0]:.4g}"},
+                ),
+                key=key,
+            )
         y, v, a = _table_a(values, x)
         c = 1.0 / float(y1[0])
         return y * c, v * c, a * c

@@ -17,6 +17,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.gears import PairSpec, ShiftRule
 
 TIP_MIN = 0.25        # s_a ≥ 0.25·m: the tip is not pointed
@@ -102,9 +103,13 @@ def _layout(p: PairSpec, x1: float, x2: float) -> Pair:
     z1, z2 = p.z1, p.z2
     inv_w = 2 * (x1 + x2) * math.tan(al) / (z1 + z2) + float(inv(al))
     if inv_w <= 0:
-        raise SceneError(f"x1 + x2 = {x1 + x2:g} gives inv α_w = {inv_w:.3g} ≤ 0; "
-                         "use larger shifts",
-                         key="pair.shifts")
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_gears_involute.x_x_value",
+                {"value": f"{x1 + x2:g}", "inv_w": f"{inv_w:.3g}"},
+            ),
+            key="pair.shifts",
+        )
     aw = inv_inverse(inv_w)
     a = m * (z1 + z2) / 2
     a_w = a * math.cos(al) / math.cos(aw)
@@ -141,8 +146,13 @@ def balanced_shift(p: PairSpec) -> float:
     lo = x_min(p.z1, p.addendum, p.z_min)
     hi = -x_min(p.z2, p.addendum, p.z_min)
     if lo > hi:
-        raise SceneError(f"z1 + z2 = {p.z1 + p.z2} is too small for x1 + x2 = 0 without undercut "
-                         f"(needs ≥ {2 * p.z_min}); give the shifts", key="pair.shift_rule")
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_gears_involute.z_z_value",
+                {"value": str(p.z1 + p.z2), "value2": str(2 * p.z_min)},
+            ),
+            key="pair.shift_rule",
+        )
 
     def diff(x1: float) -> float:
         s = _layout(p, x1, -x1).gears
@@ -182,14 +192,19 @@ def check_exists(pair: Pair) -> Pair:
     said = f"h_a* = {p.addendum:g}, x1 = {pair.x1:.4g}, x2 = {pair.x2:.4g}"
     values = [pair.eps, pair.a_w, *(v for g in pair.gears for v in (g.s_a, g.rho_p, g.r_a))]
     if not all(math.isfinite(v) for v in values):
-        raise SceneError(f"the pair z1 = {p.z1}, z2 = {p.z2} cannot be laid out with {said} "
-                         "(a dimension is not finite)", key=key)
+        raise SceneError(Text("errmsg.synthesis_gears_involute.pair_z_z", {"z1": str(p.z1),
+                                                                           "z2": str(p.z2),
+                                                                           "said": str(said)}),
+                         key=key)
     for j, g in enumerate(pair.gears, start=1):
         if not g.s_a > 0:
-            raise SceneError(f"gear {j} (z = {g.z}) cannot be cut with {said}: its tooth would be "
-                             f"{g.s_a * 1000:.3f} mm thick at the tip circle (its flanks cross "
-                             "below it); a smaller addendum or shift makes a pair that exists",
-                             key=key)
+            raise SceneError(
+                Text(
+                    "errmsg.synthesis_gears_involute.gear_j_z",
+                    {"j": str(j), "z": str(g.z), "said": str(said), "value": f"{g.s_a * 1000:.3f}"},
+                ),
+                key=key,
+            )
     return pair
 
 

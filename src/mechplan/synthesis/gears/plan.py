@@ -15,6 +15,7 @@ from fractions import Fraction
 import numpy as np
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.gears import PlanetarySpec
 from .train import centre_distance, drawable_distance, mesh_teeth
 
@@ -78,12 +79,16 @@ def velocity_plan(spec: PlanetarySpec, z: tuple[int, ...], a_w: float | None = N
     a_w = drawable_distance(spec, z) if a_w is None else a_w
     if a_w is None:
         a12, a34 = (float(v[0]) for v in centre_distance(spec, np.asarray([z])))
-        raise SceneError(f"the set {list(z)} is not coaxial (a_w = {a12 * 1000:.6g} mm of the "
-                         f"first mesh, {a34 * 1000:.6g} mm of the second): its velocity plan cannot"
-                         f" be drawn; give centre_distance (or \"auto\") to work both meshes at one"
-                         f" distance with shifted gears", key="planetary.centre_distance")
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_gears_plan.set_z_not",
+                {"z": str(list(z)), "value": f"{a12 * 1000:.6g}", "value2": f"{a34 * 1000:.6g}"},
+            ),
+            key="planetary.centre_distance",
+        )
     if not a_w > 0:
-        raise SceneError(f"must be positive (got {a_w})", key="planetary.centre_distance")
+        raise SceneError(Text("errmsg.synthesis_gears_plan.positive_w", {"a_w": str(a_w)}),
+                         key="planetary.centre_distance")
     radius, y_a, y_b = working_radii(spec, z, a_w)
     aw = Fraction(a_w)
     # unknowns: ω_a, ω_planet block, ω_b, ω_h
@@ -100,10 +105,13 @@ def velocity_plan(spec: PlanetarySpec, z: tuple[int, ...], a_w: float | None = N
     try:
         w_a, w_p, w_b, w_h = _solve_exact(rows, rhs)
     except ZeroDivisionError:
-        raise SceneError(f"the set {list(z)} with {' and '.join(known)} given is locked or "
-                         f"undetermined (i^h = 1: the two central gears turn alike relative to the "
-                         f"carrier); choose other links or other tooth numbers",
-                         key="planetary.given") from None
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_gears_plan.set_z_known",
+                {"z": str(list(z)), "known": " and ".join(known)},
+            ),
+            key="planetary.given",
+        ) from None
     exact = {names[0]: w_a, names[-1]: w_b, "h": w_h}
     for n in names[1:-1]:
         exact[n] = w_p

@@ -18,6 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.gears import PlanetarySpec, Scheme
 from . import train
 
@@ -205,29 +206,38 @@ def explain_empty(spec: PlanetarySpec, result: SearchResult) -> SceneError:
     """The error naming the key whose condition no set in the range can meet."""
     c = result.counts
     lo, hi = spec.z_range
-    where = f"with z in {lo}…{hi} (scheme {spec.scheme.value})"
+    where = Text("errmsg.gears_search.where", {"lo": str(lo), "hi": str(hi),
+                                               "scheme": str(spec.scheme.value)})
     target = f"u = {spec.ratio:g} ± {spec.deviation * 100:g} %"
     if c["ratio"] == 0:
         near = nearest(spec)
-        hint = (f"the nearest is u = {near[1]:.4g} with z = {', '.join(map(str, near[0]))}"
-                if near else "no coaxial set exists in the range")
-        return SceneError(f"no tooth set {where} gives {target}; {hint}", key="planetary.ratio")
+        hint = (Text("errmsg.gears_search.nearest", {"u": f"{near[1]:.4g}",
+                                                      "z": ", ".join(map(str, near[0]))})
+                if near else Text("errmsg.gears_search.no_coaxial"))
+        return SceneError(Text("errmsg.gears_search.no_tooth_set",
+                               {"where": where, "target": target, "hint": hint}),
+                          key="planetary.ratio")
     if c["z_min"] == 0:
-        return SceneError(f"no set {where} giving {target} has every z ≥ {spec.z_min}; widen the "
-                          "range or allow fewer teeth with profile shift", key="planetary.z_min")
+        return SceneError(Text("errmsg.gears_search.z_min", {"where": where, "target": target,
+                                                              "z_min": str(spec.z_min)}),
+                          key="planetary.z_min")
     if c["ring_difference"] == 0:
-        return SceneError(f"no set {where} giving {target} has z_ring − z_planet ≥ "
-                          f"{spec.ring_difference}", key="planetary.ring_difference")
+        return SceneError(Text("errmsg.gears_search.ring_difference",
+                               {"where": where, "target": target,
+                                "difference": str(spec.ring_difference)}),
+                          key="planetary.ring_difference")
     z = candidate_sets(spec)
     for stage in range(3):
         z = z[_stage_masks(spec, z)[stage]]
     possible = [k for k in range(2, 13)
                 if np.any(train.assembles(spec, z, k) & (train.neighbour_gap(spec, z, k) > 0))]
-    alt = (f"k = {', '.join(map(str, possible))} can" if possible else "no k from 2 to 12 can")
-    what = ("cannot be assembled equally spaced" if c["assembly"] == 0
-            else "do not fit side by side (the tips of adjacent planets touch)")
-    return SceneError(f"k = {spec.planets} planets {what} in any set {where} giving {target}; "
-                      f"{alt}", key="planetary.planets")
+    alt = (Text("errmsg.gears_search.k_can", {"k": ", ".join(map(str, possible))}) if possible
+           else Text("errmsg.gears_search.no_k_can"))
+    what = (Text("errmsg.gears_search.not_assembled") if c["assembly"] == 0
+            else Text("errmsg.gears_search.not_side_by_side"))
+    return SceneError(Text("errmsg.gears_search.planets",
+                           {"planets": str(spec.planets), "what": what, "where": where,
+                            "target": target, "alt": alt}), key="planetary.planets")
 
 
 def best_or_error(spec: PlanetarySpec) -> SearchResult:

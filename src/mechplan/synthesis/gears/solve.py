@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.gears import GearScene, OrdinarySpec, PlanetarySpec
 from . import search, train
 from .involute import Pair, pair_layout
@@ -139,9 +140,19 @@ def solve_ordinary(spec: OrdinarySpec, z_min: int = 17, deviation: float = 0.02)
         ok = np.flatnonzero(err <= deviation)
         if ok.size == 0:
             j = int(np.argmin(err))
-            raise SceneError(f"no pair with z5 from {z_min} to 200 gives |u| = {u:g} ± "
-                             f"{deviation * 100:g} %; the nearest is {int(z6s[j])}/{int(z5s[j])}",
-                             key="ordinary.ratio")
+            raise SceneError(
+                Text(
+                    "errmsg.synthesis_gears_solve.no_pair_z",
+                    {
+                        "z_min": str(z_min),
+                        "u": f"{u:g}",
+                        "value": f"{deviation * 100:g}",
+                        "z6s": str(int(z6s[j])),
+                        "z5s": str(int(z5s[j])),
+                    },
+                ),
+                key="ordinary.ratio",
+            )
         z5, z6 = int(z5s[ok[0]]), int(z6s[ok[0]])
     return OrdinaryResult(spec, z5, z6, -z6 / z5)
 

@@ -15,6 +15,7 @@ from fractions import Fraction
 import numpy as np
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.gears import PlanetarySpec, Scheme
 
 
@@ -83,12 +84,30 @@ def check_links(spec: PlanetarySpec) -> None:
         return
     for key, name in (("fixed", spec.fixed), ("input", spec.input), ("output", spec.output)):
         if name not in links:
-            raise SceneError(f"must be one of {', '.join(links)} for the scheme "
-                             f"{spec.scheme.value} (got {name!r})", key=f"planetary.{key}")
+            raise SceneError(
+                Text(
+                    "errmsg.synthesis_gears_train.one_links_scheme",
+                    {
+                        "links": ", ".join(links),
+                        "value": str(spec.scheme.value),
+                        "name": repr(name),
+                    },
+                ),
+                key=f"planetary.{key}",
+            )
     if len({spec.fixed, spec.input, spec.output}) != 3:
-        raise SceneError(f"fixed, input and output must be three different links of {links} (got "
-                         f"{spec.fixed!r}, {spec.input!r}, {spec.output!r})",
-                         key="planetary.output")
+        raise SceneError(
+            Text(
+                "errmsg.synthesis_gears_train.fixed_input_output",
+                {
+                    "links": str(links),
+                    "fixed": repr(spec.fixed),
+                    "input": repr(spec.input),
+                    "output": repr(spec.output),
+                },
+            ),
+            key="planetary.output",
+        )
 
 
 def module_ratio(spec: PlanetarySpec) -> float:

@@ -1,0 +1,114 @@
+"""The second driving crank of a mechanism with W = 2 (``[drive2]``): its first-class mechanism.
+
+Built after the first crank and before the groups, as the course does with I(0,1), I(0,4) →
+II(2,3): its angle θ2 follows the common parameter by its law (``SECOND_CRANK_ANGLE``), its points
+are laid off at their lengths (``POLAR_POINT``); on the velocity plan its pin's image is
+ω2 × l ⊥ the crank (``DRIVE_VELOCITY``), on the acceleration plan ω2²·l towards the pivot plus
+ε2·l ⊥ the crank (``DRIVE_ACCELERATION``). The groups between the two cranks then close as usual.
+"""
+
+from __future__ import annotations
+
+from ...model.mechanism import GROUND, Drive
+from ...model.plans import Plan
+from ..builder import Builder, alabel, vlabel
+from ..ops import Op
+from ..segments import SegmentKind
+from ..step import Kind, Role
+from ..terms import from_to, perp
+from .images import absolute, complete
+from .position import _local_angle
+
+P, V, A = Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION
+
+
+def group_name(drive: Drive) -> str:
+    """The second crank's first-class mechanism, ``I(0,4)``."""
+    return f"I({GROUND},{drive.link})"
+
+
+def _tip(b: Builder, drive: Drive) -> str:
+    return next(p for p in b.mech.links[drive.link].points if p != drive.pivot)
+
+
+def law(first: Drive, second: Drive) -> tuple[float, float]:
+    """(offset, ratio) of θ2 = offset + ratio·θ1 from φ2 = phase + |ω2|/|ω1|·φ1."""
+    speed = abs(second.omega) / abs(first.omega)
+    ratio = second.sense * speed * first.sense
+    offset = second.ref_angle + second.sense * (second.phase - speed * first.sense
+                                                 * first.ref_angle)
+    return offset, ratio
+
+
+def emit_position(b: Builder) -> None:
+    """The second crank's angle from the first's, and its points."""
+    drive = b.mech.drive2
+    if drive is None:
+        return
+    group = group_name(drive)
+    b.c.second_driver = drive.link
+    offset, ratio = law(b.mech.drive, drive)
+    crank = b.mech.links[drive.link]
+    pivot = drive.pivot
+    tip = _tip(b, drive)
+    theta = b.add(f"pos.phi.{drive.link}", Op.SECOND_CRANK_ANGLE, ("pos.phi1",), P, Kind.SCALAR,
+                  Role.GIVEN, f"θ{drive.link}", group, subject=(b.mech.drive.link, drive.link),
+                  offset=offset, ratio=ratio)
+    base = _local_angle(b, drive.link, pivot, tip)
+    for name in crank.points:
+        if name == pivot:
+            continue
+        b.pos[name] = b.add(f"pos.{name}", Op.POLAR_POINT, (b.pos[pivot], theta), P, Kind.POINT,
+                            Role.RESULT, name, group=group, subject=(pivot, name),
+                            length=crank.distance(pivot, name),
+                            offset=_local_angle(b, drive.link, pivot, name) - base)
+        b.segment(P, b.pos[pivot], b.pos[name], f"{pivot}{name}", f"l_{pivot}{name}",
+                  SegmentKind.LINK, group)
+    body = b.bodies[drive.link]
+    body.anchor = pivot
+    body.angle = theta if base == 0.0 else b.add(
+        f"pos.angle.{drive.link}", Op.ANGLE_PLUS, (theta,), P, Kind.SCALAR, Role.AUXILIARY,
+        f"θ{drive.link}", group, delta=-base)
+    b.result(f"angle_{drive.link}", body.angle)
+
+
+def emit_velocity(b: Builder) -> None:
+    """ω2 (given by its law) and the image of its pin: pc ⊥ the crank."""
+    drive = b.mech.drive2
+    if drive is None:
+        return
+    group, tip = group_name(drive), _tip(b, drive)
+    body = b.bodies[drive.link]
+    body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR, Role.GIVEN,
+                       f"ω{drive.link}", group, value=drive.omega)
+    b.result(f"omega_{drive.link}", body.omega)
+    b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY, (b.pos[drive.pivot], b.pos[tip]), V,
+                       Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
+                       omega=drive.omega)
+    b.c.equations[(V, group)] = (
+        f"v_{tip} = ω{drive.link} × l_{drive.pivot}{tip}",
+        [(f"v_{tip}", perp(f"{drive.pivot}{tip}"), f"ω{drive.link}·l_{drive.pivot}{tip}")])
+    absolute(b, tip, V, group)
+    complete(b, drive.link, V, group)
+
+
+def emit_acceleration(b: Builder) -> None:
+    """ε2 (given by its law) and the image of its pin: normal and tangential parts."""
+    drive = b.mech.drive2
+    if drive is None:
+        return
+    group, tip = group_name(drive), _tip(b, drive)
+    body = b.bodies[drive.link]
+    body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR,
+                         Role.GIVEN, f"ε{drive.link}", group, value=drive.epsilon)
+    b.result(f"epsilon_{drive.link}", body.epsilon)
+    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
+                       Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
+                       omega=drive.omega, epsilon=drive.epsilon)
+    rows = [(f"a^n_{tip}", from_to(tip, drive.pivot), f"ω{drive.link}²·l_{drive.pivot}{tip}")]
+    if drive.epsilon:
+        rows.append((f"a^t_{tip}", perp(f"{drive.pivot}{tip}"),
+                     f"ε{drive.link}·l_{drive.pivot}{tip}"))
+    b.c.equations[(A, group)] = (f"a_{tip} = a^n_{tip} + a^t_{tip}", rows)
+    absolute(b, tip, A, group)
+    complete(b, drive.link, A, group)

@@ -1,0 +1,190 @@
+"""The thermal calculation of an engine's working cycle (Grinevetsky–Mazing as in Kolchin–Demidov):
+fuel → air and products, intake with residual gases, compression, combustion, expansion, the mean
+indicated pressure, efficiencies, power and the cylinder for a given power.
+
+Choices stated: p_a (or the intake losses at the rated speed), n1, n2, ξ_z (and λ_p of a
+diesel) are given, not read off the courses'
+nomograms; the mean molar heat capacities (kJ/(kmol·K), t in °C) are Kolchin–Demidov's fits of
+the individual gases — fresh charge (air) 20.6 + 2.638·10⁻³t, products at t_c from the 0–1500 °C
+fits, at t_z from the 1501–2800 °C fits — mixed by the products' mole fractions; p_k = p0,
+T_k = T0 (no supercharging); the clean-out and recharge coefficients are 1.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+R_MU = 8.315                 # kJ/(kmol·K)
+AIR_O2 = 0.208               # O2 in air by volume
+R_AIR = 287.0                # J/(kg·K)
+
+#: 0–1500 °C: a + b·t + c·t² (t in °C)
+LOW = {"CO2": (27.941, 0.019, -5.487e-6), "CO": (20.597, 0.00267, 0.0),
+       "H2O": (24.953, 0.005359, 0.0), "H2": (20.684, 0.000206, 5.88e-7),
+       "N2": (20.398, 0.0025, 0.0), "O2": (20.93, 0.004641, -8.4e-7)}
+#: 1501–2800 °C: a + b·t
+HIGH = {"CO2": (39.123, 0.003349), "CO": (22.49, 0.00143), "H2O": (26.67, 0.004438),
+        "H2": (19.678, 0.001758), "N2": (21.951, 0.001457), "O2": (23.723, 0.00155)}
+
+FUELS = {"petrol": (0.855, 0.145, 0.0, 43.93e3, 115.0), "diesel": (0.870, 0.126, 0.004, 42.44e3,
+                                                                  0.0)}
+
+
+@dataclass(frozen=True)
+class CycleSpec:
+    """Inputs of the thermal calculation (SI units except H_u in kJ/kg)."""
+
+    diesel: bool
+    C: float
+    H: float
+    O: float
+    H_u: float                   # lower heating value, kJ/kg
+    m_fuel: float                # molar mass of the fuel vapour, kg/kmol (0: not counted)
+    alpha: float
+    epsilon: float
+    speed_rpm: float
+    p0: float
+    T0: float
+    dT: float
+    p_a: float
+    p_r: float
+    T_r: float
+    n1: float
+    n2: float
+    xi_z: float
+    lambda_p: float              # diesel: p_z/p_c
+    K: float                     # H2/CO in the products of a rich mixture
+    phi_i: float                 # fullness of the rounded diagram
+    eta_m: float
+    strokes: int
+    cylinders: int
+    power: float | None = None   # W: size the cylinder for this effective power
+    S_D: float = 1.0
+
+
+@dataclass(frozen=True)
+class Cycle:
+    """Results (SI; kmol per kg of fuel)."""
+
+    spec: CycleSpec
+    L0: float
+    l0: float
+    M1: float
+    products: dict[str, float]
+    M2: float
+    mu0: float
+    dH_u: float                  # heat lost to incomplete combustion, kJ/kg
+    gamma_r: float
+    T_a: float
+    eta_v: float
+    p_c: float
+    T_c: float
+    mu: float
+    T_z: float
+    p_z: float
+    lam: float                   # pressure-rise ratio p_z/p_c
+    rho: float                   # pre-expansion ratio
+    p_b: float
+    T_b: float
+    p_i_theory: float
+    p_i: float
+    eta_i: float
+    g_i: float                   # g/(kW·h)
+    p_e: float
+    eta_e: float
+    g_e: float
+
+    def power(self, V_h: float, cylinders: int | None = None) -> float:
+        """Effective power (W) of cylinders of displacement V_h (m³)."""
+        s = self.spec
+        i = cylinders or s.cylinders
+        return self.p_e * V_h * i * s.speed_rpm / 60.0 * 2.0 / s.strokes
+
+    def cylinder_for(self, power: float) -> tuple[float, float, float]:
+        """(V_h m³, bore m, stroke m) for an effective power (W)."""
+        s = self.spec
+        V_h = power / (self.p_e * s.cylinders * s.speed_rpm / 60.0 * 2.0 / s.strokes)
+        D = (4.0 * V_h / (math.pi * s.S_D)) ** (1.0 / 3.0)
+        return V_h, D, D * s.S_D
+
+
+def _mix(fractions: dict[str, float], t: float, high: bool) -> tuple[float, float]:
+    """Mixture (a, b[, c folded in]) of the mean molar heat capacity at t: returns (value, slope)
+    so that mc_v(t) = value and, for the high range, mc_v = a + b·t exactly."""
+    total = sum(fractions.values())
+    if high:
+        a = sum(HIGH[g][0] * m for g, m in fractions.items()) / total
+        b = sum(HIGH[g][1] * m for g, m in fractions.items()) / total
+        return a, b
+    v = sum((LOW[g][0] + LOW[g][1] * t + LOW[g][2] * t * t) * m
+            for g, m in fractions.items()) / total
+    return v, 0.0
+
+
+def products_of(s: CycleSpec, L0: float) -> dict[str, float]:
+    """kmol of each combustion product per kg of fuel."""
+    if s.alpha < 1.0:
+        co = 2.0 * (1.0 - s.alpha) / (1.0 + s.K) * AIR_O2 * L0
+        h2 = s.K * co
+        return {"CO2": s.C / 12.0 - co, "CO": co, "H2O": s.H / 2.0 - h2, "H2": h2,
+                "N2": (1.0 - AIR_O2) * s.alpha * L0}
+    return {"CO2": s.C / 12.0, "H2O": s.H / 2.0, "O2": AIR_O2 * (s.alpha - 1.0) * L0,
+            "N2": (1.0 - AIR_O2) * s.alpha * L0}
+
+
+def thermal_cycle(s: CycleSpec) -> Cycle:
+    """Run the calculation."""
+    L0 = (s.C / 12.0 + s.H / 4.0 - s.O / 32.0) / AIR_O2
+    l0 = (8.0 / 3.0 * s.C + 8.0 * s.H - s.O) / 0.23
+    M1 = s.alpha * L0 + (1.0 / s.m_fuel if s.m_fuel > 0 else 0.0)
+    prod = products_of(s, L0)
+    M2 = sum(prod.values())
+    mu0 = M2 / M1
+    dH = 119950.0 * (1.0 - s.alpha) * L0 if s.alpha < 1.0 else 0.0
+    eps = s.epsilon
+    Tk = s.T0 + s.dT
+    gamma_r = Tk / s.T_r * s.p_r / (eps * s.p_a - s.p_r)
+    T_a = (Tk + gamma_r * s.T_r) / (1.0 + gamma_r)
+    eta_v = s.T0 / Tk * (eps * s.p_a - s.p_r) / ((eps - 1.0) * s.p0)
+    p_c = s.p_a * eps ** s.n1
+    T_c = T_a * eps ** (s.n1 - 1.0)
+    t_c = T_c - 273.0
+    cv_air = 20.6 + 2.638e-3 * t_c
+    cv_res, _ = _mix(prod, t_c, high=False)
+    mu = (mu0 + gamma_r) / (1.0 + gamma_r)
+    a, b = _mix(prod, 0.0, high=True)
+    if s.diesel:
+        a += R_MU
+        left = (s.xi_z * s.H_u / (M1 * (1.0 + gamma_r))
+                + ((cv_air + gamma_r * cv_res) / (1.0 + gamma_r) + R_MU * s.lambda_p) * t_c
+                + R_MU * 273.0 * (s.lambda_p - mu))
+    else:
+        left = (s.xi_z * (s.H_u - dH) / (M1 * (1.0 + gamma_r))
+                + (cv_air + gamma_r * cv_res) / (1.0 + gamma_r) * t_c)
+    # μ·(a + b·t_z)·t_z = left
+    t_z = (-a + math.sqrt(a * a + 4.0 * b * left / mu)) / (2.0 * b)
+    T_z = t_z + 273.0
+    if s.diesel:
+        lam = s.lambda_p
+        p_z = lam * p_c
+        rho = mu * T_z / (lam * T_c)
+        delta = eps / rho
+    else:
+        p_z = p_c * mu * T_z / T_c
+        lam = p_z / p_c
+        rho = 1.0
+        delta = eps
+    p_b = p_z / delta ** s.n2
+    T_b = T_z / delta ** (s.n2 - 1.0)
+    p_it = p_c / (eps - 1.0) * (lam * (rho - 1.0)
+                                + lam * rho / (s.n2 - 1.0) * (1.0 - delta ** (1.0 - s.n2))
+                                - (1.0 - eps ** (1.0 - s.n1)) / (s.n1 - 1.0))
+    p_i = s.phi_i * p_it
+    rho_k = s.p0 / (R_AIR * s.T0)
+    eta_i = p_i * l0 * s.alpha / (s.H_u * 1e3 * rho_k * eta_v)
+    g_i = 3.6e6 / (s.H_u * eta_i)
+    p_e = s.eta_m * p_i
+    eta_e = eta_i * s.eta_m
+    return Cycle(s, L0, l0, M1, prod, M2, mu0, dH, gamma_r, T_a, eta_v, p_c, T_c, mu, T_z, p_z,
+                 lam, rho, p_b, T_b, p_it, p_i, eta_i, g_i, p_e, eta_e, 3.6e6 / (s.H_u * eta_e))

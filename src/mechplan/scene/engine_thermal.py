@@ -1,0 +1,97 @@
+"""Parse an engine scene's ``[thermal]`` table (the thermal calculation of the cycle) and turn its
+result into the indicator diagram's thermal parameters."""
+
+from __future__ import annotations
+
+from ..i18n import Text
+from ..model.engine import IndicatorKind, IndicatorSpec, ThermalSpec
+from ..model.engine_thermal import FUELS, Cycle, CycleSpec, thermal_cycle
+from .reader import Table
+
+KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alpha", "epsilon",
+        "p0", "T0", "dT", "p_a", "p_r", "T_r", "n1", "n2", "xi_z", "lambda_p", "K", "phi_i",
+        "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity")
+
+
+def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
+            what: str) -> float:
+    """A plain number ``name`` (``what`` it is, for the reader of the code) within [lo, hi]."""
+    v = t.quantity(name, "dimensionless", default, required=default is None)
+    assert v is not None
+    if not lo <= v <= hi:
+        raise t.error(name, Text("cycle.error.range", {"lo": lo, "hi": hi, "value": v}))
+    return v
+
+
+def _intake(t: Table, p0: float, T0: float) -> float:
+    """p_a given, or p0 − Δp_a with Δp_a = (β² + ξ)·w²·ρ_k/2 (Kolchin–Demidov, at the rated
+    speed) from ``intake_losses`` (β² + ξ) and ``intake_velocity`` w."""
+    if t.has("p_a"):
+        if t.has("intake_losses") or t.has("intake_velocity"):
+            raise t.error("p_a", Text("cycle.error.intake_both"))
+        v = t.quantity("p_a", "pressure", required=True, positive=True)
+        assert v is not None
+        return v
+    if not (t.has("intake_losses") and t.has("intake_velocity")):
+        raise t.error("p_a", Text("cycle.error.intake_missing"))
+    k = _number(t, "intake_losses", None, 1.0, 10.0, "β² + ξ of the intake")
+    w = t.quantity("intake_velocity", "velocity", required=True, positive=True)
+    assert w is not None
+    p_a = p0 - k * w * w * p0 / (287.0 * T0) / 2.0
+    if not p_a > 0.3 * p0:
+        raise t.error("intake_velocity", Text("cycle.error.intake_loss", {"p_a": p_a * 1e-3}))
+    return p_a
+
+
+def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: float,
+                  stroke_bore: float) -> tuple[Cycle, IndicatorSpec]:
+    """The thermal calculation and the indicator diagram it gives (rounded as the courses do)."""
+    t.check_keys(KEYS)
+    fuel = t.string("fuel", "petrol", choices=tuple(FUELS)) or "petrol"
+    C0, H0, O0, Hu0, m0 = FUELS[fuel]
+    diesel = (t.string("cycle", "diesel" if fuel == "diesel" else "otto",
+                       choices=("otto", "diesel")) == "diesel")
+    C = _number(t, "C", C0, 0.0, 1.0, "the carbon mass fraction")
+    H = _number(t, "H", H0, 0.0, 1.0, "the hydrogen mass fraction")
+    O = _number(t, "O", O0, 0.0, 1.0, "the oxygen mass fraction")
+    if abs(C + H + O - 1.0) > 0.02:
+        raise t.error("C", Text("cycle.error.sum", {"value": C + H + O}))
+    Hu = _number(t, "heating_value", Hu0 * 1e-3, 10.0, 150.0, "the lower heating value in MJ/kg")
+    m_f = _number(t, "fuel_molar_mass", m0, 0.0, 1000.0, "the fuel's molar mass in kg/kmol")
+    alpha = _number(t, "alpha", None, 0.5, 5.0, "the excess-air ratio α")
+    if diesel and alpha < 1.0:
+        raise t.error("alpha", Text("cycle.error.diesel_alpha", {"value": alpha}))
+    eps = _number(t, "epsilon", None, 2.0, 30.0, "the compression ratio ε")
+    p_amb = t.quantity("p0", "pressure", p0, positive=True)
+    p_r = t.quantity("p_r", "pressure", required=True, positive=True)
+    assert p_amb is not None and p_r is not None
+    T0 = _number(t, "T0", 293.0, 200.0, 400.0, "the ambient temperature in K")
+    p_a = _intake(t, p_amb, T0)
+    if not eps * p_a > p_r:
+        raise t.error("p_r", Text("cycle.error.residual"))
+    dT = _number(t, "dT", 10.0 if not diesel else 15.0, 0.0, 60.0, "the charge heating in K")
+    T_r = _number(t, "T_r", None, 500.0, 1300.0, "the residual-gas temperature in K")
+    n1 = _number(t, "n1", None, 1.2, 1.45, "the compression polytrope n1")
+    n2 = _number(t, "n2", None, 1.1, 1.4, "the expansion polytrope n2")
+    xi = _number(t, "xi_z", None, 0.5, 1.0, "the heat-use coefficient ξ_z")
+    lam_p = _number(t, "lambda_p", 1.7 if diesel else 0.0, 0.0, 3.0,
+                    "the pressure-rise ratio λ_p") if diesel else 0.0
+    if diesel and lam_p < 1.0:
+        raise t.error("lambda_p", Text("cycle.error.lambda_p", {"value": lam_p}))
+    K = _number(t, "K", 0.5, 0.0, 1.0, "H2/CO in the products K")
+    phi_i = _number(t, "phi_i", 0.96 if not diesel else 0.95, 0.8, 1.0,
+                    "the fullness of the diagram φ_i")
+    eta_m = _number(t, "eta_m", 0.8, 0.3, 1.0, "the mechanical efficiency η_m")
+    power = t.quantity("power_kW", "dimensionless", positive=True)
+    S_D = _number(t, "stroke_bore", stroke_bore, 0.3, 3.0, "the stroke-to-bore ratio S/D")
+    spec = CycleSpec(diesel, C, H, O, Hu * 1e3, m_f if not diesel else 0.0, alpha, eps,
+                     speed * 30.0 / 3.141592653589793, p_amb, T0, dT, p_a, p_r, T_r, n1, n2, xi,
+                     lam_p, K, phi_i, eta_m, strokes, cylinders,
+                     power * 1e3 if power is not None else None, S_D)
+    cycle = thermal_cycle(spec)
+    if not cycle.rho < eps:
+        raise t.error("xi_z", Text("cycle.error.rho", {"rho": cycle.rho}))
+    thermal = ThermalSpec(eps, p_a, p_r, n1, n2, cycle.p_z, cycle.rho)
+    if 1.2 * cycle.p_c > 0.85 * cycle.p_z:
+        thermal = ThermalSpec(eps, p_a, p_r, n1, n2, cycle.p_z, cycle.rho, rounding=False)
+    return cycle, IndicatorSpec(IndicatorKind.THERMAL, thermal=thermal, epsilon=eps)
