@@ -13,18 +13,17 @@ drawn through the student's own centres, so a centre right from wrong neighbours
 from __future__ import annotations
 
 import math
-import re
 from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
-from ..construct.ops import centres as H
 from ..construct.plans.centres import Centre, Centres, centres_at, label, ordered
 from ..model.mechanism import PairKind
 from ..model.plans import Plan
 from ..submission.centre_marks import CentreMark, CentreName
 from ..submission.read import Entry, Note
+from .centre_table import ARROW_DEG, exact_centre, find_centre, grade_table, rule_of
 from .context import Ctx
 from .report import (
     CARRIED,
@@ -37,12 +36,8 @@ from .report import (
     CheckReport,
     Finding,
     Tolerance,
-    ValueRow,
 )
-from .texts import T, Text, join
-
-#: how far an arrow toward a far centre may point off it (degrees)
-ARROW_DEG = 3.0
+from .texts import T, join
 
 
 @dataclass
@@ -90,7 +85,7 @@ def grade_centres(ctx: Ctx, k: int, report: CheckReport,
         trials = []
         for kk in ks:
             trial = CheckReport(report.scene, report.submission, report.kind, report.phi_deg, "")
-            _grade_table(ctx, cs, kk, trial, entries)
+            grade_table(ctx, cs, kk, trial, entries)
             wrong = sum(v.verdict == WRONG for v in trial.values)
             trials.append((wrong, 0 if kk == k else 1, kk, trial))
         *_, best_table = min(trials, key=lambda t: t[:3])
@@ -108,15 +103,6 @@ def _score(r: CheckReport) -> tuple[int, float]:
 
 
 # -- drawn centres -------------------------------------------------------------------------------
-def _exact(cs: Centres, ctr: Centre, k: int) -> tuple[np.ndarray | None, np.ndarray | None]:
-    """(point m, None) for a finite centre, (None, direction) at infinity, (None, None) if
-    indeterminate."""
-    h = cs.values[(ctr.i, ctr.j)].h[k:k + 1]
-    if not np.all(np.isfinite(h)):
-        return None, None
-    if H.is_infinite(h)[0]:
-        return None, H.direction(h)[0]
-    return H.point(h, cs.length)[0], None
 
 
 def _frames(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
@@ -138,7 +124,7 @@ def _frames(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
                 break
     world, paper = [], []
     for key, ats in pins.items():
-        r, _ = _exact(cs, cs.diagram.centre(*key), k)
+        r, _ = exact_centre(cs, cs.diagram.centre(*key), k)
         if r is not None:
             world.append(r)
             paper.append(ats[0])
@@ -183,7 +169,7 @@ def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
     pins = {key: [np.asarray(m.at) for m in ms
                   if m.direction is None and not m.infinite and m.at is not None]
             for key, ms in by_key.items()
-            if (ctr := _find(cs, key)) is not None and ctr.pair is not None
+            if (ctr := find_centre(cs, key)) is not None and ctr.pair is not None
             and ctr.pair.kind is PairKind.REVOLUTE}
     pins = {key: v for key, v in pins.items() if v}
     frames = _frames(ctx, cs, k, report, pins)
@@ -196,7 +182,7 @@ def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
     rows: dict[tuple[str, str], CentreRow] = {}
     chosen: dict[tuple[str, str], CentreMark] = {}
     for key, ms in by_key.items():
-        ctr = _find(cs, key)
+        ctr = find_centre(cs, key)
         if ctr is None:
             continue
         best = ms[int(np.argmin([_error(cs, ctr, k, frame, m, tol, pivot)[0] for m in ms]))]
@@ -211,7 +197,7 @@ def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
             _why(cs, cs.diagram.centre(*key), k, frame, chosen, rows, row)
     for ctr in cs.diagram.centres:
         key = (ctr.i, ctr.j)
-        if key not in rows and any(v is not None for v in _exact(cs, ctr, k)):
+        if key not in rows and any(v is not None for v in exact_centre(cs, ctr, k)):
             rows[key] = CentreRow(label(ctr), "", None, None, None, None, MISSING,
                                   hint=T("centres.missing_hint"))
     order = {(c.i, c.j): c.order for c in cs.diagram.centres}
@@ -225,17 +211,10 @@ def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
                                            row.hint, error=""))
 
 
-def _find(cs: Centres, key: tuple[str, str]) -> Centre | None:
-    try:
-        return cs.diagram.centre(*key)
-    except KeyError:
-        return None
-
-
 def _fit(cs: Centres, k: int, f: _Frame, pins: dict[tuple[str, str], list[np.ndarray]]) -> float:
     errs = []
     for key, ats in pins.items():
-        r, _ = _exact(cs, cs.diagram.centre(*key), k)
+        r, _ = exact_centre(cs, cs.diagram.centre(*key), k)
         if r is not None:
             errs.append(min(float(np.hypot(*(f.paper(r) - a))) for a in ats))
     return float(np.median(errs)) if errs else math.inf
@@ -245,7 +224,7 @@ def _error(cs: Centres, ctr: Centre, k: int, f: _Frame, m: CentreMark, tol: Tole
            pivot: np.ndarray) -> tuple[float, float, tuple[float, float] | None, str]:
     """(error, allowed, exact place on paper, how it was read): mm for a point, degrees for an
     arrow."""
-    r, u = _exact(cs, ctr, k)
+    r, u = exact_centre(cs, ctr, k)
     at = np.asarray(m.at if m.at is not None else (math.nan, math.nan), dtype=float)
     if r is None and u is None:
         return 0.0, 0.0, None, "indeterminate"
@@ -301,7 +280,7 @@ def _why(cs: Centres, ctr: Centre, k: int, frame: _Frame,
     far the drawn centre is off each; carried when it lies on the lines through the student's
     own (wrong) centres."""
     row.cause = NEW
-    r, _u = _exact(cs, ctr, k)
+    r, _u = exact_centre(cs, ctr, k)
     if ctr.pair is not None:
         pair = ctr.pair
         if pair.kind is PairKind.PRISMATIC:
@@ -313,7 +292,7 @@ def _why(cs: Centres, ctr: Centre, k: int, frame: _Frame,
         row.hint = T("centres.hint_infinite", centre=row.label)
         return
     if row.at_mm is None:               # written "∞" for a finite centre
-        row.hint = _rule(cs, ctr, k)
+        row.hint = rule_of(cs, ctr, k)
         return
     tri = cs.values[(ctr.i, ctr.j)].triangles[k]
     lines, offs, own_ok = [], [], True
@@ -341,7 +320,7 @@ def _paper_of(cs: Centres, key: tuple[str, str], k: int, frame: _Frame,
     m = chosen.get(key)
     if m is not None and m.direction is None and not m.infinite and m.at is not None:
         return np.asarray(m.at, dtype=float), True
-    r, u = _exact(cs, cs.diagram.centre(*key), k)
+    r, u = exact_centre(cs, cs.diagram.centre(*key), k)
     if r is not None:
         return frame.paper(r), True
     return (np.asarray(u) if u is not None else np.full(2, np.nan)), False
@@ -365,136 +344,6 @@ def _note(key: str, **args: object) -> Note:
     return Note("warning", T(key, **args))
 
 
-# -- a table of centres ------------------------------------------------------------------------
-def _grade_table(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
-                 entries: Sequence[tuple[CentreName, Entry]]) -> None:
-    tol = ctx.options.tol(Plan.POSITION)
-    mu_l = ctx.scales.get(Plan.POSITION) or cs.length / 100.0
-    links = cs.diagram.links
-    pins = [r for ctr in cs.diagram.centres if ctr.primary
-            and (r := _exact(cs, ctr, k)[0]) is not None]
-    middle = np.mean(pins, axis=0) if pins else np.zeros(2)
-    mech_pts = {p for lk in ctx.scene.mechanism.links.values() for p in lk.points}
-    for name, e in entries:
-        ctr = _find(cs, ordered(links, name.i, name.j)) if name.i in links and \
-            name.j in links and name.i != name.j else None
-        text = e.value or e.text or e.length or ""
-        if ctr is None:
-            report.notes.append(_note("centres.unknown", name=e.name))
-            continue
-        r, _u = _exact(cs, ctr, k)
-        parts = _numbers(text) if not _inf_text(text) else []
-        rest = name.rest
-        wanted: list[tuple[str, float | None, float | None]] = []
-        if rest == "" and len(parts) == 2:
-            wanted = [("x", parts[0], None if r is None else r[0]),
-                      ("y", parts[1], None if r is None else r[1])]
-        elif rest.lower() in ("x", "y") and len(parts) == 1:
-            i = 0 if rest.lower() == "x" else 1
-            wanted = [(rest.lower(), parts[0], None if r is None else r[i])]
-        elif rest in mech_pts and len(parts) == 1 and ctx.c.has_position(rest):
-            at = np.asarray(ctx.ev[ctx.c.position(rest)][k], dtype=float)
-            wanted = [(rest, parts[0], None if r is None else float(np.hypot(*(r - at))))]
-        elif rest == "" and _inf_text(text) and len(parts) <= 1:
-            report.values.append(_infinite_row(e, ctr, r, _u, text))
-            continue
-        else:
-            report.notes.append(_note("centres.unread", name=e.name, text=text))
-            continue
-        for what, got, exact in wanted:
-            row = ValueRow(e.name if len(wanted) == 1 else f"{e.name}.{what}", label(ctr), "m",
-                           got, exact, where=e.where)
-            if got is None:
-                continue
-            if exact is None:
-                row.verdict, row.cause = WRONG, NEW
-                row.hint = T("centres.hint_infinite", centre=label(ctr))
-            else:
-                # ±1 mm of paper at the scene's μl or 2 % of the centre's distance from the
-                # mechanism (a far centre is drawn with long lines), as on a drawing
-                far = float(np.hypot(*(r - middle))) if r is not None else 0.0
-                row.tolerance = max(tol.pct / 100.0 * far, tol.mm * mu_l)
-                row.error_pct = 100.0 * (got - exact) / abs(exact) if exact else None
-                row.verdict = OK if abs(got - exact) <= row.tolerance else WRONG
-                if row.verdict == WRONG:
-                    row.cause = NEW
-                    row.hint = _rule(cs, ctr, k)
-            report.values.append(row)
-
-
-def _infinite_row(e: Entry, ctr: Centre, r: np.ndarray | None, u: np.ndarray | None,
-                  text: str) -> ValueRow:
-    """A centre written "∞" (with its direction "∞ 90°" or not): right when it is at infinity
-    (and the direction is right either way, within 3°)."""
-    m = re.search(r"([+\-−]?\d+(?:[.,]\d+)?)\s*°", text)
-    angle = float(m.group(1).replace(",", ".").replace("−", "-")) if m else None
-    row = ValueRow(e.name, label(ctr), "deg" if angle is not None else "", angle, None,
-                   where=e.where)
-    if r is not None or u is None:
-        row.verdict, row.cause = WRONG, NEW
-        row.hint = T("centres.hint_finite", centre=label(ctr))
-        return row
-    exact = math.degrees(math.atan2(u[1], u[0])) % 180.0
-    if angle is None:
-        row.verdict = OK
-        return row
-    row.exact = exact if abs(exact - angle % 180.0) <= 90.0 else exact + 180.0
-    off = abs(math.remainder(angle - exact, 180.0))
-    row.tolerance = ARROW_DEG
-    row.verdict = OK if off <= ARROW_DEG else WRONG
-    if row.verdict == WRONG:
-        row.cause = NEW
-        row.hint = T("centres.hint_infinite_dir", centre=label(ctr), angle=exact)
-    return row
-
-
-def _rule(cs: Centres, ctr: Centre, k: int) -> Text:
-    """Where a centre is by its rule: a pair's pin or direction, or the two lines of Kennedy's
-    theorem it lies on."""
-    name = label(ctr)
-    if ctr.pair is not None:
-        if ctr.pair.kind is PairKind.PRISMATIC:
-            return T("centres.hint_prismatic", centre=name, a=ctr.pair.a, b=ctr.pair.b)
-        return T("centres.hint_pin", centre=name, point=ctr.pair.point)
-    lines = []
-    for t in cs.values[(ctr.i, ctr.j)].triangles[k]:
-        kk = ctr.via[int(t)]
-        a, b = ordered(cs.diagram.links, ctr.i, kk), ordered(cs.diagram.links, ctr.j, kk)
-        lines.append(T("centres.line", a=label(a), b=label(b)))
-    return T("centres.hint_lines", centre=name, l1=lines[0], l2=lines[-1])
-
-
-def _inf_text(text: str) -> bool:
-    from ..submission.centre_marks import says_infinity
-
-    return says_infinity(text)
-
-
-def _numbers(text: str) -> list[float]:
-    """The values of ``"(120.5, 80.2) mm"``, ``"120,5; 80,2 mm"``, ``"0.12 m"`` in metres (a bare
-    number is millimetres, as the sheet's table writes them)."""
-    t = text.strip().strip("()[]")
-    unit = "mm"
-    for u in ("mm", "cm", "m", "мм", "см", "м"):
-        if t.endswith(u):
-            unit, t = u, t[: -len(u)].strip().strip("()[]")
-            break
-    scale = {"mm": 1e-3, "мм": 1e-3, "cm": 1e-2, "см": 1e-2, "m": 1.0, "м": 1.0}[unit]
-    pieces = [p for p in (t.split(";") if ";" in t else _comma_split(t)) if p.strip()]
-    out = []
-    for p in pieces:
-        try:
-            out.append(float(p.strip().replace(",", ".").replace("−", "-")) * scale)
-        except ValueError:          # not a number: the row is reported unread
-            return []
-    return out
-
-
-def _comma_split(t: str) -> list[str]:
-    """"120.5, 80.2" → two numbers; "120,5" (a decimal comma) → one."""
-    if ", " in t or t.count(",") > 1:
-        return t.split(", ") if ", " in t else t.split(",")
-    return t.split()
 
 
 def centres_text(report: CheckReport, lang: str) -> list[str]:
