@@ -142,3 +142,18 @@ def test_solve_json_carries_forces_and_reduced_values(capsys):
     assert (r05[0] * math.cos(math.radians(120)) + r05[1] * math.sin(math.radians(120))
             == pytest.approx(0, abs=1e-9))
     assert set(pos["reduced"]) == {"moment", "inertia"} and pos["reduced"]["inertia"] > 0
+
+
+def test_help_and_version_import_nothing_heavy():
+    """Issue 35: `mechplan --help` / `--version` answer at once — building the parser imports no
+    numerical or drawing library and no part of the checker, the LMS round trip or the solver."""
+    import subprocess
+    import sys
+
+    heavy = ("numpy", "pint", "scipy", "matplotlib", "ezdxf", "shapely", "mechplan.check.grade",
+             "mechplan.lms.run", "mechplan.solve", "mechplan.scene.loader")
+    code = ("import sys\nfrom mechplan.cli import parser\nparser()\n"
+            f"print([m for m in {heavy!r} if m in sys.modules])")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True, timeout=120).stdout.strip()
+    assert out == "[]", out

@@ -64,7 +64,8 @@ class Mechanism:
         self._built: dict[tuple[str, ...], tuple[Structure, Construction]] = {}
         self._fast = FastPath(scene)
         #: the prepared kernel of the default call at one angle (None: not yet; False: none)
-        self._one: Any = None
+        #: the prepared kernel of a one-angle call per plans asked (None: the scene's), or False
+        self._one: dict[Any, Any] = {}
         self._chosen: dict[object, tuple[str, ...]] = {}
         self._asked: dict[tuple[object, object], tuple[tuple[str, ...] | None, ...]] = {}
 
@@ -163,8 +164,8 @@ class Mechanism:
             a position count over the memory budget.
         """
         if (type(phi_deg) is float or type(phi_deg) is int) and positions is None \
-                and plans is None and points is None and links is None and fast is not False:
-            quick = self._solve_one(float(phi_deg))        # the default call at one angle
+                and points is None and links is None and fast is not False:
+            quick = self._solve_one(float(phi_deg), plans)      # one angle, every output
             if quick is not None:
                 return quick
         from .solve import solve
@@ -248,21 +249,29 @@ class Mechanism:
         return key
 
 
-    def _solve_one(self, phi_deg: float) -> Solution | None:
+    def _solve_one(self, phi_deg: float, plans: Sequence[str] | None) -> Solution | None:
         """The default call at one crank angle on the fused kernel, with none of the general
         path's argument handling (the same kernel, values, estimates and flags); None when the
         general path must answer (no kernel, a force plan, an angle it refuses, a position the
         kernel cannot build or trust)."""
         if not abs(phi_deg) <= _MAX_ANGLE_DEG:        # nan too: the general path says why
             return None
-        one = self._one
+        key = tuple(plans) if plans is not None and not isinstance(plans, str) else plans
+        one = self._one.get(key)
         if one is None:
-            chosen = self._plans(None)
+            try:
+                chosen = self._plans(plans)
+            except SceneError:
+                return None                             # the general path says why
             prepared = None
             if "force" not in chosen and self.scene.textbook is None:
                 prepared = self._fast.prepare(self._build(chosen)[1], chosen, None, None)
-            self._one = one = prepared if prepared is not None else False
-        if one is False:
+            one = prepared if prepared is not None else False
+            try:
+                self._one[key] = one
+            except TypeError:                           # unhashable plans: not kept
+                pass
+        if isinstance(one, bool):                       # False: no kernel for these plans
             return None
         # a linear driver's positions are its length in mm (as ``solve --at``)
         at = np.array([phi_deg / 1000.0 if self.scene.mechanism.drive.linear
