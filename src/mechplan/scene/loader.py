@@ -55,7 +55,8 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
         if link.slides_on and link.slides_on not in guides:
             raise top.error(f"links.{link.id}.slides.on", Text(
                 "errmsg2.scene_loader.unknown_guide",
-                {"guide": repr(link.slides_on), "guides": ', '.join(guides) or 'none'}))
+                {"guide": repr(link.slides_on),
+                 "guides": ", ".join(guides) or Text("errmsg2.scene_loader.none")}))
     _orient_sliders(top, links, guides)
     pairs = _pairs(top, links, guides)
     drive = _drive(top, links, guides, pairs)
@@ -296,7 +297,8 @@ def _pairs(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> list
             joints = sorted(p for p, on in seen.items() if lid not in on)
             raise top.error(f"links.{lid}.slides.point", Text(
                 "errmsg2.scene_loader.slide_point_joint",
-                {"point": repr(point), "points": ', '.join(joints) or 'none'}))
+                {"point": repr(point),
+                 "points": ", ".join(joints) or Text("errmsg2.scene_loader.none")}))
     for lid, link in links.items():
         if lid != GROUND and not any(p.joins(lid) for p in pairs):
             raise top.error(f"links.{lid}", Text(
@@ -360,7 +362,8 @@ def _reference_angle(d: Table, name: str, guides: dict[str, Guide]) -> float:
     except SceneError:
         raise d.error("from", Text(
             "errmsg2.scene_loader.phi_from",
-            {"guides": ', '.join(guides) or 'none defined', "value": repr(name)})) from None
+            {"guides": ", ".join(guides) or Text("errmsg2.scene_loader.none_defined"),
+             "value": repr(name)})) from None
 
 
 def _assembly(top: Table, links: dict[str, Link], drive: Drive
