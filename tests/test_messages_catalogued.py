@@ -51,7 +51,7 @@ ALLOWED = [
 #: sites each has today. Lower a count (or drop the file) when converting; never raise one.
 NOT_YET_CONVERTED = {
     "batch/engine.py": 1, "batch/klass.py": 1, "batch/plot.py": 2, "cli/__init__.py": 2,
-    "limits.py": 1, "note/project.py": 11, "note/typst_writer.py": 1, "render/html.py": 2,
+    "note/project.py": 11, "note/typst_writer.py": 1, "render/html.py": 2,
     "scene/engine.py": 36,
 }
 
@@ -163,7 +163,7 @@ def test_converted_files_stay_converted(trees):
               "construct/builder.py", "construct/extremes.py", "construct/trust.py",
               "construct/plans/drivers.py", "construct/plans/force_friction.py",
               "construct/plans/triad.py", "solve.py", "textbook_report.py",
-              "synthesis/linkage/__init__.py")]
+              "synthesis/linkage/__init__.py", "limits.py")]
     assert not sites, sites
 
 
