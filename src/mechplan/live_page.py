@@ -40,6 +40,15 @@ def page_text(study: Any, size: str | None = None, standard: str | None = None,
             replay, mu_cam = cam_replay(study.design)
             doc["replays"] = [replay]
             doc["animation"] = cam_animation(study.design, mu_cam)
+        else:
+            from .studies.gears import GearStudy
+
+            res = study.solution.planetary if isinstance(study, GearStudy) else None
+            if res is not None and res.plan is not None:   # the plans replayed; the train turning
+                from .sheet.live_gears import gear_animation, gear_replays
+
+                doc["replays"] = gear_replays(res, study.solution.ordinary_plan)
+                doc["animation"] = gear_animation(res)
         return to_html(doc)
     sol = study.solution
     scene = sol.scene

@@ -3,7 +3,8 @@
 The invariant of issue 28: for every linkage template, every sheet size A4–A0 and every standard
 (ISO, ГОСТ, TCVN), the DXF of every sheet that holds a plan checks with 0 wrong and 0 missing, and
 every scale factor the checker reads on the sheet is the one `mechplan solve --json --sheet …
---standard …` prints. Languages rotate with the case (each template sees all four).
+--standard …` prints; on a sheet with the instant-centre panel every centre is graded right (issue
+30). Languages rotate with the case (each template sees all four).
 
 Each (template, size, standard) is composed once from one solution per template and every sheet
 is checked through the API (DXF bytes written to a temporary file, no subprocess). Measured on one
@@ -18,7 +19,8 @@ import pytest
 from scenes import DRIVER_TEMPLATES, TEMPLATES
 
 from mechplan.check import Options, check
-from mechplan.check.report import MISSING, WRONG
+from mechplan.check.report import MISSING, OK, WRONG
+from mechplan.construct.plans.centres import circle_diagram, label
 from mechplan.errors import CheckError
 from mechplan.model.plans import Plan
 from mechplan.render.dxf import to_bytes
@@ -47,6 +49,8 @@ def test_the_grid_is_every_linkage_template():
 def test_own_sheets_check_clean_at_every_size_standard_and_language(path, tmp_path):
     scene = load_scene(path)
     sol = solve(scene)
+    # every instant centre the panel can draw (not those Kennedy's theorem leaves indeterminate)
+    centre_names = [label(ctr) for ctr in circle_diagram(scene.mechanism).centres]
     offset = [p.stem for p in GRID].index(path.stem)
     failures: list[str] = []
     case = 0
@@ -79,4 +83,11 @@ def test_own_sheets_check_clean_at_every_size_standard_and_language(path, tmp_pa
                                         f"{printed[Plan(p.plan)]} printed by solve")
                 failures += [f"{where}: {v.name}" for v in report.values if v.verdict == WRONG]
                 assert report.plans or not holds_plan, (where, names)
+                if "centres" in names:          # the instant-centre panel: every centre graded
+                    failures += [f"{where}: centre {c.label}: {c.verdict} {c.error}"
+                                 for c in report.centres if c.verdict in (WRONG, MISSING)]
+                    graded = sorted(c.label for c in report.centres if c.verdict == OK)
+                    if graded != sorted(centre_names):
+                        failures.append(f"{where}: centres graded {graded}, "
+                                        f"{sorted(centre_names)} drawn")
     assert not failures, "\n".join(failures[:20])

@@ -16,7 +16,7 @@ from scenes import ALL_TEMPLATES, ROOT
 from mechplan import api
 from mechplan.construct.protocol import protocol
 from mechplan.errors import MechplanError
-from mechplan.i18n import LANGUAGES
+from mechplan.i18n import LANGUAGES, number
 from mechplan.live_page import page_text
 from mechplan.model.plans import Plan
 from mechplan.sheet.live import UI
@@ -107,6 +107,8 @@ def test_replay_steps_in_the_order_of_the_protocol(four_bar):
     sol = study.solution
     mu = sol.scales
     for r in doc["replays"]:
+        if r["plan"] == "centres":          # Kennedy's construction: its own test below
+            continue
         plan = Plan(r["plan"])
         groups = {s["group"] for s in r["steps"]}
         expected = [text for _p, _label, text in protocol(sol.construction, sol.ev, r["k"], "en",
@@ -181,7 +183,7 @@ def test_other_kinds_give_their_sheets_in_every_language(tmp_path: Path) -> None
     path = api.draw(ROOT / "templates" / "planetary_two_row.toml", tmp_path, formats=["html"])[0]
     page = path.read_text(encoding="utf-8")
     doc = _data(page)
-    assert doc["replays"] == [] and doc["animation"] is None
+    assert [r["id"] for r in doc["replays"]] == ["gears-velocity", "gears-angular"]
     assert sorted(doc["sheets"]) == sorted(LANGUAGES)
     for lang in LANGUAGES:
         sheets = doc["sheets"][lang]
@@ -293,3 +295,189 @@ def test_cam_follower_touches_the_turning_cam(stem):
     n = study.design.rays.phi.size
     assert [s["id"] for s in steps] == ["base", *(f"ray-{i}" for i in range(n)), "profile"]
     assert all(s["sentence"][lang] for s in steps for lang in LANGUAGES)
+
+
+#: the planetary templates' tooth sets and input speeds, as their scenes give them (rpm)
+TRAINS = {"planetary_single_row": 960.0, "planetary_two_row": 1500.0}
+
+
+def _willis(stem: str, z: tuple[int, ...], w_in: float) -> dict[str, float]:
+    """ω of every link from the tooth numbers (Willis: the train seen from the carrier is an
+    ordinary train), the central gear held, the sun the input."""
+    if stem == "planetary_single_row":          # sun 1, planet 2, ring 3 held: ω1/ωh = 1 + z3/z1
+        z1, z2, z3 = z
+        wh = w_in / (1 + z3 / z1)
+        return {"1": w_in, "2": wh * (1 - z3 / z2), "3": 0.0, "h": wh}
+    z1, z2, z3, z4 = z                          # 1 outside 2; 3 inside ring 4, held
+    wh = w_in / (1 + z2 * z4 / (z1 * z3))
+    w2 = wh - z1 / z2 * (w_in - wh)             # (ω2 − ωh)/(ω1 − ωh) = −z1/z2
+    return {"1": w_in, "2": w2, "3": w2, "4": 0.0, "h": wh}
+
+
+@pytest.mark.parametrize("stem", sorted(TRAINS))
+def test_planetary_train_turns_at_the_willis_ratios(stem):
+    """Each wheel and the carrier of the turning train is rotated by ω·t with the ω of the Willis
+    ratios of its tooth numbers; every planet's centre stays on the carrier radius
+    a_w = m(z1 + z2)/2, at the carrier's angle plus 2πj/k; the slider's φ is the input's ω·t."""
+    study = solve_file(str(ROOT / "templates" / f"{stem}.toml"))
+    res = study.solution.planetary
+    z = tuple(res.chosen.z)
+    w_in = TRAINS[stem] * 2 * math.pi / 60
+    w = _willis(stem, z, w_in)
+    doc = _data(page_text(study, name=stem))
+    a = doc["animation"]
+    t = np.asarray(a["time"])
+    assert a["frames"] == t.size >= 360
+    assert np.allclose(np.radians(a["phi_deg"]), w_in * t, rtol=1e-6, atol=1e-6)
+    # one turn of the carrier over the cycle
+    assert w["h"] * (t[-1] + t[1]) == pytest.approx(2 * math.pi, rel=1e-6)   # 7 digits
+    train = next(p for p in a["panels"] if p["id"] == "gears-train")
+    rotors = {it["name"]: it for it in train["items"] if it["kind"] == "rotor"}
+    for n, omega in w.items():
+        planet = n in res.spec.scheme.gear_names[1:-1]
+        rot = rotors["2-0"] if planet else rotors[n]      # the planet block turns as one
+        # the page turns a body by −angle (y down): counter-clockwise ω·t
+        assert np.allclose(-np.radians(rot["angle"]), omega * t, rtol=1e-6, atol=1e-5), n
+    m = res.spec.modules[0]
+    a_w = m * (z[0] + z[1]) / 2
+    mu = train["scale"]
+    k = res.spec.planets
+    for j in range(k):
+        c = np.asarray(rotors[f"2-{j}"]["centre"], dtype=float).reshape(-1, 2)
+        assert np.allclose(np.hypot(*c.T) * mu, a_w, atol=0.008 * mu)   # 0.01 mm rounding
+        ang = np.arctan2(-c[:, 1], c[:, 0])
+        want = w["h"] * t + 2 * math.pi * j / k
+        assert np.allclose(np.angle(np.exp(1j * (ang - want))), 0.0, atol=1e-3)
+        assert np.allclose(c, np.asarray(train["points"][f"O{j + 1}"]["xy"]).reshape(-1, 2))
+    # the velocity plan replayed line by line: the given and held links first, the planet,
+    # then the carrier; each line's sentence states its ω (Willis), each step draws its line
+    vel = next(r for r in doc["replays"] if r["id"] == "gears-velocity")
+    held = res.spec.fixed
+    assert [s["id"] for s in vel["steps"]] == ["base", "line-1", f"line-{held}", "line-2", "line-h"]
+    for i, s in enumerate(vel["steps"]):
+        assert sum(1 for p in vel["prims"]["en"] if p["k"] == i) >= 2      # line and label
+        n = s["id"][5:]
+        if n and n != held:
+            assert number(w[n], 4, "en") in s["sentence"]["en"]
+        assert all(s["sentence"][lang] for lang in LANGUAGES)
+    if stem == "planetary_two_row":             # the ordinary pair 17/34 on the output shaft h
+        w |= {"5": w["h"], "6": -w["h"] * 17 / 34}
+    ang = next(r for r in doc["replays"] if r["id"] == "gears-angular")
+    rays = [s for s in ang["steps"] if s["id"].startswith("ray-")]
+    assert {s["id"][4:] for s in rays} >= {"1", "h"}
+    for s in rays:
+        assert number(w[s["id"][4:]], 4, "en") in s["sentence"]["en"]
+
+
+def _meet(p1, p2, q1, q2):
+    """Where line p1–p2 meets line q1–q2 (rows of points; NaN where parallel)."""
+    d1, d2 = p2 - p1, q2 - q1
+    den = d1[:, 0] * d2[:, 1] - d1[:, 1] * d2[:, 0]
+    w = q1 - p1
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (w[:, 0] * d2[:, 1] - w[:, 1] * d2[:, 0]) / den
+    return p1 + t[:, None] * d1
+
+
+@pytest.mark.parametrize("stem", ["four_bar", "slider_crank", "quick_return", "shaper"])
+def test_centres_replayed_in_the_solvers_order_and_moving(stem):
+    """The instant centres' replay lists every centre once, in the order Kennedy's search finds
+    them, each step drawing its centre and its chord; in the animation each centre is where the
+    solver puts it at that crank angle (within the page's 0.01 mm), and for the four-bar where
+    the lines of its links meet (I02 on AB × DC, I13 on AD × BC, computed here)."""
+    from mechplan.construct.plans.centres import centres_at, circle_diagram
+
+    study = solve_file(str(ROOT / "templates" / f"{stem}.toml"))
+    sol = study.solution
+    mech = sol.scene.mechanism
+    doc = _data(page_text(study, name=stem))
+    reps = [r for r in doc["replays"] if r["plan"] == "centres"]
+    assert len(reps) == 1
+    r = reps[0]
+    order = [c.key for c in circle_diagram(mech).centres]
+    n = len(mech.moving) + 1
+    assert len(order) == n * (n - 1) // 2
+    assert [s["id"] for s in r["steps"]] == ["base", *order]
+    for i in range(1, len(r["steps"])):
+        assert sum(1 for p in r["prims"]["en"] if p["k"] == i) >= 3   # centre, chord, number
+        assert all(r["steps"][i]["sentence"][lang] for lang in LANGUAGES)
+    assert [x["step"] for x in r["rows"]] == list(range(1, len(order) + 1))
+
+    a = doc["animation"]
+    panel = next(p for p in a["panels"] if p["id"] == "centres")
+    assert sorted(panel["points"]) == sorted(order)
+    mu = sol.scales[Plan.POSITION]
+    c = sol.construction
+    sense = 1.0 if mech.drive.omega >= 0 else -1.0
+    phi = float(sol.phi[0]) + sense * np.arange(a["frames"]) * 2 * math.pi / a["frames"]
+    ev = c.evaluate(phi)
+    cs = centres_at(c, ev, mech)
+    shown = 0
+    for key in order:
+        page = np.array([np.nan if v is None else v for v in panel["points"][key]["xy"]],
+                        dtype=float).reshape(-1, 2) * np.array([1.0, -1.0]) * mu
+        ctr = next(x for x in cs.diagram.centres if x.key == key)
+        want = cs.point(ctr.i, ctr.j)
+        ok = np.isfinite(page).all(axis=1)
+        shown += int(ok.sum())
+        assert np.allclose(page[ok], want[ok], atol=0.008 * mu)
+    assert shown > a["frames"] * 3
+    if stem == "four_bar":
+        def at(p):
+            return np.asarray(ev[c.position(p)], dtype=float)
+        A, B, C, D = at("A"), at("B"), at("C"), at("D")
+        for key, want in (("02", _meet(A, B, D, C)), ("13", _meet(A, D, B, C))):
+            page = np.array([np.nan if v is None else v for v in panel["points"][key]["xy"]],
+                            dtype=float).reshape(-1, 2) * np.array([1.0, -1.0]) * mu
+            ok = np.isfinite(page).all(axis=1)
+            assert ok.sum() > 100
+            assert np.allclose(page[ok], want[ok], atol=0.008 * mu)
+
+
+def test_engine_crank_train_moves_with_the_polar_cursor():
+    """The engine's crank train (cylinder 1) at every frame of the polar diagram's cursor: the
+    crank pin A on the crank circle at the frame's φ from TDC, the rod |AB| = L, the piston pin
+    B on the cylinder's axis at the closed-form travel R(1 − cos φ) + L(1 − √(1 − λ² sin² φ))."""
+    study = solve_file(str(ROOT / "templates" / "motorcycle_engine.toml"))
+    R, L = study.model.spec.R, study.model.spec.L
+    doc = _data(page_text(study, name="engine"))
+    a = doc["animation"]
+    train = next(p for p in a["panels"] if p["id"] == "engine-train")
+    mu = train["scale"]
+    pa = np.asarray(train["points"]["A"]["xy"], dtype=float).reshape(-1, 2) * [1, -1] * mu
+    pb = np.asarray(train["points"]["B"]["xy"], dtype=float).reshape(-1, 2) * [1, -1] * mu
+    assert len(pa) == a["frames"] >= 360
+    phi = np.radians(np.asarray(a["phi_deg"]))
+    tol = 0.008 * mu                                            # the page's 0.01 mm
+    assert np.allclose(np.hypot(*pa.T), R, atol=tol)
+    assert np.allclose(np.hypot(*(pb - pa).T), L, atol=2 * tol)
+    assert np.allclose(pb[:, 0], 0.0, atol=tol)
+    lam = R / L
+    travel = R * (1 - np.cos(phi)) + L * (1 - np.sqrt(1 - (lam * np.sin(phi)) ** 2))
+    assert np.allclose(R + L - pb[:, 1], travel, atol=tol)
+    assert np.allclose(np.angle(np.exp(1j * (np.arctan2(-pa[:, 0], pa[:, 1]) - phi))), 0.0,
+                       atol=1e-3)
+    frames = train["items"][0]["d"]
+    assert len(frames) == a["frames"] and all(frames)
+
+
+def test_wittenbauer_diagram_has_a_cursor():
+    """A machine with [dynamics]: the Wittenbauer diagram's cursor is at (J_red, ΔT) of the
+    crank's cycle angle at every frame, at the dynamics sheet's μJ and μT."""
+    from mechplan.sheet.dynamics import dynamics_scales
+
+    study = solve_file(str(ROOT / "templates" / "machine_unit.toml"))
+    dyn = study.dynamics
+    doc = _data(page_text(study, name="machine_unit"))
+    a = doc["animation"]
+    panel = next(p for p in a["panels"] if p["id"] == "dynamics-wittenbauer")
+    xy = np.asarray(panel["points"]["dynamics-wittenbauer"]["xy"], dtype=float).reshape(-1, 2)
+    theta = np.mod(np.radians(np.asarray(a["phi_deg"])) - dyn.phi0, dyn.spec.cycle)
+    j = np.interp(theta, dyn.theta, dyn.J_red)
+    t = np.interp(theta, dyn.theta, dyn.dT)
+    sc = dynamics_scales(dyn)
+    fx, fy = np.polyfit(j, xy[:, 0], 1), np.polyfit(t, -xy[:, 1], 1)
+    assert np.abs(np.polyval(fx, j) - xy[:, 0]).max() < 0.01
+    assert np.abs(np.polyval(fy, t) + xy[:, 1]).max() < 0.01
+    assert fx[0] == pytest.approx(1 / sc.mu_J, rel=1e-3)
+    assert fy[0] == pytest.approx(1 / sc.mu_T, rel=1e-3)

@@ -22,10 +22,12 @@ from ..errors import CheckError, MechplanError
 from ..geom.sketch import nearest
 from ..model.plans import Plan
 from ..scene.spec import Scene
+from ..submission.centre_marks import centre_entries, find_centre_marks, table_rows
 from ..submission.drawn_plans import DrawnPlan, DrawnSheet, find_plans
 from ..submission.labels import PlanKey, asks_for_forces
 from ..submission.read import Note, Submission, read_submission
 from ..submission.written import is_angle_name, parse_angle
+from .centres import grade_centres
 from .context import (
     Ctx,
     Drawn,
@@ -84,19 +86,32 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
     qi = QuantityIndex(c, scene.mechanism, with_dynamics=True)
     si = SegmentIndex(c, book)
     sheet: DrawnSheet | None = None
+    links = ("0", *scene.mechanism.moving)
+    marks = find_centre_marks(sub, links, options.label_distance, options.snap) \
+        if sub.kind == "dxf" else []
+    drawn_table = table_rows(sub, links) if sub.kind == "dxf" else []   # a table of centres
     if sub.kind == "dxf":
-        sheet = find_plans(sub, book, options.label_distance, options.snap,
-                           mu_elsewhere=options.mu)
+        try:
+            sheet = find_plans(sub, book, options.label_distance, options.snap,
+                               mu_elsewhere=options.mu)
+        except CheckError:
+            if not drawn_table and not any(m.at is not None for m in marks):
+                raise
+            sheet = DrawnSheet([], [], options.label_distance or 5.0, [])   # centres alone
         notes.extend(sheet.notes)
-        interp = interpret(sheet.other_entries, qi, si, from_sheet=True)
+        centre_rows, other = centre_entries(sheet.other_entries, links)
+        centre_rows += drawn_table
+        interp = interpret(other, qi, si, from_sheet=True)
     else:
-        interp = interpret(sub.entries, qi, si, from_sheet=False)
+        centre_rows, other = centre_entries(sub.entries, links)
+        interp = interpret(other, qi, si, from_sheet=False)
     notes.extend(interp.notes)
-    if sheet is not None and not sheet.plans and not interp.values:
+    if sheet is not None and not sheet.plans and not interp.values and not marks and \
+            not centre_rows:
         why = "; ".join(str(n) for n in notes if n.level != "info")[:600]
         raise CheckError(T("error.no_plan", why=why or T("error.no_labelled_points")),
                          file=sub.path)
-    if sub.kind == "table" and not interp.segments and not interp.values:
+    if sub.kind == "table" and not interp.segments and not interp.values and not centre_rows:
         problems = "; ".join(str(n) for n in interp.notes if n.level == "error")
         raise CheckError(T("error.nothing_to_check", problems=f": {problems}" if problems else ""),
                          file=sub.path)
@@ -110,6 +125,7 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
         if several_positions(ctx):
             report = grade_per_plan(ctx, reports, best, _grade)
         values_at_titled_positions(ctx, reports, report)
+    grade_centres(ctx, best, report, marks, centre_rows)
     report.notes = list(dict.fromkeys(notes + report.notes))   # each note once
     if sheet is not None:
         report.label_distance_mm = sheet.label_distance

@@ -11,6 +11,7 @@ from pathlib import Path
 from ..drafting.fonts import text_width_mm
 from ..drafting.primitives import Line, Role, Sheet, Text
 from ..errors import CheckError, DrawingError
+from ..i18n import num
 from ..render import write, write_atomic
 from .report import SLIP, WRONG, CheckReport, SegmentRow
 from .texts import T, tr, word
@@ -57,10 +58,29 @@ def marks(report: CheckReport, lang: str = "en") -> list[Mark]:
                  if plan.mu else tr(plan.name, lang))
         lo, hi = _extent(out[start:])
         out.append(Mark("NOTES", (lo[0], hi[1] + 6.0), None, title, 3.5))
+    out += _centre_marks(report, lang)
     if not out:
         raise CheckError(T("error.overlay_table"), file=report.submission)
     lo, _ = _extent(out)
     out.append(Mark("NOTES", (lo[0], lo[1] - 8.0), None, T("overlay.legend").tr(lang), 3.5))
+    return out
+
+
+def _centre_marks(report: CheckReport, lang: str) -> list[Mark]:
+    """The exact instant centres (a small cross and the name) and, for a wrong one, a line from
+    the drawn place to the exact one with its error."""
+    out: list[Mark] = []
+    for c in report.centres:
+        if c.exact_mm is None:
+            continue
+        x, y = c.exact_mm
+        out += [Mark("EXACT", (x - 1.5, y), (x + 1.5, y)),
+                Mark("EXACT", (x, y - 1.5), (x, y + 1.5)),
+                Mark("EXACT", (x + 1.5, y - 3.5), None, c.label, 1.8)]
+        if c.verdict == WRONG and c.at_mm is not None and c.found == "point":
+            out += [Mark("ERRORS", c.at_mm, c.exact_mm),
+                    Mark("ERRORS", (c.at_mm[0] + 1.0, c.at_mm[1] + 1.0), None,
+                         T("mm", v=num(c.error or 0.0, ".1f", lang)).tr(lang), 1.8)]
     return out
 
 

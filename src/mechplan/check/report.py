@@ -110,6 +110,24 @@ class ValueRow:
 
 
 @dataclass
+class CentreRow:
+    """An instant centre labelled on a drawing: where it is and where it should be (mm of
+    paper); for one marked by an arrow the error is the arrow's angle off it (degrees)."""
+
+    label: str
+    written: str
+    exact_mm: tuple[float, float] | None
+    at_mm: tuple[float, float] | None
+    error: float | None
+    tolerance: float | None
+    verdict: str
+    cause: str = ""
+    hint: str = ""
+    found: str = ""           # "point", "arrow", "infinity"
+    where: str = ""
+
+
+@dataclass
 class Finding:
     """A root cause: a new error, swapped labels, an arithmetic slip."""
 
@@ -168,6 +186,11 @@ class CheckReport:
     notes: list[Note] = field(default_factory=list)
     label_distance_mm: float | None = None
     units: str = ""
+    #: instant centres labelled on a drawing (check/centres.py), their scale and its source
+    centres: list[CentreRow] = field(default_factory=list)
+    centres_mu: float | None = None
+    centres_frame: Text | str = ""
+    centres_phi: float | None = None      # their own crank angle when not the sheet's
 
     @property
     def rows(self) -> list[SegmentRow | ValueRow]:
@@ -184,18 +207,24 @@ class CheckReport:
             out[OK if r.verdict == REFERENCE else r.verdict] += 1
             if r.verdict == WRONG:
                 out[r.cause if r.cause in out else NEW] += 1
+        for c in self.centres:
+            out["checked"] += c.verdict in (OK, WRONG)
+            out[c.verdict] += 1
+            if c.verdict == WRONG:
+                out[c.cause if c.cause in out else NEW] += 1
         return out
 
     @property
     def nothing_found(self) -> bool:
         """True when nothing on the submission could be checked against the exact construction
         (a reference segment only fixes the scale factor): such a submission does not pass."""
-        return not any(r.verdict in (OK, WRONG, SLIP) for r in self.rows)
+        return not any(r.verdict in (OK, WRONG, SLIP) for r in [*self.rows, *self.centres])
 
     @property
     def passed(self) -> bool:
         """True when something was checked and nothing checked is wrong."""
-        return not self.nothing_found and not any(r.verdict in (WRONG, SLIP) for r in self.rows)
+        return not self.nothing_found and not any(r.verdict in (WRONG, SLIP)
+                                                  for r in [*self.rows, *self.centres])
 
     def verdict(self) -> Text:
         """PASSED, FAILED, or FAILED because nothing gradeable was found."""
@@ -235,6 +264,9 @@ class CheckReport:
             "units": self.units, "label_distance_mm": self.label_distance_mm,
             "passed": self.passed, "summary": self.summary(), "plans": plans,
             "values": [asdict(v) | verdict_words(v) for v in self.values], "findings": findings,
+            "centres": [asdict(c) | verdict_words(c) for c in self.centres],
+            "centres_mu_l": self.centres_mu, "centres_frame": self.centres_frame,
+            "centres_phi_deg": self.centres_phi,
             "notes": [asdict(n) | {"level_text": word("level", n.level, lang)} for n in self.notes],
             "lang": lang,
             "nothing_found": self.nothing_found, "result_text": self.verdict().tr(lang),
@@ -280,6 +312,10 @@ class CheckReport:
                 out.append("   " + say("report.not_in_construction"))
         if self.values:
             out += ["", say("report.values"), *_table(lang, _VALUE_COLUMNS, self.values)]
+        if self.centres:
+            from .centres import centres_text
+
+            out += ["", *centres_text(self, lang)]
         if self.findings:
             out += ["", say("report.findings")]
             for i, f in enumerate(self.findings, start=1):
@@ -298,7 +334,7 @@ class CheckReport:
 #: JSON keys whose values are sentences, written in the report's language; every other string
 #: (codes, names, labels) stays as it is
 PROSE_KEYS = frozenset({"hint", "message", "mu_source", "phi_source", "convention", "units",
-                        "where"})
+                        "where", "centres_frame"})
 
 
 def _json(x: Any, lang: str, key: str = "") -> Any:

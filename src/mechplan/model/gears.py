@@ -51,6 +51,7 @@ class ShiftRule(Enum):
     GIVEN = "given"                  # x1, x2 as written in the scene (default 0, 0)
     NO_UNDERCUT = "no_undercut"      # x = h_a*(z_min − z)/z_min when z < z_min, else 0
     BALANCED = "balanced_sliding"    # x2 = −x1, maximum specific slidings of both gears equal
+    CONTOUR = "contour"              # inside the blocking contour: balanced sliding, largest ε_α
 
 
 @dataclass(frozen=True)
@@ -104,6 +105,9 @@ class PairSpec:
     shifts: tuple[float, float] = (0.0, 0.0)
     rule: ShiftRule = ShiftRule.GIVEN
     z_min: int = 17
+    contour: bool = False                # draw the blocking contour (always with rule CONTOUR)
+    tip_land: float = 0.25               # the contour's least top land s_a/m
+    eps_min: float = 1.2                 # the contour's least contact ratio ε_α
 
 
 @dataclass(frozen=True)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-PROBLEMS = ("crank_rocker", "slider_crank", "coulisse", "shaper", "function", "guidance")
+PROBLEMS = ("crank_rocker", "slider_crank", "coulisse", "shaper", "function", "guidance", "path")
 #: the functions a four-bar function generator may be asked for (x in radians for sin, cos, tan)
 FUNCTIONS = ("log10", "ln", "exp", "sqrt", "square", "cube", "reciprocal", "sin", "cos", "tan")
 #: how a crank-rocker is picked from its family on the construction circle
@@ -46,6 +46,10 @@ class SynthesisSpec:
     guide_b: tuple[tuple[float, float], ...] | None = None   # three positions of B (guidance)
     guide_c: tuple[tuple[float, float], ...] | None = None   # three positions of C
     pivot_line: tuple[tuple[float, float], float] | None = None  # two positions: (point, angle)
+    path_points: tuple[tuple[float, float], ...] | None = None    # P1…Pn (path generation)
+    crank_rotations: tuple[float, ...] | None = None     # β2…βn from the first position
+    coupler_rotations: tuple[float, float] | None = None  # α at the second and last points
+    rocker_rotations: tuple[float, float] | None = None   # γ at the second and last points
     speed: float = 10.0
     sense: int = 1
     positions: int = 12

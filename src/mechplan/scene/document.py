@@ -12,7 +12,7 @@ from ..userfiles import SCENE, FileKind
 from ..userfiles import read_text as read_user_text
 from . import toml
 
-SCENE_KINDS: tuple[str, ...] = ("mechanism", "cam", "gears", "engine", "synthesis")
+SCENE_KINDS: tuple[str, ...] = ("mechanism", "cam", "gears", "engine", "synthesis", "cycle")
 
 
 def read_text(path: str | Path, kind: FileKind = SCENE) -> str:

@@ -207,7 +207,7 @@ def _ordinary(t: Table) -> OrdinarySpec:
 def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, int] | None
           ) -> PairSpec:
     t.check_keys(("module", "teeth", "pressure_angle", "addendum", "clearance", "shifts",
-                  "shift_rule", "z_min"))
+                  "shift_rule", "z_min", "contour", "tip_land", "min_contact_ratio"))
     teeth = _ints(t, "teeth", (2,)) or z_from_ordinary
     if teeth is None and ordinary is None:
         raise t.error("teeth", Text("errmsg.scene_gears.missing_z_z"))
@@ -241,7 +241,25 @@ def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, i
                     clearance=t.quantity("clearance", "dimensionless", 0.25,
                                          nonnegative=True) or 0.0,
                     shifts=(float(shifts_raw[0]), float(shifts_raw[1])), rule=rule,
-                    z_min=_int(t, "z_min", 17, lo=1) or 17)
+                    z_min=_int(t, "z_min", 17, lo=1) or 17,
+                    contour=rule is ShiftRule.CONTOUR or _flag(t, "contour"),
+                    tip_land=_fraction(t, "tip_land", 0.25),
+                    eps_min=_fraction(t, "min_contact_ratio", 1.2))
+
+
+def _flag(t: Table, key: str) -> bool:
+    v = t.raw(key, False)
+    if not isinstance(v, bool):
+        raise t.error(key, Text("contour.error.flag", {"value": repr(v)}))
+    return v
+
+
+def _fraction(t: Table, key: str, default: float) -> float:
+    """A plain positive number (the contour's limits: s_a/m, ε_α)."""
+    v = t.raw(key, default)
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 < v < 10:
+        raise t.error(key, Text("contour.error.fraction", {"value": repr(v)}))
+    return float(v)
 
 
 def parse_gears(text: str, file: str = "<scene>") -> GearScene:

@@ -18,11 +18,12 @@ TOP_KEYS = ("kind", "title", "language", "description", "synthesis", "drive", "p
             "drawing", "title_block")
 #: the keys each problem takes besides ``problem``, ``K`` and ``gamma_min``
 PROBLEM_KEYS = {
-    "crank_rocker": ("swing", "rocker", "frame", "frame_angle"),
+    "crank_rocker": ("swing", "rocker", "frame", "frame_angle", "lambda"),
     "slider_crank": ("stroke", "offset", "lambda", "gamma"),
     "coulisse": ("frame", "crank", "coulisse", "stroke"),
     "shaper": ("frame", "crank", "stroke", "rod"),
     "guidance": ("B", "C", "pivot_line"),
+    "path": ("points", "crank_rotations", "coupler_rotations", "rocker_rotations"),
     "function": ("function", "x_range", "points", "count", "input_start", "input_range",
                  "output_start", "output_range", "frame"),
 }
@@ -41,7 +42,7 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
     s = top.table("synthesis", required=True)
     assert s is not None
     problem = s.string("problem", required=True, choices=PROBLEMS) or ""
-    if problem in ("function", "guidance"):
+    if problem in ("function", "guidance", "path"):
         s.check_keys(("problem", *PROBLEM_KEYS[problem]))
         k = 1.0
     else:
@@ -56,6 +57,10 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
               "pivot_line": _line(s)}
         if len(fg["guide_b"]) != len(fg["guide_c"]):
             raise _error(s, "C", "same_count")
+    if problem == "path":
+        from .synthesis_path import path_keys
+
+        fg = path_keys(s)
     values: dict[str, float | None] = {}
     for key in LENGTHS:
         if key in PROBLEM_KEYS[problem]:
@@ -65,10 +70,12 @@ def parse_synthesis(text: str, file: str = "<scene>") -> SynthesisSpec:
                    if problem == "crank_rocker" else None)
     if values.get("frame") is not None and frame_angle is not None:
         raise _error(s, "frame_angle", "frame_or_angle")
-    lam = s.quantity("lambda", "dimensionless", positive=True) if problem == "slider_crank" \
-        else None
+    lam = s.quantity("lambda", "dimensionless", positive=True) \
+        if problem in ("slider_crank", "crank_rocker") else None
     if values.get("offset") is not None and lam is not None:
         raise _error(s, "lambda", "offset_or_lambda")
+    if lam is not None and (values.get("frame") is not None or frame_angle is not None):
+        raise _error(s, "lambda", "frame_or_lambda")
     gamma = s.quantity("gamma_min", "angle", positive=True)
     gamma_target = s.quantity("gamma", "angle", positive=True) if problem == "slider_crank" \
         else None

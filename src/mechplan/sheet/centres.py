@@ -121,10 +121,11 @@ def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: 
             p = h[:2] * cs.length
             if np.all(p >= lo) and np.all(p <= hi):
                 inside[(ctr.i, ctr.j)] = p
-    for ctr in cs.diagram.centres:
+    for ctr in cs.diagram.centres:       # each primitive tagged with its centre (``Panel.steps``)
         if not ctr.primary:
-            prims.extend(_kennedy_lines(cs, ctr, k, lo, hi, mm))
+            panel.tag(ctr.key, *_kennedy_lines(cs, ctr, k, lo, hi, mm))
     marked: dict[str, tuple[float, float]] = {}
+    keys: dict[str, str] = {}
     for ctr in cs.diagram.centres:
         name = label(ctr, sym)
         h = cs.values[(ctr.i, ctr.j)].h[k]
@@ -132,15 +133,17 @@ def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: 
             continue
         if (ctr.i, ctr.j) in inside:
             marked[name] = mm(inside[(ctr.i, ctr.j)])
-            prims.append(Circle(marked[name], CENTRE_R, Role.OUTLINE))
+            keys[name] = ctr.key
+            panel.tag(ctr.key, Circle(marked[name], CENTRE_R, Role.OUTLINE))
         else:
-            prims.extend(_far(h, cs.length, lo, hi, mm, name, lang))
+            panel.tag(ctr.key, *_far(h, cs.length, lo, hi, mm, name, lang))
     # the names placed clear of the lines, the other names and each other
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline, Arrow, Text))],
                          LABEL_H, list(marked.values()))
     for name, q in marked.items():
-        prims.append(placer.place(q, name))
-    prims.extend(placer.leaders)
+        drawn = len(placer.leaders)
+        panel.tag(keys[name], placer.place(q, name))
+        panel.tag(keys[name], *placer.leaders[drawn:])     # its leader, if it needs one
     x0, _y0, _x1, y1 = panel.bounds()
     prims.append(Text((x0, y1 + 9.0), title, TITLE_H))
     ratio = significant(mu * 1000.0, 4, lang)
@@ -220,9 +223,9 @@ def circle_diagram_panel(cs: Centres, sym: str, lang: str) -> Panel:
           for i, lk in enumerate(links)}
     for ctr in cs.diagram.centres:
         a, b = at[ctr.i], at[ctr.j]
-        prims.append(Line(a, b, Role.OUTLINE if ctr.primary else Role.DASHED))
         m = (a[0] + 0.4 * (b[0] - a[0]), a[1] + 0.4 * (b[1] - a[1]))
-        prims.append(Text(m, str(ctr.order + 1), 2.5))
+        panel.tag(ctr.key, Line(a, b, Role.OUTLINE if ctr.primary else Role.DASHED),
+                  Text(m, str(ctr.order + 1), 2.5))
     for lk, p in at.items():
         prims.append(Circle(p, 1.0, Role.OUTLINE))
         prims.append(Text((p[0] * 1.15 - 1.0, p[1] * 1.15 - 1.0), lk, LABEL_H))

@@ -54,6 +54,7 @@ class Curve:
     role: Role = Role.OUTLINE
     label: str | None = None       # written near the curve's end
     closed: bool = False
+    tag: str | None = None         # the replay step that draws it (``Panel.steps``)
 
 
 @dataclass(frozen=True)
@@ -182,7 +183,9 @@ def diagram_panel(name: str, title: str, curves: Sequence[Curve], x_axis: Axis, 
                 prims.append(Line((ox - TICK / 2, t), (ox + TICK / 2, t), Role.THIN))
                 prims.append(Text((ox - TICK - 0.5, t), label, SMALL_H, halign=HAlign.RIGHT,
                                   valign=VAlign.MIDDLE))
+    steps: dict[int, str] = {}
     for c in curves:
+        first = len(prims)
         xs = np.asarray(c.x, float) / mu_x
         ys = np.asarray(c.y, float) / mu_y
         prims.extend(_polylines(xs, ys, c.role, c.closed))
@@ -191,6 +194,8 @@ def diagram_panel(name: str, title: str, curves: Sequence[Curve], x_axis: Axis, 
             if ok.size:
                 j = ok[-1]
                 prims.append(Text((float(xs[j]) + 1.0, float(ys[j]) + 1.0), c.label, TEXT_H))
+        if c.tag is not None:
+            steps |= dict.fromkeys(range(first, len(prims)), c.tag)
     for value, label in hlines:
         y = value / mu_y
         prims.append(Line((X0, y), (X1, y), Role.DASHED))
@@ -210,4 +215,4 @@ def diagram_panel(name: str, title: str, curves: Sequence[Curve], x_axis: Axis, 
                                            mu_text(muy, mu_y, y_axis.unit, language)],
                             TEXT_H, width, valign=VAlign.TOP))
     prims.extend(text_block((X0, Y1 + 14.0), title, TITLE_H, width, upward=True))
-    return Diagram(Panel(name, list(prims)), mu_x, mu_y)
+    return Diagram(Panel(name, list(prims), steps=steps), mu_x, mu_y)

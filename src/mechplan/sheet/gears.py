@@ -185,4 +185,10 @@ def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:
                                    message("gears.col.gear", lang, j=2)),
                                   pair_rows(sol.pair, lang),
                                   tuple(pair_lines(sol.pair, lang)[1:5])))
+        if sol.contour is not None:
+            from ..synthesis.gears.contour import specific_sliding
+            from .gear_contour import contour_panel, sliding_panel
+            panels.append(contour_panel(sol.contour, sol.pair, lang, scale))
+            panels.append(sliding_panel(specific_sliding(sol.pair.spec, sol.pair.x1, sol.pair.x2),
+                                        sol.pair, lang, scale))
     return panels

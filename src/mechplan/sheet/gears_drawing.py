@@ -136,7 +136,8 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0,
         if n in p.names[2:-2]:
             continue                         # the planet block has one line, labelled by its first
         label = f"{n},{p.names[2]}" if n == p.names[1] and res.spec.scheme.two_row else n
-        curves.append(Curve(np.array([v0, v1]), np.array([y0, y1]), Role.OUTLINE, label))
+        curves.append(Curve(np.array([v0, v1]), np.array([y0, y1]), Role.OUTLINE, label,
+                            tag=f"line-{n}"))
     v_all = [v for n in p.names for (_, v) in p.lines[n]]
     for j, part in enumerate(res.partials or ()):     # a differential: each input alone, thin
         for n in part.names:
@@ -144,7 +145,7 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0,
                 continue
             (y0, v0), (y1, v1) = part.lines[n]
             curves.append(Curve(np.array([v0, v1]), np.array([y0, y1]), Role.THIN,
-                                f"{n}{chr(0x2032) * (j + 1)}"))
+                                f"{n}{chr(0x2032) * (j + 1)}", tag=f"partial{j}-{n}"))
             v_all += [v0, v1]
     mu_v = round_scale(max(abs(v) for v in v_all) / size) if any(v_all) else 1.0
     if res.partials is not None and any(v_all):       # a differential runs both ways: the span
@@ -169,6 +170,7 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0,
     H = max(5.0, math.floor(size * mu_v / (mu_l * w_max) / 5.0) * 5.0)
     mu_w = mu_v / (mu_l * H)
     prims: list[Primitive | Table] = []
+    rays: dict[int, str] = {}                # the primitives of each ray (``Panel.steps``)
     xs = {n: v / mu_w for n, v in w.items()}
     lo, hi = min(0.0, *xs.values()), max(0.0, *xs.values())
     prims.append(Line((lo - 10.0, 0.0), (hi + 10.0, 0.0), Role.THIN))
@@ -179,6 +181,7 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0,
     for n, x in xs.items():
         shown.setdefault(round(x, 3), []).append(n)
     for k, (x, group) in enumerate(sorted(shown.items())):
+        rays |= dict.fromkeys((len(prims), len(prims) + 1), f"ray-{group[0]}")
         prims.append(Line((0.0, -H), (x, 0.0), Role.OUTLINE))
         prims.append(Text((x, 1.5 + 4.0 * (k % 2)), ",".join(group), TEXT_H,
                           halign=HAlign.CENTER))
@@ -195,7 +198,7 @@ def plan_panels(res: PlanetaryResult, lang: str, scale: float = 1.0,
                                                        H=number(H, 0, lang),
                                                        mu=scale_factor(mu_w, lang)), TITLE_H, width,
                             upward=True))
-    return [dia.panel, Panel("angular", prims)]
+    return [dia.panel, Panel("angular", prims, steps=rays)]
 
 
 def _arc(c: tuple[float, float], r: float, a0: float, a1: float,

@@ -209,8 +209,12 @@ def replays(sol: Solution, mu: dict[Plan, float]) -> list[Doc]:
     c = sol.construction
     out = []
     groups = list(dict.fromkeys(s.group for s in c.segments if s.plan is Plan.FORCE))
-    for k in plan_positions(sol):
+    for n, k in enumerate(plan_positions(sol)):
         out.append(_position_replay(sol, k, mu))
+        if n == 0 and "centres" in sol.plans:       # as on the sheet: the first position's
+            from .live_centres import centres_replay
+
+            out.append(centres_replay(sol, k, mu[Plan.POSITION]))
         for plan in (Plan.VELOCITY, Plan.ACCELERATION):
             if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
                 out.append(_vector_replay(sol, k, plan, mu))
@@ -428,6 +432,9 @@ def _dynamics_anims(dyn: MachineDynamics, phi: np.ndarray) -> list[Doc]:
                                      **extra) for lang in LANGUAGES}
         y = np.interp(theta, dyn.theta, curves[0][0])
         out.append(cursor_panel(f"dynamics-{key}", title, drawn, x, y, label))
+    from .live_more import wittenbauer
+
+    out.append(wittenbauer(dyn, theta))             # ΔT(J_red) with its cursor
     return out
 
 
@@ -438,6 +445,10 @@ def animation(sol: Solution, mu: dict[Plan, float], frames: int = FRAMES,
     phi = _frames_phi(sol, frames)
     ev = c.evaluate(phi)
     panels = [_position_anim(sol, ev, mu[Plan.POSITION])]
+    if "centres" in sol.plans:                      # the instant centres moving
+        from .live_centres import centres_anim
+
+        panels.append(centres_anim(sol, ev, panels[0], mu))
     for plan in (Plan.VELOCITY, Plan.ACCELERATION):
         if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
             panels.append(_vector_anim(sol, ev, plan, mu[plan]))

@@ -55,7 +55,9 @@ def engine_animation(study: EngineData, frames: int = ENGINE_FRAMES) -> Doc:
     phi = d.phi[idx]
     x = np.degrees(phi)
     q = d.pins[1]
-    panels = [_polar(study, idx)]
+    from .live_more import crank_train
+
+    panels = [_polar(study, idx), crank_train(study, phi)]     # cylinder 1 moving with the cursor
     axis = _phi_axis(study, 1.0)
     for key, curves, y_axis, label, y in (
             ("tz", [Curve(np.degrees(d.phi), q.T * 1e-3, Role.OUTLINE, "T"),

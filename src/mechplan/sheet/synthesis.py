@@ -22,7 +22,7 @@ from ..drafting.primitives import (
 from ..i18n import message, significant
 from ..synthesis.linkage.design import LinkageDesign, Stroke
 from .diagram import Axis, Curve, diagram_panel, mu_text
-from .fit import text_block, text_panel
+from .fit import TableStyle, table_panel, text_block, text_panel
 from .layout import fitted_layout
 from .panels import Panel
 
@@ -82,7 +82,8 @@ def construction_panel(d: LinkageDesign, lang: str, enlargement: float) -> Panel
                               halign=HAlign.LEFT, valign=VAlign.BOTTOM))
     x0, _, x1, y1 = Panel("", prims).bounds()
     title = {"function": "synth.sheet.construction_fg",
-             "guidance": "synth.sheet.construction_gd"}.get(d.problem,
+             "guidance": "synth.sheet.construction_gd",
+             "path": "synth.sheet.construction_pg"}.get(d.problem,
                                                             "synth.sheet.construction")
     heading = [message(title, lang),
                mu_text("μl", mu, "m", lang)]
@@ -102,14 +103,19 @@ def error_panel(d: LinkageDesign, lang: str, enlargement: float) -> Panel:
 
 def synthesis_sheets(d: LinkageDesign, protocol: list[str], results: list[str],
                      title: str, size: str | None, standard: str | None, lang: str,
-                     name: str, fields: dict[str, str]) -> list[Sheet]:
-    """Lay the construction, its protocol and the conditions out on framed sheets."""
+                     name: str, fields: dict[str, str],
+                     conditions: list[list[str]] | None = None) -> list[Sheet]:
+    """Lay the construction, its protocol, the conditions table and the sentences out on framed
+    sheets."""
     size, standard = size or "A2", standard or "iso"
 
     def build(scale: float) -> list[Panel]:
         extra = [error_panel(d, lang, scale)] if d.problem == "function" else []
         return [construction_panel(d, lang, scale), *extra,
                 text_panel("synthesis-protocol", message("synth.sheet.protocol", lang), protocol),
+                *([table_panel("synthesis-conditions", message("synth.table.title", lang),
+                               conditions, TableStyle(text_h=2.5, row_h=6.0, head_h=7.0))]
+                  if conditions and len(conditions) > 1 else []),
                 text_panel("synthesis-results", message("synth.sheet.results", lang), results)]
 
     all_fields = {"title": title, **{k: v for k, v in fields.items() if v}}

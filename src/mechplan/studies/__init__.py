@@ -75,6 +75,10 @@ def solve_text(text: str, file: str, *, at_deg: list[float] | None = None,
         from .gears import solve_gear_text
 
         return solve_gear_text(text, file)
+    if kind == "cycle":
+        from .cycle import solve_cycle_text
+
+        return solve_cycle_text(text, file, data_dir=data_dir)
     if kind == "synthesis":
         from .synthesis import solve_synthesis_text
 

@@ -14,6 +14,8 @@ from .answers import Keys, Own, Written
 
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
+    from ..synthesis.gears.contour import Contour
+    from ..synthesis.gears.involute import Pair
     from ..synthesis.gears.solve import GearSolution
     from ..synthesis.gears.train import Conditions
 
@@ -104,6 +106,8 @@ class GearStudy:
         if sol.pair is not None:
             out.append("")
             out.extend(pair_lines(sol.pair, lang))
+            if sol.contour is not None:
+                out.extend(contour_lines(sol.contour, sol.pair, lang))
         return "\n".join(out)
 
     def warnings(self, language: str | None = None) -> list[str]:
@@ -171,6 +175,8 @@ class GearStudy:
                                                       "s", "s_w", "s_a", "rho_l", "rho_p",
                                                       "sliding")} for g in p.gears],
             }
+            if sol.contour is not None:
+                doc["pair"]["contour"] = contour_json(sol.contour, p)
         return doc
 
     def answers(self) -> Keys:
@@ -201,6 +207,32 @@ class GearStudy:
         from ..sheet.gears import gear_sheets
 
         return gear_sheets(self.solution, size, standard, language, name)
+
+
+def contour_json(c: Contour, p: Pair) -> dict[str, Any]:
+    """The contour's limits, lines (x1, x2 points, null between branches), the chosen shifts and
+    the specific sliding along N1N2 (null for ±∞)."""
+    from ..synthesis.gears.contour import specific_sliding
+
+    def pts(a: Any) -> list[list[float | None]]:
+        return [[float(x) if math.isfinite(x) else None for x in row] for row in a.tolist()]
+
+    def vals(a: Any) -> list[float | None]:
+        return [float(x) if math.isfinite(x) else None for x in a.tolist()]
+    s = specific_sliding(p.spec, p.x1, p.x2)
+    return {"tip_land_modules": c.spec.tip_land, "min_contact_ratio": c.spec.eps_min,
+            "lines": {k: pts(v) for k, v in c.lines.items()}, "balanced_sliding": pts(c.balanced),
+            "recommended": list(c.recommended), "rule": c.rule, "contact_ratio": c.eps,
+            "specific_sliding": {"u_from_N1_m": vals(s.u), "eta1": vals(s.eta1),
+                                 "eta2": vals(s.eta2), "B1_m": s.b1, "B2_m": s.b2, "g_m": s.g}}
+
+
+def contour_lines(c: Contour, p: Pair, lang: str) -> list[str]:
+    """The report's lines on the blocking contour."""
+    from ..sheet.gear_contour import chosen_line
+
+    return [message("contour.report.limits", lang, k=number(c.spec.tip_land, 2, lang),
+                    eps=number(c.spec.eps_min, 2, lang)), chosen_line(c, lang)]
 
 
 def solve_gear_text(text: str, file: str) -> GearStudy:

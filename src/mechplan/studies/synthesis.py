@@ -68,6 +68,8 @@ def round_trip(d: LinkageDesign) -> RoundTrip:
         return _function_round_trip(d, scene)
     if d.output_kind == "guidance":
         return _guidance_round_trip(d, scene)
+    if d.output_kind == "path":
+        return _path_round_trip(d, scene)
     sol = solve(scene, count=1)
     mech = scene.mechanism
     ex = extreme_positions(sol.construction, mech, d.output)
@@ -136,6 +138,17 @@ def _guidance_round_trip(d: LinkageDesign, scene: Any) -> RoundTrip:
     return RoundTrip(math.nan, miss)
 
 
+def _path_round_trip(d: LinkageDesign, scene: Any) -> RoundTrip:
+    """The path generator solved by the engine at its crank angles: the largest distance of the
+    coupler point E from the given points (m) is ``output``."""
+    from ..solve import solve
+
+    c = d.conditions
+    ev = solve(scene).construction.evaluate(np.array(c["precision_phi"]))
+    miss = np.hypot(*(ev["pos.E"] - np.array(c["path_points"])).T)
+    return RoundTrip(math.nan, float(np.max(miss)))
+
+
 @dataclass(frozen=True)
 class SynthesisStudy:
     """A linkage synthesised from its scene, and checked by analysing what it produced."""
@@ -180,6 +193,8 @@ class SynthesisStudy:
             return lines + self.function_lines(lang)
         if d.problem == "guidance":
             return lines + self.guidance_lines(lang)
+        if d.problem == "path":
+            return lines + self.guidance_lines(lang)[:-1] + self.path_lines(lang)
         if "grashof" in c:
             lines.append(message("synth.result.grashof", lang,
                                  margin=number(c["grashof_margin"] * 1e3, 3, lang)))
@@ -233,6 +248,13 @@ class SynthesisStudy:
         lines.append(message("synth.gd.round_trip", lang,
                              miss=significant(rt.output * 1e3, 3, lang)))
         return lines
+
+    def path_lines(self, lang: str) -> list[str]:
+        """A path generator's miss (its own and the engine's round trip)."""
+        c, rt = self.design.conditions, self.check
+        own = "synth.pg.miss" if c["exact"] else "synth.pg.miss_lsq"
+        return [message(own, lang, miss=significant(c["path_miss"] * 1e3, 3, lang)),
+                message("synth.pg.round_trip", lang, miss=significant(rt.output * 1e3, 3, lang))]
 
     def function_lines(self, lang: str) -> list[str]:
         """A function generator's linkage type, defects, structural error and round trip."""
@@ -305,10 +327,12 @@ class SynthesisStudy:
         results = self.result_lines(lang)
         if self.design.family:
             results = [say(self.design.choice, lang), *results]
+        from .synthesis_table import condition_rows
+
         return synthesis_sheets(self.design, self.protocol_lines(lang), results,
                                 self.title(lang), size or self.spec.sheet,
                                 standard or self.spec.standard, lang, name,
-                                dict(self.spec.title_block))
+                                dict(self.spec.title_block), condition_rows(self, lang))
 
     def write_files(self, out_dir: str | Path, name: str) -> list[Path]:
         """Write the produced mechanism scene, ``<name>-mechanism.toml``."""

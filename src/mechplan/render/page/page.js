@@ -193,9 +193,10 @@ function buildAnimation() {
     const items = P.items.map((it) => {
       if (it.kind === "rotor") {     // a body turning about the origin: one shape, an angle a frame
         const g = el("g");
+        g.dataset.item = it.name ?? "rotor";
         g.append(...it.shape.flatMap(draw));
         svg.append(g);
-        return [g, null, it.angle];
+        return [g, null, it.angle, it.centre];   // a planet: carried along its centre's path
       }
       const e = el("path", { class: it.kind === "link" || it.thick ? "role-outline" : "role-thin" });
       e.dataset.item = it.kind === "link" ? it.link : it.name;
@@ -240,14 +241,14 @@ function buildAnimation() {
   frame(0);
   for (const a of anim) {   // every frame inside the panel's home view
     if (a.P.static) { fit(a.svg, bounds(a.svg.querySelector("g.static").children)); continue; }
-    if (a.P.box) { fit(a.svg, a.P.box); continue; }
     const b = [Infinity, Infinity, -Infinity, -Infinity];
-    for (const [, , p] of a.pts) for (let k = 0; k < p.xy.length; k += 2) {
+    for (const [, , p] of a.P.box ? [] : a.pts) for (let k = 0; k < p.xy.length; k += 2) {
       if (p.xy[k] === null) continue;
       b[0] = Math.min(b[0], p.xy[k]); b[2] = Math.max(b[2], p.xy[k]);
       b[1] = Math.min(b[1], p.xy[k + 1]); b[3] = Math.max(b[3], p.xy[k + 1]);
     }
-    fit(a.svg, Number.isFinite(b[0]) ? [b[0] - 8, b[1] - 8, b[2] + 8, b[3] + 8] : [0, 0, 100, 100]);
+    if (a.P.box) fit(a.svg, a.P.box);
+    else fit(a.svg, Number.isFinite(b[0]) ? [b[0] - 8, b[1] - 8, b[2] + 8, b[3] + 8] : [0, 0, 100, 100]);
     const vb = views.get(a.svg), size = Math.max(vb[2], vb[3]);   // labels readable at any μ
     for (const [c, t] of a.pts) { c.setAttribute("r", size / 250); t.setAttribute("font-size", size / 40); }
     a.lift = size / 80;
@@ -265,8 +266,9 @@ function frame(k) {
   state.frame = ((k % A.frames) + A.frames) % A.frames;
   const f = state.frame;
   for (const a of anim) {
-    for (const [e, d, angle] of a.items) {
-      if (angle) e.setAttribute("transform", `rotate(${angle[f] ?? 0})`);
+    for (const [e, d, angle, c] of a.items) {
+      const at = c ? `translate(${c[2 * f]} ${c[2 * f + 1]}) ` : "";
+      if (angle) e.setAttribute("transform", `${at}rotate(${angle[f] ?? 0})`);
       else e.setAttribute("d", d[f] || "M0 0");
     }
     for (const [c, t, p] of a.pts) {

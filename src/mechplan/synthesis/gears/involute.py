@@ -163,8 +163,9 @@ def balanced_shift(p: PairSpec) -> float:
     return float(brentq(diff, lo, hi, xtol=1e-12))
 
 
-def pair_layout(p: PairSpec) -> Pair:
-    """Lay out the pair, choosing the shifts by its rule.
+def pair_layout(p: PairSpec, chosen: tuple[float, float] | None = None) -> Pair:
+    """Lay out the pair, choosing the shifts by its rule (``chosen``: the shifts the blocking
+    contour recommends, for the rule ``contour``).
 
     Raise :class:`SceneError` for a pair that cannot exist (:func:`check_exists`)."""
     if p.rule is ShiftRule.NO_UNDERCUT:
@@ -173,6 +174,11 @@ def pair_layout(p: PairSpec) -> Pair:
     elif p.rule is ShiftRule.BALANCED:
         x1 = balanced_shift(p)
         x2 = -x1
+    elif p.rule is ShiftRule.CONTOUR:
+        if chosen is None:
+            from .contour import ContourSpec, blocking_contour
+            chosen = blocking_contour(p, ContourSpec(p.tip_land, p.eps_min)).recommended
+        x1, x2 = chosen
     else:
         x1, x2 = p.shifts
     return check_exists(_layout(p, x1, x2))

@@ -12,6 +12,7 @@ from ...errors import SceneError
 from ...i18n import Text
 from ...model.gears import GearScene, OrdinarySpec, PlanetarySpec
 from . import search, train
+from .contour import Contour, ContourSpec, blocking_contour
 from .involute import Pair, pair_layout
 from .plan import TrainPlan, velocity_plan
 
@@ -63,6 +64,7 @@ class GearSolution:
     planetary: PlanetaryResult | None
     ordinary: OrdinaryResult | None
     pair: Pair | None
+    contour: Contour | None = None        # the blocking contour, when the scene asks for it
 
     @property
     def total_ratio(self) -> float | None:
@@ -167,13 +169,16 @@ def solve_gears(scene: GearScene) -> GearSolution:
             ordinary = solve_ordinary(scene.ordinary, p.z_min if p else 17,
                                       p.deviation if p else 0.02)
         pair = None
+        contour: Contour | None = None
         if scene.pair:
             spec = scene.pair
             if spec.z1 == 0 and ordinary is not None:
                 spec = dataclasses.replace(spec, z1=ordinary.z5, z2=ordinary.z6)
-            pair = pair_layout(spec)
+            if spec.contour:
+                contour = blocking_contour(spec, ContourSpec(spec.tip_land, spec.eps_min))
+            pair = pair_layout(spec, contour.recommended if contour else None)
     except SceneError as exc:
         if exc.file:
             raise
         raise SceneError(exc.detail, file=scene.file, key=exc.key) from None
-    return GearSolution(scene, planetary, ordinary, pair)
+    return GearSolution(scene, planetary, ordinary, pair, contour)

@@ -15,6 +15,7 @@ from .crank_rocker import crank_rocker
 from .design import LinkageDesign, k_of_theta, theta_of_k
 from .function import function_generator
 from .guidance import guidance
+from .path import path_generation
 from .slider_crank import slider_crank
 
 
@@ -30,6 +31,8 @@ def synthesise(spec: SynthesisSpec) -> LinkageDesign:
         return function_generator(spec)
     if spec.problem == "guidance":
         return guidance(spec)
+    if spec.problem == "path":
+        return path_generation(spec)
     raise SceneError(Text(
         "errmsg2.synthesis_linkage.unknown_problem",
         {"problem": repr(spec.problem)}), file=spec.path,

@@ -113,6 +113,20 @@ def _pick(spec: SynthesisSpec, circ: _Circle) -> tuple[float, Step]:
                          hi=repr(round(math.degrees(max(ps)), 3)))
         t = max(found, key=circ.gamma)
         return t, Step("synth.cr.choice_angle", {"psi0": psi0, "n": len(found)})
+    if spec.rod_ratio is not None:
+        lam = spec.rod_ratio
+
+        def ratio(t: float) -> float:
+            n = circ.lengths(t)
+            return n["r"] / n["l"] - lam
+
+        found = g.roots(ratio, lo + eps, hi - eps)
+        if not found:
+            ls = [ratio(lo + (hi - lo) * i / 200) + lam for i in range(1, 200)]
+            raise _error(spec, "lambda", "cr_lambda_range", value=repr(lam),
+                         lo=repr(round(min(ls), 6)), hi=repr(round(max(ls), 6)))
+        t = max(found, key=circ.gamma)
+        return t, Step("synth.cr.choice_lambda", {"lam": lam, "n": len(found)})
     t = g.maximise(circ.gamma, lo + eps, hi - eps)
     return t, Step("synth.cr.choice_best", {"gamma": circ.gamma(t)})
 
@@ -124,6 +138,10 @@ def crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
         raise _error(spec, "swing" if psi is None else "rocker", "needs", problem=spec.problem)
     if not 0.0 < psi < math.pi:
         raise _error(spec, "swing", "swing_range", value=repr(round(math.degrees(psi), 6)))
+    if spec.k == 1.0 and spec.rod_ratio is not None:
+        from .central_rocker import central_crank_rocker
+
+        return central_crank_rocker(spec)
     if not spec.k > 1.0:
         raise _error(spec, "K", "k_above_one", value=repr(spec.k))
     theta = theta_of_k(spec.k)

@@ -1,0 +1,144 @@
+"""The cycle diagram of a machine as the courses draw it: rectangular (one strip per member,
+stacked, phase boundaries and the output's level drawn in each strip, main-shaft angle ψ below)
+and circular (one ring per member, phases as sectors, ψ counter-clockwise from the right)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from ..drafting.fonts import text_width_mm
+from ..drafting.primitives import Arc, Circle, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
+from ..i18n import message, number
+from .fit import text_block
+from .layout import fitted_sheets
+from .panels import Panel
+
+if TYPE_CHECKING:
+    from ..construct.cycle import MemberCycle, Span
+    from ..drafting.primitives import Sheet
+
+WIDTH = 180.0       # mm for 360° of the rectangular diagram
+STRIP = 14.0        # mm, the height of one member's strip
+TEXT_H = 2.5
+SMALL_H = 1.8       # mm, the phases' names and angles
+TITLE_H = 3.5
+RING = 10.0         # mm, the width of one member's ring
+HUB = 15.0          # mm, the radius inside the innermost ring
+
+
+@dataclass(frozen=True)
+class CycleView:
+    """What the diagrams show: the members' phases and ψ of the diagram's origin (rad)."""
+
+    members: tuple[MemberCycle, ...]
+    origin: float
+
+
+def _kind(kind: str, lang: str) -> str:
+    return message(f"machine_cycle.kind.{kind}", lang)
+
+
+def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
+    """The rectangular diagram: strips top to bottom in the order of the machine file."""
+    w, h = WIDTH * k, STRIP * k
+    prims: list[Primitive] = []
+    n = len(st.members)
+    for row, m in enumerate(st.members):
+        y0 = (n - 1 - row) * h
+        prims.append(Polyline(((0, y0), (w, y0), (w, y0 + h), (0, y0 + h)), Role.OUTLINE,
+                              closed=True))
+        prims.append(Text((-2.0, y0 + h / 2), f"{row + 1}. {m.name}", TEXT_H,
+                          halign=HAlign.RIGHT, valign=VAlign.MIDDLE))
+        for s, a, b in m.on_shaft(st.origin):
+            xa, xb = a / (2 * math.pi) * w, b / (2 * math.pi) * w
+            prims.append(Line((xa, y0), (xa, y0 + h), Role.THIN))
+            # the output's level across the span (split spans: the part of the level between)
+            full = s.angle if s.angle > 0 else 1.0
+            t0 = _fraction_in(m, s, a, st.origin) / full
+            t1 = t0 + (b - a) / full
+            la = s.level0 + (s.level1 - s.level0) * t0
+            lb = s.level0 + (s.level1 - s.level0) * t1
+            pad = 0.2 * h
+            prims.append(Line((xa, y0 + pad + la * (h - 2 * pad)),
+                              (xb, y0 + pad + lb * (h - 2 * pad)), Role.OUTLINE))
+            # a phase's name and angle only where they fit between its boundaries
+            name, angle = _kind(s.kind, lang), f"{number(math.degrees(b - a), 1, lang)}°"
+            if text_width_mm(name, SMALL_H) < xb - xa - 1.0:
+                prims.append(Text(((xa + xb) / 2, y0 + h - 1.0), name, SMALL_H,
+                                  halign=HAlign.CENTER, valign=VAlign.TOP))
+            if text_width_mm(angle, SMALL_H) < xb - xa - 1.0:
+                prims.append(Text(((xa + xb) / 2, y0 + 1.0), angle, SMALL_H,
+                                  halign=HAlign.CENTER, valign=VAlign.BOTTOM))
+    for deg in range(0, 361, 30):
+        x = deg / 360 * w
+        prims.append(Line((x, -1.5), (x, 0.0), Role.THIN))
+        prims.append(Text((x, -2.0), f"{deg}", 1.8, halign=HAlign.CENTER, valign=VAlign.TOP))
+    prims.append(Text((w + 2.0, -2.0), "ψ, °", TEXT_H, valign=VAlign.TOP))
+    title = message("machine_cycle.sheet.rectangular", lang,
+                    start=number(math.degrees(st.origin), 1, lang))
+    prims.extend(text_block((0.0, n * h + 4.0), title, TITLE_H, w, upward=True))
+    return Panel("cycle-rectangular", list(prims))
+
+
+def _fraction_in(m: MemberCycle, s: Span, a: float, origin: float) -> float:
+    """How far into span ``s`` (rad of its own angle) the piece starting at ψ = ``a`` begins."""
+    start = (s.start - m.phase - origin) % (2 * math.pi)
+    return (a - start) % (2 * math.pi) if abs(a - start) > 1e-12 else 0.0
+
+
+def circular_panel(st: CycleView, lang: str, k: float) -> Panel:
+    """The circular diagram: the first member on the outer ring, ψ counter-clockwise from the
+    right (the shaft's sense of rotation), ψ = 0 at the diagram's origin."""
+    prims: list[Primitive] = []
+    n = len(st.members)
+    r_in = HUB * k
+    ring = RING * k
+    r_out = r_in + n * ring
+    prims.append(Circle((0.0, 0.0), r_in, Role.THIN))
+    for row, m in enumerate(st.members):
+        r1 = r_out - row * ring
+        r0 = r1 - ring
+        prims.append(Circle((0.0, 0.0), r1, Role.OUTLINE))
+        for s, a, b in m.on_shaft(st.origin):
+            prims.append(Line((r0 * math.cos(a), r0 * math.sin(a)),
+                              (r1 * math.cos(a), r1 * math.sin(a)), Role.OUTLINE))
+            if s.level0 == s.level1 and s.level0 > 0:       # far dwell: a thick arc outside
+                prims.append(Arc((0.0, 0.0), r0 + 0.7 * ring, math.degrees(a), math.degrees(b),
+                                 Role.OUTLINE))
+            mid = (a + b) / 2
+            angle = f"{number(math.degrees(b - a), 1, lang)}°"
+            if (b - a) * (r0 + r1) / 2 > text_width_mm(angle, SMALL_H) + 2.0:
+                rm = (r0 + r1) / 2
+                prims.append(Text((rm * math.cos(mid), rm * math.sin(mid)), angle, SMALL_H,
+                                  halign=HAlign.CENTER, valign=VAlign.MIDDLE))
+        # the member's number (the legend's) just above ψ = 0 inside its ring
+        prims.append(Text((r0 + ring / 2, 0.5), str(row + 1), SMALL_H, halign=HAlign.CENTER,
+                          valign=VAlign.BOTTOM))
+    prims.append(Line((0.0, 0.0), (r_out + 4.0, 0.0), Role.DASHED))
+    prims.append(Text((r_out + 5.0, 0.0), "ψ = 0", TEXT_H, valign=VAlign.MIDDLE))
+    prims.extend(text_block((-r_out, r_out + 4.0), message("machine_cycle.sheet.circular", lang),
+                            TITLE_H, 2 * r_out, upward=True))
+    return Panel("cycle-circular", list(prims))
+
+
+def legend_panel(st: CycleView, lang: str, k: float) -> Panel:
+    """Each member's phases in words (kind, angle, ψ from … to …)."""
+    lines = []
+    for i, m in enumerate(st.members, start=1):
+        spans = "; ".join(f"{_kind(sp.kind, lang)} {number(math.degrees(a), 1, lang)}–"
+                          f"{number(math.degrees(b), 1, lang)}°"
+                          for sp, a, b in m.on_shaft(st.origin))
+        lines.append(f"{i}. {m.name}: {spans}")
+    return Panel("cycle-legend", list(text_block((0.0, 0.0), lines, TEXT_H, WIDTH * k)))
+
+
+def cycle_sheets(st: CycleView, title: str, size: str | None, standard: str | None,
+                 lang: str, name: str) -> list[Sheet]:
+    """The rectangular and the circular cycle diagrams and their legend on framed sheets."""
+    title = title or message("machine_cycle.sheet.title", lang)
+    return fitted_sheets(lambda k: [rectangular_panel(st, lang, k), circular_panel(st, lang, k),
+                                    legend_panel(st, lang, k)],
+                         size=size or "A3", standard=standard or "iso", language=lang, name=name,
+                         fields={"title": title})
