@@ -115,19 +115,21 @@ MAX_ANGLE_DEG = 1e6
 MAX_PAPER_MM = 1189.0
 
 
-def check_angle_deg(value: float, what: str = "a crank angle") -> float:
+def check_angle_deg(value: float, what: str | None = None) -> float:
     """Return ``value`` (degrees) if it is finite and within ±:data:`MAX_ANGLE_DEG`.
 
-    Raise :class:`LimitError` saying how far apart floats are at that size."""
+    Raise :class:`LimitError` saying how far apart floats are at that size (``what``: the name
+    of the value; a crank angle when not given)."""
     if not math.isfinite(value) or abs(value) > MAX_ANGLE_DEG:
-        spacing = (f"; floats that large are {math.ulp(value):.2g}° apart, so the angle within "
-                   "a turn is lost" if math.isfinite(value) and math.ulp(value) > 1e-6 else "")
-        raise LimitError(f"{what} must be a finite number of degrees within ±{MAX_ANGLE_DEG:g} "
-                         f"(got {value:g}){spacing}")
+        spacing = (Text("errmsg2.limits.float_spacing", {"step": f"{math.ulp(value):.2g}"})
+                   if math.isfinite(value) and math.ulp(value) > 1e-6 else "")
+        raise LimitError(Text("errmsg2.limits.angle_range", {
+            "what": what or Text("errmsg2.limits.crank_angle"), "max": f"{MAX_ANGLE_DEG:g}",
+            "value": f"{value:g}", "spacing": spacing}))
     return value
 
 
-def check_angles_deg(values: np.ndarray, what: str = "a crank angle") -> np.ndarray:
+def check_angles_deg(values: np.ndarray, what: str | None = None) -> np.ndarray:
     """Return ``values`` (degrees) if every one passes :func:`check_angle_deg`."""
     bad = values[~(np.abs(values) <= MAX_ANGLE_DEG)]
     if bad.size:

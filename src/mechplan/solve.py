@@ -19,6 +19,7 @@ from .construct.segments import SegmentKind
 from .construct.trust import Failure, Flag, failures, flags, refuse_unbounded
 from .construct.validity import MAX_CONDITION, ensure_valid
 from .errors import SceneError
+from .i18n import Text
 from .limits import check_angles_deg, ensure_within_budget
 from .model.mechanism import GROUND
 from .model.plans import Plan
@@ -92,9 +93,10 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
     drive = scene.mechanism.drive
     if drive.linear:        # equal steps over the driver's range, both ends included
         if drive.q_range is None:
-            raise SceneError(f"the {drive.kind.value} driver {drive.link} has no range to spread "
-                             f"{n} positions over; give [drive] range = [from, to]",
-                             file=scene.path, key="drive.range")
+            raise SceneError(Text(
+                "errmsg2.solve.no_range",
+                {"kind": drive.kind.value, "link": drive.link, "count": str(n)}),
+                file=scene.path, key="drive.range")
         return np.linspace(drive.q_range[0], drive.q_range[1], n)
     start = pos.start_angle
     if pos.start_extreme is not None:
@@ -102,8 +104,8 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
               if e.which == pos.start_extreme.which]
         if not ex:
             raise SceneError(
-                f"{pos.start_extreme.subject} has no {pos.start_extreme.which} extreme "
-                "position over the cycle",
+                Text("errmsg2.solve.no_extreme",
+                     {"subject": pos.start_extreme.subject, "which": pos.start_extreme.which}),
                 file=scene.path,
                 key="positions.start",
             )

@@ -14,7 +14,7 @@ from .construct.protocol import vector_text
 from .construct.terms import from_to, parallel, perp
 from .construct.textbook import Rubbing, Sliding, TextbookAnswers, textbook_answers
 from .errors import SceneError
-from .i18n import message, unit
+from .i18n import Text, message, unit
 from .i18n import number as format_number
 from .model.mechanism import GROUND
 from .model.textbook import Answer, TextbookSpec
@@ -42,15 +42,18 @@ def spec_from_flags(asked: str, pin_radius_mm: float | None,
     known = tuple(a.value for a in Answer)
     bad = [a for a in names if a not in (*known, "all")]
     if bad or not names:
-        raise SceneError(f"--answers must list all or {', '.join(known)} (got {asked!r})")
+        raise SceneError(Text(
+            "errmsg2.textbook_report.answers_flag",
+            {"known": ', '.join(known), "value": repr(asked)}))
     chosen = frozenset(Answer) if "all" in names else frozenset(Answer(a) for a in names)
     if pin_radius_mm is not None and not (0.0 < pin_radius_mm < 1e6):
-        raise SceneError(f"--pin-radius must be a positive number of mm (got {pin_radius_mm:g})")
+        raise SceneError(Text(
+            "errmsg2.textbook_report.pin_radius_flag",
+            {"value": f'{pin_radius_mm:g}'}))
     radius = pin_radius_mm / 1000.0 if pin_radius_mm is not None else (
         base.pin_radius if base else None)
     if Answer.RUBBING in chosen and radius is None and not (base and base.pins):
-        raise SceneError("the rubbing velocity needs the pins' radius: give --pin-radius MM or "
-                         "[answers] pin_radius in the scene")
+        raise SceneError(Text("errmsg2.textbook_report.pin_radius_needed"))
     return TextbookSpec(chosen | (base.asked if base else frozenset()), radius,
                         dict(base.pins) if base else {}, base.outputs if base else ())
 

@@ -9,6 +9,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..model.mechanism import GROUND, Guide, Link, Mechanism, Pair, PairKind
 from ..model.plans import Plan
 from ..model.structure import Structure
@@ -113,10 +114,10 @@ class Builder:
                 ev = self.c.evaluate(self.assembly_phi)
                 dist[sigma] = float(np.linalg.norm(ev[probe][0] - target))
             if all(math.isnan(d) for d in dist.values()):
-                raise SceneError(f"the mechanism cannot be assembled at φ = "
-                                 f"{math.degrees(self.assembly_phi):g}° to match the sketch of "
-                                 f"{point} (group {group}); set assembly.at to a reachable angle",
-                                 file=self.file, key=f"assembly.{point}")
+                raise SceneError(Text(
+                    "errmsg2.builder.sketch_unreachable",
+                    {"phi": f"{math.degrees(self.assembly_phi):g}", "point": point,
+                     "group": group}), file=self.file, key=f"assembly.{point}")
             best = min(dist, key=lambda s: (math.inf if math.isnan(dist[s]) else dist[s]))
             self.c.steps[step_id] = _with(step, sigma=best)
             return
@@ -128,10 +129,10 @@ class Builder:
             return
         missing = [x for x in (p, q) if x not in self.pos]
         if missing:
-            raise SceneError(
-                f"point {point} is found in group {group}, before {', '.join(missing)}; "
-                "give its side relative to points known by then "
-                f"({', '.join(sorted(self.pos))}) or sketch coordinates",
+            raise SceneError(Text(
+                "errmsg2.builder.side_too_early",
+                {"point": point, "group": group, "missing": ", ".join(missing),
+                 "known": ", ".join(sorted(self.pos))}),
                 file=self.file,
                 key=f"assembly.{point}",
             )
@@ -145,15 +146,16 @@ class Builder:
                 return
             sides.append(abs(side) / max(float(np.hypot(*(b - a)) * np.hypot(*(k - a))), 1e-300))
         if all(math.isnan(x) or x < 1e-8 for x in sides):
-            raise SceneError(f"the side of point {point} relative to {p}->{q} cannot be decided at "
-                             f"φ = {math.degrees(self.assembly_phi):g}°: the points are collinear "
-                             "there (a change point or toggle, where both assemblies meet and the "
-                             "construction is ill-conditioned); set assembly.at to another crank "
-                             "angle, e.g. at = \"30 deg\"", file=self.file,
+            raise SceneError(Text(
+                "errmsg2.builder.side_undecided",
+                {"point": point, "p": p, "q": q,
+                 "phi": f'{math.degrees(self.assembly_phi):g}'}), file=self.file,
                              key=f"assembly.{point}")
-        raise SceneError(f"neither assembly of point {point} lies "
-                         f"{'left' if want > 0 else 'right'} of {p}->{q} "
-                         f"at φ = {math.degrees(self.assembly_phi):g}°",
+        raise SceneError(Text(
+            "errmsg2.builder.neither_side",
+            {"point": point,
+             "side": Text('errmsg2.builder.left') if want > 0 else Text('errmsg2.builder.right'),
+             "p": p, "q": q, "phi": f'{math.degrees(self.assembly_phi):g}'}),
                          file=self.file, key=f"assembly.{point}")
 
     # -- build -------------------------------------------------------------------------------

@@ -9,6 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import SceneError
+from ..i18n import Text
 from ..model.mechanism import GROUND, Mechanism
 from .graph import Construction
 
@@ -33,7 +34,7 @@ def _rate_and_value(c: Construction, mech: Mechanism, subject: str) -> RateFunct
     if subject in mech.links:
         omega_id, angle_id = c.results.get(f"omega_{subject}"), c.results.get(f"angle_{subject}")
         if omega_id is None or angle_id is None:
-            raise SceneError(f"link {subject} has no angular velocity to find extremes of")
+            raise SceneError(Text("errmsg2.extremes.no_omega", {"link": subject}))
 
         def link_rate(phi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             ev = c.evaluate(phi)
@@ -42,8 +43,7 @@ def _rate_and_value(c: Construction, mech: Mechanism, subject: str) -> RateFunct
     owner = next((k for k, lk in mech.links.items() if subject in lk.points and lk.slides_on
                   and mech.guides[lk.slides_on].link == GROUND), None)
     if owner is None:
-        raise SceneError(f"point {subject} does not slide on a frame guide; extremes are defined "
-                         "for sliders (a point) and rocking links (a link number)")
+        raise SceneError(Text("errmsg2.extremes.not_slider", {"point": subject}))
     g = mech.guides[mech.links[owner].slides_on]  # type: ignore[index]
     d = np.array([math.cos(g.angle), math.sin(g.angle)])
     o = np.array(g.origin)

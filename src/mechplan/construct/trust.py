@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import MechplanError, SingularError
+from ..i18n import Text, plan_title
 from .estimate import UNBOUNDED, ErrorEstimate, estimate_errors
 from .graph import Construction, Evaluation
 from .ops import Op
@@ -90,15 +91,15 @@ def refuse_unbounded(c: Construction, ev: Evaluation, est: ErrorEstimate, target
             from .plans.force_friction import unsettled
             locked = unsettled(c, ev, k)
             if locked is not None:
-                raise SingularError(f"force plan at {_where(c, phi_deg)}: {locked}",
+                raise SingularError(Text("errmsg2.trust.force_locked",
+                                         {"where": _where(c, phi_deg), "reason": locked}),
                                     step=step.label, phi_deg=phi_deg, condition=math.inf,
                                     file=file)
             bound = f"{rel[k]:.1e}" if math.isfinite(rel[k]) else "no bound"
             raise SingularError(
-                f"{step.plan.value} plan, group {step.group or 'I'}: {step.label} cannot be "
-                f"computed at {_where(c, phi_deg)} (estimated relative error {bound} ≥ 1: a "
-                "direction from nearly coincident points or a meet of nearly parallel loci, the "
-                "position is singular or too close to it); choose another position",
+                Text("errmsg2.trust.unbounded",
+                     {"plan": plan_title(step.plan.value), "group": step.group or "I",
+                      "step": step.label, "where": _where(c, phi_deg), "bound": bound}),
                 step=step.label, phi_deg=phi_deg, condition=math.inf, file=file)
 
 
@@ -108,7 +109,9 @@ def _shown(c: Construction, q: float) -> float:
 
 
 def _where(c: Construction, shown: float) -> str:
-    return f"the driver's coordinate {shown:g} mm" if c.drive.linear else f"φ = {shown:g}°"
+    if c.drive.linear:
+        return Text("errmsg2.trust.where_linear", {"value": f"{shown:g}"})
+    return Text("errmsg2.trust.where_phi", {"value": f"{shown:g}"})
 
 
 def failures(c: Construction, ev: Evaluation, est: ErrorEstimate, targets: Sequence[str],

@@ -7,6 +7,7 @@ import itertools
 from dataclasses import dataclass, replace
 
 from ..errors import TopologyError
+from ..i18n import Text, join
 from .mechanism import GROUND, DriverKind, Mechanism, Pair, PairKind
 
 
@@ -144,12 +145,15 @@ def analyse(mech: Mechanism) -> Structure:
     w = degrees_of_freedom(mech)
     drivers = len(mech.drivers)
     if w != drivers:
-        given = "; ".join(f"[{key}], link {d.link}"
-                          for key, d in zip(("drive", "drive2"), mech.drivers, strict=False))
+        given = join([Text("errmsg2.structure.given_driver", {"table": key, "link": d.link})
+                      for key, d in zip(("drive", "drive2"), mech.drivers, strict=False)], "; ")
         raise TopologyError(
-            f"the mechanism has W = 3·{len(mech.moving)} − 2·{len(mech.pairs)} = {w} degrees of "
-            f"freedom but {drivers} driver{'s' if drivers > 1 else ''} ({given}); add or remove "
-            "links or pairs so that W equals the number of drivers", key="links")
+            Text("errmsg2.structure.w_drivers",
+                 {"moving": str(len(mech.moving)), "pairs": str(len(mech.pairs)), "w": str(w),
+                  "drivers": str(drivers),
+                  "driver_word": (Text("errmsg2.structure.drivers") if drivers > 1
+                                  else Text("errmsg2.structure.driver")),
+                  "given": given}), key="links")
     drive = mech.drive
     view, cylinder = mech, None
     originals: dict[Pair, Pair] = {}
@@ -184,11 +188,12 @@ def analyse(mech: Mechanism) -> Structure:
 def _check_second_crank(mech: Mechanism, link: str) -> None:
     pairs = [p for p in mech.pairs_of(link) if p.other(link) == GROUND]
     if link == mech.drive.link or mech.drive.linear:
-        raise TopologyError(f"the second driver {link} must be a crank other than the first "
-                            f"driver (a crank, link {mech.drive.link})", key="drive2.link")
+        raise TopologyError(Text(
+            "errmsg2.structure.second_driver_other",
+            {"link": link, "first": mech.drive.link}), key="drive2.link")
     if len(pairs) != 1 or pairs[0].kind is not PairKind.REVOLUTE:
-        raise TopologyError(f"the second driving link {link} must turn about one frame point "
-                            "(a crank)", key="drive2.link")
+        raise TopologyError(Text("errmsg2.structure.second_driver_crank", {"link": link}),
+                            key="drive2.link")
 
 
 def _check_driving_pair(mech: Mechanism) -> None:
@@ -197,13 +202,14 @@ def _check_driving_pair(mech: Mechanism) -> None:
     if drive.kind is DriverKind.SLIDER:
         if (len(drive_pairs) != 1 or drive_pairs[0].kind is not PairKind.PRISMATIC
                 or drive_pairs[0].a != drive.link):
-            raise TopologyError(f"the driving slider {drive.link} must slide on one frame guide "
-                                f"(it has {len(drive_pairs)} pair(s) with the frame)",
+            raise TopologyError(Text(
+                "errmsg2.structure.slider_one_guide",
+                {"link": drive.link, "count": str(len(drive_pairs))}),
                                 key="drive.link")
         return
     if len(drive_pairs) != 1 or drive_pairs[0].kind is not PairKind.REVOLUTE:
-        raise TopologyError(f"the driving link {drive.link} must turn about one frame point "
-                            "(a crank)", key="drive.link")
+        raise TopologyError(Text("errmsg2.structure.driver_crank", {"link": drive.link}),
+                            key="drive.link")
 
 
 def _merged_cylinder(mech: Mechanism) -> tuple[Mechanism, dict[Pair, Pair], tuple[str, str]]:
@@ -213,8 +219,9 @@ def _merged_cylinder(mech: Mechanism) -> tuple[Mechanism, dict[Pair, Pair], tupl
     driven = [p for p in mech.pairs if p.kind is PairKind.PRISMATIC and p.a == rod
               and p.b == barrel]
     if len(driven) != 1:
-        raise TopologyError(f"the cylinder's rod {rod} must slide in its barrel {barrel} "
-                            f"(found {len(driven)} such pair(s))", key="drive.link")
+        raise TopologyError(Text(
+            "errmsg2.structure.rod_in_barrel",
+            {"rod": rod, "barrel": barrel, "count": str(len(driven))}), key="drive.link")
     originals: dict[Pair, Pair] = {}
     pairs: list[Pair] = []
     for p in mech.pairs:
@@ -222,15 +229,17 @@ def _merged_cylinder(mech: Mechanism) -> tuple[Mechanism, dict[Pair, Pair], tupl
             continue
         q = replace(p, a=barrel if p.a == rod else p.a, b=barrel if p.b == rod else p.b)
         if q.a == q.b:
-            raise TopologyError(f"the cylinder's rod {rod} and barrel {barrel} share a second "
-                                f"pair {p.name}; the cylinder could not extend", key="drive.link")
+            raise TopologyError(Text(
+                "errmsg2.structure.rod_second_pair",
+                {"rod": rod, "barrel": barrel, "pair": p.name}), key="drive.link")
         originals[q] = p
         pairs.append(q)
     ends = [p for p in pairs if p.joins(barrel)]
     if len(ends) != 2 or any(p.kind is not PairKind.REVOLUTE for p in ends):
         names = ", ".join(p.name for p in ends)
-        raise TopologyError(f"the cylinder (barrel {barrel}, rod {rod}) must be pinned at both "
-                            f"ends by two revolute pairs (it has {names})", key="drive.link")
+        raise TopologyError(Text(
+            "errmsg2.structure.cylinder_pinned",
+            {"barrel": barrel, "rod": rod, "names": names}), key="drive.link")
     links = {k: v for k, v in mech.links.items() if k != rod}
     return replace(mech, links=links, pairs=tuple(pairs)), originals, (barrel, rod)
 
@@ -251,8 +260,8 @@ def _find_dyad(mech: Mechanism, remaining: list[str], known: set[str]) -> Group 
         if _letters(g) in ("PRR", "PPR"):   # canonical order: the revolute outer pair first
             g = Group((j, i), o2[0], inner[0], o1[0])
         if _letters(g) == "PPP":
-            raise TopologyError(f"links {i} and {j} form a PPP group, which cannot be assembled "
-                                "(it has no defined position)", key=f"links.{i}")
+            raise TopologyError(Text("errmsg2.structure.ppp_group", {"i": i, "j": j}),
+                                key=f"links.{i}")
         return g
     return None
 
@@ -281,9 +290,10 @@ def _find_triad(mech: Mechanism, remaining: list[str], known: set[str]) -> Triad
                       (inner[0], inner[1], inner[2]))
         if triad.kind != "RRR-RRR":
             raise TopologyError(
-                f"links {', '.join(triad.links)} form a class III group (triad, base link {base}) "
-                f"with pairs {', '.join(p.name for p in triad.pairs)} ({triad.kind}); only "
-                "triads with six revolute pairs are supported", key=f"links.{base}")
+                Text("errmsg2.structure.triad_kind",
+                     {"links": ", ".join(triad.links), "base": base,
+                      "pairs": ", ".join(p.name for p in triad.pairs), "kind": str(triad.kind)}),
+                key=f"links.{base}")
         return triad
     return None
 
@@ -295,15 +305,16 @@ def _raise_undecomposable(mech: Mechanism, remaining: list[str], known: set[str]
                    and (p.a in known or p.b in known)]
         if len(inside) == 4 and len(outside) == 2:
             raise TopologyError(
-                f"links {', '.join(quad)} form a class IV group (a closed four-link contour with "
-                f"pairs {', '.join(p.name for p in inside)}, attached by "
-                f"{', '.join(p.name for p in outside)}); class IV groups are not supported, "
-                "only class II groups and class III triads", key="links")
+                Text(
+                "errmsg2.structure.class_four",
+                {"links": ', '.join(quad), "inside": ', '.join(p.name for p in inside),
+                 "outside": ', '.join(p.name for p in outside)}), key="links")
     if len(remaining) >= 4:
         raise TopologyError(
-            f"links {', '.join(remaining)} attached to links {', '.join(sorted(known))} form no "
-            "class II group (dyad) and no class III group (triad); groups of a higher class are "
-            "not supported; check the pairs", key="links")
-    raise TopologyError(f"links {', '.join(remaining)} cannot be split into class II groups "
-                        f"attached to links {', '.join(sorted(known))}; check the pairs",
+            Text(
+            "errmsg2.structure.no_group",
+            {"links": ', '.join(remaining), "known": ', '.join(sorted(known))}), key="links")
+    raise TopologyError(Text(
+        "errmsg2.structure.not_split",
+        {"links": ', '.join(remaining), "known": ', '.join(sorted(known))}),
                         key="links")

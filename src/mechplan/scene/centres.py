@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..i18n import Text
 from ..model.mechanism import GROUND, Link
 from .reader import Table
 
@@ -34,18 +35,26 @@ def centres_of(top: Table, links: dict[str, Link]) -> CentresSpec | None:
     t.check_keys(("links", "positions", "inflection"))
     chosen = t.raw("links", [])
     if not isinstance(chosen, list) or not all(isinstance(x, (str, int)) for x in chosen):
-        raise t.error("links", f"expected a list of link numbers, e.g. [\"2\"] (got {chosen!r})")
+        raise t.error("links", Text(
+            "errmsg2.scene_centres.links_list",
+            {"value": repr(chosen)}))
     out = tuple(str(x) for x in chosen)
     for lid in out:
         if lid not in links or lid == GROUND:
             moving = ", ".join(k for k in links if k != GROUND)
-            raise t.error("links", f"unknown moving link {lid!r}; the moving links are {moving}")
+            raise t.error("links", Text(
+                "errmsg2.scene_centres.unknown_moving",
+                {"link": repr(lid), "links": moving}))
     count = t.raw("positions", CENTRODE_POSITIONS)
     if not isinstance(count, int) or isinstance(count, bool) or not 4 <= count <= 100_000:
-        raise t.error("positions", f"must be a whole number from 4 to 100000 (got {count!r})")
+        raise t.error("positions", Text(
+            "errmsg2.scene_centres.count_range",
+            {"value": repr(count)}))
     inflection = t.raw("inflection", False)
     if not isinstance(inflection, bool):
-        raise t.error("inflection", f"expected true or false (got {inflection!r})")
+        raise t.error("inflection", Text(
+            "errmsg2.scene_centres.true_false",
+            {"value": repr(inflection)}))
     return CentresSpec(out, count, inflection)
 
 

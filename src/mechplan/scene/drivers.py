@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 
+from ..i18n import Text
 from ..model.mechanism import GROUND, Drive, DriverKind, Guide, Link, Pair, PairKind
 from .reader import Table
 from .spec import Positions
@@ -28,19 +29,23 @@ def linear_drive(d: Table, kind: DriverKind, links: dict[str, Link], guides: dic
     assert link is not None
     if link not in links or link == GROUND:
         known = ", ".join(k for k in links if k != GROUND)
-        raise d.error("link", f"unknown link {link!r}; links are {known}")
+        raise d.error("link", Text(
+            "errmsg2.scene_drivers.unknown_link",
+            {"link": repr(link), "links": known}))
     slides = [p for p in pairs if p.kind is PairKind.PRISMATIC and p.a == link]
-    what = "the cylinder's rod" if kind is DriverKind.CYLINDER else "the driving slider"
+    what = (Text("errmsg2.scene_drivers.what_rod") if kind is DriverKind.CYLINDER
+            else Text("errmsg2.scene_drivers.what_slider"))
     if len(slides) != 1:
-        raise d.error("link", f"{what} {link} must slide on one guide (it slides on "
-                      f"{len(slides)}); give the link slides = {{ point = …, on = … }}")
+        raise d.error("link", Text(
+            "errmsg2.scene_drivers.one_guide",
+            {"what": what, "link": link, "count": str(len(slides))}))
     pair = slides[0]
     assert pair.guide is not None
     guide = guides[pair.guide]
     if kind is DriverKind.SLIDER and pair.b != GROUND:
-        raise d.error("link", f"the driving slider {link} must slide on a frame guide (guide "
-                      f"{guide.name} belongs to link {pair.b}); for a rod in a barrel use "
-                      "kind = \"cylinder\"")
+        raise d.error("link", Text(
+            "errmsg2.scene_drivers.frame_guide",
+            {"link": link, "guide": guide.name, "owner": pair.b}))
     if kind is DriverKind.CYLINDER:
         _check_cylinder(d, link, pair, guide, links, pairs)
     speed = d.quantity("speed", "velocity", required=True)
@@ -58,27 +63,28 @@ def _check_cylinder(d: Table, rod: str, pair: Pair, guide: Guide, links: dict[st
     """The barrel's guide must run from its pivot (through) along the cylinder's axis."""
     barrel = pair.b
     if barrel == GROUND:
-        raise d.error("link", f"the cylinder's rod {rod} slides on the frame guide {guide.name}; "
-                      "a cylinder's barrel is a link pinned to the frame or to another link "
-                      "(use kind = \"slider\" for a slider on a frame guide)")
+        raise d.error("link", Text(
+            "errmsg2.scene_drivers.rod_on_frame",
+            {"rod": rod, "guide": guide.name}))
     pins = [p for p in pairs if p.kind is PairKind.REVOLUTE and p.joins(barrel)]
     if not any(p.point == guide.through for p in pins):
-        raise d.error("link", f"the guide {guide.name} of the barrel {barrel} must pass through "
-                      f"the barrel's pivot (it passes through {guide.through}); the cylinder's "
-                      "axis runs from the barrel's pivot to the rod's pin")
+        raise d.error("link", Text(
+            "errmsg2.scene_drivers.barrel_pivot",
+            {"guide": guide.name, "barrel": barrel, "through": guide.through}))
     if links[rod].points.get(pair.point) != (0.0, 0.0):
-        raise d.error("link", f"the rod {rod} must slide at its pin {pair.point}")
+        raise d.error("link", Text(
+            "errmsg2.scene_drivers.rod_pin",
+            {"rod": rod, "pin": pair.point}))
 
 
 def _range(d: Table) -> tuple[float, float]:
     raw = d.raw("range")
     if not isinstance(raw, list) or len(raw) != 2:
-        raise d.error("range", "expected [from, to] lengths, e.g. [\"1.2 m\", \"1.8 m\"] "
-                      f"(got {raw!r})")
+        raise d.error("range", Text("errmsg2.scene_drivers.range_pair", {"value": repr(raw)}))
     lo = d.value_quantity(raw[0], "range[0]", "length")
     hi = d.value_quantity(raw[1], "range[1]", "length")
     if lo == hi:
-        raise d.error("range", "the range's two ends must differ")
+        raise d.error("range", Text("errmsg2.scene_drivers.range_ends"))
     return (lo, hi)
 
 
@@ -92,13 +98,14 @@ def linear_positions(t: Table | None, drive: Drive) -> Positions:
     if t.has("at"):
         values = t.raw("at")
         if not isinstance(values, list) or not values:
-            raise t.error("at", "expected a list of the driver's lengths, e.g. [\"1.2 m\", "
-                          "\"1.4 m\"]")
+            raise t.error("at", Text("errmsg2.scene_drivers.lengths_list"))
         return Positions(angles=tuple(t.value_quantity(v, f"at[{i}]", "length")
                                       for i, v in enumerate(values)))
     count = t.raw("count", 12)
     if not isinstance(count, int) or isinstance(count, bool) or count < 1:
-        raise t.error("count", f"must be a whole number ≥ 1 (got {count!r})")
+        raise t.error("count", Text(
+            "errmsg2.scene_drivers.count_whole",
+            {"value": repr(count)}))
     if drive.q_range is None:
         raise _no_positions(drive)
     return Positions(count=count)
@@ -107,9 +114,9 @@ def linear_positions(t: Table | None, drive: Drive) -> Positions:
 def _no_positions(drive: Drive) -> Exception:
     from ..errors import SceneError
 
-    return SceneError(f"the {drive.kind.value} driver {drive.link} needs its positions: "
-                      "[positions] at = [lengths], or [drive] range = [from, to] with "
-                      "[positions] count", key="drive.range")
+    return SceneError(Text(
+        "errmsg2.scene_drivers.needs_positions",
+        {"kind": drive.kind.value, "link": drive.link}), key="drive.range")
 
 
 def linear_assembly_default(top: Table, drive: Drive) -> float:

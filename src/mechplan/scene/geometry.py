@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 import re
 
+from ..i18n import Text
 from .reader import Table
 
 POINT_NAME = re.compile(r"^[A-Z][0-9a-z_']*$")
@@ -68,16 +69,17 @@ def triangulate(table: Table, lengths: dict[str, float], keys: dict[str, str],
             progress = True
     missing = [x for x in order if x not in local]
     if missing:
-        raise table.error("lengths", f"point {missing[0]} needs lengths to two other points of "
-                          "the link (a triangle), or define it under 'points'")
+        raise table.error("lengths", Text(
+            "errmsg2.scene_geometry.needs_triangle",
+            {"point": missing[0]}))
     for key, value in lengths.items():
         p, q = key.split("|")
         (x1, y1), (x2, y2) = local[p], local[q]
         got = math.hypot(x2 - x1, y2 - y1)
         if abs(got - value) > 1e-9 * max(value, 1e-12):
-            raise table.error(f"lengths.{keys[key]}", f"is inconsistent with the other lengths of "
-                              f"the link (the triangle gives {got * 1000:.6g} mm, got "
-                              f"{value * 1000:.6g} mm)")
+            raise table.error(f"lengths.{keys[key]}", Text(
+                "errmsg2.scene_geometry.inconsistent_length",
+                {"triangle": f'{got * 1000:.6g}', "value": f'{value * 1000:.6g}'}))
     return local
 
 
@@ -89,8 +91,10 @@ def _place_third(table: Table, x: str, local: dict[str, tuple[float, float]], a:
     if d == 0 or ra + rb < d * (1 - 1e-12) or abs(ra - rb) > d * (1 + 1e-12):
         raise table.error(
             "lengths",
-            f"the lengths {a}{x} = {ra * 1000:.6g} mm, {b}{x} = "
-            f"{rb * 1000:.6g} mm and {a}{b} = {d * 1000:.6g} mm do not form a triangle",
+            Text(
+            "errmsg2.scene_geometry.no_triangle",
+            {"a": a, "b": b, "x": x, "ra": f'{ra * 1000:.6g}', "rb": f'{rb * 1000:.6g}',
+             "d": f'{d * 1000:.6g}'}),
         )
     u = ((bx - ax) / d, (by - ay) / d)
     along = (ra * ra - rb * rb + d * d) / (2 * d)
@@ -101,18 +105,22 @@ def _place_third(table: Table, x: str, local: dict[str, tuple[float, float]], a:
     if h <= 1e-12 * d:
         return cand[1]
     if x not in sides:
-        raise table.error("side", f"point {x} can be on either side of {a}->{b}; say which, e.g. "
-                          f"side = {{ {x} = \"left of {a}->{b}\" }}")
+        raise table.error("side", Text(
+            "errmsg2.scene_geometry.either_side",
+            {"x": x, "a": a, "b": b}))
     p, q, s = sides[x]
     if p not in local or q not in local:
-        raise table.error(f"side.{x}", f"points {p} and {q} must be placed before {x} "
-                          f"(use two points of the same link that {x} is measured from)")
+        raise table.error(f"side.{x}", Text(
+            "errmsg2.scene_geometry.place_before",
+            {"p": p, "q": q, "x": x}))
     (px, py), (qx, qy) = local[p], local[q]
     for sign, (cx, cy) in cand.items():
         c = (qx - px) * (cy - py) - (qy - py) * (cx - px)
         if c * s > 0:
             return cand[sign]
-    raise table.error(f"side.{x}", f"point {x} lies on the line {p}->{q}; choose another line")
+    raise table.error(f"side.{x}", Text(
+        "errmsg2.scene_geometry.on_line",
+        {"x": x, "p": p, "q": q}))
 
 
 def extra_point(table: Table, name: str, spec: object,
@@ -121,13 +129,15 @@ def extra_point(table: Table, name: str, spec: object,
     key = f"points.{name}"
     if isinstance(spec, list):
         if len(spec) != 2:
-            raise table.error(key, "expected [x, y] with units, e.g. [\"10 mm\", \"0 mm\"]")
+            raise table.error(key, Text("errmsg2.scene_geometry.xy_units"))
         return (
             table.value_quantity(spec[0], key, "length"),
             table.value_quantity(spec[1], key, "length"),
         )
     if not isinstance(spec, str):
-        raise table.error(key, f'expected "midpoint B C", "0.35 of A B" or [x, y] (got {spec!r})')
+        raise table.error(key, Text(
+            "errmsg2.scene_geometry.extra_spec",
+            {"value": repr(spec)}))
     m = _MIDPOINT.match(spec)
     frac: float
     if m:
@@ -136,13 +146,14 @@ def extra_point(table: Table, name: str, spec: object,
         m = _FRACTION.match(spec)
         if not m:
             raise table.error(
-                key, f'expected "midpoint B C", "0.35 of A B" or [x, y] (got {spec!r})'
+                key, Text("errmsg2.scene_geometry.extra_spec2", {"value": repr(spec)})
             )
         frac = float(m.group(1).replace(",", "."))
         p, q = m.group(2), m.group(3)
     for r in (p, q):
         if r not in local:
-            raise table.error(key, f"point {r} is not a point of this link (it has "
-                              f"{', '.join(local)})")
+            raise table.error(key, Text(
+                "errmsg2.scene_geometry.not_of_link",
+                {"point": r, "points": ', '.join(local)}))
     (x1, y1), (x2, y2) = local[p], local[q]
     return (x1 + frac * (x2 - x1), y1 + frac * (y2 - y1))

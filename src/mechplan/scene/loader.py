@@ -8,7 +8,7 @@ from pathlib import Path
 
 from ..drafting.fields import SHEETS, STANDARDS, TITLE_BLOCK_FIELDS
 from ..errors import SceneError, TopologyError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 from ..model.mechanism import GROUND, Drive, DriverKind, Guide, Link, Mechanism, Pair, PairKind
 from ..model.plans import Plan
 from ..model.structure import analyse
@@ -53,8 +53,10 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
     guides.update(link_guides)
     for link in links.values():
         if link.slides_on and link.slides_on not in guides:
-            raise top.error(f"links.{link.id}.slides.on", f"unknown guide {link.slides_on!r}; "
-                            f"guides are {', '.join(guides) or 'none'}")
+            raise top.error(f"links.{link.id}.slides.on", Text(
+                "errmsg2.scene_loader.unknown_guide",
+                {"guide": repr(link.slides_on),
+                 "guides": ", ".join(guides) or Text("errmsg2.scene_loader.none")}))
     _orient_sliders(top, links, guides)
     pairs = _pairs(top, links, guides)
     drive = _drive(top, links, guides, pairs)
@@ -66,7 +68,7 @@ def parse_scene(text: str, file: str = "<scene>") -> Scene:
     try:
         analyse(mech)
     except TopologyError as exc:
-        raise TopologyError(exc.detail + _shared_frame_hint(top, links), file=file,
+        raise TopologyError(_shared_frame_hint(top, links, exc.detail), file=file,
                             key=exc.key) from None
     all_points = {p for link in links.values() for p in link.points}
     positions = _positions(top, drive, all_points, links)
@@ -99,15 +101,15 @@ def _ground(top: Table) -> tuple[dict[str, tuple[float, float]], dict[str, Guide
             guide_tables.append(ground.table(name))
             continue
         if not POINT_NAME.match(name):
-            raise ground.error(name, "a frame point name must start with a capital letter "
-                               "(A, O1, D) or be 'guides'")
+            raise ground.error(name, Text("errmsg2.scene_loader.frame_point_capital"))
         if not isinstance(value, list) or len(value) != 2:
-            raise ground.error(name, "expected coordinates [x, y], e.g. [\"0 mm\", \"0 mm\"] "
-                                     f"(got {value!r})")
+            raise ground.error(name, Text(
+                "errmsg2.scene_loader.frame_coordinates",
+                {"value": repr(value)}))
         points[name] = (ground.value_quantity(value[0], name, "length"),
                         ground.value_quantity(value[1], name, "length"))
     if not points:
-        raise ground.error(None, "needs at least one frame point, e.g. A = [\"0 mm\", \"0 mm\"]")
+        raise ground.error(None, Text("errmsg2.scene_loader.no_frame_point"))
     guides: dict[str, Guide] = {}
     for gt in guide_tables:
         assert gt is not None
@@ -123,21 +125,28 @@ def _guide(g: Table, name: str, link: str, local: dict[str, tuple[float, float]]
     through = g.string("through", required=True)
     assert through is not None
     if through not in local:
-        raise g.error("through", f"unknown point {through!r}; the link has {', '.join(local)}")
+        raise g.error("through", Text(
+            "errmsg2.scene_loader.unknown_through",
+            {"point": repr(through), "points": ', '.join(local)}))
     origin = local[through]
     toward = g.string("toward") or g.string("towards")
     if toward is not None:
         if toward not in local:
-            raise g.error("toward", f"unknown point {toward!r}; the link has {', '.join(local)}")
+            raise g.error("toward", Text(
+                "errmsg2.scene_loader.unknown_toward",
+                {"point": repr(toward), "points": ', '.join(local)}))
         dx, dy = local[toward][0] - origin[0], local[toward][1] - origin[1]
         if dx == 0 and dy == 0:
-            raise g.error("toward", f"point {toward} coincides with {through}")
+            raise g.error("toward", Text(
+                "errmsg2.scene_loader.toward_coincides",
+                {"toward": toward, "through": through}))
         angle = math.atan2(dy, dx)
     else:
         angle_v = g.quantity("angle", "angle")
         if angle_v is None:
-            raise g.error(None, f"guide {name} needs an 'angle' (e.g. \"60 deg\") "
-                          "or 'toward' a point")
+            raise g.error(None, Text(
+                "errmsg2.scene_loader.guide_needs_angle",
+                {"name": name}))
         angle = angle_v
     return Guide(name=name, link=link, origin=origin, angle=angle, through=through)
 
@@ -149,10 +158,10 @@ def _links(top: Table, ground: dict[str, tuple[float, float]]
     links: dict[str, Link] = {GROUND: Link(GROUND, "frame", dict(ground))}
     guides: dict[str, Guide] = {}
     if not lt.data:
-        raise lt.error(None, "no links are defined")
+        raise lt.error(None, Text("errmsg2.scene_loader.no_links"))
     for link_id in lt.data:
         if link_id == GROUND:
-            raise lt.error(link_id, "link 0 is the frame; define frame points under [ground]")
+            raise lt.error(link_id, Text("errmsg2.scene_loader.link_zero_frame"))
         t = lt.table(link_id)
         assert t is not None
         t.check_keys(LINK_KEYS)
@@ -164,7 +173,7 @@ def _links(top: Table, ground: dict[str, tuple[float, float]]
             if gt is not None:
                 for gname in gt.data:
                     if gname in guides:
-                        raise gt.error(gname, "a guide of this name exists already")
+                        raise gt.error(gname, Text("errmsg2.scene_loader.guide_exists"))
                     sub = gt.table(gname)
                     assert sub is not None
                     guides[gname] = _guide(sub, gname, link_id, local)
@@ -179,12 +188,12 @@ def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]]
         for key in lengths_t.data:
             pair = split_pair(key)
             if pair is None or pair[0] == pair[1]:
-                raise lengths_t.error(key, "expected two point names such as AB, O1A or \"O1-A\"")
+                raise lengths_t.error(key, Text("errmsg2.scene_loader.length_key"))
             value = lengths_t.quantity(key, "length", positive=True)
             assert value is not None
             k = "|".join(pair)
             if k in lengths or "|".join(pair[::-1]) in lengths:
-                raise lengths_t.error(key, "this length is given twice")
+                raise lengths_t.error(key, Text("errmsg2.scene_loader.length_twice"))
             lengths[k] = value
             keys[k] = key
     sides: dict[str, tuple[str, str, int]] = {}
@@ -194,8 +203,9 @@ def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]]
             text = side_t.string(name)
             parsed = parse_side(text or "")
             if parsed is None:
-                raise side_t.error(name, "expected \"left of B->C\" or \"right of B->C\" "
-                                   f"(got {text!r})")
+                raise side_t.error(name, Text(
+                    "errmsg2.scene_loader.side_text",
+                    {"text": repr(text)}))
             sides[name] = parsed
     slides_on = None
     local: dict[str, tuple[float, float]] = {}
@@ -205,11 +215,12 @@ def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]]
         point = slides_t.string("point", required=True)
         slides_on = slides_t.string("on", required=True)
         if lengths:
-            raise t.error("lengths", "a slider's points are given under 'points' in its own frame "
-                          "(origin at the sliding point, x along the guide), not by lengths")
+            raise t.error("lengths", Text("errmsg2.scene_loader.slider_lengths"))
         assert point is not None
         if not POINT_NAME.match(point):
-            raise slides_t.error("point", f"{point!r} is not a point name (A, C, O1 …)")
+            raise slides_t.error("point", Text(
+                "errmsg2.scene_loader.not_point_name",
+                {"point": repr(point)}))
         local[point] = (0.0, 0.0)
     elif lengths:
         local = triangulate(t, lengths, keys, sides)
@@ -217,9 +228,11 @@ def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]]
     if points_t is not None:
         for name, spec in points_t.data.items():
             if not POINT_NAME.match(name):
-                raise points_t.error(name, "a point name must start with a capital letter (S2, E)")
+                raise points_t.error(name, Text("errmsg2.scene_loader.point_capital"))
             if name in local:
-                raise points_t.error(name, f"point {name} is already defined on link {link_id}")
+                raise points_t.error(name, Text(
+                    "errmsg2.scene_loader.point_twice",
+                    {"name": name, "link": link_id}))
             local[name] = extra_point(t, name, spec, local)
     centre = t.raw("centre", t.raw("center"))
     if isinstance(centre, dict):
@@ -229,15 +242,17 @@ def _link_points(t: Table, link_id: str) -> tuple[dict[str, tuple[float, float]]
             if name not in local:
                 local[name] = extra_point(t, name, spec, local)
     if not local:
-        raise t.error(None, f"link {link_id} has no points: give 'lengths' (e.g. AB = \"80 mm\") "
-                      "or 'slides' = { point = \"C\", on = \"Ax\" }")
+        raise t.error(None, Text("errmsg2.scene_loader.link_no_points", {"link": link_id}))
     if slides_on is None and len(local) < 2:
-        raise t.error("lengths", f"link {link_id} needs at least one length between two points")
+        raise t.error("lengths", Text(
+            "errmsg2.scene_loader.link_one_length",
+            {"link": link_id}))
     return local, slides_on
 
 
-def _shared_frame_hint(top: Table, links: dict[str, Link]) -> str:
-    """Name the extra points (``points = {...}``) that join a link to the frame by their name."""
+def _shared_frame_hint(top: Table, links: dict[str, Link], detail: str) -> str:
+    """``detail`` and the extra points (``points = {...}``) that join a link to the frame by their
+    name."""
     frame = set(links[GROUND].points)
     found = []
     lt = top.table("links")
@@ -248,16 +263,16 @@ def _shared_frame_hint(top: Table, links: dict[str, Link]) -> str:
             if name in frame:
                 found.append(f"links.{lid}.points.{name}")
     if not found:
-        return ""
-    return (f"; {', '.join(found)} has the name of a frame point, which joins the link to the "
-            "frame there: rename it if it is another point")
+        return detail
+    return Text("errmsg2.scene_loader.frame_hint", {"detail": detail, "found": ", ".join(found)})
 
 
 def _orient_sliders(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> None:
     """Check sliders do not slide on their own guide."""
     for link in links.values():
         if link.slides_on and guides[link.slides_on].link == link.id:
-            raise top.error(f"links.{link.id}.slides.on", "a link cannot slide on its own guide")
+            raise top.error(f"links.{link.id}.slides.on", Text(
+                "errmsg2.scene_loader.slides_own_guide"))
 
 
 def _pairs(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> list[Pair]:
@@ -280,13 +295,15 @@ def _pairs(top: Table, links: dict[str, Link], guides: dict[str, Guide]) -> list
         if link.slides_on and not carries and not any(len(seen[p]) > 1 for p in link.points):
             point = next(iter(link.points))
             joints = sorted(p for p, on in seen.items() if lid not in on)
-            raise top.error(f"links.{lid}.slides.point", f"unknown point {point!r}: the point a "
-                            "slider slides at must be a joint with another link (points are "
-                            f"{', '.join(joints) or 'none'})")
+            raise top.error(f"links.{lid}.slides.point", Text(
+                "errmsg2.scene_loader.slide_point_joint",
+                {"point": repr(point),
+                 "points": ", ".join(joints) or Text("errmsg2.scene_loader.none")}))
     for lid, link in links.items():
         if lid != GROUND and not any(p.joins(lid) for p in pairs):
-            raise top.error(f"links.{lid}", f"link {lid} is connected to nothing: share a point "
-                            "with another link or slide on a guide")
+            raise top.error(f"links.{lid}", Text(
+                "errmsg2.scene_loader.link_unconnected",
+                {"link": lid}))
     return pairs
 
 
@@ -308,10 +325,11 @@ def crank_drive(d: Table, links: dict[str, Link], guides: dict[str, Guide],
     assert link is not None
     if link not in links or link == GROUND:
         known = ", ".join(k for k in links if k != GROUND)
-        raise d.error("link", f"unknown link {link!r}; links are {known}")
+        raise d.error("link", Text(
+            "errmsg2.scene_loader.unknown_drive_link",
+            {"link": repr(link), "links": known}))
     if not d.has("speed") and not d.has("omega"):
-        raise d.error("speed", "is missing: give the crank speed, e.g. speed = \"800 rpm\" or "
-                      "\"83.8 rad/s\"")
+        raise d.error("speed", Text("errmsg2.scene_loader.speed_missing"))
     speed_key = "speed" if d.has("speed") else "omega"
     speed = d.quantity(speed_key, "angular_velocity", required=True, positive=True)
     assert speed is not None
@@ -319,8 +337,9 @@ def crank_drive(d: Table, links: dict[str, Link], guides: dict[str, Guide],
     pivots = [p.point for p in pairs
               if p.kind is PairKind.REVOLUTE and {p.a, p.b} == {GROUND, link}]
     if len(pivots) != 1:
-        raise d.error("link", f"the driving link {link} must turn about exactly one frame point "
-                      f"(it shares {len(pivots)} with the frame)")
+        raise d.error("link", Text(
+            "errmsg2.scene_loader.drive_one_pivot",
+            {"link": link, "count": str(len(pivots))}))
     ref_name = d.string("from", "+x") or "+x"
     ref = _reference_angle(d, ref_name, guides)
     eps = d.quantity("epsilon", "angular_acceleration", 0.0) or 0.0
@@ -336,14 +355,15 @@ def _reference_angle(d: Table, name: str, guides: dict[str, Guide]) -> float:
         return axes[name]
     if name in guides:
         if guides[name].link != GROUND:
-            raise d.error("from", f"guide {name} moves; measure φ from a frame guide or an axis")
+            raise d.error("from", Text("errmsg2.scene_loader.guide_moves", {"name": name}))
         return guides[name].angle
     try:
         return d.value_quantity(name, "from", "angle")
     except SceneError:
-        raise d.error("from", f"expected a frame guide ({', '.join(guides) or 'none defined'}), "
-                      "an axis (+x, -y, …) or an angle such as \"30 deg\" "
-                      f"(got {name!r})") from None
+        raise d.error("from", Text(
+            "errmsg2.scene_loader.phi_from",
+            {"guides": ", ".join(guides) or Text("errmsg2.scene_loader.none_defined"),
+             "value": repr(name)})) from None
 
 
 def _assembly(top: Table, links: dict[str, Link], drive: Drive
@@ -360,10 +380,12 @@ def _assembly(top: Table, links: dict[str, Link], drive: Drive
             phi = a.quantity("at", "length" if drive.linear else "angle") or 0.0
             continue
         if key not in names:
-            raise a.error(key, f"unknown point {key!r}")
+            raise a.error(key, Text(
+                "errmsg2.scene_loader.assembly_unknown_point",
+                {"point": repr(key)}))
         if isinstance(value, list):
             if len(value) != 2:
-                raise a.error(key, "expected sketch coordinates [x, y] with units")
+                raise a.error(key, Text("errmsg2.scene_loader.sketch_coordinates"))
             sketch[key] = (a.value_quantity(value[0], key, "length"),
                            a.value_quantity(value[1], key, "length"))
         elif isinstance(value, str) and value.strip() in ("+", "-"):
@@ -371,11 +393,14 @@ def _assembly(top: Table, links: dict[str, Link], drive: Drive
         else:
             parsed = parse_side(value) if isinstance(value, str) else None
             if parsed is None:
-                raise a.error(key, f"expected \"left of B->D\", \"right of B->D\", \"+\", \"-\" or "
-                              f"sketch coordinates [x, y] (got {value!r})")
+                raise a.error(key, Text(
+                    "errmsg2.scene_loader.assembly_value",
+                    {"value": repr(value)}))
             for p in parsed[:2]:
                 if p not in names:
-                    raise a.error(key, f"unknown point {p!r} in {value!r}")
+                    raise a.error(key, Text(
+                        "errmsg2.scene_loader.assembly_unknown_in",
+                        {"point": repr(p), "value": repr(value)}))
             sides[key] = parsed
     return sides, sketch, phi
 
@@ -393,12 +418,14 @@ def _positions(top: Table, drive: Drive, points: set[str], links: dict[str, Link
     if t.has("at"):
         values = t.raw("at")
         if not isinstance(values, list) or not values:
-            raise t.error("at", "expected a list of crank angles, e.g. [\"0 deg\", \"30 deg\"]")
+            raise t.error("at", Text("errmsg2.scene_loader.angles_list"))
         return Positions(angles=tuple(t.value_quantity(v, f"at[{i}]", "angle")
                                       for i, v in enumerate(values)))
     count = t.raw("count", 12)
     if not isinstance(count, int) or isinstance(count, bool) or count < 1:
-        raise t.error("count", f"must be a whole number ≥ 1 (got {count!r})")
+        raise t.error("count", Text(
+            "errmsg2.scene_loader.count_whole",
+            {"value": repr(count)}))
     start = t.raw("start", "0 deg")
     if isinstance(start, dict):
         st = t.table("start")
@@ -407,7 +434,9 @@ def _positions(top: Table, drive: Drive, points: set[str], links: dict[str, Link
         subject = st.string("extreme", required=True)
         which = st.string("which", "max", choices=("max", "min"))
         if subject not in points and subject not in links:
-            raise st.error("extreme", f"unknown point or link {subject!r}")
+            raise st.error("extreme", Text(
+                "errmsg2.scene_loader.extreme_subject",
+                {"subject": repr(subject)}))
         return Positions(count=count, start_extreme=Extreme(subject or "", which or "max"))
     return Positions(count=count, start_angle=t.value_quantity(start, "start", "angle"))
 
@@ -421,14 +450,17 @@ def _analysis(top: Table, points: set[str]) -> tuple[tuple[str, ...], tuple[str,
     if isinstance(plans, list):
         plans = plan_names(plans)
     if not isinstance(plans, list) or any(p not in (*PLANS, CENTRES) for p in plans):
-        raise t.error("plans", f"expected a list from {', '.join((*PLANS, CENTRES))} "
-                      f"(got {plans!r})")
+        raise t.error("plans", Text(
+            "errmsg2.scene_loader.plans_list",
+            {"choices": ', '.join((*PLANS, CENTRES)), "value": repr(plans)}))
     interest = t.raw("points", [])
     if not isinstance(interest, list):
-        raise t.error("points", "expected a list of point names")
+        raise t.error("points", Text("errmsg2.scene_loader.points_list"))
     for p in interest:
         if p not in points:
-            raise t.error("points", f"unknown point {p!r}")
+            raise t.error("points", Text(
+                "errmsg2.scene_loader.points_unknown",
+                {"point": repr(p)}))
     return tuple(plans), tuple(interest)
 
 
@@ -440,7 +472,7 @@ def _drawing(top: Table, positions: int) -> DrawingSpec:
         tb.check_keys(TITLE_BLOCK_FIELDS)
         for k, v in tb.data.items():
             if isinstance(v, (dict, list)) or "\n" in str(v):
-                raise tb.error(k, f"expected one line of text (got {v!r})")
+                raise tb.error(k, Text("errmsg2.scene_loader.one_line", {"value": repr(v)}))
             fields[k] = str(v)
     if t is None:
         return DrawingSpec(title_block=fields)
@@ -457,8 +489,9 @@ def _drawing(top: Table, positions: int) -> DrawingSpec:
     if not isinstance(plans_at, list) or not all(
             isinstance(n, int) and not isinstance(n, bool) and 0 <= n < positions
             for n in plans_at):
-        raise t.error("plans_at", f"expected position numbers from 0 to {positions - 1}, e.g. "
-                      f"[1, 4] (got {plans_at!r})")
+        raise t.error("plans_at", Text(
+            "errmsg2.scene_loader.plans_at",
+            {"last": str(positions - 1), "value": repr(plans_at)}))
     return DrawingSpec(sheet=t.string("sheet", "A1", choices=SHEETS) or "A1",
                        standard=t.string("standard", "iso", choices=STANDARDS) or "iso",
                        scales=scales, title_block=fields, plan_positions=tuple(plans_at))

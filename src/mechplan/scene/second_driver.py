@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..i18n import Text
 from ..model.mechanism import Drive, Guide, Link, Pair
 from .reader import Table
 
@@ -27,17 +28,19 @@ def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
     d.check_keys(SECOND_KEYS)
     d.string("kind", "crank", choices=("crank",))
     if first.linear:
-        raise d.error("link", "a second driver is read only with a crank as the first driver "
-                      f"([drive] kind = \"{first.kind.value}\")")
+        raise d.error("link", Text(
+            "errmsg2.scene_second_driver.crank_first",
+            {"kind": first.kind.value}))
     from .loader import crank_drive
 
     drive = crank_drive(d, links, guides, pairs)
     if drive.link == first.link:
-        raise d.error("link", f"link {drive.link} is already the first driver ([drive] link)")
+        raise d.error("link", Text(
+            "errmsg2.scene_second_driver.already_first",
+            {"link": drive.link}))
     phase = d.quantity("phase", "angle", 0.0) or 0.0
     if top.has("centres"):
-        raise top.error("centres", "instant centres are found by Kennedy's theorem for W = 1; "
-                        f"with two drivers ([drive] link {first.link}, [drive2] link "
-                        f"{drive.link}) it reaches only the centres of the pairs (a five-bar's "
-                        "I02, I03, I13, I14, I24 need the velocities); remove [centres]")
+        raise top.error("centres", Text(
+            "errmsg2.scene_second_driver.no_centres",
+            {"first": first.link, "second": drive.link}))
     return replace(drive, phase=phase)

@@ -125,7 +125,8 @@ def _numbers(s: Table, key: str, count: int | None) -> tuple[float, ...] | None:
     if raw is None:
         return None
     want = count or 3
-    sized = len(raw) == want if count else 3 <= len(raw) <= MAX_POINTS  # type: ignore[arg-type]
+    sized = isinstance(raw, list) and (len(raw) == want if count
+                                       else 3 <= len(raw) <= MAX_POINTS)
     if not isinstance(raw, list) or not sized or not all(
             isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
             for v in raw):

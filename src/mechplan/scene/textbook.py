@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..i18n import Text
 from ..model.mechanism import GROUND, Mechanism, PairKind
 from ..model.textbook import Answer, TextbookSpec
 from .reader import Table
@@ -32,7 +33,9 @@ def parse_textbook(data: dict[str, Any], file: str, mech: Mechanism) -> Textbook
         ask = [ask]
     if not isinstance(ask, list) or not ask or any(
             not isinstance(a, str) or a not in (*NAMES, "all") for a in ask):
-        raise t.error("ask", f"expected a list from all, {', '.join(NAMES)} (got {ask!r})")
+        raise t.error("ask", Text(
+            "errmsg2.scene_textbook.ask_list",
+            {"names": ', '.join(NAMES), "value": repr(ask)}))
     asked = frozenset(Answer) if "all" in ask else frozenset(Answer(a) for a in ask)
     radius = t.quantity("pin_radius", "length", positive=True)
     pins: dict[str, float] = {}
@@ -43,9 +46,9 @@ def parse_textbook(data: dict[str, Any], file: str, mech: Mechanism) -> Textbook
                                                  for x, y in ((p.a, p.b), (p.b, p.a))}
         for name in pt.data:
             if name not in at_pins:
-                raise pt.error(name, "is not the point of a revolute pair (or \"A(1,2)\": the "
-                               "pin at A joining links 1 and 2); pins are at "
-                               f"{', '.join(sorted(p.point for p in revolute))}")
+                raise pt.error(name, Text(
+                    "errmsg2.scene_textbook.not_pin",
+                    {"pins": ', '.join(sorted(p.point for p in revolute))}))
             value = pt.quantity(name, "length", positive=True)
             assert value is not None
             pins[name] = value
@@ -53,15 +56,16 @@ def parse_textbook(data: dict[str, Any], file: str, mech: Mechanism) -> Textbook
     if isinstance(outputs, str):
         outputs = [outputs]
     if not isinstance(outputs, list) or any(not isinstance(o, (str, int)) for o in outputs):
-        raise t.error("outputs", f"expected a list of slider points and rocker link numbers, "
-                      f"e.g. [\"B\", \"3\"] (got {outputs!r})")
+        raise t.error("outputs", Text(
+            "errmsg2.scene_textbook.outputs_list",
+            {"value": repr(outputs)}))
     points = {p for lk in mech.links.values() for p in lk.points}
     for o in map(str, outputs):
         if o == GROUND or (o not in mech.links and o not in points):
-            raise t.error("outputs", f"{o!r} is neither a moving link nor a point of the "
-                          "mechanism")
+            raise t.error("outputs", Text(
+                "errmsg2.scene_textbook.not_link_or_point",
+                {"value": repr(o)}))
     if Answer.RUBBING in asked and radius is None and not pins and "all" not in ask:
-        raise t.error("pin_radius", "the rubbing velocity needs the pins' radius: give "
-                      "pin_radius = \"10 mm\" or pins = { A = \"10 mm\" }")
+        raise t.error("pin_radius", Text("errmsg2.scene_textbook.pin_radius"))
     return TextbookSpec(asked=asked, pin_radius=radius, pins=pins,
                         outputs=tuple(map(str, outputs)))

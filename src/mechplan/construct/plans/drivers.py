@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 
+from ...i18n import Text
 from ...model.mechanism import GROUND, DriverKind
 from ...model.plans import Plan
 from ...model.structure import Group, GroupKind
@@ -61,9 +62,9 @@ def _unsupported(b: Builder, g: Group) -> Exception:
 
     cyl = b.structure.cylinder
     assert cyl is not None
-    return TopologyError(f"the cylinder (barrel {cyl[0]}, rod {cyl[1]}) closes group {g.name} of "
-                         f"kind {g.kind.value}; only a cylinder pinned at both ends in a group "
-                         "with a link turning about a revolute pair (RRR) is constructed so far",
+    return TopologyError(Text(
+        "errmsg2.plans.cylinder_group",
+        {"barrel": cyl[0], "rod": cyl[1], "group": g.name, "kind": g.kind.value}),
                          key="drive.link")
 
 

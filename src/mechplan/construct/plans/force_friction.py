@@ -16,6 +16,7 @@ j from the guide's link i of a prismatic pair).
 from __future__ import annotations
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.loads import pair_id
 from ...model.mechanism import GROUND, PairKind
 from ...model.plans import Plan
@@ -43,9 +44,8 @@ def friction_loads(st: State) -> None:
             image = b.bodies[p.b].image(f"{p.point}@{p.b}")
             if image is None or image.vel is None or p.a == GROUND:
                 raise SceneError(
-                    f"friction in the prismatic pair {pair_id(p.a, p.b)} needs the velocity of "
-                    f"the point of link {p.b} under {p.point}, which this construction does not "
-                    f"draw; set its f = 0 under [friction.pairs]",
+                    Text("errmsg2.plans.friction_carrier",
+                         {"pair": pair_id(p.a, p.b), "link": p.b, "point": p.point}),
                     file=b.file, key=f"{spec.key}.pairs.{pair_id(p.a, p.b)}")
             carriers[index] = image.vel
     loop = FrictionLoop(b.c, tuple(f"R_{reaction_key(p.a, p.b)}" for p in pairs),

@@ -16,6 +16,7 @@ import math
 import numpy as np
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.plans import Plan
 from ...model.structure import Triad
 from ..builder import Builder, Image, _with, alabel, vlabel
@@ -108,8 +109,9 @@ def _fix_branch(b: Builder, g: Triad, sid: str) -> int:
     cands = _candidates(b, g, sid)
     where = f"{math.degrees(b.assembly_phi):g}"
     if not cands:
-        raise SceneError(f"the class III group {g.name} cannot be assembled at φ = {where}°; set "
-                         "assembly.at to a reachable crank angle or check the lengths",
+        raise SceneError(Text(
+            "errmsg2.plans.triad_unreachable",
+            {"group": g.name, "phi": where}),
                          file=b.file, key="assembly")
     mech = b.mech
     base_pts = list(mech.links[g.base].points)
@@ -127,9 +129,10 @@ def _fix_branch(b: Builder, g: Triad, sid: str) -> int:
                 at = {x: (pts[x] if x in pts else ev[b.pos[x]][0]) for x in (p, q)
                       if x in pts or x in b.pos}
                 if len(at) < 2:
-                    raise SceneError(f"the side of point {name} in group {g.name} must be given "
-                                     f"relative to known points or points of link {g.base} "
-                                     f"(got {p}->{q})", file=b.file, key=f"assembly.{name}")
+                    raise SceneError(Text(
+                        "errmsg2.plans.triad_side",
+                        {"point": name, "group": g.name, "base": g.base, "p": p, "q": q}),
+                        file=b.file, key=f"assembly.{name}")
                 u, w = at[q] - at[p], pts[name] - at[p]
                 total += 0.0 if (u[0] * w[1] - u[1] * w[0]) * want > 0 else 1e6
         return total

@@ -8,6 +8,7 @@ a mechanism scene that ``mechplan solve``/``draw`` analyse as it is.
 from __future__ import annotations
 
 from ...errors import SceneError
+from ...i18n import Text
 from ...model.synthesis import SynthesisSpec
 from .coulisse import coulisse
 from .crank_rocker import crank_rocker
@@ -32,7 +33,9 @@ def synthesise(spec: SynthesisSpec) -> LinkageDesign:
         return guidance(spec)
     if spec.problem == "path":
         return path_generation(spec)
-    raise SceneError(f"unknown synthesis problem {spec.problem!r}", file=spec.path,
+    raise SceneError(Text(
+        "errmsg2.synthesis_linkage.unknown_problem",
+        {"problem": repr(spec.problem)}), file=spec.path,
                      key="synthesis.problem")
 
 
