@@ -45,9 +45,14 @@ def test_rubbing_without_radius_and_answers_of_a_cam_are_errors(capsys):
     code = main(["solve", str(ROOT / "templates" / "four_bar.toml"), "--answers", "speed"])
     _, err = capsys.readouterr()
     assert code == 2 and "--answers" in err
-    code = main(["solve", str(ROOT / "templates" / "cam_flat.toml"), "--answers", "all"])
+    code = main(["solve", str(ROOT / "templates" / "cam_flat.toml"), "--answers", "all",
+                 "--lang", "en"])
     _, err = capsys.readouterr()
     assert code == 2 and "linkage" in err
+    # without --lang the error is said in the scene's language (issue 35)
+    code = main(["solve", str(ROOT / "templates" / "cam_flat.toml"), "--answers", "all"])
+    _, err = capsys.readouterr()
+    assert code == 2 and "--answers" in err and "another kind of scene" not in err
 
 
 def test_the_answer_key_of_a_class_lists_the_sliding_and_rubbing_velocities():

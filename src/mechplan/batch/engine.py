@@ -80,8 +80,9 @@ def _backend(workers: int | None, scheduler: str | None) -> Iterator[int]:
     try:
         from distributed import Client
     except ImportError:
-        raise MechplanError("a scheduler address needs dask.distributed; install it with "
-                            "pip install 'mechplan[cluster]'") from None
+        from ..i18n import Text
+
+        raise MechplanError(Text("batchvars.scheduler")) from None
     try:
         client = Client(scheduler, timeout="10s", set_as_default=False)
     except (OSError, ValueError, TypeError) as exc:

@@ -20,6 +20,7 @@ from typing import Any
 
 from .. import __version__
 from ..errors import MechplanError
+from ..i18n import Text
 from ..render.atomic import write_atomic
 from ..scene.document import parse_toml, read_text
 from .csvsafe import csv_safe_row
@@ -139,8 +140,9 @@ def _solve_and_write(job: ClassJob, variant: Variant, scene: str, scene_file: st
     failures = getattr(solution, "failures", ())
     if failures and solution is not None:   # an assignment must be buildable at every position
         first = failures[0]
-        raise MechplanError(f"{len(failures)} of {solution.positions} positions cannot be built; "
-                            f"φ = {first.phi_deg:g}°: {first.reason}", file=scene_file)
+        raise MechplanError(Text("batchvars.unbuildable", {
+            "failed": str(len(failures)), "total": str(solution.positions),
+            "phi": f"{first.phi_deg:g}", "reason": first.reason}), file=scene_file)
     language = job.language or str(parse_toml(scene, scene_file).get("language", "en"))
     sheets = study.sheets(job.size, job.standard, job.language, job.name)
     for sheet in sheets:

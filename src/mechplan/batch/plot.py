@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import MechplanError
-from ..i18n import message
+from ..i18n import Text, message
 from ..render.atomic import write_atomic
 from .plan import SweepPlan
 
@@ -27,14 +27,13 @@ def plot_summary(parquet: Path, plan: SweepPlan, column: str, keys: Sequence[str
     else:
         chosen = [a.key for a in plan.axes if len(a.values) > 1][:2]
     if len(chosen) != 2 or any(k not in names for k in chosen) or chosen[0] == chosen[1]:
-        raise MechplanError(f"the plot needs two different varied keys among {', '.join(names)} "
-                            f"(got {', '.join(chosen) or 'none'}); vary two keys or name them "
-                            "with --plot-axes")
+        raise MechplanError(Text("batchvars.plot_keys", {"names": ", ".join(names),
+                                                         "chosen": ", ".join(chosen) or "—"}))
     schema = pq.read_schema(parquet)
     if column not in schema.names:
         summaries = [c for c in schema.names if c.startswith(("max_", "min_"))]
-        raise MechplanError(f"the plotted summary must be one of {', '.join(summaries)} "
-                            f"(got {column!r})")
+        raise MechplanError(Text("batchvars.plot_summary", {"summaries": ", ".join(summaries),
+                                                            "value": repr(column)}))
     table = pq.read_table(parquet, columns=["variant", column])
     variant = table.column("variant").to_numpy()
     value = table.column(column).to_numpy(zero_copy_only=False).astype(float)

@@ -88,8 +88,7 @@ def _solve(args: argparse.Namespace) -> int:
                                    args.standard)
         sol.extras["sheet"] = (args.sheet, args.standard)
     if not isinstance(study, MechanismStudy) and (args.answers or args.pin_radius is not None):
-        raise MechplanError(f"--answers and --pin-radius are for a linkage; {args.scene} is "
-                            "another kind of scene")
+        raise MechplanError(Text("batchvars.answers_kind", {"scene": str(args.scene)}))
     if isinstance(study, MechanismStudy) and (args.answers or args.pin_radius is not None):
         from ..textbook_report import attach, spec_from_flags
 
@@ -177,7 +176,8 @@ def _project(args: argparse.Namespace) -> int:
     formats = tuple(f.strip().lower() for f in args.format.split(",") if f.strip())
     known = ("docx", "pdf", "svg", "dxf", "png")
     if not formats or any(f not in known for f in formats):
-        raise MechplanError(f"--format must list some of {', '.join(known)} (got {args.format!r})")
+        raise MechplanError(Text("errors.cli.format", {"formats": ", ".join(known),
+                                                       "value": repr(args.format)}))
     for path in run_project(args.project, args.output, formats):
         print(path)
     return 0
