@@ -27,8 +27,8 @@ MISTAKES = {
         "errmsg3.engine.rod_short",
         "шатун должен быть длиннее радиуса кривошипа",
         "thanh truyền phải dài hơn bán kính tay quay",
-        "λ = R/L must be less than 1 (got λ = 1.33333); "
-        "the rod must be longer than the crank radius"),
+        ("λ = R/L must be less than 1 (got λ = 1.33333); "
+         "the rod must be longer than the crank radius")),
     "peak pressure below the end of compression": (
         ('p_z = "6.5 MPa"', 'p_z = "1 MPa"'), "indicator.p_z", "errmsg3.engine.p_z_low",
         "максимальное давление не может быть ниже давления конца сжатия",
