@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from ..errors import MechplanError, SceneError
-from ..i18n import LANGUAGES
+from ..i18n import LANGUAGES, Text
 
 #: the roles a project may fill, in the note's order, and the scene kind each one takes
 ROLES: dict[str, str] = {"linkage": "mechanism", "engine": "engine", "gears": "gears",
@@ -46,7 +46,8 @@ class Project:
 def _text(table: dict[str, Any], key: str, file: str, where: str) -> str:
     value = table.get(key, "")
     if not isinstance(value, (str, int)) or isinstance(value, bool):
-        raise SceneError(f"{where}.{key} must be text (got {type(value).__name__})", file=file,
+        raise SceneError(Text("errmsg3.project.must_be_text", {
+            "where": where, "key": key, "type": type(value).__name__}), file=file,
                          key=f"{where}.{key}")
     return str(value)
 
@@ -59,40 +60,43 @@ def read_project(path: str | os.PathLike[str]) -> Project:
     data = parse_toml(read_text(Path(path)), file)
     head = data.get("project", {})
     if not isinstance(head, dict):
-        raise SceneError("[project] must be a table", file=file, key="project")
+        raise SceneError(Text("errmsg3.project.not_table"), file=file, key="project")
     unknown = sorted(set(head) - {"title", "language", "tradition", "sheet", *_PEOPLE})
     if unknown:
-        raise SceneError(f"[project] has unknown keys {', '.join(unknown)}", file=file,
+        raise SceneError(Text("errmsg3.project.unknown_keys", {"keys": unknown}), file=file,
                          key=f"project.{unknown[0]}")
     language = _text(head, "language", file, "project") or "en"
     if language not in LANGUAGES:
-        raise SceneError(f"project.language must be one of {', '.join(LANGUAGES)} "
-                         f"(got {language!r})", file=file, key="project.language")
+        raise SceneError(Text("errmsg3.project.language", {
+            "languages": list(LANGUAGES), "value": repr(language)}),
+            file=file, key="project.language")
     tradition = _text(head, "tradition", file, "project") or DEFAULT_TRADITION[language]
     if tradition not in TRADITIONS:
-        raise SceneError(f"project.tradition must be one of {', '.join(TRADITIONS)} "
-                         f"(got {tradition!r})", file=file, key="project.tradition")
+        raise SceneError(Text("errmsg3.project.tradition", {
+            "traditions": list(TRADITIONS), "value": repr(tradition)}),
+            file=file, key="project.tradition")
     raw = data.get("studies")
     if not isinstance(raw, dict) or not raw:
-        raise SceneError("[studies] must name at least one study (linkage, engine, gears, cam)",
+        raise SceneError(Text("errmsg3.project.no_studies"),
                          file=file, key="studies")
     base = Path(path).parent
     studies: dict[str, Path] = {}
     for role, rel in raw.items():
         if role not in ROLES:
-            raise SceneError(f"studies.{role} is not a role; the roles are "
-                             f"{', '.join(ROLES)}", file=file, key=f"studies.{role}")
+            raise SceneError(Text("errmsg3.project.not_role", {"role": role, "roles": list(ROLES)}),
+                             file=file, key=f"studies.{role}")
         if not isinstance(rel, str) or not rel:
-            raise SceneError(f"studies.{role} must be the path of a scene file", file=file,
+            raise SceneError(Text("errmsg3.project.path", {"role": role}), file=file,
                              key=f"studies.{role}")
         p = (base / rel)
         if not p.is_file():
-            raise SceneError(f"studies.{role} names a file that does not exist ({rel})",
+            raise SceneError(Text("errmsg3.project.missing_file", {"role": role, "path": rel}),
                              file=file, key=f"studies.{role}")
         kind = scene_kind(parse_toml(read_text(p), str(p)), str(p))
         if kind != ROLES[role]:
-            raise SceneError(f"studies.{role} must be a scene of kind {ROLES[role]!r} "
-                             f"(got {kind!r} in {rel})", file=file, key=f"studies.{role}")
+            raise SceneError(Text("errmsg3.project.wrong_kind", {
+                "role": role, "wanted": repr(ROLES[role]), "kind": repr(kind), "path": rel}),
+                file=file, key=f"studies.{role}")
         studies[role] = p
     sheet = head.get("sheet")
     order = list(ROLES)
@@ -153,6 +157,6 @@ def run_project(path: str | os.PathLike[str], out_dir: str | os.PathLike[str],
     for name, data in files.items():
         target = out / name
         if target.resolve().parent != out.resolve():
-            raise MechplanError(f"output file {name!r} would leave the output folder")
+            raise MechplanError(Text("errmsg3.project.leaves_output", {"name": repr(name)}))
         written.append(write_atomic(target, data))
     return written

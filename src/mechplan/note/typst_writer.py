@@ -6,7 +6,7 @@ from __future__ import annotations
 from importlib import resources
 
 from ..errors import DrawingError
-from ..i18n import message
+from ..i18n import Text, message
 from .layout import PAGE_H, PAGE_W, PAGES, Page
 from .model import Equation, Figure, Heading, Note, Paragraph, Steps, Table
 
@@ -151,4 +151,4 @@ def to_pdf(note: Note) -> bytes:
         return bytes(typst.compile(text.encode("utf-8"), sys_inputs=figures,  # type: ignore[misc]
                                    font_paths=[fonts], ignore_system_fonts=True))
     except RuntimeError as exc:
-        raise DrawingError(f"the note's PDF cannot be typeset ({exc})") from None
+        raise DrawingError(Text("errmsg3.typst.cannot_typeset", {"reason": str(exc)})) from None

@@ -68,7 +68,7 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
                   "layout", "cylinders", "firing_order", "throws", "banks", "grid", "table_step"))
     strokes = e.raw("strokes", 4)
     if strokes not in (2, 4):
-        raise e.error("strokes", f"must be 2 or 4 (got {strokes!r})")
+        raise e.error("strokes", Text("errmsg3.engine.strokes", {"value": repr(strokes)}))
     omega = e.quantity("speed", "angular_velocity", required=True, positive=True)
     bore = e.quantity("bore", "length", required=True, positive=True)
     R = e.quantity("crank_radius", "length", required=True, positive=True)
@@ -87,10 +87,10 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
         throws, banks = [0.0, 0.0], [0.0, bank]
     else:
         if top.has("articulated"):
-            raise top.error("articulated", 'is only for layout = "v_articulated"')
+            raise top.error("articulated", Text("errmsg3.engine.articulated_only"))
         n_cyl = e.raw("cylinders", 1)
         if not isinstance(n_cyl, int) or isinstance(n_cyl, bool) or not 1 <= n_cyl <= 24:
-            raise e.error("cylinders", f"must be a whole number from 1 to 24 (got {n_cyl!r})")
+            raise e.error("cylinders", Text("errmsg3.engine.cylinders", {"value": repr(n_cyl)}))
         throws, banks = [], []
     order = _firing_order(e, n_cyl)
     cycle = 180.0 * strokes
@@ -99,8 +99,7 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
         banks = _angles(e, "banks", n_cyl) if e.has("banks") else [0.0] * n_cyl
         if not e.has("throws"):
             if layout is Layout.V:
-                raise e.error("throws", "a V engine needs the throw of every cylinder, e.g. "
-                              'throws = ["0 deg", "0 deg"] for two cylinders on one pin')
+                raise e.error("throws", Text("errmsg3.engine.v_throws"))
             interval = cycle / n_cyl
             throws = [0.0] * n_cyl
             for k, number in enumerate(order):
@@ -111,12 +110,12 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
     _check_firing(e, cylinders, order, strokes)
     grid = e.raw("grid", 720 if strokes == 4 else 360)
     if not isinstance(grid, int) or isinstance(grid, bool) or grid < 36:
-        raise e.error("grid", f"must be a whole number of points per cycle ≥ 36 (got {grid!r})")
+        raise e.error("grid", Text("errmsg3.engine.grid", {"value": repr(grid)}))
     step = e.quantity("table_step", "angle", math.radians(15.0), positive=True)
     assert step is not None
     if abs(math.radians(cycle) / step - round(math.radians(cycle) / step)) > 1e-6:
-        raise e.error("table_step", f"must divide the cycle of {cycle:g}° (got "
-                      f"{math.degrees(step):g}°)")
+        raise e.error("table_step", Text("errmsg3.engine.table_step", {
+            "cycle": f"{cycle:g}", "step": f"{math.degrees(step):g}"}))
     cycle = None
     th = top.table("thermal")
     if th is not None:
@@ -148,19 +147,17 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
 
 def _rod_length(e: Table, R: float) -> float:
     if e.has("rod_length") and e.has("lambda"):
-        raise e.error("lambda", "give either rod_length or lambda, not both")
+        raise e.error("lambda", Text("errmsg3.engine.rod_or_lambda"))
     if e.has("lambda"):
         lam = e.quantity("lambda", "dimensionless", required=True)
         assert lam is not None
         if not 0.0 < lam < 1.0:
-            raise e.error("lambda", f"λ = R/L must be between 0 and 1 (got {lam:g}); a rod shorter "
-                          "than the crank cannot turn it")
+            raise e.error("lambda", Text("errmsg3.engine.lambda_range", {"lam": f"{lam:g}"}))
         return R / lam
     L = e.quantity("rod_length", "length", required=True, positive=True)
     assert L is not None
     if not R / L < 1.0:
-        raise e.error("rod_length", f"λ = R/L must be less than 1 (got λ = {R / L:g}); "
-                      "the rod must be longer than the crank radius")
+        raise e.error("rod_length", Text("errmsg3.engine.rod_short", {"lam": f"{R / L:g}"}))
     return L
 
 
@@ -171,24 +168,23 @@ def _rod(t: Table, L: float, prefix: str = "rod") -> RodMasses:
     centre = f"{prefix}_centre"
     J = t.quantity(f"{prefix}_J", "inertia", nonnegative=True)
     if t.has(small) and t.has(centre):
-        raise t.error(centre, f"give either {small} (the mass at the piston pin) or {centre} (the "
-                      "centre of mass's distance from the big end), not both")
+        raise t.error(centre, Text("errmsg3.engine.rod_both", {"small": small, "centre": centre}))
     if t.has(small):
         m1 = t.quantity(small, "mass", required=True, nonnegative=True)
         assert m1 is not None
         if m1 > m:
-            raise t.error(small, f"the rod's mass cannot be split: the small-end share must not "
-                          f"exceed the rod's mass {m:g} kg (got {m1:g} kg)")
+            raise t.error(small, Text("errmsg3.engine.small_end_exceeds",
+                                          {"mass": f"{m:g}", "given": f"{m1:g}"}))
         return RodMasses(m1, m - m1, J)
     if t.has(centre):
         l2 = t.quantity(centre, "length", required=True, nonnegative=True)
         assert l2 is not None
         if l2 > L:
-            raise t.error(centre, f"the rod's mass cannot be split: its centre of mass must lie "
-                          f"between the pins, 0 … {L * 1e3:g} mm from the big end "
-                          f"(got {l2 * 1e3:g} mm)")
+            raise t.error(centre, Text("errmsg3.engine.centre_outside",
+                                           {"length": f"{L * 1e3:g}", "given": f"{l2 * 1e3:g}"}))
         return RodMasses(m * l2 / L, m * (L - l2) / L, J, L - l2, l2)
-    raise t.error(small, f"the rod's mass cannot be split: give {small} or {centre}")
+    raise t.error(small, Text("errmsg3.engine.rod_split_missing",
+                                  {"small": small, "centre": centre}))
 
 
 def _masses(t: Table, L: float) -> MassSpec:
@@ -213,10 +209,11 @@ def _articulated(a: Table) -> tuple[ArticulatedSpec, float]:
     assert piston is not None
     b = math.remainder(bank, 2 * math.pi)
     if abs(b) < math.radians(10.0) or abs(b) > math.radians(170.0):
-        raise a.error("bank_angle", f"the V angle must be between 10° and 170° either way (got "
-                      f"{math.degrees(bank):g}°)")
+        raise a.error("bank_angle", Text("errmsg3.engine.bank_angle",
+                                         {"angle": f"{math.degrees(bank):g}"}))
     if not 0.0 < ang < math.pi:
-        raise a.error("lug_angle", f"must lie between 0° and 180° (got {math.degrees(ang):g}°)")
+        raise a.error("lug_angle", Text("errmsg3.engine.lug_angle",
+                                        {"angle": f"{math.degrees(ang):g}"}))
     return ArticulatedSpec(r, ang, L, piston, _rod(a, L)), b % (2 * math.pi)
 
 
@@ -225,19 +222,20 @@ def _angles(e: Table, name: str, n: int) -> list[float]:
     if raw is None:
         return [0.0] * n
     if not isinstance(raw, list) or len(raw) != n:
-        raise e.error(name, f"expected one angle per cylinder ({n}), "
-                      f"e.g. [\"0 deg\", …] (got {raw!r})")
+        raise e.error(name, Text("errmsg3.engine.angles_per_cylinder",
+                                 {"n": str(n), "value": repr(raw)}))
     return [e.value_quantity(v, f"{name}[{i}]", "angle") % (2 * math.pi) for i, v in enumerate(raw)]
 
 
 def _firing_order(e: Table, n: int) -> tuple[int, ...]:
     raw = e.raw("firing_order", list(range(1, n + 1)) if n <= 2 else None)
     if raw is None:
-        raise e.error("firing_order", f"is missing; list every cylinder 1…{n} once in firing order")
+        raise e.error("firing_order", Text("errmsg3.engine.firing_missing", {"n": str(n)}))
     if (not isinstance(raw, list)
             or not all(isinstance(v, int) and not isinstance(v, bool) for v in raw)
             or sorted(raw) != list(range(1, n + 1))):
-        raise e.error("firing_order", f"must list every cylinder 1…{n} exactly once (got {raw!r})")
+        raise e.error("firing_order", Text("errmsg3.engine.firing_every",
+                                                 {"n": str(n), "value": repr(raw)}))
     return tuple(raw)
 
 
@@ -268,8 +266,10 @@ def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str],
             return float(q.to(target).magnitude)
         except Exception:  # noqa: BLE001 - pint raises many kinds
             # a data file's content is never echoed: it may be any file the scene names
-            got = "" if from_file else f" (got {value!r})"
-            raise t.error(where, f"expected a number in {unit}{got}") from None
+            if from_file:
+                raise t.error(where, Text("errmsg3.engine.number_in", {"unit": unit})) from None
+            raise t.error(where, Text("errmsg3.engine.number_in_got",
+                                      {"unit": unit, "value": repr(value)})) from None
 
     targets = tuple("m**3" if d == "volume" else ("rad" if d == "angle" else "Pa") for d in dims)
     if from_file:
@@ -281,20 +281,19 @@ def _rows(t: Table, units: tuple[str, str], dims: tuple[str, str],
         raw = t.raw("table", required=True)
         where = "table"
         if not isinstance(raw, list):
-            raise t.error("table", "expected rows [x, p]")
+            raise t.error("table", Text("errmsg3.engine.rows_expected"))
     rows = []
     for j, row in enumerate(raw):
         if not isinstance(row, list) or len(row) < 2:
-            got = "" if from_file else f" (got {row!r})"
-            raise t.error(f"{where}[{j}]", f"expected a row [x, p]{got}")
+            raise t.error(f"{where}[{j}]", Text("errmsg3.engine.row_expected") if from_file
+                          else Text("errmsg3.engine.row_expected_got", {"value": repr(row)}))
         rows.append((conv(row[0], units[0], targets[0], f"{where}[{j}]"),
                      conv(row[1], units[1], targets[1], f"{where}[{j}]")))
     if len(rows) < 5:
-        raise t.error(where, f"expected at least 5 rows around the cycle (got {len(rows)})")
+        raise t.error(where, Text("errmsg3.engine.few_rows", {"count": str(len(rows))}))
     bad = [r for r in rows if r[1] < 0.0]
     if bad:
-        raise t.error(where, f"absolute pressures must not be below vacuum (got {bad[0][1]:g} Pa); "
-                      "give absolute, not gauge, pressures")
+        raise t.error(where, Text("errmsg3.engine.below_vacuum", {"pressure": f"{bad[0][1]:g}"}))
     return rows
 
 
@@ -313,7 +312,7 @@ def _data_rows(t: Table, file: str, data_dir: str | Path | None) -> list[list[st
         return [r for r in csv.reader(io.StringIO(text, newline=""))
                 if r and not r[0].lstrip().startswith("#")]
     except csv.Error as exc:
-        raise t.error("file", f"the data file is not a readable CSV table ({exc})") from None
+        raise t.error("file", Text("errmsg3.engine.csv_unreadable", {"reason": str(exc)})) from None
 
 
 def _numeric(s: str) -> bool:
@@ -333,64 +332,63 @@ def _indicator(t: Table, strokes: int, file: str,
         units = t.raw("units", ["cm^3" if kind is IndicatorKind.VOLUME else "deg", "MPa"])
         if (not isinstance(units, list) or len(units) != 2
                 or not all(isinstance(u, str) for u in units)):
-            raise t.error("units", 'expected two unit names, e.g. ["cm^3", "MPa"]')
+            raise t.error("units", Text("errmsg3.engine.units_two"))
         dims = ("volume" if kind is IndicatorKind.VOLUME else "angle", "pressure")
         rows = _rows(t, (units[0], units[1]), dims, file, data_dir)
         eps = t.quantity("epsilon", "dimensionless")
         if kind is IndicatorKind.CRANK_ANGLE and eps is None:
-            raise t.error("epsilon", "a p(φ) table needs the compression ratio for the p–V diagram")
+            raise t.error("epsilon", Text("errmsg3.engine.epsilon_needed"))
         if eps is not None and not eps > 1.0:
-            raise t.error("epsilon", f"the compression ratio must exceed 1 (got {eps:g})")
+            raise t.error("epsilon", Text("errmsg3.engine.epsilon_range", {"eps": f"{eps:g}"}))
         return IndicatorSpec(kind, rows=tuple(rows), epsilon=eps)
     t.check_keys(("source", "epsilon", "p_a", "p_r", "n1", "n2", "p_z", "rho", "ignition_advance",
                   "peak_angle", "peak_fraction", "tdc_fraction", "exhaust_opening", "rounding"))
     eps = t.quantity("epsilon", "dimensionless", required=True)
     assert eps is not None
     if not eps > 1.0:
-        raise t.error("epsilon", f"the compression ratio must exceed 1 (got {eps:g})")
+        raise t.error("epsilon", Text("errmsg3.engine.epsilon_range", {"eps": f"{eps:g}"}))
     vals = {}
     for name in ("p_a", "p_r", "p_z"):
         v = t.quantity(name, "pressure", required=True)
         assert v is not None
         if not v > 0.0:
-            raise t.error(name, f"an absolute pressure must be above vacuum (got {t.raw(name)!r}); "
-                          "give absolute, not gauge, pressures")
+            raise t.error(name, Text("errmsg3.engine.pressure_vacuum",
+                                     {"value": repr(t.raw(name))}))
         vals[name] = v
     n1 = t.quantity("n1", "dimensionless", required=True, positive=True)
     n2 = t.quantity("n2", "dimensionless", required=True, positive=True)
     rho = t.quantity("rho", "dimensionless", 1.0)
     assert n1 is not None and n2 is not None and rho is not None
     if not 1.0 <= rho < eps:
-        raise t.error("rho", f"the pre-expansion ratio must lie in [1, ε) (got {rho:g})")
+        raise t.error("rho", Text("errmsg3.engine.rho_range", {"rho": f"{rho:g}"}))
     p_c = vals["p_a"] * eps ** n1
     if vals["p_z"] < p_c:
-        raise t.error("p_z", f"the peak pressure must not be below the end of compression p_c = "
-                      f"p_a·ε^n1 = {p_c / 1e6:.3f} MPa (got {vals['p_z'] / 1e6:g} MPa)")
+        raise t.error("p_z", Text("errmsg3.engine.p_z_low", {
+            "p_c": f"{p_c / 1e6:.3f}", "p_z": f"{vals['p_z'] / 1e6:g}"}))
     rounding = t.raw("rounding", True)
     if not isinstance(rounding, bool):
-        raise t.error("rounding", f"expected true or false (got {rounding!r})")
+        raise t.error("rounding", Text("errmsg3.engine.rounding_bool", {"value": repr(rounding)}))
 
     def angle(name: str, default: float, hi: float) -> float:
         v = t.quantity(name, "angle", math.radians(default))
         assert v is not None
         if not 0.0 < v < math.radians(hi):
-            raise t.error(name, f"must lie between 0° and {hi:g}° (got {math.degrees(v):g}°)")
+            raise t.error(name, Text("errmsg3.engine.angle_range", {
+                "hi": f"{hi:g}", "angle": f"{math.degrees(v):g}"}))
         return v
 
     frac = t.quantity("peak_fraction", "dimensionless", 0.85, positive=True)
     tdc = t.quantity("tdc_fraction", "dimensionless", 1.2, positive=True)
     assert frac is not None and tdc is not None
     if frac > 1.0:
-        raise t.error("peak_fraction", f"must not exceed 1 (got {frac:g})")
+        raise t.error("peak_fraction", Text("errmsg3.engine.peak_fraction", {"value": f"{frac:g}"}))
     peak = angle("peak_angle", 12.0, 40.0)
     thermal = ThermalSpec(eps, vals["p_a"], vals["p_r"], n1, n2, vals["p_z"], rho,
                           angle("ignition_advance", 15.0, 60.0), peak, frac, tdc,
                           angle("exhaust_opening", 50.0, 90.0), rounding)
     if rounding and tdc * p_c > frac * vals["p_z"]:
-        raise t.error("tdc_fraction", "the pressure at TDC tdc_fraction·p_c = "
-                      f"{tdc * p_c / 1e6:.3f} MPa must not exceed the real peak "
-                      "peak_fraction·p_z = "
-                      f"{frac * vals['p_z'] / 1e6:.3f} MPa")
+        raise t.error("tdc_fraction", Text("errmsg3.engine.tdc_fraction", {
+            "tdc": f"{tdc * p_c / 1e6:.3f}", "peak": f"{frac * vals['p_z'] / 1e6:.3f}"}))
     return IndicatorSpec(IndicatorKind.THERMAL, thermal=thermal, epsilon=eps)
 
 
@@ -438,5 +436,5 @@ E = "+"
     try:
         return parse_scene(text, file)
     except SceneError as exc:
-        raise SceneError(f"the master/articulated linkage cannot be built: {exc.detail}", file=file,
-                         key="articulated") from None
+        raise SceneError(Text("errmsg3.engine.articulated_build", {"reason": exc.detail}),
+                         file=file, key="articulated") from None
