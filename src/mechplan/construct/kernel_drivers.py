@@ -59,19 +59,11 @@ def _slide_vector(g: ScalarGen, s: Step, n: str) -> None:
 
 
 def _circle_circle_driven(g: ScalarGen, s: Step, n: str) -> str:
-    (ax, ay), (bx, by) = g.pt(s.input("centre1")), g.pt(s.input("centre2"))
-    r1, r2, sigma = _lit(s.param("r1")), g.name(s.input("radius2")), _lit(s.param("sigma"))
-    g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", "_d = _hyp(_dx, _dy)",
-           f"_gap = max(_d - ({r1} + {r2}), abs({r1} - {r2}) - _d)",
-           f"_a = _div({r1} * {r1} - {r2} * {r2} + _d * _d, 2.0 * _d)",
-           f"_h2 = _div((({r1} + {r2}) ** 2 - _d * _d) * (_d * _d - ({r1} - {r2}) ** 2), "
-           "4.0 * _d * _d)",
-           "_h = _height(_h2, _gap)",
-           "_ux = _div(_dx, _d)", "_uy = _div(_dy, _d)", f"_sh = {sigma} * _h",
-           f"{n}x = {ax} + _a * _ux - _sh * _uy", f"{n}y = {ay} + _a * _uy + _sh * _ux",
-           f"sn{n} = abs(_div(_h * _d, {r1} * {r2}))", f"sn{n} = sn{n} * sn{n}",
-           f"bad_i = bad_i | (not (_gap <= 0.0)) | (sn{n} < MIN_SINE)")
-    return f"sn{n}"
+    from .kernel_scalar import circle_meet
+
+    # the second radius is the driven length, a step of its own; its sine is squared
+    return circle_meet(g, s, n, _lit(s.param("r1")), g.name(s.input("radius2")),
+                       sine_squared=True)
 
 
 #: the linear drivers' scalar forms (merged into ``kernel_scalar.SCALAR_FORMS``)

@@ -176,8 +176,16 @@ def _angle_plus(g: ScalarGen, s: Step, n: str) -> None:
 
 
 def _circle_circle(g: ScalarGen, s: Step, n: str) -> str:
+    return circle_meet(g, s, n, literal(s.param("r1")), literal(s.param("r2")))
+
+
+def circle_meet(g: ScalarGen, s: Step, n: str, r1: str, r2: str,
+                sine_squared: bool = False) -> str:
+    """Two compass arcs about ``centre1``, ``centre2`` of radii ``r1``, ``r2`` (source
+    expressions) meeting at point ``n`` on the step's side; its sine (squared when one radius is
+    driven: the conditioning of a driven length, docs/drivers.md)."""
     (ax, ay), (bx, by) = g.pt(s.input("centre1")), g.pt(s.input("centre2"))
-    r1, r2, sigma = literal(s.param("r1")), literal(s.param("r2")), literal(s.param("sigma"))
+    sigma = literal(s.param("sigma"))
     g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", "_d = _hyp(_dx, _dy)",
            f"_gap = max(_d - ({r1} + {r2}), abs({r1} - {r2}) - _d)",
            f"_a = _div({r1} * {r1} - {r2} * {r2} + _d * _d, 2.0 * _d)",
@@ -187,6 +195,7 @@ def _circle_circle(g: ScalarGen, s: Step, n: str) -> str:
            "_ux = _div(_dx, _d)", "_uy = _div(_dy, _d)", f"_sh = {sigma} * _h",
            f"{n}x = {ax} + _a * _ux - _sh * _uy", f"{n}y = {ay} + _a * _uy + _sh * _ux",
            f"sn{n} = abs(_div(_h * _d, {r1} * {r2}))",
+           *([f"sn{n} = sn{n} * sn{n}"] if sine_squared else []),
            f"bad_i = bad_i | (not (_gap <= 0.0)) | (sn{n} < MIN_SINE)")
     return f"sn{n}"
 

@@ -125,6 +125,9 @@ def _read_member(zf: zipfile.ZipFile, info: zipfile.ZipInfo, entry: str, archive
     try:
         with zf.open(info) as fh:
             body = fh.read(info.file_size + 1)
+    # zipfile's own failures on a damaged or hostile member: BadZipFile (bad CRC, header),
+    # RuntimeError (encrypted), NotImplementedError (a compression method it cannot read),
+    # EOFError/ValueError/OSError (truncated data)
     except (zipfile.BadZipFile, OSError, ValueError, RuntimeError, NotImplementedError,
             EOFError) as exc:
         raise ArchiveError(say("bad_member", entry=entry, reason=str(exc)[:160]),

@@ -389,17 +389,11 @@ def _driving_link(st: State, second: bool = False) -> str:
     return mb
 
 
-def _lever(st: State, second: str | None = None) -> None:
-    """Zhukovsky's lever: every load at its velocity image turned by 90°, moments about p.
-
-    With a second crank (W = 2) its balancing moment ``second`` (from its own polygon) is one
-    more couple on the lever: the lever then gives the first crank's M_b.
-    """
+def lever_loads(st: State) -> tuple[list[str], str, list[str]]:
+    """Every applied load as Zhukovsky's lever takes it: its step inputs (a force with the
+    velocity image of its point, a couple with its link's ω), their layout ("F"/"M") and labels."""
     b = st.b
-    drive = b.mech.drive
-    omega1 = b.bodies[drive.link].omega
-    assert omega1 is not None
-    inputs: list[str] = [omega1]
+    inputs: list[str] = []
     layout, labels = "", []
     for link, t in st.applied:
         if t.force is not None:
@@ -412,6 +406,21 @@ def _lever(st: State, second: str | None = None) -> None:
             inputs += [t.couple, omega]
             layout += "M"
             labels.append(t.label)
+    return inputs, layout, labels
+
+
+def _lever(st: State, second: str | None = None) -> None:
+    """Zhukovsky's lever: every load at its velocity image turned by 90°, moments about p.
+
+    With a second crank (W = 2) its balancing moment ``second`` (from its own polygon) is one
+    more couple on the lever: the lever then gives the first crank's M_b.
+    """
+    b = st.b
+    drive = b.mech.drive
+    omega1 = b.bodies[drive.link].omega
+    assert omega1 is not None
+    loads, layout, labels = lever_loads(st)
+    inputs: list[str] = [omega1, *loads]
     drive2 = b.mech.drive2
     if second is not None and drive2 is not None:
         omega2 = b.bodies[drive2.link].omega

@@ -110,19 +110,8 @@ def slider_driver(st: State) -> None:
 def lever(st: State) -> None:
     """Zhukovsky's lever for a linear driver: F_d = −ΣP / q̇ (the loads at their images)."""
     b = st.b
-    inputs: list[str] = ["vel.rate"]
-    layout, labels = "", []
-    for link, t in st.applied:
-        if t.force is not None:
-            inputs += [b.vel[t.where], t.force]
-            layout += "F"
-            labels.append(t.label)
-        if t.couple is not None:
-            omega = b.bodies[link].omega
-            assert omega is not None
-            inputs += [t.couple, omega]
-            layout += "M"
-            labels.append(t.label)
+    loads, layout, labels = fp.lever_loads(st)
+    inputs: list[str] = ["vel.rate", *loads]
     sid = st.add("force.F_d.zhukovsky", Op.ZHUKOVSKY, tuple(inputs), Kind.SCALAR, Role.RESULT,
                  "F_d", "lever", subject=tuple(labels), layout=layout)
     b.result("F_d_zhukovsky", sid)
