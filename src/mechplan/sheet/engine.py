@@ -130,11 +130,14 @@ def indicator_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     m, spec = study.model, study.scene.engine
     V, p = m.diagram.loop()
     cm3 = 1e6
+    # without ε the clearance volume is unknown: draw against the swept volume V − V_c
+    origin = 0.0 if m.diagram.V_c_given else m.diagram.V_c
+    v_name = "V" if m.diagram.V_c_given else message("layouts.axis.swept", lang)
     dia = diagram_panel("indicator", message("engine.diagram.indicator", lang),
-                        [Curve(V * cm3, p * 1e-6, closed=True)],
-                        Axis("V", "cm³", 150.0 * scale), Axis("p", "MPa", 130.0 * scale), lang)
+                        [Curve((V - origin) * cm3, p * 1e-6, closed=True)],
+                        Axis(v_name, "cm³", 150.0 * scale), Axis("p", "MPa", 130.0 * scale), lang)
     prims = dia.panel.primitives
-    Vc, Vh = m.diagram.V_c * cm3, m.diagram.V_h * cm3
+    Vc, Vh = (m.diagram.V_c - origin) * cm3, m.diagram.V_h * cm3
     r_mm = Vh / 2.0 / dia.mu_x
     cx = (Vc + Vh / 2.0) / dia.mu_x
     cy = -16.0 - r_mm

@@ -61,9 +61,11 @@ def exact_accelerations(model: EngineModel, phi: Array) -> dict[int, Array]:
     """Exact piston accelerations d²x/dt² (x towards the crankshaft) at engine crank angles φ."""
     out = {}
     for c in model.spec.cylinders:
-        if model.pair is not None and c.number == 2:
-            st = model.pair.state(phi)
-            out[2] = -(st.a_E @ model.pair.u_E)
+        art = model.articulated.get(c.number)
+        if art is not None:
+            assert model.group is not None
+            st = model.group.state(phi - art.offset)
+            out[c.number] = -(st.a_E[art.slot] @ model.group.slaves[art.slot].u)
         else:
             out[c.number] = model.kin.a(np.mod(phi - model.phases[c.number], 2.0 * math.pi),
                                         model.omega)
