@@ -8,6 +8,7 @@ angle (sin β = λ sin φ), positive on the side the crank pin moves to from TDC
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
+from typing import Any
 
 import numpy as np
 
@@ -94,5 +95,6 @@ def slider_forces(kin: SliderCrank, omega: float, diagram: IndicatorDiagram, phi
 
 def rows_of(forces: CylinderForces, i: int) -> CylinderForces:
     """Row i of forces computed for several cylinders at once."""
-    return CylinderForces(*(None if getattr(forces, f.name) is None else getattr(forces, f.name)[i]
-                            for f in fields(forces)))
+    values: list[Any] = [None if getattr(forces, f.name) is None else getattr(forces, f.name)[i]
+                         for f in fields(forces)]
+    return CylinderForces(*values)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -12,17 +13,20 @@ from ...scene.spec import Scene
 from ..indicator import IndicatorDiagram, angle_table_diagram, thermal_diagram, volume_table_diagram
 from .articulated import ArticulatedGroup
 from .cylinder import CylinderForces, slider_forces
-from .kinematics import SliderCrank
+from .kinematics import CrankEnd, SliderCrank
 
 Array = np.ndarray
 TURN = 2.0 * math.pi
 
 
 def diagram_of(spec: EngineSpec, file: str, ind: IndicatorSpec | None = None,
-               F: float | None = None, key: str = "indicator.table") -> IndicatorDiagram:
-    """The indicator diagram the scene describes (``ind``/``F``: another face's diagram and gas
-    area, e.g. the crank end of a double-acting cylinder)."""
-    kin = SliderCrank(spec.R, spec.L)
+               F: float | None = None, key: str = "indicator.table",
+               crank_end: bool = False) -> IndicatorDiagram:
+    """The indicator diagram the scene describes (``ind``/``F``/``crank_end``: another face's
+    diagram, gas area and kinematics, e.g. the crank end of a double-acting cylinder)."""
+    kin: Any = SliderCrank(spec.R, spec.L)
+    if crank_end:
+        kin = CrankEnd(kin)
     ind = ind or spec.indicator
     F = spec.F_p if F is None else F
     if ind.kind is IndicatorKind.THERMAL:
@@ -39,8 +43,9 @@ def rod_side_diagram(spec: EngineSpec, file: str) -> IndicatorDiagram | None:
     if rs is None:
         return None
     if rs.indicator is None:
-        return diagram_of(spec, file, spec.indicator, spec.F_rod_side)
-    return diagram_of(spec, file, rs.indicator, spec.F_rod_side, "rod_side.indicator.table")
+        return diagram_of(spec, file, spec.indicator, spec.F_rod_side, crank_end=True)
+    return diagram_of(spec, file, rs.indicator, spec.F_rod_side, "rod_side.indicator.table",
+                      crank_end=True)
 
 
 @dataclass(frozen=True)
