@@ -425,3 +425,36 @@ def test_torque_extremes_against_a_dense_evaluation(which):
     assert ex.M_min <= st.dense.M_total.min() + 1e-12 * scale
     doc = st.to_json()["torque"]
     assert doc["max"] == ex.M_max and doc["phi_max_deg"] == pytest.approx(math.degrees(ex.phi_max))
+
+
+# -- side-by-side rods: their planes' axial offset ---------------------------------------------
+def test_side_by_side_rods_axial_offset_makes_a_couple():
+    from helpers import moto
+
+    text = moto(engine_extra='layout = "v"\ncylinders = 2\nthrows = ["0 deg", "0 deg"]\n'
+                             'banks = ["0 deg", "90 deg"]\nfiring_order = [1, 2]') + (
+        '[balance]\nthrow_spacing = "80 mm"\nrod_offset = "24 mm"\n')
+    st = solve_engine_text(text, "v2.toml")
+    b = st.balance
+    m = st.model
+    R_, L_, w = 0.0235, 0.106, 8500 * math.pi / 30
+    N = 720
+    phi = np.arange(N) * 2 * math.pi / N
+    moment = np.zeros((N, 2))
+    for number, bank, arm in ((1, 0.0, -0.012), (2, math.pi / 2, 0.012)):
+        t = phi - m.phases[number]
+        beta = np.arcsin(R_ / L_ * np.sin(t))
+        a = R_ * w * w * (np.cos(t + beta) / np.cos(beta)
+                          + R_ / L_ * np.cos(t) ** 2 / np.cos(beta) ** 3)
+        moment += np.outer(m.m_j[number] * a * arm, [math.cos(bank), math.sin(bank)])
+    for k in (1, 2):
+        e = np.exp(-1j * k * phi)
+        C = 2.0 / N * np.array([np.sum(moment[:, 0] * e), np.sum(moment[:, 1] * e)])
+        assert np.allclose(b.orders[k].M, C, rtol=0, atol=1e-9 * np.abs(C).max())
+    # both rods' rotating masses turn with the one crank at ∓offset/2: no rotating couple
+    assert extremes(b.rotating_M)[0] < 1e-9 * extremes(b.rotating_F)[0]
+    with pytest.raises(SceneError, match=r"balance\.rod_offset"):
+        solve_engine_text(text.replace('throw_spacing = "80 mm"\n', ""), "v2.toml")
+    with pytest.raises(SceneError, match=r"balance\.rod_offset"):
+        solve_engine_text(RADIAL.format(n=5, engine_extra="", art_extra="")
+                          + 'throw_spacing = "80 mm"\nrod_offset = "20 mm"\n', "r.toml")

@@ -152,6 +152,9 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
     n_pins = (1 if layout is Layout.RADIAL else
               (n_cyl + 1) // 2 if layout in (Layout.V, Layout.ARTICULATED) else n_cyl)
     balance = parse_balance(bal, n_pins) if bal is not None else None
+    if balance is not None and balance.rod_offset and layout is not Layout.V:
+        assert bal is not None
+        raise bal.error("rod_offset", Text("layouts.error.rod_offset_layout"))
     return EngineScene(spec, _drawing(top, 1), file, linkage, balance, cycle)
 
 
