@@ -458,3 +458,58 @@ def test_side_by_side_rods_axial_offset_makes_a_couple():
     with pytest.raises(SceneError, match=r"balance\.rod_offset"):
         solve_engine_text(RADIAL.format(n=5, engine_extra="", art_extra="")
                           + 'throw_spacing = "80 mm"\nrod_offset = "20 mm"\n', "r.toml")
+
+
+def test_side_by_side_rods_equal_the_linkage_solver():
+    """A 60° V pin with two rods side by side, built as a mechanism (crank, two rods on one pin B,
+    two pistons) and solved by mechplan's construction: the closed forms of the `v` layout are
+    its exact kinematics."""
+    from helpers import moto
+
+    from mechplan.construct.builder import build_construction
+    from mechplan.model.structure import analyse
+    from mechplan.scene.loader import parse_scene
+
+    st = solve_engine_text(moto(engine_extra='layout = "v"\ncylinders = 2\n'
+                                             'throws = ["0 deg", "0 deg"]\n'
+                                             'banks = ["0 deg", "60 deg"]\nfiring_order = [1, 2]'),
+                           "v.toml")
+    text = """
+[ground]
+A = ["0 mm", "0 mm"]
+guides.Ax = { through = "A", angle = "0 deg" }
+guides.Ay = { through = "A", angle = "60 deg" }
+[links.1]
+lengths = { AB = "23.5 mm" }
+[links.2]
+lengths = { BC = "106 mm" }
+[links.3]
+slides = { point = "C", on = "Ax" }
+[links.4]
+lengths = { BE = "106 mm" }
+[links.5]
+slides = { point = "E", on = "Ay" }
+[drive]
+link = "1"
+speed = "8500 rpm"
+sense = "ccw"
+from = "Ax"
+[assembly]
+C = "+"
+E = "+"
+"""
+    scene = parse_scene(text, "pair.toml")
+    c = build_construction(scene.mechanism, analyse(scene.mechanism),
+                           ("position", "velocity", "acceleration"), scene.assembly_phi,
+                           scene.path, None)
+    phi = np.radians(np.arange(0.0, 720.0, 11.0) + 0.3)
+    ev = c.evaluate(np.mod(phi, 2 * math.pi))
+    for number, point, bank in ((1, "C", 0.0), (2, "E", math.pi / 3)):
+        u = np.array([math.cos(bank), math.sin(bank)])
+        f = st.model.cylinder(number, phi)
+        s = ev[c.position(point)] @ u
+        assert np.allclose(f.x, 0.0235 + 0.106 - s, rtol=0, atol=1e-13)
+        assert np.allclose(f.v, -(ev[c.velocity_image(point)] @ u), rtol=0,
+                           atol=1e-12 * np.abs(f.v).max())
+        assert np.allclose(f.a, -(ev[c.acceleration_image(point)] @ u), rtol=0,
+                           atol=1e-12 * np.abs(f.a).max())
