@@ -11,7 +11,7 @@ import numpy as np
 from ...model.engine import EngineSpec, IndicatorKind, IndicatorSpec, Layout, firing_phases
 from ...scene.spec import Scene
 from ..indicator import IndicatorDiagram, angle_table_diagram, thermal_diagram, volume_table_diagram
-from .articulated import ArticulatedGroup
+from .articulated import ArticulatedGroup, GroupState
 from .cylinder import CylinderForces, slider_forces
 from .kinematics import CrankEnd, SliderCrank
 
@@ -76,6 +76,7 @@ class EngineModel:
     articulated: dict[int, ArticulatedCylinder] = field(default_factory=dict)
     rod_diagram: IndicatorDiagram | None = None   # crank end of a double-acting cylinder
     extras: dict[str, float] = field(default_factory=dict)
+    last_state: tuple[bytes, GroupState] | None = field(default=None, repr=False)
 
     @classmethod
     def build(cls, spec: EngineSpec, file: str, linkage: Scene | None = None) -> EngineModel:
@@ -175,7 +176,7 @@ class EngineModel:
         art = self.articulated[number]
         sl = group.slaves[art.slot]
         spec, w = self.spec, self.omega
-        st = group.state(phi - art.offset)
+        st = self.group_state(phi - art.offset)
         u = sl.u
         E, D = st.E[art.slot], st.D[art.slot]
         x = sl.s_tdc - E @ u
@@ -196,6 +197,19 @@ class EngineModel:
         return CylinderForces(psi, x, v, a, self.kin.a_series(psi, w), beta, p, p_brix, Pk, Pj,
                               -m * self.kin.a_series(psi, w), P, P * np.tan(beta), P / np.cos(beta),
                               M / spec.R, nan, M, Pj * v / w)
+
+    def group_state(self, theta: Array) -> GroupState:
+        """The linkage at its crank angles θ; the last evaluation is kept (the articulated
+        cylinders of one pin ask for the same angles in turn)."""
+        assert self.group is not None
+        theta = np.asarray(theta, float)
+        key = theta.tobytes()
+        cached = self.last_state
+        if cached is not None and cached[0] == key:
+            return cached[1]
+        st = self.group.state(theta)
+        self.last_state = (key, st)
+        return st
 
     def group_pin_force(self, pin: int, phi: Array,
                         P: dict[int, Array]) -> tuple[Array, Array]:
