@@ -513,3 +513,19 @@ E = "+"
                            atol=1e-12 * np.abs(f.v).max())
         assert np.allclose(f.a, -(ev[c.acceleration_image(point)] @ u), rtol=0,
                            atol=1e-12 * np.abs(f.a).max())
+
+
+def test_double_acting_table_and_csv_carry_the_crank_end_pressure():
+    import csv
+    import io
+
+    st = steam('[rod_side]\nrod_diameter = "50 mm"\n')
+    rows = list(csv.DictReader(io.StringIO(st.to_csv())))
+    doc = st.to_json()
+    for r, a in zip(rows, doc["angles"]):
+        assert float(r["p_rod_MPa_1"]) * 1e6 == pytest.approx(a["cylinders"]["1"]["p_rod"],
+                                                             rel=1e-8)
+    from mechplan.sheet.engine import table_cells
+    cells = table_cells(st.table, "en")
+    assert cells[0][2] == "p_rod, MPa" and len(cells[1]) == len(cells[0])
+    assert "p_rod, MPa" in st.report("en")

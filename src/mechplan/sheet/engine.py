@@ -22,6 +22,7 @@ from ..drafting.primitives import (
 )
 from ..dynamics.engine.analysis import Checks, EngineResult
 from ..dynamics.engine.balance import Balance
+from ..dynamics.engine.cylinder import CylinderForces
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene
@@ -59,6 +60,13 @@ COLUMNS = (("p", "p_MPa", 1e-6), ("Pk", "Pk_kN", 1e-3), ("Pj", "Pj_kN", 1e-3), (
            ("T", "T_kN", 1e-3), ("Z", "Z_kN", 1e-3), ("M", "M_Nm", 1.0))
 
 
+def columns_of(f: CylinderForces) -> tuple[tuple[str, str, float], ...]:
+    """The table's columns for one cylinder: with p_rod after p for a double-acting one."""
+    if f.p_rod is None:
+        return COLUMNS
+    return (COLUMNS[0], ("p_rod", "p_rod_MPa", 1e-6), *COLUMNS[1:])
+
+
 def table_cells(t: EngineResult, language: str, number_of: int = 1) -> list[list[str]]:
     """Heading and rows of the per-angle table of one cylinder, with ΣM and the |Q| of the crank
     pin that cylinder's rod turns (named in the heading when the engine has several pins)."""
@@ -69,12 +77,15 @@ def table_cells(t: EngineResult, language: str, number_of: int = 1) -> list[list
     head = [message("engine.col.phi", language)] + [
         message(f"engine.col.{a}", language) for a, _, _ in COLUMNS] + [
         message("engine.col.M_total", language), q_head]
-    digits = {"p": 3, "beta": 2, "M": 2}
+    digits = {"p": 3, "p_rod": 3, "beta": 2, "M": 2}
+    columns = columns_of(f)
+    if f.p_rod is not None:                     # a double-acting cylinder: the crank end's p
+        head.insert(2, message("layouts.col.p_rod", language))
     rows = [head]
     Q = t.pins[pin].Q
     for k, phi in enumerate(t.phi):
         row = [number(math.degrees(phi), 0, language)]
-        for a, _, scale in COLUMNS:
+        for a, _, scale in columns:
             v = float(getattr(f, a)[k]) * scale
             row.append("—" if not math.isfinite(v) else number(v, digits.get(a, 3), language))
         row += [number(float(t.M_total[k]), 2, language), number(float(Q[k]) * 1e-3, 3, language)]

@@ -27,7 +27,7 @@ from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number, scientific
 from ..model.engine_balance import BalanceSpec
 from ..scene.engine import EngineScene, parse_engine_scene
-from ..sheet.engine import COLUMNS, table_cells
+from ..sheet.engine import columns_of, table_cells
 from .answers import Keys, Own, Written, span, written_all
 from .engine_balance import balance_json, report_lines
 from .engine_layout import (
@@ -247,8 +247,8 @@ class EngineStudy:
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")
         head = ["phi_deg"]
-        for c in r.cylinders:
-            head += [f"{name}_{c}" for _, name, _ in COLUMNS]
+        for c, f in r.cylinders.items():
+            head += [f"{name}_{c}" for _, name, _ in columns_of(f)]
         head += ["M_total_Nm"]
         for p in r.pins:
             head += [f"Q_T_kN_pin{p}", f"Q_Z_kN_pin{p}", f"Q_kN_pin{p}"]
@@ -256,7 +256,7 @@ class EngineStudy:
         for k, phi in enumerate(r.phi):
             row = [f"{math.degrees(float(phi)):.6g}"]
             for f in r.cylinders.values():
-                row += [_g(float(getattr(f, a)[k]) * s) for a, _, s in COLUMNS]
+                row += [_g(float(getattr(f, a)[k]) * s) for a, _, s in columns_of(f)]
             row.append(_g(float(r.M_total[k])))
             for q in r.pins.values():
                 row += [_g(float(q.Q_T[k]) * 1e-3), _g(float(q.Q_Z[k]) * 1e-3),
