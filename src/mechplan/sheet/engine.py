@@ -144,8 +144,13 @@ def indicator_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     # without ε the clearance volume is unknown: draw against the swept volume V − V_c
     origin = 0.0 if m.diagram.V_c_given else m.diagram.V_c
     v_name = "V" if m.diagram.V_c_given else message("layouts.axis.swept", lang)
-    dia = diagram_panel("indicator", message("engine.diagram.indicator", lang),
-                        [Curve((V - origin) * cm3, p * 1e-6, closed=True)],
+    curves = [Curve((V - origin) * cm3, p * 1e-6, closed=True)]
+    f1 = study.dense.cylinders[1]
+    if f1.p_rod is not None:
+        # the crank end's card over the same piston travel (both ends on one base, as indicated)
+        curves.append(Curve((m.diagram.V_c - origin + spec.F_p * f1.x) * cm3, f1.p_rod * 1e-6,
+                            Role.DASHED, "p_rod", closed=True))
+    dia = diagram_panel("indicator", message("engine.diagram.indicator", lang), curves,
                         Axis(v_name, "cm³", 150.0 * scale), Axis("p", "MPa", 130.0 * scale), lang)
     prims = dia.panel.primitives
     Vc, Vh = (m.diagram.V_c - origin) * cm3, m.diagram.V_h * cm3

@@ -118,8 +118,8 @@ class EngineStudy:
         else:
             lines.append(message("layouts.report.volumes_no_eps", lang, F_p=n(spec.F_p * 1e4, 3),
                                  V_h=n(spec.V_h * 1e6, 2), p0=n(spec.p0 * 1e-3, 1)))
-        lines += layout_lines(m, lang)
         lines.append(message("engine.report.layout." + spec.layout.value, lang))
+        lines += layout_lines(m, lang)
         lines.append(message("engine.report.firing", lang,
                              order="–".join(str(k) for k in spec.firing_order)))
         for c in spec.cylinders:
