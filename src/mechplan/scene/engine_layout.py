@@ -10,6 +10,8 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
+
 from ..errors import SceneError
 from ..i18n import Text
 from ..model.engine import ArticulatedRod, ArticulatedSpec, EngineSpec, Layout, RodSideSpec
@@ -95,6 +97,8 @@ def group_linkage(spec: EngineSpec, file: str) -> Scene:
     first = spec.rods[0].master
     rods = [r for r in spec.rods if r.master == first]
     bank = {c.number: c.bank for c in spec.cylinders}
+    for r in rods:
+        _check_reach(spec, r, math.remainder(bank[r.number] - bank[first], TURN), file)
     mm = 1e3
 
     def q(x: float, unit: str = "mm") -> str:
@@ -140,6 +144,27 @@ C = "+"
     except SceneError as exc:
         raise SceneError(Text("errmsg3.engine.articulated_build", {"reason": exc.detail}),
                          file=file, key="articulated") from None
+
+
+def _check_reach(spec: EngineSpec, rod: ArticulatedRod, bank: float, file: str) -> None:
+    """Refuse an articulated rod that cannot reach its cylinder's axis (on the cylinder's side of
+    the crank axis) at some crank angle: the closed-form master rod over a turn."""
+    theta = np.linspace(0.0, TURN, 3601)
+    Bx, By = spec.R * np.cos(theta), spec.R * np.sin(theta)
+    Cx = Bx + np.sqrt(spec.L ** 2 - By ** 2)
+    alpha = np.arctan2(-By, Cx - Bx)
+    r, length = rod.spec.lug_radius, rod.spec.rod_length
+    Dx, Dy = Bx + r * np.cos(alpha + rod.lug), By + r * np.sin(alpha + rod.lug)
+    ux, uy = math.cos(bank), math.sin(bank)
+    across = np.abs(Dx * uy - Dy * ux)
+    along = Dx * ux + Dy * uy + np.sqrt(np.clip(length ** 2 - across ** 2, 0.0, None))
+    bad = np.flatnonzero((across >= length * (1.0 - 1e-9)) | (along <= 0.0))
+    if bad.size:
+        k = int(bad[0])
+        need = float(np.max(across)) * 1e3
+        raise SceneError(Text("layouts.error.unreachable", {
+            "number": str(rod.number), "angle": f"{math.degrees(theta[k]):.1f}",
+            "need": f"{need:.1f}"}), file=file, key="articulated.rod_length")
 
 
 def rod_side(t: Table, bore: float, strokes: int, file: str,
