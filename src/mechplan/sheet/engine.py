@@ -23,6 +23,7 @@ from ..drafting.primitives import (
 from ..dynamics.engine.analysis import Checks, EngineResult
 from ..dynamics.engine.balance import Balance
 from ..dynamics.engine.cylinder import CylinderForces
+from ..dynamics.engine.extremes import TorqueExtremes
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene
@@ -52,6 +53,9 @@ class EngineData(Protocol):
 
     @property
     def balance(self) -> Balance: ...
+
+    @property
+    def extremes(self) -> TorqueExtremes: ...
 
 
 #: per-cylinder columns of the table: (attribute, CSV name, scale to the printed unit)
@@ -216,9 +220,12 @@ def torque_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
         curves += [Curve(x, f.M, Role.THIN) for f in d.cylinders.values()]
     curves.append(Curve(x, d.M_total, Role.OUTLINE, "ΣM"))
     mean = study.checks.work_torque / study.scene.engine.cycle
+    ex = study.extremes                 # found between the grid points
+    marks = [Marker(math.degrees(ex.phi_max), ex.M_max, "max"),
+             Marker(math.degrees(ex.phi_min), ex.M_min, "min")]
     return diagram_panel("torque", message("engine.diagram.torque", lang), curves,
                          _phi_axis(study, scale),
-                         Axis("M", "N·m", H * scale), lang,
+                         Axis("M", "N·m", H * scale), lang, markers=marks,
                          hlines=[(mean, message("engine.label.mean", lang))]).panel
 
 
