@@ -538,3 +538,32 @@ def test_double_acting_table_and_csv_carry_the_crank_end_pressure():
     cells = table_cells(st.table, "en")
     assert cells[0][2] == "p_rod, MPa" and len(cells[1]) == len(cells[0])
     assert "p_rod, MPa" in st.report("en")
+
+
+def test_double_acting_thermal_diagram_on_the_crank_end():
+    """The head end's thermal diagram on the crank end (four-stroke, sharp corners: p a function
+    of V on each stroke): at every angle the crank end's pressure is the head end's at the same
+    stroke fraction of the same stroke, and the work check closes over the knots of both faces.
+    (Rounded, the corners sit at crank angles of the crank end's own kinematics, so they differ.)"""
+    from helpers import moto
+
+    rounded = solve_engine_text(moto() + '[rod_side]\nrod_diameter = "20 mm"\n', "da.toml")
+    assert rounded.checks.work_error < 1e-9
+    st = solve_engine_text(moto(indicator_extra="rounding = false")
+                           + '[rod_side]\nrod_diameter = "20 mm"\n', "da.toml")
+    m = st.model
+    S = 2 * 0.0235
+    phi = np.radians(np.arange(0.0, 720.0, 9.0) + 0.4)
+    f = m.cylinder(1, phi)
+    xi_rod = 1.0 - f.x / S                          # the crank end's own stroke fraction
+    own = np.mod(phi - math.pi, 4 * math.pi)        # its own cycle angle
+    k = np.floor(own / math.pi).astype(int)
+    # the head end's angle with that stroke fraction on that stroke
+    head = m.kin.phi_of_x(xi_rod * S, False)
+    head = np.where(k % 2 == 1, 2 * math.pi - head, head) + 2 * math.pi * (k // 2)
+    assert np.allclose(m.cylinder(1, head).x / S, xi_rod, atol=1e-12)
+    assert np.allclose(f.p_rod, m.cylinder(1, head).p, rtol=1e-12)
+    assert st.checks.work_error < 1e-9
+    F = math.pi * 0.0565 ** 2 / 4
+    ratio = (F - math.pi * 0.02 ** 2 / 4) / F
+    assert st.checks.work_expected == pytest.approx(st.checks.work_diagram * (1 + ratio), rel=1e-9)
