@@ -567,3 +567,16 @@ def test_double_acting_thermal_diagram_on_the_crank_end():
     F = math.pi * 0.0565 ** 2 / 4
     ratio = (F - math.pi * 0.02 ** 2 / 4) / F
     assert st.checks.work_expected == pytest.approx(st.checks.work_diagram * (1 + ratio), rel=1e-9)
+
+
+def test_radial_lug_angles_given():
+    lugs = [72.0 + 5.0, 144.0, -144.0, -72.0]
+    st = radial(5, art_extra="lug_angles = [" + ", ".join(f'"{a} deg"' for a in lugs) + "]")
+    group = st.model.group
+    state = group.state(ANGLES)
+    for k, sl in enumerate(group.slaves):
+        bank = 2 * math.pi * (k + 1) / 5
+        s = np.array([closure(t, math.radians(lugs[k]), bank) for t in ANGLES])
+        assert np.max(np.abs(state.E[k] @ sl.u - s)) < 1e-12 * L
+    same = radial(5, art_extra='lug_angles = ["72 deg", "144 deg", "216 deg", "288 deg"]')
+    assert np.allclose(same.dense.M_total, radial(5).dense.M_total, rtol=1e-12, atol=1e-9)
