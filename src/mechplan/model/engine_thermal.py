@@ -61,6 +61,8 @@ class CycleSpec:
     cylinders: int
     power: float | None = None   # W: size the cylinder for this effective power
     S_D: float = 1.0
+    coolant_c: float = 0.5       # heat balance: c and m of the coolant's empirical formula
+    coolant_m: float = 0.65
 
 
 @dataclass(frozen=True)

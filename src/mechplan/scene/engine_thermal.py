@@ -10,7 +10,8 @@ from .reader import Table
 
 KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alpha", "epsilon",
         "p0", "T0", "dT", "p_a", "p_r", "T_r", "n1", "n2", "xi_z", "lambda_p", "K", "phi_i",
-        "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity")
+        "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity", "coolant_c",
+        "coolant_m")
 
 
 def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
@@ -84,10 +85,12 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
     eta_m = _number(t, "eta_m", 0.8, 0.3, 1.0, "the mechanical efficiency η_m")
     power = t.quantity("power_kW", "dimensionless", positive=True)
     S_D = _number(t, "stroke_bore", stroke_bore, 0.3, 3.0, "the stroke-to-bore ratio S/D")
+    c_w = _number(t, "coolant_c", 0.5, 0.3, 0.7, "c of the coolant's heat (heat balance)")
+    m_w = _number(t, "coolant_m", 0.65, 0.5, 0.8, "m of the coolant's heat (heat balance)")
     spec = CycleSpec(diesel, C, H, O, Hu * 1e3, m_f if not diesel else 0.0, alpha, eps,
                      speed * 30.0 / 3.141592653589793, p_amb, T0, dT, p_a, p_r, T_r, n1, n2, xi,
                      lam_p, K, phi_i, eta_m, strokes, cylinders,
-                     power * 1e3 if power is not None else None, S_D)
+                     power * 1e3 if power is not None else None, S_D, c_w, m_w)
     cycle = thermal_cycle(spec)
     if not cycle.rho < eps:
         raise t.error("xi_z", Text("cycle.error.rho", {"rho": cycle.rho}))
