@@ -135,6 +135,16 @@ def products_of(s: CycleSpec, L0: float) -> dict[str, float]:
             "N2": (1.0 - AIR_O2) * s.alpha * L0}
 
 
+def end_of_intake(T_k: float, T_r: float, gamma_r: float) -> float:
+    """Temperature at the end of intake T_a = (T_k + γ_r·T_r)/(1 + γ_r), T_k = T0 + ΔT."""
+    return (T_k + gamma_r * T_r) / (1.0 + gamma_r)
+
+
+def compression(p_a: float, T_a: float, epsilon: float, n1: float) -> tuple[float, float]:
+    """End of the polytropic compression: (p_c, T_c) = (p_a·ε^n1, T_a·ε^(n1−1))."""
+    return p_a * epsilon ** n1, T_a * epsilon ** (n1 - 1.0)
+
+
 def thermal_cycle(s: CycleSpec) -> Cycle:
     """Run the calculation."""
     L0 = (s.C / 12.0 + s.H / 4.0 - s.O / 32.0) / AIR_O2
@@ -147,10 +157,9 @@ def thermal_cycle(s: CycleSpec) -> Cycle:
     eps = s.epsilon
     Tk = s.T0 + s.dT
     gamma_r = Tk / s.T_r * s.p_r / (eps * s.p_a - s.p_r)
-    T_a = (Tk + gamma_r * s.T_r) / (1.0 + gamma_r)
+    T_a = end_of_intake(Tk, s.T_r, gamma_r)
     eta_v = s.T0 / Tk * (eps * s.p_a - s.p_r) / ((eps - 1.0) * s.p0)
-    p_c = s.p_a * eps ** s.n1
-    T_c = T_a * eps ** (s.n1 - 1.0)
+    p_c, T_c = compression(s.p_a, T_a, eps, s.n1)
     t_c = T_c - 273.0
     cv_air = 20.6 + 2.638e-3 * t_c
     cv_res, _ = _mix(prod, t_c, high=False)
