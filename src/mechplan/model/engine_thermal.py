@@ -15,6 +15,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .engine_wiebe import Wiebe
+
 R_MU = 8.315                 # kJ/(kmol·K)
 AIR_O2 = 0.208               # O2 in air by volume
 R_AIR = 287.0                # J/(kg·K)
@@ -96,6 +98,7 @@ class Cycle:
     p_e: float
     eta_e: float
     g_e: float
+    wiebe: Wiebe | None = None   # the optional Wiebe model's diagram (when the scene asks)
 
     def power(self, V_h: float, cylinders: int | None = None) -> float:
         """Effective power (W) of cylinders of displacement V_h (m³)."""

@@ -6,11 +6,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..construct.scale import round_scale
 from ..drafting.primitives import Circle, HAlign, Role, Text, VAlign
 from ..i18n import message, number, unit
 from ..model.engine_heat_balance import PARTS, CyclePoints, HeatBalance
 from ..model.engine_thermal import Cycle
-from .diagram import TEXT_H, Axis, Curve, diagram_panel
+from ..model.engine_wiebe import Wiebe
+from .diagram import TEXT_H, Axis, Curve, Marker, diagram_panel
 from .fit import TableStyle, table_panel
 from .panels import Panel
 
@@ -79,12 +81,31 @@ def _widths(cells: list[list[str]]) -> list[float]:
     return [max(12.0, 2.0 + 1.6 * max(len(r[j]) for r in cells)) for j in range(len(cells[0]))]
 
 
+def wiebe_panel(w: Wiebe, lang: str, scale: float = 1.0) -> Panel:
+    """p(φ) of the Wiebe model over the closed part, the start and end of combustion marked."""
+    deg = np.degrees(w.phi)
+    span = float(deg[-1] - deg[0])
+    mu = round_scale(span / (144.0 * scale))
+    start = 360.0 - float(np.degrees(w.spec.start))
+    end = start + float(np.degrees(w.spec.duration))
+    p_s, p_e = (float(np.interp(a, deg, w.p)) * 1e-6 for a in (start, end))
+    title = message("thermal2.diagram.wiebe", lang, start=number(np.degrees(w.spec.start), 1,
+                                                                    lang),
+                    duration=number(np.degrees(w.spec.duration), 1, lang),
+                    m=number(w.spec.m, 3, lang))
+    return diagram_panel("thermal_wiebe", title, [Curve(deg, w.p * 1e-6)],
+                         Axis("φ", "°", span / mu, mu=mu, mu_symbol="μφ"),
+                         Axis("p", "MPa", 110.0 * scale), lang, x_zero=False,
+                         markers=[Marker(start, p_s, "φs"), Marker(end, p_e, "φe")]).panel
+
+
 def thermal_panels(c: Cycle, points: CyclePoints, rounded: tuple[np.ndarray, np.ndarray],
                    balance: HeatBalance, lang: str, scale: float = 1.0) -> list[Panel]:
     """The diagram, the results table and the heat-balance table."""
     res = results_cells(c, balance.N_e, lang)
     bal = balance_cells(balance, lang)
-    return [indicator_panel(points, rounded, lang, scale),
+    extra = [wiebe_panel(c.wiebe, lang, scale)] if c.wiebe is not None else []
+    return [*extra, indicator_panel(points, rounded, lang, scale),
             table_panel("thermal_results", message("thermal2.diagram.results", lang), res, STYLE,
                         widths=_widths(res)),
             table_panel("thermal_balance", message("thermal2.diagram.balance", lang),

@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
-from ..i18n import message, number
+from ..i18n import message, number, scientific
 from ..model.engine_heat_balance import HeatBalance, heat_balance
 from ..model.engine_thermal import Cycle
 from ..sheet.engine_thermal import balance_cells
@@ -57,6 +58,15 @@ def thermal_lines(c: Cycle, V_h: float, lang: str, bore: float | None = None) ->
         out.append(message("cycle.report.sizing", lang, N_e=n(s.power * 1e-3, 2),
                            V_h=n(vh * 1e3, 4), D=n(D * 1e3, 2), S=n(S * 1e3, 2),
                            S_D=n(s.S_D, 3)))
+    if c.wiebe is not None:
+        w = c.wiebe
+        p_max, phi_max = w.peak
+        out.append(message("thermal2.report.wiebe", lang,
+                           start=n(math.degrees(w.spec.start), 1),
+                           duration=n(math.degrees(w.spec.duration), 1), m=n(w.spec.m, 3),
+                           a=n(w.spec.a, 3), p_max=n(p_max * 1e-6), phi_max=n(
+                               math.degrees(phi_max), 1), p_i=n(w.p_i * 1e-6),
+                           residual=scientific(w.residual * V_h, 2, lang)))
     if bore is None:
         out.append(message("cycle.report.balance", lang, q_e=n(100 * c.eta_e, 2),
                            q_m=n(100 * (c.eta_i - c.eta_e), 2),
@@ -81,6 +91,14 @@ def thermal_json(c: Cycle, V_h: float, bore: float | None = None) -> dict[str, A
     if s.power is not None:
         vh, D, S = c.cylinder_for(s.power)
         doc["sizing"] = {"N_e": s.power, "V_h": vh, "D": D, "S": S}
+    if c.wiebe is not None:
+        w = c.wiebe
+        p_max, phi_max = w.peak
+        doc["wiebe"] = {"start_deg": math.degrees(w.spec.start),
+                        "duration_deg": math.degrees(w.spec.duration), "m": w.spec.m,
+                        "a": w.spec.a, "Q": w.Q * V_h, "work": w.work * V_h, "dU": w.dU * V_h,
+                        "residual": w.residual * V_h, "p_i": w.p_i, "p_max": p_max,
+                        "phi_max_deg": math.degrees(phi_max)}
     if bore is not None:
         b = cycle_balance(c, V_h, bore)
         doc["heat_balance"] = {"N_e": b.N_e, "G_T": b.G_T, "Q0": b.Q0, "c": b.c, "m": b.m,
