@@ -65,6 +65,7 @@ class CycleSpec:
     S_D: float = 1.0
     coolant_c: float = 0.5       # heat balance: c and m of the coolant's empirical formula
     coolant_m: float = 0.65
+    air_O2: float = AIR_O2       # O2 in air by volume (Kolchin–Demidov 0.208; 0.21 in others)
 
 
 @dataclass(frozen=True)
@@ -130,12 +131,12 @@ def _mix(fractions: dict[str, float], t: float, high: bool) -> tuple[float, floa
 def products_of(s: CycleSpec, L0: float) -> dict[str, float]:
     """kmol of each combustion product per kg of fuel."""
     if s.alpha < 1.0:
-        co = 2.0 * (1.0 - s.alpha) / (1.0 + s.K) * AIR_O2 * L0
+        co = 2.0 * (1.0 - s.alpha) / (1.0 + s.K) * s.air_O2 * L0
         h2 = s.K * co
         return {"CO2": s.C / 12.0 - co, "CO": co, "H2O": s.H / 2.0 - h2, "H2": h2,
-                "N2": (1.0 - AIR_O2) * s.alpha * L0}
-    return {"CO2": s.C / 12.0, "H2O": s.H / 2.0, "O2": AIR_O2 * (s.alpha - 1.0) * L0,
-            "N2": (1.0 - AIR_O2) * s.alpha * L0}
+                "N2": (1.0 - s.air_O2) * s.alpha * L0}
+    return {"CO2": s.C / 12.0, "H2O": s.H / 2.0, "O2": s.air_O2 * (s.alpha - 1.0) * L0,
+            "N2": (1.0 - s.air_O2) * s.alpha * L0}
 
 
 def end_of_intake(T_k: float, T_r: float, gamma_r: float) -> float:
@@ -150,7 +151,7 @@ def compression(p_a: float, T_a: float, epsilon: float, n1: float) -> tuple[floa
 
 def thermal_cycle(s: CycleSpec) -> Cycle:
     """Run the calculation."""
-    L0 = (s.C / 12.0 + s.H / 4.0 - s.O / 32.0) / AIR_O2
+    L0 = (s.C / 12.0 + s.H / 4.0 - s.O / 32.0) / s.air_O2
     l0 = (8.0 / 3.0 * s.C + 8.0 * s.H - s.O) / 0.23
     M1 = s.alpha * L0 + (1.0 / s.m_fuel if s.m_fuel > 0 else 0.0)
     prod = products_of(s, L0)
