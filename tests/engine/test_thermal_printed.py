@@ -4,7 +4,8 @@ No complete printed worked example of the Kolchin–Demidov thermal calculation 
 intermediate result) could be read in the sources at hand (see docs/engine.md, "Thermal
 calculation: sources"). What could be read are single steps of students' course calculations
 printed with all their inputs, and the beginning of a Chinese course's worked diesel example
-(fuel chemistry and intake); they check our formulas for those steps at the rounding of the print. The steps that depend on the heat-capacity fits (T_z, p_z) could not be checked this way:
+(fuel chemistry and intake); they check our formulas for those steps at the rounding of the
+print. The steps that depend on the heat-capacity fits (T_z, p_z) could not be checked this way:
 the pages that print them use other fits (20.16 + 1.74·10⁻³·T) or hide the inputs in images.
 """
 
