@@ -128,7 +128,7 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
         if top.has("indicator"):
             raise top.error("indicator", Text("cycle.error.exclusive"))
         cycle, ind = parse_thermal(th, strokes=int(strokes), cylinders=n_cyl, speed=omega,
-                                   p0=p0, stroke_bore=2.0 * R / bore)
+                                   p0=p0, stroke_bore=2.0 * R / bore, lam=R / L)
     else:
         ind = _indicator(top.table("indicator", required=True),  # type: ignore[arg-type]
                          strokes, file, data_dir)

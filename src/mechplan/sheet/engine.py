@@ -112,6 +112,8 @@ def engine_sheets(study: EngineData, size: str, standard: str, language: str,
         out += table_panels(study, lang)
         if study.scene.balance is not None:
             out += _balance_panels(study, lang, scale)
+        if study.scene.cycle is not None:
+            out += _thermal_panels(study, lang, scale)
         return out
 
     fields = {"title": study.scene.engine.title or message("engine.sheet.title", lang)}
@@ -128,6 +130,18 @@ def _balance_panels(study: EngineData, lang: str, scale: float) -> list[Panel]:
     bank = {c.number: c.bank for c in study.scene.engine.cylinders}
     banks = {n: b - bank[1] for n, b in bank.items()}
     return balance_panels(study.balance, m.phases, banks, study.dense.phi, lang, scale)
+
+
+def _thermal_panels(study: EngineData, lang: str, scale: float) -> list[Panel]:
+    """The thermal calculation's panels (sheet/engine_thermal.py) of a scene with [thermal]."""
+    from ..model.engine_heat_balance import cycle_points, heat_balance
+    from .engine_thermal import thermal_panels
+
+    c, spec = study.scene.cycle, study.scene.engine
+    assert c is not None
+    bal = heat_balance(c, c.power(spec.V_h), spec.bore, c.spec.cylinders)
+    return thermal_panels(c, cycle_points(c, spec.V_h), study.model.diagram.loop(), bal, lang,
+                          scale)
 
 
 def _deg(phi: np.ndarray) -> np.ndarray:

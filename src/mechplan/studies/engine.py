@@ -106,7 +106,7 @@ class EngineStudy:
 
         lines = [message("engine.report.title", lang, title=spec.title), ""]
         if self.scene.cycle is not None:
-            lines += [*thermal_lines(self.scene.cycle, spec.V_h, lang), ""]
+            lines += [*thermal_lines(self.scene.cycle, spec.V_h, lang, spec.bore), ""]
         lines.append(message("engine.report.geometry", lang, strokes=spec.strokes,
                              cylinders=len(spec.cylinders), n=n(spec.speed * 30 / math.pi, 0),
                              D=n(spec.bore * 1e3, 1), R=n(spec.R * 1e3, 2), L=n(spec.L * 1e3, 2),
@@ -207,7 +207,7 @@ class EngineStudy:
         if self.scene.balance is not None and m.articulated:
             extra["balance"]["ideal"] = deviation_json(m, self.balance)
         if self.scene.cycle is not None:
-            extra["thermal"] = thermal_json(self.scene.cycle, spec.V_h)
+            extra["thermal"] = thermal_json(self.scene.cycle, spec.V_h, spec.bore)
         return {
             "mechplan": __version__, "kind": "engine", "title": spec.title,
             "engine": {"strokes": spec.strokes, "omega": spec.speed, "bore": spec.bore, "R": spec.R,
