@@ -33,7 +33,7 @@ from .sheets import (
 from .variants import VariantFile, load_variants, variant_in
 
 #: files mechplan grades; anything else handed in is listed, never skipped silently
-GRADED = (".dxf", ".toml", ".csv", ".tsv")
+GRADED = (".dxf", ".toml", ".csv", ".tsv", ".xlsx", ".xlsm", ".pdf")
 PRIVATE = ".submissions"
 OUTPUTS = ("grading_worksheet.csv", "feedback_files.zip", "canvas_gradebook.csv", "problems.csv",
            "same_work.csv", "lms_summary.csv", "quiz_moodle.xml", "quiz_canvas_qti.zip")
