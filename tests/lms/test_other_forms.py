@@ -5,7 +5,6 @@ limits of every file read inside another."""
 from __future__ import annotations
 
 import io
-import json
 import zipfile
 import zlib
 from pathlib import Path
@@ -14,28 +13,10 @@ import openpyxl
 import pytest
 from pypdf import PdfWriter
 
-from mechplan.batch import Variant, run_class
 from mechplan.check import Options, check
 from mechplan.errors import CheckError
 from mechplan.lms import round_trip
 from mechplan.submission.read import read_submission
-
-TEMPLATES = Path(__file__).resolve().parents[2] / "src" / "mechplan" / "templates"
-PHI = 30.0
-
-
-@pytest.fixture(scope="module")
-def klass(tmp_path_factory):
-    root = tmp_path_factory.mktemp("forms")
-    variants = root / "class"
-    run_class(TEMPLATES / "slider_crank.toml",
-              [Variant("v1", "", {"links.1.lengths.OA": "90 mm"}),
-               Variant("v2", "", {"links.1.lengths.OA": "100 mm"})],
-              variants, formats=("dxf",), workers=1, progress=False)
-    key = json.loads((variants / "v1" / "answer_key.json").read_text(encoding="utf-8"))
-    k = key["phi_deg"].index(PHI)
-    values = {r["quantity"]: r["values"][k] for r in key["rows"]}
-    return root, variants, values
 
 
 def _rows(v, wrong=1.0):
@@ -68,8 +49,8 @@ def _verdicts(report):
 
 
 @pytest.mark.parametrize("wrong", [1.0, 1.3])
-def test_a_workbook_is_graded_like_the_same_csv(klass, tmp_path, wrong):
-    _, variants, v = klass
+def test_a_workbook_is_graded_like_the_same_csv(small_class, tmp_path, wrong):
+    _, variants, v = small_class
     scene = variants / "v1" / "scene.toml"
     rows = _rows(v, wrong)
     book = check(scene, _xlsx(tmp_path / "t.xlsx", rows), Options())
@@ -80,8 +61,8 @@ def test_a_workbook_is_graded_like_the_same_csv(klass, tmp_path, wrong):
     assert book.summary()["wrong"] == (0 if wrong == 1.0 else 1)
 
 
-def test_the_first_sheet_with_data_when_the_active_one_is_empty(klass, tmp_path):
-    _, variants, v = klass
+def test_the_first_sheet_with_data_when_the_active_one_is_empty(small_class, tmp_path):
+    _, _variants, v = small_class
     sub = read_submission(_xlsx(tmp_path / "t.xlsx", _rows(v), sheet_first_empty=True))
     assert [e.name for e in sub.entries][:2] == ["φ", "VA"]
 
@@ -123,8 +104,8 @@ def _pdf_by_hand(stream: bytes, name: str = "sheet.dxf", size: int | None = None
     return bytes(out)
 
 
-def test_a_pdf_with_the_dxf_attached_is_graded_like_the_dxf(klass, tmp_path):
-    _, variants, _ = klass
+def test_a_pdf_with_the_dxf_attached_is_graded_like_the_dxf(small_class, tmp_path):
+    _, variants, _ = small_class
     scene = variants / "v1" / "scene.toml"
     dxf = variants / "v1" / "slider_crank.dxf"
     pdf = tmp_path / "sheet.pdf"
@@ -169,8 +150,8 @@ def _workbook_with(part: str, body: bytes, src: Path, dst: Path) -> Path:
     return dst
 
 
-def test_hostile_workbooks_are_refused(klass, tmp_path):
-    _, _, v = klass
+def test_hostile_workbooks_are_refused(small_class, tmp_path):
+    _, _, v = small_class
     good = _xlsx(tmp_path / "good.xlsx", _rows(v))
     sheet = "xl/worksheets/sheet1.xml"
     laughs = (b'<?xml version="1.0"?><!DOCTYPE lolz [<!ENTITY lol "lol">'
@@ -187,8 +168,8 @@ def test_hostile_workbooks_are_refused(klass, tmp_path):
         read_submission(junk)
 
 
-def test_round_trip_grades_workbooks_and_pdfs_like_csv_and_dxf(klass, tmp_path):
-    _, variants, v = klass
+def test_round_trip_grades_workbooks_and_pdfs_like_csv_and_dxf(small_class, tmp_path):
+    _, variants, v = small_class
     dxf = (variants / "v1" / "slider_crank.dxf").read_bytes()
     rows = _rows(v, 1.3)
     book = _xlsx(tmp_path / "b.xlsx", rows).read_bytes()
