@@ -247,7 +247,7 @@ def round_trip(variants_path: Path, download: Path, out: Path, *, roster: Path |
                 if m.name.lower().endswith(GRADED):
                     sub = _read_quietly(read_submission, private, r, m)
                     prints.append(fingerprint(who, m.data, sub))
-        same = same_work(prints) + _better_fits(results, others, fits, lang)
+        same = same_work(prints, lang) + _better_fits(results, others, fits, lang)
         written = _write_outputs(out, results, problems, same, the_rule, sheet, people,
                                  variants, lang, reports)
         if book is not None:
