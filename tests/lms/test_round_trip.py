@@ -303,7 +303,7 @@ def test_canvas_qti_package(klass):
 def test_the_documented_default_rule_is_the_default():
     from mechplan.lms.rule import DEFAULT_RULE
 
-    doc = (Path(__file__).resolve().parents[2] / "docs" / "lms.md").read_text(encoding="utf-8")
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "classes.md").read_text(encoding="utf-8")
     assert DEFAULT_RULE.strip() in doc
 
 

@@ -178,8 +178,8 @@ def fill_gradebook(book: Gradebook, graded: Iterable[Graded], column: int, max_g
                 hit = found[0]
                 break
         if hit is None and g.names:
-            keys = {_name_key(n) for n in g.names}
-            found = [r for r in students if _name_key(cell(r, "Student")) in keys]
+            names = {_name_key(n) for n in g.names}
+            found = [r for r in students if _name_key(cell(r, "Student")) in names]
             hit = found[0] if len(found) == 1 else None
         if hit is None:
             missing.append(g.who)
