@@ -12,8 +12,8 @@ mirror fixed) on all the endpoints it matched."""
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -26,8 +26,10 @@ ANCHORS = 4
 LENGTH_SLACK = 0.02
 #: most pairs tried for one anchor
 MAX_CANDIDATES = 40
-#: segments a hypothesis is first scored on
+#: segments every hypothesis is first scored on
 SAMPLE = 64
+#: hypotheses (the best on the sample) scored on the whole drawing
+FULL = 8
 
 
 @dataclass(frozen=True, slots=True)
@@ -95,15 +97,40 @@ def _matches(a: Array, tree: object, tol: float) -> NDArray[np.intp]:
     return np.where(np.isfinite(dist), idx, -1)
 
 
-def _hypotheses(a: Array, b: Array, la: Array, ra: Array, rb: Array) -> Iterator[Similarity]:
-    """Similarities carrying one of the longest segments of ``a`` onto a segment of ``b`` of
-    about the same relative length, either way round, mirrored or not."""
+def _hypotheses(a: Array, b: Array, la: Array, ra: Array, rb: Array) -> tuple[Any, Any, Any]:
+    """Similarities ``z ↦ s·z + t`` (``s·z̄ + t`` when mirrored), in complex numbers, carrying
+    one of the longest segments of ``a`` onto a segment of ``b`` of about the same relative
+    length, either way round, mirrored or not: arrays ``s``, ``t``, ``mirrored``."""
+    za = a[..., 0] + 1j * a[..., 1]
+    zb = b[..., 0] + 1j * b[..., 1]
+    ss, ts, ms = [], [], []
     for i in np.argsort(-la)[:ANCHORS]:
         close = np.flatnonzero(np.abs(rb - ra[i]) <= LENGTH_SLACK * ra[i])
-        for j in close[np.argsort(np.abs(rb[close] - ra[i]))][:MAX_CANDIDATES]:
-            for target in (b[j], b[j][::-1]):
-                for mirrored in (False, True):
-                    yield fit_similarity(a[i], target, mirrored)
+        close = close[np.argsort(np.abs(rb[close] - ra[i]))][:MAX_CANDIDATES]
+        if not len(close):
+            continue
+        q0 = np.concatenate([zb[close, 0], zb[close, 1]])      # both ways round
+        q1 = np.concatenate([zb[close, 1], zb[close, 0]])
+        p0, p1 = za[i]
+        for mirrored, d, z0 in ((False, p1 - p0, p0), (True, np.conj(p1 - p0), np.conj(p0))):
+            s = (q1 - q0) / d
+            ss.append(s)
+            ts.append(q0 - s * z0)
+            ms.append(np.full(len(s), mirrored))
+    if not ss:
+        return np.zeros(0, complex), np.zeros(0, complex), np.zeros(0, bool)
+    return np.concatenate(ss), np.concatenate(ts), np.concatenate(ms)
+
+
+def _carry(z: Any, s: Any, t: Any, mirrored: Any) -> Array:
+    """Complex points ``z`` (K, 2) carried by each similarity: 4-D points (H, K, 4)."""
+    w = s[:, None, None] * np.where(mirrored[:, None, None], np.conj(z), z) + t[:, None, None]
+    return np.stack([w[..., 0].real, w[..., 0].imag, w[..., 1].real, w[..., 1].imag], axis=-1)
+
+
+def _similarity(s: complex, t: complex, mirrored: bool) -> Similarity:
+    return Similarity(abs(s), math.degrees(math.atan2(s.imag, s.real)), bool(mirrored),
+                      (t.real, t.imag))
 
 
 def register(a: Array, b: Array, tol: float = 1e-3) -> Registration | None:
@@ -123,21 +150,24 @@ def register(a: Array, b: Array, tol: float = 1e-3) -> Registration | None:
     both = np.concatenate([b.reshape(-1, 4), b[:, ::-1].reshape(-1, 4)])
     tree = cKDTree(both)
     radius = tol * size
-    ra, rb = la / ma, lb / mb
-    # hypotheses are scored first on a sample of the drawing (every k-th segment), in full only
-    # when the sample says they may beat the best so far
+    s, t, mirrored = _hypotheses(a, b, la, la / ma, lb / mb)
+    if not len(s):
+        return None
+    # every hypothesis scored at once on a sample of the drawing (every k-th segment); the
+    # most promising ones scored on all of it
     sample = a[:: max(1, len(a) // SAMPLE)]
+    zs = sample[..., 0] + 1j * sample[..., 1]
+    dist, _ = tree.query(_carry(zs, s, t, mirrored).reshape(-1, 4), distance_upper_bound=radius)
+    score = np.isfinite(dist).reshape(len(s), -1).sum(axis=1)
+    za = a[..., 0] + 1j * a[..., 1]
     best: tuple[int, Similarity, NDArray[np.intp]] | None = None
-    best_sample = 0
-    for t in _hypotheses(a, b, la, ra, rb):
-        got = int((_matches(t.apply(sample), tree, radius) >= 0).sum())
-        if got < max(best_sample, 2):
-            continue
-        best_sample = got
-        hit = _matches(t.apply(a), tree, radius)
+    for h in np.argsort(-score, kind="stable")[:FULL]:
+        if score[h] < 2:
+            break
+        hit = _matches(_carry(za, s[h:h + 1], t[h:h + 1], mirrored[h:h + 1])[0], tree, radius)
         n = int((hit >= 0).sum())
         if best is None or n > best[0]:
-            best = (n, t, hit)
+            best = (n, _similarity(complex(s[h]), complex(t[h]), bool(mirrored[h])), hit)
         if n >= len(a):
             break                                   # every segment carried: nothing better
     if best is None or best[0] < 2:
