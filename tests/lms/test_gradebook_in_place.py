@@ -112,3 +112,19 @@ def test_a_worksheet_without_a_bom_comes_back_without_one(tmp_path):
                                    100, 1)
     assert not missing and data == text.replace('"Yes","","-",""', '"Yes","","-","ok"').replace(
         '"100.00","Yes"', '"100.00","Yes"').replace('"","100.00"', '"90","100.00"').encode()
+
+
+def test_the_command_line_fills_the_gradebook(small_class, tmp_path, capsys):
+    from mechplan.cli import main
+
+    variants, sub, roster = _download(tmp_path, small_class)
+    book = tmp_path / "export.csv"
+    book.write_bytes(EXPORT.format(possible="10.00", ivan="", binh="").encode("utf-8"))
+    rule = tmp_path / "rule.toml"
+    rule.write_text('max_grade = 10\n[canvas]\nassignment_id = "777"\n', encoding="utf-8")
+    out = tmp_path / "graded"
+    main(["check", str(variants), str(sub), "-o", str(out), "--roster", str(roster),
+          "--gradebook", str(book), "--rule", str(rule)])
+    assert (out / "canvas_gradebook.csv").read_bytes() == EXPORT.format(
+        possible="10.00", ivan="10", binh="8").encode("utf-8")
+    assert "not in the Canvas gradebook" in capsys.readouterr().out
