@@ -78,19 +78,28 @@ def _pdf_with_attachment(dxf: bytes, name="sheet.dxf", extra=()) -> bytes:
     return buf.getvalue()
 
 
-def _pdf_by_hand(stream: bytes, name: str = "sheet.dxf", size: int | None = None) -> bytes:
-    """A PDF written here object by object: one page whose paper-clip annotation
-    (``/FileAttachment``) carries the file, deflated, in its file specification."""
-    params = f" /Params << /Size {size} >>" if size is not None else ""
+def _pdf_by_hand(stream: bytes, name: str = "sheet.dxf", size: int | None = None,
+                 more=()) -> bytes:
+    """A PDF written here object by object: one page whose paper-clip annotations
+    (``/FileAttachment``) carry the files, deflated, in their file specifications: first
+    ``more`` (name, deflated stream, declared size), then ``name``."""
+    files = [*more, (name, stream, size)]
+    annots = " ".join(f"{4 + 3 * k} 0 R" for k in range(len(files)))
     objects = [
         b"<< /Type /Catalog /Pages 2 0 R >>",
         b"<< /Type /Pages /Kids [3 0 R] /Count 1 >>",
-        b"<< /Type /Page /Parent 2 0 R /MediaBox [0 0 595 842] /Annots [4 0 R] >>",
-        b"<< /Type /Annot /Subtype /FileAttachment /Rect [20 20 40 40] /FS 5 0 R >>",
-        f"<< /Type /Filespec /F ({name}) /UF ({name}) /EF << /F 6 0 R >> >>".encode(),
-        f"<< /Type /EmbeddedFile /Filter /FlateDecode /Length {len(stream)}{params} >>\n"
-        .encode() + b"stream\n" + stream + b"\nendstream",
+        f"<< /Type /Page /Parent 2 0 R /MediaBox [0 0 595 842] /Annots [{annots}] >>".encode(),
     ]
+    for k, (fname, body, declared) in enumerate(files):
+        params = f" /Params << /Size {declared} >>" if declared is not None else ""
+        objects += [
+            f"<< /Type /Annot /Subtype /FileAttachment /Rect [20 20 40 40] /FS {5 + 3 * k} 0 R >>"
+            .encode(),
+            f"<< /Type /Filespec /F ({fname}) /UF ({fname}) /EF << /F {6 + 3 * k} 0 R >> >>"
+            .encode(),
+            f"<< /Type /EmbeddedFile /Filter /FlateDecode /Length {len(body)}{params} >>\n"
+            .encode() + b"stream\n" + body + b"\nendstream",
+        ]
     out = bytearray(b"%PDF-1.7\n")
     offsets = []
     for i, body in enumerate(objects, start=1):
@@ -140,6 +149,22 @@ def test_an_attachment_bomb_is_refused_naming_it(tmp_path):
         pdf.write_bytes(_pdf_by_hand(bomb, "big.dxf", size))
         with pytest.raises(CheckError, match="big.dxf.*more than 64 MB"):
             read_submission(pdf)
+
+
+def test_only_the_named_drawing_is_inflated(small_class, tmp_path):
+    _, variants, _ = small_class
+    dxf = (variants / "v1" / "slider_crank.dxf").read_bytes()
+    bomb = zlib.compress(b" " * (72 * 1024**2), 9)              # a 72 MB "notes.txt"
+    pdf = tmp_path / "both.pdf"
+    pdf.write_bytes(_pdf_by_hand(zlib.compress(dxf), "plan.dxf", more=[("notes.txt", bomb,
+                                                                          None)]))
+    sub = read_submission(pdf)                  # the notes are listed, never inflated
+    assert len(sub.lines) == len(read_submission(variants / "v1" / "slider_crank.dxf").lines)
+    assert "notes.txt" in str(sub.notes[0])
+    unnamed = tmp_path / "unnamed.pdf"          # no name says DXF: sniffed one by one
+    unnamed.write_bytes(_pdf_by_hand(zlib.compress(dxf), "drawing", more=[
+        ("readme", zlib.compress(b"hello"), None)]))
+    assert read_submission(unnamed).lines
 
 
 def _workbook_with(part: str, body: bytes, src: Path, dst: Path) -> Path:

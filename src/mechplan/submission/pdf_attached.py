@@ -15,7 +15,7 @@ from ..errors import CheckError
 from ..i18n import Text
 from ..limits import DXF_MAX_BYTES
 from ..userfiles import FileKind, read_bytes
-from .contained import MAX_MEMBER, mb, refuse_member
+from .contained import MAX_ENTRIES, MAX_MEMBER, MAX_TOTAL, mb, refuse_member
 
 #: a PDF may hold a drawing as large as a DXF may be
 PDF = FileKind("dxf", DXF_MAX_BYTES)
@@ -32,6 +32,16 @@ class Attachment:
     data: bytes
 
 
+@dataclass(frozen=True, slots=True)
+class _Listed:
+    """An attachment found, not yet read: its name, its sizes as declared, how to read it."""
+
+    name: str
+    read: Any
+    packed: int | None
+    size: int | None
+
+
 def is_dxf(att: Attachment) -> bool:
     """True for an attached DXF (by its name, or by its first bytes)."""
     head = att.data[:256]
@@ -39,9 +49,12 @@ def is_dxf(att: Attachment) -> bool:
         or head.startswith(b"AutoCAD Binary DXF")
 
 
-def attachments(path: Path) -> list[Attachment]:
-    """Every file attached to a PDF, in the order the document lists them (name tree first, then
-    page annotations); refuse one over the limits."""
+def attached_dxf(path: Path) -> tuple[Attachment, list[str]]:
+    """The DXF attached to a PDF, and the names of the other attachments (not checked).
+
+    Only what is needed is inflated: the first attachment named ``.dxf``; when none is, the
+    others one by one until one starts as a DXF — each within one member's limit, all together
+    within an archive's."""
     data = read_bytes(path, PDF, error=CheckError)
     if not data.lstrip()[:5] == b"%PDF-":
         raise CheckError(Text("lms2.pdf_not_pdf"), file=str(path))
@@ -50,7 +63,19 @@ def attachments(path: Path) -> list[Attachment]:
 
     try:
         with _decompression_limit():
-            return _attachments(PdfReader(io.BytesIO(data), strict=False), path)
+            listed = _listed(PdfReader(io.BytesIO(data), strict=False))
+            named = [a for a in listed if a.name.lower().endswith(".dxf")]
+            total = 0
+            for entry in named[:1] or listed:
+                got = _checked(entry, path)
+                total += len(got.data)
+                if total > MAX_TOTAL:
+                    raise CheckError(Text("lms.too_big", {"entry": entry.name,
+                                                          "limit": mb(MAX_TOTAL),
+                                                          "member": mb(MAX_MEMBER)}),
+                                     file=str(path))
+                if is_dxf(got):
+                    return got, [a.name for a in listed if a is not entry]
     except CheckError:
         raise
     # pypdf's failures on a damaged or hostile PDF (its own family — a stream inflating past the
@@ -59,6 +84,8 @@ def attachments(path: Path) -> list[Attachment]:
             RecursionError, OSError, EOFError, ArithmeticError) as exc:
         raise CheckError(Text("lms2.pdf_bad", {"reason": " ".join(str(exc).split())[:160]}),
                          file=str(path)) from None
+    names = ", ".join(a.name for a in listed) or "—"
+    raise CheckError(Text("lms2.pdf_no_dxf", {"attached": names}), file=str(path))
 
 
 def _decompression_limit() -> Any:
@@ -73,31 +100,26 @@ def _decompression_limit() -> Any:
     return apply_configuration(zlib_maximum_output_length=MAX_MEMBER + 1)
 
 
-def _attachments(reader: Any, path: Path) -> list[Attachment]:
-    found: list[Attachment] = []
+def _listed(reader: Any) -> list[_Listed]:
+    """The attachments of a PDF in the order it lists them (name tree, then page annotations),
+    at most :data:`MAX_ENTRIES`; nothing inflated yet."""
+    found: list[_Listed] = []
     for entry in reader.attachment_list:
         stream = entry._embedded_file        # the stream object: its declared sizes
-        _refuse(entry.name, _int(entry.size), _int(stream.get("/Length")), path)
-        found.append(_checked(entry.name, lambda e=entry: e.content,
-                              _int(stream.get("/Length")), path))
+        found.append(_Listed(str(entry.name), lambda e=entry: e.content,
+                             _int(stream.get("/Length")), _int(entry.size)))
+        if len(found) >= MAX_ENTRIES:
+            return found
     for k, page in enumerate(reader.pages):
         if k >= MAX_PAGES:
             break
         for annot in _annotations(page):
-            got = _annotated(annot, path)
+            got = _annotated(annot)
             if got is not None:
                 found.append(got)
+                if len(found) >= MAX_ENTRIES:
+                    return found
     return found
-
-
-def attached_dxf(path: Path) -> tuple[Attachment, list[str]]:
-    """The DXF attached to a PDF, and the names of the other attachments (not checked)."""
-    found = attachments(path)
-    drawings = [a for a in found if is_dxf(a)]
-    if not drawings:
-        names = ", ".join(a.name for a in found) or "—"
-        raise CheckError(Text("lms2.pdf_no_dxf", {"attached": names}), file=str(path))
-    return drawings[0], [a.name for a in found if a is not drawings[0]]
 
 
 def _int(value: Any) -> int | None:
@@ -107,23 +129,21 @@ def _int(value: Any) -> int | None:
         return None
 
 
-def _refuse(name: str, size: int | None, packed: int | None, path: Path) -> None:
-    if size is not None:
-        refuse_member(size, packed or size, name, str(path))
-
-
-def _checked(name: str, read: Any, packed: int | None, path: Path) -> Attachment:
-    """The attachment read by ``read()``: refused when it inflates past the limit (pypdf stops
-    there) or its size and compression ratio are over the limits."""
+def _checked(entry: _Listed, path: Path) -> Attachment:
+    """The attachment's bytes: refused when its declared size is over the limit, when it
+    inflates past the limit (pypdf stops there), or its size and ratio are over the limits."""
     from pypdf.errors import LimitReachedError
 
+    if entry.size is not None:
+        refuse_member(entry.size, entry.packed or entry.size, entry.name, str(path))
     try:
-        body = read()
+        body = entry.read()
     except LimitReachedError:
-        raise CheckError(Text("lms2.member_too_big", {"entry": name, "limit": mb(MAX_MEMBER)}),
+        raise CheckError(Text("lms2.member_too_big", {"entry": entry.name,
+                                                      "limit": mb(MAX_MEMBER)}),
                          file=str(path)) from None
-    refuse_member(len(body), packed or len(body), name, str(path))
-    return Attachment(str(name), body)
+    refuse_member(len(body), entry.packed or len(body), entry.name, str(path))
+    return Attachment(entry.name, body)
 
 
 def _annotations(page: Any) -> list[Any]:
@@ -134,7 +154,7 @@ def _annotations(page: Any) -> list[Any]:
     return [a.get_object() for a in annots] if isinstance(annots, list) else []
 
 
-def _annotated(annot: Any, path: Path) -> Attachment | None:
+def _annotated(annot: Any) -> _Listed | None:
     """The file of a ``/FileAttachment`` annotation (its file specification's ``/EF /F``)."""
     if not hasattr(annot, "get") or annot.get("/Subtype") != "/FileAttachment":
         return None
@@ -151,6 +171,4 @@ def _annotated(annot: Any, path: Path) -> Attachment | None:
     name = str(spec.get("/UF") or spec.get("/F") or "attachment")
     params = stream.get("/Params")
     size = _int(params.get_object().get("/Size")) if params is not None else None
-    packed = _int(stream.get("/Length"))
-    _refuse(name, size, packed, path)
-    return _checked(name, stream.get_data, packed, path)
+    return _Listed(name, stream.get_data, _int(stream.get("/Length")), size)
