@@ -218,3 +218,15 @@ def test_round_trip_grades_workbooks_and_pdfs_like_csv_and_dxf(small_class, tmp_
     assert grades["201"] == grades["202"] == 100
     assert grades["203"] == grades["204"] == pytest.approx(round(100 * 4 / 5, 1))
     assert not done.problems
+
+
+def test_a_wide_answer_table_reads_the_same_from_a_workbook(tmp_path):
+    from mechplan.submission.answer_table import read_answers
+
+    rows = [["φ", "p [MPa]", "T (N)", "Mкр"], [0, 1.25, -340.5, "12,5 N*m"],
+            [30, 2.5, 120, "-3,75 N*m"]]
+    book = read_answers(_xlsx(tmp_path / "w.xlsx", rows), lambda n: n.strip() in ("φ", "phi"))
+    table = read_answers(_csv(tmp_path / "w.csv", rows), lambda n: n.strip() in ("φ", "phi"))
+    got = [(e.name, e.text, e.phi_deg) for e in book.entries]
+    assert got == [(e.name, e.text, e.phi_deg) for e in table.entries]
+    assert ("T", "-340.5 N", 0.0) in got and ("Mкр", "-3,75 N*m", 30.0) in got
