@@ -50,7 +50,8 @@ class Similarity:
 
     def apply(self, pts: Array) -> Array:
         """Points (…, 2) carried by the transform."""
-        return pts @ self.matrix.T + np.asarray(self.shift)
+        out: Array = pts @ self.matrix.T + np.asarray(self.shift)
+        return out
 
 
 def fit_similarity(x: Array, y: Array, mirrored: bool) -> Similarity:
@@ -61,7 +62,7 @@ def fit_similarity(x: Array, y: Array, mirrored: bool) -> Similarity:
     xc, yc = xm - mx, y - my
     var = float((xc**2).sum() / len(x))
     if var <= 0.0:
-        return Similarity(1.0, 0.0, mirrored, tuple(my - mx))  # type: ignore[arg-type]
+        return Similarity(1.0, 0.0, mirrored, (float(my[0] - mx[0]), float(my[1] - mx[1])))
     u, sv, vt = np.linalg.svd(yc.T @ xc / len(x))
     d = np.diag([1.0, 1.0 if np.linalg.det(u @ vt) >= 0 else -1.0])
     r = u @ d @ vt

@@ -79,8 +79,8 @@ def _rate(phi: float, phi_s: float, spec: WiebeSpec) -> float:
     s = (phi - phi_s) / spec.duration
     if s <= 0.0:
         return 0.0
-    return (spec.a * (spec.m + 1.0) / spec.duration * s ** spec.m
-            * math.exp(-spec.a * s ** (spec.m + 1.0)))
+    return float(spec.a * (spec.m + 1.0) / spec.duration * s ** spec.m
+                 * math.exp(-spec.a * s ** (spec.m + 1.0)))
 
 
 def volume(phi: np.ndarray | float, V_h: float, epsilon: float, lam: float) -> np.ndarray:
