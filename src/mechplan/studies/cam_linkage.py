@@ -1,0 +1,178 @@
+"""A linkage whose crank is a cam's follower lever: its plans at each cam angle from the cam's
+law ψ, ψ′, ψ″, and its load carried back to the cam (the lever's moment → the contact force → the
+cam torque).
+
+Signs: the cam scene's follower swings its arm clockwise as ψ grows when the cam turns
+counter-clockwise (the pivot at (a, 0), the arm above the line of centres), so in a plane shared
+with the linkage the lever's absolute angle is θ = θ_near − σ·ψ (σ = +1 for a counter-clockwise
+cam). The linkage's balancing moment M_b (what the lever must be given) is the generalised force
+Q = −σ·M_b along ψ; the follower's own inertia, damper, spring and load (the cam's
+``[dynamics]``) add theirs. The cam presses along the profile's normal: N·l·cos α = Q (a roller or
+knife at the arm's length l, pressure angle α) or N·L = Q (a flat face, contact at L from the
+pivot); by power T·ω = Q·ψ̇ the cam torque is T = Q·ψ′.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..errors import SceneError
+from ..i18n import Text
+from ..model.cam import CamSpec, Contact, Motion
+from ..model.mechanism import GROUND
+
+STEP_DEG = 1.0          # the cam angles of the tables and diagrams
+
+
+@dataclass(frozen=True)
+class CamLinkage:
+    """The cam-driven linkage over one cam turn (arrays of shape (N,), SI, cam angles from the
+    start of the cam's first phase)."""
+
+    name: str
+    cam: str
+    output: str                 # the linkage's output: a rocker's link or a slider's point
+    rocker: bool                # True: the output is a link angle (rad), else a length (m)
+    omega_cam: float            # the cam's speed, rad/s (> 0)
+    phi: np.ndarray
+    psi: np.ndarray             # the follower's swing (rad), ψ′, ψ″
+    psi1: np.ndarray
+    psi2: np.ndarray
+    theta: np.ndarray           # the lever's absolute angle, ω, ε (counter-clockwise +)
+    omega: np.ndarray
+    epsilon: np.ndarray
+    out: np.ndarray             # the output's coordinate, rate and acceleration
+    out_rate: np.ndarray
+    out_acc: np.ndarray
+    moment: np.ndarray | None   # M_b on the lever (None: the linkage is not loaded)
+    generalised: np.ndarray | None   # Q along ψ, N·m
+    contact: np.ndarray | None  # the cam's force on the follower along the normal, N
+    torque: np.ndarray | None   # the cam torque, N·m
+
+    def extremes(self) -> dict[str, Any]:
+        """Extremes of the output and of the forces: (value, cam angle in degrees)."""
+        out: dict[str, Any] = {}
+
+        def ext(key: str, a: np.ndarray | None) -> None:
+            if a is None:
+                return
+            i, j = int(np.argmax(a)), int(np.argmin(a))
+            out[key] = {"max": float(a[i]), "max_phi_deg": math.degrees(self.phi[i]),
+                        "min": float(a[j]), "min_phi_deg": math.degrees(self.phi[j])}
+        for k, a in (("output", self.out), ("output_rate", self.out_rate),
+                     ("output_acceleration", self.out_acc), ("lever_omega", self.omega),
+                     ("lever_epsilon", self.epsilon), ("moment", self.moment),
+                     ("contact", self.contact), ("torque", self.torque)):
+            ext(k, a)
+        if self.torque is not None:
+            out["torque_mean"] = float(np.mean(self.torque))
+        return out
+
+    @property
+    def separates(self) -> bool:
+        """True when the cam would have to pull the follower somewhere (N < 0)."""
+        return self.contact is not None and bool(np.any(self.contact < 0.0))
+
+    def to_json(self) -> dict[str, Any]:
+        """Every array every degree, SI units."""
+        def arr(a: np.ndarray | None) -> list[float] | None:
+            return None if a is None else [float(x) for x in a]
+        return {"name": self.name, "cam": self.cam, "output": self.output,
+                "rocker": self.rocker, "omega_cam_rad_s": self.omega_cam,
+                "extremes": self.extremes(), "separates": self.separates,
+                "phi_deg": [math.degrees(x) for x in self.phi], "psi": arr(self.psi),
+                "psi1": arr(self.psi1), "psi2": arr(self.psi2), "lever_angle": arr(self.theta),
+                "lever_omega": arr(self.omega), "lever_epsilon": arr(self.epsilon),
+                "output_value": arr(self.out), "output_rate": arr(self.out_rate),
+                "output_acceleration": arr(self.out_acc), "moment": arr(self.moment),
+                "generalised_force": arr(self.generalised), "contact": arr(self.contact),
+                "torque": arr(self.torque)}
+
+
+def cam_linkage(cam: CamSpec, scene: Any, near: float, omega_cam: float, name: str,
+                cam_name: str, subject: str | None, key: str) -> CamLinkage:
+    """Solve the linkage ``scene`` (a parsed mechanism scene) driven by the follower of ``cam``.
+
+    ``near``: the linkage's crank angle φ (its scene's convention) at the cam's near position;
+    ``omega_cam``: the cam's speed (rad/s, > 0). Errors name ``key`` (the member).
+    """
+    from ..construct.law_drive import law_evaluation
+    from ..construct.textbook.stroke import default_outputs
+    from ..solve import build
+    from ..synthesis.cam import design
+    from ..synthesis.cam.motion import motion
+    from ..synthesis.cam.profile import sample
+
+    if cam.follower.motion is not Motion.OSCILLATING:
+        raise SceneError(Text("machine.error.translating", {"name": name, "cam": cam_name}),
+                         key=key + ".driven_by")
+    mech = scene.mechanism
+    if mech.drive.linear or mech.drive2 is not None:
+        raise SceneError(Text("machine.error.law_linear", {"kind": mech.drive.kind.value}),
+                         key=key + ".scene")
+    loaded = bool(scene.loads) or any(m.mass or m.inertia for m in scene.masses.values())
+    plans = ("position", "velocity", "acceleration") + (("force",) if loaded else ())
+    _, c = build(scene, plans)
+    phi = np.radians(np.arange(0.0, 360.0, STEP_DEG))
+    m = motion(cam.phases, cam.stroke, phi)
+    sigma = cam.sense
+    theta = c.drive.absolute(near) - sigma * m.s
+    omega = -sigma * m.s1 * omega_cam
+    epsilon = -sigma * m.s2 * omega_cam ** 2
+    try:
+        ev = law_evaluation(c, mech, theta, omega, epsilon, key + ".scene")
+    except SceneError as exc:
+        raise SceneError(exc.detail, key=exc.key or key + ".scene") from None
+    outs = [subject] if subject else default_outputs(mech)
+    if not outs:
+        raise SceneError(Text("machine_cycle.error.no_output", {"name": name}), key=key + ".output")
+    out_name = outs[0]
+    rocker = out_name in mech.links
+    if rocker:
+        try:
+            value = np.unwrap(ev[c.link_angle(out_name)])
+            rate, acc = ev[c.omega(out_name)], ev[c.epsilon(out_name)]
+        except KeyError:
+            raise SceneError(Text("machine.error.output", {"name": name, "output": out_name}),
+                             key=key + ".output") from None
+    else:
+        owner = next((k for k, lk in mech.links.items() if out_name in lk.points
+                      and lk.slides_on and mech.guides[lk.slides_on].link == GROUND), None)
+        if owner is None:
+            raise SceneError(Text("machine.error.output", {"name": name, "output": out_name}),
+                             key=key + ".output")
+        g = mech.guides[mech.links[owner].slides_on]
+        d = np.array([math.cos(g.angle), math.sin(g.angle)])
+        value = (ev[c.position(out_name)] - np.array(g.origin)) @ d
+        rate = ev[c.velocity_image(out_name)] @ d
+        acc = ev[c.acceleration_image(out_name)] @ d
+    bad = ~np.isfinite(value)
+    if bad.any():
+        raise SceneError(Text("machine.error.unreachable", {
+            "name": name, "phi": f"{math.degrees(float(phi[np.argmax(bad)])):.0f}"}),
+            key=key + ".near")
+    moment = generalised = contact = torque = None
+    dyn = cam.dynamics
+    if loaded or dyn is not None:
+        moment = np.asarray(ev[c.balancing_moment()], dtype=float) if loaded else None
+        generalised = -sigma * moment if moment is not None else np.zeros_like(phi)
+        des = design(cam)
+        if dyn is not None and des.dynamics is not None:
+            k, f0 = des.dynamics.stiffness, des.dynamics.preload
+            generalised = generalised + (dyn.mass * omega_cam ** 2 * m.s2
+                                         + dyn.damping * omega_cam * m.s1 + k * m.s + f0 + dyn.load)
+        smp = sample(des.geometry, phi)
+        if cam.follower.contact is Contact.FLAT:
+            pivot = np.array([cam.sense * cam.follower.pivot_distance, 0.0])
+            arm = np.hypot(*(smp.follower - pivot).T)
+        else:
+            arm = cam.follower.arm * np.cos(smp.alpha)
+        contact = generalised / arm
+        torque = generalised * m.s1
+    return CamLinkage(name, cam_name, out_name, rocker, omega_cam, phi, m.s, m.s1, m.s2, theta,
+                      omega, epsilon, np.asarray(value), np.asarray(rate), np.asarray(acc),
+                      moment, generalised, contact, torque)
