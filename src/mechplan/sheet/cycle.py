@@ -6,17 +6,21 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+
+import numpy as np
 from typing import TYPE_CHECKING
 
 from ..drafting.fonts import text_width_mm
 from ..drafting.primitives import Arc, Circle, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
 from ..i18n import message, number
+from .diagram import Axis, Curve, diagram_panel
 from .fit import text_block
 from .layout import fitted_sheets
 from .panels import Panel
 
 if TYPE_CHECKING:
-    from ..construct.cycle import MemberCycle, Span
+    from ..construct.cycle import MemberCycle
+    from ..studies.cam_linkage import CamLinkage
     from ..drafting.primitives import Sheet
 
 WIDTH = 180.0       # mm for 360° of the rectangular diagram
@@ -26,6 +30,7 @@ SMALL_H = 1.8       # mm, the phases' names and angles
 TITLE_H = 3.5
 RING = 10.0         # mm, the width of one member's ring
 HUB = 15.0          # mm, the radius inside the innermost ring
+STEP = 5            # every fifth degree of a cam-driven linkage's diagrams
 
 
 @dataclass(frozen=True)
@@ -34,6 +39,8 @@ class CycleView:
 
     members: tuple[MemberCycle, ...]
     origin: float
+    lines: tuple[str, ...] = ()             # the machine's table in words (motor, shafts, …)
+    driven: tuple[CamLinkage, ...] = ()     # linkages turned by a cam's follower
 
 
 def _kind(kind: str, lang: str) -> str:
@@ -56,8 +63,8 @@ def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
             prims.append(Line((xa, y0), (xa, y0 + h), Role.THIN))
             # the output's level across the span (split spans: the part of the level between)
             full = s.angle if s.angle > 0 else 1.0
-            t0 = _fraction_in(m, s, a, st.origin) / full
-            t1 = t0 + (b - a) / full
+            t0 = m.fraction_in(s, a, st.origin)
+            t1 = t0 + (b - a) * m.turns / full
             la = s.level0 + (s.level1 - s.level0) * t0
             lb = s.level0 + (s.level1 - s.level0) * t1
             pad = 0.2 * h
@@ -80,12 +87,6 @@ def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
                     start=number(math.degrees(st.origin), 1, lang))
     prims.extend(text_block((0.0, n * h + 4.0), title, TITLE_H, w, upward=True))
     return Panel("cycle-rectangular", list(prims))
-
-
-def _fraction_in(m: MemberCycle, s: Span, a: float, origin: float) -> float:
-    """How far into span ``s`` (rad of its own angle) the piece starting at ψ = ``a`` begins."""
-    start = (s.start - m.phase - origin) % (2 * math.pi)
-    return (a - start) % (2 * math.pi) if abs(a - start) > 1e-12 else 0.0
 
 
 def circular_panel(st: CycleView, lang: str, k: float) -> Panel:
@@ -131,6 +132,7 @@ def legend_panel(st: CycleView, lang: str, k: float) -> Panel:
                           f"{number(math.degrees(b), 1, lang)}°"
                           for sp, a, b in m.on_shaft(st.origin))
         lines.append(f"{i}. {m.name}: {spans}")
+    lines.extend(st.lines)
     return Panel("cycle-legend", list(text_block((0.0, 0.0), lines, TEXT_H, WIDTH * k)))
 
 
@@ -139,6 +141,32 @@ def cycle_sheets(st: CycleView, title: str, size: str | None, standard: str | No
     """The rectangular and the circular cycle diagrams and their legend on framed sheets."""
     title = title or message("machine_cycle.sheet.title", lang)
     return fitted_sheets(lambda k: [rectangular_panel(st, lang, k), circular_panel(st, lang, k),
-                                    legend_panel(st, lang, k)],
+                                    legend_panel(st, lang, k),
+                                    *(p for d in st.driven for p in driven_panels(d, lang, k))],
                          size=size or "A3", standard=standard or "iso", language=lang, name=name,
                          fields={"title": title})
+
+
+def driven_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
+    """A cam-driven linkage over the cam's turn: its output, and (loaded) the contact force and
+    the cam torque."""
+    phi = np.append(np.degrees(d.phi[::STEP]), 360.0)
+
+    def closed(v: np.ndarray) -> np.ndarray:
+        return np.append(v[::STEP], v[0])
+    x_axis = Axis("φ", "°", 120.0 * k)
+    out = [diagram_panel(f"driven-{d.name}-output",
+                         message("machine.sheet.output", lang, name=d.name, output=d.output),
+                         [Curve(phi, closed(d.out - d.out[0]), Role.OUTLINE)], x_axis,
+                         Axis("Δθ" if d.rocker else "Δs", "rad" if d.rocker else "m", 40.0 * k),
+                         lang).panel]
+    if d.contact is not None and d.torque is not None:
+        out.append(diagram_panel(f"driven-{d.name}-contact",
+                                 message("machine.sheet.contact", lang, name=d.name),
+                                 [Curve(phi, closed(d.contact), Role.OUTLINE)], x_axis,
+                                 Axis("N", "N", 40.0 * k), lang).panel)
+        out.append(diagram_panel(f"driven-{d.name}-torque",
+                                 message("machine.sheet.torque", lang, name=d.name),
+                                 [Curve(phi, closed(d.torque), Role.OUTLINE)], x_axis,
+                                 Axis("T", "N·m", 40.0 * k), lang).panel)
+    return out
