@@ -157,7 +157,7 @@ def test_contact_force_moment_about_the_cam_centre() -> None:
 
     g = design(cam).geometry
     h = 1e-6
-    P = lambda p: sample(g, p).pitch  # noqa: E731  (cam frame)
+    P = lambda p: sample(g, p).pitch          # the pitch curve in the cam frame
     tangent = (P(r.phi + h) - P(r.phi - h)) / (2 * h)
     n_cam = np.stack([-tangent[:, 1], tangent[:, 0]], axis=1)     # outward: the curve runs cw
     n_cam /= np.hypot(*n_cam.T)[:, None]

@@ -11,9 +11,9 @@ from __future__ import annotations
 import numpy as np
 
 from ..errors import SceneError
+from ..geom.vec import Array
 from ..i18n import Text
 from ..model.mechanism import Mechanism
-from ..geom.vec import Array
 from .graph import Construction, Evaluation
 from .ops import Op
 
@@ -28,7 +28,7 @@ def law_evaluation(c: Construction, mech: Mechanism, theta: Array, omega: Array,
     +x), turning at ``omega`` (rad/s) with ``epsilon`` (rad/s²), all of shape (N,), signed
     counter-clockwise positive. A linear driver cannot be turned by a law (``key``)."""
     drive = mech.drive
-    if drive.linear:
+    if drive.linear or mech.drive2 is not None:
         raise SceneError(Text("machine.error.law_linear", {"kind": drive.kind.value}), key=key)
     theta = np.asarray(theta, dtype=float)
     omega = np.broadcast_to(np.asarray(omega, dtype=float), theta.shape)
@@ -40,7 +40,7 @@ def law_evaluation(c: Construction, mech: Mechanism, theta: Array, omega: Array,
     for step in c.steps.values():
         if step.op is not Op.DRIVE_VELOCITY and step.op is not Op.DRIVE_ACCELERATION:
             continue
-        pivot, tip = (ev0[i] for i in step.inputs)
+        pivot, tip = ev0[step.input("pivot")], ev0[step.input("tip")]
         r = tip - pivot
         if step.op is Op.DRIVE_VELOCITY:
             over[step.id] = omega[:, None] * _perp(r)

@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-from typing import TYPE_CHECKING
 
 from ..drafting.fonts import text_width_mm
 from ..drafting.primitives import Arc, Circle, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
@@ -20,8 +20,8 @@ from .panels import Panel
 
 if TYPE_CHECKING:
     from ..construct.cycle import MemberCycle
-    from ..studies.cam_linkage import CamLinkage
     from ..drafting.primitives import Sheet
+    from ..dynamics.cam_linkage import CamLinkage
 
 WIDTH = 180.0       # mm for 360° of the rectangular diagram
 STRIP = 14.0        # mm, the height of one member's strip

@@ -9,16 +9,16 @@ from fractions import Fraction
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..errors import SceneError
 import numpy as np
 
+from ..errors import SceneError
 from ..i18n import Text, message, number, unit
 from .answers import Keys
 
 if TYPE_CHECKING:
     from ..construct.cycle import MemberCycle
-    from .cam_linkage import CamLinkage
     from ..drafting.primitives import Sheet
+    from ..dynamics.cam_linkage import CamLinkage
     from ..model.cycle import MachineSpec
 
 
@@ -320,9 +320,9 @@ def machine_lines(st: CycleStudy, lang: str) -> list[str]:
                            total=_fraction(sh.from_motor, lang), omega=n(sh.omega, 4),
                            rpm=rpm(sh.omega)))
     if st.shafts:
-        for m, sh, w in zip(st.members, st.member_shafts, st.speeds):
+        for m, on, w in zip(st.members, st.member_shafts, st.speeds):
             out.append(message("machine.report.member_shaft", lang, name=m.name,
-                               shaft=sh or "-", turns=str(m.turns), omega=n(w, 4)))
+                               shaft=on or "-", turns=str(m.turns), omega=n(w, 4)))
     for name, d in st.driven.items():
         ex = d.extremes()
         unit_ = unit("rad" if d.rocker else "m", lang)
