@@ -108,6 +108,7 @@ class PairSpec:
     contour: bool = False                # draw the blocking contour (always with rule CONTOUR)
     tip_land: float = 0.25               # the contour's least top land s_a/m
     eps_min: float = 1.2                 # the contour's least contact ratio ε_α
+    internal: bool = False               # gear 2 is a ring gear (an internal pair; z2 > z1)
 
 
 @dataclass(frozen=True)

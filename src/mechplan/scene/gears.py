@@ -207,7 +207,8 @@ def _ordinary(t: Table) -> OrdinarySpec:
 def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, int] | None
           ) -> PairSpec:
     t.check_keys(("module", "teeth", "pressure_angle", "addendum", "clearance", "shifts",
-                  "shift_rule", "z_min", "contour", "tip_land", "min_contact_ratio"))
+                  "shift_rule", "z_min", "contour", "tip_land", "min_contact_ratio",
+                  "internal"))
     teeth = _ints(t, "teeth", (2,)) or z_from_ordinary
     if teeth is None and ordinary is None:
         raise t.error("teeth", Text("errmsg.scene_gears.missing_z_z"))
@@ -236,7 +237,14 @@ def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, i
         raise t.error(
             "shifts", Text("errmsg.scene_gears.are_chosen_shift", {"value": repr(rule.value)})
         )
-    return PairSpec(module=module, z1=teeth[0], z2=teeth[1], alpha=alpha,
+    internal = _flag(t, "internal")
+    if internal and rule not in (ShiftRule.GIVEN, ShiftRule.CONTOUR):
+        raise t.error("shift_rule", Text("machine.error.internal_rule",
+                                         {"value": repr(rule.value)}))
+    if internal and not teeth[1] > teeth[0] > 0:
+        raise t.error("teeth", Text("machine.error.internal_teeth",
+                                    {"z1": teeth[0], "z2": teeth[1]}))
+    return PairSpec(internal=internal, module=module, z1=teeth[0], z2=teeth[1], alpha=alpha,
                     addendum=t.quantity("addendum", "dimensionless", 1.0, positive=True) or 1.0,
                     clearance=t.quantity("clearance", "dimensionless", 0.25,
                                          nonnegative=True) or 0.0,

@@ -191,4 +191,7 @@ def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:
             panels.append(contour_panel(sol.contour, sol.pair, lang, scale))
             panels.append(sliding_panel(specific_sliding(sol.pair.spec, sol.pair.x1, sol.pair.x2),
                                         sol.pair, lang, scale))
+    if sol.internal is not None:
+        from .gear_internal import internal_panel
+        panels.append(internal_panel(sol.internal, lang, scale))
     return panels

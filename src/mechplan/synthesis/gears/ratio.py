@@ -45,6 +45,8 @@ def train_fraction(sol: GearSolution) -> list[tuple[str, Fraction]]:
         stages.append(("ordinary", Fraction(-sol.ordinary.z6, sol.ordinary.z5)))
     if not stages and sol.pair is not None:
         stages.append(("pair", Fraction(-sol.pair.spec.z2, sol.pair.spec.z1)))
+    if not stages and sol.internal is not None:      # a ring turns with its pinion: + z2/z1
+        stages.append(("pair", Fraction(sol.internal.spec.z2, sol.internal.spec.z1)))
     if not stages:
         raise SceneError(Text("machine.error.no_train"), key="planetary")
     return stages
