@@ -112,6 +112,28 @@ class PairSpec:
 
 
 @dataclass(frozen=True)
+class CompoundGear:
+    """One gear (shift) of a compound set: the input member, the members held, two members
+    locked together (or none) and the output member."""
+
+    name: str
+    input: str
+    output: str
+    held: tuple[str, ...] = ()
+    locked: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class CompoundSpec:
+    """A Simpson or Ravigneaux set: its kind, tooth numbers by name, its gears, the input speed."""
+
+    kind: str                          # "simpson" | "ravigneaux"
+    teeth: dict[str, int]
+    gears: tuple[CompoundGear, ...]
+    input_speed: float = 1.0           # rad/s
+
+
+@dataclass(frozen=True)
 class GearScene:
     """A parsed gear scene."""
 
@@ -121,3 +143,4 @@ class GearScene:
     ordinary: OrdinarySpec | None
     pair: PairSpec | None
     file: str = "<scene>"
+    compound: CompoundSpec | None = None

@@ -114,6 +114,11 @@ class GearStudy:
 
             out.append("")
             out.extend(internal_lines(sol.internal, lang))
+        if sol.compound is not None and sol.scene.compound is not None:
+            from ..sheet.gear_compound import compound_lines
+
+            out.append("")
+            out.extend(compound_lines(sol.scene.compound, sol.compound, lang))
         return "\n".join(out)
 
     def warnings(self, language: str | None = None) -> list[str]:
@@ -189,6 +194,10 @@ class GearStudy:
                 doc["pair"]["contour"] = contour_json(sol.contour, p)
         if sol.internal is not None:
             doc["internal_pair"] = internal_json(sol.internal)
+        if sol.compound is not None and sol.scene.compound is not None:
+            from ..sheet.gear_compound import compound_json
+
+            doc["compound"] = compound_json(sol.scene.compound, sol.compound)
         return doc
 
     def answers(self) -> Keys:

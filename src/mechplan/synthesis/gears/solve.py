@@ -12,6 +12,7 @@ from ...errors import SceneError
 from ...i18n import Text
 from ...model.gears import GearScene, OrdinarySpec, PlanetarySpec
 from . import search, train
+from .compound import Shift
 from .contour import Contour, ContourSpec, blocking_contour
 from .contour_internal import InternalPair
 from .involute import Pair, pair_layout
@@ -67,6 +68,7 @@ class GearSolution:
     pair: Pair | None
     contour: Contour | None = None        # the blocking contour, when the scene asks for it
     internal: InternalPair | None = None  # an internal pair (``[pair] internal = true``)
+    compound: list[Shift] | None = None   # a Simpson or Ravigneaux set's gears
 
     @property
     def total_ratio(self) -> float | None:
@@ -185,8 +187,13 @@ def solve_gears(scene: GearScene) -> GearSolution:
                 if spec.contour:
                     contour = blocking_contour(spec, ContourSpec(spec.tip_land, spec.eps_min))
                 pair = pair_layout(spec, contour.recommended if contour else None)
+        compound = None
+        if scene.compound is not None:
+            from .compound import solve_compound
+
+            compound = solve_compound(scene.compound)
     except SceneError as exc:
         if exc.file:
             raise
         raise SceneError(exc.detail, file=scene.file, key=exc.key) from None
-    return GearSolution(scene, planetary, ordinary, pair, contour, internal)
+    return GearSolution(scene, planetary, ordinary, pair, contour, internal, compound)
