@@ -177,3 +177,22 @@ def test_contact_force_moment_about_the_cam_centre() -> None:
     keep = np.all(np.abs(deg[:, None] - np.array([0, 120, 160, 260, 360])) > 0.5, axis=1)
     assert bare.torque is not None
     assert np.allclose((r.torque - bare.torque)[keep], (q_f * p1)[keep], rtol=0, atol=1e-5)
+
+
+def test_a_swing_the_linkage_cannot_follow_names_near(tmp_path) -> None:
+    """A double-rocker (non-Grashof) whose lever cannot swing 20° from the given near angle."""
+    from mechplan.errors import SceneError
+    from mechplan.studies import solve_file
+
+    lever = LEVER.replace('AB = "80 mm"', 'AB = "200 mm"').replace('DC = "180 mm"',
+                                                                   'DC = "150 mm"').replace(
+        'C = "left of B->D"', 'C = "left of B->D"\nat = "60 deg"')
+    (tmp_path / "cam.toml").write_text(_cam("ccw"), encoding="utf-8")
+    (tmp_path / "lever.toml").write_text(lever, encoding="utf-8")
+    (tmp_path / "m.toml").write_text(
+        'kind = "cycle"\n[[members]]\nname = "cam"\nscene = "cam.toml"\n'
+        '[[members]]\nname = "lever"\nscene = "lever.toml"\ndriven_by = "cam"\n'
+        'near = "35 deg"\n', encoding="utf-8")
+    with pytest.raises(SceneError) as e:
+        solve_file(tmp_path / "m.toml")
+    assert e.value.key == "members[1].near"
