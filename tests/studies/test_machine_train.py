@@ -166,6 +166,8 @@ def test_the_course_machine_template() -> None:
     ('[[members]]\nname = "x"\nscene = "slider.toml"\ndriven_by = "cam"\nshaft = "fast"\n',
      "members[2].driven_by"),                                # a translating follower
     ('[[members]]\nname = "x"\nscene = "slider.toml"\nnear = "10 deg"\n', "members[2].near"),
+    ('[[members]]\nname = "x"\nscene = "slider.toml"\ndriven_by = "cam"\nphase = "5 deg"\n',
+     "members[2].phase"),
     ('[[members]]\nname = "x"\nscene = "slider.toml"\nshaft = "nowhere"\n', "members[2].shaft"),
 ])
 def test_errors_name_their_key(tmp_path: Path, extra: str, key: str) -> None:

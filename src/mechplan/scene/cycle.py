@@ -36,6 +36,8 @@ def parse_machine(text: str, file: str = "<scene>") -> MachineSpec:
             working=Working(t.string("working", "longer", choices=WORKING)),
             driven_by=t.string("driven_by"), near=t.quantity("near", "angle", 0.0) or 0.0,
             shaft=t.string("shaft", choices=tuple(sh.name for sh in shafts) or None)))
+        if t.has("phase") and t.has("driven_by"):
+            raise t.error("phase", Text("machine.error.driven_phase"))
         if t.has("near") and not t.has("driven_by"):
             raise t.error("near", Text("machine.error.near_alone"))
         if t.has("shaft") and not shafts:
