@@ -37,6 +37,11 @@ class CamLinkage:
     generalised: np.ndarray | None   # Q along ψ, N·m
     contact: np.ndarray | None  # the cam's force on the follower along the normal, N
     torque: np.ndarray | None   # the cam torque, N·m
+    #: the linkage's construction and its evaluation at every cam angle (the plans drawn), and
+    #: the cam angle (index) whose plans the sheet draws: the lever's fastest
+    construction: Any = None
+    evaluation: Any = None
+    plan_index: int = 0
 
     def extremes(self) -> dict[str, Any]:
         """Extremes of the output and of the forces: (value, cam angle in degrees)."""
@@ -61,6 +66,10 @@ class CamLinkage:
     def separates(self) -> bool:
         """True when the cam would have to pull the follower somewhere (N < 0)."""
         return self.contact is not None and bool(np.any(self.contact < 0.0))
+
+    def plans(self) -> tuple[Any, Any, int]:
+        """(construction, evaluation, position index) of the plans the sheet draws."""
+        return self.construction, self.evaluation, self.plan_index
 
     def to_json(self) -> dict[str, Any]:
         """Every array every degree, SI units."""

@@ -160,6 +160,7 @@ def driven_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
                          [Curve(phi, closed(d.out - d.out[0]), Role.OUTLINE)], x_axis,
                          Axis("Δθ" if d.rocker else "Δs", "rad" if d.rocker else "m", 40.0 * k),
                          lang).panel]
+    out += plan_panels(d, lang, k)
     if d.contact is not None and d.torque is not None:
         out.append(diagram_panel(f"driven-{d.name}-contact",
                                  message("machine.sheet.contact", lang, name=d.name),
@@ -169,4 +170,34 @@ def driven_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
                                  message("machine.sheet.torque", lang, name=d.name),
                                  [Curve(phi, closed(d.torque), Role.OUTLINE)], x_axis,
                                  Axis("T", "N·m", 40.0 * k), lang).panel)
+    return out
+
+
+def plan_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
+    """The linkage's velocity and acceleration plans at the cam angle where its lever is
+    fastest: the scene's own construction with the lever's ω and ε from the cam's law."""
+    from ..construct.scale import choose_scale
+    from ..construct.step import Kind
+    from ..model.plans import Plan
+    from .panels import vector_plan
+
+    c, ev, i = d.plans()
+    if c is None or ev is None:
+        return []
+    out = []
+    for plan, key in ((Plan.VELOCITY, "machine.sheet.plan_v"),
+                      (Plan.ACCELERATION, "machine.sheet.plan_a")):
+        steps = [s for s in c.of_plan(plan)]
+        if not steps:
+            continue
+        ev.evaluate_all([s.id for s in steps])
+        sizes = [float(np.hypot(*np.asarray(ev.values[s.id])[i])) for s in steps
+                 if s.kind is Kind.POINT and np.asarray(ev.values[s.id]).ndim == 2]
+        sizes = [x for x in sizes if np.isfinite(x)]
+        if not sizes or max(sizes) == 0:
+            continue
+        mu = choose_scale(max(sizes), 60.0 * k)
+        title = message(key, lang, name=d.name,
+                        phi=number(float(np.degrees(d.phi[i])), 1, lang))
+        out.append(vector_plan(c, ev, i, plan, mu, lang, title))
     return out

@@ -15,6 +15,7 @@ pivot); by power T·ω = Q·ψ̇ the cam torque is T = Q·ψ′.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -49,7 +50,10 @@ def cam_linkage(cam: CamSpec, scene: Any, near: float, omega_cam: float, name: s
                          key=key + ".scene")
     loaded = bool(scene.loads) or any(m.mass or m.inertia for m in scene.masses.values())
     plans = ("position", "velocity", "acceleration") + (("force",) if loaded else ())
-    _, c = build(scene, plans)
+    # the lever has an angular acceleration: built with a non-zero ε the plan's equation lists
+    # the tangential component too (its values come from the law at each position)
+    lawful = replace(scene, mechanism=replace(mech, drive=replace(mech.drive, epsilon=1.0)))
+    _, c = build(lawful, plans)
     phi = np.radians(np.arange(0.0, 360.0, STEP_DEG))
     m = motion(cam.phases, cam.stroke, phi)
     sigma = cam.sense
@@ -108,4 +112,5 @@ def cam_linkage(cam: CamSpec, scene: Any, near: float, omega_cam: float, name: s
         torque = generalised * m.s1
     return CamLinkage(name, cam_name, out_name, rocker, omega_cam, phi, m.s, m.s1, m.s2, theta,
                       omega, epsilon, np.asarray(value), np.asarray(rate), np.asarray(acc),
-                      moment, generalised, contact, torque)
+                      moment, generalised, contact, torque, c, ev,
+                      int(np.argmax(np.abs(omega))))
