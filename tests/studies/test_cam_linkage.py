@@ -196,3 +196,91 @@ def test_a_swing_the_linkage_cannot_follow_names_near(tmp_path) -> None:
     with pytest.raises(SceneError) as e:
         solve_file(tmp_path / "m.toml")
     assert e.value.key == "members[1].near"
+
+
+SLIDER_LINKAGE = f"""title = "slider-driven linkage"
+[ground]
+G = ["0 mm", "0 mm"]
+D = ["250 mm", "0 mm"]
+guides.g = {{ through = "G", angle = "90 deg" }}
+[links.1]
+slides = {{ point = "B", on = "g" }}
+[links.2]
+lengths = {{ BC = "260 mm" }}
+points = {{ S2 = "0.5 of B C" }}
+mass = "{MASS} kg"
+centre = "S2"
+J = "{J2} kg*m^2"
+[links.3]
+lengths = {{ DC = "180 mm" }}
+[drive]
+kind = "slider"
+link = "1"
+speed = "1 m/s"
+range = ["40 mm", "80 mm"]
+[assembly]
+C = "left of B->D"
+at = "50 mm"
+[[loads]]
+type = "torque"
+link = "3"
+torque = "{M3} N*m"
+"""
+
+TRANSLATING = """kind = "cam"
+title = "cam"
+[follower]
+motion = "translating"
+contact = "roller"
+roller_radius = "8 mm"
+[motion]
+stroke = "20 mm"
+speed = "300 rpm"
+phases = [
+    { kind = "rise", angle = "120 deg", law = "cycloidal" },
+    { kind = "far_dwell", angle = "40 deg" },
+    { kind = "return", angle = "100 deg", law = "cycloidal" },
+    { kind = "near_dwell", angle = "100 deg" },
+]
+"""
+
+
+def test_a_translating_follower_drives_a_slider() -> None:
+    """q = q_near + s: the rocker's rate against the loop closed by two circles, the cam torque
+    by virtual power (torque on the rocker, the coupler's mass and inertia)."""
+    cam = parse_cam(TRANSLATING, "cam.toml")
+    scene = parse_scene(SLIDER_LINKAGE, "lever.toml")
+    near = 0.05
+    r = cam_linkage(cam, scene, near, cam.omega, "lever", "cam", None, "members[1]")
+    w = cam.omega
+    h = 0.02 / SWING                        # the test's law is the swing's, scaled to 20 mm
+
+    def parts(p: np.ndarray):
+        B = np.stack([np.zeros_like(p), near + h * _psi(p)], axis=-1)
+        d = D - B
+        L = np.hypot(d[..., 0], d[..., 1])
+        a = (BC ** 2 - DC ** 2 + L ** 2) / (2 * L)
+        hh = np.sqrt(BC ** 2 - a ** 2)
+        u = d / L[..., None]
+        C = B + a[..., None] * u + hh[..., None] * np.stack([-u[..., 1], u[..., 0]], axis=-1)
+        return (np.unwrap(np.arctan2(C[..., 1] - D[1], C[..., 0] - D[0])), (B + C) / 2,
+                np.unwrap(np.arctan2(C[..., 1] - B[..., 1], C[..., 0] - B[..., 0])))
+    deg = np.degrees(r.phi)
+    keep = np.all(np.abs(deg[:, None] - np.array([0, 120, 160, 260, 360])) > 0.5, axis=1)
+    phi = r.phi[keep]
+    _, th3_1, _ = _fd(lambda p: parts(p)[0], phi)
+    _, s1, s2 = _fd(lambda p: parts(p)[1], phi)
+    _, t2_1, t2_2 = _fd(lambda p: parts(p)[2], phi)
+    assert r.output == "3"
+    assert np.allclose(r.out_rate[keep], th3_1 * w, rtol=0, atol=1e-6 * np.abs(th3_1 * w).max())
+    power = (MASS * np.einsum("ij,ij->i", s2 * w * w, s1 * w) + J2 * t2_2 * w * w * t2_1 * w
+             - M3 * th3_1 * w)
+    assert r.torque is not None and r.contact is not None
+    assert np.allclose(r.torque[keep], power / w, rtol=0, atol=2e-5 * np.abs(power / w).max())
+    # the contact force along the profile's normal carries Q = F_d along the follower
+    assert r.moment is not None
+    from mechplan.synthesis.cam import design
+    from mechplan.synthesis.cam.profile import sample
+
+    alpha = sample(design(cam).geometry, r.phi).alpha
+    assert np.allclose(r.contact * np.cos(alpha), r.moment, rtol=1e-12, atol=1e-9)

@@ -13,7 +13,7 @@ import numpy as np
 from ..errors import SceneError
 from ..geom.vec import Array
 from ..i18n import Text
-from ..model.mechanism import Mechanism
+from ..model.mechanism import DriverKind, Mechanism
 from .graph import Construction, Evaluation
 from .ops import Op
 
@@ -22,14 +22,25 @@ def _perp(v: Array) -> Array:
     return np.stack([-v[:, 1], v[:, 0]], axis=1)
 
 
+def _slider(c: Construction, q: Array, rate: Array, accel: Array) -> Evaluation:
+    """A driving slider at coordinates ``q`` (m) with the rates ṡ, s̈ of each position."""
+    q = np.asarray(q, dtype=float)
+    over = {sid: np.broadcast_to(np.asarray(v, dtype=float), q.shape).copy()
+            for sid, v in (("vel.rate", rate), ("acc.rate", accel)) if sid in c.steps}
+    return c.evaluate(q, overrides=over)
+
+
 def law_evaluation(c: Construction, mech: Mechanism, theta: Array, omega: Array, epsilon: Array,
                    key: str = "drive") -> Evaluation:
     """Evaluate ``c`` with the crank at absolute angles ``theta`` (rad, counter-clockwise from
     +x), turning at ``omega`` (rad/s) with ``epsilon`` (rad/s²), all of shape (N,), signed
-    counter-clockwise positive. A linear driver cannot be turned by a law (``key``)."""
+    counter-clockwise positive; a driving slider at coordinates ``theta`` (m) with the rates
+    ``omega`` (m/s) and ``epsilon`` (m/s²). A cylinder or a second driver is refused (``key``)."""
     drive = mech.drive
-    if drive.linear or mech.drive2 is not None:
+    if mech.drive2 is not None or drive.kind is DriverKind.CYLINDER:
         raise SceneError(Text("machine.error.law_linear", {"kind": drive.kind.value}), key=key)
+    if drive.kind is DriverKind.SLIDER:
+        return _slider(c, theta, omega, epsilon)
     theta = np.asarray(theta, dtype=float)
     omega = np.broadcast_to(np.asarray(omega, dtype=float), theta.shape)
     epsilon = np.broadcast_to(np.asarray(epsilon, dtype=float), theta.shape)

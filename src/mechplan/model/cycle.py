@@ -30,7 +30,9 @@ class MemberSpec:
     #: a linkage whose crank is the follower lever of this cam member (its name), and the
     #: linkage's crank angle φ (its scene's convention) at the cam's near position, rad
     driven_by: str | None = None
-    near: float = 0.0
+    near: float = 0.0              # rad, or m for a driving slider (``near_length``)
+    near_length: bool = False
+    near_given: bool = False
     shaft: str | None = None       # the shaft it turns with (None: the first shaft, or the motor)
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..errors import SceneError
 from ..i18n import LANGUAGES, Text
 from ..model.cycle import MachineSpec, MemberSpec, Motor, ShaftSpec, Working
 from .document import parse_toml
@@ -30,11 +31,18 @@ def parse_machine(text: str, file: str = "<scene>") -> MachineSpec:
         scene = t.string("scene", required=True)
         assert scene is not None
         phase = t.quantity("phase", "angle", 0.0)
+        near, near_length = 0.0, False
+        if t.has("near"):                # a crank's angle, or a driving slider's coordinate
+            try:
+                near = t.quantity("near", "angle") or 0.0
+            except SceneError:
+                near, near_length = t.quantity("near", "length") or 0.0, True
         members.append(MemberSpec(
             name=t.string("name", str(i + 1)) or str(i + 1), scene=scene,
             phase=phase if phase is not None else 0.0, subject=t.string("output"),
             working=Working(t.string("working", "longer", choices=WORKING)),
-            driven_by=t.string("driven_by"), near=t.quantity("near", "angle", 0.0) or 0.0,
+            driven_by=t.string("driven_by"), near=near, near_length=near_length,
+            near_given=t.has("near"),
             shaft=t.string("shaft", choices=tuple(sh.name for sh in shafts) or None)))
         if t.has("phase") and t.has("driven_by"):
             raise t.error("phase", Text("machine.error.driven_phase"))

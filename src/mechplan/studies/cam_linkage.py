@@ -24,14 +24,15 @@ from ..dynamics.cam_linkage import STEP_DEG, CamLinkage
 from ..errors import SceneError
 from ..i18n import Text
 from ..model.cam import CamSpec, Contact, Motion
-from ..model.mechanism import GROUND
+from ..model.mechanism import GROUND, DriverKind
 
 
 def cam_linkage(cam: CamSpec, scene: Any, near: float, omega_cam: float, name: str,
                 cam_name: str, subject: str | None, key: str) -> CamLinkage:
     """Solve the linkage ``scene`` (a parsed mechanism scene) driven by the follower of ``cam``.
 
-    ``near``: the linkage's crank angle φ (its scene's convention) at the cam's near position;
+    ``near``: the linkage's crank angle φ (its scene's convention) at the cam's near position, or
+    a driving slider's coordinate (m) there (a translating follower);
     ``omega_cam``: the cam's speed (rad/s, > 0). Errors name ``key`` (the member).
     """
     from ..construct.law_drive import law_evaluation
@@ -41,13 +42,15 @@ def cam_linkage(cam: CamSpec, scene: Any, near: float, omega_cam: float, name: s
     from ..synthesis.cam.motion import motion
     from ..synthesis.cam.profile import sample
 
-    if cam.follower.motion is not Motion.OSCILLATING:
-        raise SceneError(Text("machine.error.translating", {"name": name, "cam": cam_name}),
-                         key=key + ".driven_by")
     mech = scene.mechanism
-    if mech.drive.linear or mech.drive2 is not None:
+    sliding = mech.drive.kind is DriverKind.SLIDER
+    if mech.drive.kind is DriverKind.CYLINDER or mech.drive2 is not None:
         raise SceneError(Text("machine.error.law_linear", {"kind": mech.drive.kind.value}),
                          key=key + ".scene")
+    if (cam.follower.motion is Motion.OSCILLATING) == sliding:
+        raise SceneError(Text("machine.error.follower_driver", {
+            "name": name, "cam": cam_name, "motion": cam.follower.motion.value,
+            "kind": mech.drive.kind.value}), key=key + ".driven_by")
     loaded = bool(scene.loads) or any(m.mass or m.inertia for m in scene.masses.values())
     plans = ("position", "velocity", "acceleration") + (("force",) if loaded else ())
     # the lever has an angular acceleration: built with a non-zero ε the plan's equation lists
@@ -56,10 +59,12 @@ def cam_linkage(cam: CamSpec, scene: Any, near: float, omega_cam: float, name: s
     _, c = build(lawful, plans)
     phi = np.radians(np.arange(0.0, 360.0, STEP_DEG))
     m = motion(cam.phases, cam.stroke, phi)
-    sigma = cam.sense
-    theta = c.drive.absolute(np.full_like(m.s, near)) - sigma * m.s
-    omega = -sigma * m.s1 * omega_cam
-    epsilon = -sigma * m.s2 * omega_cam ** 2
+    # a lever turns clockwise as ψ grows under a counter-clockwise cam; a slider moves along
+    # its guide's direction as s grows
+    sigma = 1 if sliding else cam.sense
+    theta = (near + m.s) if sliding else c.drive.absolute(np.full_like(m.s, near)) - sigma * m.s
+    omega = (1 if sliding else -sigma) * m.s1 * omega_cam
+    epsilon = (1 if sliding else -sigma) * m.s2 * omega_cam ** 2
     try:
         ev = law_evaluation(c, mech, theta, omega, epsilon, key + ".scene")
     except SceneError as exc:
@@ -95,15 +100,21 @@ def cam_linkage(cam: CamSpec, scene: Any, near: float, omega_cam: float, name: s
     moment = generalised = contact = torque = None
     dyn = cam.dynamics
     if loaded or dyn is not None:
-        moment = np.asarray(ev[c.balancing_moment()], dtype=float) if loaded else None
-        generalised = -sigma * moment if moment is not None else np.zeros_like(phi)
+        if loaded:
+            moment = np.asarray(ev[c.driving_force() if sliding else c.balancing_moment()],
+                                dtype=float)
+        generalised = ((moment if sliding else -sigma * moment) if moment is not None
+                       else np.zeros_like(phi))
         des = design(cam)
         if dyn is not None and des.dynamics is not None:
             k, f0 = des.dynamics.stiffness, des.dynamics.preload
             generalised = generalised + (dyn.mass * omega_cam ** 2 * m.s2
                                          + dyn.damping * omega_cam * m.s1 + k * m.s + f0 + dyn.load)
         smp = sample(des.geometry, phi)
-        if cam.follower.contact is Contact.FLAT:
+        if sliding:                 # along the follower: N·cos α = Q (a flat face: α = 0)
+            arm = (np.ones_like(phi) if cam.follower.contact is Contact.FLAT
+                   else np.cos(smp.alpha))
+        elif cam.follower.contact is Contact.FLAT:
             pivot = np.array([cam.sense * cam.follower.pivot_distance, 0.0])
             arm = np.hypot(*(smp.follower - pivot).T)
         else:

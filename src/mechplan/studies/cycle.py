@@ -187,8 +187,12 @@ def solve_cycle_text(text: str, file: str, data_dir: str | Path | None = None) -
                 "name": m.name, "cam": m.driven_by or "",
                 "cams": ", ".join(cams) or "-"}), file=file, key=key + ".driven_by")
         j, cam = cams[m.driven_by]
+        from ..model.mechanism import DriverKind
         from .cam_linkage import cam_linkage
 
+        if (sc.mechanism.drive.kind is DriverKind.SLIDER) != m.near_length and m.near_given:
+            raise SceneError(Text("machine.error.near_unit", {"name": m.name}), file=file,
+                             key=key + ".near")
         try:
             d = cam_linkage(cam, sc, m.near, speeds[j], m.name, m.driven_by, m.subject, key)
         except SceneError as exc:
