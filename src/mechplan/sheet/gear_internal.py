@@ -26,7 +26,7 @@ def internal_lines(ip: InternalPair, lang: str) -> list[str]:
                    a_w=number(float(q.a_w) * 1e3, 4, lang), eps=number(float(q.eps), 4, lang),
                    ra1=number(float(q.r_a[0]) * 2e3, 3, lang),
                    ra2=number(float(q.r_a[1]) * 2e3, 3, lang)),
-           message("contour.report.limits", lang, k=number(c.spec.tip_land, 2, lang),
+           message("internal.report.limits", lang, k=number(c.spec.tip_land, 2, lang),
                    eps=number(c.spec.eps_min, 2, lang)),
            message("internal.report.extra", lang),
            chosen_line(c, lang)]
