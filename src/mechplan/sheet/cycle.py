@@ -142,12 +142,15 @@ def cycle_sheets(st: CycleView, title: str, size: str | None, standard: str | No
     title = title or message("machine_cycle.sheet.title", lang)
     return fitted_sheets(lambda k: [rectangular_panel(st, lang, k), circular_panel(st, lang, k),
                                     legend_panel(st, lang, k),
-                                    *(p for d in st.driven for p in driven_panels(d, lang, k))],
+                                    *(p for d in st.driven
+                                      for p in driven_panels(d, lang, k, size or "A3",
+                                                             standard or "iso"))],
                          size=size or "A3", standard=standard or "iso", language=lang, name=name,
                          fields={"title": title})
 
 
-def driven_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
+def driven_panels(d: CamLinkage, lang: str, k: float, size: str = "A3",
+                  standard: str = "iso") -> list[Panel]:
     """A cam-driven linkage over the cam's turn: its output, and (loaded) the contact force and
     the cam torque."""
     phi = np.append(np.degrees(d.phi[::STEP]), 360.0)
@@ -160,7 +163,7 @@ def driven_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
                          [Curve(phi, closed(d.out - d.out[0]), Role.OUTLINE)], x_axis,
                          Axis("Δθ" if d.rocker else "Δs", "rad" if d.rocker else "m", 40.0 * k),
                          lang).panel]
-    out += plan_panels(d, lang, k)
+    out += plan_panels(d, lang, k, size, standard)
     if d.contact is not None and d.torque is not None:
         out.append(diagram_panel(f"driven-{d.name}-contact",
                                  message("machine.sheet.contact", lang, name=d.name),
@@ -173,9 +176,11 @@ def driven_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
     return out
 
 
-def plan_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
-    """The linkage's velocity and acceleration plans at the cam angle where its lever is
-    fastest: the scene's own construction with the lever's ω and ε from the cam's law."""
+def plan_panels(d: CamLinkage, lang: str, k: float, size: str = "A3",
+                standard: str = "iso") -> list[Panel]:
+    """The linkage's velocity and acceleration plans at the cam angle where its follower is
+    fastest: the scene's own construction with the driver's rates from the cam's law; each
+    plan's drawing under a wrapped title, its tables on a panel of their own."""
     from ..construct.scale import choose_scale
     from ..construct.step import Kind
     from ..model.plans import Plan
@@ -184,10 +189,10 @@ def plan_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
     c, ev, i = d.plans()
     if c is None or ev is None:
         return []
-    out = []
+    out: list[Panel] = []
     for plan, key in ((Plan.VELOCITY, "machine.sheet.plan_v"),
                       (Plan.ACCELERATION, "machine.sheet.plan_a")):
-        steps = [s for s in c.of_plan(plan)]
+        steps = list(c.of_plan(plan))
         if not steps:
             continue
         ev.evaluate_all([s.id for s in steps])
@@ -199,5 +204,22 @@ def plan_panels(d: CamLinkage, lang: str, k: float) -> list[Panel]:
         mu = choose_scale(max(sizes), 60.0 * k)
         title = message(key, lang, name=d.name,
                         phi=number(float(np.degrees(d.phi[i])), 1, lang))
-        out.append(vector_plan(c, ev, i, plan, mu, lang, title))
+        panel = vector_plan(c, ev, i, plan, mu, lang, title)
+        # the one-line title wrapped to the drawing's measure; a vector equation written wider
+        # than the plan and its tables is left to the tables (its rows say the same)
+        lo, _, hi, _ = Panel("", [q for q in panel.primitives if not isinstance(q, Text)]
+                             ).bounds()
+        panel.primitives[:] = [q for q in panel.primitives if not (
+            isinstance(q, Text) and (q.string == title or _sticks_out(q, lo, hi)))]
+        x0, _y0, _x1, y1 = panel.bounds()
+        panel.primitives.extend(text_block((x0, y1 + 4.0), title, TEXT_H,
+                                           max(40.0, min(hi - lo, 55.0)), upward=True,
+                                           measure_min=40.0))
+        out.append(panel)
     return out
+
+
+def _sticks_out(t: Text, lo: float, hi: float) -> bool:
+    """A text wider than 40 mm reaching past the drawing's x-extent lo … hi."""
+    x0, _, x1, _ = Panel("", [t]).bounds()
+    return x1 - x0 > 40.0 and (x1 > hi + 0.5 or x0 < lo - 0.5)
