@@ -213,21 +213,17 @@ def _newton(a: np.ndarray, p: np.ndarray, lo: float, hi: float, flo: float, fhi:
     x = hi - _div(fhi * (hi - lo), fhi - flo)
     if not (x > lo and x < hi):
         x = 0.5 * (lo + hi)
-    prev = 0.0
-    for it in range(PURE):
+    prev = step = fx = fp = sx = x
+    for _ in range(PURE):
         fx, fp, sx = _closure(a[0], a[1], a[2], a[3], a[4], a[5], x, l1, l2, l3, d2x, d2y, d3x,
                               d3y, sg)
-        step = _div(fx, fp)
-        xn = x - step
-        tol = STEP_TOL * (1.0 + abs(x))
-        s = abs(step)
-        done = (s * s * s <= tol * prev * prev and s <= 1e-6) or (s <= tol and abs(fx) <= small)
-        fine = xn >= lo and xn <= hi
-        if done and fine:
-            return xn, fx, fp, sx
-        if (not fine) if it < PURE - 1 else True:
-            break
-        x, prev = xn, step
+        prev, step = step, _div(fx, fp)
+        x = x - step
+    tol = STEP_TOL * (1.0 + abs(x))
+    s = abs(step)
+    done = (s * s * s <= tol * prev * prev and s <= 1e-6) or (s <= tol and abs(fx) <= small)
+    if done and x >= lo and x <= hi:
+        return x, fx, fp, sx
     # the safeguarded iteration, from the secant point again
     lo, hi, flo, fhi = lo0, hi0, flo0, fhi0
     x = hi - _div(fhi * (hi - lo), fhi - flo)
