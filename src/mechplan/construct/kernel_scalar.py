@@ -176,9 +176,7 @@ def _angle_plus(g: ScalarGen, s: Step, n: str) -> None:
 
 
 def _circle_circle(g: ScalarGen, s: Step, n: str) -> str:
-    # the centres' distance moves with the driver: the sine squared, as ops/position.py
-    return circle_meet(g, s, n, literal(s.param("r1")), literal(s.param("r2")),
-                       sine_squared=True)
+    return circle_meet(g, s, n, literal(s.param("r1")), literal(s.param("r2")))
 
 
 def circle_meet(g: ScalarGen, s: Step, n: str, r1: str, r2: str,

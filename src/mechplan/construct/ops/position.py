@@ -70,13 +70,9 @@ def angle_plus(step: Step, angle: Array) -> Result:
 
 
 def circle_circle(step: Step, centre1: Array, centre2: Array) -> Result:
-    """Two compass arcs of radii ``r1``, ``r2`` meet (branch ``sigma``). Its sine is the arcs'
-    sine squared: the distance of the centres moves with the driver, and near the arcs' tangency
-    (a dyad's toggle) the rates' relative error grows as 1/sine² (as for a driven length,
-    docs/drivers.md; verified against 60-digit references in tests/construct/test_toggle.py)."""
-    point, gap, sine = meet.circle_circle(centre1, step.param("r1"), centre2, step.param("r2"),
-                                          step.param("sigma"))
-    return point, gap, sine * sine
+    """Two compass arcs of radii ``r1``, ``r2`` meet (branch ``sigma``)."""
+    return meet.circle_circle(centre1, step.param("r1"), centre2, step.param("r2"),
+                              step.param("sigma"))
 
 
 def circle_line(step: Step, centre: Array, guide: Array) -> Result:
