@@ -55,7 +55,8 @@ def _solve(offset):
     return sol, ref.four_bar(0.1, 0.12, 0.1, 0.3, float(theta), 10.0)
 
 
-def _check(sol, exact, checks):
+def _check(sol, exact, checks, slack=1.0):
+    """Each value within ``slack``× its estimate (the policy's 10× for the rates), or flagged."""
     c = sol.construction
     for name, (sid, col) in checks(c).items():
         value = sol.ev[sid][0]
@@ -63,7 +64,7 @@ def _check(sol, exact, checks):
         scale = max(sol.estimate.scale[sid], abs(exact[name]))
         true_error = abs(got - exact[name]) / scale
         estimate = float(sol.estimate.relative(sid)[0])
-        assert true_error <= max(estimate, 1e-15) or estimate > DEFAULT_TOLERANCE, (
+        assert true_error <= slack * max(estimate, 1e-15) or estimate > DEFAULT_TOLERANCE, (
             name, true_error, estimate)
 
 
@@ -89,4 +90,4 @@ def test_near_a_crank_driven_toggle_the_rates_are_within_their_estimates():
         _check(sol, exact, lambda c: {
             "v_C_x": (c.velocity_image("C"), 0), "v_C_y": (c.velocity_image("C"), 1),
             "omega_3": (c.omega("3"), None), "a_C_x": (c.acceleration_image("C"), 0),
-            "epsilon_3": (c.epsilon("3"), None)})
+            "epsilon_3": (c.epsilon("3"), None)}, slack=10.0)
