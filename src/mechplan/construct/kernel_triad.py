@@ -93,25 +93,28 @@ def _value(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y: floa
 
 @_jit
 def _edges(a1x: float, a1y: float, a2x: float, a2y: float, l1: float, l2: float, d2x: float,
-           d2y: float, lo: float) -> np.ndarray:
+           d2y: float, lo: float) -> tuple[float, float, float, float]:
     """The 4 domain edges (NaN: none), put into the turn from ``lo``, as ``triad_solve``."""
-    out = np.empty(4)
     ux, uy = a2x - a1x, a2y - a1y
     p, q = ux * d2x + uy * d2y, uy * d2x - ux * d2y
     rho, alpha = math.hypot(p, q), math.atan2(q, p)
     base = ux * ux + uy * uy + d2x * d2x + d2y * d2y
-    k = 0
-    for e in (l1 + l2, abs(l1 - l2)):
-        x = _div(base - e * e, 2.0 * rho)
-        t = math.acos(x) if -1.0 <= x <= 1.0 else NAN
-        for v in (alpha + t, alpha - t):
-            out[k] = NAN if math.isnan(v) else (v - lo) % TWO_PI + lo
-            k += 1
-    return out
+    x1 = _div(base - (l1 + l2) * (l1 + l2), 2.0 * rho)
+    x2 = _div(base - abs(l1 - l2) * abs(l1 - l2), 2.0 * rho)
+    t1 = math.acos(x1) if -1.0 <= x1 <= 1.0 else NAN
+    t2 = math.acos(x2) if -1.0 <= x2 <= 1.0 else NAN
+    return (_turn(alpha + t1, lo), _turn(alpha - t1, lo), _turn(alpha + t2, lo),
+            _turn(alpha - t2, lo))
 
 
 @_jit
-def _window(a: np.ndarray, p: np.ndarray) -> tuple[float, float, float, float, bool]:
+def _turn(v: float, lo: float) -> float:
+    """v put into the turn from ``lo`` (np.mod's sign), NaN stays NaN."""
+    return NAN if math.isnan(v) else (v - lo) % TWO_PI + lo
+
+
+@_jit
+def _window(a: tuple[float, ...], p: tuple[float, ...]) -> tuple[float, float, float, float, bool]:
     """The window's bracket (lo, hi, f(lo), f(hi), decided) as ``triad_solve._window``."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg, slope, ref = p[0], p[1], p[2], p[3], p[4], p[5], p[6], \
         p[7], p[8], p[9]
@@ -161,7 +164,8 @@ def _window(a: np.ndarray, p: np.ndarray) -> tuple[float, float, float, float, b
 
 
 @_jit
-def _general(a: np.ndarray, p: np.ndarray) -> tuple[float, float, float, float, bool, float]:
+def _general(a: tuple[float, ...], p: tuple[float, ...]
+             ) -> tuple[float, float, float, float, bool, float]:
     """The general cells (the domain's edges as nodes, sorted): the window, then the whole
     turn; (lo, hi, f(lo), f(hi), found, least |f| over the turn) as ``triad_solve._general``."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg, slope, ref = p[0], p[1], p[2], p[3], p[4], p[5], p[6], \
@@ -204,8 +208,8 @@ def _general(a: np.ndarray, p: np.ndarray) -> tuple[float, float, float, float, 
 
 
 @_jit
-def _newton(a: np.ndarray, p: np.ndarray, lo: float, hi: float, flo: float, fhi: float,
-            size: float) -> tuple[float, float, float, float]:
+def _newton(a: tuple[float, ...], p: tuple[float, ...], lo: float, hi: float, flo: float,
+            fhi: float, size: float) -> tuple[float, float, float, float]:
     """θ and f, f′, the arcs' sine at the last point evaluated, as ``triad_solve.newton``."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg = p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]
     small = RESIDUAL_ULPS * EPS * size
@@ -259,8 +263,8 @@ def _triad_angle(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y
                  sigma: float, slope: float, ref: float, size: float
                  ) -> tuple[float, float, float]:
     """θ of the base link, the gap and the sine at one position, as ``triad_solve.solve``."""
-    a = np.array([a1x, a1y, a2x, a2y, a3x, a3y])
-    p = np.array([l1, l2, l3, d2x, d2y, d3x, d3y, sigma, slope, ref])
+    a = (a1x, a1y, a2x, a2y, a3x, a3y)
+    p = (l1, l2, l3, d2x, d2y, d3x, d3y, sigma, slope, ref)
     lo, hi, flo, fhi, found = _window(a, p)
     miss = INF
     if not found:
