@@ -27,7 +27,7 @@ def _lit(x: float) -> str:
 
 def _triad_angle(g: ScalarGen, s: Step, n: str) -> str:
     t = params(s)
-    a = [c for sid in s.inputs for c in g.pt(sid)]
+    a = [c for name in ("a1", "a2", "a3") for c in g.pt(s.input(name))]
     consts = [t.l1, t.l2, t.l3, *t.d2, *t.d3, float(t.sigma), float(t.slope), t.ref, t.size]
     args = ", ".join([*a, *(_lit(v) for v in consts)])
     g.emit(f"_t{n} = _triad_angle({args})", f"{n} = _t{n}[0]", f"_gap{n} = _t{n}[1]",
@@ -39,7 +39,7 @@ def _triad_point(g: ScalarGen, s: Step, n: str) -> str:
     from .kernel_scalar import circle_meet
 
     t = params(s)
-    a1, a2, angle = s.inputs
+    a1, a2, angle = s.input("a1"), s.input("a2"), s.input("angle")
     (x2, y2), th = g.pt(a2), g.name(angle)
     dx, dy = (_lit(v) for v in t.d2)
     g.emit(f"_c = math.cos({th})", f"_s = math.sin({th})",
