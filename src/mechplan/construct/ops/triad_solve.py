@@ -99,6 +99,14 @@ def closure(a1: Array, a2: Array, a3: Array, theta: Array, t: Triad, sigma: int 
     return f, np.stack((bx, by), axis=-1), sine, fp
 
 
+def _sloped(a1: Array, a2: Array, a3: Array, theta: Array, t: Triad
+            ) -> tuple[Array, Array, Array]:
+    """f, the arcs' sine and f′ at θ (:func:`closure` with the slope)."""
+    f, _, sine, fp = closure(a1, a2, a3, theta, t, slope=True)
+    assert fp is not None
+    return f, sine, fp
+
+
 def edges(a1: Array, a2: Array, t: Triad) -> Array:
     """The base angles (N, 4) where the arcs about A_1 and A_2 − R(θ)·d2 touch (NaN: none).
 
@@ -282,8 +290,7 @@ def _pure(a1: Array, a2: Array, a3: Array, c: Cells, t: Triad, out: tuple[Array,
         x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
         prev = step = fx = fp = sx = x
         for _ in range(PURE):
-            fx, _, sx, fp = closure(p1, p2, p3, x, t, slope=True)
-            assert fp is not None
+            fx, sx, fp = _sloped(p1, p2, p3, x, t)
             prev, step = step, fx / fp
             x = x - step
         tol = STEP_TOL * (1.0 + np.abs(x))
@@ -314,8 +321,7 @@ def _guarded(a1: Array, a2: Array, a3: Array, c: Cells, t: Triad, idx: Array,
         for _ in range(ITERATIONS):
             if not idx.size:
                 break
-            fx, _, sx, fp = closure(p1, p2, p3, x, t, slope=True)
-            assert fp is not None
+            fx, sx, fp = _sloped(p1, p2, p3, x, t)
             same = np.sign(fx) == np.sign(fhi)
             hi, fhi = np.where(same, x, hi), np.where(same, fx, fhi)
             lo, flo = np.where(same, lo, x), np.where(same, flo, fx)
