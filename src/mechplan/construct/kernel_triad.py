@@ -195,6 +195,10 @@ def _general(a: tuple[float, ...], p: tuple[float, ...]
         for j in range(k - 1):
             f0, f1 = f[j], f[j + 1]
             if f0 * f1 <= 0 and (f1 - f0) * slope > 0:
+                mid = _value(a[0], a[1], a[2], a[3], a[4], a[5], 0.5 * (nodes[j] + nodes[j + 1]),
+                             l1, l2, l3, d2x, d2y, d3x, d3y, sg)
+                if math.isnan(mid):
+                    continue                   # off the domain between two edges: no root
                 dist = abs(0.5 * (nodes[j] + nodes[j + 1]) - ref)
                 if dist < best:
                     best, blo, bhi, bf0, bf1 = dist, nodes[j], nodes[j + 1], f0, f1

@@ -137,14 +137,17 @@ def brackets(a1: Array, a2: Array, a3: Array, th: Array, t: Triad,
     The grid ``th`` (ascending, spanning at most one turn) gets, per position, the edges of the
     arcs' domain as further nodes (:func:`edges`, put into the same turn), so that no cell
     straddles an edge where the two branches of the arcs join: a root beside an edge is
-    bracketed.
+    bracketed. A cell between two edges whose inside is off the domain (f undefined at its
+    midpoint) gets NaN at its start: no root is sought across it.
     """
     e = _in_turn(edges(a1, a2, t), th[0])
     e[e > th[-1]] = np.nan                                 # outside a window of less than a turn
     nodes = np.sort(np.concatenate((np.broadcast_to(th, (a1.shape[0], th.size)), e), axis=1),
                     axis=1)                                # NaN edges sort last
-    f = closure(a1[:, None, :], a2[:, None, :], a3[:, None, :], nodes, t, sigma)[0]
-    return nodes[:, :-1], nodes[:, 1:], f[:, :-1], f[:, 1:], f
+    p1, p2, p3 = a1[:, None, :], a2[:, None, :], a3[:, None, :]
+    f = closure(p1, p2, p3, nodes, t, sigma)[0]
+    mid = closure(p1, p2, p3, 0.5 * (nodes[:, :-1] + nodes[:, 1:]), t, sigma)[0]
+    return nodes[:, :-1], nodes[:, 1:], np.where(np.isnan(mid), np.nan, f[:, :-1]), f[:, 1:], f
 
 
 def crossing(f0: Array, f1: Array) -> Array:
