@@ -57,9 +57,9 @@ class Triad(NamedTuple):
 
 
 def closure(a1: Array, a2: Array, a3: Array, theta: Array, t: Triad, sigma: int | None = None,
-            slope: bool = False) -> tuple[Array, Array, Array, Array | None]:
-    """f(θ), B_1(θ), the arcs' sine and (``slope``) f′(θ) at base angles θ (points broadcast
-    against θ's shape).
+            slope: bool = False) -> tuple[Array, Array, Array | None]:
+    """f(θ), the arcs' sine and (``slope``) f′(θ) at base angles θ (points broadcast against θ's
+    shape).
 
     The arcs meet by Heron's product form (exact near tangency); a square of the half-chord
     negative by rounding only (at a domain edge taken as a grid node) counts as zero. f′ is the
@@ -96,13 +96,13 @@ def closure(a1: Array, a2: Array, a3: Array, theta: Array, t: Triad, sigma: int 
             bxp = alongp * dx + along * u2y - hp * dy + h * u2x
             byp = alongp * dy - along * u2x + hp * dx + h * u2y
             fp = (rx * (bxp - u3y) + ry * (byp + u3x)) / rr
-    return f, np.stack((bx, by), axis=-1), sine, fp
+    return f, sine, fp
 
 
 def _sloped(a1: Array, a2: Array, a3: Array, theta: Array, t: Triad
             ) -> tuple[Array, Array, Array]:
     """f, the arcs' sine and f′ at θ (:func:`closure` with the slope)."""
-    f, _, sine, fp = closure(a1, a2, a3, theta, t, slope=True)
+    f, sine, fp = closure(a1, a2, a3, theta, t, slope=True)
     assert fp is not None
     return f, sine, fp
 
