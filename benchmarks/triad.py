@@ -1,14 +1,23 @@
-"""Cost of a class III group (triad) against a class II group (dyad) per position, numpy path.
+"""Cost of a class III group (triad) against a class II group (dyad) per position (issue 29).
 
-Run: ``python benchmarks/triad.py [N]``. Each step's evaluation is timed and summed by the group
-it belongs to (position, velocity and acceleration plans), on the six-bar with a triad
-(``six_bar_triad.toml``) and the four-bar (``four_bar.toml``, its RRR dyad); the ratio is the
-triad's time per position over the dyad's. Median of 5 runs. Writes nothing; prints a table
-(recorded in benchmarks/TRIAD_RESULTS.md).
+Run: ``python benchmarks/triad.py [N]`` (default 100 000 positions); writes the section "Class III
+group against a dyad" of ``benchmarks/RESULTS.md``.
+
+- numpy path: each kinematic step's evaluation (position, velocity and acceleration plans) is timed
+  and summed by the group it belongs to, on the six-bar with a triad (``six_bar_triad.toml``) and
+  the four-bar (``four_bar.toml``, its RRR dyad); the triad's closure (``triad_angle``) is shown
+  apart.
+- fused kernel (numba, one thread): the kernel of every point and link on the three plans less the
+  kernel of the crank's point alone, for each mechanism — the group's share of the fused loop.
+
+The machine is shared and noisy: the rounds alternate the two mechanisms, and each ratio is the
+median over rounds of the ratio within a round (both measured under the same load).
 """
 
 from __future__ import annotations
 
+import math
+import os
 import statistics
 import sys
 import time
@@ -17,50 +26,122 @@ from pathlib import Path
 
 import numpy as np
 
+HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+from _common import machine_block, write_section
+
 from mechplan.construct import graph
 from mechplan.scene import load_scene
-from mechplan.solve import build
+from mechplan.solve import build, targets_for
 
-ROOT = Path(__file__).resolve().parents[1] / "templates"
+ROOT = HERE.parent / "templates"
+KINEMATIC = ("position", "velocity", "acceleration")
+ROUNDS = 7
+GROUPS = {"six_bar_triad": "III(2,3,4,5)", "four_bar": "II(2,3)"}
 
 
-def group_times(stem: str, n: int) -> dict[str, float]:
-    """Seconds spent per group evaluating every kinematic step at n positions (median of 5)."""
+def numpy_times(stem: str, phi: np.ndarray) -> dict[str, float]:
+    """Seconds spent evaluating the group's steps at the positions ``phi`` (one run), and the
+    triad's closure alone (key ``closure``)."""
     scene = load_scene(ROOT / f"{stem}.toml")
-    _, c = build(scene, ("position", "velocity", "acceleration"))
-    phi = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
-    runs: list[dict[str, float]] = []
+    _, c = build(scene, KINEMATIC)
+    spent: dict[str, float] = defaultdict(float)
     original = graph.Evaluation._compute
-    for _ in range(5):
-        spent: dict[str, float] = defaultdict(float)
 
-        def timed(self: graph.Evaluation, step: object, spent: dict[str, float] = spent) -> None:
-            t0 = time.perf_counter()
-            original(self, step)  # type: ignore[arg-type]
-            spent[step.group] += time.perf_counter() - t0  # type: ignore[attr-defined]
+    def timed(self: graph.Evaluation, step: object) -> None:
+        t0 = time.perf_counter()
+        original(self, step)  # type: ignore[arg-type]
+        dt = time.perf_counter() - t0
+        spent[step.group] += dt  # type: ignore[attr-defined]
+        if step.op.value == "triad_angle":  # type: ignore[attr-defined]
+            spent["closure"] += dt
 
-        graph.Evaluation._compute = timed  # type: ignore[method-assign]
-        try:
-            ev = c.evaluate(phi)
-            ev.evaluate_all(list(c.steps))
-        finally:
-            graph.Evaluation._compute = original  # type: ignore[method-assign]
-        runs.append(dict(spent))
-    return {g: statistics.median(r.get(g, 0.0) for r in runs) for g in runs[0]}
+    graph.Evaluation._compute = timed  # type: ignore[method-assign]
+    try:
+        ev = c.evaluate(phi)
+        ev.evaluate_all(list(c.steps))
+    finally:
+        graph.Evaluation._compute = original  # type: ignore[method-assign]
+    return {"group": spent[GROUPS[stem]], "closure": spent["closure"]}
+
+
+def kernel_runner(stem: str, phi: np.ndarray, crank_only: bool):
+    """A serial run of the compiled kernel of the mechanism's kinematics (or of its crank's point
+    alone) at ``phi``."""
+    from mechplan.construct.kernel import compile_kernel
+
+    scene = load_scene(ROOT / f"{stem}.toml")
+    _, c = build(scene, KINEMATIC)
+    targets = ([c.position("A"), c.velocity_image("A"), c.acceleration_image("A")] if crank_only
+               else list(targets_for(scene, c, KINEMATIC)))
+    k = compile_kernel(c, targets)
+    n = phi.size
+    block = np.empty((n, k.width), order="F")
+    xs = np.empty((n, len(k.deferred)), order="F")
+    rel = np.empty((1, len(k.targets)))
+    bad = np.empty(n, dtype=np.bool_)
+
+    def run() -> float:
+        t0 = time.perf_counter()
+        k.function(phi, math.inf, block, xs, rel, bad, False)
+        return time.perf_counter() - t0
+    run()                                      # compiled (or loaded from the cache) before timing
+    return run
 
 
 def main() -> None:
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 100_000
-    triad = group_times("six_bar_triad", n)
-    dyad = group_times("four_bar", n)
-    t3 = triad["III(2,3,4,5)"]
-    t2 = dyad["II(2,3)"]
-    print(f"N = {n} positions, numpy path, float64")
-    print("| group | time | per position |")
-    print("|---|---|---|")
-    print(f"| class III III(2,3,4,5) | {t3 * 1e3:.1f} ms | {t3 / n * 1e6:.2f} µs |")
-    print(f"| class II II(2,3) | {t2 * 1e3:.1f} ms | {t2 / n * 1e6:.2f} µs |")
-    print(f"ratio class III / class II: {t3 / t2:.2f}")
+    phi = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    load0 = os.getloadavg()[0]
+    rows: dict[str, list[float]] = defaultdict(list)
+    for _ in range(ROUNDS):
+        t3, t2 = numpy_times("six_bar_triad", phi), numpy_times("four_bar", phi)
+        rows["np3"].append(t3["group"])
+        rows["np2"].append(t2["group"])
+        rows["closure"].append(t3["closure"])
+        rows["np_ratio"].append(t3["group"] / t2["group"])
+    fused = True
+    try:
+        runners = {(s, crank): kernel_runner(s, phi, crank)
+                   for s in GROUPS for crank in (False, True)}
+    except Exception as exc:          # noqa: BLE001 - no numba: the fused rows are left out
+        print(f"fused kernel not measured: {exc}")
+        fused = False
+    if fused:
+        for _ in range(ROUNDS):
+            t = {key: run() for key, run in runners.items()}
+            g3 = t[("six_bar_triad", False)] - t[("six_bar_triad", True)]
+            g2 = t[("four_bar", False)] - t[("four_bar", True)]
+            rows["k3"].append(g3)
+            rows["k2"].append(g2)
+            rows["k_ratio"].append(g3 / g2)
+    med = {k: statistics.median(v) for k, v in rows.items()}
+
+    def us(x: float) -> str:
+        return f"{x / n * 1e6:.2f} µs"
+
+    lines = [("| path | class III III(2,3,4,5) per position | of it the closure | "
+             "class II II(2,3) per position | ratio III / II |"), "|---|---|---|---|---|",
+             (f"| numpy | {us(med['np3'])} | {us(med['closure'])} | {us(med['np2'])} | "
+             f"**{med['np_ratio']:.2f}×** |")]
+    if fused:
+        lines.append(f"| fused kernel (numba, one thread) | {us(med['k3'])} | — | "
+                     f"{us(med['k2'])} | **{med['k_ratio']:.2f}×** |")
+    body = "\n".join([
+        (f"Generated by `python benchmarks/triad.py {n}`: N = {n:,} positions, float64; the "
+        f"median over {ROUNDS} rounds (each round measures both mechanisms; the ratio is taken "
+        "within a round). Load average (1 min) at the start: "
+        f"{load0:.2f}, at the end: {os.getloadavg()[0]:.2f}."), "",
+        machine_block(), "",
+        ("numpy: every kinematic step of the group (position, velocity and acceleration plans) "
+        "timed and summed; the closure is `triad_angle` (the base link's angle). Fused: the "
+        "kernel of every point and link less the kernel of the crank's point, one thread."), "",
+        *lines, "",
+        ("Goal (issue 29): a class III group costs at most 3× a dyad per position in the numpy "
+        "path.")])
+    print(body)
+    write_section("triad", "Class III group against a dyad (issue 29)", body)
 
 
 if __name__ == "__main__":

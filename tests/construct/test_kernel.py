@@ -46,22 +46,8 @@ def _assert_same(targets, ev, est, values, rel):
         assert np.allclose(rel[sid], est.relative(sid), rtol=1e-5, atol=0), sid
 
 
-#: templates whose operations have no scalar form (a class III group): the numpy path solves them
-NUMPY_ONLY = {"six_bar_triad"}
-
-
-def _expect_unsupported(path):
-    from mechplan.construct.kernel_load import KernelUnsupported
-
-    with pytest.raises(KernelUnsupported, match="triad_angle"):
-        _both(load_scene(path), PHI, jit=False)
-
-
 @pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
 def test_generated_code_equals_the_numpy_path(path):
-    if path.stem in NUMPY_ONLY:
-        _expect_unsupported(path)
-        return
     _c, targets, ev, est, (values, rel, bad) = _both(load_scene(path), PHI, jit=False)
     _assert_same(targets, ev, est, values, rel)
     assert not bad.any()
@@ -90,7 +76,7 @@ def test_cannot_build_mask_and_estimates_agree_at_a_singular_position():
         assert np.allclose(rel[sid][idx], est.relative(sid)[idx], rtol=1e-5), sid
 
 
-@pytest.mark.parametrize("name", ["four_bar", "v_engine"])
+@pytest.mark.parametrize("name", ["four_bar", "v_engine", "six_bar_triad"])
 def test_numba_kernel_equals_the_numpy_path(name, tmp_path, monkeypatch):
     pytest.importorskip("numba", reason="the fast extra (numba) is optional")
     monkeypatch.setenv("MECHPLAN_CACHE", str(tmp_path))
@@ -140,9 +126,6 @@ def test_quick_body_decides_like_the_full_body(path):
     # the quick body skips the estimates where a bound proves them small; every status bit and
     # value must be the full body's, at a tolerance that nothing meets (every position falls
     # back), one that everything meets, and one in between
-    if path.stem in NUMPY_ONLY:
-        _expect_unsupported(path)
-        return
     scene = load_scene(path)
     _, c = build(scene, KINEMATIC)
     targets = targets_for(scene, c, KINEMATIC)

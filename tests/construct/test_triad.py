@@ -205,14 +205,24 @@ def test_reactions_balance_every_link(sol):
         assert np.max(np.abs(total)) < 1e-9 * max(1.0, float(np.max(np.abs(vec("R_12")))))
 
 
-def test_fast_path_falls_back_and_agrees():
+def test_fast_path_uses_the_kernel_and_agrees():
+    """The triad's operations have scalar forms: the fused kernel (numba) solves the six-bar, and
+    its plans are the numpy path's to rounding (1e-13 of the accelerations' ~4 m/s²)."""
+    pytest.importorskip("numba", reason="the fast extra (numba) is optional")
+    from mechplan.fast import FastPath
+    from mechplan.solve import build
+
+    scene = load_scene(TEMPLATE)
+    _, c = build(scene, ("position", "velocity", "acceleration"))
+    assert FastPath(scene).prepare(c, ("position", "velocity", "acceleration")) is not None
     m = mechplan.load(TEMPLATE)
     slow = m.solve(np.arange(0.0, 360.0, 15.0), plans=("position", "velocity", "acceleration"),
                    fast=False)
     quick = m.solve(np.arange(0.0, 360.0, 15.0), plans=("position", "velocity", "acceleration"))
     for n in "BCE":
-        assert np.array_equal(slow.r[n], quick.r[n])
-        assert np.array_equal(slow.a[n], quick.a[n])
+        assert np.max(np.abs(slow.r[n] - quick.r[n])) < 1e-16
+        assert np.max(np.abs(slow.v[n] - quick.v[n])) < 1e-15
+        assert np.max(np.abs(slow.a[n] - quick.a[n])) < 1e-13
 
 
 def test_unreachable_positions_name_group_and_angle():
@@ -267,3 +277,31 @@ def test_class_three_with_prismatic_pair_is_named():
     with pytest.raises(TopologyError) as info:
         parse_scene(text, "p.toml")
     assert "class III group" in str(info.value) and "six revolute pairs" in str(info.value)
+
+
+def test_a_cell_off_the_arcs_domain_is_not_taken_for_a_root():
+    """Between two edges of the arcs' domain f is undefined, yet finite (and of opposite signs) at
+    the edges: no root lies there (the solver once returned one, f undefined at it). The root
+    found instead closes the group: the legs' lengths, recomputed at 40 digits from the base
+    link's angle and the arcs' meet, are the given ones."""
+    l = (0.09045508246086377, 0.07994228694915462, 0.12809433166258827)
+    d2, d3 = (0.06797485850911097, 0.02111897436632973), (-0.04067649958658648, 0.08946206686398323)
+    a1 = np.array([[0.012023065270584797, 0.08354146973878265]])
+    a2 = np.array([[0.037996112435555604, 0.1390244910569591]])
+    a3 = np.array([[-0.01437421444377763, 0.03137504688072909]])
+    step = _triad_step(1, -1, 2.0448277433160262, l, d2, d3)
+    theta, gap, sine = (float(x[0]) for x in triad_angle(step, a1, a2, a3))
+    assert math.isfinite(theta) and gap <= 0 and sine > 0
+    th = mp.mpf(theta)
+    c, s = mp.cos(th), mp.sin(th)
+    # B1 on the arc (A1, l1) and on the arc (A2 − R(θ)d2, l2), on the left of A1 → centre
+    cx = mp.mpf(a2[0, 0]) - (c * d2[0] - s * d2[1])
+    cy = mp.mpf(a2[0, 1]) - (s * d2[0] + c * d2[1])
+    dx, dy = cx - mp.mpf(a1[0, 0]), cy - mp.mpf(a1[0, 1])
+    dd = dx * dx + dy * dy
+    along = (mp.mpf(l[0]) ** 2 - mp.mpf(l[1]) ** 2 + dd) / (2 * dd)
+    h = mp.sqrt(mp.mpf(l[0]) ** 2 / dd - along ** 2)
+    bx, by = mp.mpf(a1[0, 0]) + along * dx - h * dy, mp.mpf(a1[0, 1]) + along * dy + h * dx
+    b3x, b3y = bx + (c * d3[0] - s * d3[1]), by + (s * d3[0] + c * d3[1])
+    leg3 = mp.sqrt((b3x - mp.mpf(a3[0, 0])) ** 2 + (b3y - mp.mpf(a3[0, 1])) ** 2)
+    assert abs(leg3 - mp.mpf(l[2])) < 1e-15

@@ -36,9 +36,13 @@ class KernelUnsupported(KernelUnavailable):
 
 
 def _helpers_digest() -> str:
-    """The digest of ``kernel_helpers.py`` (read, not imported: importing it imports numba)."""
-    path = Path(__file__).with_name("kernel_helpers.py")
-    return hashlib.sha256(path.read_bytes()).hexdigest()[:16]
+    """The digest of the helpers every kernel calls: ``kernel_helpers.py``, ``kernel_triad.py``
+    and the triad solver's constants in ``ops/triad_solve.py`` (read, not imported: importing
+    them imports numba)."""
+    here = Path(__file__)
+    text = b"".join((here.parent / name).read_bytes()
+                    for name in ("kernel_helpers.py", "kernel_triad.py", "ops/triad_solve.py"))
+    return hashlib.sha256(text).hexdigest()[:16]
 
 
 #: what every generated source starts with: the shared helpers (``kernel_helpers``, compiled once
@@ -49,6 +53,7 @@ import math
 import numpy as np
 
 from mechplan.construct.kernel_helpers import _below1, _cdiv, _div, _div_nz, _height, _hyp
+from mechplan.construct.kernel_triad import _triad_angle
 
 # helpers {_helpers_digest()}
 prange = range

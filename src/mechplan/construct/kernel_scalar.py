@@ -180,11 +180,13 @@ def _circle_circle(g: ScalarGen, s: Step, n: str) -> str:
 
 
 def circle_meet(g: ScalarGen, s: Step, n: str, r1: str, r2: str,
-                sine_squared: bool = False) -> str:
-    """Two compass arcs about ``centre1``, ``centre2`` of radii ``r1``, ``r2`` (source
-    expressions) meeting at point ``n`` on the step's side; its sine (squared when one radius is
-    driven: the conditioning of a driven length, docs/drivers.md)."""
-    (ax, ay), (bx, by) = g.pt(s.input("centre1")), g.pt(s.input("centre2"))
+                sine_squared: bool = False,
+                centres: tuple[tuple[str, str], tuple[str, str]] | None = None) -> str:
+    """Two compass arcs about ``centre1``, ``centre2`` (or the ``centres`` given as source
+    expressions) of radii ``r1``, ``r2`` (source expressions) meeting at point ``n`` on the
+    step's side; its sine (squared when one radius is driven: the conditioning of a driven
+    length, docs/drivers.md)."""
+    (ax, ay), (bx, by) = centres or (g.pt(s.input("centre1")), g.pt(s.input("centre2")))
     sigma = literal(s.param("sigma"))
     g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", "_d = _hyp(_dx, _dy)",
            f"_gap = max(_d - ({r1} + {r2}), abs({r1} - {r2}) - _d)",
@@ -392,3 +394,8 @@ SCALAR_FORMS.update(DRIVER_FORMS)
 from .kernel_inputs import INPUT_FORMS
 
 SCALAR_FORMS.update(INPUT_FORMS)
+
+# class III groups (triads): the closure's root, the first inner point, a leg's line
+from .kernel_triad_forms import TRIAD_FORMS
+
+SCALAR_FORMS.update(TRIAD_FORMS)
