@@ -124,3 +124,21 @@ def test_a_title_over_another_drawing_titles_that_one():
     lever = [(408.0, 95.0), (470.0, 140.0)]
     assert title_above(lever, texts, others=[cell]) is texts[1]
     assert title_above(lever, texts) is texts[0]           # without the drawing between them
+
+
+def test_linear_driver_sheet_with_plans_of_two_positions(tmp_path):
+    """The excavator's A3 ГОСТ sheet in Russian draws the plans of position 1 (l4 = 1562,5 мм)
+    and, in the grid's first cell, the velocity plan of position 0 (l4 = 1450,0 мм); graded all at
+    the sheet's best position, that plan had 4 segments "wrong". The report names the driver's
+    coordinate, not a crank angle."""
+    scene = load_scene(TEMPLATES / "excavator_boom.toml")
+    comp = compose(solve(scene), "A3", "gost", "ru", name="excavator_boom")
+    dxf = tmp_path / "excavator_boom.dxf"
+    dxf.write_bytes(to_bytes(comp.sheets[0]))
+    report = check(scene, dxf, Options())
+    at = {p.name if isinstance(p.name, str) else p.name.tr("en"): p.phi_deg for p in report.plans}
+    assert report.passed, report.text()
+    assert sorted(set(at.values())) == [pytest.approx(1450.0), pytest.approx(1562.5)], at
+    assert report.coordinate == "l4"
+    text = report.text("ru")
+    assert "l4 = 1562,50 мм" in text and "φ = 1562" not in text

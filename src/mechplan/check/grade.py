@@ -130,6 +130,8 @@ def check(scene: Scene | str | Path, submission: str | Path | Submission,
     if sheet is not None:
         report.label_distance_mm = sheet.label_distance
     report.units = sub.units
+    if scene.mechanism.drive.linear:
+        report.coordinate = c["pos.q"].label
     return report
 
 

@@ -37,7 +37,21 @@ def several_positions(ctx: Ctx) -> bool:
     kinds = [dp.plan for dp in ctx.sheet.plans]
     if len(set(kinds)) < len(kinds):
         return True
-    return len(kinds) > 1 and len(written_angles(ctx.sub.texts)) > 1
+    return len(kinds) > 1 and len(written_positions(ctx)) > 1
+
+
+def written_positions(ctx: Ctx) -> set[float]:
+    """The distinct positions written on a sheet: crank angles (° in [0, 360), to 0.01°), or a
+    linear driver's coordinate ending a title ("Положение 0, l4 = 1450,0 мм", in mm)."""
+    if not ctx.scene.mechanism.drive.linear:
+        return written_angles(ctx.sub.texts)
+    name = ctx.c["pos.q"].label.replace("_", "").casefold()
+    out: set[float] = set()
+    for t in ctx.sub.texts:
+        written = position_written(t.text)
+        if written is not None and written[0].replace("_", "").casefold() == name:
+            out.add(round(written[1], 3))
+    return out
 
 
 #: a crank angle written on a sheet, alone or ending a plan's title: "φ = 60°", "position 11,

@@ -191,6 +191,8 @@ class CheckReport:
     centres_mu: float | None = None
     centres_frame: Text | str = ""
     centres_phi: float | None = None      # their own crank angle when not the sheet's
+    #: a linear driver's coordinate ("l4"): ``phi_deg`` is then its value in mm, not an angle
+    coordinate: str = ""
 
     @property
     def rows(self) -> list[SegmentRow | ValueRow]:
@@ -261,6 +263,7 @@ class CheckReport:
         return _json({
             "mechplan": __version__, "scene": self.scene, "submission": self.submission,
             "kind": self.kind, "phi_deg": self.phi_deg, "phi_source": self.phi_source,
+            "coordinate": self.coordinate or None,
             "units": self.units, "label_distance_mm": self.label_distance_mm,
             "passed": self.passed, "summary": self.summary(), "plans": plans,
             "values": [asdict(v) | verdict_words(v) for v in self.values], "findings": findings,
@@ -280,7 +283,9 @@ class CheckReport:
 
         out = [say("report.title", submission=self.submission),
                say("report.scene", scene=self.scene),
-               say("report.phi", phi=self.phi_deg, source=self.phi_source)
+               (say("report.q", name=self.coordinate, q=self.phi_deg, source=self.phi_source)
+                if self.coordinate else
+                say("report.phi", phi=self.phi_deg, source=self.phi_source))
                if math.isfinite(self.phi_deg) else tr(self.phi_source, lang)]
         if self.units:
             out.append(say("report.units", units=self.units))
@@ -294,7 +299,9 @@ class CheckReport:
             mu = T("report.mu", mu=p.mu, unit=p.mu_unit) if p.mu else T("report.mu_unknown")
             title = capitalize(tr(p.name, lang))
             if p.phi_deg is not None:
-                title = say("report.plan_at", title=title, phi=p.phi_deg)
+                title = (say("report.plan_at_q", title=title, name=self.coordinate, q=p.phi_deg)
+                         if self.coordinate else
+                         say("report.plan_at", title=title, phi=p.phi_deg))
             out.append(say("report.plan_source" if p.mu_source else "report.plan", title=title,
                            mu=mu, source=p.mu_source))
             out.append("   " + say("report.tolerance_anchor" if p.anchor else "report.tolerance",
