@@ -444,9 +444,9 @@ def _one_sheet(panels: Sequence[Panel], area: BaseGeometry,
     when they do not fit one."""
     for columns in (False, True):
         found = paginate(panels, area, columns=columns, bounds=bounds)
-        if not isinstance(found, Panel) and len(found) == 1 and len(found[0][0]) == len(panels):
-            if [p.name for p in found[0][0]] == [p.name for p in panels]:
-                return found[0][1]
+        if not isinstance(found, Panel) and len(found) == 1 \
+                and [p.name for p in found[0][0]] == [p.name for p in panels]:
+            return found[0][1]
     return None
 
 
