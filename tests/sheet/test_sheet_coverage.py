@@ -16,7 +16,7 @@ from mechplan.sheet import compose as compose_module
 from mechplan.sheet import layout
 from mechplan.sheet.fit import table_panel
 from mechplan.sheet.frame import make_frame
-from mechplan.sheet.layout import GAP, GOAL, GROWTH, _grown, paginate
+from mechplan.sheet.layout import GAP, GOAL, GROWTH, grown, paginate
 from mechplan.sheet.panels import Panel
 from mechplan.studies import solve_file
 
@@ -72,20 +72,20 @@ def test_a_drawing_grows_into_its_sheets_free_room_and_stays_on_its_sheet():
     build = _squares([("a", 80.0), ("b", 80.0), ("c", 150.0)])
     groups = paginate(build(1.0), area)
     assert [[p.name for p in g] for g, _ in groups] == [["a", "b"], ["c"]]
-    grown_groups, grown = _grown(build, [k for k in GROWTH if k > 1.0], groups, area)
+    grown_groups, ks = grown(build, [k for k in GROWTH if k > 1.0], groups, area)
     assert [[p.name for p in g] for g, _ in grown_groups] == [["a", "b"], ["c"]]
     # sheet 1: a and b side by side grow, one step at a time each, while they fit side by side
     sides = {p.name: p.bounds()[2] - p.bounds()[0] for p in grown_groups[0][0]}
     for name in "ab":
-        assert sides[name] / 80.0 == pytest.approx(grown[name]) and grown[name] > 1.0
+        assert sides[name] / 80.0 == pytest.approx(ks[name]) and ks[name] > 1.0
     assert sides["a"] + sides["b"] + 2 * GAP <= 300.0 + 1e-9
     for name, other in (("a", "b"), ("b", "a")):        # one step more would not fit
-        bigger = [g for g in GROWTH if g > grown[name] + 1e-9]
+        bigger = [g for g in GROWTH if g > ks[name] + 1e-9]
         assert bigger and bigger[0] * 80.0 + sides[other] + 2 * GAP > 300.0
     # sheet 2: c alone grows up to the height: 150 k + GAP ≤ 200
     c = grown_groups[1][0][0]
     assert c.bounds()[3] - c.bounds()[1] + GAP <= 200.0
-    assert grown["c"] == max(k for k in GROWTH if 150.0 * k + GAP <= 200.0)
+    assert ks["c"] == max(k for k in GROWTH if 150.0 * k + GAP <= 200.0)
 
 
 def test_a_tables_parts_can_be_split_again_into_a_free_room():
