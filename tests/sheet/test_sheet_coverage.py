@@ -16,7 +16,7 @@ from mechplan.sheet import compose as compose_module
 from mechplan.sheet import layout
 from mechplan.sheet.fit import table_panel
 from mechplan.sheet.frame import make_frame
-from mechplan.sheet.layout import GAP, GOAL, GROWTH, grown, paginate
+from mechplan.sheet.layout import GAP, GOAL, GROWTH, grow_into_room, paginate
 from mechplan.sheet.panels import Panel
 from mechplan.studies import solve_file
 
@@ -72,7 +72,7 @@ def test_a_drawing_grows_into_its_sheets_free_room_and_stays_on_its_sheet():
     build = _squares([("a", 80.0), ("b", 80.0), ("c", 150.0)])
     groups = paginate(build(1.0), area)
     assert [[p.name for p in g] for g, _ in groups] == [["a", "b"], ["c"]]
-    grown_groups, ks = grown(build, [k for k in GROWTH if k > 1.0], groups, area)
+    grown_groups, ks = grow_into_room(build, [k for k in GROWTH if k > 1.0], groups, area)
     assert [[p.name for p in g] for g, _ in grown_groups] == [["a", "b"], ["c"]]
     # sheet 1: a and b side by side grow, one step at a time each, while they fit side by side
     sides = {p.name: p.bounds()[2] - p.bounds()[0] for p in grown_groups[0][0]}

@@ -28,7 +28,7 @@ from .kinematics_sheet import (
     split_tables,
     tables_of,
 )
-from .layout import GROWTH, drawing_area, fewest_sheets, framed, grown
+from .layout import GROWTH, drawing_area, fewest_sheets, framed, grow_into_room
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -259,7 +259,7 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
                                                            "value3": str(fixed or 'chosen')}),
             file=scene.path)
     # the diagrams (their scales are their own) grow into their sheet's free room
-    found, _ = grown(lambda k: _diagrams(sol, lang, Room(r.width * k, r.height * k)),
+    found, _ = grow_into_room(lambda k: _diagrams(sol, lang, Room(r.width * k, r.height * k)),
                      [g for g in GROWTH if g > 1.0], found, area)
     groups = [list(zip(p, o)) for p, o in found]
     sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)

@@ -31,8 +31,8 @@ GOAL = 0.55
 ENLARGEMENTS = (2.0, 1.6, 1.25, 1.0, 0.8, 0.6, 0.5)
 #: smaller ones, tried only when a panel fits the sheet at none of :data:`ENLARGEMENTS`
 REDUCTIONS = (0.4, 0.3, 0.25)
-#: the enlargements a drawing is redrawn at to fill its sheet's free room (:func:`grown`): finer
-#: steps than :data:`ENLARGEMENTS`, as one drawing grows alone
+#: the enlargements a drawing is redrawn at to fill its sheet's free room
+#: (:func:`grow_into_room`): finer steps than :data:`ENLARGEMENTS`, as one drawing grows alone
 GROWTH = (0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0)
 #: the sheet sizes, smallest first (the error of a panel too large names the smallest that works)
 SIZES = ("A4", "A3", "A2", "A1", "A0")
@@ -434,7 +434,7 @@ def _layout(build: Callable[[float], Sequence[Panel]], ks: Sequence[float],
     k, groups = found
     grown: dict[str, float] = {}
     if grow:
-        groups, grown = grown(build, [x for x in GROWTH if x > k], groups, area)
+        groups, grown = grow_into_room(build, [x for x in GROWTH if x > k], groups, area)
     return Layout(k, size, standard, [list(zip(p, o)) for p, o in groups], grown)
 
 
@@ -450,8 +450,8 @@ def _one_sheet(panels: Sequence[Panel], area: BaseGeometry,
     return None
 
 
-def grown(build: Callable[[float], Sequence[Panel]], larger: Sequence[float], groups: Groups,
-           area: BaseGeometry) -> tuple[Groups, dict[str, float]]:
+def grow_into_room(build: Callable[[float], Sequence[Panel]], larger: Sequence[float],
+                   groups: Groups, area: BaseGeometry) -> tuple[Groups, dict[str, float]]:
     """Fill each sheet's free room: its drawings redrawn, one step at a time, at the larger
     enlargements ``larger`` (``build(k)``'s panel of the same name) as long as the sheet's panels
     still fit it (repacked in the same order). Tables and texts keep their size; which panels go
@@ -517,8 +517,8 @@ def _too_large(panel: Panel, build: Callable[[float], Sequence[Panel]], ks: Sequ
 def fitted_layout(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
                   language: str, fields: Mapping[str, str], grow: bool = False) -> Layout:
     """The panels ``build(k)`` draws at the :func:`enlargement` that fills the sheet, placed;
-    with ``grow``, each drawing then redrawn larger into its sheet's free room (:func:`grown`:
-    for drawings whose scale nothing outside their panel repeats).
+    with ``grow``, each drawing then redrawn larger into its sheet's free room
+    (:func:`grow_into_room`: for drawings whose scale nothing outside their panel repeats).
 
     Raise :class:`DrawingError` naming the panel and the smallest sheet that takes them when a
     panel is larger than the drawing area even at the smallest enlargement.
