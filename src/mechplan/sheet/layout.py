@@ -475,17 +475,20 @@ def grow_into_room(build: Callable[[float], Sequence[Panel]], larger: Sequence[f
         while changed:
             changed = False
             for i, panel in enumerate(panels):
-                nxt = level[i] + 1
-                if nxt >= len(steps):
+                # the next step that draws it differently (a table or a text: none)
+                nxt = next((j for j in range(level[i] + 1, len(steps))
+                            if panel.name in versions[j]
+                            and bounds(versions[j][panel.name]) != bounds(panel)), None)
+                if nxt is None:
+                    level[i] = len(steps)
                     continue
-                bigger = versions[nxt].get(panel.name)
-                if bigger is None or bounds(bigger) == bounds(panel):
-                    continue                # a table or text: the same at every enlargement
-                trial = panels[:i] + [bigger] + panels[i + 1:]
+                trial = panels[:i] + [versions[nxt][panel.name]] + panels[i + 1:]
                 at = _one_sheet(trial, area, bounds)
-                if at is not None:
-                    panels, offsets, level[i], changed = trial, at, nxt, True
-                    grown[panel.name] = steps[nxt]
+                if at is None:
+                    level[i] = len(steps)   # no larger drawing fits: it stays as it is
+                    continue
+                panels, offsets, level[i], changed = trial, at, nxt, True
+                grown[panel.name] = steps[nxt]
         out.append((panels, list(offsets)))
     return out, grown
 
