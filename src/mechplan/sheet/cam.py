@@ -257,8 +257,8 @@ def cam_sheets(d: CamDesign, summary: list[str], table: tuple[list[str], list[li
     fields = {"title": spec.title}
     fields.update({k: v for k, v in spec.drawing.title_block.items() if v})
     lay = fitted_layout(lambda scale: build(scale)[0], size=size, standard=standard,
-                        language=lang, fields=fields)
-    r = _inversion(d, lang, lay.k)[1] * 1000.0
+                        language=lang, fields=fields, grow=True)
+    r = _inversion(d, lang, lay.k_of("cam-inversion"))[1] * 1000.0
     fields.setdefault("scale", f"1:{significant(r, 6, lang)}" if r >= 1
                       else f"{significant(1 / r, 6, lang)}:1")
     return lay.sheets(language=lang, name=name, fields=fields)

@@ -28,7 +28,7 @@ from .kinematics_sheet import (
     split_tables,
     tables_of,
 )
-from .layout import drawing_area, fewest_sheets, framed
+from .layout import GROWTH, drawing_area, fewest_sheets, framed, grow_into_room
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -169,6 +169,16 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
     return panels + [d for d in (mb, eta) if d is not None]
 
 
+def _diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
+    """The diagrams over φ of the sheets (kinematic, M_b, η) drawn for a room ``r``: the panels
+    the layout may redraw larger (no plan's scale factor depends on them)."""
+    out = kinematic_diagrams(sol, lang, r)
+    if "force" in sol.plans:
+        out += [d for d in (balancing_diagram(sol, lang, r), efficiency_diagram(sol, lang, r))
+                if d is not None]
+    return out
+
+
 def position_at(sol: Solution, k: int, lang: str) -> float | str:
     """φ of position k in degrees (:func:`crank_degrees`), or a linear driver's coordinate as
     written on its plans' titles: "l4 = 1562.5 mm"."""
@@ -235,8 +245,8 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
     base = {"title": scene.title, "scale": scale_field(mu[Plan.POSITION], lang)}
     base.update({k: v for k, v in scene.drawing.title_block.items() if v})
     # one stream in reading order: kinetostatics fills the free room kinematics leaves
-    found = fewest_sheets(panels, packing_area(make_frame(size, standard, base, language=lang)),
-                          split=True)
+    area = packing_area(make_frame(size, standard, base, language=lang))
+    found = fewest_sheets(panels, area, split=True)
     if isinstance(found, Panel):
         x0, y0, x1, y1 = found.bounds()
         fixed = ", ".join(f"{k} = {significant(v, 6, 'en')}"
@@ -248,6 +258,9 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
                                                            "size": str(size),
                                                            "value3": str(fixed or 'chosen')}),
             file=scene.path)
+    # the diagrams (their scales are their own) grow into their sheet's free room
+    found, _ = grow_into_room(lambda k: _diagrams(sol, lang, Room(r.width * k, r.height * k)),
+                     [g for g in GROWTH if g > 1.0], found, area)
     groups = [list(zip(p, o)) for p, o in found]
     sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)
     return Composition(sheets, groups, mu, size, standard)

@@ -119,7 +119,7 @@ def engine_sheets(study: EngineData, size: str, standard: str, language: str,
     fields = {"title": study.scene.engine.title or message("engine.sheet.title", lang)}
     fields.update({k: v for k, v in study.scene.drawing.title_block.items() if v})
     return fitted_sheets(panels, size=size, standard=standard, language=lang, name=name,
-                         fields=fields)
+                         fields=fields, grow=True)
 
 
 def _balance_panels(study: EngineData, lang: str, scale: float) -> list[Panel]:

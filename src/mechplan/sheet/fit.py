@@ -114,8 +114,9 @@ def table_panel(name: str, title: str, cells: Sequence[Sequence[str]],
         parts = _split(rows, w, style, max_w, max_h - _extra_height(panel))
         if len(parts) == 1:
             return [_drawn(name, title, parts[0][0], parts[0][1], style, notes)]
-        return [_drawn(f"{name}.{i + 1}", f"{title} ({i + 1}/{len(parts)})", p, pw, style,
-                       notes if i == len(parts) - 1 else ())
+        # each part can be split again (its rows into a sheet's free room)
+        return [table_panel(f"{name}.{i + 1}", f"{title} ({i + 1}/{len(parts)})", p, style,
+                            widths=pw, notes=notes if i == len(parts) - 1 else ())
                 for i, (p, pw) in enumerate(parts)]
 
     panel.refit = refit

@@ -135,7 +135,7 @@ def gear_sheets(sol: GearSolution, size: str | None, standard: str | None, langu
     title = sol.scene.title or message("gears.sheet.title", lang)
     return fitted_sheets(lambda scale: _panels(sol, lang, scale), size=size or "A1",
                          standard=standard or "iso", language=lang, name=name,
-                         fields={"title": title})
+                         fields={"title": title}, grow=True)
 
 
 def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:

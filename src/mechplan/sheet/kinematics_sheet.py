@@ -179,10 +179,9 @@ def split_tables(panel: Panel, title: str, apart: bool, r: Room) -> list[Panel]:
     if not apart and y1 - y0 <= r.height:
         return [panel]
     tables = tables_of(panel, title)
-    _tx0, ty0, _tx1, ty1 = tables.bounds()
-    if ty1 - ty0 > r.height:        # taller than a sheet: in parts of whole tables
-        keep = [p for p in tables.primitives if not (isinstance(p, Text) and p.string == title)]
-        tables.refit = lambda w, h: _tables_in_parts(keep, tables.name, title, h)
+    # taller than a sheet, or beside a plan that leaves room under it: in parts of whole tables
+    keep = [p for p in tables.primitives if not (isinstance(p, Text) and p.string == title)]
+    tables.refit = lambda w, h: _tables_in_parts(keep, tables.name, title, h)
     return [drawing_of(panel)] + ([tables] if tables.primitives else [])
 
 
@@ -223,9 +222,12 @@ def _tables_in_parts(keep: list[Primitive | Table], name: str, title: str,
     out = []
     for i, prims in enumerate(parts):
         x0, _y0, _x1, y1 = Panel("", prims).bounds()
-        panel = Panel(f"{name}.{i + 1}" if len(parts) > 1 else name,
-                      [moved(p, -x0, -y1) for p in prims])
-        panel.primitives.append(Text((0.0, 3.0), title, TITLE_H - 1.5))
+        at = [moved(p, -x0, -y1) for p in prims]
+        part = f"{name}.{i + 1}" if len(parts) > 1 else name
+        panel = Panel(part, [*at, Text((0.0, 3.0), title, TITLE_H - 1.5)])
+        if len(parts) > 1 and sum(isinstance(p, Table) for p in at) > 1:   # split again
+            panel.refit = (lambda w, h, at=at, part=part:
+                           _tables_in_parts(at, part, title, h))
         out.append(panel)
     return out
 

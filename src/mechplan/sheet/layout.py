@@ -31,6 +31,9 @@ GOAL = 0.55
 ENLARGEMENTS = (2.0, 1.6, 1.25, 1.0, 0.8, 0.6, 0.5)
 #: smaller ones, tried only when a panel fits the sheet at none of :data:`ENLARGEMENTS`
 REDUCTIONS = (0.4, 0.3, 0.25)
+#: the enlargements a drawing is redrawn at to fill its sheet's free room
+#: (:func:`grow_into_room`): finer steps than :data:`ENLARGEMENTS`, as one drawing grows alone
+GROWTH = (0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0)
 #: the sheet sizes, smallest first (the error of a panel too large names the smallest that works)
 SIZES = ("A4", "A3", "A2", "A1", "A0")
 
@@ -314,12 +317,18 @@ def coverage(placed: Sequence[tuple[Panel, tuple[float, float]]], area: BaseGeom
 
 @dataclass(frozen=True)
 class Layout:
-    """Panels drawn at enlargement ``k`` and placed on sheets: per sheet, (panel, offset) pairs."""
+    """Panels drawn at enlargement ``k`` and placed on sheets: per sheet, (panel, offset) pairs;
+    ``grown``: the panels redrawn at a larger enlargement to fill their sheet (name → k)."""
 
     k: float
     size: str
     standard: str
     placements: list[list[tuple[Panel, tuple[float, float]]]]
+    grown: Mapping[str, float] = dataclasses.field(default_factory=dict)
+
+    def k_of(self, name: str) -> float:
+        """The enlargement the panel ``name`` is drawn at."""
+        return self.grown.get(name, self.k)
 
     def sheets(self, *, language: str, name: str, fields: Mapping[str, str]) -> list[Sheet]:
         """The framed sheets ``name``, ``name-2``, … with their numbers in the title block."""
@@ -374,22 +383,23 @@ def refitted(panels: Sequence[Panel], area: BaseGeometry) -> list[Panel]:
     return out
 
 
-def _flow(panels: Sequence[Panel], area: BaseGeometry) -> Groups | Panel:
+def _flow(panels: Sequence[Panel], area: BaseGeometry, split: bool = False) -> Groups | Panel:
     """The panels, in order (refitted to the area), packed sheet after sheet: (panels, offsets)
-    per sheet — or the first panel that does not fit on a sheet alone."""
-    return fewest_sheets(refitted(panels, area), area)
+    per sheet — or the first panel that does not fit on a sheet alone (``split``: see
+    :func:`paginate`)."""
+    return fewest_sheets(refitted(panels, area), area, split=split)
 
 
 def _search(build: Callable[[float], Sequence[Panel]], area: BaseGeometry,
-            ks: Sequence[float] = ENLARGEMENTS,
-            reductions: Sequence[float] = REDUCTIONS) -> tuple[float, Groups] | Panel:
+            ks: Sequence[float] = ENLARGEMENTS, reductions: Sequence[float] = REDUCTIONS,
+            split: bool = False) -> tuple[float, Groups] | Panel:
     """The largest of ``ks`` at which the panels take one sheet, else the fewest sheets; when a
     panel fits at none of ``ks``, the largest of ``reductions`` at which all fit. Else the panel
     that does not fit at the smallest enlargement."""
     best: tuple[float, Groups] | None = None
     failed: Panel | None = None
     for k in ks:
-        groups = _flow(build(k), area)
+        groups = _flow(build(k), area, split)
         if isinstance(groups, Panel):
             failed = groups                    # a panel alone is larger than the sheet
             continue
@@ -400,7 +410,7 @@ def _search(build: Callable[[float], Sequence[Panel]], area: BaseGeometry,
     if best is not None:
         return best
     for k in reductions:
-        groups = _flow(build(k), area)
+        groups = _flow(build(k), area, split)
         if not isinstance(groups, Panel):
             return k, groups
         failed = groups
@@ -415,14 +425,72 @@ def _area(size: str, standard: str, language: str, fields: Mapping[str, str]) ->
 
 def _layout(build: Callable[[float], Sequence[Panel]], ks: Sequence[float],
             reductions: Sequence[float], *, size: str, standard: str, language: str,
-            fields: Mapping[str, str]) -> Layout:
+            fields: Mapping[str, str], grow: bool = False) -> Layout:
     area = _area(size, standard, language, fields)
-    found = _search(build, area, ks, reductions)
+    found = _search(build, area, ks, reductions, split=grow)
     if isinstance(found, Panel):
         raise _too_large(found, build, ks, reductions, area, size=size, standard=standard,
                          language=language, fields=fields)
     k, groups = found
-    return Layout(k, size, standard, [list(zip(p, o)) for p, o in groups])
+    grown: dict[str, float] = {}
+    if grow:
+        groups, grown = grow_into_room(build, [x for x in GROWTH if x > k], groups, area)
+    return Layout(k, size, standard, [list(zip(p, o)) for p, o in groups], grown)
+
+
+def _one_sheet(panels: Sequence[Panel], area: BaseGeometry,
+               bounds: Bounds) -> list[tuple[float, float]] | None:
+    """The offsets of the panels packed on one sheet (rows first, else columns first), or None
+    when they do not fit one."""
+    for columns in (False, True):
+        found = paginate(panels, area, columns=columns, bounds=bounds)
+        if not isinstance(found, Panel) and len(found) == 1 \
+                and [p.name for p in found[0][0]] == [p.name for p in panels]:
+            return found[0][1]
+    return None
+
+
+def grow_into_room(build: Callable[[float], Sequence[Panel]], larger: Sequence[float],
+                   groups: Groups, area: BaseGeometry) -> tuple[Groups, dict[str, float]]:
+    """Fill each sheet's free room: its drawings redrawn, one step at a time, at the larger
+    enlargements ``larger`` (``build(k)``'s panel of the same name) as long as the sheet's panels
+    still fit it (repacked in the same order). Tables and texts keep their size; which panels go
+    on which sheet does not change (so no later panel fits an earlier sheet's room). Return the
+    sheets and the enlargement of every panel redrawn (name → k)."""
+    steps = sorted(larger)
+    if not steps:
+        return groups, {}
+    versions: list[dict[str, Panel]] = []
+    for k in steps:
+        drawn = refitted(build(k), area)
+        names = [p.name for p in drawn]
+        versions.append({p.name: p for p in drawn if names.count(p.name) == 1})
+    bounds = Bounds()
+    grown: dict[str, float] = {}
+    out: Groups = []
+    for panels, offsets in groups:
+        panels = list(panels)
+        level = [-1] * len(panels)          # index into ``steps``; -1: as found
+        changed = True
+        while changed:
+            changed = False
+            for i, panel in enumerate(panels):
+                # the next step that draws it differently (a table or a text: none)
+                nxt = next((j for j in range(level[i] + 1, len(steps))
+                            if panel.name in versions[j]
+                            and bounds(versions[j][panel.name]) != bounds(panel)), None)
+                if nxt is None:
+                    level[i] = len(steps)
+                    continue
+                trial = panels[:i] + [versions[nxt][panel.name]] + panels[i + 1:]
+                at = _one_sheet(trial, area, bounds)
+                if at is None:
+                    level[i] = len(steps)   # no larger drawing fits: it stays as it is
+                    continue
+                panels, offsets, level[i], changed = trial, at, nxt, True
+                grown[panel.name] = steps[nxt]
+        out.append((panels, list(offsets)))
+    return out, grown
 
 
 def _too_large(panel: Panel, build: Callable[[float], Sequence[Panel]], ks: Sequence[float],
@@ -450,14 +518,16 @@ def _too_large(panel: Panel, build: Callable[[float], Sequence[Panel]], ks: Sequ
 
 
 def fitted_layout(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
-                  language: str, fields: Mapping[str, str]) -> Layout:
-    """The panels ``build(k)`` draws at the :func:`enlargement` that fills the sheet, placed.
+                  language: str, fields: Mapping[str, str], grow: bool = False) -> Layout:
+    """The panels ``build(k)`` draws at the :func:`enlargement` that fills the sheet, placed;
+    with ``grow``, each drawing then redrawn larger into its sheet's free room
+    (:func:`grow_into_room`: for drawings whose scale nothing outside their panel repeats).
 
     Raise :class:`DrawingError` naming the panel and the smallest sheet that takes them when a
     panel is larger than the drawing area even at the smallest enlargement.
     """
     return _layout(build, ENLARGEMENTS, REDUCTIONS, size=size, standard=standard,
-                   language=language, fields=fields)
+                   language=language, fields=fields, grow=grow)
 
 
 def enlargement(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
@@ -470,7 +540,9 @@ def enlargement(build: Callable[[float], Sequence[Panel]], *, size: str, standar
 
 
 def fitted_sheets(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
-                  language: str, name: str, fields: Mapping[str, str]) -> list[Sheet]:
-    """Panels drawn at the :func:`enlargement` that fills the sheet, on framed sheets."""
-    return fitted_layout(build, size=size, standard=standard, language=language,
-                         fields=fields).sheets(language=language, name=name, fields=fields)
+                  language: str, name: str, fields: Mapping[str, str],
+                  grow: bool = False) -> list[Sheet]:
+    """Panels drawn at the :func:`enlargement` that fills the sheet, on framed sheets (``grow``:
+    see :func:`fitted_layout`)."""
+    return fitted_layout(build, size=size, standard=standard, language=language, fields=fields,
+                         grow=grow).sheets(language=language, name=name, fields=fields)

@@ -119,8 +119,9 @@ def synthesis_sheets(d: LinkageDesign, protocol: list[str], results: list[str],
                 text_panel("synthesis-results", message("synth.sheet.results", lang), results)]
 
     all_fields = {"title": title, **{k: v for k, v in fields.items() if v}}
-    lay = fitted_layout(build, size=size, standard=standard, language=lang, fields=all_fields)
-    r = construction_scale(d, lay.k) * 1000.0
+    lay = fitted_layout(build, size=size, standard=standard, language=lang, fields=all_fields,
+                        grow=True)
+    r = construction_scale(d, lay.k_of("synthesis-construction")) * 1000.0
     all_fields.setdefault("scale", f"1:{significant(r, 6, lang)}" if r >= 1
                           else f"{significant(1 / r, 6, lang)}:1")
     return lay.sheets(language=lang, name=name, fields=all_fields)
