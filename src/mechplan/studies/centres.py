@@ -168,6 +168,11 @@ def centres_json(sol: Solution) -> dict[str, Any]:
         "agreement_max": float(finite.max()) if finite.size else None,
         "positions": per_position,
     }
+    from .centre_velocity import drawn_json
+
+    drawn = drawn_json(sol)
+    if drawn is not None:
+        out["drawn"] = drawn
     if an.centrodes:
         out["centrodes"] = {lid: {"phi_deg": [float(x) for x in np.degrees(phi)],
                                   "fixed": [_point_or_none(p) for p in fixed],

@@ -95,6 +95,9 @@ def position_lines(an: CentresAnalysis, sol: Solution, k: int, lang: str) -> lis
     if math.isfinite(agree):
         out.append("    " + message("centres.agreement", lang,
                                     value=scientific(max(agree, 0.0), 2, lang)))
+    from .centre_velocity import report_lines
+
+    out += report_lines(sol, k, lang)
     out += _poles(an, k, lang)
     return out
 

@@ -201,13 +201,12 @@ def _reach(b: _Builder, j: str, m: str, kind: int, lt: tuple[str, ...]) -> None:
         out.v[first] = b.velocity(f"ic.v.{first}", Op.IC_ARC_VELOCITY,
                                   (h0j, carried, v_c, b.r(first)), f"v_{first}",
                                   (f"{first}′", tok0j, first))
-        ref, ref_at, ref_name = out.v[first], b.r(first), first
-    else:
-        ref, ref_at, ref_name = v_i, at_i, tok
-    out.omega[j] = b._add(f"ic.omega.{j}", Op.IC_POLE_OMEGA, (h0j, ref_at, ref), Plan.VELOCITY,
-                          Kind.SCALAR, Role.RESULT, f"ω{j}", (ref_name, tok0j, j))
+    # МЦС: ω_j from the common centre (its distance from I_0j vanishes only where the
+    # construction is indeterminate), then every other point of j
+    out.omega[j] = b._add(f"ic.omega.{j}", Op.IC_POLE_OMEGA, (h0j, at_i, v_i), Plan.VELOCITY,
+                          Kind.SCALAR, Role.RESULT, f"ω{j}", (tok, tok0j, j))
     for x in todo[1:]:
-        out.v[x] = b.velocity(f"ic.v.{x}", Op.IC_POLE_VELOCITY, (h0j, out.omega[j], b.r(x), ref),
+        out.v[x] = b.velocity(f"ic.v.{x}", Op.IC_POLE_VELOCITY, (h0j, out.omega[j], b.r(x), v_i),
                               f"v_{x}", (x, tok0j, j))
     out.routes.append(Route(j, m, ordered(lt, m, j), kind, first))
 
