@@ -5,81 +5,34 @@ and as measured on a drawing), the report's protocol and the JSON's ``drawn`` en
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..construct.centre_kinematics import ByCentres
+from ..construct.centre_drawn import DrawnVelocities, drawn
+from ..construct.centre_drawn import measured_agreement as _measured
 from ..construct.centre_protocol import measure, names, protocol
-from ..construct.graph import Evaluation
-from ..construct.plans.centre_velocity import (
-    KENNEDY,
-    PIN,
-    CentreVelocity,
-    build_centre_velocity,
-    centre_token,
-    crank_driven,
-    evaluate_centre_velocity,
-)
-from ..geom.vec import Array
+from ..construct.plans.centre_velocity import KENNEDY, PIN, centre_token
 from ..i18n import message, scientific, significant
 from ..model.plans import Plan
-from .centres import agreement, analyse_centres
+from .centres import analyse_centres
 
 if TYPE_CHECKING:
     from ..solve import Solution
 
 
-@dataclass
-class DrawnVelocities:
-    """The construction, its evaluation and the agreement (n,) of its exact values with the
-    velocity plan (relative, as ``centres.agreement``)."""
-
-    cv: CentreVelocity
-    ev: Evaluation
-    agreement: Array
-
-    def by_centres(self) -> ByCentres:
-        """ω and v as found by the construction."""
-        return ByCentres({lk: self.ev[s] for lk, s in self.cv.omega.items()},
-                         {p: self.ev[s] for p, s in self.cv.v.items()})
-
-
 def drawn_velocities(sol: Solution) -> DrawnVelocities | None:
-    """The drawn construction of a solution (None for a driver that is not a crank); memoised."""
-    if "centres_drawn" in sol.extras:
-        return sol.extras["centres_drawn"]  # type: ignore[no-any-return]
-    mech, c, ev = sol.scene.mechanism, sol.construction, sol.ev
-    out = None
-    if crank_driven(mech):
-        cs = analyse_centres(sol).centres
-        cv = build_centre_velocity(mech, cs.diagram, cs.length)
-        dev = evaluate_centre_velocity(cv, cs, lambda p: ev[c.position(p)],
-                                       {mech.drive.link: ev[c.omega(mech.drive.link)]})
-        out = DrawnVelocities(cv, dev, np.zeros(ev.n))
-        out.agreement = agreement(c, ev, mech, out.by_centres())
-    sol.extras["centres_drawn"] = out
-    return out
+    """The drawn construction of a solution (None for a driver that is not a crank); memoised
+    in ``sol.extras`` (the sheet reads the same entry)."""
+    if "centres_drawn" not in sol.extras:
+        sol.extras["centres_drawn"] = drawn(sol.construction, sol.ev, sol.scene.mechanism,
+                                            analyse_centres(sol).centres)
+    return sol.extras["centres_drawn"]  # type: ignore[no-any-return]
 
 
 def measured_agreement(sol: Solution, dv: DrawnVelocities, k: int, mu_v: float) -> float:
-    """The largest difference (over the largest |v| of the plan) of the arrows measured to
-    0.1 mm at μv from the velocity plan at position k."""
-    c, ev = sol.construction, sol.ev
-    worst, scale = 0.0, 0.0
-    pairs = []
-    for p, sid in dv.cv.v.items():
-        if c.has_result("v", p):
-            plan_v = ev[c.velocity_image(p)][k]
-            scale = max(scale, float(np.hypot(*plan_v)))
-            pairs.append((dv.ev[sid][k], plan_v))
-    for v, plan_v in pairs:
-        m = measure(v, mu_v)
-        speed = float(np.hypot(*v))
-        drawn = v * (m.value / speed) if speed > 0 else v
-        worst = max(worst, float(np.hypot(*(drawn - plan_v))))
-    return worst / scale if scale > 0 else 0.0
+    """The arrows measured at μv against the velocity plan at position k (relative)."""
+    return _measured(sol.construction, sol.ev, dv, k, mu_v)
 
 
 def scales_of(sol: Solution) -> tuple[float, float]:

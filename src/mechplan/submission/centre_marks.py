@@ -107,6 +107,9 @@ def centre_entries(entries: Sequence[Entry],
 
 #: a table row's cells stand on one line to the right of its name, within this many mm
 ROW_REACH_MM = 80.0
+#: ... its first cell within this many mm (a label of a drawing with numbers of another panel
+#: far to its right — a circle diagram's order — is no row)
+FIRST_CELL_MM = 40.0
 _NUMBER = re.compile(r"^[+\-−]?\d+(?:[.,]\d+)?$")
 _ANGLE = re.compile(r"([+\-−]?\d+(?:[.,]\d+)?)\s*°")
 
@@ -138,7 +141,8 @@ def _rows(sub: Submission, links: Sequence[str]) -> list[tuple[SheetText, Centre
         near = np.flatnonzero((dy < 0.6 * max(t.height, 1e-9)) & (dx > 0.0) &
                               (dx < ROW_REACH_MM))
         row = sorted((sub.texts[j] for j in near if j != i), key=lambda c: c.centre[0])
-        if len(row) >= 2 and (says_infinity(row[0].text) or
+        first = row[0].centre[0] - t.centre[0] if row else math.inf
+        if len(row) >= 2 and first <= FIRST_CELL_MM and (says_infinity(row[0].text) or
                               all(_NUMBER.match(c.text.strip()) for c in row[:2])):
             out.append((t, name, row))
     return out

@@ -24,7 +24,7 @@ from ..graph import Construction, DriveMap, Evaluation
 from ..ops import Op
 from ..segments import Segment, SegmentKind
 from ..step import Kind, Role, Step
-from .centres import CircleDiagram, Centres, label, ordered
+from .centres import Centres, CircleDiagram, label, ordered
 
 #: how a link is reached from a known one through their common centre (the preferred first)
 PIN, KENNEDY, SLIDE = 0, 1, 2
@@ -184,23 +184,23 @@ def _reach(b: _Builder, j: str, m: str, kind: int, lt: tuple[str, ...]) -> None:
         h0m, tok0m = b.h(GROUND, m), b.tok(GROUND, m)
         a = next(x for x in b.points(m) if x in out.v)
         carried = b._add(f"ic.c.{a}.{j}", Op.IC_CARRY, (h0m, b.r(a), b.h(m, j)), Plan.POSITION,
-                         Kind.POINT, Role.AUXILIARY, f"{a}′", (a, tok0m, tok))
+                         Kind.POINT, Role.AUXILIARY, f"{a}*", (a, tok0m, tok))
         v_c = b.velocity(f"ic.vc.{a}.{j}", Op.IC_ARC_VELOCITY,
-                         (h0m, b.r(a), out.v[a], carried), f"v_{a}′", (a, tok0m, f"{a}′"),
+                         (h0m, b.r(a), out.v[a], carried), f"v_{a}*", (a, tok0m, f"{a}*"),
                          Role.AUXILIARY)
         v_i = b.velocity(f"ic.vi.{m}.{j}", Op.IC_SIMILAR_VELOCITY, (h0m, carried, v_c, at_i),
-                         f"v_{tok}", (f"{a}′", tok0m, tok))
+                         f"v_{tok}", (f"{a}*", tok0m, tok))
     first = todo[0] if todo else None
     if first is not None:
         carried = b._add(f"ic.c.{first}.{j}", Op.IC_CARRY, (h0j, b.r(first), b.h(m, j)),
-                         Plan.POSITION, Kind.POINT, Role.AUXILIARY, f"{first}′",
+                         Plan.POSITION, Kind.POINT, Role.AUXILIARY, f"{first}*",
                          (first, tok0j, tok))
         v_c = b.velocity(f"ic.vc.{first}.{j}", Op.IC_SIMILAR_VELOCITY,
-                         (h0j, at_i, v_i, carried), f"v_{first}′", (tok, tok0j, f"{first}′"),
+                         (h0j, at_i, v_i, carried), f"v_{first}*", (tok, tok0j, f"{first}*"),
                          Role.AUXILIARY)
         out.v[first] = b.velocity(f"ic.v.{first}", Op.IC_ARC_VELOCITY,
                                   (h0j, carried, v_c, b.r(first)), f"v_{first}",
-                                  (f"{first}′", tok0j, first))
+                                  (f"{first}*", tok0j, first))
     # МЦС: ω_j from the common centre (its distance from I_0j vanishes only where the
     # construction is indeterminate), then every other point of j
     out.omega[j] = b._add(f"ic.omega.{j}", Op.IC_POLE_OMEGA, (h0j, at_i, v_i), Plan.VELOCITY,
