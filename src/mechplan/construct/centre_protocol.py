@@ -42,7 +42,7 @@ def names(text: str, sym: str) -> str:
 
 
 def _centre_of(step: Step) -> str:
-    return step.inputs[0]
+    return step.input("centre")
 
 
 def _radius_mm(ev: Evaluation, step: Step, point_id: str, k: int, mu_l: float) -> float:
@@ -66,8 +66,7 @@ def sentence(cv: CentreVelocity, step: Step, ev: Evaluation, k: int, lang: str, 
     else:
         meas = measure(value, mu_v)
         v = f"{number(meas.exact, 3, lang)} {unit('m/s', lang)}"
-    centre_inf = bool(ev[step.inputs[0]][k][2] == 0.0) if step.inputs and \
-        ev[step.inputs[0]].ndim == 2 and ev[step.inputs[0]].shape[1] == 3 else False
+    centre_inf = "centre" in step.op.inputs and bool(ev[_centre_of(step)][k][2] == 0.0)
     op = step.op.value
     if centre_inf and op in ("ic_arc_velocity", "ic_similar_velocity", "ic_pole_velocity",
                              "ic_pole_omega"):

@@ -58,7 +58,7 @@ def arrow_scale(dv: DrawnVelocities, k: int, view_mm: float) -> float:
 
 
 def _centre(dv: DrawnVelocities, st: Step, k: int) -> np.ndarray | None:
-    h = dv.ev[st.inputs[0]][k]
+    h = dv.ev[st.input("centre")][k]
     if not np.all(np.isfinite(h)) or h[2] == 0.0:
         return None
     out: np.ndarray = h[:2] * st.param("length") / h[2]

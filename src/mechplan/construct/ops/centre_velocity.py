@@ -53,10 +53,12 @@ def _xy(h: Array, length: float) -> Array:
 
 
 def _rate(c: Array, x: Array, v: Array) -> Array:
-    """ω of a link turning about c from one of its points x and its velocity v."""
+    """ω of a link turning about c from one of its points x and its velocity v (0 for a point
+    at the centre itself: a point carried there has radius 0 and no velocity to carry)."""
     r = x - c
+    rr = dot(r, r)
     with np.errstate(invalid="ignore", divide="ignore"):
-        out: Array = cross(r, v) / dot(r, r)
+        out: Array = np.where(rr == 0.0, 0.0, cross(r, v) / rr)
     return out
 
 
@@ -122,6 +124,7 @@ def pole_omega(step: Step, centre: Array, point: Array, v_point: Array) -> Resul
     infinity: the link translates)."""
     c = _xy(centre, step.param("length"))
     w = _rate(c, point, v_point)
+    w[np.all(point == c, axis=1)] = np.nan     # the point is the centre: ω is not found by it
     w[~_finite(centre)] = 0.0
     return w, None, None
 
