@@ -14,14 +14,14 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
 from ..construct.plans.centres import Centre, Centres, centres_at, label, ordered
-from ..model.mechanism import PairKind
+from ..model.mechanism import GROUND, PairKind
 from ..model.plans import Plan
-from ..submission.centre_marks import CentreMark, CentreName
+from ..submission.centre_marks import COUPLER, CentreMark, CentreName
 from ..submission.read import Entry, Note
 from .centre_table import ARROW_DEG, exact_centre, find_centre, grade_table, rule_of
 from .context import Ctx
@@ -59,6 +59,7 @@ def grade_centres(ctx: Ctx, k: int, report: CheckReport,
     if not marks and not entries:
         return
     cs = centres_at(ctx.c, ctx.ev, ctx.scene.mechanism)
+    marks, entries = _coupler_named(cs, marks, entries, report)
     drawn = [m for m in marks if m.at is not None or m.infinite]   # "I23 ∞" needs no arrow
     ks = [k] if ctx.ev.n == 1 or ctx.options.at_deg is not None else list(range(ctx.ev.n))
     if drawn:
@@ -91,6 +92,28 @@ def grade_centres(ctx: Ctx, k: int, report: CheckReport,
         *_, best_table = min(trials, key=lambda t: t[:3])
         report.values += best_table.values
         report.notes += best_table.notes
+
+
+def _coupler_named(cs: Centres, marks: Sequence[CentreMark],
+                   entries: Sequence[tuple[CentreName, Entry]], report: CheckReport
+                   ) -> tuple[list[CentreMark], list[tuple[CentreName, Entry]]]:
+    """A centre named МЦС (tâm vận tốc tức thời, 绝对瞬心) without its link is the absolute centre
+    of the one link whose absolute centre Kennedy's theorem finds (the coupler); where there are
+    several such links it is not graded and a note says so."""
+    found = [c.j for c in cs.diagram.centres if c.i == GROUND and not c.primary]
+    link = found[0] if len(found) == 1 else None
+
+    def named(n: CentreName) -> CentreName | None:
+        if n.j != COUPLER:
+            return n
+        return None if link is None else replace(n, j=link)
+
+    out_m = [replace(m, name=nm) for m in marks if (nm := named(m.name)) is not None]
+    out_e = [(nm, e) for n, e in entries if (nm := named(n)) is not None]
+    if len(out_m) + len(out_e) < len(marks) + len(entries):
+        report.notes.append(_note("centres.coupler_ambiguous",
+                                  links=", ".join(found) or "—"))
+    return out_m, out_e
 
 
 def _score(r: CheckReport) -> tuple[int, float]:
