@@ -167,3 +167,29 @@ def test_measured_arrows_agree_to_the_drawing_precision():
     top = max(float(np.hypot(*sol.ev[sol.construction.velocity_image(p)][0]))
               for p in dv.cv.v)
     assert 0.0 <= got <= 0.05 * mu_v / top + 1e-12
+
+
+def test_two_drivers_draw_what_the_centres_determine_and_name_the_rest():
+    """W = 2 (five-bar): Kennedy's theorem finds only the pairs' centres; both cranks are drawn
+    from their own ω, the dyad's links are named as not determined by centres."""
+    from mechplan.studies.centres_report import centres_report
+    from tests.scenes import ROOT
+
+    text = (ROOT / "templates" / "five_bar_two_cranks.toml").read_text(encoding="utf-8")
+    scene = parse_scene(text + '\n[centres]\nlinks = ["2"]\n', "five.toml")
+    sol = solve(scene, count=36, plans=("position", "velocity", "centres"))
+    c, ev, mech = sol.construction, sol.ev, scene.mechanism
+    dv = drawn(c, ev, mech, centres_at(c, ev, mech))
+    assert dv is not None and set(dv.cv.omega) == {"1", "4"}
+    for p in ("B", "D"):           # the cranks' pins: ω·r about their pivots, as the plan
+        np.testing.assert_allclose(dv.ev[dv.cv.v[p]], ev[c.velocity_image(p)], rtol=0,
+                                   atol=1e-13)
+    assert np.nanmax(dv.agreement) < 1e-12
+    for lang in LANGUAGES:
+        text = centres_report(sol, lang)
+        sym = "I" if lang == "en" else "P"
+        assert f"{sym}02" in text and f"{sym}03" in text
+    en = centres_report(sol, "en")
+    assert "link 2: its absolute centre I02 is not found" in en
+    assert "link 3: its absolute centre I03 is not found" in en
+    assert "link 2: its absolute centre I02 is not found by Kennedy's theorem (two drivers" in en

@@ -37,8 +37,8 @@ def drawn(c: Construction, ev: Evaluation, mech: Mechanism, cs: Centres) -> Draw
     if not crank_driven(mech):
         return None
     cv = build_centre_velocity(mech, cs.diagram, cs.length)
-    dev = evaluate_centre_velocity(cv, cs, lambda p: ev[c.position(p)],
-                                   {mech.drive.link: ev[c.omega(mech.drive.link)]})
+    omega = {d.link: ev[c.omega(d.link)] for d in mech.drivers if c.has_result("omega", d.link)}
+    dev = evaluate_centre_velocity(cv, cs, lambda p: ev[c.position(p)], omega)
     return DrawnVelocities(cv, dev, plan_agreement(c, ev, cv, dev))
 
 

@@ -97,7 +97,10 @@ def _centrode_curves(sol: Solution, k: int) -> list[np.ndarray]:
         return []
     c, ev, mech = sol.construction, sol.ev, sol.scene.mechanism
     out = []
+    cs = centres_at(c, ev, mech)
     for lid in spec.links:
+        if ("0", lid) not in cs.values:      # W = 2: Kennedy's theorem does not find I0j
+            continue
         _phi, fixed, moving = centrodes_over_turn(c, mech, lid, spec.positions)
         angle = np.full(len(moving), float(ev[c.link_angle(lid)][k]))
         first, local = next(iter(mech.links[lid].points.items()))

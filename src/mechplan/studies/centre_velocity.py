@@ -73,9 +73,17 @@ def report_lines(sol: Solution, k: int, lang: str) -> list[str]:
                             mu_v=significant(mu_v, 4, lang))]
     out += ["    " + s for s in route_lines(dv, analyse_centres(sol).centres.diagram.links, lang)]
     out += ["    " + s for s in protocol(dv.cv, dv.ev, k, lang, mu_l, mu_v)]
+    cs = analyse_centres(sol).centres
+    sym = message("centres.symbol", lang)
     for lk in mech.moving:
-        if lk not in dv.cv.omega:
+        if lk in dv.cv.omega:
+            continue
+        if ("0", lk) in cs.values:
             out.append("    " + message("icdraw.unreached", lang, link=lk))
+        else:
+            out.append("    " + message("icdraw.unreached_centre", lang, link=lk,
+                                        centre=names(centre_token("0", lk, cs.diagram.links),
+                                                     sym)))
     exact = float(dv.agreement[k])
     if math.isfinite(exact):
         out.append("    " + message(

@@ -134,16 +134,21 @@ def build_centre_velocity(mech: Mechanism, diagram: CircleDiagram,
     A link no centre reaches (a centre Kennedy's theorem leaves out) is left out; a linear
     driver has no ω to start from, so nothing is built for it (the caller says so)."""
     b = _Builder(mech, diagram, length)
-    drv = mech.drive.link
     lt = diagram.links
-    w = b.given(f"ic.omega.{drv}", ("omega", drv), Kind.SCALAR, 0)
-    b.out.omega[drv] = w
-    for x in b.points(drv):
-        b.out.v[x] = b.velocity(f"ic.v.{x}", Op.IC_DRIVE_VELOCITY,
-                                (b.h(GROUND, drv), b.r(x), w), f"v_{x}",
-                                (x, b.tok(GROUND, drv), drv))
-    known = [drv]
-    pending = [lk for lk in mech.moving if lk != drv and _has(diagram, GROUND, lk)]
+    known: list[str] = []
+    for drive in mech.drivers:          # W = 2: both cranks are known from the start
+        if drive.kind is not DriverKind.CRANK or not _has(diagram, GROUND, drive.link):
+            continue
+        d = drive.link
+        w = b.given(f"ic.omega.{d}", ("omega", d), Kind.SCALAR, 0)
+        b.out.omega[d] = w
+        for x in b.points(d):
+            if x not in b.out.v:
+                b.out.v[x] = b.velocity(f"ic.v.{x}", Op.IC_DRIVE_VELOCITY,
+                                        (b.h(GROUND, d), b.r(x), w), f"v_{x}",
+                                        (x, b.tok(GROUND, d), d))
+        known.append(d)
+    pending = [lk for lk in mech.moving if lk not in known and _has(diagram, GROUND, lk)]
     while pending:
         best: tuple[int, int, str, str] | None = None
         for n, j in enumerate(pending):
