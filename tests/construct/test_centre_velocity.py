@@ -75,7 +75,7 @@ def test_centred_slider_crank_closed_form_and_dead_centres():
     r, l_, omega = 0.1, 0.4, 1500 * 2 * math.pi / 60
     scene = parse_scene(slider_crank_text(r_mm=100.0, l_mm=400.0))
     phi = np.radians(np.arange(0.0, 360.0, 5.0))
-    sol, dv = _drawn(scene, at_deg=list(np.degrees(phi)))
+    _sol, dv = _drawn(scene, at_deg=list(np.degrees(phi)))
     assert dv is not None
     slider = "B"                        # the slider's point (slider_crank_text: O, A, B)
     s = np.sin(phi)
@@ -117,7 +117,7 @@ def test_every_template_agrees_with_the_plan_and_finite_differences(path):
                                          (SLOTTED_CRANK_PRP, None)])
 def test_prismatic_routes(text, kinds):
     scene = parse_scene(text)
-    sol, dv = _drawn(scene, count=90)
+    _sol, dv = _drawn(scene, count=90)
     assert dv is not None
     ok = np.isfinite(dv.agreement)
     assert ok.sum() >= 80 and float(dv.agreement[ok].max()) < 1e-12
@@ -140,7 +140,7 @@ def test_every_step_is_a_registered_operation():
 
 def test_protocol_in_four_languages_measures_the_arrows():
     scene = parse_scene(four_bar_text())
-    sol, dv = _drawn(scene, at_deg=[60.0])
+    _sol, dv = _drawn(scene, at_deg=[60.0])
     assert dv is not None
     mu_l, mu_v = 0.002, 0.02
     v_b = float(np.hypot(*dv.ev[dv.cv.v["B"]][0]))

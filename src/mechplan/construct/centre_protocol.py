@@ -48,8 +48,9 @@ def _centre_of(step: Step) -> str:
 def _radius_mm(ev: Evaluation, step: Step, point_id: str, k: int, mu_l: float) -> float:
     """|centre X| on the drawing (mm) for a step whose first input is a homogeneous centre."""
     h = ev[_centre_of(step)][k]
-    length = step.param("length")
-    c = h[:2] * length / h[2]
+    if not h[2]:
+        return math.nan
+    c = h[:2] * step.param("length") / h[2]
     return float(np.hypot(*(ev[point_id][k] - c))) / mu_l
 
 
@@ -68,6 +69,8 @@ def sentence(cv: CentreVelocity, step: Step, ev: Evaluation, k: int, lang: str, 
         v = f"{number(meas.exact, 3, lang)} {unit('m/s', lang)}"
     centre_inf = "centre" in step.op.inputs and bool(ev[_centre_of(step)][k][2] == 0.0)
     op = step.op.value
+    if centre_inf and op == "ic_carry":     # no arc about a centre at infinity: nothing drawn
+        return ""
     if centre_inf and op in ("ic_arc_velocity", "ic_similar_velocity", "ic_pole_velocity",
                              "ic_pole_omega"):
         return message("icdraw.translates", lang, label=lbl, link=s[2] if op.endswith(
@@ -89,8 +92,9 @@ def sentence(cv: CentreVelocity, step: Step, ev: Evaluation, k: int, lang: str, 
 def protocol(cv: CentreVelocity, ev: Evaluation, k: int, lang: str, mu_l: float,
              mu_v: float) -> list[str]:
     """The sentences of every written step at position k, in construction order."""
-    return [sentence(cv, st, ev, k, lang, mu_l, mu_v) for st in cv.construction
-            if st.op.message is not None and st.id in ev.values]
+    out = [sentence(cv, st, ev, k, lang, mu_l, mu_v) for st in cv.construction
+           if st.op.message is not None and st.id in ev.values]
+    return [s for s in out if s]
 
 
 __all__ = ["Measured", "measure", "names", "protocol", "sentence"]

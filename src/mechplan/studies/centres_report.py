@@ -83,10 +83,11 @@ def position_lines(an: CentresAnalysis, sol: Solution, k: int, lang: str) -> lis
             b=label((drv, lid), sym, cs.diagram.links), c=label((GROUND, lid), sym),
             value=significant(float(by.omega[lid][k]), 6, lang)))
     for p, v in by.v.items():
-        lid = next((lk for lk in mech.moving if p in mech.links[lk].points
-                    and lk in by.omega and (GROUND, lk) in cs.values), None)
-        if lid is None:
+        carrier = next((lk for lk in mech.moving if p in mech.links[lk].points
+                        and lk in by.omega and (GROUND, lk) in cs.values), None)
+        if carrier is None:
             continue
+        lid = carrier
         speed = significant(float(np.hypot(*v[k])), 6, lang)
         abs_c = label((GROUND, lid), sym)
         if cs.of(GROUND, lid).h[k, 2] == 0.0:
