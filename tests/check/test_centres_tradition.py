@@ -1,5 +1,6 @@
 """The tradition's names of a link's absolute centre (МЦС, tâm vận tốc tức thời, 绝对瞬心, "P2")
-are read as I0j and graded; a МЦС without its link is the coupler's where that is unique."""
+are read as I0j and graded; a МЦС without its link is the coupler's where that is unique. The
+acceleration pole labelled on the centres' drawing (Q2) is graded against its definition."""
 
 from __future__ import annotations
 
@@ -97,3 +98,55 @@ def test_a_moved_mcs_is_caught(ru_panel, tmp_path):
     rows = {c.label: c for c in report.centres}
     assert rows["I02"].verdict == WRONG
     assert rows["I02"].error == pytest.approx(5.0, abs=1e-6)
+
+
+@pytest.fixture(scope="module")
+def four_bar_ru(tmp_path_factory):
+    scene = load_scene(f"{TEMPLATES}/four_bar.toml")          # [centres] links = ["2"]
+    comp = compose(solve(scene), "A3", "iso", "ru", name="four_bar")
+    i = next(n for n, pl in enumerate(comp.placements) if any(p.name == "centres" for p, _ in pl))
+    path = tmp_path_factory.mktemp("q") / "panel.dxf"
+    path.write_bytes(to_bytes(comp.sheets[i]))
+    return scene, path
+
+
+def _pole_exact(scene, deg):
+    """Q of the coupler by the definition: the point whose acceleration a_B + ε×r − ω²r is 0,
+    solved as a 2 × 2 linear system (not the closed form under test)."""
+    sol = solve(scene, at_deg=[deg])
+    c, ev = sol.construction, sol.ev
+    a_b, r_b = ev[c.acceleration_image("B")][0], ev[c.position("B")][0]
+    w, e = float(ev[c.omega("2")][0]), float(ev[c.epsilon("2")][0])
+    m = np.array([[-w * w, -e], [e, -w * w]])
+    return r_b + np.linalg.solve(m, -a_b)
+
+
+def test_the_acceleration_pole_is_graded_and_a_moved_one_caught(four_bar_ru, tmp_path):
+    scene, path = four_bar_ru
+    report = check(scene, path, Options())
+    rows = {c.label: c for c in report.centres}
+    assert rows["Q2"].verdict == OK and rows["Q2"].error == pytest.approx(0.0, abs=1e-6)
+    # the drawn pole against the definition, through the drawing's own pins (I01, I03)
+    phi = report.centres_phi if report.centres_phi is not None else report.phi_deg
+    q = _pole_exact(scene, phi)
+    sol = solve(scene, at_deg=[phi])
+    a, d = (sol.ev[sol.construction.position(p)][0] for p in "AD")
+    pa, pd = np.array(rows["I01"].at_mm), np.array(rows["I03"].at_mm)
+    mu = float(np.hypot(*(d - a))) / float(np.hypot(*(pd - pa)))
+    assert np.allclose(pa + (q - a) / mu, rows["Q2"].at_mm, atol=1e-6)
+    doc = ezdxf.readfile(path)
+    msp = doc.modelspace()
+    (text,) = [t for t in msp.query("TEXT") if t.dxf.text == "Q2"]
+    circle = min((e for e in msp.query("CIRCLE") if e.dxf.radius < 1.5),
+                 key=lambda e: math.dist(tuple(e.dxf.center)[:2], rows["Q2"].at_mm))
+    for ent, key in ((circle, "center"), (text, "insert"), (text, "align_point")):
+        if ent.dxf.hasattr(key):
+            x, y = tuple(ent.dxf.get(key))[:2]
+            ent.dxf.set(key, (x + 3.0, y + 4.0))
+    doc.saveas(tmp_path / "moved_q.dxf")
+    moved = check(scene, tmp_path / "moved_q.dxf", Options())
+    rows = {c.label: c for c in moved.centres}
+    assert rows["Q2"].verdict == WRONG and rows["Q2"].error == pytest.approx(5.0, abs=1e-6)
+    assert all(c.verdict == OK for n, c in rows.items() if n != "Q2")
+    for lang in ("en", "ru", "vi", "zh"):
+        assert "Q = A +" in moved.text(lang)

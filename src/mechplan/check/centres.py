@@ -18,10 +18,11 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..construct.centre_kinematics import acceleration_pole
 from ..construct.plans.centres import Centre, Centres, centres_at, label, ordered
 from ..model.mechanism import GROUND, PairKind
 from ..model.plans import Plan
-from ..submission.centre_marks import COUPLER, CentreMark, CentreName
+from ..submission.centre_marks import COUPLER, POLE, CentreMark, CentreName
 from ..submission.read import Entry, Note
 from .centre_table import ARROW_DEG, exact_centre, find_centre, grade_table, rule_of
 from .context import Ctx
@@ -225,6 +226,13 @@ def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
                                   hint=T("centres.missing_hint"))
     order = {(c.i, c.j): c.order for c in cs.diagram.centres}
     report.centres.extend(rows[key] for key in sorted(rows, key=lambda x: order.get(x, 99)))
+    drawn_at = np.array([r.at_mm for r in rows.values()
+                         if r.at_mm is not None and r.found == "point"], dtype=float).reshape(-1, 2)
+    for row in _grade_poles(ctx, k, frame, tol, pivot, marks, drawn_at):
+        report.centres.append(row)
+        if row.verdict == WRONG:
+            report.findings.append(Finding("wrong centre", T("centres.plan"), row.label,
+                                           row.hint, error=""))
     report.centres_mu = frame.mu
     report.centres_frame = T("centres.frame_pins") if frame.source == "pins" else \
         T("centres.frame_plan", plan=frame.source)
@@ -232,6 +240,55 @@ def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
         if row.verdict == WRONG and row.cause in (NEW, SWAPPED):
             report.findings.append(Finding("wrong centre", T("centres.plan"), row.label,
                                            row.hint, error=""))
+
+
+def _exact_pole(ctx: Ctx, link: str, k: int) -> np.ndarray | None:
+    """The acceleration pole of a link at position k (m), or None (no acceleration plan, or a
+    link with ω = ε = 0)."""
+    c, ev = ctx.c, ctx.ev
+    if not c.has_result("epsilon", link) or link not in ctx.scene.mechanism.links:
+        return None
+    p = next(iter(ctx.scene.mechanism.links[link].points))
+    q = acceleration_pole(ev[c.acceleration_image(p)][k:k + 1], ev[c.position(p)][k:k + 1],
+                          ev[c.omega(link)][k:k + 1], ev[c.epsilon(link)][k:k + 1])[0]
+    return q if np.all(np.isfinite(q)) else None
+
+
+def _grade_poles(ctx: Ctx, k: int, frame: _Frame, tol: Tolerance, pivot: np.ndarray,
+                 marks: Sequence[CentreMark], drawn_at: np.ndarray) -> list[CentreRow]:
+    """The acceleration poles labelled on the drawing of the centres (Q2), placed in the
+    centres' frame. Only a label near that drawing is one — within its centres' box grown by
+    the box's size (a force plan's inertia force Q2 is no pole); of several, the nearest."""
+    if not len(drawn_at):
+        return []
+    lo, hi = drawn_at.min(axis=0), drawn_at.max(axis=0)
+    grow = float(max(hi - lo)) or 10.0
+    lo, hi = lo - grow, hi + grow
+    best: dict[str, tuple[float, CentreMark, np.ndarray]] = {}
+    for m in marks:
+        if m.name.i != POLE or m.at is None:
+            continue
+        at = np.asarray(m.at, dtype=float)
+        if not (np.all(at >= lo) and np.all(at <= hi)):
+            continue
+        q = _exact_pole(ctx, m.name.j, k)
+        if q is None:
+            continue
+        p = frame.paper(q)
+        d = float(np.hypot(*(p - at)))
+        if m.name.j not in best or d < best[m.name.j][0]:
+            best[m.name.j] = (d, m, p)
+    out = []
+    for _d, m, p in best.values():
+        assert m.at is not None
+        err = float(np.hypot(*(p - np.asarray(m.at))))
+        allowed = tol.allowed_mm(float(np.hypot(*(p - pivot))))
+        ok = err <= allowed
+        out.append(CentreRow(f"Q{m.name.j}", m.written, (float(p[0]), float(p[1])), m.at, err,
+                             allowed, OK if ok else WRONG, cause="" if ok else NEW,
+                             hint="" if ok else T("centres.pole_hint", link=m.name.j),
+                             found="point", where=m.where))
+    return out
 
 
 def _fit(cs: Centres, k: int, f: _Frame, pins: dict[tuple[str, str], list[np.ndarray]]) -> float:

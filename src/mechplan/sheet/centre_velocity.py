@@ -17,6 +17,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..construct.centre_drawn import DrawnVelocities, drawn, measured_agreement
+from ..construct.centre_kinematics import acceleration_pole
 from ..construct.centre_protocol import measure, names
 from ..construct.plans.centres import centres_at
 from ..construct.scale import round_scale
@@ -171,6 +172,25 @@ def _ray(panel: Panel, dv: DrawnVelocities, st: Step, k: int, mm: MM, mu_v: floa
     seg = _clipped(start, far, box) if float(np.hypot(*(far - start))) > 0.3 else None
     if seg is not None:
         panel.primitives.append(Line(tuple(seg[0]), tuple(seg[1]), Role.THIN))
+
+
+def pole_marks(sol: Solution, k: int, box: tuple[np.ndarray, np.ndarray],
+               mm: MM) -> dict[str, tuple[float, float]]:
+    """The acceleration poles of the ``[centres] links`` at position k inside the view (world
+    box ``box``), named ``Q2`` (the pole of link 2), in panel mm."""
+    spec, c, ev, mech = sol.scene.centres, sol.construction, sol.ev, sol.scene.mechanism
+    out: dict[str, tuple[float, float]] = {}
+    if spec is None or not c.has_result("epsilon", mech.drive.link):
+        return out
+    for lid in spec.links:
+        if not c.has_result("epsilon", lid):
+            continue
+        p = next(iter(mech.links[lid].points))
+        q = acceleration_pole(ev[c.acceleration_image(p)][k:k + 1], ev[c.position(p)][k:k + 1],
+                              ev[c.omega(lid)][k:k + 1], ev[c.epsilon(lid)][k:k + 1])[0]
+        if np.all(np.isfinite(q)) and np.all(q >= box[0]) and np.all(q <= box[1]):
+            out[f"Q{lid}"] = mm(q)
+    return out
 
 
 def velocity_table(sol: Solution, k: int, mu_v: float, lang: str) -> Panel | None:

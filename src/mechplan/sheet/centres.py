@@ -22,7 +22,7 @@ from ..geom.vec import rotate
 from ..i18n import message, number, significant
 from ..model.mechanism import Mechanism
 from ..solve import Solution
-from .centre_velocity import draw_velocities, velocity_table
+from .centre_velocity import draw_velocities, pole_marks, velocity_table
 from .link_outline import drawn as draw_figure
 from .link_outline import link_figures
 from .panels import LABEL_H, TITLE_H, Panel, table
@@ -75,13 +75,16 @@ def centres_panels(sol: Solution, k: int, mu_l: float, lang: str, r: Room,
 
 def _extras(panel: Panel, *, sol: Solution, k: int, curves: list[np.ndarray],
             box: tuple[np.ndarray, np.ndarray], mu: float, lang: str, velocities: bool,
-            drawn: dict[str, float | None]) -> None:
+            drawn: dict[str, float | None]) -> dict[str, tuple[float, float]]:
     """The centrodes and (``velocities``) the velocities by centres, drawn before the names
-    are placed clear of their lines; the arrows' μv in ``drawn["mu_v"]``."""
+    are placed clear of their lines; the arrows' μv in ``drawn["mu_v"]``. Returns the
+    acceleration poles Q_j of the ``[centres] links`` inside the view (named ``Q2``)."""
     for curve in curves:
         _clipped_curve(panel, curve, box[0], box[1], mu)
-    if velocities:
-        drawn["mu_v"] = draw_velocities(panel, sol, k, _scaled(mu), mu, lang)
+    if not velocities:
+        return {}
+    drawn["mu_v"] = draw_velocities(panel, sol, k, _scaled(mu), mu, lang)
+    return pole_marks(sol, k, box, _scaled(mu))
 
 
 def _scaled(mu: float) -> Callable[[np.ndarray], tuple[float, float]]:
@@ -129,7 +132,8 @@ def _clipped_curve(panel: Panel, curve: np.ndarray, lo: np.ndarray, hi: np.ndarr
 
 def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: np.ndarray,
           hi: np.ndarray, mu: float, sym: str, title: str, lang: str,
-          extra: Callable[[Panel], None] | None = None) -> Panel:
+          extra: Callable[[Panel], dict[str, tuple[float, float]] | None] | None = None
+          ) -> Panel:
     """The mechanism and its centres at position k, drawn at μ (m per paper mm); ``extra``
     draws more (centrodes, velocities) before the names are placed clear of it."""
     panel = Panel("centres", plan=None)
@@ -167,8 +171,10 @@ def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: 
             panel.tag(ctr.key, Circle(marked[name], CENTRE_R, Role.OUTLINE))
         else:
             panel.tag(ctr.key, *_far(h, cs.length, lo, hi, mm, name, lang))
-    if extra is not None:
-        extra(panel)
+    if extra is not None:           # more points to name (an acceleration pole): key "pole"
+        for name, q in (extra(panel) or {}).items():
+            marked[name], keys[name] = q, "pole"
+            panel.tag("pole", Circle(q, CENTRE_R, Role.OUTLINE))
     # the names placed clear of the lines, the other names and each other
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline, Arrow, Text))],
                          LABEL_H, list(marked.values()))

@@ -57,6 +57,19 @@ def _infinity() -> tuple[str, ...]:
 
 #: a link's absolute centre when a name says no link: resolved by the checker (the coupler)
 COUPLER = ""
+#: the ``i`` of a :class:`CentreName` naming the acceleration pole of link ``j`` ("Q2")
+POLE = "Q"
+
+
+def read_pole(text: str, links: Sequence[str]) -> CentreName | None:
+    """The acceleration pole a label names ("Q2", "Q₂", "полюс ускорений 2"), or None."""
+    words = sorted(catalogue().get("centres", {}).get("pole", ["Q"]), key=len, reverse=True)
+    t = text.strip().translate(SUBSCRIPTS)
+    m = re.fullmatch(rf"(?:{'|'.join(re.escape(w) for w in words)}){_SEP}(\d+)", t,
+                     re.IGNORECASE)
+    if not m or m.group(1) not in links or m.group(1) == "0":
+        return None
+    return CentreName(POLE, m.group(1))
 
 
 def _absolute_pattern() -> str:
@@ -203,8 +216,13 @@ def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None =
     plans), or the arrowhead it is written at."""
     texts: list[tuple[SheetText, CentreName]] = []
     in_tables = {id(t) for t, _, _ in _rows(sub, links)}
+    poles = []
     for t in sub.texts:
         if len(t.text) > MAX_TEXT or ":" in t.text or "=" in t.text or id(t) in in_tables:
+            continue
+        pole = read_pole(t.text, links)
+        if pole is not None:
+            poles.append((t, pole))
             continue
         name = read_centre(t.text, links, whole=False, single=True)
         if name is None or _count_names(t.text, links) != 1:
@@ -213,15 +231,15 @@ def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None =
         if read_centre(words, links, single=True) is None and not _arrow_words(words):
             continue
         texts.append((t, name))
-    if not texts:
+    if not texts and not poles:
         return []
     if tol is None:
-        heights = [t.height for t, _ in texts if t.height > 0]
+        heights = [t.height for t, _ in texts + poles if t.height > 0]
         tol = min(10.0, max(3.0, 2.0 * statistics.median(heights))) if heights else 5.0
     marks: list[CentreMark] = []
     heads = list(sub.heads)
     plain = [(t, n) for t, n in texts if read_centre(t.text.strip(), links, single=True) is not None
-             and not says_infinity(t.text)]
+             and not says_infinity(t.text)] + poles
     at_arrows = [(t, n) for t, n in texts if (t, n) not in plain]
     if plain:
         graph = drawn_graph(sub.lines, sub.markers, snap, sub.heads)
