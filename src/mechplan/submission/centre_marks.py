@@ -231,6 +231,13 @@ def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None =
         if read_centre(words, links, single=True) is None and not _arrow_words(words):
             continue
         texts.append((t, name))
+    # "P2" (a letter and one link) and the poles "Q2" name centres only on a drawing of the
+    # centres: one with at least one centre written with its two links (elsewhere "P2" or "Q2"
+    # may be a force)
+    if not any(read_centre(t.text, links, whole=False) is not None
+               and read_centre(t.text, links, whole=False) == n for t, n in texts):
+        texts = [(t, n) for t, n in texts if read_centre(t.text, links, whole=False) == n]
+        poles = []
     if not texts and not poles:
         return []
     if tol is None:
