@@ -45,8 +45,12 @@ def test_arrows_measured_back_from_the_drawing(name, lang):
     cb = min(circles, key=lambda q: math.dist(q, np.asarray(b) / mu))
     assert math.dist(ca, np.asarray(a) / mu) < 0.05 and math.dist(cb, np.asarray(b) / mu) < 0.05
     mu = float(np.hypot(*(np.asarray(a) - b))) / math.dist(ca, cb)     # exact, from the pins
-    arrows = next(t.string for t in view.primitives if isinstance(t, Text) and "≙" in t.string)
-    mu_v = _number(re.search(r"≙\s*([\d.,]+)", arrows).group(1))
+    from mechplan.i18n import message
+
+    head = message("icdraw.panel.arrows", lang, value="@").split("@")[0]
+    arrows = next(t.string for t in view.primitives if isinstance(t, Text)
+                  and t.string.startswith(head))
+    mu_v = _number(re.match(re.escape(head) + r"\s*([\d.,]+)", arrows).group(1))
     lines = [p for p in view.primitives if isinstance(p, Line)]
     assert any(isinstance(p, Arc) for p in view.primitives) or name == "shaper"
     # the driving crank's pin: v = ω1·r at right angles to the crank, drawn from the pin
