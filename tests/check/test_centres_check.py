@@ -83,7 +83,8 @@ def test_own_panel_is_graded_right_and_its_kennedy_centre_is_where_lines_meet(fo
     scene, path = four_bar_panel
     report = check(scene, path, Options())
     rows = {c.label: c for c in report.centres}
-    assert sorted(rows) == ["I01", "I02", "I03", "I12", "I13", "I23"]
+    # (the panel also names the coupler's acceleration pole Q2: test_centres_tradition.py)
+    assert sorted(rows) == ["I01", "I02", "I03", "I12", "I13", "I23", "Q2"]
     assert all(c.verdict == OK for c in rows.values())
     assert report.passed and report.summary()["missing"] == 0
     # I13 of a four-bar: where the frame line A–D meets the coupler line B–C (drawn pins)

@@ -153,13 +153,8 @@ def test_the_protocol_writes_the_second_crank_in_every_language(lang):
     assert len(second) == 1 and "60" in second[0] and "φ4" in second[0], second
 
 
-def test_instant_centres_are_refused_naming_the_key():
-    from mechplan.errors import SceneError
-
-    text = TEMPLATE.read_text(encoding="utf-8") + '\n[centres]\nlinks = ["2"]\n'
-    with pytest.raises(SceneError, match="Kennedy") as err:
-        parse_scene(text, "five.toml")
-    assert err.value.key == "centres"
+# [centres] with two drivers is read (issue 30): tests/construct/test_centre_velocity.py
+# (test_two_drivers_draw_what_the_centres_determine_and_name_the_rest)
 
 
 @pytest.mark.parametrize(("sense1", "from1", "speed2", "sense2", "from2", "phase", "deg"), [

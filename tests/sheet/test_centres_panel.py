@@ -18,7 +18,7 @@ from mechplan.solve import solve
                                         ("shaper", "zh"), ("slider_crank", "vi")])
 def test_every_centre_is_named_in_the_view_and_the_table(name, lang):
     sol = solve(load_scene(ROOT / "templates" / f"{name}.toml"))
-    view, diagram, table = centres_panels(sol, 1, sol.scales[next(iter(sol.scales))], lang,
+    view, diagram, table, *_ = centres_panels(sol, 1, sol.scales[next(iter(sol.scales))], lang,
                                           room("A1", "iso"))
     n = len(sol.scene.mechanism.links)
     count = n * (n - 1) // 2

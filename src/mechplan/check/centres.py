@@ -14,14 +14,15 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
+from ..construct.centre_kinematics import acceleration_pole
 from ..construct.plans.centres import Centre, Centres, centres_at, label, ordered
-from ..model.mechanism import PairKind
+from ..model.mechanism import GROUND, PairKind
 from ..model.plans import Plan
-from ..submission.centre_marks import CentreMark, CentreName
+from ..submission.centre_marks import COUPLER, POLE, CentreMark, CentreName
 from ..submission.read import Entry, Note
 from .centre_table import ARROW_DEG, exact_centre, find_centre, grade_table, rule_of
 from .context import Ctx
@@ -59,6 +60,7 @@ def grade_centres(ctx: Ctx, k: int, report: CheckReport,
     if not marks and not entries:
         return
     cs = centres_at(ctx.c, ctx.ev, ctx.scene.mechanism)
+    marks, entries = _coupler_named(cs, marks, entries, report)
     drawn = [m for m in marks if m.at is not None or m.infinite]   # "I23 ∞" needs no arrow
     ks = [k] if ctx.ev.n == 1 or ctx.options.at_deg is not None else list(range(ctx.ev.n))
     if drawn:
@@ -91,6 +93,28 @@ def grade_centres(ctx: Ctx, k: int, report: CheckReport,
         *_, best_table = min(trials, key=lambda t: t[:3])
         report.values += best_table.values
         report.notes += best_table.notes
+
+
+def _coupler_named(cs: Centres, marks: Sequence[CentreMark],
+                   entries: Sequence[tuple[CentreName, Entry]], report: CheckReport
+                   ) -> tuple[list[CentreMark], list[tuple[CentreName, Entry]]]:
+    """A centre named МЦС (tâm vận tốc tức thời, 绝对瞬心) without its link is the absolute centre
+    of the one link whose absolute centre Kennedy's theorem finds (the coupler); where there are
+    several such links it is not graded and a note says so."""
+    found = [c.j for c in cs.diagram.centres if c.i == GROUND and not c.primary]
+    link = found[0] if len(found) == 1 else None
+
+    def named(n: CentreName) -> CentreName | None:
+        if n.j != COUPLER:
+            return n
+        return None if link is None else replace(n, j=link)
+
+    out_m = [replace(m, name=nm) for m in marks if (nm := named(m.name)) is not None]
+    out_e = [(nm, e) for n, e in entries if (nm := named(n)) is not None]
+    if len(out_m) + len(out_e) < len(marks) + len(entries):
+        report.notes.append(_note("centres.coupler_ambiguous",
+                                  links=", ".join(found) or "—"))
+    return out_m, out_e
 
 
 def _score(r: CheckReport) -> tuple[int, float]:
@@ -202,6 +226,13 @@ def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
                                   hint=T("centres.missing_hint"))
     order = {(c.i, c.j): c.order for c in cs.diagram.centres}
     report.centres.extend(rows[key] for key in sorted(rows, key=lambda x: order.get(x, 99)))
+    drawn_at = np.array([r.at_mm for r in rows.values()
+                         if r.at_mm is not None and r.found == "point"], dtype=float).reshape(-1, 2)
+    for row in _grade_poles(ctx, k, frame, tol, pivot, marks, drawn_at):
+        report.centres.append(row)
+        if row.verdict == WRONG:
+            report.findings.append(Finding("wrong centre", T("centres.plan"), row.label,
+                                           row.hint, error=""))
     report.centres_mu = frame.mu
     report.centres_frame = T("centres.frame_pins") if frame.source == "pins" else \
         T("centres.frame_plan", plan=frame.source)
@@ -209,6 +240,55 @@ def _grade_drawn(ctx: Ctx, cs: Centres, k: int, report: CheckReport,
         if row.verdict == WRONG and row.cause in (NEW, SWAPPED):
             report.findings.append(Finding("wrong centre", T("centres.plan"), row.label,
                                            row.hint, error=""))
+
+
+def _exact_pole(ctx: Ctx, link: str, k: int) -> np.ndarray | None:
+    """The acceleration pole of a link at position k (m), or None (no acceleration plan, or a
+    link with ω = ε = 0)."""
+    c, ev = ctx.c, ctx.ev
+    if not c.has_result("epsilon", link) or link not in ctx.scene.mechanism.links:
+        return None
+    p = next(iter(ctx.scene.mechanism.links[link].points))
+    q = acceleration_pole(ev[c.acceleration_image(p)][k:k + 1], ev[c.position(p)][k:k + 1],
+                          ev[c.omega(link)][k:k + 1], ev[c.epsilon(link)][k:k + 1])[0]
+    return q if np.all(np.isfinite(q)) else None
+
+
+def _grade_poles(ctx: Ctx, k: int, frame: _Frame, tol: Tolerance, pivot: np.ndarray,
+                 marks: Sequence[CentreMark], drawn_at: np.ndarray) -> list[CentreRow]:
+    """The acceleration poles labelled on the drawing of the centres (Q2), placed in the
+    centres' frame. Only a label near that drawing is one — within its centres' box grown by
+    the box's size (a force plan's inertia force Q2 is no pole); of several, the nearest."""
+    if not len(drawn_at):
+        return []
+    lo, hi = drawn_at.min(axis=0), drawn_at.max(axis=0)
+    grow = float(max(hi - lo)) or 10.0
+    lo, hi = lo - grow, hi + grow
+    best: dict[str, tuple[float, CentreMark, np.ndarray]] = {}
+    for m in marks:
+        if m.name.i != POLE or m.at is None:
+            continue
+        at = np.asarray(m.at, dtype=float)
+        if not (np.all(at >= lo) and np.all(at <= hi)):
+            continue
+        q = _exact_pole(ctx, m.name.j, k)
+        if q is None:
+            continue
+        p = frame.paper(q)
+        d = float(np.hypot(*(p - at)))
+        if m.name.j not in best or d < best[m.name.j][0]:
+            best[m.name.j] = (d, m, p)
+    out = []
+    for _d, m, p in best.values():
+        assert m.at is not None
+        err = float(np.hypot(*(p - np.asarray(m.at))))
+        allowed = tol.allowed_mm(float(np.hypot(*(p - pivot))))
+        ok = err <= allowed
+        out.append(CentreRow(f"Q{m.name.j}", m.written, (float(p[0]), float(p[1])), m.at, err,
+                             allowed, OK if ok else WRONG, cause="" if ok else NEW,
+                             hint="" if ok else T("centres.pole_hint", link=m.name.j),
+                             found="point", where=m.where))
+    return out
 
 
 def _fit(cs: Centres, k: int, f: _Frame, pins: dict[tuple[str, str], list[np.ndarray]]) -> float:

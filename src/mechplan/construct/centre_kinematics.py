@@ -38,12 +38,15 @@ from .graph import Construction
 from .plans.centres import Centres
 
 
-def twists(cs: Centres, driver: str, omega: Array | float) -> dict[str, Array]:
-    """Every link's motion t = (perp(v_O)/L, ω) (n, 3) from the driver's ω through the centres."""
+def twists(cs: Centres, driver: str, omega: Array | float,
+           more: dict[str, Array] | None = None) -> dict[str, Array]:
+    """Every link's motion t = (perp(v_O)/L, ω) (n, 3) from the driver's ω through the centres
+    (``more``: further cranks turning about their frame pivots with their ω, W = 2)."""
     n = next(iter(cs.values.values())).h.shape[0]
-    known: dict[str, Array] = {GROUND: np.zeros((n, 3)),
-                               driver: np.asarray(omega, dtype=float)[..., None]
-                               * np.broadcast_to(cs.of(GROUND, driver).h, (n, 3))}
+    known: dict[str, Array] = {GROUND: np.zeros((n, 3))}
+    for d, w in {driver: omega, **(more or {})}.items():
+        known[d] = np.asarray(w, dtype=float)[..., None] * np.broadcast_to(cs.of(GROUND, d).h,
+                                                                            (n, 3))
     pending = [k for k in cs.diagram.links if k not in known]
     while pending:
         done = []
@@ -95,9 +98,11 @@ class ByCentres:
 
 
 def velocities_by_centres(cs: Centres, mech: Mechanism, omega_driver: Array | float,
-                          position: Callable[[str], Array]) -> ByCentres:
-    """ω of the links and v of their named points (each through the first link that carries it)."""
-    t = twists(cs, mech.drive.link, omega_driver)
+                          position: Callable[[str], Array],
+                          more: dict[str, Array] | None = None) -> ByCentres:
+    """ω of the links and v of their named points (each through the first link that carries it;
+    ``more``: the ω of a second driving crank, W = 2)."""
+    t = twists(cs, mech.drive.link, omega_driver, more)
     omegas = {lid: t[lid][:, 2].copy() for lid in mech.moving if lid in t}
     v: dict[str, Array] = {}
     for lid in mech.moving:

@@ -39,8 +39,6 @@ def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
             "errmsg2.scene_second_driver.already_first",
             {"link": drive.link}))
     phase = d.quantity("phase", "angle", 0.0) or 0.0
-    if top.has("centres"):
-        raise top.error("centres", Text(
-            "errmsg2.scene_second_driver.no_centres",
-            {"first": first.link, "second": drive.link}))
+    # [centres] is read: Kennedy's theorem finds the centres it can, the velocities by centres
+    # start from both cranks and name the links they do not reach
     return replace(drive, phase=phase)

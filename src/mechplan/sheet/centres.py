@@ -9,6 +9,8 @@ to it, named, and given in the table (coordinates, or its direction for one at i
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from functools import partial
 
 import numpy as np
 
@@ -20,6 +22,7 @@ from ..geom.vec import rotate
 from ..i18n import message, number, significant
 from ..model.mechanism import Mechanism
 from ..solve import Solution
+from .centre_velocity import draw_velocities, pole_marks, velocity_table
 from .link_outline import drawn as draw_figure
 from .link_outline import link_figures
 from .panels import LABEL_H, TITLE_H, Panel, table
@@ -32,8 +35,10 @@ DIAGRAM_R = 18.0
 CENTRE_R = 1.2
 
 
-def centres_panels(sol: Solution, k: int, mu_l: float, lang: str, r: Room) -> list[Panel]:
-    """The panel of the centres at position k, the circle diagram and the table of centres."""
+def centres_panels(sol: Solution, k: int, mu_l: float, lang: str, r: Room,
+                   velocities: bool = True) -> list[Panel]:
+    """The panel of the centres at position k, the circle diagram and the table of centres;
+    with ``velocities`` the velocities by centres drawn on the panel and their table."""
     c, ev, mech = sol.construction, sol.ev, sol.scene.mechanism
     cs = centres_at(c, ev, mech)
     sym = message("centres.symbol", lang)
@@ -53,15 +58,38 @@ def centres_panels(sol: Solution, k: int, mu_l: float, lang: str, r: Room) -> li
     mu = max(mu_l, float((hi - lo)[0]) / width, float((hi - lo)[1]) / height)
     curves = _centrode_curves(sol, k)
     for _ in range(4):
-        panel = _view(cs, k, pts, mech, lo, hi, mu, sym, title, lang)
-        for curve in curves:
-            _clipped_curve(panel, curve, lo, hi, mu)
+        drawn: dict[str, float | None] = {}
+        panel = _view(cs, k, pts, mech, lo, hi, mu, sym, title, lang,
+                      partial(_extras, sol=sol, k=k, curves=curves, box=(lo, hi), mu=mu,
+                              lang=lang, velocities=velocities, drawn=drawn))
+        mu_v = drawn.get("mu_v")
         x0, y0, x1, y1 = panel.bounds()
         grow = max((x1 - x0) / (0.95 * r.width), (y1 - y0) / (0.9 * r.height))
         if grow <= 1.0:
             break
         mu *= grow * 1.05
-    return [panel, circle_diagram_panel(cs, sym, lang), centres_table(cs, k, sym, lang)]
+    out = [panel, circle_diagram_panel(cs, sym, lang), centres_table(cs, k, sym, lang)]
+    extra = velocity_table(sol, k, mu_v, lang) if mu_v is not None else None
+    return out + ([extra] if extra is not None else [])
+
+
+def _extras(panel: Panel, *, sol: Solution, k: int, curves: list[np.ndarray],
+            box: tuple[np.ndarray, np.ndarray], mu: float, lang: str, velocities: bool,
+            drawn: dict[str, float | None]) -> dict[str, tuple[float, float]]:
+    """The centrodes and (``velocities``) the velocities by centres, drawn before the names
+    are placed clear of their lines; the arrows' μv in ``drawn["mu_v"]``. Returns the
+    acceleration poles Q_j of the ``[centres] links`` inside the view (named ``Q2``)."""
+    for curve in curves:
+        _clipped_curve(panel, curve, box[0], box[1], mu)
+    if not velocities:
+        return {}
+    drawn["mu_v"] = draw_velocities(panel, sol, k, _scaled(mu), mu, lang)
+    return pole_marks(sol, k, box, _scaled(mu))
+
+
+def _scaled(mu: float) -> Callable[[np.ndarray], tuple[float, float]]:
+    """World (m) → panel mm at μ."""
+    return lambda v: (float(v[0]) / mu, float(v[1]) / mu)
 
 
 def _centrode_curves(sol: Solution, k: int) -> list[np.ndarray]:
@@ -72,7 +100,10 @@ def _centrode_curves(sol: Solution, k: int) -> list[np.ndarray]:
         return []
     c, ev, mech = sol.construction, sol.ev, sol.scene.mechanism
     out = []
+    cs = centres_at(c, ev, mech)
     for lid in spec.links:
+        if ("0", lid) not in cs.values:      # W = 2: Kennedy's theorem does not find I0j
+            continue
         _phi, fixed, moving = centrodes_over_turn(c, mech, lid, spec.positions)
         angle = np.full(len(moving), float(ev[c.link_angle(lid)][k]))
         first, local = next(iter(mech.links[lid].points.items()))
@@ -100,8 +131,11 @@ def _clipped_curve(panel: Panel, curve: np.ndarray, lo: np.ndarray, hi: np.ndarr
 
 
 def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: np.ndarray,
-          hi: np.ndarray, mu: float, sym: str, title: str, lang: str) -> Panel:
-    """The mechanism and its centres at position k, drawn at μ (m per paper mm)."""
+          hi: np.ndarray, mu: float, sym: str, title: str, lang: str,
+          extra: Callable[[Panel], dict[str, tuple[float, float]] | None] | None = None
+          ) -> Panel:
+    """The mechanism and its centres at position k, drawn at μ (m per paper mm); ``extra``
+    draws more (centrodes, velocities) before the names are placed clear of it."""
     panel = Panel("centres", plan=None)
     prims = panel.primitives
 
@@ -137,6 +171,10 @@ def _view(cs: Centres, k: int, pts: dict[str, np.ndarray], mech: Mechanism, lo: 
             panel.tag(ctr.key, Circle(marked[name], CENTRE_R, Role.OUTLINE))
         else:
             panel.tag(ctr.key, *_far(h, cs.length, lo, hi, mm, name, lang))
+    if extra is not None:           # more points to name (an acceleration pole): key "pole"
+        for name, q in (extra(panel) or {}).items():
+            marked[name], keys[name] = q, "pole"
+            panel.tag("pole", Circle(q, CENTRE_R, Role.OUTLINE))
     # the names placed clear of the lines, the other names and each other
     placer = LabelPlacer([p for p in prims if isinstance(p, (Line, Polyline, Arrow, Text))],
                          LABEL_H, list(marked.values()))

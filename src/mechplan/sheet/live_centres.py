@@ -66,7 +66,7 @@ def centres_replay(sol: Solution, k: int, mu_l: float) -> Doc:
     r = room(sol.scene.drawing.sheet, sol.scene.drawing.standard)
     prims = {}
     for lang in LANGUAGES:
-        view, diagram, _table = centres_panels(sol, k, mu_l, lang, r)
+        view, diagram, *_ = centres_panels(sol, k, mu_l, lang, r, velocities=False)
         _x0, y0, x1, y1 = view.bounds()
         d0, e0, _d1, e1 = diagram.bounds()
         dx, dy = x1 + GAP - d0, (y0 + y1) / 2 - (e0 + e1) / 2

@@ -44,6 +44,9 @@ class CentresAnalysis:
     poles: dict[str, Array] = field(default_factory=dict)
     inflection: dict[str, tuple[Array, Array, Array]] = field(default_factory=dict)
     centrodes: dict[str, tuple[Array, Array, Array]] = field(default_factory=dict)
+    #: links of ``[centres] links`` whose absolute centre Kennedy's theorem does not find (W = 2):
+    #: no centrodes, no inflection circle
+    undetermined: list[str] = field(default_factory=list)
 
 
 def _position_error(sol: Solution) -> Array | None:
@@ -63,21 +66,27 @@ def analyse_centres(sol: Solution) -> CentresAnalysis:
         return sol.extras["centres"]  # type: ignore[no-any-return]
     c, ev, mech = sol.construction, sol.ev, sol.scene.mechanism
     cs = centres_at(c, ev, mech, _position_error(sol))
+    more = {d.link: ev[c.omega(d.link)] for d in mech.drivers[1:]
+            if c.has_result("omega", d.link) and (GROUND, d.link) in cs.values}
     by = velocities_by_centres(cs, mech, ev[c.omega(mech.drive.link)],
-                               lambda p: ev[c.position(p)])
+                               lambda p: ev[c.position(p)], more)
     out = CentresAnalysis(cs, by, agreement(c, ev, mech, by))
     spec = sol.scene.centres
     if spec is not None:
         accelerations = c.has_result("epsilon", mech.drive.link)
         for lid in spec.links:
+            known = (GROUND, lid) in cs.values
+            if not known:
+                out.undetermined.append(lid)
             if accelerations:
                 p = next(iter(mech.links[lid].points))
                 a, r = ev[c.acceleration_image(p)], ev[c.position(p)]
                 w, e = ev[c.omega(lid)], ev[c.epsilon(lid)]
                 out.poles[lid] = acceleration_pole(a, r, w, e)
-                if spec.inflection:
+                if spec.inflection and known:
                     out.inflection[lid] = inflection_circle(cs.point(GROUND, lid), a, r, w, e)
-            out.centrodes[lid] = centrodes_over_turn(c, mech, lid, spec.positions)
+            if known:
+                out.centrodes[lid] = centrodes_over_turn(c, mech, lid, spec.positions)
     sol.extras["centres"] = out
     return out
 
@@ -168,6 +177,11 @@ def centres_json(sol: Solution) -> dict[str, Any]:
         "agreement_max": float(finite.max()) if finite.size else None,
         "positions": per_position,
     }
+    from .centre_velocity import drawn_json
+
+    drawn = drawn_json(sol)
+    if drawn is not None:
+        out["drawn"] = drawn
     if an.centrodes:
         out["centrodes"] = {lid: {"phi_deg": [float(x) for x in np.degrees(phi)],
                                   "fixed": [_point_or_none(p) for p in fixed],

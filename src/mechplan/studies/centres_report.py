@@ -74,15 +74,20 @@ def position_lines(an: CentresAnalysis, sol: Solution, k: int, lang: str) -> lis
     drv = mech.drive.link
     out.append("  " + message("centres.velocity_heading", lang, driver=drv))
     by = an.by_centres
+    drivers = {d.link for d in mech.drivers}
     for lid in mech.moving:
-        if lid == drv or lid not in by.omega:
+        if lid in drivers or lid not in by.omega:
             continue
         out.append("    " + message(
             "centres.omega", lang, link=lid, driver=drv, a=label((GROUND, drv), sym),
             b=label((drv, lid), sym, cs.diagram.links), c=label((GROUND, lid), sym),
             value=significant(float(by.omega[lid][k]), 6, lang)))
     for p, v in by.v.items():
-        lid = next(lk for lk in mech.moving if p in mech.links[lk].points)
+        carrier = next((lk for lk in mech.moving if p in mech.links[lk].points
+                        and lk in by.omega and (GROUND, lk) in cs.values), None)
+        if carrier is None:
+            continue
+        lid = carrier
         speed = significant(float(np.hypot(*v[k])), 6, lang)
         abs_c = label((GROUND, lid), sym)
         if cs.of(GROUND, lid).h[k, 2] == 0.0:
@@ -95,6 +100,9 @@ def position_lines(an: CentresAnalysis, sol: Solution, k: int, lang: str) -> lis
     if math.isfinite(agree):
         out.append("    " + message("centres.agreement", lang,
                                     value=scientific(max(agree, 0.0), 2, lang)))
+    from .centre_velocity import report_lines
+
+    out += report_lines(sol, k, lang)
     out += _poles(an, k, lang)
     return out
 
@@ -135,4 +143,7 @@ def centres_report(sol: Solution, lang: str) -> str:
         out += position_lines(an, sol, k, lang)
     for lid, (phi_, _, _) in an.centrodes.items():
         out.append(message("centres.centrodes", lang, link=lid, count=len(phi_)))
+    for lid in an.undetermined:
+        out.append(message("icdraw.undetermined", lang, link=lid,
+                           centre=label(("0", lid), message("centres.symbol", lang))))
     return "\n".join(out) + "\n"

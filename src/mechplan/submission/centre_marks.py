@@ -55,11 +55,65 @@ def _infinity() -> tuple[str, ...]:
     return tuple(catalogue().get("centres", {}).get("infinity", ["∞"]))
 
 
-def read_centre(text: str, links: Sequence[str], whole: bool = True) -> CentreName | None:
+#: a link's absolute centre when a name says no link: resolved by the checker (the coupler)
+COUPLER = ""
+#: the ``i`` of a :class:`CentreName` naming the acceleration pole of link ``j`` ("Q2")
+POLE = "Q"
+
+
+def read_pole(text: str, links: Sequence[str]) -> CentreName | None:
+    """The acceleration pole a label names ("Q2", "Q₂", "полюс ускорений 2"), or None."""
+    words = sorted(catalogue().get("centres", {}).get("pole", ["Q"]), key=len, reverse=True)
+    t = text.strip().translate(SUBSCRIPTS)
+    m = re.fullmatch(rf"(?:{'|'.join(re.escape(w) for w in words)}){_SEP}(\d+)", t,
+                     re.IGNORECASE)
+    if not m or m.group(1) not in links or m.group(1) == "0":
+        return None
+    return CentreName(POLE, m.group(1))
+
+
+def _absolute_pattern() -> str:
+    cat = catalogue().get("centres", {})
+    words = sorted(cat.get("absolute", ["МЦС"]), key=len, reverse=True)
+    link_words = sorted(cat.get("link_words", []), key=len, reverse=True)
+    lw = "|".join(re.escape(w) for w in link_words)
+    return (rf"(?<![\w])(?:{'|'.join(re.escape(w) for w in words)})"
+            rf"(?:{_SEP}(?:(?:{lw}){_SEP})?(\d+)(?!\d))?") if lw else \
+        rf"(?<![\w])(?:{'|'.join(re.escape(w) for w in words)})(?:{_SEP}(\d+)(?!\d))?"
+
+
+def _read_absolute(t: str, links: Sequence[str], whole: bool) -> CentreName | None:
+    """МЦС / tâm vận tốc tức thời / 速度瞬心 [of link j]: the centre of the frame and link j
+    (:data:`COUPLER` for j when no link is written)."""
+    pat = _absolute_pattern() + (r"(.*)$" if whole else "")
+    m = re.match(pat, t, re.IGNORECASE) if whole else re.search(pat, t, re.IGNORECASE)
+    if not m:
+        return None
+    link = m.group(1) or COUPLER
+    rest = (m.group(2) or "").strip() if whole else ""
+    if link == COUPLER:                 # "МЦС P02": the centre's own name follows
+        after = t[m.end():] if not whole else rest.strip("()[]{} =—-–:")
+        named = read_centre(after, links, whole) if after.strip() else None
+        if named is not None or (whole and rest):
+            return named
+    if link != COUPLER and (link not in links or link == "0"):
+        return None
+    if whole and rest and not re.fullmatch(r"[A-Za-z]\w{0,3}", rest):
+        return None
+    return CentreName("0", link, rest)
+
+
+def read_centre(text: str, links: Sequence[str], whole: bool = True,
+                single: bool = False) -> CentreName | None:
     """The centre a name means (``whole``: the text is the name alone, perhaps with a suffix
     ``x``/``y`` or a point name), or None. Link ids longer than a character need a separator
-    unless only one split of the digits names two links."""
+    unless only one split of the digits names two links. The tradition's name of a link's
+    absolute centre (МЦС, tâm vận tốc tức thời, 绝对瞬心, with or without its link) is the centre
+    of the frame and that link; ``single``: a letter with one link ("P2") is too (on drawings)."""
     t = text.strip().translate(SUBSCRIPTS)
+    absolute = _read_absolute(t, links, whole)
+    if absolute is not None:
+        return absolute
     pat = rf"(?<![\w])[{_letters()}]{_SEP}(\d[\d\s,.\-–_]*)" + (r"(.*)$" if whole else "")
     m = re.match(pat, t) if whole else re.search(pat, t)
     if not m:
@@ -67,6 +121,8 @@ def read_centre(text: str, links: Sequence[str], whole: bool = True) -> CentreNa
     digits, rest = m.group(1), (m.group(2) if whole else "")
     parts = [p for p in re.split(r"[\s,.\-–_]+", digits.strip()) if p]
     pair = _split(parts, set(links))
+    if pair is None and single and len(parts) == 1 and parts[0] in links and parts[0] != "0":
+        pair = ("0", parts[0])
     if pair is None:
         return None
     rest = re.sub(r"^[\s_{}()\[\],]+|[\s_{}()\[\]]+$", "", rest)
@@ -107,6 +163,9 @@ def centre_entries(entries: Sequence[Entry],
 
 #: a table row's cells stand on one line to the right of its name, within this many mm
 ROW_REACH_MM = 80.0
+#: ... its first cell within this many mm (a label of a drawing with numbers of another panel
+#: far to its right — a circle diagram's order — is no row)
+FIRST_CELL_MM = 40.0
 _NUMBER = re.compile(r"^[+\-−]?\d+(?:[.,]\d+)?$")
 _ANGLE = re.compile(r"([+\-−]?\d+(?:[.,]\d+)?)\s*°")
 
@@ -138,7 +197,8 @@ def _rows(sub: Submission, links: Sequence[str]) -> list[tuple[SheetText, Centre
         near = np.flatnonzero((dy < 0.6 * max(t.height, 1e-9)) & (dx > 0.0) &
                               (dx < ROW_REACH_MM))
         row = sorted((sub.texts[j] for j in near if j != i), key=lambda c: c.centre[0])
-        if len(row) >= 2 and (says_infinity(row[0].text) or
+        first = row[0].centre[0] - t.centre[0] if row else math.inf
+        if len(row) >= 2 and first <= FIRST_CELL_MM and (says_infinity(row[0].text) or
                               all(_NUMBER.match(c.text.strip()) for c in row[:2])):
             out.append((t, name, row))
     return out
@@ -156,25 +216,37 @@ def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None =
     plans), or the arrowhead it is written at."""
     texts: list[tuple[SheetText, CentreName]] = []
     in_tables = {id(t) for t, _, _ in _rows(sub, links)}
+    poles = []
     for t in sub.texts:
         if len(t.text) > MAX_TEXT or ":" in t.text or "=" in t.text or id(t) in in_tables:
             continue
-        name = read_centre(t.text, links, whole=False)
+        pole = read_pole(t.text, links)
+        if pole is not None:
+            poles.append((t, pole))
+            continue
+        name = read_centre(t.text, links, whole=False, single=True)
         if name is None or _count_names(t.text, links) != 1:
             continue
         words = t.text.strip()
-        if read_centre(words, links) is None and not _arrow_words(words):
+        if read_centre(words, links, single=True) is None and not _arrow_words(words):
             continue
         texts.append((t, name))
-    if not texts:
+    # "P2" (a letter and one link) and the poles "Q2" name centres only on a drawing of the
+    # centres: one with at least one centre written with its two links (elsewhere "P2" or "Q2"
+    # may be a force)
+    if not any(read_centre(t.text, links, whole=False) is not None
+               and read_centre(t.text, links, whole=False) == n for t, n in texts):
+        texts = [(t, n) for t, n in texts if read_centre(t.text, links, whole=False) == n]
+        poles = []
+    if not texts and not poles:
         return []
     if tol is None:
-        heights = [t.height for t, _ in texts if t.height > 0]
+        heights = [t.height for t, _ in texts + poles if t.height > 0]
         tol = min(10.0, max(3.0, 2.0 * statistics.median(heights))) if heights else 5.0
     marks: list[CentreMark] = []
     heads = list(sub.heads)
-    plain = [(t, n) for t, n in texts if read_centre(t.text.strip(), links) is not None
-             and not says_infinity(t.text)]
+    plain = [(t, n) for t, n in texts if read_centre(t.text.strip(), links, single=True) is not None
+             and not says_infinity(t.text)] + poles
     at_arrows = [(t, n) for t, n in texts if (t, n) not in plain]
     if plain:
         graph = drawn_graph(sub.lines, sub.markers, snap, sub.heads)
@@ -196,7 +268,7 @@ def find_centre_marks(sub: Submission, links: Sequence[str], tol: float | None =
 
 def _count_names(text: str, links: Sequence[str]) -> int:
     n, rest = 0, text
-    while read_centre(rest, links, whole=False) is not None:
+    while read_centre(rest, links, whole=False, single=True) is not None:
         n += 1
         cut = re.search(rf"[{_letters()}]", rest)
         rest = rest[cut.end():] if cut else ""

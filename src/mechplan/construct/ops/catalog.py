@@ -7,6 +7,7 @@ is listed here, so adding an operation to a family adds it here.
 from __future__ import annotations
 
 from .acceleration import *
+from .centre_velocity import *
 from .drivers import *
 from .force import *
 from .inputs import *
