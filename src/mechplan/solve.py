@@ -258,9 +258,10 @@ def to_json(sol: Solution) -> dict[str, Any]:
         "dof": sol.structure.dof,
         "structure": sol.structure.formula,
         "driver": _driver_json(scene.mechanism.drive),
-        **({} if scene.mechanism.drive2 is None else {     # W = 2: the second crank and its law
+        **({} if scene.mechanism.drive2 is None else {     # W = 2: the second driver and its law
             "second_driver": _driver_json(scene.mechanism.drive2)
-            | {"phase": scene.mechanism.drive2.phase}}),
+            | {"start" if scene.mechanism.drive2.linear else "phase":
+               scene.mechanism.drive2.phase}}),
         "groups": [
             {"class": g.klass, "kind": str(g.kind), "links": list(g.links)}
             for g in sol.structure.groups

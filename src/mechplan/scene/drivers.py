@@ -22,9 +22,12 @@ LINEAR_KEYS = ("kind", "link", "speed", "acceleration", "range")
 
 
 def linear_drive(d: Table, kind: DriverKind, links: dict[str, Link], guides: dict[str, Guide],
-                 pairs: list[Pair]) -> Drive:
-    """The cylinder or slider named by ``[drive] link``, with its law and range."""
-    d.check_keys(LINEAR_KEYS)
+                 pairs: list[Pair], extra_keys: tuple[str, ...] = ()) -> Drive:
+    """The cylinder or slider named by ``[drive] link`` (or ``[drive2]``), with its law and range.
+
+    ``extra_keys``: keys the table may hold besides the linear driver's (``[drive2] start``).
+    """
+    d.check_keys(LINEAR_KEYS + extra_keys)
     link = d.string("link", required=True)
     assert link is not None
     if link not in links or link == GROUND:
