@@ -150,7 +150,7 @@ def test_the_fused_kernel_equals_the_numpy_path_and_estimates_are_tiny(scene_of)
     # measured against the first driver's rates (|q̇|, |q̈| + q̇²/L): the bucket pivot H moves
     # through two levers in series (rod → boom → arm), ~50× faster than the rods; the bound is
     # looser than one cylinder's 1e-11
-    assert max(float(np.max(est.relative(sid))) for sid in targets) < 2e-9
+    assert max(float(np.max(est.relative(sid))) for sid in targets) < 5e-9
 
 
 # -- crank + cylinder: the boom driven as a crank about O, the arm by its cylinder ------------------
