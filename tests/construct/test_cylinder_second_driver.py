@@ -9,6 +9,7 @@ Nothing of mechplan's construction is used.
 
 from __future__ import annotations
 
+import itertools
 import math
 from pathlib import Path
 
@@ -47,7 +48,7 @@ def boom_angle(l4: float) -> float:
     def right(t):
         return cross(O - A, rot(t, B_2) - A) < 0
     grid = np.linspace(-math.pi, math.pi, 721)
-    roots = [brentq(f, a, b, xtol=1e-15) for a, b in zip(grid[:-1], grid[1:], strict=True)
+    roots = [brentq(f, a, b, xtol=1e-15) for a, b in itertools.pairwise(grid)
              if f(a) * f(b) < 0]
     return next(r for r in roots if right(r))
 
@@ -62,7 +63,7 @@ def arm_angle(th2: float, l7: float) -> float:
     def left(t):
         return cross(e - f_, e + rot(t, G_5) - f_) > 0
     grid = np.linspace(th2 - math.pi, th2 + math.pi, 721)
-    roots = [brentq(g, a, b, xtol=1e-15) for a, b in zip(grid[:-1], grid[1:], strict=True)
+    roots = [brentq(g, a, b, xtol=1e-15) for a, b in itertools.pairwise(grid)
              if g(a) * g(b) < 0]
     return next(r for r in roots if left(r))
 
@@ -153,7 +154,7 @@ def test_the_fused_kernel_equals_the_numpy_path_and_estimates_are_tiny(scene_of)
     assert max(float(np.max(est.relative(sid))) for sid in targets) < 5e-9
 
 
-# -- crank + cylinder: the boom driven as a crank about O, the arm by its cylinder ------------------
+# -- crank + cylinder: the boom driven as a crank about O, the arm by its cylinder --------------
 W2, EPS2 = 0.08, 0.01
 
 

@@ -19,7 +19,6 @@ from mechplan.solve import solve
 
 sys.path.insert(0, str(Path(__file__).parents[1] / "construct"))
 from test_cylinder_second_driver import (
-    A,
     B_2,
     E_2,
     F_2,
@@ -29,6 +28,7 @@ from test_cylinder_second_driver import (
     L7DDOT,
     L7DOT,
     TEMPLATE,
+    A,
     arm_angle,
     boom_angle,
     rot,

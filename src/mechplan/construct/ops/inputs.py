@@ -22,7 +22,7 @@ def second_crank_angle(step: Step, angle: Array) -> Result:
 
 
 def second_driver_length(step: Step, coordinate: Array) -> Result:
-    """l2 = ``offset`` + ``ratio``·q1: a second cylinder's length from the first driver's coordinate.
+    """l2 = ``offset`` + ``ratio``·q1: a second cylinder's length from the first's coordinate.
 
     q1 is the first crank's direction θ1 (rad) or the first linear driver's length (m).
     """
