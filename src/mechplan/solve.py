@@ -280,9 +280,18 @@ def to_json(sol: Solution) -> dict[str, Any]:
 def _driver_json(drive: Any) -> dict[str, Any]:
     """The driver and its law: its kind, link, coordinate and rates (SI)."""
     linear = drive.linear
-    return {"kind": drive.kind.value, "link": drive.link,
-            "coordinate": ("l" if drive.kind.value == "cylinder" else "s") if linear else "phi",
-            "unit": "m" if linear else "rad", "rate": drive.omega, "acceleration": drive.epsilon}
+    doc = {"kind": drive.kind.value, "link": drive.link,
+           "coordinate": ("l" if drive.kind.value == "cylinder" else "s") if linear else "phi",
+           "unit": "m" if linear else "rad", "rate": drive.omega, "acceleration": drive.epsilon}
+    if drive.law is not None:       # a law by a table over time (docs/drivers.md)
+        from .model.law import interpolation_error
+
+        err = interpolation_error(drive.law)
+        doc["law"] = {"source": drive.law.source, "rows": len(drive.law.times),
+                      "span": list(drive.law.span), "interpolation": "cubic spline",
+                      "interpolation_error": {"coordinate": err[0], "rate": err[1],
+                                              "acceleration": err[2]}}
+    return doc
 
 
 def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, float, str, float]]:

@@ -172,6 +172,8 @@ def plan_sizes(c: Construction, ev: Evaluation | None = None) -> dict[Plan, floa
     for step in c:      # the largest of the drivers' rates (W = 2: a second cylinder's too)
         if step.op is Op.DRIVER_RATE:
             rates[step.plan] = max(rates.get(step.plan, 0.0), abs(float(step.param("value"))))
+        elif step.op is Op.DRIVER_LAW and step.plan is not Plan.POSITION:   # a law by a table
+            rates[step.plan] = max(rates.get(step.plan, 0.0), float(step.param("size")))
     if rates:   # a linear driver: its rate q̇, and q̈ with the centripetal q̇²/L of its links
         q_dot = rates.get(Plan.VELOCITY, 0.0)
         crank = omega > 0.0         # W = 2, a crank and a cylinder: the larger of the two

@@ -10,6 +10,8 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass, field
 
+from .law import TableLaw
+
 GROUND = "0"
 
 
@@ -111,6 +113,9 @@ class Drive:
     #: a second driver (``[drive2]``, W = 2): a crank's φ at the first driver's φ = 0 (rad, in its
     #: sense); a cylinder's length at the first driver's reference (φ1 = 0 or its range start, m)
     phase: float = 0.0
+    #: a linear driver's law by a table over time (``law``): q(t) through a cubic spline; then
+    #: ``omega`` is the table's mean rate and ``epsilon`` 0 (the rates come from the spline)
+    law: TableLaw | None = None
 
     @property
     def sense(self) -> int:

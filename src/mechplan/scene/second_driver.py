@@ -59,12 +59,22 @@ def _second_cylinder(d: Table, links: dict[str, Link], guides: dict[str, Guide],
     """A second cylinder: its rod, law and ``start`` (its length at the first's reference)."""
     from .drivers import linear_drive
 
-    drive = linear_drive(d, DriverKind.CYLINDER, links, guides, pairs, extra_keys=("start",))
+    drive = linear_drive(d, DriverKind.CYLINDER, links, guides, pairs, extra_keys=("start",),
+                         first=False)
     if drive.link == first.link or (first.kind is DriverKind.CYLINDER
                                     and drive.carrier == first.carrier):
         raise d.error("link", Text(
             "errmsg2.scene_second_driver.already_first",
             {"link": drive.link}))
+    if drive.law is not None:       # its law by a table: its length is the table's at each time
+        if d.has("start"):
+            raise d.error("start", Text("drives2.law.not_both", {"key": "start"}))
+        if first.law is None and first.omega == 0.0:
+            raise d.error("law", Text("drives2.scene.first_at_rest", {"link": first.link}))
+        if first.linear and first.q_range is None:
+            raise d.error("law", Text(
+                "drives2.scene.first_range", {"kind": first.kind.value, "link": first.link}))
+        return drive
     start = d.quantity("start", "length", required=True, positive=True)
     assert start is not None
     if first.linear and first.q_range is None:

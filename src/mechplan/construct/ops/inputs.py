@@ -11,7 +11,10 @@ the first driver's coordinate by the same affine law (``SECOND_DRIVER_LENGTH``),
 
 from __future__ import annotations
 
+import numpy as np
+
 from ...geom.vec import Array
+from ...model.law import TableLaw, at_time, time_of
 from ..step import Step
 from .spec import OpSpec, Result, Written
 
@@ -29,9 +32,37 @@ def second_driver_length(step: Step, coordinate: Array) -> Result:
     return float(step.param("offset")) + float(step.param("ratio")) * coordinate, None, None
 
 
+def law_time(step: Step, x: Array) -> Array:
+    """The time of a position from the first driver's step value x: its law's table inverted
+    (``clock_times``/``clock_values``), or t = ``clock_a`` + ``clock_b``·x at constant rates."""
+    times = step.param("clock_times", ())
+    if times:
+        return time_of(TableLaw(times, step.param("clock_values")), x)
+    return float(step.param("clock_a")) + float(step.param("clock_b")) * np.asarray(x)
+
+
+def driver_law(step: Step, coordinate: Array) -> Result:
+    """A driver's coordinate (``order`` 0), rate (1) or acceleration (2) at the time of a position.
+
+    By its table (``times``/``values``: its cubic spline and derivatives) or at constant rates
+    (``q0`` + ``rate``·t, ``rate``, ``acceleration``). NaN where the time is outside the table.
+    """
+    t = law_time(step, coordinate)
+    order = int(step.param("order"))
+    times = step.param("times", ())
+    if times:
+        return at_time(TableLaw(times, step.param("values")), t, order), None, None
+    if order == 0:
+        return float(step.param("q0")) + float(step.param("rate")) * t, None, None
+    value = float(step.param("rate" if order == 1 else "acceleration"))
+    return np.where(np.isfinite(t), value, np.nan), None, None
+
+
 SECOND_CRANK_ANGLE = OpSpec("second_crank_angle", second_crank_angle,
                             "protocol.op.second_crank_angle", written=Written.ANGLE)
 SECOND_DRIVER_LENGTH = OpSpec("second_driver_length", second_driver_length,
                               "protocol.op.second_driver_length", written=Written.LINEAR)
 
-__all__ = ["SECOND_CRANK_ANGLE", "SECOND_DRIVER_LENGTH"]
+DRIVER_LAW = OpSpec("driver_law", driver_law, "protocol.op.driver_law", written=Written.LINEAR)
+
+__all__ = ["DRIVER_LAW", "SECOND_CRANK_ANGLE", "SECOND_DRIVER_LENGTH"]

@@ -126,6 +126,11 @@ def _rate(b: Builder, plan: Plan) -> str:
     symbol = ("l" if drive.kind is DriverKind.CYLINDER else "s") + dot
     value = drive.omega if plan is V else drive.epsilon
     prefix = "vel" if plan is V else "acc"
+    if drive.law is not None:       # by a table over time: its spline at the position's time
+        from .laws import law_step
+
+        return law_step(b, f"{prefix}.rate", drive, 1 if plan is V else 2, plan,
+                        f"{symbol}{drive.link}", first_group(b))
     return b.add(f"{prefix}.rate", Op.DRIVER_RATE, (), plan, Kind.SCALAR, Role.GIVEN,
                  f"{symbol}{drive.link}", first_group(b), value=value)
 

@@ -73,17 +73,26 @@ def _emit_linear(b: Builder, plan: Plan) -> None:
     drive = b.mech.drive2
     assert drive is not None
     group = _linear_group(b)
+    from .laws import by_table, law_step
+
     if plan is P:
         b.c.second_driver = drive.link
-        offset, ratio = law(b.mech.drive, drive)
-        sid = b.add("pos.q2", Op.SECOND_DRIVER_LENGTH, (_first_step(b),), P, Kind.SCALAR,
-                    Role.GIVEN, f"l{drive.link}", group, subject=(b.mech.drive.link, drive.link),
-                    offset=offset, ratio=ratio)
+        if by_table(b):     # a law by a table: the length at the position's time
+            sid = law_step(b, "pos.q2", drive, 0, P, f"l{drive.link}", group)
+        else:
+            offset, ratio = law(b.mech.drive, drive)
+            sid = b.add("pos.q2", Op.SECOND_DRIVER_LENGTH, (_first_step(b),), P, Kind.SCALAR,
+                        Role.GIVEN, f"l{drive.link}", group,
+                        subject=(b.mech.drive.link, drive.link), offset=offset, ratio=ratio)
         b.result(f"q_{drive.link}", sid)
         return
     dot = "̇" if plan is V else "̈"
     value = drive.omega if plan is V else drive.epsilon
     prefix = "vel" if plan is V else "acc"
+    if drive.law is not None:
+        law_step(b, f"{prefix}.rate2", drive, 1 if plan is V else 2, plan,
+                 f"l{dot}{drive.link}", group)
+        return
     b.add(f"{prefix}.rate2", Op.DRIVER_RATE, (), plan, Kind.SCALAR, Role.GIVEN,
           f"l{dot}{drive.link}", group, value=value)
 
