@@ -274,7 +274,52 @@ def to_json(sol: Solution) -> dict[str, Any]:
     if "textbook" in sol.extras:
         from .textbook_report import cycle_json
         doc["textbook"] = cycle_json(sol)
+    diagram = _diagram_json(sol)
+    if diagram is not None:
+        doc["kinematic_diagram"] = diagram
     return doc
+
+
+def _diagram_json(sol: Solution) -> dict[str, Any] | None:
+    """The kinematic diagram's ordinates at the solution's positions: the output link's s, v, a
+    (a slider: along its guide, m; a rocker: ψ, ω, ε in rad) over the driver's coordinate and the
+    law's time of each position (docs/drivers.md)."""
+    from .model.law import driver_time
+    from .model.output import output_link
+
+    mech, c, ev = sol.scene.mechanism, sol.construction, sol.ev
+    out = output_link(mech)
+    if out is None:
+        return None
+    x = np.asarray(sol.phi, dtype=float)        # rad, or m (a linear driver)
+    series: dict[str, Any] = {}
+    if out.point is not None:
+        u = np.asarray(out.direction)
+        for key, sym, image in (("s", "r", c.position), ("v", "v", c.velocity_image),
+                                ("a", "a", c.acceleration_image)):
+            if sym == "r" or c.has_result(sym, out.point):
+                sid = image(out.point)
+                if sid in ev.values:
+                    series[key] = np.asarray(ev[sid]) @ u
+    else:
+        for key, sym, step in (("s", "angle", c.link_angle), ("v", "omega", c.omega),
+                               ("a", "epsilon", c.epsilon)):
+            if c.has_result(sym, out.link) and step(out.link) in ev.values:
+                series[key] = np.asarray(ev[step(out.link)], dtype=float)
+    if "s" not in series:
+        return None
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = driver_time(mech.drive, x)
+    return {"output": {"link": out.link, "point": out.point,
+                       "kind": "rocker" if out.point is None else "slider"},
+            "coordinate": _driver_json(mech.drive)["coordinate"],
+            "x": [_num(v) for v in x], "t": [_num(v) for v in t],
+            **{k: [_num(v) for v in arr] for k, arr in series.items()}}
+
+
+def _num(x: Any) -> float | None:
+    x = float(x)
+    return x + 0.0 if math.isfinite(x) else None
 
 
 def _driver_json(drive: Any) -> dict[str, Any]:

@@ -30,13 +30,15 @@ Grader = Callable[[Ctx, int], CheckReport]
 def several_positions(ctx: Ctx) -> bool:
     """Whether the sheet holds more than one drawn plan of a kind (e.g. velocity plans #1, #2),
     or plans under texts that name different crank angles ("velocity plan, φ = 1°" beside
-    "acceleration plan, φ = 61°": a velocity plan of another position next to the plans of one)."""
+    "acceleration plan, φ = 61°": a velocity plan of another position next to the plans of one)
+    or different lengths of a linear driver ("l4 = 3000 mm" beside "l4 = 2400 mm")."""
     if ctx.sheet is None:
         return False
     kinds = [dp.plan for dp in ctx.sheet.plans]
     if len(set(kinds)) < len(kinds):
         return True
-    return len(kinds) > 1 and len(written_angles(ctx.sub.texts)) > 1
+    return len(kinds) > 1 and (len(written_angles(ctx.sub.texts)) > 1
+                               or len(written_lengths(ctx.sub.texts)) > 1)
 
 
 #: a crank angle written on a sheet, alone or ending a plan's title: "φ = 60°", "position 11,
@@ -49,6 +51,18 @@ def written_angles(texts: Sequence[SheetText]) -> set[float]:
     """The distinct crank angles (° in [0, 360), to 0.01°) written on a sheet."""
     return {round(float(m.group(1).replace(",", ".")) % 360.0, 2) % 360.0
             for t in texts for m in _WRITTEN_PHI.finditer(t.text)}
+
+
+#: a linear driver's coordinate written in a plan's title: "position 1, l4 = 2400.0 mm",
+#: "s1 = -100 mm" (not a scale "μs1 = 4 mm/mm")
+_WRITTEN_Q = re.compile(r"(?<!\w)[ls]\d+\s*=\s*(-?\d+(?:[.,]\d+)?)\s*mm\b(?!\s*/)")
+
+
+def written_lengths(texts: Sequence[SheetText]) -> set[float]:
+    """The distinct driver lengths (mm, to 0.01 mm) written on a sheet (a linear driver's
+    positions, as the crank angles of :func:`written_angles`)."""
+    return {round(float(m.group(1).replace(",", ".")), 2)
+            for t in texts for m in _WRITTEN_Q.finditer(t.text)}
 
 
 def fit_score(rows: Sequence[SegmentRow | ValueRow],

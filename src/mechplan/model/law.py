@@ -18,9 +18,13 @@ import functools
 import itertools
 import math
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.interpolate import CubicSpline
+
+if TYPE_CHECKING:
+    from .mechanism import Drive
 
 #: samples per row interval where monotonicity and the interpolation error are looked at
 DENSE = 64
@@ -128,3 +132,16 @@ def largest(law: TableLaw, order: int) -> float:
 def finite_rows(times: list[float], values: list[float]) -> bool:
     """Tell whether every row is finite."""
     return all(math.isfinite(x) for x in (*times, *values))
+
+
+def driver_time(drive: Drive, q: np.ndarray) -> np.ndarray:
+    """The time (s) at which a driver's coordinate is q, from its reference: a law by a table
+    inverted; at constant rates (q − q⁰)/q̇ for a linear driver (q⁰ its range's start, else 0) and
+    φ/|ω| for a crank (q its φ in its own sense)."""
+    q = np.asarray(q, dtype=float)
+    if drive.law is not None:
+        return time_of(drive.law, q)
+    if not drive.linear:
+        return q / abs(drive.omega)
+    ref = drive.q_range[0] if drive.q_range is not None else 0.0
+    return (q - ref) / drive.omega
