@@ -155,3 +155,19 @@ def _crank_text(text: str) -> str:
     text = (text[:start] + '[drive]\nlink = "2"\nspeed = "0.08 rad/s"\nepsilon = "0.01 rad/s^2"\n\n'
             + text[end:])
     return text.replace('B = "right of A->O"\n', "").replace("[positions]\ncount = 5\n", "")
+
+
+@pytest.mark.parametrize("lang", ["en", "ru", "vi", "zh"])
+def test_the_report_writes_both_driving_forces(lang):
+    from mechplan.i18n import message
+    from mechplan.i18n import number as format_number
+    from mechplan.report import text_report
+
+    sol = _solve(_text(), 2600.0)
+    text = text_report(sol, lang)
+    fa = sol.extras["forces"]
+    for link, value in (("4", fa.balancing_moment[0]), ("7", fa.second[1][0])):
+        line = message("drivers.force", lang, link=link, F=format_number(float(value), 3, lang),
+                       unit="", role="")
+        assert line.split(" (")[0].split("（")[0].rstrip() in text, (lang, link)
+    assert fa.second is not None and float(fa.second[1][0]) < 0    # the arm cylinder pulls
