@@ -192,3 +192,18 @@ def test_a_position_outside_the_table_is_refused_naming_it():
     with pytest.raises(SceneError, match="3044") as err:
         parse_scene(text, "arm.toml")
     assert err.value.key == "positions.at[0]"
+
+
+def test_a_law_over_the_cycle_scales_its_times_by_the_period():
+    """The same law written over the cycle's fraction with period = 8 s gives the same plans."""
+    cyc = ", ".join(f"[{float(t) / 8!r}, {float(P4(t) * 1000)!r}]" for t in T)
+    text = scene_text(second=False).replace(
+        f"law = {{ table = [{rows(P4)}] }}",
+        f'law = {{ table = [{cyc}], units = ["cycle", "mm"], period = "8 s" }}')
+    a = solve(parse_scene(text, "arm.toml"), at_deg=[2500.0], plans=KIN)
+    b = solve(parse_scene(scene_text(second=False), "arm.toml"), at_deg=[2500.0], plans=KIN)
+    for sid in ("vel.rate", "acc.rate", "pos.q2"):
+        assert a.ev[sid][0] == pytest.approx(b.ev[sid][0], rel=1e-12)
+    with pytest.raises(SceneError) as err:
+        parse_scene(text.replace(', period = "8 s"', ""), "arm.toml")
+    assert err.value.key == "drive.law.period"

@@ -3,7 +3,8 @@
 file a scene names is read: :func:`mechplan.userfiles.data_file`, a regular file within
 ``DATA_MAX_BYTES``, its content never echoed in a message).
 
-``units = ["s", "mm"]`` (default) names the columns' units: the time and the driver's length.
+``units = ["s", "mm"]`` (default) names the columns' units: the time (``s``, ``ms``, ``min``, or
+``cycle`` — a fraction of the cycle, with ``period = "8 s"``) and the driver's length.
 At least five rows, times strictly increasing, every value finite (docs/drivers.md).
 """
 
@@ -18,9 +19,9 @@ from ..i18n import Text
 from ..model.law import TableLaw, finite_rows
 from .reader import Table
 
-LAW_KEYS = ("table", "file", "units")
-#: the time column's units (s)
-TIME_UNITS = {"s": 1.0, "ms": 1e-3, "min": 60.0}
+LAW_KEYS = ("table", "file", "units", "period")
+#: the time column's units (s); "cycle": a fraction of the cycle, times ``period``
+TIME_UNITS = {"s": 1.0, "ms": 1e-3, "min": 60.0, "cycle": 1.0}
 #: fewest rows: the error estimate compares with the spline through every other row
 MIN_ROWS = 5
 
@@ -36,6 +37,11 @@ def read_law(d: Table) -> TableLaw:
     if (not isinstance(units, list) or len(units) != 2
             or not all(isinstance(u, str) for u in units) or units[0] not in TIME_UNITS):
         raise t.error("units", Text("drives2.law.units", {"value": repr(units)[:80]}))
+    scale = TIME_UNITS[units[0]]
+    if units[0] == "cycle":         # times as fractions of the cycle: its period in seconds
+        scale = _period(t)
+    elif t.has("period"):
+        raise t.error("period", Text("drives2.law.period"))
     if t.has("file"):
         raw, where, source = _file_rows(t), "file", str(t.string("file"))
     else:
@@ -47,7 +53,7 @@ def read_law(d: Table) -> TableLaw:
     for j, row in enumerate(raw):
         if not isinstance(row, list) or len(row) != 2:
             raise t.error(f"{where}[{j}]", Text("drives2.law.row"))
-        times.append(_number(t, row[0], units[0], f"{where}[{j}]") * TIME_UNITS[units[0]])
+        times.append(_number(t, row[0], units[0], f"{where}[{j}]") * scale)
         values.append(t.value_quantity(f"{_number(t, row[1], units[1], f'{where}[{j}]')!r} "
                                        f"{units[1]}", f"{where}[{j}]", "length"))
     if len(times) < MIN_ROWS:
@@ -59,6 +65,20 @@ def read_law(d: Table) -> TableLaw:
         if times[j] <= times[j - 1]:
             raise t.error(f"{where}[{j}]", Text("drives2.law.times_increasing", {"row": str(j)}))
     return TableLaw(tuple(times), tuple(values), source)
+
+
+def _period(t: Table) -> float:
+    """The cycle's period (s) of a law over the cycle: ``period = "8 s"``."""
+    raw = t.raw("period")
+    text = raw.strip() if isinstance(raw, str) else ""
+    number, _, unit = text.partition(" ")
+    try:
+        value = float(number.replace(",", ".")) * TIME_UNITS[unit.strip()]
+    except (ValueError, KeyError):
+        raise t.error("period", Text("drives2.law.period")) from None
+    if not value > 0.0 or unit.strip() == "cycle":
+        raise t.error("period", Text("drives2.law.period"))
+    return value
 
 
 def _number(t: Table, value: Any, unit: str, where: str) -> float:
