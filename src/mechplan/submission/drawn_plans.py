@@ -11,7 +11,6 @@ name. Drawings of one plan whose labels do not clash are one plan.
 from __future__ import annotations
 
 import math
-import re
 import statistics
 from collections import Counter
 from collections.abc import Collection
@@ -207,7 +206,7 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
             continue
         plan = max(votes, key=lambda p: (votes[p], -list(Plan).index(p)))
         keys = [k for k in book.plans if k[0] is plan]
-        decided.append((_best_key(book, keys, members, sub.texts), comp, members))
+        decided.append((max(keys, key=lambda k: _fit(book, k, members)), comp, members))
     # merge drawings of one plan unless their labels clash
     plans: list[DrawnPlan] = []
     groups: list[tuple[PlanKey, list[int], list[_Label]]] = []
@@ -253,33 +252,6 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
                                            plan=plan_title(key[0].value, key[1], case="gen")),
                               sub.path))
     return plans
-
-
-def _best_key(book: LabelBook, keys: list[PlanKey], members: list[_Label],
-              texts: list[SheetText]) -> PlanKey:
-    """The plan whose points the labels fit best; among plans the labels fit equally (two
-    drivers' force polygons carry the same letters a, b, c …), the one a title next to the
-    drawing names ("Force plan I(6,7) — position 1")."""
-    fits = {k: _fit(book, k, members) for k in keys}
-    best = max(fits.values())
-    tied = [k for k in keys if fits[k] >= best - 1e-12]
-    if len(tied) < 2:
-        return tied[0]
-    points = _points_of(members)
-    if not points:
-        return tied[0]
-    x0, y1 = min(x for x, _ in points), max(y for _, y in points)
-    x1 = max(x for x, _ in points)
-    near: list[tuple[float, int, PlanKey]] = []
-    for i, key in enumerate(tied):
-        name = re.compile(rf"(?<![A-Za-z]){re.escape(key[1])}")
-        # a title stands above its drawing, over the drawing's width
-        gaps = [t.centre[1] - y1 for t in texts if name.search(t.text)
-                and t.centre[1] > y1 - t.half[1]
-                and t.centre[0] + t.half[0] >= x0 and t.centre[0] - t.half[0] <= x1]
-        if gaps:
-            near.append((min(gaps), i, key))
-    return min(near)[2] if near else tied[0]
 
 
 def _fit(book: LabelBook, key: PlanKey, members: list[_Label]) -> float:
