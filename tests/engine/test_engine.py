@@ -152,7 +152,7 @@ def test_articulated_pair_is_exact_and_closes_its_work():
     f = st.model.cylinder(1, phi)
     assert np.allclose(-state.a_C[:, 0], f.a, rtol=1e-9, atol=1e-9 * w * w * R_)
     # articulated stroke differs from 2R; the work scales with it
-    assert st.model.pair.stroke_E != pytest.approx(2 * R_, rel=1e-3)
+    assert st.model.stroke_of(2) != pytest.approx(2 * R_, rel=1e-3)
 
 
 def test_csv_round_trip():

@@ -303,7 +303,7 @@ def test_canvas_qti_package(klass):
 def test_the_documented_default_rule_is_the_default():
     from mechplan.lms.rule import DEFAULT_RULE
 
-    doc = (Path(__file__).resolve().parents[2] / "docs" / "lms.md").read_text(encoding="utf-8")
+    doc = (Path(__file__).resolve().parents[2] / "docs" / "classes.md").read_text(encoding="utf-8")
     assert DEFAULT_RULE.strip() in doc
 
 
@@ -328,3 +328,11 @@ def test_same_table_in_another_order(tmp_path):
     prints = [fingerprint(p.stem, p.read_bytes(), read_submission(p)) for p in (a, b, c)]
     assert [(s.first, s.second, s.evidence) for s in same_work(prints)] == [("a", "b",
                                                                             "same table")]
+
+
+def test_the_round_trips_quizzes_validate_against_their_schemas(klass):
+    from mechplan.lms.validate import canvas_package_errors, moodle_quiz_errors
+
+    _, _, done, _ = klass
+    assert moodle_quiz_errors((done.out / "quiz_moodle.xml").read_bytes()) == []
+    assert canvas_package_errors((done.out / "quiz_canvas_qti.zip").read_bytes()) == []

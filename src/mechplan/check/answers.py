@@ -78,7 +78,7 @@ def _known(keys: Keys, key: str) -> bool:
 
 
 #: the files an answer table may be
-TABLE_SUFFIXES = (".toml", ".csv", ".tsv", ".txt")
+TABLE_SUFFIXES = (".toml", ".csv", ".tsv", ".txt", ".xlsx", ".xlsm")
 
 
 # -- entry points -------------------------------------------------------------------------------

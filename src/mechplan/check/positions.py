@@ -19,6 +19,7 @@ import numpy as np
 
 from ..errors import MechplanError
 from ..submission.read import Entry, Note, Point, SheetText
+from ..submission.titles import position_written, written_step
 from ..submission.written import is_angle_name, parse_angle
 from .context import Ctx
 from .report import SLIP, WRONG, CheckReport, Finding, PlanReport, PointRow, SegmentRow, ValueRow
@@ -73,10 +74,29 @@ def fit_score(rows: Sequence[SegmentRow | ValueRow],
     return (wrong, float(np.median(errs)) if errs else math.inf)
 
 
-def _best_position(reports: list[CheckReport], j: int) -> int:
-    """The candidate position at which drawn plan ``j`` fits best."""
+def _best_position(reports: list[CheckReport], j: int, title: str = "") -> int:
+    """The candidate position of drawn plan ``j``: the one its title names ("Force plan I(0,1)
+    — position 1, φ = 30.0°"; plans of one kind with the same letters cannot be told apart by
+    their fit), else the one it fits best."""
+    titled = _title_position(title, reports)
+    if titled is not None:
+        return titled
     plans = [r.plans[j] for r in reports]
     return min(range(len(plans)), key=lambda k: fit_score(plans[k].segments, plans[k].points))
+
+
+def _title_position(title: str, reports: Sequence[CheckReport]) -> int | None:
+    """The candidate whose position a title ends with: a crank angle (°) or a linear driver's
+    coordinate (as ``shown_coordinate`` gives it), to the title's last written digit."""
+    written = position_written(title) if title else None
+    if written is None:
+        return None
+    name, value, unit = written
+    if unit in ("°", "deg") or is_angle_name(name):
+        return _position_of(value, reports)
+    step = written_step(title) * (1.0 + 1e-9)
+    near = [k for k, r in enumerate(reports) if abs(r.phi_deg - value) <= step]
+    return near[0] if len(near) == 1 else None
 
 
 def grade_per_plan(ctx: Ctx, reports: list[CheckReport], best: int,
@@ -89,7 +109,7 @@ def grade_per_plan(ctx: Ctx, reports: list[CheckReport], best: int,
     """
     assert ctx.sheet is not None
     drawn = ctx.sheet.plans
-    at = [_best_position(reports, j) for j in range(len(drawn))]
+    at = [_best_position(reports, j, drawn[j].title) for j in range(len(drawn))]
     groups = {k: [j for j in range(len(drawn)) if at[j] == k] for k in dict.fromkeys(at)}
     graded: dict[int, PlanReport] = {}
     base = reports[best]

@@ -166,7 +166,7 @@ def _run(args: argparse.Namespace, said: dict[str, str]) -> int:
                       mu=parse_scales(args), label_distance=args.label_distance, snap=args.snap)
     from ..lms import cli as lms
 
-    if lms.wanted(args):                    # a Moodle or Canvas download (docs/lms.md)
+    if lms.wanted(args):                    # a Moodle or Canvas download (docs/classes.md)
         return lms.run(args)
     if Path(args.submission).is_dir():
         return _run_class(args, options)

@@ -41,8 +41,10 @@ class Span:
 
 @dataclass(frozen=True)
 class MemberCycle:
-    """A member's phases on the shaft: its name, kind ("linkage" or "cam"), its phase offset
-    (φ = ψ + phase), the spans in its own angle in order, and its output's stroke (m or rad)."""
+    """A member's phases on the shaft: its name, kind ("linkage", "cam" or "driven" — a linkage
+    turned by a cam's follower), its phase offset (φ = turns·ψ + phase), the spans in its own
+    angle in order, its output's stroke (m or rad) and how many turns it makes in one turn of the
+    diagram's shaft (a member on a faster shaft of the machine's train)."""
 
     name: str
     kind: str
@@ -50,22 +52,37 @@ class MemberCycle:
     spans: tuple[Span, ...]
     stroke: float
     subject: str = ""
+    turns: int = 1
+
+    def _start(self, s: Span, origin: float) -> float:
+        """ψ of the span's first occurrence from the diagram's origin, in [0, 2π/turns)."""
+        period = TWO_PI / self.turns
+        a = ((s.start - self.phase) / self.turns - origin) % period
+        return 0.0 if a > period - 1e-12 else a
 
     def on_shaft(self, origin: float) -> list[tuple[Span, float, float]]:
-        """(span, ψ start, ψ end) with ψ from the diagram's origin in [0, 2π]; a span crossing
-        the origin is split in two."""
+        """(span, ψ start, ψ end) with ψ from the diagram's origin in [0, 2π], each span once
+        per turn of the member; a span crossing the origin is split in two."""
         out: list[tuple[Span, float, float]] = []
-        for s in self.spans:
-            a = (s.start - self.phase - origin) % TWO_PI
-            if a > TWO_PI - 1e-12:
-                a = 0.0
-            b = a + s.angle
-            if b <= TWO_PI + 1e-12:
-                out.append((s, a, min(b, TWO_PI)))
-            else:
-                out.append((s, a, TWO_PI))
-                out.append((s, 0.0, b - TWO_PI))
+        for k in range(self.turns):
+            for s in self.spans:
+                a = self._start(s, origin) + k * TWO_PI / self.turns
+                b = a + s.angle / self.turns
+                if b <= TWO_PI + 1e-12:
+                    out.append((s, a, min(b, TWO_PI)))
+                else:
+                    out.append((s, a, TWO_PI))
+                    out.append((s, 0.0, b - TWO_PI))
         return sorted(out, key=lambda t: t[1])
+
+    def fraction_in(self, s: Span, a: float, origin: float) -> float:
+        """How far into span ``s`` (a fraction of it) the piece starting at ψ = ``a`` begins."""
+        period = TWO_PI / self.turns
+        start = self._start(s, origin)
+        off = (a - start) % period if abs(a - start) > 1e-12 else 0.0
+        if off > period - 1e-12:
+            off = 0.0
+        return off * self.turns / s.angle if s.angle > 0 else 0.0
 
 
 def linkage_cycle(c: Construction, mech: Mechanism, name: str, phase: float,
@@ -107,9 +124,14 @@ def cam_cycle(phases: tuple[Phase, ...], stroke_: float, name: str, phase: float
     return MemberCycle(name, "cam", phase, tuple(spans), stroke_)
 
 
+def driven_cycle(cam: MemberCycle, name: str, subject: str, stroke_: float) -> MemberCycle:
+    """A linkage turned by a cam's follower: the cam's phases, on the cam's shaft."""
+    return MemberCycle(name, "driven", cam.phase, cam.spans, stroke_, subject, cam.turns)
+
+
 def diagram_origin(members: list[MemberCycle], start: float | None) -> float:
     """ψ_0 of the diagram: ``start`` or the first member's first span (its working stroke)."""
     if start is not None:
         return start % TWO_PI
     m = members[0]
-    return (m.spans[0].start - m.phase) % TWO_PI
+    return ((m.spans[0].start - m.phase) / m.turns) % TWO_PI

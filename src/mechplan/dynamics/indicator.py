@@ -175,6 +175,7 @@ class IndicatorDiagram:
     V_h: float
     branches: tuple[Branch, ...]
     names: tuple[str, ...]              # message ids of the strokes
+    V_c_given: bool = True              # False: a p(φ) table without ε (V_c nominal, p–V unscaled)
 
     @property
     def V_a(self) -> float:
@@ -357,8 +358,13 @@ def volume_table_diagram(rows: Sequence[tuple[float, float]], strokes: int, V_h:
 
 
 def angle_table_diagram(rows: Sequence[tuple[float, float]], strokes: int, kin: SliderCrank,
-                        F_p: float, epsilon: float, file: str, key: str) -> IndicatorDiagram:
-    """A measured p(φ) table over the whole cycle (first row at 0, last at the cycle angle)."""
+                        F_p: float, epsilon: float | None, file: str,
+                        key: str) -> IndicatorDiagram:
+    """A measured p(φ) table over the whole cycle (first row at 0, last at the cycle angle).
+
+    p(φ) does not depend on V_c: without the compression ratio ``epsilon`` the diagram takes a
+    nominal V_c = V_h (``V_c_given`` False), so only its p–V drawing lacks a volume origin.
+    """
     phi = np.asarray([r[0] for r in rows], float)
     p = np.asarray([r[1] for r in rows], float)
     cycle = math.pi * strokes
@@ -381,7 +387,7 @@ def angle_table_diagram(rows: Sequence[tuple[float, float]], strokes: int, kin: 
         raise SceneError(Text("errmsg.dynamics_indicator.crank_angles_p"),
                          file=file, key=key)
     V_h = F_p * 2.0 * kin.R
-    V_c = V_h / (epsilon - 1.0)
+    V_c = V_h / (epsilon - 1.0) if epsilon is not None else V_h
     nodes = np.union1d(phi, np.arange(strokes + 1) * math.pi)
     pn = np.interp(nodes, phi, p)
     branches = []
@@ -399,4 +405,5 @@ def angle_table_diagram(rows: Sequence[tuple[float, float]], strokes: int, kin: 
             Vb = V_c + F_p * float(kin.x(np.asarray(b)))
             parts.append((min(Va, Vb), max(Va, Vb), piece))
         branches.append(_branch(parts, not descending))
-    return IndicatorDiagram(strokes, V_c, V_h, tuple(branches), _names(strokes))
+    return IndicatorDiagram(strokes, V_c, V_h, tuple(branches), _names(strokes),
+                            epsilon is not None)

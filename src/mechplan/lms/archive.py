@@ -15,17 +15,14 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..errors import CheckError
+
+# one set of limits for every file read inside another (zips, workbooks, PDF attachments)
+from ..submission.contained import MAX_ENTRIES, MAX_MEMBER, MAX_RATIO, MAX_TOTAL, RATIO_FLOOR
 from .texts import say
 
-#: most entries of an archive (nested ones counted too)
-MAX_ENTRIES = 20_000
-#: most bytes of all members together, uncompressed (nested ones counted too)
-MAX_TOTAL = 512 * 1024**2
-#: most bytes of one member
-MAX_MEMBER = 64 * 1024**2
-#: largest compression ratio of a member bigger than RATIO_FLOOR (DXF text compresses ~10–30×)
-MAX_RATIO = 200
-RATIO_FLOOR = 1024**2
+__all__ = ["MAX_DEPTH", "MAX_ENTRIES", "MAX_MEMBER", "MAX_RATIO", "MAX_TOTAL", "RATIO_FLOOR",
+           "ArchiveError", "Member", "read_download", "read_folder", "read_zip", "safe_name"]
+
 #: deepest nesting of zips in zips (the download itself is depth 0)
 MAX_DEPTH = 3
 

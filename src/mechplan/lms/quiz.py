@@ -9,7 +9,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from typing import Any
 
-from ..i18n import message, significant, trimmed
+from ..i18n import message, trimmed
 
 #: the answer key's kinds → unit message ids (as the answer key PDF writes them)
 UNITS = {"v": "batch.unit.velocity", "a": "batch.unit.acceleration", "omega": "batch.unit.omega",
@@ -27,6 +27,13 @@ def _category(quiz: ET.Element, path: str) -> None:
     _text(q, "category", f"$course$/top/{path}")
 
 
+def lms_number(value: float, figures: int) -> str:
+    """A number as an LMS reads it (a machine format, not text for a reader): ``figures``
+    significant figures, a point, an exponent ``e-15`` for very small or large values — never
+    the "×10⁻¹⁵" a sheet writes, which Moodle and Canvas cannot read."""
+    return f"{value:.{figures}g}"
+
+
 def tolerance(value: float, pct: float, floor: float) -> float:
     """The allowed error of a value: ``pct`` % of it, at least ``floor`` (a tiny value's)."""
     return max(abs(value) * pct / 100.0, floor)
@@ -38,7 +45,7 @@ class Question:
 
     name: str
     text: str
-    answer: str          # written as the LMS reads it (a point, 6 significant figures)
+    answer: str          # written as the LMS reads it (lms_number: 6 significant figures)
     tolerance: float
     value: float
     unit: str
@@ -60,7 +67,7 @@ def questions(key: dict[str, Any], pct: float, lang: str = "en",
             yield Question(f"{key.get('id', '')} {row['quantity']} φ={angle}°",
                            message("lms.quiz.question", lang, quantity=row["quantity"],
                                    phi=angle, unit=unit),
-                           significant(value, figures, "en"), tolerance(value, pct, floor),
+                           lms_number(value, figures), tolerance(value, pct, floor),
                            value, unit)
 
 
@@ -78,7 +85,7 @@ def moodle_quiz(keys: Iterable[tuple[str, dict[str, Any]]], pct: float,
             ET.SubElement(q, "defaultgrade").text = "1"
             answer = _text(q, "answer", question.answer, fraction="100",
                            format="moodle_auto_format")
-            ET.SubElement(answer, "tolerance").text = significant(question.tolerance, 3, "en")
+            ET.SubElement(answer, "tolerance").text = lms_number(question.tolerance, 3)
             unit = question.unit
             units = ET.SubElement(q, "units")
             if unit:
@@ -128,10 +135,10 @@ def _qti_assessment(ident: str, title: str, key: dict[str, Any], pct: float, lan
         either = ET.SubElement(ET.SubElement(cond, "conditionvar"), "or")
         ET.SubElement(either, "varequal", {"respident": "response1"}).text = q.answer
         within = ET.SubElement(either, "and")
-        ET.SubElement(within, "vargte", {"respident": "response1"}).text = significant(
-            q.value - q.tolerance, 6, "en")
-        ET.SubElement(within, "varlte", {"respident": "response1"}).text = significant(
-            q.value + q.tolerance, 6, "en")
+        ET.SubElement(within, "vargte", {"respident": "response1"}).text = lms_number(
+            q.value - q.tolerance, 6)
+        ET.SubElement(within, "varlte", {"respident": "response1"}).text = lms_number(
+            q.value + q.tolerance, 6)
         ET.SubElement(cond, "setvar", {"action": "Set", "varname": "SCORE"}).text = "100"
     ET.indent(root)
     return b'<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, encoding="utf-8")

@@ -58,7 +58,9 @@ def decode(data: bytes) -> tuple[str, str]:
             text = data.decode(enc)
         except UnicodeDecodeError:
             continue
-        return text, ("utf-8-sig" if data.startswith(b"\xef\xbb\xbf") else enc)
+        if enc == "utf-8-sig" and not data.startswith(b"\xef\xbb\xbf"):
+            enc = "utf-8"        # written back without a BOM, as it came
+        return text, enc
     return data.decode("latin-1"), "latin-1"
 
 

@@ -1,6 +1,6 @@
 """The grading rule an instructor states in TOML: points per checked item (per plan), what a
 mistake costs (new, carried, swapped, small errors adding up, arithmetic slips, missing items),
-the tolerances, the grade scale. ``DEFAULT_RULE`` is the documented default (docs/lms.md)."""
+the tolerances, the grade scale. ``DEFAULT_RULE`` is the documented default (docs/classes.md)."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from ..userfiles import SCENE, read_text
 from .texts import say
 
 DEFAULT_RULE = """\
-# mechplan grading rule (docs/lms.md). Every key may be left out: the default is shown.
+# mechplan grading rule (docs/classes.md). Every key may be left out: the default is shown.
 max_grade = 100        # the grade of a submission with everything right (Moodle's Maximum Grade)
 decimals = 1           # digits after the point in the grade
 nothing_found = 0      # grade when nothing gradeable was found ("" leaves the cell empty)

@@ -33,7 +33,7 @@ from .sheets import (
 from .variants import VariantFile, load_variants, variant_in
 
 #: files mechplan grades; anything else handed in is listed, never skipped silently
-GRADED = (".dxf", ".toml", ".csv", ".tsv")
+GRADED = (".dxf", ".toml", ".csv", ".tsv", ".xlsx", ".xlsm", ".pdf")
 PRIVATE = ".submissions"
 OUTPUTS = ("grading_worksheet.csv", "feedback_files.zip", "canvas_gradebook.csv", "problems.csv",
            "same_work.csv", "lms_summary.csv", "quiz_moodle.xml", "quiz_canvas_qti.zip")
@@ -154,16 +154,20 @@ def _comment(r: Result, rule: Rule, lang: str) -> str:
 
 def round_trip(variants_path: Path, download: Path, out: Path, *, roster: Path | None = None,
                worksheet: Path | None = None, rule: Path | None = None, lang: str = "en",
-               jobs: int = 1, progress: bool | None = None) -> RoundTrip:
-    """Check a Moodle or Canvas download; write the grade files into ``out``."""
+               jobs: int = 1, progress: bool | None = None,
+               gradebook: Path | None = None) -> RoundTrip:
+    """Check a Moodle or Canvas download; write the grade files into ``out`` (Canvas's
+    exported ``gradebook``, when given, filled in place)."""
     from ..batch.engine import run_tasks
     from ..batch.outdir import locked, prepare_output, subfolder
     from ..submission.read import read_submission
+    from .gradebook import read_gradebook
 
     variants = load_variants(variants_path)
     the_rule = load_rule(rule)
     people = read_roster(roster) if roster else []
     sheet = read_worksheet(worksheet) if worksheet else None
+    book = read_gradebook(gradebook) if gradebook else None
     members = read_download(download, out)     # refuses a hostile archive before writing anything
     found, loose = participants(members)
     if not found and not loose:
@@ -243,9 +247,11 @@ def round_trip(variants_path: Path, download: Path, out: Path, *, roster: Path |
                 if m.name.lower().endswith(GRADED):
                     sub = _read_quietly(read_submission, private, r, m)
                     prints.append(fingerprint(who, m.data, sub))
-        same = same_work(prints) + _better_fits(results, others, fits, lang)
+        same = same_work(prints, lang) + _better_fits(results, others, fits, lang)
         written = _write_outputs(out, results, problems, same, the_rule, sheet, people,
                                  variants, lang, reports)
+        if book is not None:
+            _fill_gradebook(out, book, results, problems, the_rule, lang)
     return RoundTrip(results, problems, same, out, written)
 
 
@@ -389,6 +395,35 @@ def _write_outputs(out: Path, results: list[Result], problems: list[Problem], sa
             [(f"mechplan {vid}", k) for vid, k in sorted(seen.items())],
             rule.tolerance_pct, lang)))
     return written
+
+
+def _fill_gradebook(out: Path, book: Any, results: list[Result], problems: list[Problem],
+                    rule: Rule, lang: str) -> None:
+    """Canvas's own gradebook export with the assignment's column filled (replacing the
+    gradebook made from the roster), and ``problems.csv`` written again with what it lacks."""
+    from .gradebook import Graded, assignment_column, fill_gradebook, scaled_note
+
+    column = assignment_column(book, rule.assignment, rule.assignment_id)
+    graded = []
+    for r in results:
+        pr = r.person
+        canvas = r.p.lms == "canvas"
+        graded.append(Graded(
+            f"{r.p.name} ({r.p.id})", r.grade,
+            ids=tuple(x for x in ((r.p.id if canvas else ""), pr.id if pr else "") if x),
+            sis=tuple(x for x in (pr.id_number if pr else "",) if x),
+            logins=tuple(x for x in ((r.p.name if canvas else ""), pr.login if pr else "")
+                         if x),
+            names=tuple(x for x in (pr.name if pr else "", r.p.name) if x)))
+    data, missing, scaled = fill_gradebook(book, graded, column, rule.max_grade, rule.decimals)
+    problems += [Problem(w, Path(book.path).name, message("lms2.not_in_gradebook", lang))
+                 for w in missing]
+    if scaled is not None:
+        problems.append(Problem("", Path(book.path).name,
+                                scaled_note(scaled, rule.max_grade, lang).tr(lang)))
+    write_atomic(out / "canvas_gradebook.csv", data)
+    write_atomic(out / "problems.csv", _csv(
+        [["student", "file", "problem"]] + [[p.who, p.file, p.problem] for p in problems]))
 
 
 def _feedback_zip(fh: Any, moodle: list[Result], reports: Path) -> None:

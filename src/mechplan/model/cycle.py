@@ -27,6 +27,33 @@ class MemberSpec:
     phase: float = 0.0
     subject: str | None = None     # the linkage's output: a slider's point or a rocker's link
     working: Working = Working.LONGER
+    #: a linkage whose crank is the follower lever of this cam member (its name), and the
+    #: linkage's crank angle φ (its scene's convention) at the cam's near position, rad
+    driven_by: str | None = None
+    near: float = 0.0              # rad, or m for a driving slider (``near_length``)
+    near_length: bool = False
+    near_given: bool = False
+    shaft: str | None = None       # the shaft it turns with (None: the first shaft, or the motor)
+
+
+@dataclass(frozen=True)
+class ShaftSpec:
+    """A shaft turned from the motor (or from another shaft) through a gear scene's train.
+
+    ``train``: the gear scene (a planetary stage and its ordinary stage, as solved there); the
+    shaft's speed is ω_from / u with u the train's exact ratio.
+    """
+
+    name: str
+    train: str
+    source: str = "motor"          # "motor" or an earlier shaft's name
+
+
+@dataclass(frozen=True)
+class Motor:
+    """The machine's motor: its speed (rad/s, signed: + counter-clockwise)."""
+
+    omega: float
 
 
 @dataclass(frozen=True)
@@ -39,3 +66,7 @@ class MachineSpec:
     start: float | None = None     # ψ of the diagram's origin, rad (None: the first member's
                                    # first phase: its working stroke or its rise)
     file: str = "<scene>"
+    motor: Motor | None = None
+    shafts: tuple[ShaftSpec, ...] = ()
+    cycle_shaft: str | None = None  # the shaft whose turn the diagram spans (default: the
+                                    # slowest shaft)

@@ -16,7 +16,8 @@ class Layout(enum.Enum):
 
     INLINE = "inline"               # one cylinder per throw, all axes parallel
     V = "v"                         # two banks, side-by-side rods on shared throws
-    ARTICULATED = "v_articulated"   # two banks, a master rod and an articulated rod on one throw
+    ARTICULATED = "v_articulated"   # two banks, a master and an articulated rod on every throw
+    RADIAL = "radial"               # one throw, a master rod and n − 1 articulated rods
 
 
 class IndicatorKind(enum.Enum):
@@ -129,6 +130,31 @@ class ArticulatedSpec:
 
 
 @dataclass(frozen=True, slots=True)
+class ArticulatedRod:
+    """One articulated cylinder: its number, its master cylinder's and its rod's geometry.
+
+    ``lug`` is the signed angle ∠CBD from the master rod's B→C in the sense of rotation (rad).
+    """
+
+    number: int
+    master: int
+    lug: float
+    spec: ArticulatedSpec
+
+
+@dataclass(frozen=True, slots=True)
+class RodSideSpec:
+    """The crank-end (rod-side) face of a double-acting cylinder.
+
+    Gas acts on F_p − π·d²/4; its indicator diagram runs its own cycle from its own TDC, the head
+    end's BDC (half a turn later).
+    """
+
+    rod_diameter: float
+    indicator: IndicatorSpec | None       # None: the head end's diagram, half a turn later
+
+
+@dataclass(frozen=True, slots=True)
 class EngineSpec:
     """An engine for its dynamic calculation."""
 
@@ -145,6 +171,8 @@ class EngineSpec:
     masses: MassSpec
     indicator: IndicatorSpec
     articulated: ArticulatedSpec | None = None
+    rods: tuple[ArticulatedRod, ...] = ()   # every articulated cylinder
+    rod_side: RodSideSpec | None = None     # double-acting cylinders
     grid: int = 720                     # points of the dense pass per cycle
     table_step: float = math.radians(15.0)
     language: str = "en"
@@ -169,6 +197,12 @@ class EngineSpec:
     def V_h(self) -> float:
         """Displacement of one cylinder F_p·2R."""
         return self.F_p * 2.0 * self.R
+
+    @property
+    def F_rod_side(self) -> float:
+        """Gas area of the crank-end face F_p − πd²/4 (0 for a single-acting cylinder)."""
+        rs = self.rod_side
+        return 0.0 if rs is None else self.F_p - math.pi * rs.rod_diameter ** 2 / 4.0
 
 
 def firing_phases(cylinders: tuple[CylinderSpec, ...], order: tuple[int, ...],

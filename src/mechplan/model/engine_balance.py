@@ -15,3 +15,4 @@ class BalanceSpec:
     share: float = 0.5                           # reciprocating share on the counterweights
     cw_radius: float | None = None               # radius of a cheek's counterweight centre, m
     shafts: bool = False                         # size Lanchester balance shafts for the 2nd order
+    rod_offset: float = 0.0                      # side-by-side rods: distance between their planes

@@ -15,6 +15,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from .engine_wiebe import Wiebe
+
 R_MU = 8.315                 # kJ/(kmol·K)
 AIR_O2 = 0.208               # O2 in air by volume
 R_AIR = 287.0                # J/(kg·K)
@@ -61,6 +63,9 @@ class CycleSpec:
     cylinders: int
     power: float | None = None   # W: size the cylinder for this effective power
     S_D: float = 1.0
+    coolant_c: float = 0.5       # heat balance: c and m of the coolant's empirical formula
+    coolant_m: float = 0.65
+    air_O2: float = AIR_O2       # O2 in air by volume (Kolchin–Demidov 0.208; 0.21 in others)
 
 
 @dataclass(frozen=True)
@@ -94,6 +99,7 @@ class Cycle:
     p_e: float
     eta_e: float
     g_e: float
+    wiebe: Wiebe | None = None   # the optional Wiebe model's diagram (when the scene asks)
 
     def power(self, V_h: float, cylinders: int | None = None) -> float:
         """Effective power (W) of cylinders of displacement V_h (m³)."""
@@ -125,17 +131,27 @@ def _mix(fractions: dict[str, float], t: float, high: bool) -> tuple[float, floa
 def products_of(s: CycleSpec, L0: float) -> dict[str, float]:
     """kmol of each combustion product per kg of fuel."""
     if s.alpha < 1.0:
-        co = 2.0 * (1.0 - s.alpha) / (1.0 + s.K) * AIR_O2 * L0
+        co = 2.0 * (1.0 - s.alpha) / (1.0 + s.K) * s.air_O2 * L0
         h2 = s.K * co
         return {"CO2": s.C / 12.0 - co, "CO": co, "H2O": s.H / 2.0 - h2, "H2": h2,
-                "N2": (1.0 - AIR_O2) * s.alpha * L0}
-    return {"CO2": s.C / 12.0, "H2O": s.H / 2.0, "O2": AIR_O2 * (s.alpha - 1.0) * L0,
-            "N2": (1.0 - AIR_O2) * s.alpha * L0}
+                "N2": (1.0 - s.air_O2) * s.alpha * L0}
+    return {"CO2": s.C / 12.0, "H2O": s.H / 2.0, "O2": s.air_O2 * (s.alpha - 1.0) * L0,
+            "N2": (1.0 - s.air_O2) * s.alpha * L0}
+
+
+def end_of_intake(T_k: float, T_r: float, gamma_r: float) -> float:
+    """Temperature at the end of intake T_a = (T_k + γ_r·T_r)/(1 + γ_r), T_k = T0 + ΔT."""
+    return (T_k + gamma_r * T_r) / (1.0 + gamma_r)
+
+
+def compression(p_a: float, T_a: float, epsilon: float, n1: float) -> tuple[float, float]:
+    """End of the polytropic compression: (p_c, T_c) = (p_a·ε^n1, T_a·ε^(n1−1))."""
+    return p_a * epsilon ** n1, T_a * epsilon ** (n1 - 1.0)
 
 
 def thermal_cycle(s: CycleSpec) -> Cycle:
     """Run the calculation."""
-    L0 = (s.C / 12.0 + s.H / 4.0 - s.O / 32.0) / AIR_O2
+    L0 = (s.C / 12.0 + s.H / 4.0 - s.O / 32.0) / s.air_O2
     l0 = (8.0 / 3.0 * s.C + 8.0 * s.H - s.O) / 0.23
     M1 = s.alpha * L0 + (1.0 / s.m_fuel if s.m_fuel > 0 else 0.0)
     prod = products_of(s, L0)
@@ -145,10 +161,9 @@ def thermal_cycle(s: CycleSpec) -> Cycle:
     eps = s.epsilon
     Tk = s.T0 + s.dT
     gamma_r = Tk / s.T_r * s.p_r / (eps * s.p_a - s.p_r)
-    T_a = (Tk + gamma_r * s.T_r) / (1.0 + gamma_r)
+    T_a = end_of_intake(Tk, s.T_r, gamma_r)
     eta_v = s.T0 / Tk * (eps * s.p_a - s.p_r) / ((eps - 1.0) * s.p0)
-    p_c = s.p_a * eps ** s.n1
-    T_c = T_a * eps ** (s.n1 - 1.0)
+    p_c, T_c = compression(s.p_a, T_a, eps, s.n1)
     t_c = T_c - 273.0
     cv_air = 20.6 + 2.638e-3 * t_c
     cv_res, _ = _mix(prod, t_c, high=False)

@@ -108,6 +108,29 @@ class PairSpec:
     contour: bool = False                # draw the blocking contour (always with rule CONTOUR)
     tip_land: float = 0.25               # the contour's least top land s_a/m
     eps_min: float = 1.2                 # the contour's least contact ratio ε_α
+    internal: bool = False               # gear 2 is a ring gear (an internal pair; z2 > z1)
+
+
+@dataclass(frozen=True)
+class CompoundGear:
+    """One gear (shift) of a compound set: the input member, the members held, two members
+    locked together (or none) and the output member."""
+
+    name: str
+    input: str
+    output: str
+    held: tuple[str, ...] = ()
+    locked: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class CompoundSpec:
+    """A Simpson or Ravigneaux set: its kind, tooth numbers by name, its gears, the input speed."""
+
+    kind: str                          # "simpson" | "ravigneaux"
+    teeth: dict[str, int]
+    gears: tuple[CompoundGear, ...]
+    input_speed: float = 1.0           # rad/s
 
 
 @dataclass(frozen=True)
@@ -120,3 +143,4 @@ class GearScene:
     ordinary: OrdinarySpec | None
     pair: PairSpec | None
     file: str = "<scene>"
+    compound: CompoundSpec | None = None

@@ -17,6 +17,7 @@ from typing import Any
 from ..errors import SceneError
 from ..i18n import LANGUAGES, Text
 from ..model.engine import (
+    ArticulatedRod,
     ArticulatedSpec,
     CylinderSpec,
     EngineSpec,
@@ -32,12 +33,13 @@ from ..model.engine_thermal import Cycle
 from ..units import registry
 from .document import parse_toml
 from .engine_balance import parse_balance
+from .engine_layout import articulated_layout, group_linkage, radial_firing_order, rod_side
 from .engine_thermal import parse_thermal
 from .reader import Table
 from .spec import DrawingSpec, Scene
 
 TOP_KEYS = ("kind", "title", "language", "engine", "masses", "indicator", "articulated", "drawing",
-            "title_block", "output", "balance", "thermal")
+            "title_block", "output", "balance", "thermal", "rod_side")
 
 
 @dataclass(frozen=True)
@@ -79,12 +81,15 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
     layout = Layout(e.string("layout", "inline", choices=tuple(x.value for x in Layout)))
     masses = _masses(top.table("masses", required=True), L)  # type: ignore[arg-type]
     articulated = None
-    if layout is Layout.ARTICULATED:
+    rods: tuple[ArticulatedRod, ...] = ()
+    if layout in (Layout.ARTICULATED, Layout.RADIAL):
         a = top.table("articulated", required=True)
         assert a is not None
-        articulated, bank = _articulated(a)
-        n_cyl = 2
-        throws, banks = [0.0, 0.0], [0.0, bank]
+        if layout is Layout.ARTICULATED:
+            articulated, _ = _articulated(a)
+        n_cyl, throws, banks, rods = articulated_layout(e, a, layout, L)
+        default_order = (radial_firing_order(n_cyl, int(strokes)) if layout is Layout.RADIAL
+                         else None)
     else:
         if top.has("articulated"):
             raise top.error("articulated", Text("errmsg3.engine.articulated_only"))
@@ -92,7 +97,8 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
         if not isinstance(n_cyl, int) or isinstance(n_cyl, bool) or not 1 <= n_cyl <= 24:
             raise e.error("cylinders", Text("errmsg3.engine.cylinders", {"value": repr(n_cyl)}))
         throws, banks = [], []
-    order = _firing_order(e, n_cyl)
+        default_order = None
+    order = _firing_order(e, n_cyl, default_order)
     cycle = 180.0 * strokes
     if not throws:
         throws = _angles(e, "throws", n_cyl)
@@ -104,8 +110,8 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
             throws = [0.0] * n_cyl
             for k, number in enumerate(order):
                 throws[number - 1] = math.radians((k * interval) % 360.0)
-    cylinders = tuple(CylinderSpec(i + 1, throws[i], banks[i],
-                                   layout is Layout.ARTICULATED and i == 1)
+    articulated_numbers = {r.number for r in rods}
+    cylinders = tuple(CylinderSpec(i + 1, throws[i], banks[i], i + 1 in articulated_numbers)
                       for i in range(n_cyl))
     _check_firing(e, cylinders, order, strokes)
     grid = e.raw("grid", 720 if strokes == 4 else 360)
@@ -122,10 +128,14 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
         if top.has("indicator"):
             raise top.error("indicator", Text("cycle.error.exclusive"))
         cycle, ind = parse_thermal(th, strokes=int(strokes), cylinders=n_cyl, speed=omega,
-                                   p0=p0, stroke_bore=2.0 * R / bore)
+                                   p0=p0, stroke_bore=2.0 * R / bore, lam=R / L)
     else:
         ind = _indicator(top.table("indicator", required=True),  # type: ignore[arg-type]
                          strokes, file, data_dir)
+    rs = top.table("rod_side")
+    double = rod_side(rs, bore, int(strokes), file, data_dir) if rs is not None else None
+    if double is not None and rods:
+        raise top.error("rod_side", Text("layouts.error.rod_side_articulated"))
     out = top.table("output")
     csv_path = None
     if out is not None:
@@ -135,13 +145,16 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
             csv_path = str(Path(file).parent / name) if not Path(name).is_absolute() else name
     spec = EngineSpec(title=title, strokes=int(strokes), speed=omega, bore=bore, R=R, L=L, p0=p0,
                       layout=layout, cylinders=cylinders, firing_order=order, masses=masses,
-                      indicator=ind, articulated=articulated, grid=grid, table_step=step,
-                      language=language, csv=csv_path)
-    linkage = articulated_linkage(spec, file) if articulated is not None else None
+                      indicator=ind, articulated=articulated, rods=rods, rod_side=double,
+                      grid=grid, table_step=step, language=language, csv=csv_path)
+    linkage = group_linkage(spec, file) if rods else None
     bal = top.table("balance")
-    n_pins = 1 if layout is Layout.ARTICULATED else (
-        (n_cyl + 1) // 2 if layout is Layout.V else n_cyl)
+    n_pins = (1 if layout is Layout.RADIAL else
+              (n_cyl + 1) // 2 if layout in (Layout.V, Layout.ARTICULATED) else n_cyl)
     balance = parse_balance(bal, n_pins) if bal is not None else None
+    if balance is not None and balance.rod_offset and layout is not Layout.V:
+        assert bal is not None
+        raise bal.error("rod_offset", Text("layouts.error.rod_offset_layout"))
     return EngineScene(spec, _drawing(top, 1), file, linkage, balance, cycle)
 
 
@@ -227,8 +240,8 @@ def _angles(e: Table, name: str, n: int) -> list[float]:
     return [e.value_quantity(v, f"{name}[{i}]", "angle") % (2 * math.pi) for i, v in enumerate(raw)]
 
 
-def _firing_order(e: Table, n: int) -> tuple[int, ...]:
-    raw = e.raw("firing_order", list(range(1, n + 1)) if n <= 2 else None)
+def _firing_order(e: Table, n: int, default: list[int] | None = None) -> tuple[int, ...]:
+    raw = e.raw("firing_order", default or (list(range(1, n + 1)) if n <= 2 else None))
     if raw is None:
         raise e.error("firing_order", Text("errmsg3.engine.firing_missing", {"n": str(n)}))
     if (not isinstance(raw, list)
@@ -336,8 +349,6 @@ def _indicator(t: Table, strokes: int, file: str,
         dims = ("volume" if kind is IndicatorKind.VOLUME else "angle", "pressure")
         rows = _rows(t, (units[0], units[1]), dims, file, data_dir)
         eps = t.quantity("epsilon", "dimensionless")
-        if kind is IndicatorKind.CRANK_ANGLE and eps is None:
-            raise t.error("epsilon", Text("errmsg3.engine.epsilon_needed"))
         if eps is not None and not eps > 1.0:
             raise t.error("epsilon", Text("errmsg3.engine.epsilon_range", {"eps": f"{eps:g}"}))
         return IndicatorSpec(kind, rows=tuple(rows), epsilon=eps)
@@ -390,51 +401,3 @@ def _indicator(t: Table, strokes: int, file: str,
         raise t.error("tdc_fraction", Text("errmsg3.engine.tdc_fraction", {
             "tdc": f"{tdc * p_c / 1e6:.3f}", "peak": f"{frac * vals['p_z'] / 1e6:.3f}"}))
     return IndicatorSpec(IndicatorKind.THERMAL, thermal=thermal, epsilon=eps)
-
-
-def articulated_linkage(spec: EngineSpec, file: str) -> Scene:
-    """The master/articulated pair as a mechanism scene (crank turning counter-clockwise).
-
-    Cylinder 1 (master) lies along +x, cylinder 2 at the bank angle counter-clockwise; φ is
-    measured from the master cylinder's axis, so the scene's crank angle is the engine's.
-    """
-    from .loader import parse_scene
-
-    art = spec.articulated
-    assert art is not None
-    bank = spec.cylinders[1].bank
-    CD = math.sqrt(spec.L ** 2 + art.lug_radius ** 2
-                   - 2.0 * spec.L * art.lug_radius * math.cos(art.lug_angle))
-    side = "left" if math.sin(bank) > 0 else "right"
-    mm = 1e3
-    text = f"""
-title = "articulated pair"
-[ground]
-A = ["0 mm", "0 mm"]
-guides.Ax = {{ through = "A", angle = "0 deg" }}
-guides.Ay = {{ through = "A", angle = "{math.degrees(bank)!r} deg" }}
-[links.1]
-lengths = {{ AB = "{spec.R * mm!r} mm" }}
-[links.2]
-lengths = {{ BC = "{spec.L * mm!r} mm", BD = "{art.lug_radius * mm!r} mm", CD = "{CD * mm!r} mm" }}
-side = {{ D = "{side} of B->C" }}
-[links.3]
-slides = {{ point = "C", on = "Ax" }}
-[links.4]
-lengths = {{ DE = "{art.rod_length * mm!r} mm" }}
-[links.5]
-slides = {{ point = "E", on = "Ay" }}
-[drive]
-link = "1"
-speed = "{spec.speed!r} rad/s"
-sense = "ccw"
-from = "Ax"
-[assembly]
-C = "+"
-E = "+"
-"""
-    try:
-        return parse_scene(text, file)
-    except SceneError as exc:
-        raise SceneError(Text("errmsg3.engine.articulated_build", {"reason": exc.detail}),
-                         file=file, key="articulated") from None

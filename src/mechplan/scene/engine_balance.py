@@ -7,7 +7,7 @@ from ..model.engine_balance import BalanceSpec
 from .reader import Table
 
 KEYS = ("throw_spacing", "throw_positions", "orders", "counterweight_share",
-        "counterweight_radius", "balance_shafts")
+        "counterweight_radius", "balance_shafts", "rod_offset")
 
 
 def parse_balance(t: Table, throws: int) -> BalanceSpec:
@@ -38,4 +38,7 @@ def parse_balance(t: Table, throws: int) -> BalanceSpec:
     shafts = t.raw("balance_shafts", False)
     if not isinstance(shafts, bool):
         raise t.error("balance_shafts", Text("balance.error.bool", {"got": repr(shafts)}))
-    return BalanceSpec(positions, orders, share, radius, shafts)
+    offset = t.quantity("rod_offset", "length", 0.0, nonnegative=True) or 0.0
+    if offset and positions is None:
+        raise t.error("rod_offset", Text("layouts.error.rod_offset_spacing"))
+    return BalanceSpec(positions, orders, share, radius, shafts, offset)

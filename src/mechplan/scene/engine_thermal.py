@@ -3,14 +3,20 @@ result into the indicator diagram's thermal parameters."""
 
 from __future__ import annotations
 
+import dataclasses
+import math
+
 from ..i18n import Text
 from ..model.engine import IndicatorKind, IndicatorSpec, ThermalSpec
 from ..model.engine_thermal import FUELS, Cycle, CycleSpec, thermal_cycle
+from ..model.engine_wiebe import WiebeSpec, fuel_heat, wiebe_cycle
 from .reader import Table
 
 KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alpha", "epsilon",
         "p0", "T0", "dT", "p_a", "p_r", "T_r", "n1", "n2", "xi_z", "lambda_p", "K", "phi_i",
-        "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity")
+        "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity", "coolant_c",
+        "coolant_m", "combustion", "combustion_start", "combustion_duration", "wiebe_m",
+        "wiebe_a", "air_oxygen")
 
 
 def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
@@ -43,9 +49,31 @@ def _intake(t: Table, p0: float, T0: float) -> float:
     return p_a
 
 
+def _wiebe(t: Table, c: Cycle, strokes: int, lam: float) -> Cycle:
+    """The optional single-zone Wiebe model (``combustion = "wiebe"``) attached to the cycle."""
+    start = t.quantity("combustion_start", "angle", math.radians(10.0))
+    duration = t.quantity("combustion_duration", "angle", math.radians(60.0), positive=True)
+    assert start is not None and duration is not None
+    m = _number(t, "wiebe_m", 1.5, 0.0, 6.0, "the Wiebe shape exponent m")
+    a = _number(t, "wiebe_a", 6.908, 1.0, 12.0, "the Wiebe completeness a")
+    late = duration - start
+    if strokes != 4 or not -math.pi / 2 < start < math.pi / 2 or not late < 0.9 * math.pi:
+        raise t.error("combustion_start" if strokes == 4 else "combustion",
+                      Text("thermal2.error.wiebe", {"start": f"{math.degrees(start):g}",
+                                                    "duration": f"{math.degrees(duration):g}"}))
+    s = c.spec
+    V_h = 1.0        # m³: the model scales with V_h; the scene's cylinder is applied below
+    Q = fuel_heat(s.p_a, c.T_a, s.epsilon * V_h / (s.epsilon - 1.0), c.gamma_r, c.M1, s.xi_z,
+                  s.H_u, c.dH_u)
+    w = wiebe_cycle(V_h, s.epsilon, lam, s.p_a, c.T_a, s.p_r, s.n1, s.n2, Q,
+                    WiebeSpec(start, duration, m, a))
+    return dataclasses.replace(c, wiebe=w)
+
+
 def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: float,
-                  stroke_bore: float) -> tuple[Cycle, IndicatorSpec]:
-    """The thermal calculation and the indicator diagram it gives (rounded as the courses do)."""
+                  stroke_bore: float, lam: float = 0.0) -> tuple[Cycle, IndicatorSpec]:
+    """The thermal calculation and the indicator diagram it gives (rounded as the courses do, or
+    the optional Wiebe model's)."""
     t.check_keys(KEYS)
     fuel = t.string("fuel", "petrol", choices=tuple(FUELS)) or "petrol"
     C0, H0, O0, Hu0, m0 = FUELS[fuel]
@@ -84,13 +112,21 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
     eta_m = _number(t, "eta_m", 0.8, 0.3, 1.0, "the mechanical efficiency η_m")
     power = t.quantity("power_kW", "dimensionless", positive=True)
     S_D = _number(t, "stroke_bore", stroke_bore, 0.3, 3.0, "the stroke-to-bore ratio S/D")
+    c_w = _number(t, "coolant_c", 0.5, 0.3, 0.7, "c of the coolant's heat (heat balance)")
+    m_w = _number(t, "coolant_m", 0.65, 0.5, 0.8, "m of the coolant's heat (heat balance)")
+    o2 = _number(t, "air_oxygen", 0.208, 0.2, 0.22, "O2 in air by volume")
     spec = CycleSpec(diesel, C, H, O, Hu * 1e3, m_f if not diesel else 0.0, alpha, eps,
                      speed * 30.0 / 3.141592653589793, p_amb, T0, dT, p_a, p_r, T_r, n1, n2, xi,
                      lam_p, K, phi_i, eta_m, strokes, cylinders,
-                     power * 1e3 if power is not None else None, S_D)
+                     power * 1e3 if power is not None else None, S_D, c_w, m_w, o2)
     cycle = thermal_cycle(spec)
     if not cycle.rho < eps:
         raise t.error("xi_z", Text("cycle.error.rho", {"rho": cycle.rho}))
+    if t.string("combustion", "schematic", choices=("schematic", "wiebe")) == "wiebe":
+        cycle = _wiebe(t, cycle, strokes, lam)
+        assert cycle.wiebe is not None
+        return cycle, IndicatorSpec(IndicatorKind.CRANK_ANGLE, rows=cycle.wiebe.rows,
+                                    epsilon=eps)
     thermal = ThermalSpec(eps, p_a, p_r, n1, n2, cycle.p_z, cycle.rho)
     if 1.2 * cycle.p_c > 0.85 * cycle.p_z:
         thermal = ThermalSpec(eps, p_a, p_r, n1, n2, cycle.p_z, cycle.rho, rounding=False)

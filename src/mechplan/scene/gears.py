@@ -6,7 +6,16 @@ from typing import Any
 
 from ..errors import SceneError
 from ..i18n import LANGUAGES, Text, join
-from ..model.gears import GearScene, OrdinarySpec, PairSpec, PlanetarySpec, Scheme, ShiftRule
+from ..model.gears import (
+    CompoundGear,
+    CompoundSpec,
+    GearScene,
+    OrdinarySpec,
+    PairSpec,
+    PlanetarySpec,
+    Scheme,
+    ShiftRule,
+)
 from .document import parse_toml
 from .reader import Table
 
@@ -207,7 +216,8 @@ def _ordinary(t: Table) -> OrdinarySpec:
 def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, int] | None
           ) -> PairSpec:
     t.check_keys(("module", "teeth", "pressure_angle", "addendum", "clearance", "shifts",
-                  "shift_rule", "z_min", "contour", "tip_land", "min_contact_ratio"))
+                  "shift_rule", "z_min", "contour", "tip_land", "min_contact_ratio",
+                  "internal"))
     teeth = _ints(t, "teeth", (2,)) or z_from_ordinary
     if teeth is None and ordinary is None:
         raise t.error("teeth", Text("errmsg.scene_gears.missing_z_z"))
@@ -236,7 +246,14 @@ def _pair(t: Table, ordinary: OrdinarySpec | None, z_from_ordinary: tuple[int, i
         raise t.error(
             "shifts", Text("errmsg.scene_gears.are_chosen_shift", {"value": repr(rule.value)})
         )
-    return PairSpec(module=module, z1=teeth[0], z2=teeth[1], alpha=alpha,
+    internal = _flag(t, "internal")
+    if internal and rule not in (ShiftRule.GIVEN, ShiftRule.CONTOUR):
+        raise t.error("shift_rule", Text("machine.error.internal_rule",
+                                         {"value": repr(rule.value)}))
+    if internal and not teeth[1] > teeth[0] > 0:
+        raise t.error("teeth", Text("machine.error.internal_teeth",
+                                    {"z1": teeth[0], "z2": teeth[1]}))
+    return PairSpec(internal=internal, module=module, z1=teeth[0], z2=teeth[1], alpha=alpha,
                     addendum=t.quantity("addendum", "dimensionless", 1.0, positive=True) or 1.0,
                     clearance=t.quantity("clearance", "dimensionless", 0.25,
                                          nonnegative=True) or 0.0,
@@ -266,12 +283,13 @@ def parse_gears(text: str, file: str = "<scene>") -> GearScene:
     """Parse the text of a gear scene."""
     data: dict[str, Any] = parse_toml(text, file)
     top = Table(data, "", file)
-    top.check_keys(("kind", "title", "language", "planetary", "ordinary", "pair"))
+    top.check_keys(("kind", "title", "language", "planetary", "ordinary", "pair", "compound"))
     language = top.string("language", "en", choices=LANGUAGES) or "en"
     p = top.table("planetary")
     o = top.table("ordinary")
     q = top.table("pair")
-    if p is None and q is None:
+    cp = top.table("compound")
+    if p is None and q is None and cp is None:
         raise SceneError(Text("errmsg.scene_gears.gear_scene_needs"), file=file)
     planetary = _planetary(p) if p else None
     ordinary = _ordinary(o) if o else None
@@ -279,4 +297,53 @@ def parse_gears(text: str, file: str = "<scene>") -> GearScene:
     if q is not None:
         pair = _pair(q, ordinary, ordinary.teeth if ordinary else None)
     return GearScene(title=top.string("title", "") or "", language=language, planetary=planetary,
-                     ordinary=ordinary, pair=pair, file=file)
+                     ordinary=ordinary, pair=pair, file=file,
+                     compound=_compound(cp) if cp is not None else None)
+
+
+COMPOUND_TEETH = {"simpson": ("sun", "ring1", "ring2"),
+                  "ravigneaux": ("sun_small", "sun_large", "ring")}
+COMPOUND_MEMBERS = {"simpson": ("S", "R1", "C1R2", "C2"), "ravigneaux": ("S1", "S2", "R", "C")}
+
+
+def _compound(t: Table) -> CompoundSpec:
+    """``[compound]``: a Simpson or Ravigneaux set, its teeth and its gears."""
+    t.check_keys(("type", "teeth", "input_speed", "gears"))
+    kind = t.string("type", required=True, choices=tuple(COMPOUND_TEETH)) or "simpson"
+    tt = t.table("teeth", required=True)
+    assert tt is not None
+    tt.check_keys(COMPOUND_TEETH[kind])
+    teeth = {k: _int(tt, k, lo=1) or 0 for k in COMPOUND_TEETH[kind]}
+    for k in COMPOUND_TEETH[kind]:
+        if not tt.has(k):
+            raise tt.error(k, Text("compound.error.teeth", {"names": ", ".join(
+                COMPOUND_TEETH[kind])}))
+    ring = teeth["ring"] if kind == "ravigneaux" else min(teeth["ring1"], teeth["ring2"])
+    suns = [teeth[k] for k in COMPOUND_TEETH[kind] if k.startswith("sun")]
+    if not ring > max(suns):
+        raise tt.error(COMPOUND_TEETH[kind][-1], Text("compound.error.ring", {"ring": ring}))
+    speed = t.quantity("input_speed", "angular_velocity", 1.0) or 1.0
+    raw = t.raw("gears", required=True)
+    if not isinstance(raw, list) or not raw or not all(isinstance(g, dict) for g in raw):
+        raise t.error("gears", Text("compound.error.gears"))
+    members = COMPOUND_MEMBERS[kind]
+    gears = []
+    for i, g in enumerate(raw):
+        gt = Table(g, f"{t.key('gears')}[{i}]", t.file)
+        gt.check_keys(("name", "input", "output", "held", "locked"))
+        lists = {}
+        for k in ("held", "locked"):
+            v = gt.raw(k, [])
+            if isinstance(v, str):
+                v = [v]
+            if not isinstance(v, list) or any(m not in members for m in v) or \
+                    (k == "locked" and len(v) not in (0, 2)):
+                raise gt.error(k, Text("compound.error.members", {
+                    "members": ", ".join(members), "value": repr(v)}))
+            lists[k] = tuple(v)
+        gears.append(CompoundGear(
+            name=gt.string("name", str(i + 1)) or str(i + 1),
+            input=gt.string("input", required=True, choices=members) or "",
+            output=gt.string("output", required=True, choices=members) or "",
+            held=lists["held"], locked=lists["locked"]))
+    return CompoundSpec(kind, teeth, tuple(gears), speed)

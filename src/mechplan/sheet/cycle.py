@@ -8,16 +8,20 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from ..drafting.fonts import text_width_mm
 from ..drafting.primitives import Arc, Circle, HAlign, Line, Polyline, Primitive, Role, Text, VAlign
 from ..i18n import message, number
+from .diagram import Axis, Curve, diagram_panel
 from .fit import text_block
 from .layout import fitted_sheets
 from .panels import Panel
 
 if TYPE_CHECKING:
-    from ..construct.cycle import MemberCycle, Span
+    from ..construct.cycle import MemberCycle
     from ..drafting.primitives import Sheet
+    from ..dynamics.cam_linkage import CamLinkage
 
 WIDTH = 180.0       # mm for 360° of the rectangular diagram
 STRIP = 14.0        # mm, the height of one member's strip
@@ -26,6 +30,7 @@ SMALL_H = 1.8       # mm, the phases' names and angles
 TITLE_H = 3.5
 RING = 10.0         # mm, the width of one member's ring
 HUB = 15.0          # mm, the radius inside the innermost ring
+STEP = 5            # every fifth degree of a cam-driven linkage's diagrams
 
 
 @dataclass(frozen=True)
@@ -34,6 +39,8 @@ class CycleView:
 
     members: tuple[MemberCycle, ...]
     origin: float
+    lines: tuple[str, ...] = ()             # the machine's table in words (motor, shafts, …)
+    driven: tuple[CamLinkage, ...] = ()     # linkages turned by a cam's follower
 
 
 def _kind(kind: str, lang: str) -> str:
@@ -56,8 +63,8 @@ def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
             prims.append(Line((xa, y0), (xa, y0 + h), Role.THIN))
             # the output's level across the span (split spans: the part of the level between)
             full = s.angle if s.angle > 0 else 1.0
-            t0 = _fraction_in(m, s, a, st.origin) / full
-            t1 = t0 + (b - a) / full
+            t0 = m.fraction_in(s, a, st.origin)
+            t1 = t0 + (b - a) * m.turns / full
             la = s.level0 + (s.level1 - s.level0) * t0
             lb = s.level0 + (s.level1 - s.level0) * t1
             pad = 0.2 * h
@@ -80,12 +87,6 @@ def rectangular_panel(st: CycleView, lang: str, k: float) -> Panel:
                     start=number(math.degrees(st.origin), 1, lang))
     prims.extend(text_block((0.0, n * h + 4.0), title, TITLE_H, w, upward=True))
     return Panel("cycle-rectangular", list(prims))
-
-
-def _fraction_in(m: MemberCycle, s: Span, a: float, origin: float) -> float:
-    """How far into span ``s`` (rad of its own angle) the piece starting at ψ = ``a`` begins."""
-    start = (s.start - m.phase - origin) % (2 * math.pi)
-    return (a - start) % (2 * math.pi) if abs(a - start) > 1e-12 else 0.0
 
 
 def circular_panel(st: CycleView, lang: str, k: float) -> Panel:
@@ -131,6 +132,7 @@ def legend_panel(st: CycleView, lang: str, k: float) -> Panel:
                           f"{number(math.degrees(b), 1, lang)}°"
                           for sp, a, b in m.on_shaft(st.origin))
         lines.append(f"{i}. {m.name}: {spans}")
+    lines.extend(st.lines)
     return Panel("cycle-legend", list(text_block((0.0, 0.0), lines, TEXT_H, WIDTH * k)))
 
 
@@ -139,6 +141,85 @@ def cycle_sheets(st: CycleView, title: str, size: str | None, standard: str | No
     """The rectangular and the circular cycle diagrams and their legend on framed sheets."""
     title = title or message("machine_cycle.sheet.title", lang)
     return fitted_sheets(lambda k: [rectangular_panel(st, lang, k), circular_panel(st, lang, k),
-                                    legend_panel(st, lang, k)],
+                                    legend_panel(st, lang, k),
+                                    *(p for d in st.driven
+                                      for p in driven_panels(d, lang, k, size or "A3",
+                                                             standard or "iso"))],
                          size=size or "A3", standard=standard or "iso", language=lang, name=name,
                          fields={"title": title})
+
+
+def driven_panels(d: CamLinkage, lang: str, k: float, size: str = "A3",
+                  standard: str = "iso") -> list[Panel]:
+    """A cam-driven linkage over the cam's turn: its output, and (loaded) the contact force and
+    the cam torque."""
+    phi = np.append(np.degrees(d.phi[::STEP]), 360.0)
+
+    def closed(v: np.ndarray) -> np.ndarray:
+        return np.append(v[::STEP], v[0])
+    x_axis = Axis("φ", "°", 120.0 * k)
+    out = [diagram_panel(f"driven-{d.name}-output",
+                         message("machine.sheet.output", lang, name=d.name, output=d.output),
+                         [Curve(phi, closed(d.out - d.out[0]), Role.OUTLINE)], x_axis,
+                         Axis("Δθ" if d.rocker else "Δs", "rad" if d.rocker else "m", 40.0 * k),
+                         lang).panel]
+    out += plan_panels(d, lang, k, size, standard)
+    if d.contact is not None and d.torque is not None:
+        out.append(diagram_panel(f"driven-{d.name}-contact",
+                                 message("machine.sheet.contact", lang, name=d.name),
+                                 [Curve(phi, closed(d.contact), Role.OUTLINE)], x_axis,
+                                 Axis("N", "N", 40.0 * k), lang).panel)
+        out.append(diagram_panel(f"driven-{d.name}-torque",
+                                 message("machine.sheet.torque", lang, name=d.name),
+                                 [Curve(phi, closed(d.torque), Role.OUTLINE)], x_axis,
+                                 Axis("T", "N·m", 40.0 * k), lang).panel)
+    return out
+
+
+def plan_panels(d: CamLinkage, lang: str, k: float, size: str = "A3",
+                standard: str = "iso") -> list[Panel]:
+    """The linkage's velocity and acceleration plans at the cam angle where its follower is
+    fastest: the scene's own construction with the driver's rates from the cam's law; each
+    plan's drawing under a wrapped title, its tables on a panel of their own."""
+    from ..construct.scale import choose_scale
+    from ..construct.step import Kind
+    from ..model.plans import Plan
+    from .panels import vector_plan
+
+    c, ev, i = d.plans()
+    if c is None or ev is None:
+        return []
+    out: list[Panel] = []
+    for plan, key in ((Plan.VELOCITY, "machine.sheet.plan_v"),
+                      (Plan.ACCELERATION, "machine.sheet.plan_a")):
+        steps = list(c.of_plan(plan))
+        if not steps:
+            continue
+        ev.evaluate_all([s.id for s in steps])
+        sizes = [float(np.hypot(*np.asarray(ev.values[s.id])[i])) for s in steps
+                 if s.kind is Kind.POINT and np.asarray(ev.values[s.id]).ndim == 2]
+        sizes = [x for x in sizes if np.isfinite(x)]
+        if not sizes or max(sizes) == 0:
+            continue
+        mu = choose_scale(max(sizes), 60.0 * k)
+        title = message(key, lang, name=d.name,
+                        phi=number(float(np.degrees(d.phi[i])), 1, lang))
+        panel = vector_plan(c, ev, i, plan, mu, lang, title)
+        # the one-line title wrapped to the drawing's measure; a vector equation written wider
+        # than the plan and its tables is left to the tables (its rows say the same)
+        lo, _, hi, _ = Panel("", [q for q in panel.primitives if not isinstance(q, Text)]
+                             ).bounds()
+        panel.primitives[:] = [q for q in panel.primitives if not (
+            isinstance(q, Text) and (q.string == title or _sticks_out(q, lo, hi)))]
+        x0, _y0, _x1, y1 = panel.bounds()
+        panel.primitives.extend(text_block((x0, y1 + 4.0), title, TEXT_H,
+                                           max(40.0, min(hi - lo, 55.0)), upward=True,
+                                           measure_min=40.0))
+        out.append(panel)
+    return out
+
+
+def _sticks_out(t: Text, lo: float, hi: float) -> bool:
+    """A text wider than 40 mm reaching past the drawing's x-extent lo … hi."""
+    x0, _, x1, _ = Panel("", [t]).bounds()
+    return x1 - x0 > 40.0 and (x1 > hi + 0.5 or x0 < lo - 0.5)

@@ -22,6 +22,8 @@ from ..drafting.primitives import (
 )
 from ..dynamics.engine.analysis import Checks, EngineResult
 from ..dynamics.engine.balance import Balance
+from ..dynamics.engine.cylinder import CylinderForces
+from ..dynamics.engine.extremes import TorqueExtremes
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number
 from ..scene.engine import EngineScene
@@ -52,11 +54,21 @@ class EngineData(Protocol):
     @property
     def balance(self) -> Balance: ...
 
+    @property
+    def extremes(self) -> TorqueExtremes: ...
+
 
 #: per-cylinder columns of the table: (attribute, CSV name, scale to the printed unit)
 COLUMNS = (("p", "p_MPa", 1e-6), ("Pk", "Pk_kN", 1e-3), ("Pj", "Pj_kN", 1e-3), ("P", "P_kN", 1e-3),
            ("beta", "beta_deg", 180.0 / math.pi), ("N", "N_kN", 1e-3), ("S", "S_kN", 1e-3),
            ("T", "T_kN", 1e-3), ("Z", "Z_kN", 1e-3), ("M", "M_Nm", 1.0))
+
+
+def columns_of(f: CylinderForces) -> tuple[tuple[str, str, float], ...]:
+    """The table's columns for one cylinder: with p_rod after p for a double-acting one."""
+    if f.p_rod is None:
+        return COLUMNS
+    return (COLUMNS[0], ("p_rod", "p_rod_MPa", 1e-6), *COLUMNS[1:])
 
 
 def table_cells(t: EngineResult, language: str, number_of: int = 1) -> list[list[str]]:
@@ -69,12 +81,15 @@ def table_cells(t: EngineResult, language: str, number_of: int = 1) -> list[list
     head = [message("engine.col.phi", language)] + [
         message(f"engine.col.{a}", language) for a, _, _ in COLUMNS] + [
         message("engine.col.M_total", language), q_head]
-    digits = {"p": 3, "beta": 2, "M": 2}
+    digits = {"p": 3, "p_rod": 3, "beta": 2, "M": 2}
+    columns = columns_of(f)
+    if f.p_rod is not None:                     # a double-acting cylinder: the crank end's p
+        head.insert(2, message("layouts.col.p_rod", language))
     rows = [head]
     Q = t.pins[pin].Q
     for k, phi in enumerate(t.phi):
         row = [number(math.degrees(phi), 0, language)]
-        for a, _, scale in COLUMNS:
+        for a, _, scale in columns:
             v = float(getattr(f, a)[k]) * scale
             row.append("—" if not math.isfinite(v) else number(v, digits.get(a, 3), language))
         row += [number(float(t.M_total[k]), 2, language), number(float(Q[k]) * 1e-3, 3, language)]
@@ -97,6 +112,8 @@ def engine_sheets(study: EngineData, size: str, standard: str, language: str,
         out += table_panels(study, lang)
         if study.scene.balance is not None:
             out += _balance_panels(study, lang, scale)
+        if study.scene.cycle is not None:
+            out += _thermal_panels(study, lang, scale)
         return out
 
     fields = {"title": study.scene.engine.title or message("engine.sheet.title", lang)}
@@ -115,6 +132,18 @@ def _balance_panels(study: EngineData, lang: str, scale: float) -> list[Panel]:
     return balance_panels(study.balance, m.phases, banks, study.dense.phi, lang, scale)
 
 
+def _thermal_panels(study: EngineData, lang: str, scale: float) -> list[Panel]:
+    """The thermal calculation's panels (sheet/engine_thermal.py) of a scene with [thermal]."""
+    from ..model.engine_heat_balance import cycle_points, heat_balance
+    from .engine_thermal import thermal_panels
+
+    c, spec = study.scene.cycle, study.scene.engine
+    assert c is not None
+    bal = heat_balance(c, c.power(spec.V_h), spec.bore, c.spec.cylinders)
+    return thermal_panels(c, cycle_points(c, spec.V_h), study.model.diagram.loop(), bal, lang,
+                          scale)
+
+
 def _deg(phi: np.ndarray) -> np.ndarray:
     return np.degrees(phi)
 
@@ -130,11 +159,19 @@ def indicator_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
     m, spec = study.model, study.scene.engine
     V, p = m.diagram.loop()
     cm3 = 1e6
-    dia = diagram_panel("indicator", message("engine.diagram.indicator", lang),
-                        [Curve(V * cm3, p * 1e-6, closed=True)],
-                        Axis("V", "cm³", 150.0 * scale), Axis("p", "MPa", 130.0 * scale), lang)
+    # without ε the clearance volume is unknown: draw against the swept volume V − V_c
+    origin = 0.0 if m.diagram.V_c_given else m.diagram.V_c
+    v_name = "V" if m.diagram.V_c_given else message("layouts.axis.swept", lang)
+    curves = [Curve((V - origin) * cm3, p * 1e-6, closed=True)]
+    f1 = study.dense.cylinders[1]
+    if f1.p_rod is not None:
+        # the crank end's card over the same piston travel (both ends on one base, as indicated)
+        curves.append(Curve((m.diagram.V_c - origin + spec.F_p * f1.x) * cm3, f1.p_rod * 1e-6,
+                            Role.DASHED, "p_rod", closed=True))
+    dia = diagram_panel("indicator", message("engine.diagram.indicator", lang), curves,
+                        Axis(v_name, "cm³", 150.0 * scale), Axis("p", "MPa", 130.0 * scale), lang)
     prims = dia.panel.primitives
-    Vc, Vh = m.diagram.V_c * cm3, m.diagram.V_h * cm3
+    Vc, Vh = (m.diagram.V_c - origin) * cm3, m.diagram.V_h * cm3
     r_mm = Vh / 2.0 / dia.mu_x
     cx = (Vc + Vh / 2.0) / dia.mu_x
     cy = -16.0 - r_mm
@@ -197,9 +234,12 @@ def torque_panel(study: EngineData, lang: str, scale: float = 1.0) -> Panel:
         curves += [Curve(x, f.M, Role.THIN) for f in d.cylinders.values()]
     curves.append(Curve(x, d.M_total, Role.OUTLINE, "ΣM"))
     mean = study.checks.work_torque / study.scene.engine.cycle
+    ex = study.extremes                 # found between the grid points
+    marks = [Marker(math.degrees(ex.phi_max), ex.M_max, "max"),
+             Marker(math.degrees(ex.phi_min), ex.M_min, "min")]
     return diagram_panel("torque", message("engine.diagram.torque", lang), curves,
                          _phi_axis(study, scale),
-                         Axis("M", "N·m", H * scale), lang,
+                         Axis("M", "N·m", H * scale), lang, markers=marks,
                          hlines=[(mean, message("engine.label.mean", lang))]).panel
 
 

@@ -191,4 +191,17 @@ def _panels(sol: GearSolution, lang: str, scale: float) -> list[Panel]:
             panels.append(contour_panel(sol.contour, sol.pair, lang, scale))
             panels.append(sliding_panel(specific_sliding(sol.pair.spec, sol.pair.x1, sol.pair.x2),
                                         sol.pair, lang, scale))
+    if sol.internal is not None:
+        from .gear_internal import internal_panel
+        panels.append(internal_panel(sol.internal, lang, scale))
+    if sol.compound is not None and sol.scene.compound is not None:
+        from ..synthesis.gears.compound import MEMBERS
+        from .gear_compound import compound_rows
+        spec = sol.scene.compound
+        panels.append(table_panel(
+            "compound", message(f"compound.sheet.{spec.kind}", lang),
+            (message("compound.col.gear", lang), message("compound.col.input", lang),
+             message("compound.col.held", lang), message("compound.col.output", lang), "u",
+             *(f"n_{m}, {unit('rpm', lang)}" for m in MEMBERS[spec.kind])),
+            compound_rows(spec, sol.compound, lang)))
     return panels

@@ -22,13 +22,21 @@ from ..dynamics.engine.analysis import (
     wear,
 )
 from ..dynamics.engine.balance import Balance, balance
+from ..dynamics.engine.extremes import TorqueExtremes, torque_extremes
 from ..dynamics.engine.model import EngineModel
 from ..i18n import message, number, scientific
 from ..model.engine_balance import BalanceSpec
 from ..scene.engine import EngineScene, parse_engine_scene
-from ..sheet.engine import COLUMNS, table_cells
+from ..sheet.engine import columns_of, table_cells
 from .answers import Keys, Own, Written, span, written_all
 from .engine_balance import balance_json, report_lines
+from .engine_layout import (
+    articulated_lines,
+    deviation_json,
+    deviation_lines,
+    layout_json,
+    layout_lines,
+)
 from .engine_thermal import thermal_json, thermal_lines
 
 if TYPE_CHECKING:
@@ -78,6 +86,11 @@ class EngineStudy:
         return balance(self.model, self.scene.balance or BalanceSpec(), d.phi, d.pins)
 
     @cached_property
+    def extremes(self) -> TorqueExtremes:
+        """ΣM's largest and smallest values found between the grid points."""
+        return torque_extremes(self.model, self.dense)
+
+    @cached_property
     def wear(self) -> tuple[np.ndarray, np.ndarray]:
         """Wear diagram of pin 1 at the table's angles (the last angle repeats the first)."""
         t = self.table.pins[1]
@@ -93,15 +106,20 @@ class EngineStudy:
 
         lines = [message("engine.report.title", lang, title=spec.title), ""]
         if self.scene.cycle is not None:
-            lines += [*thermal_lines(self.scene.cycle, spec.V_h, lang), ""]
+            lines += [*thermal_lines(self.scene.cycle, spec.V_h, lang, spec.bore), ""]
         lines.append(message("engine.report.geometry", lang, strokes=spec.strokes,
                              cylinders=len(spec.cylinders), n=n(spec.speed * 30 / math.pi, 0),
                              D=n(spec.bore * 1e3, 1), R=n(spec.R * 1e3, 2), L=n(spec.L * 1e3, 2),
                              lam=n(spec.lam, 4)))
-        lines.append(message("engine.report.volumes", lang, F_p=n(spec.F_p * 1e4, 3),
-                             V_h=n(spec.V_h * 1e6, 2), V_c=n(m.diagram.V_c * 1e6, 2),
-                             p0=n(spec.p0 * 1e-3, 1)))
+        if m.diagram.V_c_given:
+            lines.append(message("engine.report.volumes", lang, F_p=n(spec.F_p * 1e4, 3),
+                                 V_h=n(spec.V_h * 1e6, 2), V_c=n(m.diagram.V_c * 1e6, 2),
+                                 p0=n(spec.p0 * 1e-3, 1)))
+        else:
+            lines.append(message("layouts.report.volumes_no_eps", lang, F_p=n(spec.F_p * 1e4, 3),
+                                 V_h=n(spec.V_h * 1e6, 2), p0=n(spec.p0 * 1e-3, 1)))
         lines.append(message("engine.report.layout." + spec.layout.value, lang))
+        lines += layout_lines(m, lang)
         lines.append(message("engine.report.firing", lang,
                              order="–".join(str(k) for k in spec.firing_order)))
         for c in spec.cylinders:
@@ -109,22 +127,22 @@ class EngineStudy:
                                  throw=n(math.degrees(c.throw), 1), bank=n(math.degrees(c.bank), 1),
                                  phase=n(math.degrees(m.phases[c.number]), 1),
                                  m_j=n(m.m_j[c.number], 4), m_r=n(m.m_rot[c.number], 4)))
-        if m.pair is not None:
-            lines.append(message("engine.report.articulated", lang,
-                                 stroke=n(m.pair.stroke_E * 1e3, 3),
-                                 tdc=n(math.degrees(m.pair.phi_tdc_E), 3),
-                                 bdc=n(math.degrees(m.pair.phi_bdc_E), 3),
-                                 share=n(m.lug_share_C, 4)))
+        lines += articulated_lines(m, lang)
         lines += ["", message("engine.report.indicator", lang, W=n(ch.work_diagram, 2),
                               p_i=n(ch.work_diagram / spec.V_h * 1e-6, 4),
                               p_max=n(ch.p_max * 1e-6, 3))]
         lines += ["", message("engine.report.table", lang,
                               step=n(math.degrees(spec.table_step), 0))]
         lines += self._table_text(lang)
-        Mt = d.M_total
+        ex = self.extremes
         lines += ["", message("engine.report.torque", lang, mean=n(ch.work_torque / spec.cycle, 3),
-                              max=n(float(Mt.max()), 2), min=n(float(Mt.min()), 2),
-                              mu=n(d.non_uniformity, 3))]
+                              max=n(ex.M_max, 2), min=n(ex.M_min, 2),
+                              mu=n(ex.non_uniformity(ch.work_torque / spec.cycle), 3))]
+        lines.append(message("layouts.report.torque_extremes", lang,
+                             phi_max=n(math.degrees(ex.phi_max), 3),
+                             phi_min=n(math.degrees(ex.phi_min), 3),
+                             grid_max=n(float(d.M_total.max()), 2),
+                             grid_min=n(float(d.M_total.min()), 2)))
         for pin, q in d.pins.items():
             Q = q.Q
             lines.append(message("engine.report.pin", lang, pin=pin, K_r=n(q.K_r * 1e-3, 4),
@@ -156,6 +174,7 @@ class EngineStudy:
                                  error=scientific(ch.pair_torque_error, 2, lang)))
         if self.scene.balance is not None:
             lines += report_lines(self.balance, d.phi, lang)
+            lines += deviation_lines(m, self.balance, lang)
         return "\n".join(lines) + "\n"
 
     def _table_text(self, lang: str) -> list[str]:
@@ -185,13 +204,16 @@ class EngineStudy:
         rays, sums = self.wear
         extra = ({"balance": balance_json(self.balance, d.phi)}
                  if self.scene.balance is not None else {})
+        if self.scene.balance is not None and m.articulated:
+            extra["balance"]["ideal"] = deviation_json(m, self.balance)
         if self.scene.cycle is not None:
-            extra["thermal"] = thermal_json(self.scene.cycle, spec.V_h)
+            extra["thermal"] = thermal_json(self.scene.cycle, spec.V_h, spec.bore)
         return {
             "mechplan": __version__, "kind": "engine", "title": spec.title,
             "engine": {"strokes": spec.strokes, "omega": spec.speed, "bore": spec.bore, "R": spec.R,
                        "L": spec.L, "lambda": spec.lam, "F_p": spec.F_p, "V_h": spec.V_h,
-                       "V_c": m.diagram.V_c, "p0": spec.p0, "layout": spec.layout.value,
+                       "V_c": m.diagram.V_c if m.diagram.V_c_given else None, "p0": spec.p0,
+                       "layout": spec.layout.value,
                        "firing_order": list(spec.firing_order)},
             "cylinders": [{"number": c.number, "throw_deg": math.degrees(c.throw),
                            "bank_deg": math.degrees(c.bank),
@@ -199,8 +221,14 @@ class EngineStudy:
                            "m_j": m.m_j[c.number], "m_r": m.m_rot[c.number]}
                           for c in spec.cylinders],
             "angles": angles,
-            "torque": {"mean": ch.work_torque / spec.cycle, "max": float(d.M_total.max()),
-                       "min": float(d.M_total.min()), "non_uniformity": d.non_uniformity},
+            "torque": {"mean": ch.work_torque / spec.cycle, "max": self.extremes.M_max,
+                       "min": self.extremes.M_min,
+                       "phi_max_deg": math.degrees(self.extremes.phi_max),
+                       "phi_min_deg": math.degrees(self.extremes.phi_min),
+                       "grid_max": float(d.M_total.max()), "grid_min": float(d.M_total.min()),
+                       "non_uniformity": self.extremes.non_uniformity(ch.work_torque
+                                                                      / spec.cycle)},
+            **layout_json(m),
             "pins": {str(p): {"K_r": q.K_r, "Q_max": float(q.Q.max()), "Q_min": float(q.Q.min()),
                               "Q_mean": float(np.trapezoid(q.Q, d.phi) / spec.cycle)}
                      for p, q in d.pins.items()},
@@ -219,8 +247,8 @@ class EngineStudy:
         buf = io.StringIO()
         w = csv.writer(buf, lineterminator="\n")
         head = ["phi_deg"]
-        for c in r.cylinders:
-            head += [f"{name}_{c}" for _, name, _ in COLUMNS]
+        for c, f in r.cylinders.items():
+            head += [f"{name}_{c}" for _, name, _ in columns_of(f)]
         head += ["M_total_Nm"]
         for p in r.pins:
             head += [f"Q_T_kN_pin{p}", f"Q_Z_kN_pin{p}", f"Q_kN_pin{p}"]
@@ -228,7 +256,7 @@ class EngineStudy:
         for k, phi in enumerate(r.phi):
             row = [f"{math.degrees(float(phi)):.6g}"]
             for f in r.cylinders.values():
-                row += [_g(float(getattr(f, a)[k]) * s) for a, _, s in COLUMNS]
+                row += [_g(float(getattr(f, a)[k]) * s) for a, _, s in columns_of(f)]
             row.append(_g(float(r.M_total[k])))
             for q in r.pins.values():
                 row += [_g(float(q.Q_T[k]) * 1e-3), _g(float(q.Q_Z[k]) * 1e-3),

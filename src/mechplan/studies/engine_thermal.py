@@ -2,14 +2,32 @@
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
-from ..i18n import message, number
+from ..i18n import message, number, scientific
+from ..model.engine_heat_balance import HeatBalance, heat_balance
 from ..model.engine_thermal import Cycle
+from ..sheet.engine_thermal import balance_cells
 
 
-def thermal_lines(c: Cycle, V_h: float, lang: str) -> list[str]:
-    """The thermal calculation in the report (pressures in MPa, temperatures in K)."""
+def cycle_balance(c: Cycle, V_h: float, bore: float) -> HeatBalance:
+    """The heat balance of the scene's engine (its bore and cylinders) at the power it gives."""
+    return heat_balance(c, c.power(V_h), bore, c.spec.cylinders)
+
+
+def balance_lines(b: HeatBalance, lang: str) -> list[str]:
+    """The heat balance in the report."""
+    out = [message("thermal2.report.heat_title", lang, N_e=number(b.N_e * 1e-3, 2, lang),
+                   G_T=number(b.G_T, 3, lang), c=number(b.c, 3, lang), m=number(b.m, 3, lang))]
+    out += [message("thermal2.report.heat_row", lang, part=r[0], Q=r[1], q=r[2])
+            for r in balance_cells(b, lang)[1:]]
+    return out
+
+
+def thermal_lines(c: Cycle, V_h: float, lang: str, bore: float | None = None) -> list[str]:
+    """The thermal calculation in the report (pressures in MPa, temperatures in K); with the
+    engine's ``bore`` (m), its heat balance."""
     s = c.spec
 
     def n(x: float, k: int = 4) -> str:
@@ -40,15 +58,28 @@ def thermal_lines(c: Cycle, V_h: float, lang: str) -> list[str]:
         out.append(message("cycle.report.sizing", lang, N_e=n(s.power * 1e-3, 2),
                            V_h=n(vh * 1e3, 4), D=n(D * 1e3, 2), S=n(S * 1e3, 2),
                            S_D=n(s.S_D, 3)))
-    out.append(message("cycle.report.balance", lang, q_e=n(100 * c.eta_e, 2),
-                       q_m=n(100 * (c.eta_i - c.eta_e), 2),
-                       q_inc=n(100 * c.dH_u / s.H_u, 2),
-                       q_rest=n(100 * (1 - c.eta_i - c.dH_u / s.H_u), 2)))
+    if c.wiebe is not None:
+        w = c.wiebe
+        p_max, phi_max = w.peak
+        out.append(message("thermal2.report.wiebe", lang,
+                           start=n(math.degrees(w.spec.start), 1),
+                           duration=n(math.degrees(w.spec.duration), 1), m=n(w.spec.m, 3),
+                           a=n(w.spec.a, 3), p_max=n(p_max * 1e-6), phi_max=n(
+                               math.degrees(phi_max), 1), p_i=n(w.p_i * 1e-6),
+                           residual=scientific(w.residual * V_h, 2, lang)))
+    if bore is None:
+        out.append(message("cycle.report.balance", lang, q_e=n(100 * c.eta_e, 2),
+                           q_m=n(100 * (c.eta_i - c.eta_e), 2),
+                           q_inc=n(100 * c.dH_u / s.H_u, 2),
+                           q_rest=n(100 * (1 - c.eta_i - c.dH_u / s.H_u), 2)))
+    else:
+        out += balance_lines(cycle_balance(c, V_h, bore), lang)
     return out
 
 
-def thermal_json(c: Cycle, V_h: float) -> dict[str, Any]:
-    """The thermal calculation's results (SI; kmol and kg per kg of fuel)."""
+def thermal_json(c: Cycle, V_h: float, bore: float | None = None) -> dict[str, Any]:
+    """The thermal calculation's results (SI; kmol and kg per kg of fuel); with the engine's
+    ``bore`` (m), its heat balance (W and %)."""
     s = c.spec
     doc: dict[str, Any] = {
         "diesel": s.diesel, "alpha": s.alpha, "epsilon": s.epsilon, "L0": c.L0, "l0": c.l0,
@@ -60,4 +91,16 @@ def thermal_json(c: Cycle, V_h: float) -> dict[str, Any]:
     if s.power is not None:
         vh, D, S = c.cylinder_for(s.power)
         doc["sizing"] = {"N_e": s.power, "V_h": vh, "D": D, "S": S}
+    if c.wiebe is not None:
+        w = c.wiebe
+        p_max, phi_max = w.peak
+        doc["wiebe"] = {"start_deg": math.degrees(w.spec.start),
+                        "duration_deg": math.degrees(w.spec.duration), "m": w.spec.m,
+                        "a": w.spec.a, "Q": w.Q * V_h, "work": w.work * V_h, "dU": w.dU * V_h,
+                        "residual": w.residual * V_h, "p_i": w.p_i, "p_max": p_max,
+                        "phi_max_deg": math.degrees(phi_max)}
+    if bore is not None:
+        b = cycle_balance(c, V_h, bore)
+        doc["heat_balance"] = {"N_e": b.N_e, "G_T": b.G_T, "Q0": b.Q0, "c": b.c, "m": b.m,
+                               "Q": dict(b.flows), "q": b.shares}
     return doc

@@ -15,6 +15,7 @@ from .answers import Keys, Own, Written
 if TYPE_CHECKING:
     from ..drafting.primitives import Sheet
     from ..synthesis.gears.contour import Contour
+    from ..synthesis.gears.contour_internal import InternalPair
     from ..synthesis.gears.involute import Pair
     from ..synthesis.gears.solve import GearSolution
     from ..synthesis.gears.train import Conditions
@@ -108,6 +109,16 @@ class GearStudy:
             out.extend(pair_lines(sol.pair, lang))
             if sol.contour is not None:
                 out.extend(contour_lines(sol.contour, sol.pair, lang))
+        if sol.internal is not None:
+            from ..sheet.gear_internal import internal_lines
+
+            out.append("")
+            out.extend(internal_lines(sol.internal, lang))
+        if sol.compound is not None and sol.scene.compound is not None:
+            from ..sheet.gear_compound import compound_lines
+
+            out.append("")
+            out.extend(compound_lines(sol.scene.compound, sol.compound, lang))
         return "\n".join(out)
 
     def warnings(self, language: str | None = None) -> list[str]:
@@ -130,6 +141,10 @@ class GearStudy:
             lines = pair_lines(p, lang)[-5:-1]       # pointed tip and interference, per gear
             bad = [flag for pair in zip(p.pointed, p.interference) for flag in pair]
             failed += [line for line, fails in zip(lines, bad, strict=True) if fails]
+        if sol.internal is not None and not sol.internal.admissible:
+            from ..sheet.gear_internal import internal_lines
+            failed += [line.strip() for line in internal_lines(sol.internal, lang)[4:]
+                       if line.strip().endswith(message("internal.fails", lang))]
         return flags + [message("gears.warning.failed", lang, check=c) for c in failed]
 
     def to_json(self) -> dict[str, Any]:
@@ -177,6 +192,12 @@ class GearStudy:
             }
             if sol.contour is not None:
                 doc["pair"]["contour"] = contour_json(sol.contour, p)
+        if sol.internal is not None:
+            doc["internal_pair"] = internal_json(sol.internal)
+        if sol.compound is not None and sol.scene.compound is not None:
+            from ..sheet.gear_compound import compound_json
+
+            doc["compound"] = compound_json(sol.scene.compound, sol.compound)
         return doc
 
     def answers(self) -> Keys:
@@ -225,6 +246,29 @@ def contour_json(c: Contour, p: Pair) -> dict[str, Any]:
             "recommended": list(c.recommended), "rule": c.rule, "contact_ratio": c.eps,
             "specific_sliding": {"u_from_N1_m": vals(s.u), "eta1": vals(s.eta1),
                                  "eta2": vals(s.eta2), "B1_m": s.b1, "B2_m": s.b2, "g_m": s.g}}
+
+
+def internal_json(ip: InternalPair) -> dict[str, Any]:
+    """An internal pair: its shifts, quantities, each limit's value and the contour's lines."""
+    q = ip.arrays
+
+    def pts(a: Any) -> list[list[float | None]]:
+        return [[float(x) if math.isfinite(x) else None for x in row] for row in a.tolist()]
+
+    def f(v: Any) -> float | None:
+        x = float(v)
+        return x if math.isfinite(x) else None
+    c = ip.contour
+    return {"module_m": ip.spec.module, "z": [ip.spec.z1, ip.spec.z2], "x": [ip.x1, ip.x2],
+            "shift_rule": ip.spec.rule.value, "alpha_w_deg": math.degrees(float(q.alpha_w)),
+            "a_w_m": f(q.a_w), "contact_ratio": f(q.eps), "tip_diameters_m":
+            [f(2 * q.r_a[0]), f(2 * q.r_a[1])], "tip_lands_m": [f(q.s_a[0]), f(q.s_a[1])],
+            "limits": {k: (v if math.isfinite(v) else None) for k, v in ip.limits.items()},
+            "admissible": ip.admissible,
+            "contour": {"tip_land_modules": c.spec.tip_land, "min_contact_ratio": c.spec.eps_min,
+                        "lines": {k: pts(v) for k, v in c.lines.items()},
+                        "balanced_sliding": pts(c.balanced), "recommended": list(c.recommended),
+                        "rule": c.rule, "contact_ratio": c.eps}}
 
 
 def contour_lines(c: Contour, p: Pair, lang: str) -> list[str]:

@@ -44,7 +44,7 @@ def read_answers(path: str | Path, is_angle_name: Any) -> Submission:
     suffix = p.suffix.lower()
     if suffix == ".toml":
         table = _read_toml(p, is_angle_name)
-    elif suffix in (".csv", ".tsv", ".txt"):
+    elif suffix in (".csv", ".tsv", ".txt", ".xlsx", ".xlsm"):   # a workbook: its rows as CSV's
         table = _read_csv(p, is_angle_name)
     else:
         raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))

@@ -27,6 +27,7 @@ from .notation import units_ascii
 from .read import DrawnLine, Entry, Note, Point, SheetText, Submission
 from .sketch import Graph, drawn_graph, place_labels
 from .texts import T
+from .titles import Box, box_of, names_group, title_above
 from .written import label_key, label_names
 
 #: drawings of one plan whose lines do not join are one plan when they are this close (mm)
@@ -57,6 +58,7 @@ class DrawnPlan:
     mu: float | None = None
     mu_source: str = ""
     convention: str = ""            # how numbered normals / Coriolis points were read
+    title: str = ""                 # the text that titles the drawing (``titles.title_above``)
 
     @property
     def name(self) -> Text:
@@ -206,7 +208,8 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
             continue
         plan = max(votes, key=lambda p: (votes[p], -list(Plan).index(p)))
         keys = [k for k in book.plans if k[0] is plan]
-        decided.append((max(keys, key=lambda k: _fit(book, k, members)), comp, members))
+        decided.append((_key_of(book, keys, members, sub, _boxes(comps, [comp])), comp,
+                        members))
     # merge drawings of one plan unless their labels clash
     plans: list[DrawnPlan] = []
     groups: list[tuple[PlanKey, list[int], list[_Label]]] = []
@@ -223,6 +226,9 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
     found: list[DrawnPlan] = []
     for key, comps_, members in groups:
         dp = DrawnPlan(key)
+        title = title_above(_points_of(members), sub.texts, [k[1] for k in book.plans],
+                            _boxes(comps, comps_))
+        dp.title = title.text.strip() if title is not None else ""
         for comp in comps_:
             dp.lines.extend(lines_of.get(comp, []))
         _resolve(dp, members, book, notes)
@@ -252,6 +258,25 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
                                            plan=plan_title(key[0].value, key[1], case="gen")),
                               sub.path))
     return plans
+
+
+def _boxes(comps: dict[int, list[_Label]], but: list[int]) -> list[Box]:
+    """The boxes of the labelled drawings other than ``but``."""
+    return [b for c, members in comps.items() if c not in but
+            and (b := box_of(_points_of(members))) is not None]
+
+
+def _key_of(book: LabelBook, keys: list[PlanKey], members: list[_Label],
+            sub: Submission, others: list[Box]) -> PlanKey:
+    """Which plan of a kind a drawing is: the group its title names (two cranks' force polygons
+    carry the same letters), else the plan its labels fit best."""
+    if len(keys) > 1:
+        groups = [k[1] for k in keys if k[1]]
+        title = title_above(_points_of(members), sub.texts, groups, others)
+        named = [k for k in keys if title is not None and names_group(title.text, k[1])]
+        if len(named) == 1:
+            return named[0]
+    return max(keys, key=lambda k: _fit(book, k, members))
 
 
 def _fit(book: LabelBook, key: PlanKey, members: list[_Label]) -> float:

@@ -126,7 +126,8 @@ def submitted_file(path: str | Path) -> Path:
 
 
 def read_submission(path: str | Path) -> Submission:
-    """Read a DXF, TOML or CSV submission; raise :class:`CheckError` if it cannot be read at all."""
+    """Read a DXF (or a PDF with a DXF attached), TOML, CSV or XLSX submission; raise
+    :class:`CheckError` if it cannot be read at all."""
     p = submitted_file(path)
     suffix = p.suffix.lower()
     if suffix == ".dxf":
@@ -135,8 +136,10 @@ def read_submission(path: str | Path) -> Submission:
         return read_dxf(p)
     if suffix == ".toml":
         return read_toml(p)
-    if suffix in (".csv", ".tsv", ".txt"):
+    if suffix in (".csv", ".tsv", ".txt", ".xlsx", ".xlsm"):
         return read_csv(p)
+    if suffix == ".pdf":
+        return read_pdf(p)
     data = read_bytes(p, DXF, error=CheckError)
     head = data[:256]
     if re.match(rb"\s*0\s*\r?\n\s*SECTION", head) or head.startswith(b"AutoCAD Binary DXF"):
@@ -144,6 +147,19 @@ def read_submission(path: str | Path) -> Submission:
 
         return read_dxf(p, data)
     raise CheckError(T("error.kind", suffix=p.suffix or "—"), file=str(p))
+
+
+def read_pdf(path: Path) -> Submission:
+    """Read the DXF attached to a PDF (in memory: nothing is written); a note names the other
+    attachments, which are not checked."""
+    from .dxf import read_dxf
+    from .pdf_attached import attached_dxf
+
+    drawing, others = attached_dxf(path)
+    sub = read_dxf(path, drawing.data)
+    sub.notes.insert(0, Note("info", T("note.pdf_attached", name=drawing.name,
+                                       others=", ".join(others) or "—")))
+    return sub
 
 
 # -- "name = value" texts ------------------------------------------------------------------------
@@ -394,7 +410,12 @@ def _nesting(data: Any) -> int:
 def csv_rows(path: Path, dialect: Callable[[str], Any]) -> list[list[str]]:
     """The rows of a CSV file, its dialect chosen by ``dialect(first 20 lines)``; a table of more
     than :data:`~mechplan.limits.TABLE_MAX_ROWS` rows, or with a cell over
-    :data:`~mechplan.limits.CSV_CELL_MAX_CHARS` characters, is refused naming the line."""
+    :data:`~mechplan.limits.CSV_CELL_MAX_CHARS` characters, is refused naming the line. An Excel
+    workbook's rows are its active sheet's (:mod:`.xlsx`), read the same way."""
+    from .xlsx import SUFFIXES, xlsx_rows
+
+    if path.suffix.lower() in SUFFIXES:
+        return xlsx_rows(path)
     text = _read_text(path)
     if "\x00" in text:
         raise CheckError(T("error.binary"), file=str(path))

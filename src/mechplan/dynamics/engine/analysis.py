@@ -8,7 +8,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...model.engine import Layout
 from .checks import Checks, consistency_checks
 from .cylinder import CylinderForces, rows_of, slider_forces
 from .model import EngineModel
@@ -78,8 +77,8 @@ def pin_loads(model: EngineModel, phi: Array, cyl: dict[int, CylinderForces]) ->
     out = {}
     for pin, members in model.pins.items():
         K_r = -sum(model.m_rot[c] for c in members) * rw2
-        if spec.layout is Layout.ARTICULATED:
-            T, Z = model.pair_pin_force(phi, cyl[1].P, cyl[2].P)
+        if any(c in model.articulated for c in members):
+            T, Z = model.group_pin_force(pin, phi, {c: cyl[c].P for c in members})
         else:
             T = np.sum([cyl[c].T for c in members], axis=0)
             Z = np.sum([cyl[c].Z for c in members], axis=0)
@@ -130,15 +129,19 @@ def analyse(model: EngineModel, phi: Array) -> EngineResult:
     """All quantities at engine crank angles φ."""
     phi = np.asarray(phi, float)
     spec = model.spec
-    plain = [c.number for c in spec.cylinders if not (model.pair is not None and c.number == 2)]
+    plain = [c.number for c in spec.cylinders if c.number not in model.articulated]
     psi = np.stack([model.local(n, phi) for n in plain])
     m_j = np.array([model.m_j[n] for n in plain])[:, None]
-    together = slider_forces(model.kin, model.omega, model.diagram, psi, spec.F_p, spec.p0, m_j)
+    together = slider_forces(model.kin, model.omega, model.diagram, psi, spec.F_p, spec.p0, m_j,
+                             model.rod_diagram, spec.F_rod_side)
     cyl = {n: rows_of(together, i) for i, n in enumerate(plain)}
-    if model.pair is not None:
-        cyl[2] = model.cylinder(2, phi)
-    M = together.M.sum(axis=0) + (cyl[2].M if model.pair is not None else 0.0)
-    Mj = together.M_j.sum(axis=0) + (cyl[2].M_j if model.pair is not None else 0.0)
+    M = together.M.sum(axis=0)
+    Mj = together.M_j.sum(axis=0)
+    for n in model.articulated:
+        cyl[n] = model.cylinder(n, phi)
+        M = M + cyl[n].M
+        Mj = Mj + cyl[n].M_j
+    cyl = {c.number: cyl[c.number] for c in spec.cylinders}
     pins = pin_loads(model, phi, cyl)
     return EngineResult(model, phi, cyl, M, Mj, pins, journal_loads(model, phi, pins))
 

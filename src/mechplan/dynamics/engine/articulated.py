@@ -1,8 +1,10 @@
-"""The master/articulated pair solved by mechplan's exact construction (positions, velocities,
-accelerations of the pistons C and E and of the lug D).
+"""A master rod and its articulated rods on one crank pin, solved by mechplan's exact construction
+(positions, velocities, accelerations of the pistons and of the lugs).
 
-The linkage scene comes from :func:`mechplan.scene.engine.articulated_linkage`: the master cylinder
-along +x, the articulated one at the bank angle, the crank turning counter-clockwise from +x.
+The linkage scene comes from :func:`mechplan.scene.engine_layout.group_linkage`: the master
+cylinder (piston C) along +x, articulated cylinder k (lug Dk on the master rod, piston Ek) at its
+bank angle, the crank turning counter-clockwise from +x. Angles given to this module are the
+linkage's crank angles (from the master cylinder's axis); the engine model shifts them.
 """
 
 from __future__ import annotations
@@ -19,70 +21,129 @@ from ...model.structure import analyse
 from ...scene.spec import Scene
 
 Array = np.ndarray
+TURN = 2.0 * math.pi
 
 
 @dataclass(frozen=True)
-class PairState:
-    """Positions, velocities and accelerations (N, 2) of the pair's points at crank angles φ."""
+class GroupState:
+    """Positions, velocities and accelerations (N, 2) of the group's points at crank angles φ;
+    the articulated cylinders' points as tuples in slot order."""
 
     phi: Array
     B: Array
     C: Array
-    D: Array
-    E: Array
     v_C: Array
-    v_E: Array
     a_C: Array
-    a_E: Array
+    D: tuple[Array, ...]
+    E: tuple[Array, ...]
+    v_E: tuple[Array, ...]
+    a_E: tuple[Array, ...]
 
 
-class ArticulatedPair:
-    """The exact kinematics of a master and an articulated rod on one crank pin."""
+@dataclass(frozen=True)
+class Slave:
+    """One articulated cylinder's exact dead centres (linkage crank angles) and travel."""
 
-    def __init__(self, scene: Scene) -> None:
+    u: Array                        # its axis (outwards)
+    phi_tdc: float
+    phi_bdc: float
+    s_tdc: float                    # distance of the piston pin from the crank axis at TDC
+    s_bdc: float
+
+    @property
+    def stroke(self) -> float:
+        """Stroke of the articulated piston (m)."""
+        return self.s_tdc - self.s_bdc
+
+
+class ArticulatedGroup:
+    """The exact kinematics of a master rod and its articulated rods on one crank pin."""
+
+    def __init__(self, scene: Scene, slots: int) -> None:
         self.scene = scene
+        self.slots = slots
         self.construction: Construction = build_construction(
             scene.mechanism, analyse(scene.mechanism), ("position", "velocity", "acceleration"),
             scene.assembly_phi, scene.path, None)
         guides = scene.mechanism.guides
-        self.u_C = np.array([math.cos(guides["Ax"].angle), math.sin(guides["Ax"].angle)])
-        self.u_E = np.array([math.cos(guides["Ay"].angle), math.sin(guides["Ay"].angle)])
-        s, _ = self._travel_E(np.linspace(0.0, 2.0 * math.pi, 721)[:-1])
-        self.phi_tdc_E = self._dead_centre(s, int(np.argmax(s)))
-        self.phi_bdc_E = self._dead_centre(s, int(np.argmin(s)))
-        s_ext, _ = self._travel_E(np.array([self.phi_tdc_E, self.phi_bdc_E]))
-        self.s_tdc_E, self.s_bdc_E = float(s_ext[0]), float(s_ext[1])
+        self.u_C = _unit(guides["Ax"].angle)
+        grid = np.linspace(0.0, TURN, 721)[:-1]
+        ev = self.construction.evaluate(grid)
+        slaves = []
+        for k in range(slots):
+            u = _unit(guides[f"G{k + 1}"].angle)
+            s = ev[self.construction.position(f"E{k + 1}")] @ u
+            tdc = self._dead_centre(k, u, int(np.argmax(s)))
+            bdc = self._dead_centre(k, u, int(np.argmin(s)))
+            ext = self._travel(k, u, np.array([tdc, bdc]))[0]
+            slaves.append(Slave(u, tdc, bdc, float(ext[0]), float(ext[1])))
+        self.slaves: tuple[Slave, ...] = tuple(slaves)
 
-    @property
-    def stroke_E(self) -> float:
-        """Stroke of the articulated piston (m)."""
-        return self.s_tdc_E - self.s_bdc_E
-
-    def state(self, phi: Array) -> PairState:
-        """Evaluate the pair at crank angles φ (rad from the master cylinder's axis)."""
+    def state(self, phi: Array) -> GroupState:
+        """Evaluate the group at crank angles φ (rad from the master cylinder's axis)."""
         c = self.construction
-        ev = c.evaluate(np.mod(np.asarray(phi, float), 2.0 * math.pi))
-        return PairState(np.asarray(phi, float), ev[c.position("B")], ev[c.position("C")],
-                         ev[c.position("D")], ev[c.position("E")], ev[c.velocity_image("C")],
-                         ev[c.velocity_image("E")], ev[c.acceleration_image("C")],
-                         ev[c.acceleration_image("E")])
+        ev = c.evaluate(np.mod(np.asarray(phi, float), TURN))
+        names = range(1, self.slots + 1)
+        return GroupState(np.asarray(phi, float), ev[c.position("B")], ev[c.position("C")],
+                          ev[c.velocity_image("C")], ev[c.acceleration_image("C")],
+                          tuple(ev[c.position(f"D{k}")] for k in names),
+                          tuple(ev[c.position(f"E{k}")] for k in names),
+                          tuple(ev[c.velocity_image(f"E{k}")] for k in names),
+                          tuple(ev[c.acceleration_image(f"E{k}")] for k in names))
 
-    def _travel_E(self, phi: Array) -> tuple[Array, Array]:
+    def _travel(self, k: int, u: Array, phi: Array) -> tuple[Array, Array]:
         c = self.construction
-        ev = c.evaluate(phi)
-        return ev[c.position("E")] @ self.u_E, ev[c.velocity_image("E")] @ self.u_E
+        ev = c.evaluate(np.mod(phi, TURN))
+        return ev[c.position(f"E{k + 1}")] @ u, ev[c.velocity_image(f"E{k + 1}")] @ u
 
-    def _dead_centre(self, s: Array, i: int) -> float:
-        n = s.shape[0]
-        lo, hi = (i - 1) * 2.0 * math.pi / n, (i + 1) * 2.0 * math.pi / n
+    def _dead_centre(self, k: int, u: Array, i: int) -> float:
+        lo, hi = (i - 1) * TURN / 720, (i + 1) * TURN / 720
 
         def v(f: float) -> float:
-            return float(self._travel_E(np.array([f]))[1][0])
+            return float(self._travel(k, u, np.array([f]))[1][0])
 
-        return float(brentq(v, lo, hi, xtol=1e-14)) % (2.0 * math.pi)
+        return float(brentq(v, lo, hi, xtol=1e-14)) % TURN
 
-    def phi_of_travel_E(self, x: float, lo: float, hi: float) -> float:
-        """Crank angle in [lo, hi] where E has travelled x from its TDC (one stroke, monotone)."""
+    def phi_of_travel(self, k: int, x: float, lo: float, hi: float) -> float:
+        """Crank angle in [lo, hi] where slave k has travelled x from its TDC (one stroke)."""
+        sl = self.slaves[k]
+
         def f(p: float) -> float:
-            return self.s_tdc_E - float(self._travel_E(np.array([p]))[0][0]) - x
+            return sl.s_tdc - float(self._travel(k, sl.u, np.array([p]))[0][0]) - x
+
         return float(brentq(f, lo, hi, xtol=1e-14))
+
+    def pin_force(self, phi: Array, P_C: Array, P_E: tuple[Array, ...]) -> tuple[Array, Array]:
+        """T and Z on the crank pin from the statics of the group (rods massless: their masses are
+        in P and in the rotating mass); T in the sense of rotation +, Z towards the axis +.
+
+        Each articulated rod DkEk is a two-force member; the master rod takes the piston C's
+        force, the guide's normal force at C and the articulated rods' forces at the lugs.
+        """
+        st = self.state(phi)
+        u_C = self.u_C
+        n_C = np.array([-u_C[1], u_C[0]])
+        F_C = -P_C[:, None] * u_C                        # piston C's force on the master at C
+        BC = st.C - st.B
+        moment = _cross(BC, F_C)
+        F_lugs = np.zeros_like(F_C)
+        for k, sl in enumerate(self.slaves):
+            e = st.E[k] - st.D[k]
+            e /= np.hypot(e[:, 0], e[:, 1])[:, None]
+            s = P_E[k] / (e @ sl.u)                      # rod DkEk pushes piston Ek with s·e
+            F_D = -s[:, None] * e                        # the articulated rod on the master at Dk
+            F_lugs += F_D
+            moment = moment + _cross(st.D[k] - st.B, F_D)
+        N_C = -moment / _cross(BC, np.broadcast_to(n_C, BC.shape))
+        F_pin = F_C + N_C[:, None] * n_C + F_lugs       # master rod on the crank pin
+        r = st.B / np.hypot(st.B[:, 0], st.B[:, 1])[:, None]
+        t = np.stack([-r[:, 1], r[:, 0]], axis=1)
+        return np.sum(F_pin * t, axis=1), -np.sum(F_pin * r, axis=1)
+
+
+def _unit(angle: float) -> Array:
+    return np.array([math.cos(angle), math.sin(angle)])
+
+
+def _cross(a: Array, b: Array) -> Array:
+    return a[..., 0] * b[..., 1] - a[..., 1] * b[..., 0]

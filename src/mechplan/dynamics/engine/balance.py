@@ -61,9 +61,11 @@ def exact_accelerations(model: EngineModel, phi: Array) -> dict[int, Array]:
     """Exact piston accelerations d²x/dt² (x towards the crankshaft) at engine crank angles φ."""
     out = {}
     for c in model.spec.cylinders:
-        if model.pair is not None and c.number == 2:
-            st = model.pair.state(phi)
-            out[2] = -(st.a_E @ model.pair.u_E)
+        art = model.articulated.get(c.number)
+        if art is not None:
+            assert model.group is not None
+            st = model.group.state(phi - art.offset)
+            out[c.number] = -(st.a_E[art.slot] @ model.group.slaves[art.slot].u)
         else:
             out[c.number] = model.kin.a(np.mod(phi - model.phases[c.number], 2.0 * math.pi),
                                         model.omega)
@@ -159,6 +161,15 @@ def positions_of(model: EngineModel, spec: BalanceSpec) -> tuple[dict[int, float
     return {p: float(i) for i, p in enumerate(pins)}, False
 
 
+def rod_plane(model: EngineModel, spec: BalanceSpec, number: int) -> float:
+    """Axial offset of a cylinder's rod from its pin's middle: side-by-side rods of a shared pin
+    at −``rod_offset``/2 (the first) and +``rod_offset``/2 (the second), else 0."""
+    for members in model.pins.values():
+        if number in members and len(members) == 2 and not model.articulated:
+            return spec.rod_offset * (members.index(number) - 0.5)
+    return 0.0
+
+
 def _rot(mass_r: float, lag: float) -> Array:
     """C of a rotating force m·r·ω²… (ω² left out) of a mass at angle φ − lag."""
     return mass_r * complex(np.exp(-1j * lag)) * np.array([1.0, -1j])
@@ -190,7 +201,8 @@ def balance(model: EngineModel, spec: BalanceSpec, phi: Array, pins: dict[int, P
     pos, given = positions_of(model, spec)
     z0 = 0.5 * (min(pos.values()) + max(pos.values()))
     pin_of = {c: p for p, members in model.pins.items() for c in members}
-    arm = {c.number: pos[pin_of[c.number]] - z0 for c in eng.cylinders}
+    arm = {c.number: pos[pin_of[c.number]] - z0 + rod_plane(model, spec, c.number)
+           for c in eng.cylinders}
     grid = np.arange(N_FFT) * 2.0 * math.pi / N_FFT
     acc = exact_accelerations(model, grid)
     coeff = {n: harmonics(a) for n, a in acc.items()}

@@ -46,27 +46,34 @@ def _pieces(model: EngineModel, number: int) -> list[tuple[float, float]]:
     """Intervals of a cylinder's own cycle angle on which its torque is smooth."""
     spec, dia = model.spec, model.diagram
     out = []
-    if model.pair is not None and number == 2:
-        pair = model.pair
-        d = model.phases[2]
-        e_T = math.remainder(pair.phi_tdc_E - d, 2.0 * math.pi)
-        e_B = math.remainder(pair.phi_bdc_E - d - math.pi, 2.0 * math.pi)
+    art = model.articulated.get(number)
+    if art is not None:
+        group = model.group
+        assert group is not None
+        d = model.phases[number] - art.offset            # own cycle angle + d = linkage angle
+        e_T, e_B = model.dead_centres(number)
         bounds = [k * math.pi + (e_B if k % 2 else e_T) for k in range(spec.strokes)]
         bounds.append(bounds[0] + spec.cycle)
+        stroke = group.slaves[art.slot].stroke
         for k in range(spec.strokes):
             lo, hi = bounds[k], bounds[k + 1]
             cuts = [lo, hi]
             for xi in dia.knots_xi(k)[1:-1]:
-                cuts.append(pair.phi_of_travel_E(float(xi) * pair.stroke_E, lo + d, hi + d) - d)
-            c = sorted(cuts)
-            out += list(itertools.pairwise(c))
+                cuts.append(group.phi_of_travel(art.slot, float(xi) * stroke, lo + d, hi + d) - d)
+            out += list(itertools.pairwise(sorted(cuts)))
         return out
+    rod = model.rod_diagram
     for k in range(spec.strokes):
         lo, hi = k * math.pi, (k + 1) * math.pi
         xs = dia.knots_xi(k)[1:-1] * 2.0 * spec.R
         knots = model.kin.phi_of_x(xs, k % 2 == 1) + 2.0 * math.pi * (k // 2)
-        c = sorted([lo, hi, *knots.tolist()])
-        out += list(itertools.pairwise(c))
+        cuts = [lo, hi, *knots.tolist()]
+        if rod is not None:
+            # the crank end's stroke j = k − 1 (its cycle starts half a turn later), ξ' = 1 − x/S
+            j = (k - 1) % spec.strokes
+            xr = (1.0 - rod.knots_xi(j)[1:-1]) * 2.0 * spec.R
+            cuts += (model.kin.phi_of_x(xr, k % 2 == 1) + 2.0 * math.pi * (k // 2)).tolist()
+        out += list(itertools.pairwise(sorted(cuts)))
     return out
 
 
@@ -83,11 +90,10 @@ def consistency_checks(model: EngineModel, dense: Array) -> Checks:
     """Run the checks (``dense``: the grid of engine crank angles for the maxima)."""
     spec = model.spec
     W = model.diagram.work()
+    W_rod = model.rod_diagram.work() if model.rod_diagram is not None else 0.0
     expected, torque, inertia = 0.0, 0.0, 0.0
     for c in spec.cylinders:
-        scale = model.pair.stroke_E / (2.0 * spec.R) if (model.pair is not None and c.number == 2) \
-            else 1.0
-        expected += W * scale
+        expected += W * model.stroke_of(c.number) / (2.0 * spec.R) + W_rod
         torque += _integral(model, c.number, "M")
         inertia += _integral(model, c.number, "M_j")
     c1 = model.cylinder(1, dense)
@@ -97,11 +103,16 @@ def consistency_checks(model: EngineModel, dense: Array) -> Checks:
     if rod.J_S is not None and rod.J_two_mass is not None:
         dM = float(np.max(np.abs(two_mass_torque_error(model, dense))))
     pair_err = None
-    if model.pair is not None:
-        c2 = model.cylinder(2, dense)
-        T, _ = model.pair_pin_force(dense, c1.P, c2.P)
-        total = c1.M + c2.M
-        pair_err = float(np.max(np.abs(T * spec.R - total)) / np.max(np.abs(total)))
+    if model.articulated:
+        pair_err = 0.0
+        for pin, members in model.pins.items():
+            if not any(c in model.articulated for c in members):
+                continue
+            forces = {c: model.cylinder(c, dense) for c in members}
+            T, _ = model.group_pin_force(pin, dense, {c: f.P for c, f in forces.items()})
+            total = sum(f.M for f in forces.values())
+            pair_err = max(pair_err,
+                           float(np.max(np.abs(T * spec.R - total)) / np.max(np.abs(total))))
     return Checks(W, expected, torque, inertia / spec.cycle, peak,
                   float(np.max(np.abs(c1.p_brix - c1.p))), float(np.max(c1.p)),
                   float(np.max(np.abs(c1.a - c1.a_series))), float(np.max(np.abs(c1.a))),

@@ -75,3 +75,40 @@ class SliderCrank:
         c = np.clip((s * s + self.R ** 2 - self.L ** 2) / (2.0 * s * self.R), -1.0, 1.0)
         phi = np.arccos(c)
         return 2.0 * np.pi - phi if descending else phi
+
+
+@dataclass(frozen=True, slots=True)
+class CrankEnd:
+    """The crank-end face of a double-acting cylinder seen as a crank mechanism of its own.
+
+    Its cycle angle φ′ starts at its TDC (the head end's BDC): φ′ = φ − π, and its travel from its
+    TDC is x′(φ′) = 2R − x(φ′ + π) (the rod's obliquity mirrored). The indicator diagram of that
+    face uses it wherever a crank angle meets a volume.
+    """
+
+    head: SliderCrank
+
+    @property
+    def R(self) -> float:
+        """Crank radius."""
+        return self.head.R
+
+    @property
+    def lam(self) -> float:
+        """λ of the head end's slider-crank."""
+        return self.head.lam
+
+    def x(self, phi: Array) -> Array:
+        """Travel from the crank end's TDC."""
+        return 2.0 * self.head.R - self.head.x(np.asarray(phi, float) + np.pi)
+
+    def dx_dphi(self, phi: Array) -> Array:
+        """dx′/dφ′."""
+        return -self.head.dx_dphi(np.asarray(phi, float) + np.pi)
+
+    def phi_of_x(self, x: Array, descending: bool) -> Array:
+        """Crank angle φ′ in [0, π] (TDC→BDC) or, if ``descending``, in [π, 2π] for travel x′."""
+        xh = 2.0 * self.head.R - np.asarray(x, float)
+        if descending:
+            return self.head.phi_of_x(xh, False) + np.pi
+        return self.head.phi_of_x(xh, True) - np.pi

@@ -12,7 +12,9 @@ from ...errors import SceneError
 from ...i18n import Text
 from ...model.gears import GearScene, OrdinarySpec, PlanetarySpec
 from . import search, train
+from .compound import Shift
 from .contour import Contour, ContourSpec, blocking_contour
+from .contour_internal import InternalPair
 from .involute import Pair, pair_layout
 from .plan import TrainPlan, velocity_plan
 
@@ -65,6 +67,8 @@ class GearSolution:
     ordinary: OrdinaryResult | None
     pair: Pair | None
     contour: Contour | None = None        # the blocking contour, when the scene asks for it
+    internal: InternalPair | None = None  # an internal pair (``[pair] internal = true``)
+    compound: list[Shift] | None = None   # a Simpson or Ravigneaux set's gears
 
     @property
     def total_ratio(self) -> float | None:
@@ -170,15 +174,26 @@ def solve_gears(scene: GearScene) -> GearSolution:
                                       p.deviation if p else 0.02)
         pair = None
         contour: Contour | None = None
+        internal: InternalPair | None = None
         if scene.pair:
             spec = scene.pair
             if spec.z1 == 0 and ordinary is not None:
                 spec = dataclasses.replace(spec, z1=ordinary.z5, z2=ordinary.z6)
-            if spec.contour:
-                contour = blocking_contour(spec, ContourSpec(spec.tip_land, spec.eps_min))
-            pair = pair_layout(spec, contour.recommended if contour else None)
+            if spec.internal:
+                from .contour_internal import internal_pair
+
+                internal = internal_pair(spec)
+            else:
+                if spec.contour:
+                    contour = blocking_contour(spec, ContourSpec(spec.tip_land, spec.eps_min))
+                pair = pair_layout(spec, contour.recommended if contour else None)
+        compound = None
+        if scene.compound is not None:
+            from .compound import solve_compound
+
+            compound = solve_compound(scene.compound)
     except SceneError as exc:
         if exc.file:
             raise
         raise SceneError(exc.detail, file=scene.file, key=exc.key) from None
-    return GearSolution(scene, planetary, ordinary, pair, contour)
+    return GearSolution(scene, planetary, ordinary, pair, contour, internal, compound)

@@ -14,9 +14,8 @@ from ...errors import SceneError
 from ...i18n import Text
 from ...model.synthesis import SynthesisSpec
 from . import geometry as g
-from .crank_rocker import grashof, transmission
+from .crank_rocker import assembled, grashof, transmission
 from .design import LinkageDesign, Step, Stroke
-from .scene_out import base, link_name, mm
 
 
 def _error(spec: SynthesisSpec, key: str, msgid: str, **values: str) -> SceneError:
@@ -50,34 +49,16 @@ def central_crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
         raise _error(spec, "gamma_min", "gamma_below",
                      got=repr(round(math.degrees(gamma_min), 4)),
                      limit=repr(round(math.degrees(spec.gamma_limit), 4)))
-    turn = -g.angle_of(g.sub(D, A))
-
-    def moved(p: g.Vec) -> g.Vec:
-        return g.rotate(g.sub(p, A), turn)
-
-    B_ext = g.add(A, g.mul(g.unit(g.sub(C2, A)), r))
-    B_fold = g.sub(A, g.mul(g.unit(g.sub(C1, A)), r))
-    side = g.cross(g.sub(D, B_ext), g.sub(C2, B_ext))
-    phi_ext = (spec.sense * g.angle_of(moved(B_ext))) % (2 * math.pi)
-    phi_fold = (spec.sense * g.angle_of(moved(B_fold))) % (2 * math.pi)
-    sweep = (phi_fold - phi_ext) % (2 * math.pi)
-    scene = base(spec, {"A": ["0 mm", "0 mm"], "D": [mm(d), "0 mm"]}, {
-        "1": {"name": link_name("crank", spec), "lengths": {"AB": mm(r)}},
-        "2": {"name": link_name("coupler", spec), "lengths": {"BC": mm(l_)}},
-        "3": {"name": link_name("rocker", spec), "lengths": {"DC": mm(c)}},
-    }, {"extreme": "3", "which": "min"},
-        {"C": ("left" if side > 0 else "right") + " of B->D"})
+    scene, mechanism, conditions = assembled(spec, A, D, C1, C2,
+                                             {"r": r, "l": l_, "c": c, "d": d},
+                                             (ok, margin, gamma_min, gamma_at))
     strokes = [
         Stroke("point", D, role="given", label="D"),
         Stroke("line", D, C1, role="given", label="C1"),
         Stroke("line", D, C2, role="given", label="C2"),
         Stroke("line", A, C2, role="result"),
         Stroke("circle", A, r=r, role="result", label="A"),
-        Stroke("line", A, B_ext, role="mechanism", label="B2"),
-        Stroke("line", B_ext, C2, role="mechanism"),
-        Stroke("line", A, B_fold, role="mechanism", label="B1"),
-        Stroke("line", B_fold, C1, role="mechanism"),
-        Stroke("line", A, D, role="mechanism"),
+        *mechanism,
     ]
     choice = Step("synth.cr.central", {"lam": lam})
     protocol = [
@@ -87,12 +68,5 @@ def central_crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
         Step("synth.cr.measure", {"a1": l_ - r, "a2": l_ + r}),
         Step("synth.cr.lengths", {"r": r, "l": l_, "d": d}),
     ]
-    conditions = {
-        "grashof": ok, "grashof_margin": margin, "turns_fully": "1", "rocks": "3",
-        "gamma_min": gamma_min, "gamma_min_at_phi": gamma_at,
-        "dead_centres_phi": [phi_ext, phi_fold],
-        "working_stroke_phi": max(sweep, 2 * math.pi - sweep),
-        "working_from": "C2" if sweep > math.pi else "C1",
-    }
     return LinkageDesign("crank_rocker", 1.0, 0.0, {"r": r, "l": l_, "c": c, "d": d},
                          strokes, protocol, conditions, [], choice, scene, "3", "angle", psi)

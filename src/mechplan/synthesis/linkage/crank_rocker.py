@@ -11,6 +11,7 @@ different assembly branches); the arc from C2 gives the mirror images.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 from ...errors import SceneError
 from ...i18n import Text
@@ -35,6 +36,50 @@ def transmission(r: float, l: float, c: float, d: float) -> tuple[float, float]:
         if gamma < best:
             best, where = gamma, phi
     return best, where
+
+
+def assembled(spec: SynthesisSpec, A: g.Vec, D: g.Vec, C1: g.Vec, C2: g.Vec,
+              n: dict[str, float], checks: tuple[bool, float, float, float],
+              ) -> tuple[dict[str, Any], list[Stroke], dict[str, Any]]:
+    """The crank-rocker found by a construction, handed on as a scene: A at the origin, D on the
+    +x axis (the construction turned by −angle(AD)); the mechanism drawn at both dead centres
+    (B2 extended towards C2, B1 folded towards C1); its conditions: ``checks`` (Grashof and its
+    margin, γ_min and where) and what its dead centres give (crank angles as the analysis counts
+    them: from +x in the sense of rotation)."""
+    r, l_, c, d = n["r"], n["l"], n["c"], n["d"]
+    turn = -g.angle_of(g.sub(D, A))
+
+    def moved(p: g.Vec) -> g.Vec:
+        return g.rotate(g.sub(p, A), turn)
+
+    B_ext = g.add(A, g.mul(g.unit(g.sub(C2, A)), r))
+    B_fold = g.sub(A, g.mul(g.unit(g.sub(C1, A)), r))
+    side = g.cross(g.sub(D, B_ext), g.sub(C2, B_ext))
+    phi_ext = (spec.sense * g.angle_of(moved(B_ext))) % (2 * math.pi)
+    phi_fold = (spec.sense * g.angle_of(moved(B_fold))) % (2 * math.pi)
+    sweep = (phi_fold - phi_ext) % (2 * math.pi)                   # ext → fold, driven sense
+    scene = base(spec, {"A": ["0 mm", "0 mm"], "D": [mm(d), "0 mm"]}, {
+        "1": {"name": link_name("crank", spec), "lengths": {"AB": mm(r)}},
+        "2": {"name": link_name("coupler", spec), "lengths": {"BC": mm(l_)}},
+        "3": {"name": link_name("rocker", spec), "lengths": {"DC": mm(c)}},
+    }, {"extreme": "3", "which": "min"},
+        {"C": ("left" if side > 0 else "right") + " of B->D"})
+    mechanism = [
+        Stroke("line", A, B_ext, role="mechanism", label="B2"),
+        Stroke("line", B_ext, C2, role="mechanism"),
+        Stroke("line", A, B_fold, role="mechanism", label="B1"),
+        Stroke("line", B_fold, C1, role="mechanism"),
+        Stroke("line", A, D, role="mechanism"),
+    ]
+    ok, margin, gamma_min, gamma_at = checks
+    conditions: dict[str, Any] = {
+        "grashof": ok, "grashof_margin": margin, "turns_fully": "1", "rocks": "3",
+        "gamma_min": gamma_min, "gamma_min_at_phi": gamma_at,
+        "dead_centres_phi": [phi_ext, phi_fold],
+        "working_stroke_phi": max(sweep, 2 * math.pi - sweep),
+        "working_from": "C2" if sweep > math.pi else "C1",
+    }
+    return scene, mechanism, conditions
 
 
 def grashof(lengths: dict[str, float]) -> tuple[bool, float]:
@@ -161,25 +206,9 @@ def crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
                      got=repr(round(math.degrees(gamma_min), 4)),
                      limit=repr(round(math.degrees(spec.gamma_limit), 4)))
 
-    # the scene: A at the origin, D on the +x axis (rotate the construction by −angle(AD))
-    turn = -g.angle_of(g.sub(circ.D, A))
-
-    def moved(p: g.Vec) -> g.Vec:
-        return g.rotate(g.sub(p, A), turn)
-
-    B_ext = g.add(A, g.mul(g.unit(g.sub(circ.C2, A)), r))
-    B_fold = g.sub(A, g.mul(g.unit(g.sub(circ.C1, A)), r))
-    side = g.cross(g.sub(circ.D, B_ext), g.sub(circ.C2, B_ext))
-    # crank angles as the analysis counts them: from +x in the sense of rotation
-    phi_ext = (spec.sense * g.angle_of(moved(B_ext))) % (2 * math.pi)
-    phi_fold = (spec.sense * g.angle_of(moved(B_fold))) % (2 * math.pi)
-    sweep = (phi_fold - phi_ext) % (2 * math.pi)                   # ext → fold, driven sense
-    scene = base(spec, {"A": ["0 mm", "0 mm"], "D": [mm(d), "0 mm"]}, {
-        "1": {"name": link_name("crank", spec), "lengths": {"AB": mm(r)}},
-        "2": {"name": link_name("coupler", spec), "lengths": {"BC": mm(l_)}},
-        "3": {"name": link_name("rocker", spec), "lengths": {"DC": mm(c)}},
-    }, {"extreme": "3", "which": "min"},
-        {"C": ("left" if side > 0 else "right") + " of B->D"})
+    scene, mechanism, conditions = assembled(spec, A, circ.D, circ.C1, circ.C2,
+                                             {"r": r, "l": l_, "c": c, "d": d},
+                                             (ok, margin, gamma_min, gamma_at))
 
     family = []
     for i in range(FAMILY_SAMPLES):
@@ -199,11 +228,7 @@ def crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
         Stroke("line", A, circ.C1, role="result"),
         Stroke("line", A, circ.C2, role="result"),
         Stroke("circle", A, r=r, role="result", label="A"),
-        Stroke("line", A, B_ext, role="mechanism", label="B2"),
-        Stroke("line", B_ext, circ.C2, role="mechanism"),
-        Stroke("line", A, B_fold, role="mechanism", label="B1"),
-        Stroke("line", B_fold, circ.C1, role="mechanism"),
-        Stroke("line", A, circ.D, role="mechanism"),
+        *mechanism,
     ]
     chord = g.norm(g.sub(circ.C2, circ.C1))
     protocol = [
@@ -217,12 +242,5 @@ def crank_rocker(spec: SynthesisSpec) -> LinkageDesign:
         Step("synth.cr.measure", {"a1": l_ - r, "a2": l_ + r}),
         Step("synth.cr.lengths", {"r": r, "l": l_, "d": d}),
     ]
-    conditions = {
-        "grashof": ok, "grashof_margin": margin, "turns_fully": "1", "rocks": "3",
-        "gamma_min": gamma_min, "gamma_min_at_phi": gamma_at,
-        "dead_centres_phi": [phi_ext, phi_fold],
-        "working_stroke_phi": max(sweep, 2 * math.pi - sweep),
-        "working_from": "C2" if sweep > math.pi else "C1",
-    }
     return LinkageDesign("crank_rocker", spec.k, theta, {"r": r, "l": l_, "c": c, "d": d},
                          strokes, protocol, conditions, family, choice, scene, "3", "angle", psi)

@@ -1,0 +1,126 @@
+"""A plan's title decides which group's force polygon it is and at which position it was drawn.
+
+Two cranks' force polygons carry the same vertex letters (a, b, …), and a slider-driven coulisse's
+driver and group polygons too: by fit alone the checker read a loaded five-bar's polygon of
+I(0,1) as I(0,4) at another position (2 segments "wrong") and a loaded coulisse's polygon at the
+wrong position (5 "wrong"). The titles mechplan writes ("Force plan I(0,1) — position 1,
+φ = 30.0°", "… position 1, s1 = -200.0 mm") name both; the loaded variants of the two templates
+must check clean at several sizes, standards and languages.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from mechplan.check import Options, check
+from mechplan.check.report import MISSING, WRONG
+from mechplan.errors import CheckError
+from mechplan.render.dxf import to_bytes
+from mechplan.scene import load_scene
+from mechplan.sheet.compose import compose
+from mechplan.solve import solve
+from mechplan.submission.read import SheetText
+from mechplan.submission.titles import names_group, position_written, title_above, written_step
+
+TEMPLATES = Path(__file__).parents[2] / "src/mechplan/templates"
+
+
+def _loaded_five_bar() -> str:
+    text = (TEMPLATES / "five_bar_two_cranks.toml").read_text(encoding="utf-8")
+    text = text.replace('[links.2]\nname = "coupler"\n',
+                        '[links.2]\nname = "coupler"\nmass = "2 kg"\n'
+                        'centre = { S2 = "midpoint B C" }\n', 1)
+    text = text.replace('[links.3]\nname = "coupler"\n',
+                        '[links.3]\nname = "coupler"\nmass = "1.5 kg"\n'
+                        'centre = { S3 = "midpoint D C" }\n', 1)
+    return text + '\n[gravity]\ng = "9.81 m/s^2"\n'
+
+
+def _loaded_coulisse() -> str:
+    text = (TEMPLATES / "slider_coulisse.toml").read_text(encoding="utf-8")
+    text = text.replace('lengths = { O3E = "500 mm" }\n',
+                        'lengths = { O3E = "500 mm" }\nmass = "12 kg"\n'
+                        'centre = { S3 = "midpoint O3 E" }\n', 1)
+    text = text.replace('[links.1]\nname = "slider block"\n',
+                        '[links.1]\nname = "slider block"\nmass = "3 kg"\ncentre = "B"\n', 1)
+    return text + '\n[gravity]\ng = "9.81 m/s^2"\n'
+
+
+CASES = {"five_bar_loaded": _loaded_five_bar, "coulisse_loaded": _loaded_coulisse}
+
+
+@pytest.mark.parametrize("name", sorted(CASES))
+def test_loaded_sheets_with_same_letter_polygons_check_clean(name, tmp_path):
+    scene_path = tmp_path / f"{name}.toml"
+    scene_path.write_text(CASES[name](), encoding="utf-8")
+    scene = load_scene(scene_path)
+    sol = solve(scene)
+    failures: list[str] = []
+    force_plans = 0
+    for size, standard, lang in (("A1", "iso", "en"), ("A3", "gost", "ru"), ("A2", "tcvn", "vi")):
+        comp = compose(sol, size, standard, lang, name=name)
+        for i, sheet in enumerate(comp.sheets):
+            dxf = tmp_path / f"{name}-{size}-{i + 1}.dxf"
+            dxf.write_bytes(to_bytes(sheet))
+            try:
+                report = check(scene, dxf, Options())
+            except CheckError:
+                continue
+            for p in report.plans:
+                force_plans += p.plan == "force"
+                bad = [s.name for s in p.segments if s.verdict in (WRONG, MISSING)]
+                if bad:
+                    failures.append(f"{size} {standard} sheet {i + 1}: {p.name}: {bad}")
+    assert force_plans >= 3 * 2, force_plans      # the group's and the drivers' polygons, graded
+    assert not failures, "\n".join(failures)
+
+
+def _text(text: str, x: float, y: float, width: float = 60.0) -> SheetText:
+    return SheetText(text, (x + width / 2, y), 3.5, "TEXT", half=(width / 2, 1.75))
+
+
+def test_the_title_is_the_nearest_above_and_names_the_group():
+    texts = [_text("Force plan I(0,1) — position 1, φ = 30.0°", 0, 100),
+             _text("μF = 0.2 N/mm", 0, 95, 20),
+             _text("Force plan II(0,1) — position 3, φ = 90.0°", 200, 100),
+             _text("Velocity plan — position 2, φ = 60.0°", 0, 40)]
+    drawing = [(10.0, 60.0), (50.0, 90.0)]
+    title = title_above(drawing, texts, ["I(0,1)", "II(0,1)"])
+    assert title is texts[0]                     # not the scale under it, not the one below
+    assert names_group(title.text, "I(0,1)") and not names_group(title.text, "II(0,1)")
+    assert not names_group(texts[2].text, "I(0,1)")
+    assert title_above([(210.0, 60.0)], texts, ["I(0,1)"]) is texts[2]
+    # a drawing with no title above it, nor ending within 200 mm left of it, has none
+    assert title_above([(500.0, 60.0)], texts) is None
+
+
+@pytest.mark.parametrize(("title", "expected"), [
+    ("Force plan I(0,1) — position 1, φ = 30.0°", ("φ", 30.0, "°")),
+    ("План сил II(2,3) — положение 4, φ = 120,5°", ("φ", 120.5, "°")),
+    ("Velocity plan — position 2, s1 = -150.0 mm", ("s1", -150.0, "mm")),
+    ("phi1 = 45 deg", ("phi1", 45.0, "deg")),
+    ("Рычаг Жуковского — s1 = -100,0 мм", ("s1", -100.0, "мм")),
+    ("Force plan II(2,3)", None),
+    ("μF = 0.2 N/mm", None),
+])
+def test_position_written_at_the_end_of_a_title(title, expected):
+    assert position_written(title) == expected
+
+
+def test_written_step_is_half_the_last_digit():
+    assert written_step("… s1 = -100,0 мм") == pytest.approx(0.05)
+    assert written_step("φ = 30°") == pytest.approx(0.5)
+    assert written_step("l4 = 1562.25 mm") == pytest.approx(0.005)
+
+
+def test_a_title_over_another_drawing_titles_that_one():
+    """A grid cell's title above a column of drawings titles the drawing under it, not the one
+    under that (a lever drawn far right of its own title, below a grid of velocity plans)."""
+    texts = [_text("Position 10, φ = 303.8°", 430, 287, 40),
+             _text("Zhukovsky's lever — φ = 33.8°", 181, 190, 96)]
+    cell = (435.0, 510.0, 243.0, 285.0)
+    lever = [(408.0, 95.0), (470.0, 140.0)]
+    assert title_above(lever, texts, others=[cell]) is texts[1]
+    assert title_above(lever, texts) is texts[0]           # without the drawing between them
