@@ -55,8 +55,8 @@ def written_angles(texts: Sequence[SheetText]) -> set[float]:
 
 
 #: a linear driver's coordinate written in a plan's title: "position 1, l4 = 2400.0 mm",
-#: "s1 = -100 mm" (not a scale "μs1 = 4 mm/mm")
-_WRITTEN_Q = re.compile(r"(?<!\w)[ls]\d+\s*=\s*(-?\d+(?:[.,]\d+)?)\s*mm\b(?!\s*/)")
+#: "s1 = -100,0 мм" (any language's millimetres; not a scale "μs1 = 4 mm/mm")
+_WRITTEN_Q = re.compile(r"(?<!\w)[ls]\d+\s*=\s*(-?\d+(?:[.,]\d+)?)\s*(?:mm|мм|毫米)(?![\w/])")
 
 
 def written_lengths(texts: Sequence[SheetText]) -> set[float]:
