@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 
@@ -150,7 +151,7 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
         pct = scientific(float(fa.difference_percent[k]), 3, lang)
         return out + [
             message("drivers.force", lang, link=link, F=format_number(mb, 3, lang), unit=n,
-                    role=role),
+                    role=role), *_second_lines(sol, fa, k, lang, w),
             f"  {w[5]}: F_d = {format_number(mz, 3, lang)} {n}; {w[6]} {pct} %",
             f"  {w[7]}: F_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {n}",
             (f"  {w[8]}: m_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
@@ -158,13 +159,7 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     sense = sense_text(mb, lang)
     nm = unit("N·m", lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} {nm} ({sense}; {role})")
-    if fa.second is not None:       # W = 2: the second crank's own balancing moment
-        m2 = float(fa.second[1][k])
-        drive2 = sol.scene.mechanism.drive2
-        role2 = w[3] if drive2 is not None and m2 * drive2.omega > 0 else w[4]
-        out.append("### " + message("twoinputs.balancing", lang, link=fa.second[0],
-                                    value=f"{format_number(m2, 3, lang)} {nm} "
-                                          f"({sense_text(m2, lang)}; {role2})"))
+    out += _second_lines(sol, fa, k, lang, w)
     out.append(f"  {w[5]}: M_b = {format_number(mz, 3, lang)} {nm}; {w[6]} "
                f"{scientific(float(fa.difference_percent[k]), 3, lang)} %")
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {nm}")
@@ -174,3 +169,19 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
         from .dynamics.friction import report_lines
         out += report_lines(fa.friction, k, lang)
     return out
+
+
+def _second_lines(sol: Solution, fa: Any, k: int, lang: str, w: list[str]) -> list[str]:
+    """W = 2: the second driver's own balancing moment (a crank) or driving force (a cylinder)."""
+    if fa.second is None:
+        return []
+    value = float(fa.second[1][k])
+    drive2 = sol.scene.mechanism.drive2
+    role2 = w[3] if drive2 is not None and value * drive2.omega > 0 else w[4]
+    if fa.second_linear:
+        return [message("drivers.force", lang, link=fa.second[0],
+                        F=format_number(value, 3, lang), unit=unit("N", lang), role=role2)]
+    nm = unit("N·m", lang)
+    return ["### " + message("twoinputs.balancing", lang, link=fa.second[0],
+                             value=f"{format_number(value, 3, lang)} {nm} "
+                                   f"({sense_text(value, lang)}; {role2})")]

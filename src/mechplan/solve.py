@@ -258,9 +258,10 @@ def to_json(sol: Solution) -> dict[str, Any]:
         "dof": sol.structure.dof,
         "structure": sol.structure.formula,
         "driver": _driver_json(scene.mechanism.drive),
-        **({} if scene.mechanism.drive2 is None else {     # W = 2: the second crank and its law
+        **({} if scene.mechanism.drive2 is None else {     # W = 2: the second driver and its law
             "second_driver": _driver_json(scene.mechanism.drive2)
-            | {"phase": scene.mechanism.drive2.phase}}),
+            | {"start" if scene.mechanism.drive2.linear else "phase":
+               scene.mechanism.drive2.phase}}),
         "groups": [
             {"class": g.klass, "kind": str(g.kind), "links": list(g.links)}
             for g in sol.structure.groups
@@ -273,15 +274,69 @@ def to_json(sol: Solution) -> dict[str, Any]:
     if "textbook" in sol.extras:
         from .textbook_report import cycle_json
         doc["textbook"] = cycle_json(sol)
+    diagram = _diagram_json(sol)
+    if diagram is not None:
+        doc["kinematic_diagram"] = diagram
     return doc
+
+
+def _diagram_json(sol: Solution) -> dict[str, Any] | None:
+    """The kinematic diagram's ordinates at the solution's positions: the output link's s, v, a
+    (a slider: along its guide, m; a rocker: ψ, ω, ε in rad) over the driver's coordinate and the
+    law's time of each position (docs/drivers.md)."""
+    from .model.law import driver_time
+    from .model.output import output_link
+
+    mech, c, ev = sol.scene.mechanism, sol.construction, sol.ev
+    out = output_link(mech)
+    if out is None:
+        return None
+    x = np.asarray(sol.phi, dtype=float)        # rad, or m (a linear driver)
+    series: dict[str, Any] = {}
+    if out.point is not None:
+        u = np.asarray(out.direction)
+        for key, sym, image in (("s", "r", c.position), ("v", "v", c.velocity_image),
+                                ("a", "a", c.acceleration_image)):
+            if sym == "r" or c.has_result(sym, out.point):
+                sid = image(out.point)
+                if sid in ev.values:
+                    series[key] = np.asarray(ev[sid]) @ u
+    else:
+        for key, sym, step in (("s", "angle", c.link_angle), ("v", "omega", c.omega),
+                               ("a", "epsilon", c.epsilon)):
+            if c.has_result(sym, out.link) and step(out.link) in ev.values:
+                series[key] = np.asarray(ev[step(out.link)], dtype=float)
+    if "s" not in series:
+        return None
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = driver_time(mech.drive, x)
+    return {"output": {"link": out.link, "point": out.point,
+                       "kind": "rocker" if out.point is None else "slider"},
+            "coordinate": _driver_json(mech.drive)["coordinate"],
+            "x": [_num(v) for v in x], "t": [_num(v) for v in t],
+            **{k: [_num(v) for v in arr] for k, arr in series.items()}}
+
+
+def _num(x: Any) -> float | None:
+    x = float(x)
+    return x + 0.0 if math.isfinite(x) else None
 
 
 def _driver_json(drive: Any) -> dict[str, Any]:
     """The driver and its law: its kind, link, coordinate and rates (SI)."""
     linear = drive.linear
-    return {"kind": drive.kind.value, "link": drive.link,
-            "coordinate": ("l" if drive.kind.value == "cylinder" else "s") if linear else "phi",
-            "unit": "m" if linear else "rad", "rate": drive.omega, "acceleration": drive.epsilon}
+    doc = {"kind": drive.kind.value, "link": drive.link,
+           "coordinate": ("l" if drive.kind.value == "cylinder" else "s") if linear else "phi",
+           "unit": "m" if linear else "rad", "rate": drive.omega, "acceleration": drive.epsilon}
+    if drive.law is not None:       # a law by a table over time (docs/drivers.md)
+        from .model.law import interpolation_error
+
+        err = interpolation_error(drive.law)
+        doc["law"] = {"source": drive.law.source, "rows": len(drive.law.times),
+                      "span": list(drive.law.span), "interpolation": "cubic spline",
+                      "interpolation_error": {"coordinate": err[0], "rate": err[1],
+                                              "acceleration": err[2]}}
+    return doc
 
 
 def segment_table(sol: Solution, plan: Plan, k: int) -> list[tuple[str, float, float, str, float]]:

@@ -31,7 +31,8 @@ Grader = Callable[[Ctx, int], CheckReport]
 def several_positions(ctx: Ctx) -> bool:
     """Whether the sheet holds more than one drawn plan of a kind (e.g. velocity plans #1, #2),
     or plans under texts that name different crank angles ("velocity plan, φ = 1°" beside
-    "acceleration plan, φ = 61°": a velocity plan of another position next to the plans of one)."""
+    "acceleration plan, φ = 61°": a velocity plan of another position next to the plans of one)
+    or different lengths of a linear driver ("l4 = 3000 mm" beside "l4 = 2400 mm")."""
     if ctx.sheet is None:
         return False
     kinds = [dp.plan for dp in ctx.sheet.plans]

@@ -168,12 +168,18 @@ def plan_sizes(c: Construction, ev: Evaluation | None = None) -> dict[Plan, floa
             omega = abs(float(step.param("omega")))
     sizes = {Plan.POSITION: length, Plan.VELOCITY: omega * length,
              Plan.ACCELERATION: (omega * omega + epsilon) * length}
-    rates = {step.plan: abs(float(step.param("value"))) for step in c
-             if step.op is Op.DRIVER_RATE}
+    rates: dict[Plan, float] = {}
+    for step in c:      # the largest of the drivers' rates (W = 2: a second cylinder's too)
+        if step.op is Op.DRIVER_RATE:
+            rates[step.plan] = max(rates.get(step.plan, 0.0), abs(float(step.param("value"))))
+        elif step.op is Op.DRIVER_LAW and step.plan is not Plan.POSITION:   # a law by a table
+            rates[step.plan] = max(rates.get(step.plan, 0.0), float(step.param("size")))
     if rates:   # a linear driver: its rate q̇, and q̈ with the centripetal q̇²/L of its links
         q_dot = rates.get(Plan.VELOCITY, 0.0)
-        sizes[Plan.VELOCITY] = q_dot
-        sizes[Plan.ACCELERATION] = rates.get(Plan.ACCELERATION, 0.0) + q_dot * q_dot / length
+        crank = omega > 0.0         # W = 2, a crank and a cylinder: the larger of the two
+        sizes[Plan.VELOCITY] = max(q_dot, sizes[Plan.VELOCITY]) if crank else q_dot
+        q_acc = rates.get(Plan.ACCELERATION, 0.0) + q_dot * q_dot / length
+        sizes[Plan.ACCELERATION] = max(q_acc, sizes[Plan.ACCELERATION]) if crank else q_acc
     if ev is not None:
         force_max = [np.abs(v).max(axis=-1) for sid, v in ev.values.items()
                      if c[sid].plan is Plan.FORCE and c[sid].kind is Kind.POINT and v.size]

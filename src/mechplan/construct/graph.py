@@ -64,7 +64,8 @@ class Construction:
     results: dict[str, str] = field(default_factory=dict)
     #: constants derived once from the whole construction (e.g. its length scale)
     derived: dict[str, float] = field(default_factory=dict)
-    #: W = 2: the second driving crank (its balancing moment is the result ``M_b{link}``)
+    #: W = 2: the second driver's link (its balancing moment is the result ``M_b{link}``, a
+    #: second cylinder's driving force ``F_d{link}``)
     second_driver: str | None = None
     #: ancestor closures asked for so far (targets → steps in order); cleared when steps change
     _closures: dict[tuple[str, ...], tuple[str, ...]] = field(
@@ -162,6 +163,10 @@ class Construction:
         """Return the step id of the balancing moment on a second driving crank (W = 2, N·m)."""
         return self._named(f"M_b{link}")
 
+    def second_driving_force(self, link: str) -> str:
+        """Return the step id of the driving force of a second cylinder (W = 2, rod ``link``, N)."""
+        return self._named(f"F_d{link}")
+
     def zhukovsky_moment(self) -> str:
         """Return the step id of M_b found by Zhukovsky's lever (N·m)."""
         return self._named("M_b_zhukovsky")
@@ -184,7 +189,8 @@ class Construction:
         return [sid for key, sid in self.results.items()
                 if key in ("M_b", "M_b_zhukovsky", "F_d", "F_d_zhukovsky")
                 or key.startswith(("R_", "d_"))
-                or (self.second_driver is not None and key == f"M_b{self.second_driver}")]
+                or (self.second_driver is not None
+                    and key in (f"M_b{self.second_driver}", f"F_d{self.second_driver}"))]
 
     def _named(self, key: str) -> str:
         try:

@@ -18,5 +18,13 @@ def _second_crank_angle(g: ScalarGen, s: Step, n: str) -> None:
     g.emit(f"{n} = {offset} + {ratio} * {g.name(s.input('angle'))}")
 
 
+def _second_driver_length(g: ScalarGen, s: Step, n: str) -> None:
+    from .kernel_scalar import literal
+
+    offset, ratio = literal(float(s.param("offset"))), literal(float(s.param("ratio")))
+    g.emit(f"{n} = {offset} + {ratio} * {g.name(s.input('coordinate'))}")
+
+
 #: the scalar forms of the second driver's operations
-INPUT_FORMS: dict[OpSpec, Gen] = {Op.SECOND_CRANK_ANGLE: _second_crank_angle}
+INPUT_FORMS: dict[OpSpec, Gen] = {Op.SECOND_CRANK_ANGLE: _second_crank_angle,
+                                  Op.SECOND_DRIVER_LENGTH: _second_driver_length}

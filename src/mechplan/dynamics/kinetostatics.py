@@ -56,9 +56,11 @@ class ForceAnalysis:
     #: polygons and by Zhukovsky's lever, omega1 its rate q̇ (m/s), the reduced ones a force
     #: (N) and a mass (kg)
     linear: bool = False
-    #: a second driving crank (W = 2): its link and its balancing moment M_b (N·m) from its own
-    #: polygon; ``balancing_moment`` is the first crank's
+    #: a second driver (W = 2): its link and its balancing moment M_b (N·m) from its own
+    #: polygon, or (``second_linear``) a second cylinder's driving force F_d (N);
+    #: ``balancing_moment`` is the first driver's
     second: tuple[str, Array] | None = None
+    second_linear: bool = False
 
     @property
     def difference_percent(self) -> Array:
@@ -87,8 +89,9 @@ class ForceAnalysis:
                     "zhukovsky_driving_force": _num(self.zhukovsky_moment[i])} if self.linear
                    else {"balancing_moment": _num(self.balancing_moment[i]),
                          "zhukovsky_balancing_moment": _num(self.zhukovsky_moment[i])}),
-                **({} if self.second is None else {"second_balancing_moment": {
-                    "link": self.second[0], "value": _num(self.second[1][i])}}),
+                **({} if self.second is None else {
+                    "second_driving_force" if self.second_linear else "second_balancing_moment": {
+                        "link": self.second[0], "value": _num(self.second[1][i])}}),
             },
             "reduced": {"moment": _num(self.reduced_moment[i]),
                         "inertia": _num(self.reduced_inertia[i])},
@@ -135,19 +138,23 @@ def analyse_forces(c: Construction, ev: Evaluation, mech: Mechanism, loading: An
     reactions = dict(sorted(reactions.items(), key=lambda kv: (order[kv[1].i], order[kv[1].j])))
     guides = dict(sorted(guides.items(), key=lambda kv: (order[kv[1].i], order[kv[1].j])))
     m_red, j_red = reduced_of(c, ev, mech, loading)
+    second, second_linear = None, False
+    if mech.drive2 is not None:     # W = 2: the second driver's own M_b or F_d
+        link2, second_linear = mech.drive2.link, mech.drive2.linear
+        second = (link2, ev[c.second_driving_force(link2) if second_linear
+                            else c.second_balancing_moment(link2)])
     if mech.drive.linear:       # the driving force of a cylinder or slider
         return ForceAnalysis(
             phi=ev.phi, omega1=ev["vel.rate"], inertia=inertia, reactions=reactions,
             guide_reactions=guides, balancing_moment=ev[c.driving_force()],
             zhukovsky_moment=ev[c.zhukovsky_force()], reduced_moment=m_red,
-            reduced_inertia=j_red, linear=True)
+            reduced_inertia=j_red, linear=True, second=second, second_linear=second_linear)
     return ForceAnalysis(
         phi=ev.phi, omega1=link_omega(c, ev, mech.drive.link), inertia=inertia,
         reactions=reactions, guide_reactions=guides,
         balancing_moment=ev[c.balancing_moment()], zhukovsky_moment=ev[c.zhukovsky_moment()],
         reduced_moment=m_red, reduced_inertia=j_red, friction=analyse_friction(c, ev, mech),
-        second=None if mech.drive2 is None else (
-            mech.drive2.link, ev[c.second_balancing_moment(mech.drive2.link)]))
+        second=second, second_linear=second_linear)
 
 
 def balancing_force(c: Construction, ev: Evaluation, mech: Mechanism, point: str,

@@ -10,6 +10,8 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass, field
 
+from .law import TableLaw
+
 GROUND = "0"
 
 
@@ -108,8 +110,12 @@ class Drive:
     carrier: str | None = None  # cylinder: the barrel link
     guide: str | None = None    # linear drivers: the guide the rod or slider slides on
     q_range: tuple[float, float] | None = None  # linear drivers: (from, to) of a sweep (m)
-    #: a second crank (``[drive2]``, W = 2): its φ at the first driver's φ = 0 (rad, in its sense)
+    #: a second driver (``[drive2]``, W = 2): a crank's φ at the first driver's φ = 0 (rad, in its
+    #: sense); a cylinder's length at the first driver's reference (φ1 = 0 or its range start, m)
     phase: float = 0.0
+    #: a linear driver's law by a table over time (``law``): q(t) through a cubic spline; then
+    #: ``omega`` is the table's mean rate and ``epsilon`` 0 (the rates come from the spline)
+    law: TableLaw | None = None
 
     @property
     def sense(self) -> int:
@@ -136,7 +142,8 @@ class Mechanism:
         default_factory=dict
     )  # assembly: point → (P, Q, ±1)
     sketch: dict[str, tuple[float, float]] = field(default_factory=dict)  # assembly by sketch
-    #: a second driver (W = 2): a crank whose φ2 = phase + |ω2|/|ω1|·φ1 (docs/two_inputs.md)
+    #: a second driver (W = 2): a crank whose φ2 = phase + |ω2|/|ω1|·φ1 (docs/two_inputs.md) or a
+    #: cylinder whose l2 = phase + l̇2/rate1·(q1 − q1⁰) (docs/drivers.md)
     drive2: Drive | None = None
 
     @property

@@ -8,7 +8,7 @@ from dataclasses import dataclass, replace
 
 from ..errors import TopologyError
 from ..i18n import Text, join
-from .mechanism import GROUND, DriverKind, Mechanism, Pair, PairKind
+from .mechanism import GROUND, Drive, DriverKind, Mechanism, Pair, PairKind
 
 
 class GroupKind(enum.StrEnum):
@@ -108,6 +108,8 @@ class Structure:
     cylinder: tuple[str, str] | None = None
     #: a second driving crank (W = 2): its first-class mechanism I(0,k) follows the first
     second: str | None = None
+    #: a second driving cylinder (W = 2): (barrel, rod), its group lists the barrel
+    cylinder2: tuple[str, str] | None = None
 
     @property
     def dof(self) -> int:
@@ -119,7 +121,9 @@ class Structure:
         """Structure formula, e.g. ``I(0,1) → II(2,3) → III(4,5,6,7)``."""
         first = (f"I({self.cylinder[0]},{self.cylinder[1]})" if self.cylinder
                  else f"I({GROUND},{self.driving_link})")
-        if self.second is not None:
+        if self.cylinder2 is not None:
+            first += f", I({self.cylinder2[0]},{self.cylinder2[1]})"
+        elif self.second is not None:
             first += f", I({GROUND},{self.second})"
         parts = [first] + [g.name for g in self.groups]
         return " → ".join(parts)
@@ -155,16 +159,19 @@ def analyse(mech: Mechanism) -> Structure:
                                   else Text("errmsg2.structure.driver")),
                   "given": given}), key="links")
     drive = mech.drive
-    view, cylinder = mech, None
+    view, cylinder, cylinder2 = mech, None, None
     originals: dict[Pair, Pair] = {}
     if drive.kind is DriverKind.CYLINDER:
-        view, originals, cylinder = _merged_cylinder(mech)
+        view, originals, cylinder = _merged_cylinder(mech, drive)
         known = {GROUND}
     else:
         _check_driving_pair(mech)
         known = {GROUND, drive.link}
     second = mech.drive2
-    if second is not None:
+    if second is not None and second.kind is DriverKind.CYLINDER:
+        view, more, cylinder2 = _merged_cylinder(view, second, key="drive2.link")
+        originals = {q: originals.get(p, p) for q, p in more.items()}
+    elif second is not None:
         _check_second_crank(mech, second.link)
         known.add(second.link)
     remaining = [k for k in view.moving if k not in known]
@@ -182,7 +189,7 @@ def analyse(mech: Mechanism) -> Structure:
         known.update(group.links)
         remaining = [k for k in remaining if k not in known]
     return Structure(len(mech.moving), len(mech.pairs), 0, drive.link, tuple(groups), cylinder,
-                     second.link if second is not None else None)
+                     second.link if second is not None else None, cylinder2)
 
 
 def _check_second_crank(mech: Mechanism, link: str) -> None:
@@ -212,16 +219,17 @@ def _check_driving_pair(mech: Mechanism) -> None:
                             key="drive.link")
 
 
-def _merged_cylinder(mech: Mechanism) -> tuple[Mechanism, dict[Pair, Pair], tuple[str, str]]:
+def _merged_cylinder(mech: Mechanism, drive: Drive, key: str = "drive.link"
+                     ) -> tuple[Mechanism, dict[Pair, Pair], tuple[str, str]]:
     """The mechanism with the cylinder's rod merged into its barrel (their pair driven)."""
-    rod, barrel = mech.drive.link, mech.drive.carrier
+    rod, barrel = drive.link, drive.carrier
     assert barrel is not None
     driven = [p for p in mech.pairs if p.kind is PairKind.PRISMATIC and p.a == rod
               and p.b == barrel]
     if len(driven) != 1:
         raise TopologyError(Text(
             "errmsg2.structure.rod_in_barrel",
-            {"rod": rod, "barrel": barrel, "count": str(len(driven))}), key="drive.link")
+            {"rod": rod, "barrel": barrel, "count": str(len(driven))}), key=key)
     originals: dict[Pair, Pair] = {}
     pairs: list[Pair] = []
     for p in mech.pairs:
@@ -231,7 +239,7 @@ def _merged_cylinder(mech: Mechanism) -> tuple[Mechanism, dict[Pair, Pair], tupl
         if q.a == q.b:
             raise TopologyError(Text(
                 "errmsg2.structure.rod_second_pair",
-                {"rod": rod, "barrel": barrel, "pair": p.name}), key="drive.link")
+                {"rod": rod, "barrel": barrel, "pair": p.name}), key=key)
         originals[q] = p
         pairs.append(q)
     ends = [p for p in pairs if p.joins(barrel)]
@@ -239,7 +247,7 @@ def _merged_cylinder(mech: Mechanism) -> tuple[Mechanism, dict[Pair, Pair], tupl
         names = ", ".join(p.name for p in ends)
         raise TopologyError(Text(
             "errmsg2.structure.cylinder_pinned",
-            {"barrel": barrel, "rod": rod, "names": names}), key="drive.link")
+            {"barrel": barrel, "rod": rod, "names": names}), key=key)
     links = {k: v for k, v in mech.links.items() if k != rod}
     return replace(mech, links=links, pairs=tuple(pairs)), originals, (barrel, rod)
 

@@ -18,13 +18,17 @@ from .reader import Table
 from .spec import Positions
 
 #: keys of [drive] for a linear driver
-LINEAR_KEYS = ("kind", "link", "speed", "acceleration", "range")
+LINEAR_KEYS = ("kind", "link", "speed", "acceleration", "range", "law")
 
 
 def linear_drive(d: Table, kind: DriverKind, links: dict[str, Link], guides: dict[str, Guide],
-                 pairs: list[Pair]) -> Drive:
-    """The cylinder or slider named by ``[drive] link``, with its law and range."""
-    d.check_keys(LINEAR_KEYS)
+                 pairs: list[Pair], extra_keys: tuple[str, ...] = (), first: bool = True) -> Drive:
+    """The cylinder or slider named by ``[drive] link`` (or ``[drive2]``), with its law and range.
+
+    ``extra_keys``: keys the table may hold besides the linear driver's (``[drive2] start``);
+    ``first``: the first driver, whose law by a table must be monotonic (its q names the time).
+    """
+    d.check_keys(LINEAR_KEYS + extra_keys)
     link = d.string("link", required=True)
     assert link is not None
     if link not in links or link == GROUND:
@@ -48,14 +52,45 @@ def linear_drive(d: Table, kind: DriverKind, links: dict[str, Link], guides: dic
             {"link": link, "guide": guide.name, "owner": pair.b}))
     if kind is DriverKind.CYLINDER:
         _check_cylinder(d, link, pair, guide, links, pairs)
-    speed = d.quantity("speed", "velocity", required=True)
-    assert speed is not None
-    accel = d.quantity("acceleration", "acceleration", 0.0) or 0.0
     q_range = _range(d) if d.has("range") else None
-    return Drive(link=link, pivot=pair.point, omega=speed, epsilon=accel, ref_angle=0.0,
-                 ref_name=guide.name, kind=kind,
-                 carrier=pair.b if kind is DriverKind.CYLINDER else GROUND,
-                 guide=guide.name, q_range=q_range)
+    law = None
+    speed: float | None
+    if d.has("law"):        # q(t) by a table: the rates come from its spline (scene/law.py)
+        from .law import read_law
+
+        for key in ("speed", "acceleration"):
+            if d.has(key):
+                raise d.error(key, Text("drives2.law.not_both", {"key": key}))
+        law = read_law(d)
+        speed, accel = law.mean_rate(), 0.0
+        if q_range is None:
+            q_range = law.q_range
+        lo, hi = sorted(law.q_range)
+        if not all(lo <= q <= hi for q in q_range):
+            raise d.error("range", Text("drives2.law.range_outside", {
+                "lo": f"{lo * 1000:.6g}", "hi": f"{hi * 1000:.6g}"}))
+    else:
+        speed = d.quantity("speed", "velocity", required=True)
+        accel = d.quantity("acceleration", "acceleration", 0.0) or 0.0
+    assert speed is not None
+    drive = Drive(link=link, pivot=pair.point, omega=speed, epsilon=accel, ref_angle=0.0,
+                  ref_name=guide.name, kind=kind,
+                  carrier=pair.b if kind is DriverKind.CYLINDER else GROUND,
+                  guide=guide.name, q_range=q_range, law=law)
+    if first:
+        check_first_law(d, drive)
+    return drive
+
+
+def check_first_law(d: Table, drive: Drive) -> None:
+    """The first driver's law must be strictly monotonic: its coordinate names the time."""
+    if drive.law is None:
+        return
+    from ..model.law import turning_time
+
+    turn = turning_time(drive.law)
+    if turn is not None:
+        raise d.error("law", Text("drives2.law.monotonic", {"t": f"{turn:.6g}"}))
 
 
 def _check_cylinder(d: Table, rod: str, pair: Pair, guide: Guide, links: dict[str, Link],
@@ -99,8 +134,14 @@ def linear_positions(t: Table | None, drive: Drive) -> Positions:
         values = t.raw("at")
         if not isinstance(values, list) or not values:
             raise t.error("at", Text("errmsg2.scene_drivers.lengths_list"))
-        return Positions(angles=tuple(t.value_quantity(v, f"at[{i}]", "length")
-                                      for i, v in enumerate(values)))
+        at = tuple(t.value_quantity(v, f"at[{i}]", "length") for i, v in enumerate(values))
+        if drive.law is not None:       # a law by a table reaches only its own lengths
+            lo, hi = sorted(drive.law.q_range)
+            for i, q in enumerate(at):
+                if not lo <= q <= hi:
+                    raise t.error(f"at[{i}]", Text("drives2.law.range_outside", {
+                        "lo": f"{lo * 1000:.6g}", "hi": f"{hi * 1000:.6g}"}))
+        return Positions(angles=at)
     count = t.raw("count", 12)
     if not isinstance(count, int) or isinstance(count, bool) or count < 1:
         raise t.error("count", Text(

@@ -1,10 +1,15 @@
-"""Read ``[drive2]``: a second driving crank (W = 2, e.g. a five-bar with two cranks).
+"""Read ``[drive2]``: a second driver (W = 2), a crank or a cylinder.
 
-Its keys are the crank keys of ``[drive]`` (``link``, ``speed``/``omega``, ``sense``, ``from``,
-``epsilon``) and ``phase``: its angle φ2 when the first crank is at φ1 = 0. The first driver's φ1
-stays the independent variable of every plan; the second follows its law at constant speeds,
-φ2 = phase + |ω2|/|ω1|·φ1 (both measured in their own sense from their own ``from``), and its ω2,
-ε2 are given at every position like ω1, ε1 (docs/two_inputs.md).
+A second crank (five-bar with two cranks) has the crank keys of ``[drive]`` (``link``,
+``speed``/``omega``, ``sense``, ``from``, ``epsilon``) and ``phase``: its angle φ2 when the first
+crank is at φ1 = 0; it is read only with a crank as ``[drive]``. A second cylinder (crank +
+cylinder, two cylinders: an excavator's boom and arm) has the cylinder keys of ``[drive]``
+(``link``, ``speed``, ``acceleration``) and ``start``: its length when the first driver is at its
+reference (a crank's φ1 = 0, a linear driver's ``range`` start).
+
+The first driver's coordinate stays the independent variable of every plan; the second follows
+its law at constant rates, q2 = q2⁰ + (rate2/rate1)·(q1 − q1⁰) (docs/two_inputs.md,
+docs/drivers.md), and its rate and acceleration are given at every position like the first's.
 """
 
 from __future__ import annotations
@@ -12,33 +17,68 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..i18n import Text
-from ..model.mechanism import Drive, Guide, Link, Pair
+from ..model.mechanism import Drive, DriverKind, Guide, Link, Pair
 from .reader import Table
 
-#: keys of [drive2]
+#: keys of [drive2] with a second crank
 SECOND_KEYS = ("kind", "link", "speed", "omega", "sense", "from", "epsilon", "phase")
 
 
 def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
                  pairs: list[Pair], first: Drive) -> Drive | None:
-    """The second crank of ``[drive2]`` (None without the table)."""
+    """The second driver of ``[drive2]`` (None without the table)."""
     d = top.table("drive2")
     if d is None:
         return None
-    d.check_keys(SECOND_KEYS)
-    d.string("kind", "crank", choices=("crank",))
-    if first.linear:
-        raise d.error("link", Text(
-            "errmsg2.scene_second_driver.crank_first",
-            {"kind": first.kind.value}))
-    from .loader import crank_drive
+    kind = d.string("kind", "crank", choices=("crank", "cylinder"))
+    if kind == "cylinder":
+        drive = _second_cylinder(d, links, guides, pairs, first)
+    else:
+        d.check_keys(SECOND_KEYS)
+        if first.linear:
+            raise d.error("link", Text(
+                "drives2.scene.crank_after_linear",
+                {"kind": first.kind.value, "link": first.link}))
+        from .loader import crank_drive
 
-    drive = crank_drive(d, links, guides, pairs)
+        drive = crank_drive(d, links, guides, pairs)
+        drive = replace(drive, phase=d.quantity("phase", "angle", 0.0) or 0.0)
     if drive.link == first.link:
         raise d.error("link", Text(
             "errmsg2.scene_second_driver.already_first",
             {"link": drive.link}))
-    phase = d.quantity("phase", "angle", 0.0) or 0.0
     # [centres] is read: Kennedy's theorem finds the centres it can, the velocities by centres
-    # start from both cranks and name the links they do not reach
-    return replace(drive, phase=phase)
+    # start from the cranks and name the links they do not reach
+    return drive
+
+
+def _second_cylinder(d: Table, links: dict[str, Link], guides: dict[str, Guide],
+                     pairs: list[Pair], first: Drive) -> Drive:
+    """A second cylinder: its rod, law and ``start`` (its length at the first's reference)."""
+    from .drivers import linear_drive
+
+    drive = linear_drive(d, DriverKind.CYLINDER, links, guides, pairs, extra_keys=("start",),
+                         first=False)
+    if drive.link == first.link or (first.kind is DriverKind.CYLINDER
+                                    and drive.carrier == first.carrier):
+        raise d.error("link", Text(
+            "errmsg2.scene_second_driver.already_first",
+            {"link": drive.link}))
+    if drive.law is not None:       # its law by a table: its length is the table's at each time
+        if d.has("start"):
+            raise d.error("start", Text("drives2.law.not_both", {"key": "start"}))
+        if first.law is None and first.omega == 0.0:
+            raise d.error("law", Text("drives2.scene.first_at_rest", {"link": first.link}))
+        if first.linear and first.q_range is None:
+            raise d.error("law", Text(
+                "drives2.scene.first_range", {"kind": first.kind.value, "link": first.link}))
+        return drive
+    start = d.quantity("start", "length", required=True, positive=True)
+    assert start is not None
+    if first.linear and first.q_range is None:
+        raise d.error("start", Text(
+            "drives2.scene.first_range",
+            {"kind": first.kind.value, "link": first.link}))
+    if first.omega == 0.0:
+        raise d.error("start", Text("drives2.scene.first_at_rest", {"link": first.link}))
+    return replace(drive, phase=start)

@@ -11,43 +11,18 @@ Nothing here computes mechanics beyond reading the evaluated construction.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from ..drafting.primitives import Primitive, Role, Table, Text
 from ..i18n import message, number
-from ..model.mechanism import GROUND, Mechanism, PairKind
+from ..model.output import Output, output_link
 from ..solve import Solution
 from .diagram import Axis, Curve, diagram_panel
 from .panels import TABLE_H, TITLE_H, Panel
 from .scales import Room
 
 SWEEP = 361            # samples of an exact curve over one turn
-
-
-@dataclass(frozen=True)
-class Output:
-    """The output link of a diagram: a slider on a frame guide or a link turning about the frame."""
-
-    link: str
-    point: str | None              # the slider's point, None for a rocker
-    direction: tuple[float, float]  # the guide's direction (slider)
-
-
-def output_link(mech: Mechanism) -> Output | None:
-    """The last link of the chain that slides on a frame guide or turns about a frame pivot."""
-    found: Output | None = None
-    for lk in mech.links.values():
-        if lk.id in (GROUND, *(d.link for d in mech.drivers)):     # W = 2: both cranks
-            continue
-        if lk.slides_on and mech.guides[lk.slides_on].link == GROUND:
-            g = mech.guides[lk.slides_on]
-            found = Output(lk.id, next(iter(lk.points)), (math.cos(g.angle), math.sin(g.angle)))
-        elif any(p.kind is PairKind.REVOLUTE and GROUND in (p.a, p.b)
-                 for p in mech.pairs_of(lk.id)):
-            found = Output(lk.id, None, (1.0, 0.0))
-    return found
 
 
 def _series(sol: Solution, out: Output, phi: np.ndarray) -> dict[str, np.ndarray]:
@@ -80,8 +55,10 @@ def chords(x: np.ndarray, y: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndar
 def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     """s(φ), v(φ), a(φ) of the output link: exact curves and the graphical differentiation."""
     out = output_link(sol.scene.mechanism)
-    if out is None or sol.scene.mechanism.drive.linear:   # diagrams over φ: a crank's turn
+    if out is None:
         return []
+    if sol.scene.mechanism.drive.linear:    # over the driver's range, not a crank's turn
+        return _linear_diagrams(sol, out, lang, r)
     omega = abs(sol.scene.mechanism.drive.omega)
     sweep_positions = not sol.scene.positions.angles and sol.positions >= 4
     phi0 = float(sol.phi[0]) if sweep_positions else 0.0
@@ -108,7 +85,6 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     # which line is which, over the diagrams: "—— exact   – – – graphical differentiation"
     legend = (f"—— {message('layout.diagram.exact', lang)}   – – – "
               f"{message('layout.diagram.graphical', lang)}")
-    panels: list[Panel] = []
     specs = [("displacement", symbols[0], units[0],
               [Curve(x, s_exact), Curve(x_k, s_pos, label=None)])]
     if "v" in exact:
@@ -118,12 +94,20 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
             xa, a_graph = chords(xv, v_graph, dt)
             specs.append(("acceleration", symbols[2], units[2],
                           [Curve(x, exact["a"]), Curve(xa, a_graph, role=Role.DASHED)]))
+    return _stacked(specs, out, x_axis, length_y, "φ", legend, lang, r)
+
+
+def _stacked(specs: list[tuple[str, str, str, list[Curve]]], out: Output, x_axis: Axis,
+             length_y: float, x_symbol: str, legend: str, lang: str, r: Room) -> list[Panel]:
+    """The diagrams one under the other on the same x axis, as the course draws them."""
+    panels: list[Panel] = []
     for kind, sym, unit, curves in specs:
-        title = message(f"layout.diagram.{kind}", lang, symbol=sym, link=out.link)
-        d = diagram_panel(f"diagram-{kind}", title,
-                          curves, x_axis, Axis(sym, unit, length_y, mu_symbol=f"μ{sym}(φ)"), lang)
+        title = (message(f"layout.diagram.{kind}", lang, symbol=sym, link=out.link)
+                 if x_symbol == "φ" else     # over a linear driver's length
+                 message(f"drives2.diagram.{kind}", lang, symbol=sym, x=x_symbol, link=out.link))
+        d = diagram_panel(f"diagram-{kind}", title, curves, x_axis,
+                          Axis(sym, unit, length_y, mu_symbol=f"μ{sym}({x_symbol})"), lang)
         panels.append(d.panel)
-    # one under the other on the same φ axis, as the course draws them
     width = max(p.bounds()[2] - p.bounds()[0] for p in panels)
     stacks = grid("diagram-kinematic", panels, width, r.height - 8.0, same_origin=True)
     if len(specs) > 1:
@@ -131,6 +115,49 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
             x0, _y0, _x1, y1 = stack.bounds()
             stack.primitives.append(Text((x0, y1 + 3.0), legend, TABLE_H))
     return stacks
+
+
+def _linear_diagrams(sol: Solution, out: Output, lang: str, r: Room) -> list[Panel]:
+    """s(t), v(t), a(t) of the output link over a linear driver's range, against the law's time
+    (constant rate: t = (q − q⁰)/q̇; a table: its spline inverted): the exact curves, and the
+    graphical differentiation by chords over the positions."""
+    from ..model.law import driver_time
+
+    drive = sol.scene.mechanism.drive
+    if drive.q_range is None or drive.omega == 0:
+        return []
+    lo, hi = drive.q_range
+    sweep_positions = not sol.scene.positions.angles and sol.positions >= 4
+    n = sol.positions - 1 if sweep_positions and sol.positions <= 73 else 12
+    q = np.linspace(lo, hi, SWEEP)
+    exact = _series(sol, out, q)
+    if "s" not in exact:
+        return []
+    q_k = np.linspace(lo, hi, n + 1)
+    s_k = _series(sol, out, q_k)["s"]
+    x, x_k = driver_time(drive, q), driver_time(drive, q_k)
+    shift = float(np.nanmin(exact["s"]))
+    rocker = out.point is None
+    conv = math.degrees(1.0) if rocker else 1.0
+    symbols = ("ψ", "ω", "ε") if rocker else ("s", "v", "a")
+    units = ("°", "rad/s", "rad/s²") if rocker else ("m", "m/s", "m/s²")
+    x_axis = Axis("t", "s", min(160.0, 0.36 * r.width))
+    specs = [("displacement", symbols[0], units[0],
+              [Curve(x, (exact["s"] - shift) * conv), Curve(x_k, (s_k - shift) * conv)])]
+    if "v" in exact:
+        # a chord's slope Δs/Δt at the middle of its interval
+        xv = 0.5 * (x_k[1:] + x_k[:-1])
+        v_graph = np.diff(s_k) / np.diff(x_k)
+        specs.append(("velocity", symbols[1], units[1],
+                      [Curve(x, exact["v"]), Curve(xv, v_graph, role=Role.DASHED)]))
+        if "a" in exact:
+            specs.append(("acceleration", symbols[2], units[2],
+                          [Curve(x, exact["a"]),
+                           Curve(0.5 * (xv[1:] + xv[:-1]), np.diff(v_graph) / np.diff(xv),
+                                 role=Role.DASHED)]))
+    legend = (f"—— {message('layout.diagram.exact', lang)}   – – – "
+              f"{message('layout.diagram.graphical', lang)}")
+    return _stacked(specs, out, x_axis, min(28.0, 0.1 * r.height), "t", legend, lang, r)
 
 
 def balancing_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:

@@ -62,9 +62,10 @@ def zhukovsky_lever(
         if term.kind == "F":
             forces.append((turned(ev[term.first][k]), ev[term.second][k], c[term.second].label))
         else:
+            label = c[term.first].label      # a couple, or a second cylinder's F_d (W = 2)
             couples.append(
-                f"{c[term.first].label} = {format_number(float(ev[term.first][k]), 2, lang)} "
-                f"{unit('N·m', lang)}"
+                f"{label} = {format_number(float(ev[term.first][k]), 2, lang)} "
+                f"{unit('N' if label.startswith('F_d') else 'N·m', lang)}"
             )
     largest = max((float(np.hypot(*f)) for _, f, _ in forces), default=0.0)
     if largest > 0:

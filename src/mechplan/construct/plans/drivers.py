@@ -18,9 +18,10 @@ barrel's pivot, the rod extending by l̇ moves K away from E: the rates are laid
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from ...i18n import Text
-from ...model.mechanism import GROUND, DriverKind
+from ...model.mechanism import GROUND, Drive, DriverKind
 from ...model.plans import Plan
 from ...model.structure import Group, GroupKind
 from ..builder import Builder, alabel, vlabel
@@ -33,10 +34,39 @@ from . import acceleration, images, position, velocity
 P, V, A = Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION
 
 
+@dataclass(frozen=True, slots=True)
+class Cylinder:
+    """A driving cylinder: its barrel, rod, driver and the suffix of its steps ("" or "2")."""
+
+    barrel: str
+    rod: str
+    drive: Drive
+    tag: str
+
+    @property
+    def group(self) -> str:
+        """Its first-class mechanism in the structure formula, ``I(barrel,rod)``."""
+        return f"I({self.barrel},{self.rod})"
+
+
+def cylinders(b: Builder) -> list[Cylinder]:
+    """The driving cylinders: the first driver's and (W = 2) the second's."""
+    out = []
+    if b.structure.cylinder is not None:
+        out.append(Cylinder(*b.structure.cylinder, b.mech.drive, ""))
+    if b.structure.cylinder2 is not None and b.mech.drive2 is not None:
+        out.append(Cylinder(*b.structure.cylinder2, b.mech.drive2, "2"))
+    return out
+
+
+def cylinder_of(b: Builder, g: Group) -> Cylinder | None:
+    """The driving cylinder that closes a group (None for a usual dyad)."""
+    return next((c for c in cylinders(b) if c.barrel in g.links), None)
+
+
 def cylinder_in(b: Builder, g: Group) -> bool:
-    """Tell whether a group is closed by the cylinder driver."""
-    cyl = b.structure.cylinder
-    return cyl is not None and cyl[0] in g.links
+    """Tell whether a group is closed by a cylinder driver."""
+    return cylinder_of(b, g) is not None
 
 
 def first_group(b: Builder) -> str:
@@ -47,9 +77,9 @@ def first_group(b: Builder) -> str:
 
 def _sides(b: Builder, g: Group) -> tuple[str, str, str, str, str]:
     """(partner link, its outer point P1, the cylinder's known end E, the inner point K, barrel)."""
-    cyl = b.structure.cylinder
+    cyl = cylinder_of(b, g)
     assert cyl is not None
-    barrel = cyl[0]
+    barrel = cyl.barrel
     if g.kind is not GroupKind.RRR:
         raise _unsupported(b, g)
     if g.links[1] == barrel:
@@ -60,12 +90,12 @@ def _sides(b: Builder, g: Group) -> tuple[str, str, str, str, str]:
 def _unsupported(b: Builder, g: Group) -> Exception:
     from ...errors import TopologyError
 
-    cyl = b.structure.cylinder
+    cyl = cylinder_of(b, g)
     assert cyl is not None
     return TopologyError(Text(
         "errmsg2.plans.cylinder_group",
-        {"barrel": cyl[0], "rod": cyl[1], "group": g.name, "kind": g.kind.value}),
-                         key="drive.link")
+        {"barrel": cyl.barrel, "rod": cyl.rod, "group": g.name, "kind": g.kind.value}),
+                         key="drive.link" if not cyl.tag else "drive2.link")
 
 
 # -- the driver itself ----------------------------------------------------------------------------
@@ -96,6 +126,11 @@ def _rate(b: Builder, plan: Plan) -> str:
     symbol = ("l" if drive.kind is DriverKind.CYLINDER else "s") + dot
     value = drive.omega if plan is V else drive.epsilon
     prefix = "vel" if plan is V else "acc"
+    if drive.law is not None:       # by a table over time: its spline at the position's time
+        from .laws import law_step
+
+        return law_step(b, f"{prefix}.rate", drive, 1 if plan is V else 2, plan,
+                        f"{symbol}{drive.link}", first_group(b))
     return b.add(f"{prefix}.rate", Op.DRIVER_RATE, (), plan, Kind.SCALAR, Role.GIVEN,
                  f"{symbol}{drive.link}", first_group(b), value=value)
 
@@ -134,17 +169,18 @@ def position_group(b: Builder, g: Group) -> None:
     if not cylinder_in(b, g):
         position.emit_group(b, g)
         return
+    cyl = cylinder_of(b, g)
+    assert cyl is not None
     partner, p1, e, k, barrel = _sides(b, g)
-    rod = b.mech.drive.link
+    rod, drive = cyl.rod, cyl.drive
     r1 = b.mech.links[partner].distance(p1, k)
-    sid = b.add(f"pos.{k}", Op.CIRCLE_CIRCLE_DRIVEN, (b.pos[p1], b.pos[e], "pos.q"), P,
+    sid = b.add(f"pos.{k}", Op.CIRCLE_CIRCLE_DRIVEN, (b.pos[p1], b.pos[e], f"pos.q{cyl.tag}"), P,
                 Kind.POINT, Role.RESULT, k, g.name, subject=(p1, e, k), r1=r1, sigma=1)
     b.pos[k] = sid
     b.resolve_branch(sid, k, g.name, sid)
     b.bodies[partner].anchor = p1
     _angle_of(b, partner, p1, k, g.name)
     # the barrel's axis runs from its pivot to the rod's pin along its guide
-    drive = b.mech.drive
     assert drive.guide is not None
     guide = b.mech.guides[drive.guide]
     pivot, pin = guide.through, drive.pivot
@@ -175,9 +211,11 @@ def velocity_group(b: Builder, g: Group) -> None:
     if not cylinder_in(b, g):
         velocity.emit_group(b, g)
         return
+    cyl = cylinder_of(b, g)
+    assert cyl is not None
     partner, p1, e, k, barrel = _sides(b, g)
-    rod = b.mech.drive.link
-    rate = "vel.rate"
+    rod = cyl.rod
+    rate = f"vel.rate{cyl.tag}"
     rel = b.add(f"vel.r.{k}{e}", Op.SLIDE_VECTOR, (b.vel[e], rate, b.pos[e], b.pos[k]), V,
                 Kind.POINT, Role.AUXILIARY, f"r_{k}{e}", g.name,
                 subject=(b.c[b.vel[e]].label, e, k))
@@ -207,12 +245,14 @@ def acceleration_group(b: Builder, g: Group) -> None:
     if not cylinder_in(b, g):
         acceleration.emit_group(b, g)
         return
+    cyl = cylinder_of(b, g)
+    assert cyl is not None
     partner, p1, e, k, barrel = _sides(b, g)
-    rod = b.mech.drive.link
+    rod, rate = cyl.rod, f"acc.rate{cyl.tag}"
     n1 = acceleration._normal(b, b.acc[p1], partner, p1, k, k, g.name)
     nc = acceleration._normal(b, b.acc[e], barrel, e, k, k, g.name)
     kor = acceleration._coriolis(b, nc, barrel, b.vel[e], f"vel.r.{k}{e}", f"{k}{e}", g.name)
-    rel = b.add(f"acc.r.{k}{e}", Op.SLIDE_VECTOR, (kor, "acc.rate", b.pos[e], b.pos[k]), A,
+    rel = b.add(f"acc.r.{k}{e}", Op.SLIDE_VECTOR, (kor, rate, b.pos[e], b.pos[k]), A,
                 Kind.POINT, Role.AUXILIARY, f"r_{k}{e}", g.name,
                 subject=(b.c[kor].label, e, k))
     b.segment(A, kor, rel, f"{b.c[kor].label}r_{k}{e}", f"a^r_{k}{rod}{k}{barrel}",
@@ -231,7 +271,7 @@ def acceleration_group(b: Builder, g: Group) -> None:
         f"= a_{p1} + a^n_{k}{p1} + a^t_{k}{p1}"),
         [(f"a_{e}", GIVEN, "✓"), (f"a^n_{k}{e}", from_to(k, e), f"ω{barrel}²·l_{e}{k}"),
          (f"a^k_{k}{e}", perp(f"{e}{k}"), f"2ω{barrel}·v_{k}{rod}{k}{barrel}"),
-         (f"a^r_{k}{e}", parallel(f"{e}{k}"), b.c["acc.rate"].label),
+         (f"a^r_{k}{e}", parallel(f"{e}{k}"), b.c[rate].label),
          (f"a^t_{k}{e}", perp(f"{e}{k}"), "?"), (f"a_{p1}", GIVEN, "✓"),
          (f"a^n_{k}{p1}", from_to(k, p1), f"ω{partner}²·l_{p1}{k}"),
          (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?")])

@@ -68,14 +68,16 @@ def emit(b: Builder) -> None:
             continue
         {GroupKind.RRR: _rrr, GroupKind.RRP: _rrp, GroupKind.RPR: _rpr, GroupKind.PRP: _prp,
          GroupKind.RPP: _rpp}[g.kind](st, g)
+    second = None
+    drive2 = b.mech.drive2
+    if drive2 is not None:      # W = 2: the second driver's own equilibrium first
+        second = (b.c.results[f"F_d{drive2.link}"] if drive2.linear
+                  else _driving_link(st, second=True))
     if b.mech.drive.linear:
         if b.mech.drive.kind.value == "slider":
             force_drivers.slider_driver(st)
-        force_drivers.lever(st)
+        force_drivers.lever(st, second)
         return
-    second = None
-    if b.mech.drive2 is not None:       # W = 2: the second crank's own equilibrium first
-        second = _driving_link(st, second=True)
     _driving_link(st)
     _lever(st, second)
 
@@ -409,6 +411,18 @@ def lever_loads(st: State) -> tuple[list[str], str, list[str]]:
     return inputs, layout, labels
 
 
+def second_on_lever(st: State, second: str | None, inputs: list[str], layout: str,
+                    labels: list[str]) -> tuple[list[str], str, list[str]]:
+    """The second driver's known load as one more term of the lever (W = 2): a crank's M_b by its
+    ω (``M``: −M·ω), a cylinder's F_d by its l̇ (its power F_d·l̇, the same form)."""
+    drive2 = st.b.mech.drive2
+    if second is None or drive2 is None:
+        return inputs, layout, labels
+    rate = "vel.rate2" if drive2.linear else st.b.bodies[drive2.link].omega
+    assert rate is not None
+    return [*inputs, second, rate], layout + "M", [*labels, st.label(second)]
+
+
 def _lever(st: State, second: str | None = None) -> None:
     """Zhukovsky's lever: every load at its velocity image turned by 90°, moments about p.
 
@@ -421,13 +435,7 @@ def _lever(st: State, second: str | None = None) -> None:
     assert omega1 is not None
     loads, layout, labels = lever_loads(st)
     inputs: list[str] = [omega1, *loads]
-    drive2 = b.mech.drive2
-    if second is not None and drive2 is not None:
-        omega2 = b.bodies[drive2.link].omega
-        assert omega2 is not None
-        inputs += [second, omega2]
-        layout += "M"
-        labels.append(st.label(second))
+    inputs, layout, labels = second_on_lever(st, second, inputs, layout, labels)
     sid = st.add("force.M_b.zhukovsky", Op.ZHUKOVSKY, tuple(inputs), Kind.SCALAR, Role.RESULT,
                  "M_b", "lever", subject=tuple(labels), layout=layout)
     b.result("M_b_zhukovsky", sid)

@@ -22,15 +22,17 @@ from ..step import Kind, Role
 from ..terms import UNKNOWN, parallel
 from ..terms import perp as perp_to
 from . import force as fp
-from .drivers import _sides, first_group
+from .drivers import _sides, cylinder_of, first_group
 from .force_loads import State, Term
 
 
 def cylinder_group(st: State, g: Group) -> None:
     """The group closed by the cylinder, then the rod's polygon and the driving force."""
     b, gn = st.b, g.name
+    cyl = cylinder_of(b, g)
+    assert cyl is not None
     partner, p1, e, k, barrel = _sides(b, g)
-    rod = b.mech.drive.link
+    rod = cyl.rod
     rod_loads = list(st.terms[rod])             # before the reactions are passed to it
     pairs = {p.point: p for p in (g.outer1, g.inner, g.outer2)}
     outer_p, outer_e, inner = pairs[p1], pairs[e], pairs[k]
@@ -70,24 +72,27 @@ def cylinder_group(st: State, g: Group) -> None:
     drive_pair = next(p for p in b.mech.pairs if p.kind is PairKind.PRISMATIC and p.a == rod
                       and p.b == barrel)
     pivot = b.mech.guides[drive_pair.guide or ""].through      # the barrel's pivot
-    _driver_polygon(st, first_group(b), rod, barrel, drive_pair,
+    _driver_polygon(st, cyl.group, rod, barrel, drive_pair,
                     [*rod_loads, Term(st.label(pin_force), pin_force, b.pos[pin])],
-                    (b.pos[pivot], b.pos[drive_pair.point]))
+                    (b.pos[pivot], b.pos[drive_pair.point]), second=bool(cyl.tag))
 
 
 def _driver_polygon(st: State, gn: str, link: str, carrier: str, pair: Pair, terms: list[Term],
-                    axis: tuple[str, ...], **params: float) -> None:
+                    axis: tuple[str, ...], second: bool = False, **params: float) -> None:
     """The driven link's polygon, closed by the force of ``carrier`` on it, split into the
-    driving force along ``axis`` and the pair's reaction ⊥ it (with its couple)."""
+    driving force along ``axis`` and the pair's reaction ⊥ it (with its couple).
+
+    ``second``: the second driver's cylinder (W = 2): its force is the result ``F_d<rod>``."""
     b = st.b
     o = fp._pole(st, gn)
     end = fp._chain(st, gn, o, terms)
     whole = fp._between(st, gn, end, o, f"F_{fp.pair_key(carrier, link)}", "Fwhole",
                         Role.AUXILIARY)
-    symbol = "l" if b.mech.drive.kind is DriverKind.CYLINDER else "s"
-    fd = st.add("force.F_d", Op.DRIVING_FORCE, (whole, *axis), Kind.SCALAR, Role.RESULT, "F_d",
+    symbol = "l" if second or b.mech.drive.kind is DriverKind.CYLINDER else "s"
+    sid, label = (f"force.F_d.{link}", f"F_d{link}") if second else ("force.F_d", "F_d")
+    fd = st.add(sid, Op.DRIVING_FORCE, (whole, *axis), Kind.SCALAR, Role.RESULT, label,
                 gn, subject=(st.label(whole), f"{symbol}{link}"), **params)
-    b.result("F_d", fd)
+    b.result(label, fd)
     normal = st.add(f"force.{gn}.Rn", Op.NORMAL_FORCE, (whole, *axis), Kind.POINT, Role.RESULT,
                     f"R_{fp.pair_key(carrier, link)}", gn,
                     subject=(st.label(whole), f"{symbol}{link}"), **params)
@@ -107,10 +112,13 @@ def slider_driver(st: State) -> None:
                     dir_angle=guide.angle)
 
 
-def lever(st: State) -> None:
-    """Zhukovsky's lever for a linear driver: F_d = −ΣP / q̇ (the loads at their images)."""
+def lever(st: State, second: str | None = None) -> None:
+    """Zhukovsky's lever for a linear driver: F_d = −ΣP / q̇ (the loads at their images).
+
+    ``second``: the second driver's M_b or F_d (W = 2), one more term of the power balance."""
     b = st.b
     loads, layout, labels = fp.lever_loads(st)
+    loads, layout, labels = fp.second_on_lever(st, second, loads, layout, labels)
     inputs: list[str] = ["vel.rate", *loads]
     sid = st.add("force.F_d.zhukovsky", Op.ZHUKOVSKY, tuple(inputs), Kind.SCALAR, Role.RESULT,
                  "F_d", "lever", subject=tuple(labels), layout=layout)

@@ -78,6 +78,9 @@ def group_of(b: Builder, link: str) -> str:
     for g in b.structure.groups:
         if link in g.links:
             return g.name
+    for cyl in (b.structure.cylinder, b.structure.cylinder2):      # a cylinder's rod
+        if cyl is not None and link == cyl[1]:
+            return f"I({cyl[0]},{cyl[1]})"
     if b.mech.drive2 is not None and link == b.mech.drive2.link:    # W = 2: the second crank
         return f"I({GROUND},{link})"
     return f"I({GROUND},{b.mech.drive.link})"

@@ -1,4 +1,9 @@
-"""The second driving crank of a mechanism with W = 2 (``[drive2]``): its first-class mechanism.
+"""The second driver of a mechanism with W = 2 (``[drive2]``): its first-class mechanism.
+
+A second cylinder (crank + cylinder, two cylinders) is a coordinate only: its length l2 follows
+the first driver's coordinate by its law (``SECOND_DRIVER_LENGTH``), its rates l̇2, l̈2 are given
+(``DRIVER_RATE``, steps ``pos.q2``, ``vel.rate2``, ``acc.rate2``); the group it closes is then
+built like the first cylinder's (``plans/drivers.py``). A second crank:
 
 Built after the first crank and before the groups, as the course does with I(0,1), I(0,4) →
 II(2,3): its angle θ2 follows the common parameter by its law (``SECOND_CRANK_ANGLE``), its points
@@ -32,12 +37,64 @@ def _tip(b: Builder, drive: Drive) -> str:
 
 
 def law(first: Drive, second: Drive) -> tuple[float, float]:
-    """(offset, ratio) of θ2 = offset + ratio·θ1 from φ2 = phase + |ω2|/|ω1|·φ1."""
-    speed = abs(second.omega) / abs(first.omega)
-    ratio = second.sense * speed * first.sense
-    offset = second.ref_angle + second.sense * (second.phase - speed * first.sense
-                                                 * first.ref_angle)
+    """(offset, ratio) of the second driver's step value = offset + ratio·(the first's step value).
+
+    The first's step value x is θ1 (a crank, rad) or q1 (a linear driver, m); its progress
+    u1 = s1·(θ1 − ref1) or q1 − q1⁰ (the range's start) at its rate r1 = |ω1| or q̇1, so at
+    constant rates the time from the reference is u1/r1. The second's coordinate there is
+    φ2 = phase + |ω2|·t (a crank: θ2 = ref2 + s2·φ2) or l2 = start + l̇2·t (a cylinder).
+    """
+    if first.linear:
+        rate1, sense1 = first.omega, 1.0
+        ref1 = first.q_range[0] if first.q_range is not None else 0.0
+    else:
+        rate1, sense1, ref1 = abs(first.omega), float(first.sense), first.ref_angle
+    if second.linear:
+        k = second.omega / rate1
+        return second.phase - k * sense1 * ref1, k * sense1
+    speed = abs(second.omega) / rate1
+    ratio = second.sense * speed * sense1
+    offset = second.ref_angle + second.sense * (second.phase - speed * sense1 * ref1)
     return offset, ratio
+
+
+def _first_step(b: Builder) -> str:
+    return "pos.q" if b.mech.drive.linear else "pos.phi1"
+
+
+def _linear_group(b: Builder) -> str:
+    cyl = b.structure.cylinder2
+    assert cyl is not None
+    return f"I({cyl[0]},{cyl[1]})"
+
+
+def _emit_linear(b: Builder, plan: Plan) -> None:
+    """A second cylinder: its length by its law, or its given rate l̇2 / l̈2."""
+    drive = b.mech.drive2
+    assert drive is not None
+    group = _linear_group(b)
+    from .laws import by_table, law_step
+
+    if plan is P:
+        b.c.second_driver = drive.link
+        if by_table(b):     # a law by a table: the length at the position's time
+            sid = law_step(b, "pos.q2", drive, 0, P, f"l{drive.link}", group)
+        else:
+            offset, ratio = law(b.mech.drive, drive)
+            sid = b.add("pos.q2", Op.SECOND_DRIVER_LENGTH, (_first_step(b),), P, Kind.SCALAR,
+                        Role.GIVEN, f"l{drive.link}", group,
+                        subject=(b.mech.drive.link, drive.link), offset=offset, ratio=ratio)
+        b.result(f"q_{drive.link}", sid)
+        return
+    dot = "̇" if plan is V else "̈"
+    value = drive.omega if plan is V else drive.epsilon
+    prefix = "vel" if plan is V else "acc"
+    if drive.law is not None:
+        law_step(b, f"{prefix}.rate2", drive, 1 if plan is V else 2, plan,
+                 f"l{dot}{drive.link}", group)
+        return
+    b.add(f"{prefix}.rate2", Op.DRIVER_RATE, (), plan, Kind.SCALAR, Role.GIVEN,
+          f"l{dot}{drive.link}", group, value=value)
 
 
 def emit_position(b: Builder) -> None:
@@ -45,13 +102,16 @@ def emit_position(b: Builder) -> None:
     drive = b.mech.drive2
     if drive is None:
         return
+    if drive.linear:
+        _emit_linear(b, P)
+        return
     group = group_name(drive)
     b.c.second_driver = drive.link
     offset, ratio = law(b.mech.drive, drive)
     crank = b.mech.links[drive.link]
     pivot = drive.pivot
     tip = _tip(b, drive)
-    theta = b.add(f"pos.phi.{drive.link}", Op.SECOND_CRANK_ANGLE, ("pos.phi1",), P, Kind.SCALAR,
+    theta = b.add(f"pos.phi.{drive.link}", Op.SECOND_CRANK_ANGLE, (_first_step(b),), P, Kind.SCALAR,
                   Role.GIVEN, f"θ{drive.link}", group, subject=(b.mech.drive.link, drive.link),
                   offset=offset, ratio=ratio)
     base = _local_angle(b, drive.link, pivot, tip)
@@ -77,6 +137,9 @@ def emit_velocity(b: Builder) -> None:
     drive = b.mech.drive2
     if drive is None:
         return
+    if drive.linear:
+        _emit_linear(b, V)
+        return
     group, tip = group_name(drive), _tip(b, drive)
     body = b.bodies[drive.link]
     body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR, Role.GIVEN,
@@ -96,6 +159,9 @@ def emit_acceleration(b: Builder) -> None:
     """ε2 (given by its law) and the image of its pin: normal and tangential parts."""
     drive = b.mech.drive2
     if drive is None:
+        return
+    if drive.linear:
+        _emit_linear(b, A)
         return
     group, tip = group_name(drive), _tip(b, drive)
     body = b.bodies[drive.link]
