@@ -266,7 +266,7 @@ class _Propagator:
             with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
                 return (np.maximum(self.rel[pair[0]], self.rel[pair[1]]) + u) / \
                     self.distance(*pair)
-        out = np.full(self.ev.n, u, self.dtype)
+        out: Array = np.full(self.ev.n, u, self.dtype)
         for i in dict.fromkeys(step.inputs):
             kind = self.c[i].kind
             if kind is Kind.LINE:
