@@ -264,8 +264,9 @@ class _Propagator:
         pair = step.op.lever_of(step)
         if pair is not None:
             with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-                return (np.maximum(self.rel[pair[0]], self.rel[pair[1]]) + u) / \
+                turn: Array = (np.maximum(self.rel[pair[0]], self.rel[pair[1]]) + u) / \
                     self.distance(*pair)
+            return turn
         out: Array = np.full(self.ev.n, u, self.dtype)
         for i in dict.fromkeys(step.inputs):
             kind = self.c[i].kind
