@@ -81,8 +81,6 @@ def test_near_a_crank_driven_toggle_the_position_is_within_its_estimate(offset):
     assert abs(float(sol.ev[sol.construction.omega("3")][0])) > 0.1 / math.sqrt(offset)
 
 
-@pytest.mark.xfail(strict=True, reason="near a crank-driven toggle the rates' estimates grow "
-                   "slower than their 1/sine² errors (see the module docstring)")
 def test_near_a_crank_driven_toggle_the_rates_are_within_their_estimates():
     for offset in OFFSETS:
         sol, exact = _solve(offset)

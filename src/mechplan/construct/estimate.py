@@ -4,14 +4,18 @@ Every step gets an absolute error bound (in the step's own units) propagated to 
 its inputs' bounds and its own rounding: a meet of two loci divides the error of the loci by the
 sine of their crossing angle (its condition number), a direction taken from two points divides the
 points' error by their distance, a similarity image by the length of the side it is built on, a
-division by a length by that length. Near a toggle the position plan's error grows like 1/sin, the
-velocity plan's — built on directions taken from the position plan and met at the same angle —
-like 1/sin², the acceleration plan's like 1/sin³, which is how the true errors grow.
+division by a length by that length. A line also carries its direction's error (rad) apart from its
+point's: a meet of two lines that lies far from the lines' points (a velocity plan's meet near a
+toggle, |v| ∝ 1/sin) moves by that distance times the angle, so its bound is at least the lines'
+direction error × its distance over the plan's size ÷ the sine. Near a toggle the position plan's
+error grows like 1/sin, the velocity plan's — built on directions taken from the position plan and
+met at the same angle — like 1/sin², the acceleration plan's like 1/sin³, which is how the true
+errors grow.
 
 The relative error of a quantity is its bound divided by the quantity's scale: the size of its plan
-(the largest vector drawn on it over the positions evaluated; for a link's ω or ε that size over the
-mechanism's length), so a vector that passes through zero (v_C at a dead centre) keeps a finite,
-meaningful relative error.
+(the largest vector drawn on it over the positions evaluated; for a link's ω or ε that size over
+the mechanism's length), so a vector that passes through zero (v_C at a dead centre) keeps a
+finite, meaningful relative error.
 """
 
 from __future__ import annotations
@@ -218,6 +222,9 @@ class _Propagator:
         self.plan_size = plan_sizes(c, ev)
         self.length = self.plan_size[Plan.POSITION]
         self._distances: dict[tuple[str, str], Array] = {}
+        self._reach: dict[str, Array] = {}
+        #: a line's direction error (rad) apart from its point's: what a far meet multiplies
+        self.turn: dict[str, Array] = {}
 
     def scale_of(self, step: Step) -> float:
         """The size a step's error is measured against."""
@@ -231,6 +238,43 @@ class _Propagator:
             length /= self.length
             self._distances[key] = length.astype(self.dtype)
         return self._distances[key]
+
+    def reach(self, step: Step) -> Array | None:
+        """How far a meet of two lines lies from the lines' points, over its plan's size, at
+        least 1 (None: not a meet of lines, or a plan with no size)."""
+        if step.op is not Op.LINE_LINE:
+            return None
+        size = self.plan_size.get(step.plan, 0.0)
+        if not size > 0.0:
+            return None
+        if step.id not in self._reach:
+            meet = self.ev.values[step.id]
+            far = np.ones(self.ev.n)
+            for key in ("line1", "line2"):
+                base = self.ev.values[step.input(key)][..., 0, :]
+                with np.errstate(invalid="ignore"):
+                    far = np.fmax(far, norm(meet - base) / size)
+            with np.errstate(over="ignore"):
+                self._reach[step.id] = far.astype(self.dtype)
+        return self._reach[step.id]
+
+    def _turn_of(self, step: Step, u: Array) -> Array:
+        """A line's direction error (rad): from the two points of its lever (their bound over
+        their distance), else from its input lines' directions and its angles."""
+        pair = step.op.lever_of(step)
+        if pair is not None:
+            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+                turn: Array = (np.maximum(self.rel[pair[0]], self.rel[pair[1]]) + u) / \
+                    self.distance(*pair)
+            return turn
+        out: Array = np.full(self.ev.n, u, self.dtype)
+        for i in dict.fromkeys(step.inputs):
+            kind = self.c[i].kind
+            if kind is Kind.LINE:
+                np.maximum(out, self.turn[i] + u, out=out)
+            elif kind is not Kind.POINT:
+                np.maximum(out, self.rel[i] + u, out=out)
+        return out
 
     def run(self, ids: Iterable[str], targets: frozenset[str]) -> ErrorEstimate:
         """The estimate of the evaluated ``ids``: scales and results now, bounds when needed.
@@ -261,6 +305,9 @@ class _Propagator:
                 sine = self.ev.sines.get(sid)
                 if sine is not None:
                     divisors.append(sine)
+                reach = self.reach(step)
+                if reach is not None:
+                    divisors.append(1.0 / reach)
                 for d in divisors:
                     np.minimum(d, 1.0, out=clipped)
                     product *= clipped
@@ -295,7 +342,18 @@ class _Propagator:
                     sine = self.ev.sines.get(sid)
                     if sine is not None:
                         np.divide(rel, sine, out=rel, casting="same_kind")
+                    reach = self.reach(step)
+                    if reach is not None:
+                        # a direction's error moves a far meet by its distance times the angle
+                        turn = np.maximum(self.turn[step.input("line1")],
+                                          self.turn[step.input("line2")]) + u
+                        far = turn * reach
+                        if sine is not None:
+                            far /= sine
+                        np.maximum(rel, far.astype(self.dtype), out=rel)
             self.rel[sid] = rel
+            if step.kind is Kind.LINE:
+                self.turn[sid] = self._turn_of(step, u) if step.inputs else rel
             out.relative_of[sid] = rel
 
 

@@ -13,6 +13,7 @@ import math
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from .estimate import plan_sizes
 from .graph import Construction
 from .kernel_load import KernelUnsupported
 from .ops import Op, OpSpec
@@ -48,6 +49,9 @@ class ScalarGen:
         self.shared: dict[tuple[str, ...], str] = {}
         #: angle steps → the names of their atan2 arguments and the angle subtracted
         self.arctan: dict[str, tuple[str, str, float]] = {}
+        #: line steps → the name of their direction's error (rad), as estimate.py's ``turn``
+        self.turns: dict[str, str] = {}
+        self.sizes = plan_sizes(c)
 
     def name(self, sid: str) -> str:
         return f"v{self.idx[sid]}"
@@ -118,6 +122,8 @@ class ScalarGen:
         e = self.err(s.id)
         if not s.inputs:
             self.estimates.append(f"{e} = U")
+            if s.kind is Kind.LINE:
+                self._turn(s)
             return
         # max(a + U, b + U) = max(a, b) + U exactly (rounding is monotonic)
         terms = [self.err(i) for i in dict.fromkeys(s.inputs)]
@@ -133,6 +139,51 @@ class ScalarGen:
         if sine is not None:
             self.estimates.append(f"{e} = _div({e}, {sine})")
             self.checks.append(f"_qs = _qs * _below1({sine})")
+        if s.op is Op.LINE_LINE and self.sizes.get(s.plan, 0.0) > 0.0:
+            self._far_meet(s, n, e, sine)
+        if s.kind is Kind.LINE:
+            self._turn(s)
+
+    def _far_meet(self, s: Step, n: str, e: str, sine: str | None) -> None:
+        """A meet of two lines far from their points: at least the lines' direction error ×
+        its distance over the plan's size ÷ the sine (estimate.py's ``reach``)."""
+        size = literal(self.sizes[s.plan])
+        reach = []
+        for key in ("line1", "line2"):
+            px, py, _, _ = self.line(s.input(key))
+            reach.append(f"(({n}x - {px}) * ({n}x - {px}) + ({n}y - {py}) * ({n}y - {py}))")
+        far = f"_far{self.idx[s.id]}"
+        turn = f"max({self.turns[s.input('line1')]}, {self.turns[s.input('line2')]}) + U"
+        self.estimates += [
+            f"{far} = max(1.0, math.sqrt(max({reach[0]}, {reach[1]})) / {size})",
+            f"_t = ({turn}) * {far}",
+            *([f"_t = _div(_t, {sine})"] if sine is not None else []),
+            f"{e} = max({e}, _t)"]
+        square = literal(self.sizes[s.plan] ** 2)
+        self.checks.append(f"_qa = _qa * _below1(_div({square}, max({reach[0]}, {reach[1]})))")
+
+    def _turn(self, s: Step) -> None:
+        """A line's direction error (rad), as estimate.py's ``_turn_of``."""
+        t = self.turns[s.id] = f"t{self.idx[s.id]}"
+        if not s.inputs:
+            self.estimates.append(f"{t} = {self.err(s.id)}")
+            return
+        pair = s.op.lever_of(s)
+        if pair is not None:
+            a, b = (self.err(i) for i in pair)
+            self.estimates.append(f"{t} = _div(max({a}, {b}) + U, {self.distance(*pair)})")
+            return
+        terms = ["U"]
+        for i in dict.fromkeys(s.inputs):
+            kind = self.c[i].kind
+            if kind is Kind.LINE:
+                terms.append(f"{self.turns[i]} + U")
+            elif kind is not Kind.POINT:
+                terms.append(f"{self.err(i)} + U")
+        expr = terms[0]
+        for term in terms[1:]:
+            expr = f"max({expr}, {term})"
+        self.estimates.append(f"{t} = {expr}")
 
 
 # -- scalar forms: each mirrors the vectorised evaluator in construct/ops.py ------------------

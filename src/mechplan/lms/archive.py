@@ -14,10 +14,9 @@ import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..errors import CheckError
-
 # one set of limits for every file read inside another (zips, workbooks, PDF attachments)
-from ..submission.contained import MAX_ENTRIES, MAX_MEMBER, MAX_RATIO, MAX_TOTAL, RATIO_FLOOR
+from ..archive_limits import MAX_ENTRIES, MAX_MEMBER, MAX_RATIO, MAX_TOTAL, RATIO_FLOOR
+from ..errors import CheckError
 from .texts import say
 
 __all__ = ["MAX_DEPTH", "MAX_ENTRIES", "MAX_MEMBER", "MAX_RATIO", "MAX_TOTAL", "RATIO_FLOOR",

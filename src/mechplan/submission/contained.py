@@ -9,18 +9,9 @@ import io
 import zipfile
 from collections.abc import Iterator
 
+from ..archive_limits import MAX_ENTRIES, MAX_MEMBER, MAX_RATIO, MAX_TOTAL, RATIO_FLOOR
 from ..errors import CheckError
 from ..i18n import Text
-
-#: most entries of an archive (nested ones counted too)
-MAX_ENTRIES = 20_000
-#: most bytes of all members together, uncompressed (nested ones counted too)
-MAX_TOTAL = 512 * 1024**2
-#: most bytes of one member
-MAX_MEMBER = 64 * 1024**2
-#: largest compression ratio of a member bigger than RATIO_FLOOR (DXF text compresses ~10–30×)
-MAX_RATIO = 200
-RATIO_FLOOR = 1024**2
 
 
 def mb(n: int) -> str:
