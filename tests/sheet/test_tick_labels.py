@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 from scenes import ROOT
 
@@ -82,12 +83,49 @@ def test_tick_labels_equal_their_ticks(monkeypatch, stem, language):
     assert seen and _check(seen, language) > 20
 
 
-def test_the_case_of_the_issue_is_labelled_exactly(monkeypatch):
-    """motorcycle_engine's T/Z diagram at its final scale has a step of 2.5 kN: "2.5, 5.0, 7.5"
-    (main: "2, 5, 8")."""
+def _y_labels(d) -> list[str]:
+    return [p.string for p in d.panel.primitives if isinstance(p, Text)
+            and math.isclose(p.height_mm, SMALL_H) and p.halign is HAlign.RIGHT]
+
+
+def _mantissa(step: float) -> float:
+    return step / 10.0 ** math.floor(math.log10(step) + 1e-9)
+
+
+@pytest.mark.parametrize("language, expected", [("en", {"2.5", "5.0", "7.5", "-2.5"}),
+                                                ("ru", {"2,5", "5,0", "7,5", "-2,5"})])
+def test_the_case_of_the_issue_is_labelled_exactly(language, expected):
+    """The case of the issue: motorcycle_engine's T/Z diagram once had a step of 2.5 kN (μ = 0.2
+    kN/mm) and was labelled "2, 5, 8"; its labels are "2.5, 5.0, 7.5". The axis is built here
+    with that scale factor: the layout now grows the sheet's diagram into free room, so its own
+    step depends on the room left (2 kN at μ = 0.1)."""
+    phi = np.linspace(0.0, 720.0, 73)
+    t = 5.5 * np.sin(np.radians(phi)) + 2.5
+    d = diagram_module.diagram_panel("tz", "T/Z", [diagram_module.Curve(phi, t)],
+                                     diagram_module.Axis("φ", "°", 120.0),
+                                     diagram_module.Axis("T", "kN", 60.0, mu=0.2), language)
+    assert diagram_module._tick_step(d.mu_y) == 2.5
+    labels = set(_y_labels(d))
+    assert expected <= labels, labels
+    assert not {"2", "5", "8", "-2", "-3"} & labels, labels
+    assert _check([d], language) >= 4
+
+
+def test_the_templates_steps_of_2_5_are_labelled_exactly(monkeypatch):
+    """The drawn diagrams whose step is 2.5·10ᵏ (motorcycle_engine's forces, planetary_two_row's
+    velocities at 0.0025, machine_unit's J at 0.025 …) write every label with the decimals of
+    the step: 2.5 → "2.5, 5.0", 0.025 → "0.025, 0.050", 25 → "25, 50"."""
     seen = _recorded(monkeypatch)
-    solve_file(ROOT / "templates" / "motorcycle_engine.toml").sheets(None, None, "en", "m")
-    tz = [d for d in seen if d.panel.name == "tz"][-1]
-    labels = [p.string for p in tz.panel.primitives if isinstance(p, Text)
-              and math.isclose(p.height_mm, SMALL_H) and p.halign is HAlign.RIGHT]
-    assert {"2.5", "5.0", "7.5"} <= set(labels)
+    for stem in ("motorcycle_engine", "planetary_two_row", "machine_unit"):
+        solve_file(ROOT / "templates" / f"{stem}.toml").sheets(None, None, "en", stem)
+    checked = 0
+    for d in seen:
+        step = diagram_module._tick_step(d.mu_y)
+        if not math.isclose(_mantissa(step), 2.5):
+            continue
+        decimals = max(0, -math.floor(math.log10(step) + 1e-9) + 1)
+        for label in _y_labels(d):
+            assert len(label.partition(".")[2]) == decimals, (d.panel.name, step, label)
+            assert float(label) / step == pytest.approx(round(float(label) / step)), label
+            checked += 1
+    assert checked > 20

@@ -9,7 +9,7 @@ import ezdxf
 import pytest
 from scenes import ROOT
 
-from mechplan.drafting.typography import mtext, plain, runs
+from mechplan.drafting.typography import glyph_runs, mtext, plain, runs
 from mechplan.render import dxf as dxf_backend
 from mechplan.render import mpl as mpl_backend
 from mechplan.render import svg as svg_backend
@@ -38,6 +38,21 @@ def test_dxf_writes_a_stacked_mtext_that_readers_take_apart():
     (m,) = [e for e in doc.modelspace() if e.dxftype() == "MTEXT"]
     assert m.text == "a\\Sn^CB;" and m.dxf.char_height == 5.0
     assert clean_text(m.text, mtext=True) == "anCB"         # the checker's reader
+    assert not [e for e in doc.modelspace() if e.dxftype() == "TEXT"]
+
+
+def test_dxf_stacks_the_unicode_exponents_librecad_fonts_lack():
+    """"1,1×10⁻¹⁶" (the number writers' ×10ⁿ form): no LibreCAD font has ⁻¹⁶, so the DXF writes
+    the exponent as a raised stack, in a style whose font has every other glyph."""
+    from mechplan.render.librecad import stroke_fonts
+
+    assert glyph_runs("1,1×10⁻¹⁶") == [("1,1×10", 0), ("-16", 1)]
+    assert glyph_runs("M_b⁰ S₄") == [("M", 0), ("b", -1), ("0", 1), (" S", 0), ("4", -1)]
+    assert mtext("1,1×10⁻¹⁶") == "1,1×10\\S-16^;"
+    doc = ezdxf.read(io.StringIO(dxf_backend.to_bytes(_one("δ = 1,1×10⁻¹⁶")).decode("utf-8")))
+    (m,) = [e for e in doc.modelspace() if e.dxftype() == "MTEXT"]
+    assert m.text == "δ = 1,1×10\\S-16^;"
+    assert stroke_fonts()[m.dxf.style].has("δ = 1,1×10-16")
     assert not [e for e in doc.modelspace() if e.dxftype() == "TEXT"]
 
 

@@ -35,6 +35,34 @@ def runs(text: str) -> list[tuple[str, int]]:
     return out
 
 
+#: Unicode super- and subscript characters (the ×10ⁿ exponents of the number writers, M_b⁰, S₄)
+_SUPERSCRIPTS = str.maketrans("⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻", "0123456789+-")
+_SUBSCRIPTS = str.maketrans("₀₁₂₃₄₅₆₇₈₉₊₋", "0123456789+-")
+_UNICODE_SCRIPT = re.compile("([⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻]+)|([₀₁₂₃₄₅₆₇₈₉₊₋]+)")
+
+
+def has_unicode_scripts(text: str) -> bool:
+    """Whether a label holds Unicode super- or subscript characters ("1,1×10⁻¹⁶")."""
+    return bool(_UNICODE_SCRIPT.search(text))
+
+
+def glyph_runs(text: str) -> list[tuple[str, int]]:
+    """:func:`runs`, with the Unicode super- and subscript characters also as shifted runs of
+    ordinary ones ("1,1×10⁻¹⁶" → "1,1×10" then "-16" raised): for a backend whose fonts lack
+    those glyphs (LibreCAD's stroke fonts, DXF)."""
+    out: list[tuple[str, int]] = []
+    pos = 0
+    for m in _UNICODE_SCRIPT.finditer(text):
+        out.extend(runs(text[pos:m.start()]))
+        if m.group(1):
+            out.append((m.group(1).translate(_SUPERSCRIPTS), 1))
+        else:
+            out.append((m.group(2).translate(_SUBSCRIPTS), -1))
+        pos = m.end()
+    out.extend(runs(text[pos:]))
+    return out
+
+
 def plain(text: str) -> str:
     """The label without its marks ("a^n_CB" → "anCB")."""
     return "".join(t for t, _ in runs(text))
@@ -47,8 +75,10 @@ def _escape(text: str) -> str:
 def mtext(text: str) -> str:
     """MTEXT content with stacks: a superscript followed by a subscript is one stack (n over CB,
     ``a\\Sn^CB;``), a lone one has an empty other half (``v\\S^B;``, ``ω\\S2^;``). AutoCAD and
-    LibreCAD both draw these stacks (LibreCAD prints the ``\\A`` alignment code as text)."""
-    parts = runs(text)
+    LibreCAD both draw these stacks (LibreCAD prints the ``\\A`` alignment code as text).
+    Unicode super- and subscript characters, which LibreCAD's fonts lack, are stacks too
+    ("1,1×10⁻¹⁶" → ``1,1×10\\S-16^;``), see :func:`glyph_runs`."""
+    parts = glyph_runs(text)
     out: list[str] = []
     i = 0
     while i < len(parts):

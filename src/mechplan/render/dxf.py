@@ -39,7 +39,13 @@ from mechplan.drafting.primitives import (
     Text,
     VAlign,
 )
-from mechplan.drafting.typography import has_scripts, mtext, plain, runs
+from mechplan.drafting.typography import (
+    glyph_runs,
+    has_scripts,
+    has_unicode_scripts,
+    mtext,
+    plain,
+)
 from mechplan.errors import DrawingError
 from mechplan.render.librecad import stroke_fonts
 
@@ -145,7 +151,8 @@ def text_style(text: str, font: SheetFont | None = None) -> str:
         return VI_STYLE
     order = _STYLE_ORDER[font]
     fonts = stroke_fonts()
-    return next((s for s in order if fonts[s].has(plain(text))), order[0])
+    drawn = "".join(r for r, _ in glyph_runs(text))     # as the TEXT or MTEXT draws it
+    return next((s for s in order if fonts[s].has(drawn)), order[0])
 
 
 def fitted_width_factor(t: Text, style: str) -> float:
@@ -175,7 +182,7 @@ def fitted_mtext_height(t: Text, style: str) -> float:
     """
     font = stroke_fonts()[style]
     h = t.height_mm
-    parts = runs(t.string)
+    parts = glyph_runs(t.string)
     drawn, i = 0.0, 0
     while i < len(parts):
         text, shift = parts[i]
@@ -235,8 +242,9 @@ def _add(layout: BaseLayout, p: Primitive, dx: float = 0.0, dy: float = 0.0) -> 
             attdef = layout.add_attdef(p.tag, q(p.position), p.string,
                                        dxfattribs={**_text_attribs(p), "prompt": p.tag})
             attdef.set_placement(q(p.position), align=_ALIGN[(p.halign, p.valign)])
-        elif p.string and has_scripts(p.string):
-            # real sub- and superscripts: an MTEXT with height and alignment codes
+        elif p.string and (has_scripts(p.string) or has_unicode_scripts(p.string)):
+            # real sub- and superscripts: an MTEXT with height and alignment codes; so are the
+            # Unicode ones ("1,1×10⁻¹⁶" of the number writers), which no LibreCAD font has
             attribs = _text_attribs(p)
             style = str(attribs["style"])
             layout.add_mtext(mtext(p.string), dxfattribs={
