@@ -41,9 +41,19 @@ _SUBSCRIPTS = str.maketrans("₀₁₂₃₄₅₆₇₈₉₊₋", "0123456789+
 _UNICODE_SCRIPT = re.compile("([⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻]+)|([₀₁₂₃₄₅₆₇₈₉₊₋]+)")
 
 
+#: the Latin-1 superscripts every sheet font has (LibreCAD's too): "m/s²" keeps its glyph
+_LATIN1 = frozenset("¹²³")
+
+
+def _shifted(m: re.Match[str]) -> bool:
+    """Whether a run of script characters must be drawn as a shifted run (not only ¹²³)."""
+    return not set(m.group(0)) <= _LATIN1
+
+
 def has_unicode_scripts(text: str) -> bool:
-    """Whether a label holds Unicode super- or subscript characters ("1,1×10⁻¹⁶")."""
-    return bool(_UNICODE_SCRIPT.search(text))
+    """Whether a label holds Unicode super- or subscript characters a stroke font lacks
+    ("1,1×10⁻¹⁶"; not the "²" of "m/s²")."""
+    return any(_shifted(m) for m in _UNICODE_SCRIPT.finditer(text))
 
 
 def glyph_runs(text: str) -> list[tuple[str, int]]:
@@ -53,6 +63,8 @@ def glyph_runs(text: str) -> list[tuple[str, int]]:
     out: list[tuple[str, int]] = []
     pos = 0
     for m in _UNICODE_SCRIPT.finditer(text):
+        if not _shifted(m):
+            continue
         out.extend(runs(text[pos:m.start()]))
         if m.group(1):
             out.append((m.group(1).translate(_SUPERSCRIPTS), 1))
