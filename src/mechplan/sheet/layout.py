@@ -193,14 +193,15 @@ def chain(name: str) -> str:
 
 
 def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
-    """The panel redrawn in parts (``Panel.refit``), the first one fitting the free room of
-    this sheet; None when no part fits."""
-    if panel.refit is None:
+    """The panel redrawn in parts (``Panel.split_off``, else ``Panel.refit``), the first one
+    fitting the free room of this sheet (any of its free rectangles); None when no part fits."""
+    split = panel.split_off or panel.refit
+    if split is None:
         return None
-    for w, h in room.free_rectangles()[:6]:
+    for w, h in room.free_rectangles():
         if w <= GAP or h <= GAP:
             continue
-        parts = panel.refit(w - GAP, h - GAP)
+        parts = split(w - GAP, h - GAP)
         x0, y0, x1, y1 = room.panel_bounds(parts[0])
         if x1 - x0 <= w - GAP + 1e-9 and y1 - y0 <= h - GAP + 1e-9 \
                 and room.spot(x1 - x0 + GAP, y1 - y0 + GAP) is not None:
@@ -217,7 +218,8 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
     (:func:`chain`) keep their order. With ``split``, a panel that can be redrawn in parts
     (``Panel.refit``: a grid of small plans) and does not fit is split so that its first part
     fills the free room; its parts stand for it and for the later panels of its sequence
-    (the grid's other cells), which are dropped. ``columns``: each panel at the leftmost, then
+    (the grid's other cells), which are dropped — or, split by ``Panel.split_off`` (a table:
+    the rows that fit, then the others), for it alone. ``columns``: each panel at the leftmost, then
     highest spot. Return
     (panels, offsets) per sheet, or the first panel that fits no empty sheet.
     """
@@ -239,6 +241,9 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
             # on an empty sheet: only a panel no sheet holds whole is split (else: an error)
             if at is None and split:
                 parts = _split_into(room, panel)
+                if parts is not None and panel.split_off is not None:
+                    queue = parts + queue           # its parts stand for it alone
+                    continue
                 if parts is not None:
                     same = chain(panel.name)
                     queue = parts + [q for q in queue if chain(q.name) != same]
