@@ -16,7 +16,8 @@ from mechplan.sheet import compose as compose_module
 from mechplan.sheet import layout
 from mechplan.sheet.fit import table_panel
 from mechplan.sheet.frame import make_frame
-from mechplan.sheet.layout import GAP, GOAL, GROWTH, grow_into_room, paginate
+from mechplan.sheet.grow import GROWTH, grow_into_room
+from mechplan.sheet.layout import GAP, GOAL, paginate
 from mechplan.sheet.panels import Panel
 from mechplan.studies import solve_file
 

@@ -41,6 +41,11 @@ DRAWN = (Line, Polyline, Arc, Circle, Text, Arrow)
 _ANCHOR = {HAlign.LEFT: "start", HAlign.CENTER: "middle", HAlign.RIGHT: "end"}
 
 
+#: the font family of most texts (Latin, Cyrillic, digits): set once by the page's style
+#: (``svg text``) rather than written with each of the thousands of texts of a sheet
+TEXT_FONT = font_family_css("0")
+
+
 def _r(v: float) -> float:
     r = round(float(v), DIGITS)
     return 0.0 if r == 0 else r
@@ -84,7 +89,10 @@ def primitive(p: Primitive) -> dict[str, Any]:
     if isinstance(p, Text):
         x, y = baseline_point(p)
         out: dict[str, Any] = {"t": p.string, "x": _r(x), "y": _r(-y), "s": _r(em_size_mm(p)),
-                               "a": _ANCHOR[p.halign], "f": font_family_css(p.string)}
+                               "a": _ANCHOR[p.halign]}
+        family = font_family_css(p.string)
+        if family != TEXT_FONT:             # the page's style gives every other text its font
+            out["f"] = family
         if p.rotation_deg:
             out["o"] = _r(-p.rotation_deg)
         return out
@@ -183,7 +191,7 @@ def to_html(doc: Mapping[str, Any]) -> str:
     return (page.replace("{{lang}}", str(doc.get("lang", "en")))
             .replace("{{title}}", title)
             .replace("/*{{fonts}}*/", fonts)
-            .replace("/*{{roles}}*/", _role_css())
+            .replace("/*{{roles}}*/", f"{_role_css()}\nsvg text {{ font-family: {TEXT_FONT}; }}")
             .replace("/*{{css}}*/", _asset("page.css"))
             .replace("{{data}}", _script_json(data))
             .replace("/*{{js}}*/", _asset("page.js")))

@@ -20,6 +20,7 @@ from ..model.mechanism import GROUND, PairKind
 from ..model.plans import Plan
 from ..solve import Solution
 from .friction_diagram import efficiency_diagram
+from .grow import GROWTH, grow_into_room
 from .kinematics_sheet import (
     balancing_diagram,
     grid,
@@ -28,7 +29,7 @@ from .kinematics_sheet import (
     split_tables,
     tables_of,
 )
-from .layout import GROWTH, drawing_area, fewest_sheets, framed, grow_into_room
+from .layout import drawing_area, fewest_sheets, framed
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (

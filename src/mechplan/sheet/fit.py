@@ -119,7 +119,18 @@ def table_panel(name: str, title: str, cells: Sequence[Sequence[str]],
                             widths=pw, notes=notes if i == len(parts) - 1 else ())
                 for i, (p, pw) in enumerate(parts)]
 
+    def split_off(max_w: float, max_h: float) -> list[Panel]:
+        parts = _split(rows, w, style, max_w, max_h - _extra_height(panel))
+        if len(parts) == 1 or any(len(p[0]) != len(rows[0]) for p, _ in parts):
+            return refit(max_w, max_h)          # one part, or column groups: as refit
+        # the rows in two: those that fit the room, the others in one table (split again)
+        first = parts[0][0]
+        rest = [rows[0], *rows[len(first):]]
+        return [table_panel(f"{name}.1", f"{title} (1/2)", first, style, widths=parts[0][1]),
+                table_panel(f"{name}.2", f"{title} (2/2)", rest, style, widths=w, notes=notes)]
+
     panel.refit = refit
+    panel.split_off = split_off
     return panel
 
 

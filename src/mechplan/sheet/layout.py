@@ -31,9 +31,6 @@ GOAL = 0.55
 ENLARGEMENTS = (2.0, 1.6, 1.25, 1.0, 0.8, 0.6, 0.5)
 #: smaller ones, tried only when a panel fits the sheet at none of :data:`ENLARGEMENTS`
 REDUCTIONS = (0.4, 0.3, 0.25)
-#: the enlargements a drawing is redrawn at to fill its sheet's free room
-#: (:func:`grow_into_room`): finer steps than :data:`ENLARGEMENTS`, as one drawing grows alone
-GROWTH = (0.6, 0.7, 0.8, 0.9, 1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0)
 #: the sheet sizes, smallest first (the error of a panel too large names the smallest that works)
 SIZES = ("A4", "A3", "A2", "A1", "A0")
 
@@ -196,14 +193,15 @@ def chain(name: str) -> str:
 
 
 def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
-    """The panel redrawn in parts (``Panel.refit``), the first one fitting the free room of
-    this sheet; None when no part fits."""
-    if panel.refit is None:
+    """The panel redrawn in parts (``Panel.split_off``, else ``Panel.refit``), the first one
+    fitting the free room of this sheet (any of its free rectangles); None when no part fits."""
+    split = panel.split_off or panel.refit
+    if split is None:
         return None
-    for w, h in room.free_rectangles()[:6]:
+    for w, h in room.free_rectangles():
         if w <= GAP or h <= GAP:
             continue
-        parts = panel.refit(w - GAP, h - GAP)
+        parts = split(w - GAP, h - GAP)
         x0, y0, x1, y1 = room.panel_bounds(parts[0])
         if x1 - x0 <= w - GAP + 1e-9 and y1 - y0 <= h - GAP + 1e-9 \
                 and room.spot(x1 - x0 + GAP, y1 - y0 + GAP) is not None:
@@ -220,7 +218,8 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
     (:func:`chain`) keep their order. With ``split``, a panel that can be redrawn in parts
     (``Panel.refit``: a grid of small plans) and does not fit is split so that its first part
     fills the free room; its parts stand for it and for the later panels of its sequence
-    (the grid's other cells), which are dropped. ``columns``: each panel at the leftmost, then
+    (the grid's other cells), which are dropped — or, split by ``Panel.split_off`` (a table:
+    the rows that fit, then the others), for it alone. ``columns``: each panel at the leftmost, then
     highest spot. Return
     (panels, offsets) per sheet, or the first panel that fits no empty sheet.
     """
@@ -242,6 +241,9 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
             # on an empty sheet: only a panel no sheet holds whole is split (else: an error)
             if at is None and split:
                 parts = _split_into(room, panel)
+                if parts is not None and panel.split_off is not None:
+                    queue = parts + queue           # its parts stand for it alone
+                    continue
                 if parts is not None:
                     same = chain(panel.name)
                     queue = parts + [q for q in queue if chain(q.name) != same]
@@ -434,63 +436,10 @@ def _layout(build: Callable[[float], Sequence[Panel]], ks: Sequence[float],
     k, groups = found
     grown: dict[str, float] = {}
     if grow:
+        from .grow import GROWTH, grow_into_room
+
         groups, grown = grow_into_room(build, [x for x in GROWTH if x > k], groups, area)
     return Layout(k, size, standard, [list(zip(p, o)) for p, o in groups], grown)
-
-
-def _one_sheet(panels: Sequence[Panel], area: BaseGeometry,
-               bounds: Bounds) -> list[tuple[float, float]] | None:
-    """The offsets of the panels packed on one sheet (rows first, else columns first), or None
-    when they do not fit one."""
-    for columns in (False, True):
-        found = paginate(panels, area, columns=columns, bounds=bounds)
-        if not isinstance(found, Panel) and len(found) == 1 \
-                and [p.name for p in found[0][0]] == [p.name for p in panels]:
-            return found[0][1]
-    return None
-
-
-def grow_into_room(build: Callable[[float], Sequence[Panel]], larger: Sequence[float],
-                   groups: Groups, area: BaseGeometry) -> tuple[Groups, dict[str, float]]:
-    """Fill each sheet's free room: its drawings redrawn, one step at a time, at the larger
-    enlargements ``larger`` (``build(k)``'s panel of the same name) as long as the sheet's panels
-    still fit it (repacked in the same order). Tables and texts keep their size; which panels go
-    on which sheet does not change (so no later panel fits an earlier sheet's room). Return the
-    sheets and the enlargement of every panel redrawn (name → k)."""
-    steps = sorted(larger)
-    if not steps:
-        return groups, {}
-    versions: list[dict[str, Panel]] = []
-    for k in steps:
-        drawn = refitted(build(k), area)
-        names = [p.name for p in drawn]
-        versions.append({p.name: p for p in drawn if names.count(p.name) == 1})
-    bounds = Bounds()
-    grown: dict[str, float] = {}
-    out: Groups = []
-    for panels, offsets in groups:
-        panels = list(panels)
-        level = [-1] * len(panels)          # index into ``steps``; -1: as found
-        changed = True
-        while changed:
-            changed = False
-            for i, panel in enumerate(panels):
-                # the next step that draws it differently (a table or a text: none)
-                nxt = next((j for j in range(level[i] + 1, len(steps))
-                            if panel.name in versions[j]
-                            and bounds(versions[j][panel.name]) != bounds(panel)), None)
-                if nxt is None:
-                    level[i] = len(steps)
-                    continue
-                trial = panels[:i] + [versions[nxt][panel.name]] + panels[i + 1:]
-                at = _one_sheet(trial, area, bounds)
-                if at is None:
-                    level[i] = len(steps)   # no larger drawing fits: it stays as it is
-                    continue
-                panels, offsets, level[i], changed = trial, at, nxt, True
-                grown[panel.name] = steps[nxt]
-        out.append((panels, list(offsets)))
-    return out, grown
 
 
 def _too_large(panel: Panel, build: Callable[[float], Sequence[Panel]], ks: Sequence[float],
@@ -521,7 +470,7 @@ def fitted_layout(build: Callable[[float], Sequence[Panel]], *, size: str, stand
                   language: str, fields: Mapping[str, str], grow: bool = False) -> Layout:
     """The panels ``build(k)`` draws at the :func:`enlargement` that fills the sheet, placed;
     with ``grow``, each drawing then redrawn larger into its sheet's free room
-    (:func:`grow_into_room`: for drawings whose scale nothing outside their panel repeats).
+    (:func:`.grow.grow_into_room`: for drawings whose scale nothing outside their panel repeats).
 
     Raise :class:`DrawingError` naming the panel and the smallest sheet that takes them when a
     panel is larger than the drawing area even at the smallest enlargement.

@@ -64,6 +64,10 @@ class Panel:
     primitives: list[Primitive | Table] = field(default_factory=list)
     plan: Plan | None = None        # the plan a panel of plans shows (None: a diagram, a table)
     refit: Callable[[float, float], list[Panel]] | None = None
+    #: ``split_off(width, height)``, when given: the panel as a first part of at most
+    #: ``width`` × ``height`` mm and the rest in one panel (split again where it is placed) — how
+    #: the layout fills a sheet's free room (else with ``refit``)
+    split_off: Callable[[float, float], list[Panel]] | None = None
     #: index in ``primitives`` → id of the construction step that draws it (the replay's order)
     steps: dict[int, str] = field(default_factory=dict)
 

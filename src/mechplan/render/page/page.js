@@ -25,8 +25,9 @@ const num = (v, digits) => (v === null || !Number.isFinite(v) ? "—"
 // one primitive of the document as SVG elements
 function draw(p) {
   if (p.t !== undefined) {
+    // the font family only when it is not the page's (svg text in the style)
     const t = el("text", { x: p.x, y: p.y, "font-size": p.s, "text-anchor": p.a,
-      "font-family": p.f }, p.t);
+      ...(p.f ? { "font-family": p.f } : {}) }, p.t);
     if (p.o) t.setAttribute("transform", `rotate(${p.o} ${p.x} ${p.y})`);
     return [t];
   }
