@@ -198,7 +198,7 @@ def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
     split = panel.split_off or panel.refit
     if split is None:
         return None
-    for w, h in room.free_rectangles():
+    for w, h in room.free_rectangles()[:16]:
         if w <= GAP or h <= GAP:
             continue
         parts = split(w - GAP, h - GAP)
