@@ -78,12 +78,17 @@ def fit_score(rows: Sequence[SegmentRow | ValueRow],
 def _best_position(reports: list[CheckReport], j: int, title: str = "") -> int:
     """The candidate position of drawn plan ``j``: the one its title names ("Force plan I(0,1)
     — position 1, φ = 30.0°"; plans of one kind with the same letters cannot be told apart by
-    their fit), else the one it fits best."""
-    titled = _title_position(title, reports)
-    if titled is not None:
-        return titled
+    their fit) where it fits there with no more wrong segments than at its best fit, else the
+    one it fits best."""
     plans = [r.plans[j] for r in reports]
-    return min(range(len(plans)), key=lambda k: fit_score(plans[k].segments, plans[k].points))
+    scores = [fit_score(p.segments, p.points) for p in plans]
+    best = min(range(len(plans)), key=lambda k: scores[k])
+    titled = _title_position(title, reports)
+    # a title taken from a neighbouring cell (a grid's titles stand close) names a position the
+    # plan does not fit: the title decides only where it fits no worse than the best fit
+    if titled is not None and scores[titled][0] <= scores[best][0]:
+        return titled
+    return best
 
 
 def _title_position(title: str, reports: Sequence[CheckReport]) -> int | None:

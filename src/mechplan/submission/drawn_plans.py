@@ -192,6 +192,7 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
     for i, (a, _) in enumerate(graph.line_nodes):
         lines_of.setdefault(graph.component[a], []).append(sub.lines[i])
     kinds_in_book = {k[0] for k in book.plans}
+    force_groups = [k[1] for k in book.plans if k[0] is Plan.FORCE and k[1]]
     decided: list[tuple[PlanKey, int, list[_Label]]] = []
     for comp, members in comps.items():
         votes: Counter[Plan] = Counter()
@@ -200,13 +201,22 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
             votes.update(plans_here)
             votes.update({p: w for p, w in feature_votes(lb.written).items() if p in plans_here})
         hint = _hint_of(comp, members, graph, lines_of.get(comp, []), scale_entries, set(comps))
+        # a title naming a force group ("Force plan I(0,1) — …") says the drawing is its polygon
+        # (its μF may stand nearer another drawing)
+        title = title_above(_points_of(members), sub.texts, force_groups,
+                            _boxes(comps, [comp])) if force_groups else None
+        titled_force = title is not None and any(names_group(title.text, g)
+                                                 for g in force_groups)
+        if titled_force:
+            hint.add(Plan.FORCE)
         votes.update(dict.fromkeys(hint, 3.0 * len(members) ** 0.5 + 3.0))
         if Plan.FORCE not in hint:
             votes.pop(Plan.FORCE, None)
         votes = Counter({p: v for p, v in votes.items() if p in kinds_in_book})
         if not votes:
             continue
-        plan = max(votes, key=lambda p: (votes[p], -list(Plan).index(p)))
+        plan = Plan.FORCE if titled_force else max(
+            votes, key=lambda p: (votes[p], -list(Plan).index(p)))
         keys = [k for k in book.plans if k[0] is plan]
         decided.append((_key_of(book, keys, members, sub, _boxes(comps, [comp])), comp,
                         members))
