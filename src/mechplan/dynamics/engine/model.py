@@ -187,16 +187,18 @@ class EngineModel:
         n = np.array([-u[1], u[0]])
         beta = np.arctan2(e @ n, e @ u)
         p = self.diagram.pressure_xi(x / sl.stroke, self.stroke_E(psi, number))
-        p_brix = self.diagram.at_phi(psi, self.kin.x_brix(psi) / (2.0 * spec.R))
+        # Brix's construction drawn for this piston, from its own exact TDC
+        own = psi - self.dead_centres(number)[0]
+        p_brix = self.diagram.at_phi(own, sl.xi_brix(own))
+        a_s = sl.a_series(phi - art.offset, w)
         m = self.m_j[number]
         Pk = (p - spec.p0) * spec.F_p
         Pj = -m * a
         P = Pk + Pj
         M = P * v / w
         nan = np.full_like(P, np.nan)
-        return CylinderForces(psi, x, v, a, self.kin.a_series(psi, w), beta, p, p_brix, Pk, Pj,
-                              -m * self.kin.a_series(psi, w), P, P * np.tan(beta), P / np.cos(beta),
-                              M / spec.R, nan, M, Pj * v / w)
+        return CylinderForces(psi, x, v, a, a_s, beta, p, p_brix, Pk, Pj, -m * a_s, P,
+                              P * np.tan(beta), P / np.cos(beta), M / spec.R, nan, M, Pj * v / w)
 
     def group_state(self, theta: Array) -> GroupState:
         """The linkage at its crank angles θ; the last evaluation is kept (the articulated
