@@ -151,10 +151,3 @@ def test_wiebe_errors(old, new, key):
     with pytest.raises(SceneError) as e:
         parse_engine_scene(text.replace(old, new), "w.toml")
     assert key in str(e.value)
-
-
-def test_wiebe_needs_a_four_stroke_engine():
-    text = SCENE.format(start="8 deg", extra="").replace("[engine]\n", "[engine]\nstrokes = 2\n")
-    with pytest.raises(SceneError) as e:
-        parse_engine_scene(text, "w.toml")
-    assert "thermal.combustion" in str(e.value)

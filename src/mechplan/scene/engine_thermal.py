@@ -50,23 +50,24 @@ def _intake(t: Table, p0: float, T0: float) -> float:
 
 
 def _wiebe(t: Table, c: Cycle, strokes: int, lam: float) -> Cycle:
-    """The optional single-zone Wiebe model (``combustion = "wiebe"``) attached to the cycle."""
+    """The optional single-zone Wiebe model (``combustion = "wiebe"``) attached to the cycle, for a
+    four- or two-stroke engine."""
     start = t.quantity("combustion_start", "angle", math.radians(10.0))
     duration = t.quantity("combustion_duration", "angle", math.radians(60.0), positive=True)
     assert start is not None and duration is not None
     m = _number(t, "wiebe_m", 1.5, 0.0, 6.0, "the Wiebe shape exponent m")
     a = _number(t, "wiebe_a", 6.908, 1.0, 12.0, "the Wiebe completeness a")
     late = duration - start
-    if strokes != 4 or not -math.pi / 2 < start < math.pi / 2 or not late < 0.9 * math.pi:
-        raise t.error("combustion_start" if strokes == 4 else "combustion",
-                      Text("thermal2.error.wiebe", {"start": f"{math.degrees(start):g}",
+    if not -math.pi / 2 < start < math.pi / 2 or not late < 0.9 * math.pi:
+        raise t.error("combustion_start",
+                      Text("thermal3.error.wiebe", {"start": f"{math.degrees(start):g}",
                                                     "duration": f"{math.degrees(duration):g}"}))
     s = c.spec
     V_h = 1.0        # m³: the model scales with V_h; the scene's cylinder is applied below
     Q = fuel_heat(s.p_a, c.T_a, s.epsilon * V_h / (s.epsilon - 1.0), c.gamma_r, c.M1, s.xi_z,
                   s.H_u, c.dH_u)
     w = wiebe_cycle(V_h, s.epsilon, lam, s.p_a, c.T_a, s.p_r, s.n1, s.n2, Q,
-                    WiebeSpec(start, duration, m, a))
+                    WiebeSpec(start, duration, m, a), strokes=strokes)
     return dataclasses.replace(c, wiebe=w)
 
 
