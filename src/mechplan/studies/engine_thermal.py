@@ -45,6 +45,7 @@ def thermal_lines(c: Cycle, V_h: float, lang: str, bore: float | None = None) ->
                    T_c=n(c.T_c, 1)),
            message("cycle.report.combustion", lang, xi=n(s.xi_z, 3), mu=n(c.mu), T_z=n(c.T_z, 1),
                    p_z=n(c.p_z * 1e-6), lam=n(c.lam, 3), rho=n(c.rho, 3)),
+           message(f"thermal4.report.fits_{s.heat_capacity}", lang),
            message("cycle.report.expansion", lang, n2=n(s.n2, 3), p_b=n(c.p_b * 1e-6),
                    T_b=n(c.T_b, 1)),
            message("cycle.report.indicated", lang, p_it=n(c.p_i_theory * 1e-6),
@@ -82,7 +83,8 @@ def thermal_json(c: Cycle, V_h: float, bore: float | None = None) -> dict[str, A
     ``bore`` (m), its heat balance (W and %)."""
     s = c.spec
     doc: dict[str, Any] = {
-        "diesel": s.diesel, "alpha": s.alpha, "epsilon": s.epsilon, "L0": c.L0, "l0": c.l0,
+        "diesel": s.diesel, "heat_capacity": s.heat_capacity, "alpha": s.alpha,
+        "epsilon": s.epsilon, "L0": c.L0, "l0": c.l0,
         "M1": c.M1, "products": c.products, "M2": c.M2, "mu0": c.mu0, "dH_u": c.dH_u * 1e3,
         "gamma_r": c.gamma_r, "T_a": c.T_a, "eta_v": c.eta_v, "p_a": s.p_a, "p_c": c.p_c,
         "T_c": c.T_c, "mu": c.mu, "T_z": c.T_z, "p_z": c.p_z, "lambda_p": c.lam, "rho": c.rho,
