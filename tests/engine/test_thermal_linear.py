@@ -5,7 +5,10 @@ Printed numbers reproduced (each at the rounding of its print, the inputs taken 
 rounding of theirs):
 
 - allrefs.net/c35/1x6m5/p3/?full ("ПРОЦЕСС СЖАТИЯ"): mc_v = 20.16 + 1.74·10⁻³·742 = 21.45.
-- ukrbukva.net/page,6,68638 (Розробка двигуна внутрішнього згоряння, 2.3 "процес згоряння"):
+- ukrbukva.net/page,4,68638 (Розробка двигуна внутрішнього згоряння, 2.1 "наповнення циліндра",
+  a supercharged diesel): γ_r = 0.02 with its clean-out 0.6 and recharge 1.02 coefficients,
+  T_a = 397 K with ψ = 1.1, T_c = 1094 K;
+- ukrbukva.net/page,6,68638 (2.3 "процес згоряння"):
   (mc_v)_c = 22.1 at T_c = 1094 K; page,7,68638 (2.4 "процес розширення"): ρ = 1.38,
   δ = 11.63; page,8,68638: T_b = 1078 K with n2 = 1.261, p_b = 5.229·10⁵ Pa, p_z = 11.53 MPa.
 
@@ -26,6 +29,7 @@ from mechplan.model.engine_heat_balance import heat_balance
 from mechplan.model.engine_thermal import (
     CycleSpec,
     combustion_linear,
+    compression,
     expansion,
     linear_air_cv,
     linear_products_cv,
@@ -124,6 +128,31 @@ def test_expansion_of_the_ukrbukva_diesel():
                    (11.525e6, 11.535e6), (11.625, 11.635), (1.2605, 1.2615))
 
 
+def test_intake_of_the_ukrbukva_diesel():
+    """ukrbukva.net/page,4,68638 (2.1 "Наповнення циліндра"; inputs on page,2,68638): the charge
+    after the intercooler T_k = 377 K (its supercharger is not modelled: T_k, p_k are given as
+    T0, p0), ΔT = 10 K, T_r = 800 K, p_r = 0.2021 MPa, p_a = 0.187 MPa, ε = 16, clean-out
+    φ_cl = 0.6, recharge φ_rc = 1.02, ψ = 1.1 → γ_r = 0.02 (ours 0.020016; without the two
+    coefficients 0.035) and T_a = 397 K (ours 396.67; with ψ = 1 395.1 K, which the print
+    excludes); T_c = 1094 K from its T_a = 397 K and n1 = 1.365 (within n1's rounding)."""
+    spec = CycleSpec(True, 0.87, 0.126, 0.004, 42.53e3, 0.0, 1.9, 16.0, 2000, 0.2077e6, 377.0,
+                     10.0, 0.187e6, 0.2021e6, 800.0, 1.365, 1.261, 0.76, 1.4, 0.5, 0.95, 0.86, 4,
+                     4, air_O2=0.21, heat_capacity="linear", clean_out=0.6, recharge=1.02,
+                     psi_r=1.1)
+    c = thermal_cycle(spec)
+    assert abs(c.gamma_r - 0.02) <= 0.005
+    assert c.gamma_r == pytest.approx(387.0 / 800.0 * 0.6 * 0.2021 / (16 * 1.02 * 0.187
+                                                                        - 0.6 * 0.2021))
+    assert abs(c.T_a - 397.0) <= 0.5
+    plain = thermal_cycle(CycleSpec(True, 0.87, 0.126, 0.004, 42.53e3, 0.0, 1.9, 16.0, 2000,
+                                    0.2077e6, 377.0, 10.0, 0.187e6, 0.2021e6, 800.0, 1.365,
+                                    1.261, 0.76, 1.4, 0.5, 0.95, 0.86, 4, 4, clean_out=0.6,
+                                    recharge=1.02))
+    assert abs(plain.T_a - 397.0) > 0.5
+    assert between(lambda n1: compression(0.187e6, 397.0, 16.0, n1)[1], 1094.0 - 0.5,
+                   (1.3645, 1.3655))
+
+
 SCENE = """
 kind = "engine"
 [engine]
@@ -169,6 +198,22 @@ def test_scene_option_runs_the_linear_fits():
     for lang in ("en", "ru", "vi", "zh"):
         assert message("thermal4.report.fits_linear", lang) in lin.report(lang)
         assert message("thermal4.report.fits_table", lang) in tab.report(lang)
+
+
+def test_scene_intake_coefficients():
+    """``clean_out``, ``recharge``, ``residual_heat`` reach γ_r, T_a and η_v (Kolchin–Demidov's
+    η_v = T0/(T0 + ΔT)·(φ_rc·ε·p_a − φ_cl·p_r)/((ε − 1)·p0))."""
+    extra = "clean_out = 0.6\nrecharge = 1.02\nresidual_heat = 1.1"
+    c = EngineStudy(parse_engine_scene(SCENE.format(extra=extra), "d.toml")).scene.cycle
+    s = c.spec
+    Tk = s.T0 + s.dT
+    assert c.gamma_r == pytest.approx(Tk / 750.0 * 0.6 * 110e3 / (16 * 1.02 * 88e3 - 0.6 * 110e3))
+    assert c.T_a == pytest.approx((Tk + 1.1 * c.gamma_r * 750.0) / (1 + c.gamma_r))
+    assert c.eta_v == pytest.approx(s.T0 / Tk * (1.02 * 16 * 88e3 - 0.6 * 110e3)
+                                    / (15 * s.p0))
+    with pytest.raises(SceneError) as e:
+        parse_engine_scene(SCENE.format(extra="recharge = 2"), "d.toml")
+    assert "recharge" in str(e.value)
 
 
 def test_scene_option_refuses_an_unknown_fit():

@@ -9,7 +9,8 @@ the individual gases — fresh charge (air) 20.6 + 2.638·10⁻³t, products at 
 fits, at t_z from the 1501–2800 °C fits — mixed by the products' mole fractions
 (``heat_capacity = "table"``), or the simplified linear fits many course works use
 (``"linear"``, T in K: see :func:`linear_air_cv`, :func:`linear_products_cv`); p_k = p0,
-T_k = T0 (no supercharging); the clean-out and recharge coefficients are 1.
+T_k = T0 (no supercharging: a supercharged engine's p_k, T_k are given as p0, T0); the clean-out
+and recharge coefficients and ψ of T_a are 1 unless given.
 """
 
 from __future__ import annotations
@@ -72,6 +73,9 @@ class CycleSpec:
     coolant_m: float = 0.65
     air_O2: float = AIR_O2       # O2 in air by volume (Kolchin–Demidov 0.208; 0.21 in others)
     heat_capacity: str = "table"  # HEAT_CAPACITY: Kolchin–Demidov's per-gas table fits | linear
+    clean_out: float = 1.0       # φ_cl of the residual gases (scavenging < 1)
+    recharge: float = 1.0        # φ_rc, the recharge coefficient
+    psi_r: float = 1.0           # ψ of T_a: residual gases' to charge's heat capacity
 
 
 @dataclass(frozen=True)
@@ -195,9 +199,18 @@ def products_of(s: CycleSpec, L0: float) -> dict[str, float]:
             "N2": (1.0 - s.air_O2) * s.alpha * L0}
 
 
-def end_of_intake(T_k: float, T_r: float, gamma_r: float) -> float:
-    """Temperature at the end of intake T_a = (T_k + γ_r·T_r)/(1 + γ_r), T_k = T0 + ΔT."""
-    return (T_k + gamma_r * T_r) / (1.0 + gamma_r)
+def end_of_intake(T_k: float, T_r: float, gamma_r: float, psi: float = 1.0) -> float:
+    """Temperature at the end of intake T_a = (T_k + ψ·γ_r·T_r)/(1 + γ_r), T_k = T0 + ΔT; ψ the
+    ratio of the residual gases' heat capacity to the charge's (1 in Kolchin–Demidov)."""
+    return (T_k + psi * gamma_r * T_r) / (1.0 + gamma_r)
+
+
+def residual_fraction(T_k: float, T_r: float, p_a: float, p_r: float, epsilon: float,
+                      clean_out: float = 1.0, recharge: float = 1.0) -> float:
+    """The residual-gas coefficient γ_r = T_k/T_r·φ_cl·p_r/(ε·φ_rc·p_a − φ_cl·p_r), T_k = T0 + ΔT,
+    with Kolchin–Demidov's clean-out (φ_cl, 1 without scavenging) and recharge (φ_rc)
+    coefficients."""
+    return T_k / T_r * clean_out * p_r / (epsilon * recharge * p_a - clean_out * p_r)
 
 
 def compression(p_a: float, T_a: float, epsilon: float, n1: float) -> tuple[float, float]:
@@ -238,9 +251,10 @@ def thermal_cycle(s: CycleSpec) -> Cycle:
     dH = 119950.0 * (1.0 - s.alpha) * L0 if s.alpha < 1.0 else 0.0
     eps = s.epsilon
     Tk = s.T0 + s.dT
-    gamma_r = Tk / s.T_r * s.p_r / (eps * s.p_a - s.p_r)
-    T_a = end_of_intake(Tk, s.T_r, gamma_r)
-    eta_v = s.T0 / Tk * (eps * s.p_a - s.p_r) / ((eps - 1.0) * s.p0)
+    gamma_r = residual_fraction(Tk, s.T_r, s.p_a, s.p_r, eps, s.clean_out, s.recharge)
+    T_a = end_of_intake(Tk, s.T_r, gamma_r, s.psi_r)
+    eta_v = (s.T0 / Tk * (s.recharge * eps * s.p_a - s.clean_out * s.p_r)
+             / ((eps - 1.0) * s.p0))
     p_c, T_c = compression(s.p_a, T_a, eps, s.n1)
     mu = (mu0 + gamma_r) / (1.0 + gamma_r)
     if s.heat_capacity == "linear":

@@ -16,7 +16,7 @@ KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alp
         "p0", "T0", "dT", "p_a", "p_r", "T_r", "n1", "n2", "xi_z", "lambda_p", "K", "phi_i",
         "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity", "coolant_c",
         "coolant_m", "combustion", "combustion_start", "combustion_duration", "wiebe_m",
-        "wiebe_a", "air_oxygen", "heat_capacity")
+        "wiebe_a", "air_oxygen", "heat_capacity", "clean_out", "recharge", "residual_heat")
 
 
 def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
@@ -117,10 +117,16 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
     m_w = _number(t, "coolant_m", 0.65, 0.5, 0.8, "m of the coolant's heat (heat balance)")
     o2 = _number(t, "air_oxygen", 0.208, 0.2, 0.22, "O2 in air by volume")
     fits = t.string("heat_capacity", "table", choices=HEAT_CAPACITY) or "table"
+    clean = _number(t, "clean_out", 1.0, 0.0, 1.0, "the clean-out coefficient φ_cl")
+    recharge = _number(t, "recharge", 1.0, 0.9, 1.2, "the recharge coefficient φ_rc")
+    psi = _number(t, "residual_heat", 1.0, 0.8, 1.3, "ψ of T_a (residual gases' heat capacity)")
+    if not eps * recharge * p_a > clean * p_r:
+        raise t.error("p_r", Text("cycle.error.residual"))
     spec = CycleSpec(diesel, C, H, O, Hu * 1e3, m_f if not diesel else 0.0, alpha, eps,
                      speed * 30.0 / 3.141592653589793, p_amb, T0, dT, p_a, p_r, T_r, n1, n2, xi,
                      lam_p, K, phi_i, eta_m, strokes, cylinders,
-                     power * 1e3 if power is not None else None, S_D, c_w, m_w, o2, fits)
+                     power * 1e3 if power is not None else None, S_D, c_w, m_w, o2, fits, clean,
+                     recharge, psi)
     cycle = thermal_cycle(spec)
     if not cycle.rho < eps:
         raise t.error("xi_z", Text("cycle.error.rho", {"rho": cycle.rho}))
