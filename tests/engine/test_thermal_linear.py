@@ -5,6 +5,8 @@ Printed numbers reproduced (each at the rounding of its print, the inputs taken 
 rounding of theirs):
 
 - allrefs.net/c35/1x6m5/p3/?full ("ПРОЦЕСС СЖАТИЯ"): mc_v = 20.16 + 1.74·10⁻³·742 = 21.45.
+- tracetransport.ru/hons-127-1.html: p_i = 0.93·1.214 − (0.11 − 0.086) = 1.105 MPa (the pumping
+  loop in p_i, ``pumping_loss = "indicated"``), p_e = 1.105·0.75 = 0.829 MPa.
 - ukrbukva.net/page,4,68638 (Розробка двигуна внутрішнього згоряння, 2.1 "наповнення циліндра",
   a supercharged diesel): γ_r = 0.02 with its clean-out 0.6 and recharge 1.02 coefficients,
   T_a = 397 K with ψ = 1.1, T_c = 1094 K;
@@ -24,7 +26,7 @@ import itertools
 import pytest
 
 from mechplan.errors import SceneError
-from mechplan.i18n import message
+from mechplan.i18n import message, number
 from mechplan.model.engine_heat_balance import heat_balance
 from mechplan.model.engine_thermal import (
     CycleSpec,
@@ -33,6 +35,7 @@ from mechplan.model.engine_thermal import (
     expansion,
     linear_air_cv,
     linear_products_cv,
+    mean_indicated,
     pre_expansion,
     thermal_cycle,
 )
@@ -211,9 +214,36 @@ def test_scene_intake_coefficients():
     assert c.T_a == pytest.approx((Tk + 1.1 * c.gamma_r * 750.0) / (1 + c.gamma_r))
     assert c.eta_v == pytest.approx(s.T0 / Tk * (1.02 * 16 * 88e3 - 0.6 * 110e3)
                                     / (15 * s.p0))
+    st = EngineStudy(parse_engine_scene(SCENE.format(extra=extra), "d.toml"))
+    for lang in ("en", "ru", "vi", "zh"):
+        assert message("thermal4.report.intake", lang, clean=number(0.6, 3, lang),
+                       recharge=number(1.02, 3, lang), psi=number(1.1, 3, lang)) in st.report(lang)
     with pytest.raises(SceneError) as e:
         parse_engine_scene(SCENE.format(extra="recharge = 2"), "d.toml")
     assert "recharge" in str(e.value)
+
+
+def test_pumping_loss_in_the_indicated_pressure_tracetransport():
+    """tracetransport.ru/hons-127-1.html ("Среднее индикаторное давление действующего цикла", a
+    diesel course work): p_i = φ·p_i′ − (p_r − p_a) = 0.93·1.214 − (0.11 − 0.086) = 1.105 MPa and
+    p_e = p_i·η_m = 1.105·0.75 = 0.829 MPa (three decimals each); the scene's
+    ``pumping_loss = "indicated"`` takes this variant, the default counts the loop among the
+    mechanical losses (Kolchin–Demidov)."""
+    p_i = mean_indicated(1.214, 0.93, 0.11 - 0.086)
+    assert abs(p_i - 1.105) <= 0.0005
+    assert abs(round(p_i, 3) * 0.75 - 0.829) <= 0.0005
+    ind = EngineStudy(parse_engine_scene(SCENE.format(extra='pumping_loss = "indicated"'),
+                                         "d.toml")).scene.cycle
+    mech = EngineStudy(parse_engine_scene(SCENE.format(extra=""), "d.toml")).scene.cycle
+    assert ind.p_i == pytest.approx(ind.spec.phi_i * ind.p_i_theory - (110e3 - 88e3))
+    assert mech.p_i == pytest.approx(mech.spec.phi_i * mech.p_i_theory)
+    assert ind.p_e == pytest.approx(ind.spec.eta_m * ind.p_i)
+    assert ind.eta_i / mech.eta_i == pytest.approx(ind.p_i / mech.p_i)
+    st = EngineStudy(parse_engine_scene(SCENE.format(extra='pumping_loss = "indicated"'), "d"))
+    for lang in ("en", "ru", "vi", "zh"):
+        line = message("thermal4.report.pumping", lang, dp=number(0.022, 4, lang))
+        assert line in st.report(lang)
+    assert st.to_json()["thermal"]["pumping_loss"] == "indicated"
 
 
 def test_scene_option_refuses_an_unknown_fit():

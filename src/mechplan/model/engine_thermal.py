@@ -76,6 +76,7 @@ class CycleSpec:
     clean_out: float = 1.0       # φ_cl of the residual gases (scavenging < 1)
     recharge: float = 1.0        # φ_rc, the recharge coefficient
     psi_r: float = 1.0           # ψ of T_a: residual gases' to charge's heat capacity
+    pumping: bool = False        # p_i less the pumping loop p_r − p_a (else in the mech. losses)
 
 
 @dataclass(frozen=True)
@@ -188,6 +189,13 @@ def mean_indicated_theory(p_c: float, epsilon: float, lam: float, rho: float, n1
                                     - (1.0 - epsilon ** (1.0 - n1)) / (n1 - 1.0))
 
 
+def mean_indicated(p_it: float, phi_i: float, pumping: float = 0.0) -> float:
+    """The mean indicated pressure of the rounded diagram p_i = φ_i·p_i′ − Δp_pump; the pumping
+    loop Δp_pump = p_r − p_a subtracted here in some courses, among the mechanical losses (0
+    here) in Kolchin–Demidov's."""
+    return phi_i * p_it - pumping
+
+
 def products_of(s: CycleSpec, L0: float) -> dict[str, float]:
     """kmol of each combustion product per kg of fuel."""
     if s.alpha < 1.0:
@@ -274,7 +282,7 @@ def thermal_cycle(s: CycleSpec) -> Cycle:
         delta = eps
     p_b, T_b = expansion(p_z, T_z, delta, s.n2)
     p_it = mean_indicated_theory(p_c, eps, lam, rho, s.n1, s.n2)
-    p_i = s.phi_i * p_it
+    p_i = mean_indicated(p_it, s.phi_i, s.p_r - s.p_a if s.pumping else 0.0)
     rho_k = s.p0 / (R_AIR * s.T0)
     eta_i = p_i * l0 * s.alpha / (s.H_u * 1e3 * rho_k * eta_v)
     g_i = 3.6e6 / (s.H_u * eta_i)

@@ -16,7 +16,8 @@ KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alp
         "p0", "T0", "dT", "p_a", "p_r", "T_r", "n1", "n2", "xi_z", "lambda_p", "K", "phi_i",
         "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity", "coolant_c",
         "coolant_m", "combustion", "combustion_start", "combustion_duration", "wiebe_m",
-        "wiebe_a", "air_oxygen", "heat_capacity", "clean_out", "recharge", "residual_heat")
+        "wiebe_a", "air_oxygen", "heat_capacity", "clean_out", "recharge", "residual_heat",
+        "pumping_loss")
 
 
 def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
@@ -120,13 +121,15 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
     clean = _number(t, "clean_out", 1.0, 0.0, 1.0, "the clean-out coefficient φ_cl")
     recharge = _number(t, "recharge", 1.0, 0.9, 1.2, "the recharge coefficient φ_rc")
     psi = _number(t, "residual_heat", 1.0, 0.8, 1.3, "ψ of T_a (residual gases' heat capacity)")
+    pumping = t.string("pumping_loss", "mechanical",
+                       choices=("mechanical", "indicated")) == "indicated"
     if not eps * recharge * p_a > clean * p_r:
         raise t.error("p_r", Text("cycle.error.residual"))
     spec = CycleSpec(diesel, C, H, O, Hu * 1e3, m_f if not diesel else 0.0, alpha, eps,
                      speed * 30.0 / 3.141592653589793, p_amb, T0, dT, p_a, p_r, T_r, n1, n2, xi,
                      lam_p, K, phi_i, eta_m, strokes, cylinders,
                      power * 1e3 if power is not None else None, S_D, c_w, m_w, o2, fits, clean,
-                     recharge, psi)
+                     recharge, psi, pumping)
     cycle = thermal_cycle(spec)
     if not cycle.rho < eps:
         raise t.error("xi_z", Text("cycle.error.rho", {"rho": cycle.rho}))
