@@ -4,7 +4,10 @@ The same algorithm in the same order of operations — the window's cells with t
 splitting theirs, the general cells (nodes sorted) where the window does not decide, Newton's
 iteration and the safeguarded one — so the fused kernel's θ is the numpy path's. Compiled by
 numba once per machine like ``kernel_helpers`` (plain Python without numba); every generated
-kernel that has a triad calls :func:`_triad_angle`.
+kernel that has a triad calls :func:`_triad_angle`, passing the solver's constants
+(:data:`CONSTANTS`, so a compiled copy cached on disk never keeps old ones: numba's cache knows
+this file's date, not ``triad_solve``'s) and the cosines and sines of the window's nodes as the
+numpy path computes them (:func:`window_trig`).
 """
 
 from __future__ import annotations
@@ -14,12 +17,23 @@ import math
 import numpy as np
 
 from .kernel_helpers import _div, _jit
-from .ops.triad_solve import GRID, ITERATIONS, PURE, RESIDUAL_ULPS, STEP_TOL, WINDOW
+from .ops.triad_solve import GRID, ITERATIONS, PURE, RESIDUAL_ULPS, SETTLE, STEP_TOL, WINDOW
 
 NAN = math.nan
 INF = math.inf
 TWO_PI = 2 * math.pi
 EPS = float(np.finfo(float).eps)
+
+#: the solver's counts (grid, window, Newton steps at most and before settling, iterations) and
+#: tolerances (step, residual in roundings), passed to :func:`_triad_angle` by every kernel
+CONSTANTS = ((GRID, WINDOW, PURE, SETTLE, ITERATIONS), (STEP_TOL, RESIDUAL_ULPS))
+
+
+def window_trig(ref: float) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """cos θ and sin θ of the window's nodes about ``ref``, as ``triad_solve._window`` computes
+    them (the same values)."""
+    th = np.arange(-WINDOW, WINDOW + 1) * (2 * math.pi / GRID) + ref
+    return tuple(float(v) for v in np.cos(th)), tuple(float(v) for v in np.sin(th))
 
 
 @_jit
@@ -77,7 +91,15 @@ def _value(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y: floa
            theta: float, l1: float, l2: float, l3: float, d2x: float, d2y: float, d3x: float,
            d3y: float, sg: float) -> float:
     """f(θ) alone, as ``triad_solve._values`` computes it."""
-    c, s = math.cos(theta), math.sin(theta)
+    return _value_cs(a1x, a1y, a2x, a2y, a3x, a3y, math.cos(theta), math.sin(theta), l1, l2, l3,
+                     d2x, d2y, d3x, d3y, sg)
+
+
+@_jit
+def _value_cs(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y: float,
+              c: float, s: float, l1: float, l2: float, l3: float, d2x: float, d2y: float,
+              d3x: float, d3y: float, sg: float) -> float:
+    """f at the angle of cosine ``c`` and sine ``s``."""
     dx = a2x - (c * d2x - s * d2y) - a1x
     dy = a2y - (s * d2x + c * d2y) - a1y
     dd = dx * dx + dy * dy
@@ -114,18 +136,22 @@ def _turn(v: float, lo: float) -> float:
 
 
 @_jit
-def _window(a: tuple[float, ...], p: tuple[float, ...]) -> tuple[float, float, float, float, bool]:
-    """The window's bracket (lo, hi, f(lo), f(hi), decided) as ``triad_solve._window``."""
+def _window(a: tuple[float, ...], p: tuple[float, ...], counts: tuple[int, ...],
+            cth: tuple[float, ...], sth: tuple[float, ...]
+            ) -> tuple[float, float, float, float, bool]:
+    """The window's bracket (lo, hi, f(lo), f(hi), decided) as ``triad_solve._window`` (the
+    nodes' cosines and sines given)."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg, slope, ref = p[0], p[1], p[2], p[3], p[4], p[5], p[6], \
         p[7], p[8], p[9]
-    dt = TWO_PI / GRID
-    m = 2 * WINDOW + 1
+    grid, window = counts[0], counts[1]
+    dt = TWO_PI / grid
+    m = 2 * window + 1
     th = np.empty(m)
     f = np.empty(m)
     for j in range(m):
-        th[j] = float(j - WINDOW) * dt + ref
-        f[j] = _value(a[0], a[1], a[2], a[3], a[4], a[5], th[j], l1, l2, l3, d2x, d2y, d3x,
-                      d3y, sg)
+        th[j] = float(j - window) * dt + ref
+        f[j] = _value_cs(a[0], a[1], a[2], a[3], a[4], a[5], cth[j], sth[j], l1, l2, l3, d2x,
+                         d2y, d3x, d3y, sg)
     e = _edges(a[0], a[1], a[2], a[3], l1, l2, d2x, d2y, th[0])
     split = np.zeros(m - 1, np.bool_)
     cell = np.full(4, -1, np.int64)
@@ -164,15 +190,16 @@ def _window(a: tuple[float, ...], p: tuple[float, ...]) -> tuple[float, float, f
 
 
 @_jit
-def _general(a: tuple[float, ...], p: tuple[float, ...]
+def _general(a: tuple[float, ...], p: tuple[float, ...], counts: tuple[int, ...]
              ) -> tuple[float, float, float, float, bool, float]:
     """The general cells (the domain's edges as nodes, sorted): the window, then the whole
     turn; (lo, hi, f(lo), f(hi), found, least |f| over the turn) as ``triad_solve._general``."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg, slope, ref = p[0], p[1], p[2], p[3], p[4], p[5], p[6], \
         p[7], p[8], p[9]
-    dt = TWO_PI / GRID
+    grid, window = counts[0], counts[1]
+    dt = TWO_PI / grid
     miss = INF
-    for half in (WINDOW, GRID // 2):
+    for half in (window, grid // 2):
         m = 2 * half + 1
         first = float(-half) * dt + ref
         last = float(half) * dt + ref
@@ -202,7 +229,7 @@ def _general(a: tuple[float, ...], p: tuple[float, ...]
                 dist = abs(0.5 * (nodes[j] + nodes[j + 1]) - ref)
                 if dist < best:
                     best, blo, bhi, bf0, bf1 = dist, nodes[j], nodes[j + 1], f0, f1
-        if half == GRID // 2:
+        if half == grid // 2:
             for j in range(k):
                 if abs(f[j]) < miss:       # noqa: PLR1730 - NaN never replaces it
                     miss = abs(f[j])
@@ -213,32 +240,37 @@ def _general(a: tuple[float, ...], p: tuple[float, ...]
 
 @_jit
 def _newton(a: tuple[float, ...], p: tuple[float, ...], lo: float, hi: float, flo: float,
-            fhi: float, size: float) -> tuple[float, float, float, float]:
+            fhi: float, size: float, counts: tuple[int, ...], tols: tuple[float, float]
+            ) -> tuple[float, float, float, float]:
     """θ and f, f′, the arcs' sine at the last point evaluated, as ``triad_solve.newton``."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg = p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]
-    small = RESIDUAL_ULPS * EPS * size
+    pure, settle, iterations = counts[2], counts[3], counts[4]
+    step_tol = tols[0]
+    small = tols[1] * EPS * size
     lo0, hi0, flo0, fhi0 = lo, hi, flo, fhi
     x = hi - _div(fhi * (hi - lo), fhi - flo)
     if not (x > lo and x < hi):
         x = 0.5 * (lo + hi)
     prev = step = fx = fp = sx = x
-    for _ in range(PURE):
+    for it in range(pure):
         fx, fp, sx = _closure(a[0], a[1], a[2], a[3], a[4], a[5], x, l1, l2, l3, d2x, d2y, d3x,
                               d3y, sg)
         prev, step = step, _div(fx, fp)
         x = x - step
-    tol = STEP_TOL * (1.0 + abs(x))
-    s = abs(step)
-    done = (s * s * s <= tol * prev * prev and s <= 1e-6) or (s <= tol and abs(fx) <= small)
-    if done and x >= lo and x <= hi:
-        return x, fx, fp, sx
+        if it + 1 < settle:
+            continue
+        tol = step_tol * (1.0 + abs(x))
+        s = abs(step)
+        done = (s * s * s <= tol * prev * prev and s <= 1e-6) or (s <= tol and abs(fx) <= small)
+        if done and x >= lo and x <= hi:
+            return x, fx, fp, sx
     # the safeguarded iteration, from the secant point again
     lo, hi, flo, fhi = lo0, hi0, flo0, fhi0
     x = hi - _div(fhi * (hi - lo), fhi - flo)
     if not (x > lo and x < hi):
         x = 0.5 * (lo + hi)
     fx, fp, sx, xo = NAN, NAN, NAN, x
-    for _ in range(ITERATIONS):
+    for _ in range(iterations):
         xo = x
         fx, fp, sx = _closure(a[0], a[1], a[2], a[3], a[4], a[5], x, l1, l2, l3, d2x, d2y, d3x,
                               d3y, sg)
@@ -249,7 +281,7 @@ def _newton(a: tuple[float, ...], p: tuple[float, ...], lo: float, hi: float, fl
         step = _div(fx, fp)
         xn = x - step
         inside = math.isfinite(fp) and xn >= lo and xn <= hi
-        done = fx == 0.0 or (inside and abs(step) <= STEP_TOL * (1.0 + abs(x))
+        done = fx == 0.0 or (inside and abs(step) <= step_tol * (1.0 + abs(x))
                              and abs(fx) <= small)
         if not math.isfinite(fx):
             return NAN, fx, fp, sx
@@ -264,18 +296,20 @@ def _newton(a: tuple[float, ...], p: tuple[float, ...], lo: float, hi: float, fl
 @_jit
 def _triad_angle(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y: float,
                  l1: float, l2: float, l3: float, d2x: float, d2y: float, d3x: float, d3y: float,
-                 sigma: float, slope: float, ref: float, size: float
+                 sigma: float, slope: float, ref: float, size: float, counts: tuple[int, ...],
+                 tols: tuple[float, float], cth: tuple[float, ...], sth: tuple[float, ...]
                  ) -> tuple[float, float, float]:
-    """θ of the base link, the gap and the sine at one position, as ``triad_solve.solve``."""
+    """θ of the base link, the gap and the sine at one position, as ``triad_solve.solve``
+    (``counts``, ``tols``: :data:`CONSTANTS`; ``cth``, ``sth``: :func:`window_trig`)."""
     a = (a1x, a1y, a2x, a2y, a3x, a3y)
     p = (l1, l2, l3, d2x, d2y, d3x, d3y, sigma, slope, ref)
-    lo, hi, flo, fhi, found = _window(a, p)
+    lo, hi, flo, fhi, found = _window(a, p, counts, cth, sth)
     miss = INF
     if not found:
-        lo, hi, flo, fhi, found, miss = _general(a, p)
+        lo, hi, flo, fhi, found, miss = _general(a, p, counts)
     if not found:
         return NAN, (miss if miss < INF else size), 0.0
-    theta, fb, fp, cc = _newton(a, p, lo, hi, flo, fhi, size)
+    theta, fb, fp, cc = _newton(a, p, lo, hi, flo, fhi, size, counts, tols)
     if not math.isfinite(theta):
         return NAN, (miss if miss < INF else size), 0.0
     sine = abs(fp) * cc / size
