@@ -222,7 +222,10 @@ def _window(a1: Array, a2: Array, a3: Array, t: Triad) -> tuple[Cells, Array]:
     e = np.where(inside, e, np.nan)
     cell = np.clip(np.floor((e - th[0]) / dt), 0, 2 * WINDOW - 1)
     cell = np.where(inside, cell, 0).astype(np.intp)
-    fe = _values(a, e, t)
+    fe = np.full(e.shape, np.nan)
+    for m in range(e.shape[0]):                            # f at an edge where it is inside
+        at = np.nonzero(inside[m])[0]
+        fe[m, at] = _values(tuple(v[at] for v in a), e[m, at], t)
     split = np.zeros((2 * WINDOW, n), bool)
     twice = np.zeros(n, bool)
     r = np.arange(n)
