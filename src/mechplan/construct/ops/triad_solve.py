@@ -486,9 +486,29 @@ def newton(a1: Array, a2: Array, a3: Array, c: Cells, t: Triad
     return out[0], out[1], out[2], out[3]
 
 
+#: positions solved together: each position is solved alone, so blocks give the same values;
+#: a block's temporaries stay in the cache and in memory already mapped (measured on 100 000
+#: positions: 16 384 at a time took 0.6× the time of all at once)
+BLOCK = 16384
+
+
 def solve(a1: Array, a2: Array, a3: Array, t: Triad) -> tuple[Array, Array, Array]:
     """θ of the base link at every position, the gap (−|f| at the root; where the group does not
-    close, the least |f| over the branch) and the sine (|f′|·arcs' sine / size)."""
+    close, the least |f| over the branch) and the sine (|f′|·arcs' sine / size); ``BLOCK``
+    positions at a time."""
+    n = a1.shape[0]
+    if n <= BLOCK:
+        return _solve(a1, a2, a3, t)
+    out = tuple(np.empty(n) for _ in range(3))
+    for i in range(0, n, BLOCK):
+        part = slice(i, i + BLOCK)
+        for mine, theirs in zip(out, _solve(a1[part], a2[part], a3[part], t), strict=True):
+            mine[part] = theirs
+    return out[0], out[1], out[2]
+
+
+def _solve(a1: Array, a2: Array, a3: Array, t: Triad) -> tuple[Array, Array, Array]:
+    """:func:`solve` for one block."""
     cells = select(a1, a2, a3, t)
     theta, fb, fp, cc_sine = newton(a1, a2, a3, cells, t)
     found = cells.found & np.isfinite(theta)
