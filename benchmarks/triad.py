@@ -14,16 +14,27 @@ group against a dyad" of ``benchmarks/RESULTS.md``.
   kernel of the crank's point alone, for each mechanism — the group's share of the fused loop.
 
 Times are the process's CPU time (``time.process_time``: on a shared machine the time the process
-was not running is not counted; the page faults of fresh arrays are). The rounds alternate the
-two mechanisms, each evaluated once untimed first, and each ratio is the median over rounds of the
-ratio within a round (both measured under the same load).
+was not running is not counted; the page faults of fresh arrays are). Each numpy measurement runs
+in a fresh process, so both mechanisms are measured in the same state of memory — a group's
+cost depended on the other's before (the four-bar's arrays fit in memory the allocator had kept
+from an earlier evaluation, the six-bar's did not and paid the first touch of every page):
+
+- cold: the first evaluation of the process (as a user's one run: every fresh array's pages
+  touched for the first time are counted);
+- warm: the second evaluation, the allocator told to keep freed memory (``MALLOC_TRIM_THRESHOLD_``,
+  ``MALLOC_MMAP_THRESHOLD_``): the arithmetic alone.
+
+The rounds alternate the two mechanisms and each ratio is the median over rounds of the ratio
+within a round (both measured under the same load).
 """
 
 from __future__ import annotations
 
+import json
 import math
 import os
 import statistics
+import subprocess
 import sys
 import time
 from collections import defaultdict
@@ -45,6 +56,7 @@ ROOT = HERE.parent / "templates"
 KINEMATIC = ("position", "velocity", "acceleration")
 ROUNDS = 7
 GROUPS = {"six_bar_triad": "III(2,3,4,5)", "four_bar": "II(2,3)"}
+MODES = ("cold", "warm")
 SIMILAR = ("similar_position", "similar_image")
 clock = time.process_time
 
@@ -63,11 +75,11 @@ def construction(stem: str) -> tuple[Construction, set[str]]:
     return c, extra
 
 
-def numpy_times(stem: str, c: Construction, extra: set[str], phi: np.ndarray
+def numpy_times(stem: str, c: Construction, extra: set[str], phi: np.ndarray, warm: bool
                 ) -> dict[str, float]:
-    """CPU seconds spent evaluating the group's steps at the positions ``phi`` (one run after an
-    untimed one): all of them (``group``), without the extra points (``own``), the triad's
-    closure alone (``closure``)."""
+    """CPU seconds spent evaluating the group's steps at the positions ``phi`` (the first
+    evaluation, or ``warm`` the second): all of them (``group``), without the extra points
+    (``own``), the triad's closure alone (``closure``)."""
     spent: dict[str, float] = defaultdict(float)
     original = graph.Evaluation._compute
 
@@ -82,7 +94,8 @@ def numpy_times(stem: str, c: Construction, extra: set[str], phi: np.ndarray
         if step.op.value == "triad_angle":  # type: ignore[attr-defined]
             spent["closure"] += dt
 
-    c.evaluate(phi).evaluate_all(list(c.steps))
+    if warm:
+        c.evaluate(phi).evaluate_all(list(c.steps))
     graph.Evaluation._compute = timed  # type: ignore[method-assign]
     try:
         ev = c.evaluate(phi)
@@ -116,20 +129,36 @@ def kernel_runner(stem: str, phi: np.ndarray, crank_only: bool):
     return run
 
 
+KEEP = {"MALLOC_TRIM_THRESHOLD_": "4000000000", "MALLOC_MMAP_THRESHOLD_": "1000000000"}
+
+
+def child(stem: str, mode: str, n: int) -> dict[str, float]:
+    """:func:`numpy_times` in a fresh process (``mode``: cold or warm)."""
+    env = {**os.environ, **(KEEP if mode == "warm" else {})}
+    out = subprocess.run([sys.executable, __file__, "--child", stem, mode, str(n)], env=env,
+                         check=True, capture_output=True, text=True).stdout
+    result: dict[str, float] = json.loads(out.strip().splitlines()[-1])
+    return result
+
+
 def main() -> None:
+    if sys.argv[1:2] == ["--child"]:
+        stem, mode, count = sys.argv[2:5]
+        phi = np.linspace(0.0, 2 * np.pi, int(count), endpoint=False)
+        print(json.dumps(numpy_times(stem, *construction(stem), phi, mode == "warm")))
+        return
     n = int(sys.argv[1]) if len(sys.argv) > 1 else 100_000
     phi = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
     load0 = os.getloadavg()[0]
     rows: dict[str, list[float]] = defaultdict(list)
-    built = {stem: construction(stem) for stem in GROUPS}
     for _ in range(ROUNDS):
-        t3 = numpy_times("six_bar_triad", *built["six_bar_triad"], phi)
-        t2 = numpy_times("four_bar", *built["four_bar"], phi)
-        for key in ("group", "own"):
-            rows[f"np3_{key}"].append(t3[key])
-            rows[f"np2_{key}"].append(t2[key])
-            rows[f"np_ratio_{key}"].append(t3[key] / t2[key])
-        rows["closure"].append(t3["closure"])
+        for mode in MODES:
+            t3, t2 = child("six_bar_triad", mode, n), child("four_bar", mode, n)
+            for key in ("group", "own"):
+                rows[f"{mode}3_{key}"].append(t3[key])
+                rows[f"{mode}2_{key}"].append(t2[key])
+                rows[f"{mode}_ratio_{key}"].append(t3[key] / t2[key])
+            rows[f"{mode}_closure"].append(t3["closure"])
     fused = True
     try:
         runners = {(s, crank): kernel_runner(s, phi, crank)
@@ -151,12 +180,13 @@ def main() -> None:
         return f"{x / n * 1e6:.2f} µs"
 
     lines = [("| path | class III III(2,3,4,5) per position | of it the closure | "
-             "class II II(2,3) per position | ratio III / II |"), "|---|---|---|---|---|",
-             (f"| numpy, the group's construction | {us(med['np3_own'])} | {us(med['closure'])} "
-              f"| {us(med['np2_own'])} | **{med['np_ratio_own']:.2f}×** |"),
-             (f"| numpy, with the links' other points | {us(med['np3_group'])} | "
-              f"{us(med['closure'])} | {us(med['np2_group'])} | "
-              f"**{med['np_ratio_group']:.2f}×** |")]
+             "class II II(2,3) per position | ratio III / II |"), "|---|---|---|---|---|"]
+    for mode in MODES:
+        for key, what in (("own", "the group's construction"),
+                          ("group", "with the links' other points")):
+            lines.append(f"| numpy {mode}, {what} | {us(med[f'{mode}3_{key}'])} | "
+                         f"{us(med[f'{mode}_closure'])} | {us(med[f'{mode}2_{key}'])} | "
+                         f"**{med[f'{mode}_ratio_{key}']:.2f}×** |")
     if fused:
         lines.append(f"| fused kernel (numba, one thread) | {us(med['k3'])} | — | "
                      f"{us(med['k2'])} | **{med['k_ratio']:.2f}×** |")
@@ -170,8 +200,10 @@ def main() -> None:
         "velocity and acceleration plans) timed and summed — the group's construction (its "
         "pairs, the special point, ω and ε), and with the points its links carry besides "
         "(centres of mass S2…S5 of the six-bar, the coupler point E of the four-bar); the "
-        "closure is `triad_angle` (the base link's angle). Fused: the kernel of every point and "
-        "link less the kernel of the crank's point, one thread."), "",
+        "closure is `triad_angle` (the base link's angle). Each in a fresh process: cold, the "
+        "first evaluation (every new array's first touch counted, as in one run); warm, the "
+        "second with the allocator keeping freed memory (the arithmetic alone). Fused: the "
+        "kernel of every point and link less the kernel of the crank's point, one thread."), "",
         *lines, "",
         ("Goal (issue 29): a class III group costs at most 3× a dyad per position in the numpy "
         "path.")])
