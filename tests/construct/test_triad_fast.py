@@ -24,6 +24,7 @@ import numpy as np
 import pytest
 
 from mechplan.construct.kernel_triad import CONSTANTS, _triad_angle, window_trig
+from mechplan.construct.kernel_triad import _window as scalar_window
 from mechplan.construct.ops import triad_solve as ts
 from mechplan.construct.ops.triad import params
 from mechplan.scene import load_scene, parse_scene
@@ -90,6 +91,27 @@ def test_the_window_takes_the_general_cells_bracket(sweep):
     for name in ("lo", "hi", "flo", "fhi"):
         np.testing.assert_array_equal(getattr(cells, name)[found], getattr(ref, name)[found],
                                       err_msg=name)
+
+
+def test_the_scalar_window_takes_the_numpy_windows_bracket(sweep):
+    """The fused kernel's window (no arrays, each edge's halves offered at its cell) decides
+    where the numpy path's does, with the same cell and the same values at its ends (a domain
+    edge, from libm's arccos and arctan2 there and numpy's here, within a few roundings, and f
+    there within the square root of that)."""
+    a1, a2, a3, t = sweep
+    cells, found = ts._window(a1, a2, a3, t)
+    counts, _ = CONSTANTS
+    cth, sth = window_trig(t.ref)
+    p = (t.l1, t.l2, t.l3, *t.d2, *t.d3, float(t.sigma), float(t.slope), t.ref)
+    for k in range(a1.shape[0]):
+        lo, hi, flo, fhi, ok = scalar_window((*a1[k], *a2[k], *a3[k]), p, counts, cth, sth)
+        assert ok == found[k]
+        if ok:
+            for x, f, x_np, f_np in ((lo, flo, cells.lo[k], cells.flo[k]),
+                                     (hi, fhi, cells.hi[k], cells.fhi[k])):
+                assert abs(x - x_np) <= 4e-15
+                # at a node the same value; at an edge f′ is infinite (the half-chord ∝ √)
+                assert abs(f - f_np) <= (1e-15 if x == x_np else 1e-7 * t.size)
 
 
 def test_roots_agree_with_a_secant_to_the_last_bit(sweep):

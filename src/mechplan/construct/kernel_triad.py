@@ -136,57 +136,80 @@ def _turn(v: float, lo: float) -> float:
 
 
 @_jit
+def _cell(e: float, th0: float, thl: float, dt: float, m: int) -> int:
+    """The window's cell of a domain edge (−1: not inside), as ``triad_solve._window``."""
+    if not e <= thl:
+        return -1
+    return int(min(max(math.floor((e - th0) / dt), 0), m - 2))
+
+
+@_jit
 def _window(a: tuple[float, ...], p: tuple[float, ...], counts: tuple[int, ...],
             cth: tuple[float, ...], sth: tuple[float, ...]
             ) -> tuple[float, float, float, float, bool]:
     """The window's bracket (lo, hi, f(lo), f(hi), decided) as ``triad_solve._window`` (the
-    nodes' cosines and sines given)."""
+    nodes' cosines and sines given). No arrays: the nodes are visited once, each edge's halves
+    offered at its cell; the candidates' order in the numpy path's list (unsplit cells, halves
+    left of the edges, halves right of them) breaks ties of distance, so the visit's order does
+    not matter."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg, slope, ref = p[0], p[1], p[2], p[3], p[4], p[5], p[6], \
         p[7], p[8], p[9]
     grid, window = counts[0], counts[1]
     dt = TWO_PI / grid
     m = 2 * window + 1
-    th = np.empty(m)
-    f = np.empty(m)
-    for j in range(m):
-        th[j] = float(j - window) * dt + ref
-        f[j] = _value_cs(a[0], a[1], a[2], a[3], a[4], a[5], cth[j], sth[j], l1, l2, l3, d2x,
-                         d2y, d3x, d3y, sg)
-    e = _edges(a[0], a[1], a[2], a[3], l1, l2, d2x, d2y, th[0])
-    split = np.zeros(m - 1, np.bool_)
-    cell = np.full(4, -1, np.int64)
-    fe = np.full(4, NAN)
+    th0 = float(-window) * dt + ref
+    thl = float(window) * dt + ref
+    e = _edges(a[0], a[1], a[2], a[3], l1, l2, d2x, d2y, th0)
+    cs = (_cell(e[0], th0, thl, dt, m), _cell(e[1], th0, thl, dt, m),
+          _cell(e[2], th0, thl, dt, m), _cell(e[3], th0, thl, dt, m))
     twice = False
     for k in range(4):
-        if e[k] <= th[m - 1]:
-            c = min(max(math.floor((e[k] - th[0]) / dt), 0), m - 2)
-            cell[k] = c
-            twice = twice or split[c]
-            split[c] = True
-            fe[k] = _value(a[0], a[1], a[2], a[3], a[4], a[5], e[k], l1, l2, l3, d2x, d2y, d3x,
-                           d3y, sg)
-    best, blo, bhi, bf0, bf1 = INF, NAN, NAN, NAN, NAN
-    # the candidates in the numpy path's order: unsplit cells, left halves, right halves
-    for part in range(3):
-        n = m - 1 if part == 0 else 4
-        for j in range(n):
-            if part == 0:
-                if split[j]:
+        for q in range(k + 1, 4):
+            if cs[k] >= 0 and cs[k] == cs[q]:
+                twice = True
+    fe = (NAN, NAN, NAN, NAN)
+    if cs[0] >= 0 or cs[1] >= 0 or cs[2] >= 0 or cs[3] >= 0:
+        fe = (_fe(a, p, e[0], cs[0]), _fe(a, p, e[1], cs[1]), _fe(a, p, e[2], cs[2]),
+              _fe(a, p, e[3], cs[3]))
+    best, key, blo, bhi, bf0, bf1 = INF, 0, NAN, NAN, NAN, NAN
+    lo = th0
+    f0 = _value_cs(a[0], a[1], a[2], a[3], a[4], a[5], cth[0], sth[0], l1, l2, l3, d2x, d2y,
+                   d3x, d3y, sg)
+    for j in range(m - 1):
+        hi = float(j + 1 - window) * dt + ref
+        f1 = _value_cs(a[0], a[1], a[2], a[3], a[4], a[5], cth[j + 1], sth[j + 1], l1, l2, l3,
+                       d2x, d2y, d3x, d3y, sg)
+        split = cs[0] == j or cs[1] == j or cs[2] == j or cs[3] == j
+        if not split and f0 * f1 <= 0 and (f1 - f0) * slope > 0:
+            dist = abs(0.5 * (lo + hi) - ref)
+            if dist < best or (dist == best and j < key):
+                best, key, blo, bhi, bf0, bf1 = dist, j, lo, hi, f0, f1
+        if split:
+            for k in range(4):
+                if cs[k] != j:
                     continue
-                lo, hi, f0, f1 = th[j], th[j + 1], f[j], f[j + 1]
-            else:
-                c = cell[j]
-                if c < 0:
-                    continue
-                if part == 1:
-                    lo, hi, f0, f1 = th[c], e[j], f[c], fe[j]
-                else:
-                    lo, hi, f0, f1 = e[j], th[c + 1], fe[j], f[c + 1]
-            if f0 * f1 <= 0 and (f1 - f0) * slope > 0:
-                dist = abs(0.5 * (lo + hi) - ref)
-                if dist < best:
-                    best, blo, bhi, bf0, bf1 = dist, lo, hi, f0, f1
+                # the half left of edge k (after every unsplit cell), then the one right of it
+                if f0 * fe[k] <= 0 and (fe[k] - f0) * slope > 0:
+                    dist = abs(0.5 * (lo + e[k]) - ref)
+                    kk = m + k
+                    if dist < best or (dist == best and kk < key):
+                        best, key, blo, bhi, bf0, bf1 = dist, kk, lo, e[k], f0, fe[k]
+                if fe[k] * f1 <= 0 and (f1 - fe[k]) * slope > 0:
+                    dist = abs(0.5 * (e[k] + hi) - ref)
+                    kk = m + 4 + k
+                    if dist < best or (dist == best and kk < key):
+                        best, key, blo, bhi, bf0, bf1 = dist, kk, e[k], hi, fe[k], f1
+        lo, f0 = hi, f1
     return blo, bhi, bf0, bf1, best < INF and not twice
+
+
+@_jit
+def _fe(a: tuple[float, ...], p: tuple[float, ...], e: float, cell: int) -> float:
+    """f at a domain edge inside the window (NaN where it is not)."""
+    if cell < 0:
+        return NAN
+    return _value(a[0], a[1], a[2], a[3], a[4], a[5], e, p[0], p[1], p[2], p[3], p[4], p[5],
+                  p[6], p[7])
 
 
 @_jit
