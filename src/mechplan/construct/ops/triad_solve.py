@@ -238,7 +238,7 @@ def _window(a1: Array, a2: Array, a3: Array, t: Triad) -> tuple[Cells, Array]:
     th = k * dt + t.ref
     a = tuple(np.ascontiguousarray(p[:, j]) for p in (a1, a2, a3) for j in (0, 1))
     f = _values(a, th[:, None], t)                        # (nodes, N)
-    e = _in_turn(np.stack(_edge_rows(*a[:4], t)), th[0])  # (4, N)
+    e = _in_turn(np.stack(_edge_rows(a[0], a[1], a[2], a[3], t)), th[0])  # (4, N)
     inside = e <= th[-1]                                   # NaN compares False
     some = inside.any(axis=1)
     e, inside = e[some], inside[some]                     # the edges inside at some position
