@@ -24,6 +24,7 @@ from __future__ import annotations
 import itertools
 
 import pytest
+from helpers import diesel_2600
 
 from mechplan.errors import SceneError
 from mechplan.i18n import message, number
@@ -139,30 +140,8 @@ def test_intake_of_the_ukrbukva_diesel():
                    (1.3645, 1.3655))
 
 
-SCENE = """
-kind = "engine"
-[engine]
-speed = "2600 rpm"
-bore = "120 mm"
-crank_radius = "60 mm"
-rod_length = "225 mm"
-[masses]
-piston = "2 kg"
-rod = "3 kg"
-rod_small_end = "1 kg"
-[thermal]
-fuel = "diesel"
-alpha = 1.6
-epsilon = 16
-p_a = "88 kPa"
-p_r = "110 kPa"
-T_r = 750
-n1 = 1.37
-n2 = 1.26
-xi_z = 0.82
-lambda_p = 1.7
-{extra}
-"""
+SCENE = diesel_2600(alpha=1.6, epsilon=16,
+                    thermal_extra="lambda_p = 1.7\n{extra}")
 
 
 def test_scene_option_runs_the_linear_fits():
