@@ -21,7 +21,7 @@ from ..model.mechanism import Drive, DriverKind, Guide, Link, Pair
 from .reader import Table
 
 #: keys of [drive2] with a second crank
-SECOND_KEYS = ("kind", "link", "speed", "omega", "sense", "from", "epsilon", "phase")
+SECOND_KEYS = ("kind", "link", "speed", "omega", "sense", "from", "epsilon", "phase", "law")
 
 
 def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
@@ -42,6 +42,8 @@ def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
         from .loader import crank_drive
 
         drive = crank_drive(d, links, guides, pairs)
+        if drive.law is not None and d.has("phase"):     # its table gives φ2 at every time
+            raise d.error("phase", Text("drives2.law.not_both", {"key": "phase"}))
         drive = replace(drive, phase=d.quantity("phase", "angle", 0.0) or 0.0)
     if drive.link == first.link:
         raise d.error("link", Text(

@@ -111,9 +111,12 @@ def emit_position(b: Builder) -> None:
     crank = b.mech.links[drive.link]
     pivot = drive.pivot
     tip = _tip(b, drive)
-    theta = b.add(f"pos.phi.{drive.link}", Op.SECOND_CRANK_ANGLE, (_first_step(b),), P, Kind.SCALAR,
-                  Role.GIVEN, f"θ{drive.link}", group, subject=(b.mech.drive.link, drive.link),
-                  offset=offset, ratio=ratio)
+    from .crank_law import angle
+
+    theta = angle(b, drive, group) or b.add(
+        f"pos.phi.{drive.link}", Op.SECOND_CRANK_ANGLE, (_first_step(b),), P, Kind.SCALAR,
+        Role.GIVEN, f"θ{drive.link}", group, subject=(b.mech.drive.link, drive.link),
+        offset=offset, ratio=ratio)
     base = _local_angle(b, drive.link, pivot, tip)
     for name in crank.points:
         if name == pivot:
@@ -142,12 +145,19 @@ def emit_velocity(b: Builder) -> None:
         return
     group, tip = group_name(drive), _tip(b, drive)
     body = b.bodies[drive.link]
-    body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR, Role.GIVEN,
-                       f"ω{drive.link}", group, value=drive.omega)
+    from .crank_law import rate, sizes
+
+    by_law, omega = rate(b, drive, V, group), drive.omega
+    if by_law is None:
+        body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR,
+                           Role.GIVEN, f"ω{drive.link}", group, value=drive.omega)
+    else:                   # a law by a table: ω2 of each position (plans/crank_law.py)
+        body.omega, omega = by_law, sizes(drive)[0]
     b.result(f"omega_{drive.link}", body.omega)
-    b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY, (b.pos[drive.pivot], b.pos[tip]), V,
-                       Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
-                       omega=drive.omega)
+    b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY,
+                       (b.pos[drive.pivot], b.pos[tip], *(() if by_law is None else (by_law,))),
+                       V, Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
+                       omega=omega)
     b.c.equations[(V, group)] = (
         f"v_{tip} = ω{drive.link} × l_{drive.pivot}{tip}",
         [(f"v_{tip}", perp(f"{drive.pivot}{tip}"), f"ω{drive.link}·l_{drive.pivot}{tip}")])
@@ -165,14 +175,23 @@ def emit_acceleration(b: Builder) -> None:
         return
     group, tip = group_name(drive), _tip(b, drive)
     body = b.bodies[drive.link]
-    body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR,
-                         Role.GIVEN, f"ε{drive.link}", group, value=drive.epsilon)
+    from .crank_law import rate, sizes
+
+    by_law, rates = rate(b, drive, A, group), (drive.omega, drive.epsilon)
+    extra: tuple[str, ...] = ()
+    if by_law is None:
+        body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR,
+                             Role.GIVEN, f"ε{drive.link}", group, value=drive.epsilon)
+    else:                   # a law by a table: ω2 and ε2 of each position
+        assert body.omega is not None
+        body.epsilon, rates, extra = by_law, sizes(drive), (body.omega, by_law)
     b.result(f"epsilon_{drive.link}", body.epsilon)
-    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
+    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION,
+                       (b.pos[drive.pivot], b.pos[tip], *extra), A,
                        Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
-                       omega=drive.omega, epsilon=drive.epsilon)
+                       omega=rates[0], epsilon=rates[1])
     rows = [(f"a^n_{tip}", from_to(tip, drive.pivot), f"ω{drive.link}²·l_{drive.pivot}{tip}")]
-    if drive.epsilon:
+    if rates[1]:
         rows.append((f"a^t_{tip}", perp(f"{drive.pivot}{tip}"),
                      f"ε{drive.link}·l_{drive.pivot}{tip}"))
     b.c.equations[(A, group)] = (f"a_{tip} = a^n_{tip} + a^t_{tip}", rows)
