@@ -35,7 +35,8 @@ def _law_scene():
     """The loaded five-bar of test_two_cranks_forces, both cranks moving by tables."""
     text = TEMPLATE.read_text(encoding="utf-8")
     for link, centre, extra in (
-            ('BC = "200 mm"', 'S2 = "0.5 of B C"', 'mass = "2 kg"\ncentre = "S2"\nJ = "0.01 kg*m^2"'),
+            ('BC = "200 mm"', 'S2 = "0.5 of B C"',
+             'mass = "2 kg"\ncentre = "S2"\nJ = "0.01 kg*m^2"'),
             ('DC = "180 mm"', 'S3 = "0.5 of D C"',
              'mass = "1.5 kg"\ncentre = "S3"\nJ = "0.006 kg*m^2"'),
             ('ED = "80 mm"', 'S4 = "0.5 of E D"', 'mass = "0.8 kg"\ncentre = "S4"')):
