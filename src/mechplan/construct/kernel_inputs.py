@@ -27,4 +27,5 @@ def _second_driver_length(g: ScalarGen, s: Step, n: str) -> None:
 
 #: the scalar forms of the second driver's operations
 INPUT_FORMS: dict[OpSpec, Gen] = {Op.SECOND_CRANK_ANGLE: _second_crank_angle,
-                                  Op.SECOND_DRIVER_LENGTH: _second_driver_length}
+                                  Op.SECOND_DRIVER_LENGTH: _second_driver_length,
+                                  Op.SECOND_SLIDER_POSITION: _second_driver_length}

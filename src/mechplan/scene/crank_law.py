@@ -71,3 +71,15 @@ def crank_law_positions(t: Table | None, drive: Drive) -> Positions:
 
 def _deg(rad: float) -> str:
     return number(math.degrees(rad), 2, "en")
+
+
+def check_first_clock(d: Table, first: Drive, key: str) -> None:
+    """A second crank after a linear first driver: the first's law must name the time of a
+    position — its table, or a constant rate counted from its range's start."""
+    if not first.linear or first.law is not None:
+        return
+    if first.q_range is None:
+        raise d.error(key, Text("drives2.scene.first_range",
+                                {"kind": first.kind.value, "link": first.link}))
+    if first.omega == 0.0:
+        raise d.error(key, Text("drives2.scene.first_at_rest", {"link": first.link}))

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from .acceleration import *
 from .centre_velocity import *
-from .crank_law import *
+from .driver_inputs import *
 from .drivers import *
 from .force import *
 from .inputs import *

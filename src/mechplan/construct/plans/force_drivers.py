@@ -88,7 +88,8 @@ def _driver_polygon(st: State, gn: str, link: str, carrier: str, pair: Pair, ter
     end = fp._chain(st, gn, o, terms)
     whole = fp._between(st, gn, end, o, f"F_{fp.pair_key(carrier, link)}", "Fwhole",
                         Role.AUXILIARY)
-    symbol = "l" if second or b.mech.drive.kind is DriverKind.CYLINDER else "s"
+    driver = b.mech.drive2 if second else b.mech.drive
+    symbol = "l" if driver is None or driver.kind is DriverKind.CYLINDER else "s"
     sid, label = (f"force.F_d.{link}", f"F_d{link}") if second else ("force.F_d", "F_d")
     fd = st.add(sid, Op.DRIVING_FORCE, (whole, *axis), Kind.SCALAR, Role.RESULT, label,
                 gn, subject=(st.label(whole), f"{symbol}{link}"), **params)
@@ -101,15 +102,18 @@ def _driver_polygon(st: State, gn: str, link: str, carrier: str, pair: Pair, ter
     fp._equation(st, gn, [*fp._rows(terms), (f"F_{fp.pair_key(carrier, link)}", UNKNOWN, "?")])
 
 
-def slider_driver(st: State) -> None:
-    """The driving slider: its polygon closed by the frame's force; F_d along the guide."""
+def slider_driver(st: State, second: bool = False) -> None:
+    """The driving slider: its polygon closed by the frame's force; F_d along the guide.
+
+    ``second``: the second driver (W = 2), its force the result ``F_d<link>``."""
     b = st.b
-    drive = b.mech.drive
+    drive = b.mech.drive2 if second else b.mech.drive
+    assert drive is not None and drive.guide is not None
     pair = next(p for p in b.mech.pairs_of(drive.link) if p.other(drive.link) == GROUND)
-    assert drive.guide is not None
     guide = b.mech.guides[drive.guide]
-    _driver_polygon(st, first_group(b), drive.link, GROUND, pair, st.terms[drive.link], (),
-                    dir_angle=guide.angle)
+    group = f"I({GROUND},{drive.link})" if second else first_group(b)
+    _driver_polygon(st, group, drive.link, GROUND, pair, st.terms[drive.link], (),
+                    second=second, dir_angle=guide.angle)
 
 
 def lever(st: State, second: str | None = None) -> None:

@@ -14,7 +14,7 @@ are laid off at their lengths (``POLAR_POINT``); on the velocity plan its pin's 
 
 from __future__ import annotations
 
-from ...model.mechanism import GROUND, Drive
+from ...model.mechanism import GROUND, Drive, DriverKind
 from ...model.plans import Plan
 from ..builder import Builder, alabel, vlabel
 from ..ops import Op
@@ -64,7 +64,9 @@ def _first_step(b: Builder) -> str:
 
 def _linear_group(b: Builder) -> str:
     cyl = b.structure.cylinder2
-    assert cyl is not None
+    if cyl is None:         # a slider on a frame guide: I(0,k) (plans/second_slider.py)
+        assert b.mech.drive2 is not None
+        return group_name(b.mech.drive2)
     return f"I({cyl[0]},{cyl[1]})"
 
 
@@ -74,27 +76,33 @@ def _emit_linear(b: Builder, plan: Plan) -> None:
     assert drive is not None
     group = _linear_group(b)
     from .laws import by_table, law_step
+    from .second_slider import emit as emit_slider
 
+    slider = drive.kind is DriverKind.SLIDER
+    symbol = "s" if slider else "l"
     if plan is P:
         b.c.second_driver = drive.link
         if by_table(b):     # a law by a table: the length at the position's time
-            sid = law_step(b, "pos.q2", drive, 0, P, f"l{drive.link}", group)
+            sid = law_step(b, "pos.q2", drive, 0, P, f"{symbol}{drive.link}", group)
         else:
             offset, ratio = law(b.mech.drive, drive)
-            sid = b.add("pos.q2", Op.SECOND_DRIVER_LENGTH, (_first_step(b),), P, Kind.SCALAR,
-                        Role.GIVEN, f"l{drive.link}", group,
+            op = Op.SECOND_SLIDER_POSITION if slider else Op.SECOND_DRIVER_LENGTH
+            sid = b.add("pos.q2", op, (_first_step(b),), P, Kind.SCALAR,
+                        Role.GIVEN, f"{symbol}{drive.link}", group,
                         subject=(b.mech.drive.link, drive.link), offset=offset, ratio=ratio)
         b.result(f"q_{drive.link}", sid)
-        return
-    dot = "̇" if plan is V else "̈"
-    value = drive.omega if plan is V else drive.epsilon
-    prefix = "vel" if plan is V else "acc"
-    if drive.law is not None:
-        law_step(b, f"{prefix}.rate2", drive, 1 if plan is V else 2, plan,
-                 f"l{dot}{drive.link}", group)
-        return
-    b.add(f"{prefix}.rate2", Op.DRIVER_RATE, (), plan, Kind.SCALAR, Role.GIVEN,
-          f"l{dot}{drive.link}", group, value=value)
+    else:
+        dot = "̇" if plan is V else "̈"
+        value = drive.omega if plan is V else drive.epsilon
+        prefix = "vel" if plan is V else "acc"
+        if drive.law is not None:
+            law_step(b, f"{prefix}.rate2", drive, 1 if plan is V else 2, plan,
+                     f"{symbol}{dot}{drive.link}", group)
+        else:
+            b.add(f"{prefix}.rate2", Op.DRIVER_RATE, (), plan, Kind.SCALAR, Role.GIVEN,
+                  f"{symbol}{dot}{drive.link}", group, value=value)
+    if slider:              # its point on the frame guide and its images
+        emit_slider(b, plan, group)
 
 
 def emit_position(b: Builder) -> None:
