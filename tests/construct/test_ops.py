@@ -30,8 +30,9 @@ def test_every_operation_has_one_spec():
     # the velocities by instant centres' 9 (ops/centre_velocity.py); a second cylinder's
     # second_driver_length and a driver's law by a table, driver_law (W = 2 with cylinders);
     # a crank's ω, ε (and a second crank's θ) by its law, crank_law, and a second slider's
-    # second_slider_position (ops/driver_inputs.py)
-    assert len(names) == len(set(names)) == len(SPECS) == 71
+    # second_slider_position, and a cylinder's arc cutting a guide line, circle_line_driven
+    # (ops/driver_inputs.py)
+    assert len(names) == len(set(names)) == len(SPECS) == 72
     for family in FAMILIES:
         declared = {n for n, v in vars(family).items() if isinstance(v, OpSpec)}
         assert declared == set(family.__all__), family.__name__      # none left out of Op

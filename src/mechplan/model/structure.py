@@ -188,8 +188,22 @@ def analyse(mech: Mechanism) -> Structure:
         groups.append(group)
         known.update(group.links)
         remaining = [k for k in remaining if k not in known]
+    for cyl, key in ((cylinder, "drive.link"), (cylinder2, "drive2.link")):
+        _check_cylinder_group(groups, cyl, key)
     return Structure(len(mech.moving), len(mech.pairs), 0, drive.link, tuple(groups), cylinder,
                      second.link if second is not None else None, cylinder2)
+
+
+def _check_cylinder_group(groups: list[Group | Triad], cylinder: tuple[str, str] | None,
+                          key: str) -> None:
+    """A cylinder closes a class II group (its side of driven length: RRR or RRP); refuse it
+    as a leg of a class III group, naming the driver."""
+    if cylinder is None:
+        return
+    for g in groups:
+        if isinstance(g, Triad) and cylinder[0] in g.links:
+            raise TopologyError(Text("drives3.structure.cylinder_in_triad", {
+                "barrel": cylinder[0], "rod": cylinder[1], "group": g.name}), key=key)
 
 
 def _check_second_crank(mech: Mechanism, second: Drive) -> None:
