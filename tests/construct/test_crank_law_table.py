@@ -238,3 +238,17 @@ def test_a_second_crank_with_a_table_refuses_a_phase():
     with pytest.raises(SceneError) as e:
         parse_scene(head + "[drive2]" + tail, "five.toml")
     assert e.value.key == "drive2.phase"
+
+
+def test_diagrams_are_over_the_tables_time():
+    """The JSON kinematic diagram's abscissa is the table's time (its spline inverted), and the
+    sheet draws the output link's diagrams over it."""
+    from mechplan.sheet.compose import compose
+
+    sol = solve(parse_scene(four_bar(f"law = {{ table = [{rows(P)}] }}"), "fb.toml"))
+    doc = to_json(sol)["kinematic_diagram"]
+    want = [brentq(lambda t, x=x: P(t) - x, 0.0, 0.8, xtol=1e-15) for x in doc["x"]]
+    assert doc["t"] == pytest.approx(want, abs=1e-12)
+    comp = compose(sol, "A1", "iso", "en", name="fb")
+    names = [panel.name for sheet in comp.placements for panel, _ in sheet]
+    assert "diagram-kinematic" in names
