@@ -252,3 +252,64 @@ def test_diagrams_are_over_the_tables_time():
     comp = compose(sol, "A1", "iso", "en", name="fb")
     names = [panel.name for sheet in comp.placements for panel, _ in sheet]
     assert "diagram-kinematic" in names
+
+
+ROCKER = """
+title = "A four-bar driven by its rocker"
+language = "en"
+
+[ground]
+A = ["0 mm", "0 mm"]
+D = ["250 mm", "0 mm"]
+
+[links.1]
+lengths = { AB = "80 mm" }
+
+[links.2]
+lengths = { BC = "260 mm" }
+
+[links.3]
+lengths = { DC = "180 mm" }
+
+[drive]
+link = "3"
+sense = "ccw"
+law = { table = [ROWS] }
+
+[assembly]
+B = "left of A->C"
+"""
+R3 = np.polynomial.Polynomial([math.radians(85.0), 0.9, -0.2])     # φ3(t): 85° → 125.1° in 1 s
+
+
+@pytest.mark.parametrize("deg", [88.0, 105.0, 122.0])
+def test_a_rocker_by_a_table_drives_the_four_bar(deg):
+    tt = np.linspace(0.0, 1.0, 11)
+    table = ", ".join(f"[{float(t)!r}, {math.degrees(float(R3(t)))!r}]" for t in tt)
+    sol = solve(parse_scene(ROCKER.replace("ROWS", table), "rocker.toml"), at_deg=[deg], plans=KIN)
+    c, ev = sol.construction, sol.ev
+    t0 = brentq(lambda t: R3(t) - math.radians(deg), 0.0, 1.0, xtol=1e-15)
+
+    def closure(th3, guess):
+        cc = D + L3 * _e(th3)
+
+        def f(x):
+            return A + L1 * _e(x[0]) + L2 * _e(x[1]) - cc
+
+        x = fsolve(f, guess, xtol=1e-13)
+        assert np.abs(f(x)).max() < 1e-14
+        return x
+
+    def guess(th3):
+        cc = D + L3 * _e(th3)
+        u = cc / np.linalg.norm(cc)
+        b = 0.5 * L1 * u + 0.07 * np.array([-u[1], u[0]])       # left of A→C
+        return np.array([math.atan2(b[1], b[0]), math.atan2(*(cc - b)[::-1])])
+
+    x0, d1, d2 = fd(R3, t0, guess, closure)
+    assert ev[c.omega("3")][0] == pytest.approx(R3.deriv()(t0), rel=1e-12)
+    for link, i in (("1", 0), ("2", 1)):
+        got = ev[c.link_angle(link)][0]
+        assert math.remainder(got - x0[i], 2 * math.pi) == pytest.approx(0.0, abs=1e-12)
+        assert ev[c.omega(link)][0] == pytest.approx(d1[i], rel=1e-8, abs=1e-8)
+        assert ev[c.epsilon(link)][0] == pytest.approx(d2[i], rel=1e-5, abs=1e-4)

@@ -96,7 +96,7 @@ GSIDE
 
 def scene_text(case: str) -> str:
     """crank_slider (crank first), slider_crank (slider first), cylinder_slider."""
-    lb = "60" if case != "cylinder_slider" else "100"
+    lb = "100" if case.startswith("cylinder") else "60"
     text = BASE.replace("LB", lb)
     if case == "crank_slider":
         text += CRANK.replace("DRIVE", "drive").replace("PHASE", "")
@@ -107,6 +107,22 @@ def scene_text(case: str) -> str:
             "RANGE", 'range = ["-40 mm", "40 mm"]\n')
         text += CRANK.replace("DRIVE", "drive2").replace("PHASE", 'phase = "30 deg"\n')
         text += TAIL.replace("GSIDE", "")
+    elif case == "slider_slider":
+        text = text.replace('guides.g = {', 'guides.g1 = { through = "A", angle = "90 deg" }\n'
+                            'guides.g = {').replace(
+            'name = "crank"\npoints = { A = ["0 mm", "0 mm"], G = ["50 mm", "0 mm"], '
+            'B = ["60 mm", "0 mm"] }', 'name = "slider 1"\nslides = { point = "B", on = "g1" }')
+        text += SLIDER.replace("DRIVE", "drive").replace("link = \"4\"", "link = \"1\"").replace(
+            "speed = \"-0.1 m/s\"", "speed = \"0.1 m/s\"").replace(
+            "RANGE", 'range = ["-40 mm", "40 mm"]\n')
+        text += SLIDER.replace("DRIVE", "drive2").replace("RANGE", 'start = "0 mm"\n')
+        text += TAIL.replace("GSIDE", "")
+    elif case == "cylinder_crank":
+        text = text.replace('slides = { point = "D", on = "g" }', 'lengths = { HD = "60 mm" }')
+        text += CYLINDER + CYL
+        text += CRANK.replace("DRIVE", "drive2").replace('link = "1"', 'link = "4"').replace(
+            "PHASE", 'phase = "30 deg"\n')
+        text += TAIL.replace("GSIDE", 'G = "right of F->A"')
     else:
         text += CYLINDER + CYL
         text += SLIDER.replace("DRIVE", "drive2").replace("RANGE", 'start = "20 mm"\n')
@@ -140,8 +156,13 @@ def _lever_angle(length: float) -> float:
                   math.radians(20.0), math.radians(160.0), xtol=1e-15)
 
 
-def state(case: str, q1: float, q2: float) -> np.ndarray:
-    """(θ1, θ2, θ3, x_D) for the drivers' coordinates: θ (rad, ccw) of a crank, s or l (m)."""
+def pins(case: str, q1: float, q2: float) -> tuple[float, np.ndarray, np.ndarray]:
+    """(θ1, B, D) for the drivers' coordinates: θ (rad, ccw) of a crank, s or l (m)."""
+    if case == "slider_slider":         # B on the vertical guide through A, D on g
+        return math.pi / 2, A + np.array([0.0, q1]), H + np.array([q2, 0.0])
+    if case == "cylinder_crank":        # the lever by the cylinder, D on crank 4 about H
+        th1 = _lever_angle(q1)
+        return th1, A + 0.1 * _e(th1), H + 0.06 * _e(q2)
     if case == "crank_slider":
         th1, s = q1, q2
     elif case == "slider_crank":
@@ -149,7 +170,12 @@ def state(case: str, q1: float, q2: float) -> np.ndarray:
     else:
         th1, s = _lever_angle(q1), q2
     lb = 0.1 if case == "cylinder_slider" else 0.06
-    b, d = A + lb * _e(th1), H + np.array([s, 0.0])
+    return th1, A + lb * _e(th1), H + np.array([s, 0.0])
+
+
+def state(case: str, q1: float, q2: float) -> np.ndarray:
+    """(θ1, θ2, θ3, x_D) for the drivers' coordinates."""
+    th1, b, d = pins(case, q1, q2)
     t2, t3 = _dyad(b, d)
     return np.array([th1, t2, t3, d[0]])
 
@@ -164,6 +190,10 @@ def laws(case: str, x: float) -> tuple[tuple[float, float, float], tuple[float, 
         # φ2 = phase + |ω2|·t, t = (s1 − s1⁰)/ṡ1 the time from the range's start (ṡ1 < 0)
         return (s, -0.1, 0.5), (math.radians(30.0) + 10.0 * (s + 0.040) / -0.1, 10.0, 3.0)
     q = x / 1000.0
+    if case == "slider_slider":
+        return (q, 0.1, 0.5), ((-0.1 / 0.1) * (q + 0.040), -0.1, 0.5)
+    if case == "cylinder_crank":
+        return (q, 0.05, 0.2), (math.radians(30.0) + 10.0 * (q - 0.110) / 0.05, 10.0, 3.0)
     return (q, 0.05, 0.2), (0.020 + (-0.1 / 0.05) * (q - 0.110), -0.1, 0.5)
 
 
@@ -177,7 +207,8 @@ def golden(case: str, x: float, h: float = 1e-4):
 
 
 CASES = {"crank_slider": [20.0, 135.0, 250.0], "slider_crank": [-35.0, 0.0, 30.0],
-         "cylinder_slider": [112.0, 125.0, 143.0]}
+         "cylinder_slider": [112.0, 125.0, 143.0], "slider_slider": [-30.0, 0.0, 35.0],
+         "cylinder_crank": [112.0, 125.0, 143.0]}
 
 
 @pytest.mark.parametrize(("case", "x"), [(c, x) for c, xs in CASES.items() for x in xs])
@@ -186,6 +217,8 @@ def test_kinematics_equal_the_loop_closure(case, x):
     c, ev = sol.construction, sol.ev
     x0, d1, d2 = golden(case, x)
     for link, i in (("1", 0), ("2", 1), ("3", 2)):
+        if case == "slider_slider" and link == "1":
+            continue            # a slider on its guide: θ1 is the guide's
         got = ev[c.link_angle(link)][0]
         assert math.remainder(got - x0[i], 2 * math.pi) == pytest.approx(0.0, abs=1e-12), link
         assert ev[c.omega(link)][0] == pytest.approx(d1[i], rel=1e-8, abs=1e-8), link
@@ -198,7 +231,9 @@ def test_kinematics_equal_the_loop_closure(case, x):
 @pytest.mark.parametrize(("case", "formula"), [
     ("crank_slider", "I(0,1), I(0,4) → II(2,3)"),
     ("slider_crank", "I(0,4), I(0,1) → II(2,3)"),
-    ("cylinder_slider", "I(5,6), I(0,4) → II(1,5) → II(2,3)")])
+    ("cylinder_slider", "I(5,6), I(0,4) → II(1,5) → II(2,3)"),
+    ("slider_slider", "I(0,1), I(0,4) → II(2,3)"),
+    ("cylinder_crank", "I(5,6), I(0,4) → II(1,5) → II(2,3)")])
 def test_structure_formula_lists_both_drivers(case, formula):
     st = analyse(parse_scene(scene_text(case), "w2.toml").mechanism)
     assert st.dof == 2 and st.formula == formula
@@ -215,7 +250,7 @@ def test_the_fused_kernel_equals_the_numpy_path(case):
     targets = targets_for(scene, c, KIN)
     lo, hi = CASES[case][0], CASES[case][-1]
     x = np.linspace(lo, hi, 21)
-    q = np.radians(x) if case == "crank_slider" else x / 1000.0
+    q = np.radians(x) if case == "crank_slider" else x / 1000.0      # φ1 (rad) or q1 (m)
     ev = c.evaluate(q)
     ev.evaluate_all(targets)
     est = estimate_errors(c, ev, targets)

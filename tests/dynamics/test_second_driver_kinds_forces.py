@@ -19,7 +19,7 @@ from mechplan.scene.loader import parse_scene
 from mechplan.solve import solve
 
 sys.path.insert(0, str(Path(__file__).parents[1] / "construct"))
-from test_second_driver_kinds import CASES, L2, L3, A, H, _dyad, _e, _lever_angle, laws, scene_text
+from test_second_driver_kinds import CASES, L2, L3, _dyad, _e, laws, pins, scene_text
 
 M2, J2, M3, J3, M4, G = 2.0, 0.01, 1.5, 0.006, 1.0, 9.81
 F_D = np.array([50.0, 0.0])      # a force on the slider 4 at D
@@ -33,8 +33,8 @@ def loaded(case: str) -> str:
     text = text.replace('lengths = { DC = "150 mm" }',
                         'lengths = { DC = "150 mm" }\npoints = { S3 = "0.5 of D C" }\n'
                         'mass = "1.5 kg"\ncentre = "S3"\nJ = "0.006 kg*m^2"')
-    text = text.replace('slides = { point = "D", on = "g" }',
-                        'slides = { point = "D", on = "g" }\nmass = "1 kg"\ncentre = "D"')
+    for link4 in ('slides = { point = "D", on = "g" }', 'lengths = { HD = "60 mm" }'):
+        text = text.replace(link4, f'{link4}\nmass = "1 kg"\ncentre = "D"')
     return text.replace("[assembly]", '[gravity]\ng = "9.81 m/s^2"\n\n[[loads]]\n'
                         'type = "force"\npoint = "D"\nlink = "4"\nvector = ["50 N", "0 N"]\n\n'
                         "[assembly]")
@@ -42,14 +42,7 @@ def loaded(case: str) -> str:
 
 def centres(case: str, q1: float, q2: float) -> np.ndarray:
     """(S2, S3, D, θ2, θ3) for the drivers' coordinates."""
-    if case == "crank_slider":
-        th1, s = q1, q2
-    elif case == "slider_crank":
-        th1, s = q2, q1
-    else:
-        th1, s = _lever_angle(q1), q2
-    lb = 0.1 if case == "cylinder_slider" else 0.06
-    b, d = A + lb * _e(th1), H + np.array([s, 0.0])
+    _, b, d = pins(case, q1, q2)
     t2, t3 = _dyad(b, d)
     return np.concatenate([b + L2 / 2 * _e(t2), d + L3 / 2 * _e(t3), d, [t2, t3]])
 
@@ -82,9 +75,10 @@ def test_each_driver_load_equals_virtual_power(case, x):
     fa = sol.extras["forces"]
     first, second = golden(case, x)
     assert fa.second is not None and fa.second[0] == ("1" if case == "slider_crank" else "4")
+    linear2 = case.endswith("slider")
     assert float(fa.balancing_moment[0]) == pytest.approx(first, rel=1e-6, abs=1e-6)
     assert float(fa.second[1][0]) == pytest.approx(second, rel=1e-6, abs=1e-6)
     # Zhukovsky's lever, the second driver's load one more term, gives the first's again
     assert float(fa.zhukovsky_moment[0]) == pytest.approx(first, rel=1e-6, abs=1e-6)
-    assert fa.second_linear is (case != "slider_crank")
+    assert fa.second_linear is linear2
     assert math.isfinite(float(fa.balancing_moment[0]))

@@ -372,7 +372,7 @@ def _assembly(top: Table, links: dict[str, Link], drive: Drive
     sides: dict[str, tuple[str, str, int]] = {}
     sketch: dict[str, tuple[float, float]] = {}
     a = top.table("assembly")
-    phi = linear_assembly_default(top, drive) if drive.linear else 0.0
+    phi = linear_assembly_default(top, drive) if drive.linear or drive.law else 0.0
     if a is None:
         return sides, sketch, phi
     names = {p for link in links.values() for p in link.points}
