@@ -353,3 +353,24 @@ def test_a_cylinder_inside_a_class_iii_group_is_refused_naming_the_driver():
         solve(parse_scene(TRIAD, "triad.toml"), at_deg=[170.0], plans=KIN)
     assert e.value.key == "drive.link"
     assert "III(" in str(e.value) and "6" in str(e.value) and "7" in str(e.value)
+
+
+@pytest.mark.parametrize("which", ["press", "two"])
+def test_the_fused_kernel_equals_the_numpy_path(which):
+    from mechplan.construct.estimate import estimate_errors
+    from mechplan.construct.kernel import compile_kernel
+    from mechplan.solve import build, targets_for
+
+    scene = parse_scene(press_text() if which == "press" else two_text(), f"{which}.toml")
+    _, c = build(scene, KIN)
+    targets = targets_for(scene, c, KIN)
+    q = np.linspace(0.252, 0.398, 31) if which == "press" else np.radians(np.linspace(-30, 20, 31))
+    ev = c.evaluate(q)
+    ev.evaluate_all(targets)
+    est = estimate_errors(c, ev, targets)
+    values, rel, bad = compile_kernel(c, targets, jit=False)(q)
+    assert not bad.any()
+    for sid in targets:
+        size = max(float(np.max(np.abs(ev[sid]))), est.scale[sid])
+        assert np.max(np.abs(values[sid] - ev[sid])) <= 1e-14 * size, sid
+        assert np.allclose(rel[sid], est.relative(sid), rtol=1e-5, atol=0), sid
