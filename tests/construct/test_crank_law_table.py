@@ -313,3 +313,57 @@ def test_a_rocker_by_a_table_drives_the_four_bar(deg):
         assert math.remainder(got - x0[i], 2 * math.pi) == pytest.approx(0.0, abs=1e-12)
         assert ev[c.omega(link)][0] == pytest.approx(d1[i], rel=1e-8, abs=1e-8)
         assert ev[c.epsilon(link)][0] == pytest.approx(d2[i], rel=1e-5, abs=1e-4)
+
+
+def _kernel_equals_numpy(scene, q, jit, tol=1e-14, extra=()):
+    from mechplan.construct.estimate import estimate_errors
+    from mechplan.construct.kernel import compile_kernel
+    from mechplan.solve import build, targets_for
+
+    _, c = build(scene, KIN)
+    targets = [*targets_for(scene, c, KIN), *extra]
+    ev = c.evaluate(q)
+    ev.evaluate_all(targets)
+    est = estimate_errors(c, ev, targets)
+    values, rel, bad = compile_kernel(c, targets, jit=jit)(q)
+    assert not bad.any()
+    for sid in targets:
+        size = max(float(np.max(np.abs(ev[sid]))), est.scale[sid])
+        assert np.max(np.abs(values[sid] - ev[sid])) <= tol * size, sid
+        assert np.allclose(rel[sid], est.relative(sid), rtol=1e-5, atol=0), sid
+    return c, ev, values
+
+
+@pytest.mark.parametrize("jit", [False, True])
+@pytest.mark.parametrize("which", ["four_bar", "five_bar_both", "five_bar_second"])
+def test_the_fused_kernel_evaluates_the_laws_as_the_numpy_path(which, jit):
+    if which == "four_bar":
+        scene = parse_scene(four_bar(f"law = {{ table = [{rows(P)}] }}"), "fb.toml")
+        q = np.radians(np.linspace(5.0, 500.0, 37))
+    else:
+        head, _, tail = FIVE.partition("[drive2]")
+        if which == "five_bar_both":
+            head = head.replace('speed = "10 rad/s"\nsense = "ccw"',
+                                f'sense = "ccw"\nlaw = {{ table = [{rows(P)}] }}')
+        tail = tail.replace('speed = "10 rad/s"', f'law = {{ table = [{rows(P4)}] }}').replace(
+            'phase = "90 deg"\n', "")
+        scene = parse_scene(head + "[drive2]" + tail, "five.toml")
+        q = np.radians(np.linspace(5.0, 250.0, 29))
+    _kernel_equals_numpy(scene, q, jit)
+
+
+def test_the_fused_kernel_evaluates_linear_drivers_tables_as_the_numpy_path():
+    """Two cylinders by tables (tests/construct/test_driver_law_table.py): driver_law's form."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from test_driver_law_table import scene_text
+
+    scene = parse_scene(scene_text(), "arm.toml")
+    # the law's steps are bit for bit the numpy path's; the arm's ω5 (~0.01 rad/s, through two
+    # groups) differs by a few ulps, as at constant rates (test_cylinder_second_driver.py)
+    laws = ("pos.q2", "vel.rate", "vel.rate2", "acc.rate", "acc.rate2")
+    _, ev, values = _kernel_equals_numpy(scene, np.linspace(2.21, 2.99, 27), jit=False,
+                                         tol=1e-13, extra=laws)
+    for sid in laws:
+        assert np.array_equal(values[sid], ev[sid]), sid
