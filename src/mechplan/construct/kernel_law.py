@@ -57,7 +57,8 @@ def _law_at(t: float, times: tuple[float, ...], coefs: tuple[float, ...], order:
     """q, q̇ or q̈ at time t by the table's spline (NaN outside its span)."""
     if t < times[0] or t > times[len(times) - 1]:
         return NAN
-    return _pp(t, times, coefs, order)
+    value: float = _pp(t, times, coefs, order)
+    return value
 
 
 @_jit
