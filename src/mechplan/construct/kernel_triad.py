@@ -91,8 +91,9 @@ def _value(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y: floa
            theta: float, l1: float, l2: float, l3: float, d2x: float, d2y: float, d3x: float,
            d3y: float, sg: float) -> float:
     """f(θ) alone, as ``triad_solve._values`` computes it."""
-    return _value_cs(a1x, a1y, a2x, a2y, a3x, a3y, math.cos(theta), math.sin(theta), l1, l2, l3,
-                     d2x, d2y, d3x, d3y, sg)
+    out: float = _value_cs(a1x, a1y, a2x, a2y, a3x, a3y, math.cos(theta), math.sin(theta), l1, l2,
+                           l3, d2x, d2y, d3x, d3y, sg)
+    return out
 
 
 @_jit
@@ -208,8 +209,9 @@ def _fe(a: tuple[float, ...], p: tuple[float, ...], e: float, cell: int) -> floa
     """f at a domain edge inside the window (NaN where it is not)."""
     if cell < 0:
         return NAN
-    return _value(a[0], a[1], a[2], a[3], a[4], a[5], e, p[0], p[1], p[2], p[3], p[4], p[5],
-                  p[6], p[7])
+    out: float = _value(a[0], a[1], a[2], a[3], a[4], a[5], e, p[0], p[1], p[2], p[3], p[4], p[5],
+                        p[6], p[7])
+    return out
 
 
 @_jit

@@ -184,9 +184,9 @@ def mean_indicated_theory(p_c: float, epsilon: float, lam: float, rho: float, n1
     """The mean indicated pressure of the sharp-cornered cycle, δ = ε/ρ:
     p_c/(ε − 1)·[λ(ρ − 1) + λρ/(n2 − 1)·(1 − δ^(1−n2)) − (1 − ε^(1−n1))/(n1 − 1)]."""
     delta = epsilon / rho
-    return p_c / (epsilon - 1.0) * (lam * (rho - 1.0)
-                                    + lam * rho / (n2 - 1.0) * (1.0 - delta ** (1.0 - n2))
-                                    - (1.0 - epsilon ** (1.0 - n1)) / (n1 - 1.0))
+    return float(p_c / (epsilon - 1.0) * (lam * (rho - 1.0)
+                                          + lam * rho / (n2 - 1.0) * (1.0 - delta ** (1.0 - n2))
+                                          - (1.0 - epsilon ** (1.0 - n1)) / (n1 - 1.0)))
 
 
 def mean_indicated(p_it: float, phi_i: float, pumping: float = 0.0) -> float:
