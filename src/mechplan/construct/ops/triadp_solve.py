@@ -1,0 +1,225 @@
+"""The closure of a class III group whose legs may slide on known guides, vectorised over positions.
+
+Each leg constrains a point B_i of the base link to a locus known from the links before the
+group: an arc (A_i, l_i) for a leg with two revolute pairs (kind ``R``), or a line (the guide's
+line through B_i, kind ``P``) for a slider leg. The legs are taken in the order of ``kinds`` (arcs
+first). With the base link's angle θ, B_2 − B_1 = R(θ)·d2 and B_3 − B_1 = R(θ)·d3 (d2, d3 in
+the base link's frame), so B_1 is where locus 1 meets locus 2 shifted by −R(θ)·d2 (two circles
+or a circle and a line: branch σ; two lines: one meet), and the closure is f(θ) = 0 with
+f = |B_3 − A_3| − l_3 (an arc) or f = u_3 × (B_3 − P_3) (a line: the signed distance from it).
+
+The root of branch σ where f crosses zero with the sign ``slope``, nearest (circularly) to the
+assembly's angle ``ref``, is bracketed on a grid of ``GRID`` cells over the whole turn; a cell
+with one end off the loci's domain (the loci do not meet there) is cut at the domain's edge,
+found by bisection on whether the loci meet, so that a root beside an edge is bracketed. The
+root is refined by the Illinois secant to the last bit — no neighbouring position is used, so
+any position is evaluated alone.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from ...geom import meet
+from ...geom.vec import Array
+
+#: cells of the base link's angle over one turn
+GRID = 72
+#: bisections that find a domain edge inside a cell (5°/2^48 ≈ 3e-16 rad)
+EDGE_STEPS = 48
+#: iterations of the Illinois secant, at most
+ITERATIONS = 100
+
+
+class Group(NamedTuple):
+    """The group's dimensions and assembly: the legs' kinds in the solve order (``"RRP"``), the
+    arcs' radii (0 for a line), B_2, B_3 relative to B_1 in the base frame, σ, the sign of f′ at
+    the root and the assembly's angle."""
+
+    kinds: str
+    l: tuple[float, float, float]
+    d2: tuple[float, float]
+    d3: tuple[float, float]
+    sigma: int
+    slope: int
+    ref: float
+
+    @property
+    def size(self) -> float:
+        return sum(self.l) + math.hypot(*self.d2) + math.hypot(*self.d3)
+
+
+def _rot(d: tuple[float, float], c: Array, s: Array) -> tuple[Array, Array]:
+    return c * d[0] - s * d[1], s * d[0] + c * d[1]
+
+
+def first_point(loci: tuple[Array, Array, Array], theta: Array, g: Group,
+                sigma: int | None = None) -> tuple[Array, Array, Array]:
+    """B_1 (…, 2), the meet's gap and its sine at base angles θ (loci broadcast against θ).
+
+    ``loci[i]``: A_i (N, 2) for an arc, the line (N, 2, 2) for a slider leg (each with a new axis
+    before the last one or two when θ is a grid)."""
+    sg = g.sigma if sigma is None else sigma
+    c, s = np.cos(theta), np.sin(theta)
+    rx, ry = _rot(g.d2, c, s)
+    shift = np.stack((rx, ry), axis=-1)
+    k1, k2 = g.kinds[0], g.kinds[1]
+    if k1 == "R" and k2 == "R":
+        return meet.circle_circle(loci[0], g.l[0], loci[1] - shift, g.l[1], sg)
+    if k1 == "R":
+        line = loci[1]
+        return meet.circle_line(loci[0], g.l[0], line[..., 0, :] - shift, line[..., 1, :], sg)
+    one, two = loci[0], loci[1]
+    return meet.line_line(one[..., 0, :], one[..., 1, :], two[..., 0, :] - shift,
+                          two[..., 1, :])
+
+
+def closure(loci: tuple[Array, Array, Array], theta: Array, g: Group,
+            sigma: int | None = None) -> tuple[Array, Array]:
+    """f(θ) (NaN where loci 1 and 2 do not meet) and the sine of their meet."""
+    b1, _, sine = first_point(loci, theta, g, sigma)
+    c, s = np.cos(theta), np.sin(theta)
+    rx, ry = _rot(g.d3, c, s)
+    bx, by = b1[..., 0] + rx, b1[..., 1] + ry
+    third = loci[2]
+    if g.kinds[2] == "R":
+        f = np.hypot(bx - third[..., 0], by - third[..., 1]) - g.l[2]
+    else:
+        p, u = third[..., 0, :], third[..., 1, :]
+        f = u[..., 0] * (by - p[..., 1]) - u[..., 1] * (bx - p[..., 0])
+    return f, sine
+
+
+def _grid_loci(loci: tuple[Array, Array, Array], g: Group) -> tuple[Array, Array, Array]:
+    """The loci with an axis for the grid's angles."""
+    return tuple(p[:, None] for p in loci)  # type: ignore[return-value]
+
+
+def _edges(loci: tuple[Array, ...], lo: Array, hi: Array, finite_lo: Array, g: Group,
+           sigma: int) -> Array:
+    """Bisect [lo, hi] (one end on the domain, ``finite_lo`` telling which) to the domain's
+    edge: the last angle where loci 1 and 2 meet."""
+    on, off = np.where(finite_lo, lo, hi), np.where(finite_lo, hi, lo)
+    for _ in range(EDGE_STEPS):
+        mid = 0.5 * (on + off)
+        ok = np.isfinite(closure(loci, mid, g, sigma)[0])
+        on, off = np.where(ok, mid, on), np.where(ok, off, mid)
+    out: Array = on
+    return out
+
+
+class Cells(NamedTuple):
+    """Candidate brackets per position (N, M) with f at their ends."""
+
+    lo: Array
+    hi: Array
+    flo: Array
+    fhi: Array
+    least: Array    # (N,) the least |f| over the turn (the gap where no root is found)
+
+
+def cells(loci: tuple[Array, Array, Array], g: Group, sigma: int) -> Cells:
+    """The grid's cells over a turn centred on the assembly's angle, those with one end off the
+    domain cut at the edge (the part on the domain kept)."""
+    n = loci[0].shape[0]
+    th = g.ref + np.linspace(-math.pi, math.pi, GRID + 1)
+    grid = _grid_loci(loci, g)
+    f = closure(grid, np.broadcast_to(th, (n, th.size)), g, sigma)[0]
+    lo, hi = np.broadcast_to(th[:-1], (n, GRID)).copy(), np.broadcast_to(th[1:], (n, GRID)).copy()
+    flo, fhi = f[:, :-1].copy(), f[:, 1:].copy()
+    one = np.isfinite(flo) != np.isfinite(fhi)
+    if one.any():
+        r, k = np.nonzero(one)
+        sub = tuple(p[r] for p in loci)
+        finite_lo = np.isfinite(flo[r, k])
+        e = _edges(sub, lo[r, k], hi[r, k], finite_lo, g, sigma)
+        fe = closure(sub, e, g, sigma)[0]
+        lo[r, k] = np.where(finite_lo, lo[r, k], e)
+        hi[r, k] = np.where(finite_lo, e, hi[r, k])
+        flo[r, k] = np.where(finite_lo, flo[r, k], fe)
+        fhi[r, k] = np.where(finite_lo, fe, fhi[r, k])
+    # a cell whose inside leaves the domain (two edges in it) holds no root
+    mid = closure(grid, 0.5 * (lo + hi), g, sigma)[0]
+    flo = np.where(np.isfinite(mid), flo, np.nan)
+    least = np.min(np.where(np.isfinite(f), np.abs(f), np.inf), axis=1)
+    return Cells(lo, hi, flo, fhi, least)
+
+
+def refine(loci: tuple[Array, ...], lo: Array, hi: Array, flo: Array, fhi: Array, g: Group,
+           sigma: int) -> Array:
+    """Illinois secant on brackets [lo, hi] where f changes sign, to the last bit."""
+    side = np.zeros(lo.shape)
+    x = lo.copy()
+    active = np.ones(lo.shape, bool)
+    for _ in range(ITERATIONS):
+        if not active.any():
+            break
+        with np.errstate(invalid="ignore", divide="ignore"):
+            x = np.where(active, hi - fhi * (hi - lo) / (fhi - flo), x)
+        x = np.where(active & ~((x >= lo) & (x <= hi)), 0.5 * (lo + hi), x)
+        fx = closure(loci, x, g, sigma)[0]
+        fx = np.where(np.isfinite(fx), fx, 0.0)
+        same_hi = np.sign(fx) == np.sign(fhi)
+        upd_hi, upd_lo = active & same_hi, active & ~same_hi
+        flo = np.where(upd_hi & (side == 1), 0.5 * flo, flo)
+        fhi = np.where(upd_lo & (side == -1), 0.5 * fhi, fhi)
+        hi, fhi = np.where(upd_hi, x, hi), np.where(upd_hi, fx, fhi)
+        lo, flo = np.where(upd_lo, x, lo), np.where(upd_lo, fx, flo)
+        side = np.where(upd_hi, 1, np.where(upd_lo, -1, side))
+        active &= (fx != 0) & (np.abs(hi - lo) > 4e-16 * (1 + np.abs(x)))
+    return x
+
+
+def solve(loci: tuple[Array, Array, Array], g: Group) -> tuple[Array, Array, Array]:
+    """θ of the base link at every position, the gap (−|f| at the root; where the group does
+    not close, the least |f| over the turn) and the sine: |f′|·(the loci's meet sine) over the
+    group's size (0: the group's Jacobian is singular)."""
+    c = cells(loci, g, g.sigma)
+    ok = (c.flo * c.fhi <= 0) & ((c.fhi - c.flo) * g.slope > 0)   # NaN compares False
+    dist = np.abs(0.5 * (c.lo + c.hi) - g.ref)
+    kk = np.argmin(np.where(ok, dist, np.inf), axis=1)
+    r = np.arange(kk.size)
+    found = ok[r, kk]
+    theta = np.full(kk.size, np.nan)
+    gap = np.where(np.isfinite(c.least), c.least, g.size)
+    sine = np.zeros(kk.size)
+    idx = np.nonzero(found)[0]
+    if idx.size:
+        sub = tuple(p[idx] for p in loci)
+        lo, hi = c.lo[idx, kk[idx]], c.hi[idx, kk[idx]]
+        x = refine(sub, lo, hi, c.flo[idx, kk[idx]], c.fhi[idx, kk[idx]], g, g.sigma)
+        f, msine = closure(sub, x, g)
+        h = 1e-7
+        a, b_ = np.maximum(x - h, lo), np.minimum(x + h, hi)
+        fp = (closure(sub, b_, g)[0] - closure(sub, a, g)[0]) / (b_ - a)
+        theta[idx] = x
+        gap[idx] = -np.abs(f)
+        with np.errstate(invalid="ignore"):
+            sine[idx] = np.nan_to_num(np.minimum(1.0, np.abs(fp) * msine / g.size), nan=0.0)
+    return theta, gap, sine
+
+
+def roots(loci: tuple[Array, Array, Array], g: Group, sigma: int) -> list[tuple[float, int]]:
+    """Every root (θ, sign of f′) of branch ``sigma`` at the first position (the assembly)."""
+    first = tuple(p[:1] for p in loci)
+    c = cells(first, g._replace(ref=0.0), sigma)   # type: ignore[arg-type]
+    f0, f1 = c.flo[0], c.fhi[0]
+    k = np.nonzero(np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1))[0]
+    if not k.size:
+        return []
+    rep = tuple(np.repeat(p, k.size, 0) for p in first)
+    x = refine(rep, c.lo[0, k], c.hi[0, k], f0[k], f1[k], g, sigma)
+    out = [(math.remainder(float(v), 2 * math.pi), 1 if f1[j] > f0[j] else -1)
+           for v, j in zip(x, k, strict=True)]
+    # a root on a cell's node is found from both cells: keep one
+    uniq: list[tuple[float, int]] = []
+    for t, sl in out:
+        if not any(abs(math.remainder(t - u, 2 * math.pi)) < 1e-9 and sl == v for u, v in uniq):
+            uniq.append((t, sl))
+    return uniq
+
+
+__all__ = ["GRID", "Group", "closure", "first_point", "roots", "solve"]
