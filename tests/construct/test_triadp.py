@@ -25,10 +25,27 @@ from mechplan.errors import TopologyError, UnreachableError
 from mechplan.model.mechanism import PairKind
 from mechplan.model.plans import Plan
 from mechplan.model.structure import analyse
-from mechplan.scene import load_scene
+from mechplan.scene import load_scene, parse_scene
 from mechplan.solve import solve
 
 TEMPLATE = Path(__file__).resolve().parents[2] / "templates" / "six_bar_triad_slider.toml"
+#: a pressing force on the slider, added to the template's loads (the fourth: ``load_3``)
+SLIDER_LOAD = """
+[[loads]]
+type = "force"
+point = "E"
+link = "5"
+magnitude = "200 N"
+angle = "-90 deg"
+"""
+
+
+def _text() -> str:
+    """The template with a 1 kg slider and a pressing force on it."""
+    text = TEMPLATE.read_text(encoding="utf-8").replace(
+        'on = "g" }    # its mass neglected', 'on = "g" }\nmass = "1 kg"')
+    assert 'mass = "1 kg"' in text
+    return text + SLIDER_LOAD
 mp.mp.dps = 40
 MM = mp.mpf("0.001")
 D = (160 * MM, 150 * MM)
@@ -80,7 +97,7 @@ def _kinematics(phi, guess, on_crank=False):
 
 def _coriolis_scene() -> str:
     """The template with the slider E on a guide of the crank (through O, 9° from OA)."""
-    text = TEMPLATE.read_text(encoding="utf-8")
+    text = _text()
     text = text.replace('lengths = { OA = "40 mm" }',
                         'lengths = { OA = "40 mm" }\nguides.h = { through = "O", angle = "9 deg" }')
     text = text.replace('slides = { point = "E", on = "g" }', 'slides = { point = "E", on = "h" }')
@@ -90,7 +107,7 @@ def _coriolis_scene() -> str:
 
 @pytest.fixture(scope="module")
 def sol():
-    return mechplan.load(TEMPLATE).solve(fast=False)
+    return mechplan.loads(_text()).solve(fast=False)
 
 
 def test_structure_formula_and_kind():
@@ -140,22 +157,18 @@ def test_a_guide_on_the_crank_brings_coriolis_and_matches_mpmath():
     assert np.allclose(s.omega["5"], OMEGA1) and np.allclose(s.epsilon["5"], 0.0)
     c = solve(load_scene(TEMPLATE)).construction
     assert not any(st.op is Op.CORIOLIS for st in c.steps.values())
-    from mechplan.scene import parse_scene
-
     cc = solve(parse_scene(_coriolis_scene(), "c.toml")).construction
     assert any(st.op is Op.CORIOLIS and st.group == "III(2,3,4,5)" for st in cc.steps.values())
 
 
 def _turned(deg: int) -> str:
-    return TEMPLATE.read_text(encoding="utf-8").replace(
+    return _text().replace(
         'angle = "90 deg" }', f'angle = "{deg} deg" }}').replace('E = ["140 mm", "22 mm"]\n', "")
 
 
 def test_the_slider_leg_gives_the_special_point_when_its_normal_crosses_best():
     """The guide turned to 120°: S is where DC meets the normal to the guide at E; the plans
     still match mpmath and the balancing moment virtual power."""
-    from mechplan.scene import parse_scene
-
     text = _turned(120)
     c = solve(parse_scene(text, "t.toml")).construction
     assert c["pos.line.III(2,3,4,5).E"].op is Op.NORMAL_THROUGH
@@ -206,6 +219,7 @@ def _power_balance_moment(phi_deg, guess, on_crank=False):
         power += -m_ * (as_[0] * vs[0] + as_[1] * vs[1]) - j_ * rate(p, q, a) * rate(p, q, v)
     power += -(a["E"][0] * v["E"][0] + a["E"][1] * v["E"][1])      # the slider: 1 kg at E
     power += -200 * v["E"][1]                                        # 200 N at E, downwards
+    power += -20 * rate("D", "C", v)                                 # −20 N·m on the rocker DC
     power += -150 * v["C"][1]                                        # 150 N at C, downwards
     power += 80 * mid(v, "D", "C")[0]                                # 80 N at S4 along +x
     return float(-power / OMEGA1)
@@ -228,7 +242,7 @@ def test_balancing_moment_with_a_turning_guide_matches_virtual_power():
 
 
 def test_reactions_balance_every_link_and_the_guide_reaction_is_normal():
-    s = solve(load_scene(TEMPLATE))
+    s = solve(parse_scene(_text(), "t.toml"))
     c, ev = s.construction, s.ev
     res = c.results
 
@@ -236,7 +250,7 @@ def test_reactions_balance_every_link_and_the_guide_reaction_is_normal():
         return ev[res[key]]
 
     loads = {"2": [vec("Q_2")], "3": [vec("Q_3"), vec("load_1")],
-             "4": [vec("Q_4"), vec("load_2")], "5": [vec("Q_5"), vec("load_0")]}
+             "4": [vec("Q_4"), vec("load_2")], "5": [vec("Q_5"), vec("load_3")]}
     reactions = {"2": ["R_12", "R_32"], "3": ["R_23", "R_43", "R_53"], "4": ["R_04", "R_34"],
                  "5": ["R_05", "R_35"]}
     scale = max(1.0, float(np.max(np.abs(vec("R_12")))))

@@ -214,14 +214,27 @@ def _vel_start(b: Builder, lg: Leg, gn: str) -> str:
     return b.vel[lg.a]
 
 
-def _vel_rows(b: Builder, lg: Leg, name: str, target: str) -> tuple[str, list]:
-    guide = b.c[_locus(b, lg)].label if lg.slides else ""
+def _vel_rows(b: Builder, lg: Leg, target: str) -> tuple[str, list]:
+    """The leg's side of a velocity equation for ``target`` (S or B_k) and its table rows; a
+    slider on the frame gives B_k's velocity itself (empty side, one row ∥ the guide)."""
     if lg.slides:
-        start = lg.b if lg.known == GROUND else f"{lg.b}{lg.known}"
-        return (f"v_{start} + v_{target}{start}",
-                [(f"v_{start}", GIVEN, "✓"), (f"v_{target}{start}", parallel(guide), "?")])
+        guide = b.c[_locus(b, lg)].label
+        bb = lg.b
+        if lg.known == GROUND:
+            if target == bb:
+                return ("", [(f"v_{bb}", parallel(guide), "?")])
+            side = f"v_{bb} + v_{target}{bb}"
+            return (side, [(side, parallel(guide), "?")])
+        start = f"{bb}{lg.known}"
+        rel = f"v_{bb}{lg.link}{start}" if target == bb else f"v_{target}{start}"
+        return (f"v_{start} + {rel}",
+                [(f"v_{start}", GIVEN, "✓"), (rel, parallel(guide), "?")])
     return (f"v_{lg.a} + v_{target}{lg.a}",
             [(f"v_{lg.a}", GIVEN, "✓"), (f"v_{target}{lg.a}", perp(f"{lg.a}{lg.b}"), "?")])
+
+
+def _chain(*sides: str) -> str:
+    return " = ".join(x for x in sides if x)
 
 
 def emit_velocity(b: Builder, g: Triad) -> None:
@@ -257,12 +270,12 @@ def emit_velocity(b: Builder, g: Triad) -> None:
             _omega(b, lg.link, lg.a, b.pos[lg.b], b.vel[lg.a], b.vel[lg.b], gn)
             _relative(b, start, b.vel[lg.b], f"v_{lg.b}{lg.a}", SegmentKind.RELATIVE, gn)
         images.complete(b, lg.link, V, gn)
-    ei, ri = _vel_rows(b, li, name, name)
-    ej, rj = _vel_rows(b, lj, name, name)
-    b.c.equations[(V, f"{gn} {name}")] = (f"v_{name} = {ei} = {ej}", ri + rj)
-    ek, rk = _vel_rows(b, lk, name, bk)
+    ei, ri = _vel_rows(b, li, name)
+    ej, rj = _vel_rows(b, lj, name)
+    b.c.equations[(V, f"{gn} {name}")] = (_chain(f"v_{name}", ei, ej), ri + rj)
+    ek, rk = _vel_rows(b, lk, bk)
     b.c.equations[(V, f"{gn} {bk}")] = (
-        f"v_{bk} = v_{name} + v_{bk}{name} = {ek}",
+        _chain(f"v_{bk}", f"v_{name} + v_{bk}{name}", ek),
         [(f"v_{name}", GIVEN, "✓"), (f"v_{bk}{name}", perp(f"{name}{bk}"), "?"), *rk])
 
 
@@ -285,19 +298,25 @@ def _acc_line(b: Builder, lg: Leg, through: str, gn: str) -> str:
 
 
 def _acc_rows(b: Builder, lg: Leg, target: str) -> tuple[str, list]:
+    """The leg's side of an acceleration equation for ``target`` (B_k, or S with the base link's
+    normal component added by the caller); its unknown tangential (or relative) parts, of one
+    direction, make one row as the courses write them."""
     if lg.slides:
         guide = b.c[_locus(b, lg)].label
         m, bb, leg = lg.known, lg.b, lg.link
+        unknown = (f"a^r_{target}" if m == GROUND else f"a^r_{target}{leg}{bb}{m}")
         if m == GROUND:
-            return (f"a^r_{bb}", [(f"a^r_{bb}", parallel(guide), "?")])
-        return (f"a_{bb}{m} + a^k_{bb}{leg}{bb}{m} + a^r_{bb}{leg}{bb}{m}",
+            if target == bb:       # B_k on a frame guide: its acceleration is along it
+                return ("", [(f"a_{bb}", parallel(guide), "?")])
+            return (unknown, [(unknown, parallel(guide), "?")])
+        return (f"a_{bb}{m} + a^k_{bb}{leg}{bb}{m} + {unknown}",
                 [(f"a_{bb}{m}", GIVEN, "✓"),
                  (f"a^k_{bb}{leg}{bb}{m}", perp(guide), f"2ω{m}·v_{bb}{leg}{bb}{m}"),
-                 (f"a^r_{bb}{leg}{bb}{m}", parallel(guide), "?")])
+                 (unknown, parallel(guide), "?")])
     a, bb, leg = lg.a, lg.b, lg.link
-    return (f"a_{a} + a^n_{bb}{a} + a^t_{bb}{a}",
+    return (f"a_{a} + a^n_{bb}{a} + a^t_{target}{a}",
             [(f"a_{a}", GIVEN, "✓"), (f"a^n_{bb}{a}", from_to(bb, a), f"ω{leg}²·l_{a}{bb}"),
-             (f"a^t_{bb}{a}", perp(f"{a}{bb}"), "?")])
+             (f"a^t_{target}{a}", perp(f"{a}{bb}"), "?")])
 
 
 def emit_acceleration(b: Builder, g: Triad) -> None:
@@ -339,13 +358,14 @@ def emit_acceleration(b: Builder, g: Triad) -> None:
     for n in (i, j):
         e, r = _acc_rows(b, ls[n], name)
         bb = ls[n].b
-        eqs.append(f"{e} + a^n_{name}{bb} + a^t_{name}{bb}")
-        rows += r + [(f"a^n_{name}{bb}", from_to(name, bb), f"ω{g.base}²·l_{bb}{name}"),
-                     (f"a^t_{name}{bb}", perp(f"{bb}{name}"), "?")]
+        head, last = e.rsplit(" + ", 1) if " + " in e else ("", e)
+        eqs.append(" + ".join(x for x in (head, f"a^n_{name}{bb}", last) if x))
+        rows += r[:-1] + [(f"a^n_{name}{bb}", from_to(name, bb), f"ω{g.base}²·l_{bb}{name}"),
+                          r[-1]]
     b.c.equations[(A, f"{gn} {name}")] = (f"a_{name} = {eqs[0]} = {eqs[1]}", rows)
     ek, rk = _acc_rows(b, lk, bk)
     b.c.equations[(A, f"{gn} {bk}")] = (
-        f"a_{bk} = a_{name} + a^n_{bk}{name} + a^t_{bk}{name} = {ek}",
+        _chain(f"a_{bk}", f"a_{name} + a^n_{bk}{name} + a^t_{bk}{name}", ek),
         [(f"a_{name}", GIVEN, "✓"), (f"a^n_{bk}{name}", from_to(bk, name),
                                      f"ω{g.base}²·l_{name}{bk}"),
          (f"a^t_{bk}{name}", perp(f"{name}{bk}"), "?"), *rk])
