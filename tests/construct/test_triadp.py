@@ -314,6 +314,12 @@ def test_singular_group_is_flagged_then_refused():
 def test_the_kernel_refuses_and_the_numpy_path_answers():
     """The fused kernel has no scalar forms for these operations: the fast path falls back to
     numpy and the answers are the same."""
+    from mechplan.fast import FastPath
+    from mechplan.solve import build
+
+    scene = load_scene(TEMPLATE)
+    _, c = build(scene, ("position", "velocity", "acceleration"))
+    assert FastPath(scene).prepare(c, ("position", "velocity", "acceleration")) is None
     m = mechplan.load(TEMPLATE)
     slow = m.solve(np.arange(0.0, 360.0, 30.0), plans=("position", "velocity", "acceleration"),
                    fast=False)
