@@ -19,7 +19,7 @@ import mechplan
 from mechplan.construct.ops import Op
 from mechplan.construct.ops.triad import triad_angle
 from mechplan.construct.step import Kind, Role, Step
-from mechplan.errors import TopologyError, UnreachableError
+from mechplan.errors import UnreachableError
 from mechplan.model.plans import Plan
 from mechplan.model.structure import analyse
 from mechplan.scene import load_scene, parse_scene

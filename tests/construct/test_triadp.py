@@ -18,8 +18,8 @@ import pytest
 
 import mechplan
 from mechplan.construct.ops import Op
-from mechplan.construct.ops.triadp import triadp_angle
 from mechplan.construct.ops.spec import line
+from mechplan.construct.ops.triadp import triadp_angle
 from mechplan.construct.step import Kind, Role, Step
 from mechplan.errors import TopologyError, UnreachableError
 from mechplan.model.mechanism import PairKind
@@ -213,7 +213,8 @@ def _power_balance_moment(phi_deg, guess, on_crank=False):
         return (d[0] * dv[1] - d[1] * dv[0]) / (d[0] ** 2 + d[1] ** 2)
 
     power = mp.mpf(0)
-    for m_, j_, p, q in ((2, "0.003", "A", "B"), (3, "0.004", "B", "C"), ("1.5", "0.001", "D", "C")):
+    links = ((2, "0.003", "A", "B"), (3, "0.004", "B", "C"), ("1.5", "0.001", "D", "C"))
+    for m_, j_, p, q in links:
         m_, j_ = mp.mpf(m_), mp.mpf(j_)
         vs, as_ = mid(v, p, q), mid(a, p, q)
         power += -m_ * (as_[0] * vs[0] + as_[1] * vs[1]) - j_ * rate(p, q, a) * rate(p, q, v)
@@ -298,7 +299,7 @@ def test_singular_group_is_flagged_then_refused():
     found = []
     for sigma in (1, -1):
         for slope in (1, -1):
-            th, gap, sine = angle(0.0, sigma, slope)
+            th, _, sine = angle(0.0, sigma, slope)
             if math.isfinite(th) and abs(th) < 1e-5:
                 found.append(sine)
     assert found and min(found) < 1e-5

@@ -26,6 +26,8 @@ import numpy as np
 from ...geom import meet
 from ...geom.vec import Array
 
+#: the legs' loci: per leg a point A_i (N, 2) or a line (N, 2, 2)
+Loci = tuple[Array, ...]
 #: cells of the base link's angle over one turn
 GRID = 72
 #: bisections that find a domain edge inside a cell (5°/2^48 ≈ 3e-16 rad)
@@ -56,7 +58,7 @@ def _rot(d: tuple[float, float], c: Array, s: Array) -> tuple[Array, Array]:
     return c * d[0] - s * d[1], s * d[0] + c * d[1]
 
 
-def first_point(loci: tuple[Array, Array, Array], theta: Array, g: Group,
+def first_point(loci: Loci, theta: Array, g: Group,
                 sigma: int | None = None) -> tuple[Array, Array, Array]:
     """B_1 (…, 2), the meet's gap and its sine at base angles θ (loci broadcast against θ).
 
@@ -77,7 +79,7 @@ def first_point(loci: tuple[Array, Array, Array], theta: Array, g: Group,
                           two[..., 1, :])
 
 
-def closure(loci: tuple[Array, Array, Array], theta: Array, g: Group,
+def closure(loci: Loci, theta: Array, g: Group,
             sigma: int | None = None) -> tuple[Array, Array]:
     """f(θ) (NaN where loci 1 and 2 do not meet) and the sine of their meet."""
     b1, _, sine = first_point(loci, theta, g, sigma)
@@ -93,12 +95,12 @@ def closure(loci: tuple[Array, Array, Array], theta: Array, g: Group,
     return f, sine
 
 
-def _grid_loci(loci: tuple[Array, Array, Array], g: Group) -> tuple[Array, Array, Array]:
+def _grid_loci(loci: Loci, g: Group) -> Loci:
     """The loci with an axis for the grid's angles."""
-    return tuple(p[:, None] for p in loci)  # type: ignore[return-value]
+    return tuple(p[:, None] for p in loci)
 
 
-def _edges(loci: tuple[Array, ...], lo: Array, hi: Array, finite_lo: Array, g: Group,
+def _edges(loci: Loci, lo: Array, hi: Array, finite_lo: Array, g: Group,
            sigma: int) -> Array:
     """Bisect [lo, hi] (one end on the domain, ``finite_lo`` telling which) to the domain's
     edge: the last angle where loci 1 and 2 meet."""
@@ -121,7 +123,7 @@ class Cells(NamedTuple):
     least: Array    # (N,) the least |f| over the turn (the gap where no root is found)
 
 
-def cells(loci: tuple[Array, Array, Array], g: Group, sigma: int) -> Cells:
+def cells(loci: Loci, g: Group, sigma: int) -> Cells:
     """The grid's cells over a turn centred on the assembly's angle, those with one end off the
     domain cut at the edge (the part on the domain kept)."""
     n = loci[0].shape[0]
@@ -148,7 +150,7 @@ def cells(loci: tuple[Array, Array, Array], g: Group, sigma: int) -> Cells:
     return Cells(lo, hi, flo, fhi, least)
 
 
-def refine(loci: tuple[Array, ...], lo: Array, hi: Array, flo: Array, fhi: Array, g: Group,
+def refine(loci: Loci, lo: Array, hi: Array, flo: Array, fhi: Array, g: Group,
            sigma: int) -> Array:
     """Illinois secant on brackets [lo, hi] where f changes sign, to the last bit."""
     side = np.zeros(lo.shape)
@@ -173,7 +175,7 @@ def refine(loci: tuple[Array, ...], lo: Array, hi: Array, flo: Array, fhi: Array
     return x
 
 
-def solve(loci: tuple[Array, Array, Array], g: Group) -> tuple[Array, Array, Array]:
+def solve(loci: Loci, g: Group) -> tuple[Array, Array, Array]:
     """θ of the base link at every position, the gap (−|f| at the root; where the group does
     not close, the least |f| over the turn) and the sine: |f′|·(the loci's meet sine) over the
     group's size (0: the group's Jacobian is singular)."""
@@ -202,10 +204,10 @@ def solve(loci: tuple[Array, Array, Array], g: Group) -> tuple[Array, Array, Arr
     return theta, gap, sine
 
 
-def roots(loci: tuple[Array, Array, Array], g: Group, sigma: int) -> list[tuple[float, int]]:
+def roots(loci: Loci, g: Group, sigma: int) -> list[tuple[float, int]]:
     """Every root (θ, sign of f′) of branch ``sigma`` at the first position (the assembly)."""
     first = tuple(p[:1] for p in loci)
-    c = cells(first, g._replace(ref=0.0), sigma)   # type: ignore[arg-type]
+    c = cells(first, g._replace(ref=0.0), sigma)
     f0, f1 = c.flo[0], c.fhi[0]
     k = np.nonzero(np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1))[0]
     if not k.size:

@@ -1,4 +1,4 @@
-"""Kinetostatics of a class III group whose legs may slide on known guides, by Assur's special point.
+"""Kinetostatics of a class III group with legs sliding on known guides, by Assur's special point.
 
 A revolute leg's reaction at A_i is split into R^t_i (⊥ A_iB_i, from the leg's moments about B_i)
 and R^n_i (along A_iB_i). A slider leg's reaction from the guide is ⊥ the guide, its magnitude
