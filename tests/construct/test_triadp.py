@@ -59,16 +59,25 @@ def _d2(p, q):
     return (p[0] - q[0]) ** 2 + (p[1] - q[1]) ** 2
 
 
-def _exact(phi, guess, on_crank=False):
-    """B, C, E (6 coordinates) at crank angle φ from the closure equations, by mpmath."""
+def _exact(phi, guess, variant=False):
+    """B, C, E (6 coordinates) at crank angle φ from the closure equations, by mpmath.
+
+    ``variant``: False, the template (E in the vertical frame guide); True, E on the crank's
+    guide; a number, the frame guide turned to that angle (deg); ``"rpp"``, the rocker DC
+    replaced by a slider C."""
     a = (L["OA"] * mp.cos(phi), L["OA"] * mp.sin(phi))
 
     def eqs(bx, by, cx, cy, ex, ey):
         b, c, e = (bx, by), (cx, cy), (ex, ey)
-        if on_crank is True:
+        if variant == "rpp":       # the rocker DC replaced by a slider C on a frame guide
+            hx, hy, gamma = 175 * MM, 64 * MM, mp.radians(10)
+            return [_d2(a, b) - L["AB"] ** 2, _d2(b, c) - L["BC"] ** 2, _d2(b, e) - L["BE"] ** 2,
+                    _d2(c, e) - L["CE"] ** 2,
+                    -mp.sin(gamma) * (cx - hx) + mp.cos(gamma) * (cy - hy), ex - GUIDE_X]
+        if variant is True:
             guide = -mp.sin(phi + ALPHA) * ex + mp.cos(phi + ALPHA) * ey
-        else:       # a frame guide through G = (140 mm, 0) at ``on_crank`` degrees (90: vertical)
-            beta = mp.radians(90 if on_crank is False else on_crank)
+        else:       # a frame guide through G = (140 mm, 0) at ``variant`` degrees (90: vertical)
+            beta = mp.radians(90 if variant is False else variant)
             guide = -mp.sin(beta) * (ex - GUIDE_X) + mp.cos(beta) * ey
         return [_d2(a, b) - L["AB"] ** 2, _d2(b, c) - L["BC"] ** 2, _d2(b, e) - L["BE"] ** 2,
                 _d2(c, e) - L["CE"] ** 2, _d2(D, c) - L["DC"] ** 2, guide]
@@ -76,14 +85,14 @@ def _exact(phi, guess, on_crank=False):
     return list(mp.findroot(eqs, guess))
 
 
-def _kinematics(phi, guess, on_crank=False):
+def _kinematics(phi, guess, variant=False):
     """Positions, d/dt and d²/dt² (ω1 = 10 rad/s) of A, B, C, E: five-point differences in t."""
     h = mp.mpf("1e-9")
-    x0 = _exact(phi, guess, on_crank)
+    x0 = _exact(phi, guess, variant)
     rows = {}
     for m in (-2, -1, 0, 1, 2):
         f = phi + m * h * OMEGA1
-        x = x0 if m == 0 else _exact(f, x0, on_crank)
+        x = x0 if m == 0 else _exact(f, x0, variant)
         rows[m] = [L["OA"] * mp.cos(f), L["OA"] * mp.sin(f), *x]
     v = [(rows[-2][i] - 8 * rows[-1][i] + 8 * rows[1][i] - rows[2][i]) / (12 * h)
          for i in range(8)]
@@ -128,11 +137,11 @@ def test_a_leg_carrying_the_guide_is_refused_with_its_links():
     assert "class III group" in msg and "3, 2, 4, 5" in msg and "slide on a known" in msg
 
 
-def _compare(s, on_crank=False):
+def _compare(s, variant=False):
     worst = {"r": 0.0, "v": 0.0, "a": 0.0}
     for k, phi_deg in enumerate(s.phi_deg):
         guess = [float(x) + 0.001 for n in "BCE" for x in s.r[n][k]]
-        r, v, a = _kinematics(mp.radians(phi_deg), guess, on_crank)
+        r, v, a = _kinematics(mp.radians(phi_deg), guess, variant)
         for n in "BCE":
             for key, exact, got in (("r", r, s.r), ("v", v, s.v), ("a", a, s.a)):
                 err = max(abs(float(exact[n][i]) - got[n][k][i]) for i in (0, 1))
@@ -150,7 +159,7 @@ def test_a_guide_on_the_crank_brings_coriolis_and_matches_mpmath():
     m = mechplan.loads(_coriolis_scene())
     s = m.solve(fast=False)
     assert len(s.phi_deg) == 5
-    worst = _compare(s, on_crank=True)
+    worst = _compare(s, variant=True)
     # the accelerations here reach ~20 m/s²
     assert worst["r"] < 1e-15 and worst["v"] < 1e-14 and worst["a"] < 5e-13, worst
     # the slider turns with its guide's link
@@ -173,12 +182,41 @@ def test_the_slider_leg_gives_the_special_point_when_its_normal_crosses_best():
     c = solve(parse_scene(text, "t.toml")).construction
     assert c["pos.line.III(2,3,4,5).E"].op is Op.NORMAL_THROUGH
     s = mechplan.loads(text).solve(fast=False)
-    worst = _compare(s, on_crank=120)
+    worst = _compare(s, variant=120)
     assert worst["r"] < 1e-15 and worst["v"] < 1e-14 and worst["a"] < 2e-13, worst
     for k, phi_deg in enumerate(s.phi_deg):
         guess = [float(x) + 0.001 for n in "BCE" for x in s.r[n][k]]
-        expected = _power_balance_moment(phi_deg, guess, on_crank=120)
+        expected = _power_balance_moment(phi_deg, guess, variant=120)
         assert s.forces.M_b[k] == pytest.approx(expected, rel=1e-11, abs=1e-12)
+
+
+def _two_sliders() -> str:
+    """The rocker DC replaced by a slider C on a frame guide through H (175, 64) mm at 10°: a
+    group RPP-RRR (an arc and two guide lines), its link-4 loads dropped."""
+    t = _text().replace('G = ["140 mm", "0 mm"]',
+                        'G = ["140 mm", "0 mm"]\nH = ["175 mm", "64 mm"]\n'
+                        'guides.gc = { through = "H", angle = "10 deg" }')
+    t = (t[:t.index("[links.4]")] + '[links.4]\nname = "slider C"\nslides = { point = "C", '
+         'on = "gc" }\nmass = "1 kg"\n\n' + t[t.index("[links.5]"):])
+    for cut in ("# the working resistance on the rocker DC", "# a spring-like pull"):
+        i = t.index(cut)
+        j = t.find("[[loads]]", i)
+        t = t[:t.rindex("[[loads]]", 0, i)] + (t[j:] if j >= 0 else "")
+    return t
+
+
+def test_two_slider_legs_match_mpmath_and_virtual_power():
+    text = _two_sliders()
+    (g,) = analyse(parse_scene(text, "t.toml").mechanism).groups
+    assert g.kind == "RPP-RRR"
+    s = mechplan.loads(text).solve(np.arange(0.0, 360.0, 40.0), fast=False)
+    worst = _compare(s, variant="rpp")
+    assert worst["r"] < 1e-15 and worst["v"] < 1e-14 and worst["a"] < 2e-13, worst
+    for k, phi_deg in enumerate(s.phi_deg):
+        guess = [float(x) + 0.001 for n in "BCE" for x in s.r[n][k]]
+        expected = _power_balance_moment(phi_deg, guess, variant="rpp")
+        assert s.forces.M_b[k] == pytest.approx(expected, rel=1e-11, abs=1e-12)
+        assert s.forces.M_b_zhukovsky[k] == pytest.approx(expected, rel=1e-11, abs=1e-12)
 
 
 def test_every_link_stays_rigid_and_e_in_its_guide():
@@ -198,9 +236,9 @@ def test_every_link_stays_rigid_and_e_in_its_guide():
                     < 1e-14
 
 
-def _power_balance_moment(phi_deg, guess, on_crank=False):
+def _power_balance_moment(phi_deg, guess, variant=False):
     """M_b from virtual power with the template's masses and loads and mpmath kinematics."""
-    r, v, a = _kinematics(mp.radians(phi_deg), guess, on_crank)
+    r, v, a = _kinematics(mp.radians(phi_deg), guess, variant)
     zero = (mp.mpf(0), mp.mpf(0))
     r["D"], v["D"], a["D"] = D, zero, zero
 
@@ -214,15 +252,19 @@ def _power_balance_moment(phi_deg, guess, on_crank=False):
 
     power = mp.mpf(0)
     links = ((2, "0.003", "A", "B"), (3, "0.004", "B", "C"), ("1.5", "0.001", "D", "C"))
+    if variant == "rpp":
+        links = links[:2]
+        power += -(a["C"][0] * v["C"][0] + a["C"][1] * v["C"][1])  # the slider C: 1 kg
     for m_, j_, p, q in links:
         m_, j_ = mp.mpf(m_), mp.mpf(j_)
         vs, as_ = mid(v, p, q), mid(a, p, q)
         power += -m_ * (as_[0] * vs[0] + as_[1] * vs[1]) - j_ * rate(p, q, a) * rate(p, q, v)
     power += -(a["E"][0] * v["E"][0] + a["E"][1] * v["E"][1])      # the slider: 1 kg at E
     power += -200 * v["E"][1]                                        # 200 N at E, downwards
-    power += -20 * rate("D", "C", v)                                 # −20 N·m on the rocker DC
     power += -150 * v["C"][1]                                        # 150 N at C, downwards
-    power += 80 * mid(v, "D", "C")[0]                                # 80 N at S4 along +x
+    if variant != "rpp":
+        power += -20 * rate("D", "C", v)                             # −20 N·m on the rocker DC
+        power += 80 * mid(v, "D", "C")[0]                            # 80 N at S4 along +x
     return float(-power / OMEGA1)
 
 
@@ -238,7 +280,7 @@ def test_balancing_moment_with_a_turning_guide_matches_virtual_power():
     s = mechplan.loads(_coriolis_scene()).solve(fast=False)
     for k, phi_deg in enumerate(s.phi_deg):
         guess = [float(x) + 0.001 for n in "BCE" for x in s.r[n][k]]
-        expected = _power_balance_moment(phi_deg, guess, on_crank=True)
+        expected = _power_balance_moment(phi_deg, guess, variant=True)
         assert s.forces.M_b[k] == pytest.approx(expected, rel=1e-11, abs=1e-12)
 
 
