@@ -223,7 +223,7 @@ def test_every_link_stays_rigid_and_e_in_its_guide():
     m = mechplan.load(TEMPLATE)
     s = m.solve(np.arange(0.0, 360.0, 1.0), plans=("position", "velocity", "acceleration"),
                 fast=False)
-    assert np.max(np.abs(s.r["E"][:, 0] - 0.140)) < 1e-16
+    assert np.max(np.abs(s.r["E"][:, 0] - 0.140)) < 2e-16          # 0.140 to 4 ulp
     assert np.max(np.abs(s.v["E"][:, 0])) < 1e-15 and np.max(np.abs(s.a["E"][:, 0])) < 1e-13
     for link, names in {"2": "AB", "3": "BCE", "4": "DC"}.items():
         w = s.omega[link]

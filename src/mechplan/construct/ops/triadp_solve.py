@@ -9,9 +9,11 @@ or a circle and a line: branch σ; two lines: one meet), and the closure is f(θ
 f = |B_3 − A_3| − l_3 (an arc) or f = u_3 × (B_3 − P_3) (a line: the signed distance from it).
 
 The root of branch σ where f crosses zero with the sign ``slope``, nearest (circularly) to the
-assembly's angle ``ref``, is bracketed on a grid of ``GRID`` cells over the whole turn; a cell
-with one end off the loci's domain (the loci do not meet there) is cut at the domain's edge,
-found by bisection on whether the loci meet, so that a root beside an edge is bracketed. The
+assembly's angle ``ref``, is bracketed on a grid of ``GRID`` cells (first the ``WINDOW`` cells on
+each side of ``ref``, the whole turn where they hold none); a cell with one end off the loci's
+domain (the loci do not meet there) is cut at the domain's edge (in closed form, stepped back
+onto the domain by roundings; a bisection where that fails), so that a root beside an edge is
+bracketed. The
 root is refined by the Illinois secant to the last bit — no neighbouring position is used, so
 any position is evaluated alone.
 """
@@ -29,9 +31,15 @@ from ...geom.vec import Array
 #: the legs' loci: per leg a point A_i (N, 2) or a line (N, 2, 2)
 Loci = tuple[Array, ...]
 #: cells of the base link's angle over one turn
-GRID = 72
-#: bisections that find a domain edge inside a cell (5°/2^48 ≈ 3e-16 rad)
-EDGE_STEPS = 48
+GRID = 24
+#: cells on each side of the assembly's angle searched first (a root there is nearer than any
+#: outside, so the rule is the same; the whole turn only where the window has none)
+WINDOW = 3
+#: bisections that find a domain edge inside a cell (15°/2^50 ≈ 2e-16 rad; only where the
+#: closed-form edge, stepped back by roundings, is not on the domain)
+EDGE_STEPS = 50
+#: cells of the grid on which every root of the assembly's position is sought (0.5°)
+FINE = 720
 #: iterations of the Illinois secant, at most
 ITERATIONS = 100
 
@@ -100,11 +108,75 @@ def _grid_loci(loci: Loci, g: Group) -> Loci:
     return tuple(p[:, None] for p in loci)
 
 
+def closed_edges(loci: Loci, g: Group) -> Array:
+    """The base angles (N, 4) where loci 1 and 2 touch, in closed form (NaN: none).
+
+    Two arcs: |A_2 − A_1 − R(θ)·d2| = l_1 ± l_2; an arc and a line: the distance of A_1 from
+    the shifted line, u_2 × (A_1 − P_2) + u_2 × R(θ)·d2, is ±l_1 (two lines never touch)."""
+    one, two = loci[0], loci[1]
+    n = one.shape[0]
+    d2 = g.d2
+    out = []
+    with np.errstate(invalid="ignore", divide="ignore"):
+        if g.kinds[:2] == "RR":
+            ux, uy = two[:, 0] - one[:, 0], two[:, 1] - one[:, 1]
+            p, q = ux * d2[0] + uy * d2[1], uy * d2[0] - ux * d2[1]
+            rho, alpha = np.hypot(p, q), np.arctan2(q, p)
+            base = ux * ux + uy * uy + d2[0] * d2[0] + d2[1] * d2[1]
+            for e in (g.l[0] + g.l[1], abs(g.l[0] - g.l[1])):
+                t_ = np.arccos((base - e * e) / (2.0 * rho))
+                out += [alpha + t_, alpha - t_]
+        elif g.kinds[:2] == "RP":
+            p2, u = two[:, 0, :], two[:, 1, :]
+            w = u[:, 0] * (one[:, 1] - p2[:, 1]) - u[:, 1] * (one[:, 0] - p2[:, 0])
+            # u × R(θ)d2 = a·cos θ + b·sin θ
+            a = u[:, 0] * d2[1] - u[:, 1] * d2[0]
+            b = u[:, 0] * d2[0] + u[:, 1] * d2[1]
+            rho, alpha = np.hypot(a, b), np.arctan2(b, a)
+            for e in (g.l[0], -g.l[0]):
+                t_ = np.arccos((e - w) / rho)
+                out += [alpha + t_, alpha - t_]
+        else:
+            out = [np.full(n, np.nan)] * 4
+    return np.stack(out, axis=-1)
+
+
 def _edges(loci: Loci, lo: Array, hi: Array, finite_lo: Array, g: Group,
            sigma: int) -> Array:
-    """Bisect [lo, hi] (one end on the domain, ``finite_lo`` telling which) to the domain's
-    edge: the last angle where loci 1 and 2 meet."""
+    """The domain's edge in [lo, hi] (one end on the domain, ``finite_lo`` telling which): the
+    last angle where loci 1 and 2 meet — the closed-form edge in the cell, stepped back onto the
+    domain by roundings; a bisection where that fails."""
     on, off = np.where(finite_lo, lo, hi), np.where(finite_lo, hi, lo)
+    e = closed_edges(loci, g)
+    e = np.mod(e - lo[:, None], 2 * math.pi) + lo[:, None]
+    inside = (e >= lo[:, None]) & (e <= hi[:, None])       # NaN compares False
+    edge = np.where(inside, e, np.nan)
+    # the edge nearest the finite end (one edge per cell but for a rounding)
+    dist = np.where(inside, np.abs(edge - on[:, None]), np.inf)
+    pick = edge[np.arange(lo.size), np.argmin(dist, axis=1)]
+    step = np.sign(on - off) * 4e-16 * (1.0 + np.abs(pick))
+    x = pick
+    ok = np.isfinite(closure(loci, x, g, sigma)[0])
+    for _ in range(12):
+        bad = ~ok & np.isfinite(pick)
+        if not bad.any():
+            break
+        step = np.where(bad, step * 4.0, step)
+        x = np.where(bad, pick + step, x)
+        ok = np.isfinite(closure(loci, x, g, sigma)[0])
+    done = ok & np.isfinite(x) & (np.abs(x - on) <= np.abs(off - on))
+    if done.all():
+        out: Array = x
+        return out
+    rest = np.nonzero(~done)[0]
+    sub = tuple(p[rest] for p in loci)
+    x = x.copy()
+    x[rest] = _bisect(sub, on[rest], off[rest], g, sigma)
+    return x
+
+
+def _bisect(loci: Loci, on: Array, off: Array, g: Group, sigma: int) -> Array:
+    """Bisect between a point on the domain and one off it to the domain's edge."""
     for _ in range(EDGE_STEPS):
         mid = 0.5 * (on + off)
         ok = np.isfinite(closure(loci, mid, g, sigma)[0])
@@ -123,14 +195,16 @@ class Cells(NamedTuple):
     least: Array    # (N,) the least |f| over the turn (the gap where no root is found)
 
 
-def cells(loci: Loci, g: Group, sigma: int) -> Cells:
-    """The grid's cells over a turn centred on the assembly's angle, those with one end off the
-    domain cut at the edge (the part on the domain kept)."""
+def cells(loci: Loci, g: Group, sigma: int, half: int = GRID // 2, grid: int = GRID) -> Cells:
+    """``half`` cells of a grid of ``grid`` over the turn on each side of the assembly's angle
+    (by default the whole turn), those with one end off the domain cut at the edge (the part on
+    the domain kept)."""
     n = loci[0].shape[0]
-    th = g.ref + np.linspace(-math.pi, math.pi, GRID + 1)
+    th = g.ref + np.arange(-half, half + 1) * (2 * math.pi / grid)
     grid = _grid_loci(loci, g)
     f = closure(grid, np.broadcast_to(th, (n, th.size)), g, sigma)[0]
-    lo, hi = np.broadcast_to(th[:-1], (n, GRID)).copy(), np.broadcast_to(th[1:], (n, GRID)).copy()
+    m = th.size - 1
+    lo, hi = np.broadcast_to(th[:-1], (n, m)).copy(), np.broadcast_to(th[1:], (n, m)).copy()
     flo, fhi = f[:, :-1].copy(), f[:, 1:].copy()
     one = np.isfinite(flo) != np.isfinite(fhi)
     if one.any():
@@ -175,27 +249,47 @@ def refine(loci: Loci, lo: Array, hi: Array, flo: Array, fhi: Array, g: Group,
     return x
 
 
+def _pick(c: Cells, g: Group) -> tuple[Array, Array]:
+    """The cell of each position holding a root of the assembly's slope nearest its angle, and
+    whether there is one."""
+    ok = (c.flo * c.fhi <= 0) & ((c.fhi - c.flo) * g.slope > 0)   # NaN compares False
+    dist = np.abs(0.5 * (c.lo + c.hi) - g.ref)
+    kk = np.argmin(np.where(ok, dist, np.inf), axis=1)
+    found: Array = ok[np.arange(kk.size), kk]
+    return kk, found
+
+
 def solve(loci: Loci, g: Group) -> tuple[Array, Array, Array]:
     """θ of the base link at every position, the gap (−|f| at the root; where the group does
     not close, the least |f| over the turn) and the sine: |f′|·(the loci's meet sine) over the
     group's size (0: the group's Jacobian is singular)."""
-    c = cells(loci, g, g.sigma)
-    ok = (c.flo * c.fhi <= 0) & ((c.fhi - c.flo) * g.slope > 0)   # NaN compares False
-    dist = np.abs(0.5 * (c.lo + c.hi) - g.ref)
-    kk = np.argmin(np.where(ok, dist, np.inf), axis=1)
-    r = np.arange(kk.size)
-    found = ok[r, kk]
-    theta = np.full(kk.size, np.nan)
-    gap = np.where(np.isfinite(c.least), c.least, g.size)
-    sine = np.zeros(kk.size)
+    n = loci[0].shape[0]
+    lo, hi, flo, fhi = (np.full(n, np.nan) for _ in range(4))
+    found = np.zeros(n, bool)
+    gap = np.full(n, g.size)
+    todo = np.arange(n)
+    for half in (WINDOW, GRID // 2):
+        if not todo.size:
+            break
+        sub = tuple(p[todo] for p in loci)
+        c = cells(sub, g, g.sigma, half)
+        kk, hit = _pick(c, g)
+        r = np.arange(todo.size)
+        lo[todo], hi[todo], flo[todo], fhi[todo] = (x[r, kk] for x in (c.lo, c.hi, c.flo, c.fhi))
+        found[todo] = hit
+        if half == GRID // 2:
+            gap[todo] = np.where(np.isfinite(c.least), c.least, g.size)
+        todo = todo[~hit]
+    theta = np.full(n, np.nan)
+    sine = np.zeros(n)
     idx = np.nonzero(found)[0]
     if idx.size:
         sub = tuple(p[idx] for p in loci)
-        lo, hi = c.lo[idx, kk[idx]], c.hi[idx, kk[idx]]
-        x = refine(sub, lo, hi, c.flo[idx, kk[idx]], c.fhi[idx, kk[idx]], g, g.sigma)
+        a, b_ = lo[idx], hi[idx]
+        x = refine(sub, a, b_, flo[idx], fhi[idx], g, g.sigma)
         f, msine = closure(sub, x, g)
         h = 1e-7
-        a, b_ = np.maximum(x - h, lo), np.minimum(x + h, hi)
+        a, b_ = np.maximum(x - h, a), np.minimum(x + h, b_)
         fp = (closure(sub, b_, g)[0] - closure(sub, a, g)[0]) / (b_ - a)
         theta[idx] = x
         gap[idx] = -np.abs(f)
@@ -207,7 +301,7 @@ def solve(loci: Loci, g: Group) -> tuple[Array, Array, Array]:
 def roots(loci: Loci, g: Group, sigma: int) -> list[tuple[float, int]]:
     """Every root (θ, sign of f′) of branch ``sigma`` at the first position (the assembly)."""
     first = tuple(p[:1] for p in loci)
-    c = cells(first, g._replace(ref=0.0), sigma)
+    c = cells(first, g._replace(ref=0.0), sigma, FINE // 2, FINE)
     f0, f1 = c.flo[0], c.fhi[0]
     k = np.nonzero(np.isfinite(f0) & np.isfinite(f1) & (f0 * f1 <= 0) & (f0 != f1))[0]
     if not k.size:
@@ -224,4 +318,4 @@ def roots(loci: Loci, g: Group, sigma: int) -> list[tuple[float, int]]:
     return uniq
 
 
-__all__ = ["GRID", "Group", "closure", "first_point", "roots", "solve"]
+__all__ = ["GRID", "WINDOW", "Group", "closure", "first_point", "roots", "solve"]
