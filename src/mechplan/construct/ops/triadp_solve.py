@@ -195,12 +195,13 @@ class Cells(NamedTuple):
     least: Array    # (N,) the least |f| over the turn (the gap where no root is found)
 
 
-def cells(loci: Loci, g: Group, sigma: int, half: int = GRID // 2, grid: int = GRID) -> Cells:
-    """``half`` cells of a grid of ``grid`` over the turn on each side of the assembly's angle
+def cells(loci: Loci, g: Group, sigma: int, half: int = GRID // 2, per_turn: int = GRID
+          ) -> Cells:
+    """``half`` cells of a grid of ``per_turn`` over the turn on each side of the assembly's angle
     (by default the whole turn), those with one end off the domain cut at the edge (the part on
     the domain kept)."""
     n = loci[0].shape[0]
-    th = g.ref + np.arange(-half, half + 1) * (2 * math.pi / grid)
+    th = g.ref + np.arange(-half, half + 1) * (2 * math.pi / per_turn)
     grid = _grid_loci(loci, g)
     f = closure(grid, np.broadcast_to(th, (n, th.size)), g, sigma)[0]
     m = th.size - 1
