@@ -264,6 +264,10 @@ def emit_velocity(b: Builder, g: Triad) -> None:
         if lg.slides:
             images.link_scalar(b, lg.link, lg.known, V, gn)
             if lg.known != GROUND:
+                # the point of the guide's link under B_i: its absolute velocity, then the
+                # sliding velocity to b_i
+                b.segment(V, images.pole(V), start, f"p{b.c[start].label}",
+                          f"v_{lg.b}{lg.known}", SegmentKind.ABSOLUTE, gn)
                 _relative(b, start, b.vel[lg.b], f"v_{lg.b}{lg.link}{lg.b}{lg.known}",
                           SegmentKind.SLIDING, gn)
         else:
