@@ -170,9 +170,9 @@ def _edges(loci: Loci, lo: Array, hi: Array, finite_lo: Array, g: Group,
         return out
     rest = np.nonzero(~done)[0]
     sub = tuple(p[rest] for p in loci)
-    x = x.copy()
-    x[rest] = _bisect(sub, on[rest], off[rest], g, sigma)
-    return x
+    out = np.array(x, dtype=float)
+    out[rest] = _bisect(sub, on[rest], off[rest], g, sigma)
+    return out
 
 
 def _bisect(loci: Loci, on: Array, off: Array, g: Group, sigma: int) -> Array:

@@ -29,7 +29,7 @@ from ..ops import Op
 from ..ops.triadp import roots
 from ..segments import SegmentKind
 from ..step import Kind, Role
-from ..terms import GIVEN, from_to, parallel, perp
+from ..terms import GIVEN, Row, from_to, parallel, perp
 from . import images
 from .acceleration import _coriolis, _epsilon, _normal, _tangential
 from .position import _angle_of, angle_from_pair, complete, locus, locus_id
@@ -214,7 +214,7 @@ def _vel_start(b: Builder, lg: Leg, gn: str) -> str:
     return b.vel[lg.a]
 
 
-def _vel_rows(b: Builder, lg: Leg, target: str) -> tuple[str, list]:
+def _vel_rows(b: Builder, lg: Leg, target: str) -> tuple[str, list[Row]]:
     """The leg's side of a velocity equation for ``target`` (S or B_k) and its table rows; a
     slider on the frame gives B_k's velocity itself (empty side, one row ∥ the guide)."""
     if lg.slides:
@@ -301,7 +301,7 @@ def _acc_line(b: Builder, lg: Leg, through: str, gn: str) -> str:
     return images.perp_line(b, A, through, lg.a, lg.b, gn)
 
 
-def _acc_rows(b: Builder, lg: Leg, target: str) -> tuple[str, list]:
+def _acc_rows(b: Builder, lg: Leg, target: str) -> tuple[str, list[Row]]:
     """The leg's side of an acceleration equation for ``target`` (B_k, or S with the base link's
     normal component added by the caller); its unknown tangential (or relative) parts, of one
     direction, make one row as the courses write them."""
@@ -357,7 +357,7 @@ def emit_acceleration(b: Builder, g: Triad) -> None:
             _epsilon(b, lg.link, lg.a, b.pos[lg.b], starts[n], b.acc[lg.b], gn)
             _tangential(b, starts[n], b.acc[lg.b], f"a^t_{lg.b}{lg.a}", gn)
         images.complete(b, lg.link, A, gn)
-    rows = []
+    rows: list[Row] = []
     eqs = []
     for n in (i, j):
         e, r = _acc_rows(b, ls[n], name)
