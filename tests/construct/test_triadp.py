@@ -74,6 +74,11 @@ def _exact(phi, guess, variant=False):
             return [_d2(a, b) - L["AB"] ** 2, _d2(b, c) - L["BC"] ** 2, _d2(b, e) - L["BE"] ** 2,
                     _d2(c, e) - L["CE"] ** 2,
                     -mp.sin(gamma) * (cx - hx) + mp.cos(gamma) * (cy - hy), ex - GUIDE_X]
+        if variant == "block":      # a block pinned at F sliding on the base link's line EB
+            f = (156.3 * MM, -36.4 * MM)
+            return [_d2(a, b) - L["AB"] ** 2, _d2(b, c) - L["BC"] ** 2, _d2(b, e) - L["BE"] ** 2,
+                    _d2(c, e) - L["CE"] ** 2, _d2(D, c) - L["DC"] ** 2,
+                    (bx - ex) * (f[1] - ey) - (by - ey) * (f[0] - ex)]
         if variant is True:
             guide = -mp.sin(phi + ALPHA) * ex + mp.cos(phi + ALPHA) * ey
         else:       # a frame guide through G = (140 mm, 0) at ``variant`` degrees (90: vertical)
@@ -135,6 +140,7 @@ def test_a_leg_carrying_the_guide_is_refused_with_its_links():
         analyse(replace(mech, pairs=pairs))
     msg = str(info.value)
     assert "class III group" in msg and "3, 2, 4, 5" in msg and "slide on a known" in msg
+    assert "a block pinned to a known link" in msg
 
 
 def _compare(s, variant=False):
@@ -219,6 +225,51 @@ def test_two_slider_legs_match_mpmath_and_virtual_power():
         assert s.forces.M_b_zhukovsky[k] == pytest.approx(expected, rel=1e-11, abs=1e-12)
 
 
+def _block() -> str:
+    """The slider E replaced by a block 5 pinned to the frame at F, sliding on the base link's
+    guide along EB: a group RRR-RRP (the third leg's pair with the base link prismatic)."""
+    t = TEMPLATE.read_text(encoding="utf-8")
+    t = t.replace('G = ["140 mm", "0 mm"]\nguides.g = { through = "G", angle = "90 deg" }',
+                  'F = ["156.3 mm", "-36.4 mm"]')
+    t = t.replace('side = { E = "right of B->C" }',
+                  'side = { E = "right of B->C" }\nguides.h = { through = "E", toward = "B" }')
+    t = t.replace('slides = { point = "E", on = "g" }    # its mass neglected',
+                  'slides = { point = "F", on = "h" }')
+    return t.replace('E = ["140 mm", "22 mm"]', 'E = ["140 mm", "21 mm"]')
+
+
+def test_a_block_sliding_on_the_base_link_matches_mpmath_and_virtual_power():
+    text = _block()
+    (g,) = analyse(parse_scene(text, "t.toml").mechanism).groups
+    assert g.kind == "RRR-RRP"
+    s = mechplan.loads(text).solve(np.arange(0.0, 360.0, 40.0), fast=False)
+    worst = _compare(s, variant="block")
+    assert worst["r"] < 1e-15 and worst["v"] < 1e-14 and worst["a"] < 2e-13, worst
+    # the block turns with the base link
+    assert np.allclose(s.omega["5"], s.omega["3"]) and np.allclose(s.epsilon["5"], s.epsilon["3"])
+    for k, phi_deg in enumerate(s.phi_deg):
+        guess = [float(x) + 0.001 for n in "BCE" for x in s.r[n][k]]
+        expected = _power_balance_moment(phi_deg, guess, variant="block")
+        assert s.forces.M_b[k] == pytest.approx(expected, rel=1e-11, abs=1e-12)
+        assert s.forces.M_b_zhukovsky[k] == pytest.approx(expected, rel=1e-11, abs=1e-12)
+    # the massless block: the frame's pin force and the base link's guide force cancel, ⊥ EB
+    sol = solve(parse_scene(text, "t.toml"))
+    ev, res = sol.ev, sol.construction.results
+    r05, r35 = ev[res["R_05"]], ev[res["R_35"]]
+    at = mechplan.loads(text).solve(plans=("position",), fast=False)     # the same positions
+    eb = at.r["B"] - at.r["E"]
+    assert np.max(np.abs(r05 + r35)) < 1e-9 * max(1.0, float(np.max(np.abs(r05))))
+    assert np.max(np.abs(np.sum(r35 * eb, axis=1))) < 1e-9 * float(np.max(np.abs(r35)))
+
+
+def test_a_block_with_a_mass_is_refused_by_the_force_plan():
+    text = _block().replace('slides = { point = "F", on = "h" }',
+                            'slides = { point = "F", on = "h" }\nmass = "1 kg"')
+    with pytest.raises(mechplan.errors.SceneError) as info:
+        solve(parse_scene(text, "t.toml"))
+    assert "block 5" in str(info.value) and "III(2,3,4,5)" in str(info.value)
+
+
 def test_every_link_stays_rigid_and_e_in_its_guide():
     m = mechplan.load(TEMPLATE)
     s = m.solve(np.arange(0.0, 360.0, 1.0), plans=("position", "velocity", "acceleration"),
@@ -259,8 +310,9 @@ def _power_balance_moment(phi_deg, guess, variant=False):
         m_, j_ = mp.mpf(m_), mp.mpf(j_)
         vs, as_ = mid(v, p, q), mid(a, p, q)
         power += -m_ * (as_[0] * vs[0] + as_[1] * vs[1]) - j_ * rate(p, q, a) * rate(p, q, v)
-    power += -(a["E"][0] * v["E"][0] + a["E"][1] * v["E"][1])      # the slider: 1 kg at E
-    power += -200 * v["E"][1]                                        # 200 N at E, downwards
+    if variant != "block":
+        power += -(a["E"][0] * v["E"][0] + a["E"][1] * v["E"][1])  # the slider: 1 kg at E
+        power += -200 * v["E"][1]                                    # 200 N at E, downwards
     power += -150 * v["C"][1]                                        # 150 N at C, downwards
     if variant != "rpp":
         power += -20 * rate("D", "C", v)                             # −20 N·m on the rocker DC

@@ -94,8 +94,8 @@ class Triad:
 
     @property
     def sliding(self) -> bool:
-        """Whether a leg slides on a known link's guide (outer prismatic pair)."""
-        return any(p.kind is PairKind.PRISMATIC for p in self.outer)
+        """Whether a leg slides on a guide (a prismatic pair: construct/plans/triadp.py)."""
+        return any(p.kind is PairKind.PRISMATIC for p in self.pairs)
 
 
 def _link_order(link: str) -> tuple[int, str]:
@@ -316,14 +316,20 @@ def _find_triad(mech: Mechanism, remaining: list[str], known: set[str]) -> Triad
 
 
 def _slider_legs(triad: Triad) -> bool:
-    """Whether every leg is RR or a slider on a known link's guide pinned to the base at the
-    slider's point (outer P with the leg as the slider, inner R at the pair's point)."""
+    """Whether every leg is RR, a slider on a known link's guide pinned to the base at the
+    slider's point (outer P with the leg as the slider, inner R at the pair's point), or — one
+    leg at most — a block pinned to a known link sliding on a guide of the base link (outer R,
+    inner P with the leg as the slider at the outer pair's point)."""
+    blocks = 0
     for leg, o, i in zip(triad.legs, triad.outer, triad.inner, strict=True):
-        if i.kind is not PairKind.REVOLUTE:
+        if i.kind is PairKind.PRISMATIC:
+            if (o.kind is not PairKind.REVOLUTE or i.a != leg or i.b != triad.base
+                    or i.point != o.point):
+                return False
+            blocks += 1
+        elif o.kind is PairKind.PRISMATIC and (o.a != leg or o.point != i.point):
             return False
-        if o.kind is PairKind.PRISMATIC and (o.a != leg or o.point != i.point):
-            return False
-    return True
+    return blocks <= 1
 
 
 def _raise_undecomposable(mech: Mechanism, remaining: list[str], known: set[str]) -> None:

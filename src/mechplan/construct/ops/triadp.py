@@ -23,11 +23,13 @@ def params(step: Step) -> Group:
     """The group's dimensions and assembly as the step carries them."""
     d2, d3 = step.param("d2"), step.param("d3")
     lengths = step.param("l")
+    q = step.param("q", (0.0, 0.0))
     return Group(str(step.param("kinds")), (float(lengths[0]), float(lengths[1]),
                                             float(lengths[2])),
                  (float(d2[0]), float(d2[1])), (float(d3[0]), float(d3[1])),
                  int(step.param("sigma")), int(step.param("slope", 1)),
-                 float(step.param("theta_ref", 0.0)))
+                 float(step.param("theta_ref", 0.0)),
+                 (float(q[0]), float(q[1])), float(step.param("q_angle", 0.0)))
 
 
 def roots(one: Array, two: Array, three: Array, step: Step, sigma: int

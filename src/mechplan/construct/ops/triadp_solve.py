@@ -6,7 +6,9 @@ line through B_i, kind ``P``) for a slider leg. The legs are taken in the order 
 first). With the base link's angle θ, B_2 − B_1 = R(θ)·d2 and B_3 − B_1 = R(θ)·d3 (d2, d3 in
 the base link's frame), so B_1 is where locus 1 meets locus 2 shifted by −R(θ)·d2 (two circles
 or a circle and a line: branch σ; two lines: one meet), and the closure is f(θ) = 0 with
-f = |B_3 − A_3| − l_3 (an arc) or f = u_3 × (B_3 − P_3) (a line: the signed distance from it).
+f = |B_3 − A_3| − l_3 (an arc) or f = u_3 × (B_3 − P_3) (a line: the signed distance from it);
+a third leg of kind ``Q`` is a block pinned at A_3 sliding on a guide of the base link: f is
+A_3's signed distance from that guide, (R(θ)·u) × (A_3 − B_1 − R(θ)·q).
 
 The root of branch σ where f crosses zero with the sign ``slope``, nearest (circularly) to the
 assembly's angle ``ref``, is bracketed on a grid of ``GRID`` cells (first the ``WINDOW`` cells on
@@ -56,6 +58,10 @@ class Group(NamedTuple):
     sigma: int
     slope: int
     ref: float
+    #: a third leg of kind ``Q`` (a block sliding on a guide of the base link): the guide's
+    #: point relative to B_1 and its angle, in the base link's frame
+    q: tuple[float, float] = (0.0, 0.0)
+    q_angle: float = 0.0
 
     @property
     def size(self) -> float:
@@ -97,6 +103,11 @@ def closure(loci: Loci, theta: Array, g: Group,
     third = loci[2]
     if g.kinds[2] == "R":
         f = np.hypot(bx - third[..., 0], by - third[..., 1]) - g.l[2]
+    elif g.kinds[2] == "Q":      # A_3 on the base link's guide: (R(θ)·u) × (A_3 − origin)
+        ox, oy = _rot(g.q, c, s)
+        ux, uy = np.cos(theta + g.q_angle), np.sin(theta + g.q_angle)
+        f = (ux * (third[..., 1] - b1[..., 1] - oy)
+             - uy * (third[..., 0] - b1[..., 0] - ox))
     else:
         p, u = third[..., 0, :], third[..., 1, :]
         f = u[..., 0] * (by - p[..., 1]) - u[..., 1] * (bx - p[..., 0])

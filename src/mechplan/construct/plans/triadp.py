@@ -49,20 +49,40 @@ class Leg:
     b: str
     pair: Pair
     known: str
+    inner: Pair
 
     @property
     def slides(self) -> bool:
+        """A slider on the known link's guide, pinned to the base link at B_i."""
         return self.pair.kind is PairKind.PRISMATIC
+
+    @property
+    def block(self) -> bool:
+        """A block pinned to the known link at A_i, sliding on a guide of the base link."""
+        return self.inner.kind is PairKind.PRISMATIC
+
+    @property
+    def guided(self) -> bool:
+        return self.slides or self.block
+
+    @property
+    def guide_pair(self) -> Pair:
+        return self.inner if self.block else self.pair
 
 
 def legs(g: Triad) -> list[Leg]:
     """The group's legs in its order."""
-    return [Leg(leg, o.point, i.point, o, o.other(leg))
+    return [Leg(leg, o.point, i.point, o, o.other(leg), i)
             for leg, o, i in zip(g.legs, g.outer, g.inner, strict=True)]
 
 
 def _locus(b: Builder, leg: Leg) -> str:
-    return locus_id(leg.link, leg.b, leg.pair.guide)
+    return locus_id(leg.link, leg.b, leg.guide_pair.guide)
+
+
+def base_key(g: Triad, lg: Leg) -> str:
+    """The image key of the base link's point under a block leg's pin (``A@3``)."""
+    return f"{lg.a}@{g.base}"
 
 
 def special_legs(b: Builder, g: Triad) -> tuple[int, int, int]:
@@ -84,15 +104,20 @@ def emit_position(b: Builder, g: Triad) -> None:
             loci.append(locus(b, lg.link, lg.b, lg.pair, lg.known, g.name))
         else:
             loci.append(b.pos[lg.a])
-    order = sorted(range(3), key=lambda n: ls[n].slides)      # arcs first (stable)
+    # arcs first, then the known guides' lines, a block on the base link's guide last
+    order = sorted(range(3), key=lambda n: 2 if ls[n].block else int(ls[n].slides))
     base = mech.links[g.base]
     first = ls[order[0]].b
     (x1, y1) = base.points[first]
-    d = [(base.points[ls[n].b][0] - x1, base.points[ls[n].b][1] - y1) for n in order]
-    lengths = [0.0 if ls[n].slides else mech.links[ls[n].link].distance(ls[n].a, ls[n].b)
+    d = [(0.0, 0.0) if ls[n].block else
+         (base.points[ls[n].b][0] - x1, base.points[ls[n].b][1] - y1) for n in order]
+    lengths = [0.0 if ls[n].guided else mech.links[ls[n].link].distance(ls[n].a, ls[n].b)
                for n in order]
-    kinds = "".join("P" if ls[n].slides else "R" for n in order)
-    params = {"kinds": kinds, "l": tuple(lengths), "d2": d[1], "d3": d[2]}
+    kinds = "".join("Q" if ls[n].block else "P" if ls[n].slides else "R" for n in order)
+    params: dict[str, object] = {"kinds": kinds, "l": tuple(lengths), "d2": d[1], "d3": d[2]}
+    if ls[order[2]].block:
+        gd = b.guide_of(ls[order[2]].inner)
+        params.update(q=(gd.origin[0] - x1, gd.origin[1] - y1), q_angle=gd.angle)
     inputs = tuple(loci[n] for n in order)
     subject = tuple(b.c[s].label for s in inputs)
     sid = b.add(f"pos.angle.{g.base}", Op.TRIADP_ANGLE, inputs, P, Kind.SCALAR, Role.RESULT,
@@ -109,6 +134,10 @@ def emit_position(b: Builder, g: Triad) -> None:
     for lg in ls:
         if lg.slides:
             b.bodies[lg.link].anchor = lg.b
+        elif lg.block:
+            angle_from_pair(b, lg.link, lg.inner, g.base, g.name)
+            b.bodies[lg.link].anchor = lg.a
+            locus(b, lg.link, lg.a, lg.inner, g.base, g.name)
         else:
             b.bodies[lg.link].anchor = lg.a
             _angle_of(b, lg.link, lg.a, lg.b, g.name)
@@ -171,7 +200,7 @@ def _special_point(b: Builder, g: Triad) -> None:
     ev = b.c.evaluate(b.assembly_phi)
 
     def direction(lg: Leg) -> np.ndarray:
-        if lg.slides:
+        if lg.guided:
             u = ev[_locus(b, lg)][0][1]
             return np.array([-u[1], u[0]])
         d = ev[b.pos[lg.b]][0] - ev[b.pos[lg.a]][0]
@@ -185,7 +214,7 @@ def _special_point(b: Builder, g: Triad) -> None:
     lines = []
     for lg in (ls[i], ls[j]):
         sid = f"pos.line.{g.name}.{lg.b}"
-        if lg.slides:
+        if lg.guided:
             lines.append(b.add(sid, Op.NORMAL_THROUGH, (b.pos[lg.b], _locus(b, lg)), P,
                                Kind.LINE, Role.AUXILIARY, f"n{lg.b}", g.name,
                                subject=(lg.b, b.c[_locus(b, lg)].label)))
@@ -202,7 +231,7 @@ def _special_point(b: Builder, g: Triad) -> None:
 # -- velocity -------------------------------------------------------------------------------------
 def _vel_line(b: Builder, lg: Leg, through: str, gn: str) -> str:
     """Through a known image, the line of the leg's unknown relative velocity."""
-    if lg.slides:
+    if lg.guided:
         return images.parallel_line(b, V, through, _locus(b, lg), gn)
     return images.perp_line(b, V, through, lg.a, lg.b, gn)
 
@@ -211,12 +240,16 @@ def _vel_start(b: Builder, lg: Leg, gn: str) -> str:
     """The known image the leg's relative velocity starts from: a_i, or B_i on the guide's link."""
     if lg.slides:
         return images.coincident(b, lg.known, lg.b, V, gn)
-    return b.vel[lg.a]
+    return b.vel[lg.a]         # a revolute leg's A_i, a block's pin
 
 
 def _vel_rows(b: Builder, lg: Leg, target: str) -> tuple[str, list[Row]]:
     """The leg's side of a velocity equation for ``target`` (S or B_k) and its table rows; a
     slider on the frame gives B_k's velocity itself (empty side, one row ∥ the guide)."""
+    if lg.block:
+        guide = b.c[_locus(b, lg)].label
+        return (f"v_{lg.a} + v_{target}{lg.a}",
+                [(f"v_{lg.a}", GIVEN, "✓"), (f"v_{target}{lg.a}", parallel(guide), "?")])
     if lg.slides:
         guide = b.c[_locus(b, lg)].label
         bb = lg.b
@@ -253,15 +286,34 @@ def emit_velocity(b: Builder, g: Triad) -> None:
     b.segment(V, images.pole(V), s, f"p{vlabel(name)}", f"v_{name}", SegmentKind.ABSOLUTE, gn)
     bk = lk.b
     start_k = _vel_start(b, lk, gn)
-    b.vel[bk] = images.meet_lines(b, V, f"vel.{bk}", images.perp_line(b, V, s, name, bk, gn),
-                                  _vel_line(b, lk, start_k, gn), vlabel(bk), gn)
-    _omega(b, g.base, name, b.pos[bk], s, b.vel[bk], gn)
-    _relative(b, s, b.vel[bk], f"v_{bk}{name}", SegmentKind.RELATIVE, gn)
-    images.absolute(b, bk, V, gn)
+    bk_name = f"{bk}{g.base}" if lk.block else bk
+    if lk.block:        # the base link's point under the block's pin
+        key = base_key(g, lk)
+        label = (vlabel(bk) + g.base) if not any(ch.isdigit() for ch in bk) \
+            else f"{vlabel(bk)}_{g.base}"
+        vk = images.meet_lines(b, V, f"vel.{key}", images.perp_line(b, V, s, name, bk, gn),
+                               _vel_line(b, lk, start_k, gn), label, gn)
+        b.bodies[g.base].images.append(Image(key, bk_name, b.pos[bk], vel=vk))
+        b.segment(V, images.pole(V), vk, f"p{label}", f"v_{bk_name}", SegmentKind.ABSOLUTE, gn)
+    else:
+        vk = b.vel[bk] = images.meet_lines(
+            b, V, f"vel.{bk}", images.perp_line(b, V, s, name, bk, gn),
+            _vel_line(b, lk, start_k, gn), vlabel(bk), gn)
+        images.absolute(b, bk, V, gn)
+    _omega(b, g.base, name, b.pos[bk], s, vk, gn)
+    _relative(b, s, vk, f"v_{bk_name}{name}", SegmentKind.RELATIVE, gn)
     images.complete(b, g.base, V, gn)
     for lg in ls:
         start = _vel_start(b, lg, gn)
-        if lg.slides:
+        if lg.block:
+            images.link_scalar(b, lg.link, g.base, V, gn)
+            on_base = images.coincident(b, g.base, lg.a, V, gn)
+            if lg is not lk:
+                b.segment(V, images.pole(V), on_base, f"p{b.c[on_base].label}",
+                          f"v_{lg.a}{g.base}", SegmentKind.ABSOLUTE, gn)
+            _relative(b, on_base, start, f"v_{lg.a}{lg.link}{lg.a}{g.base}",
+                      SegmentKind.SLIDING, gn)
+        elif lg.slides:
             images.link_scalar(b, lg.link, lg.known, V, gn)
             if lg.known != GROUND:
                 # the point of the guide's link under B_i: its absolute velocity, then the
@@ -277,16 +329,20 @@ def emit_velocity(b: Builder, g: Triad) -> None:
     ei, ri = _vel_rows(b, li, name)
     ej, rj = _vel_rows(b, lj, name)
     b.c.equations[(V, f"{gn} {name}")] = (_chain(f"v_{name}", ei, ej), ri + rj)
-    ek, rk = _vel_rows(b, lk, bk)
+    ek, rk = _vel_rows(b, lk, bk_name)
     b.c.equations[(V, f"{gn} {bk}")] = (
-        _chain(f"v_{bk}", f"v_{name} + v_{bk}{name}", ek),
-        [(f"v_{name}", GIVEN, "✓"), (f"v_{bk}{name}", perp(f"{name}{bk}"), "?"), *rk])
+        _chain(f"v_{bk_name}", f"v_{name} + v_{bk_name}{name}", ek),
+        [(f"v_{name}", GIVEN, "✓"), (f"v_{bk_name}{name}", perp(f"{name}{bk}"), "?"), *rk])
 
 
 # -- acceleration ---------------------------------------------------------------------------------
 def _acc_start(b: Builder, lg: Leg, gn: str) -> str:
     """The end of the known components of B_i's acceleration relative to the leg's known link:
     a_i + a^n_{B_iA_i}, or the image of B_i on the guide's link + Coriolis."""
+    if lg.block:        # a_A + 2ω_base × (v of the base's point under A − v_A)
+        on_base = images.coincident(b, g_base(b, lg), lg.a, V, gn)
+        return _coriolis(b, b.acc[lg.a], g_base(b, lg), b.vel[lg.a], on_base,
+                         f"{lg.a}{g_base(b, lg)}{lg.a}{lg.link}", gn)
     if lg.slides:
         km = images.coincident(b, lg.known, lg.b, A, gn)
         kv = images.coincident(b, lg.known, lg.b, V, gn)
@@ -295,8 +351,13 @@ def _acc_start(b: Builder, lg: Leg, gn: str) -> str:
     return _normal(b, b.acc[lg.a], lg.link, lg.a, lg.b, lg.b, gn)
 
 
+def g_base(b: Builder, lg: Leg) -> str:
+    """The base link a block leg slides on (the carrier of its guide)."""
+    return lg.inner.b
+
+
 def _acc_line(b: Builder, lg: Leg, through: str, gn: str) -> str:
-    if lg.slides:
+    if lg.guided:
         return images.parallel_line(b, A, through, _locus(b, lg), gn)
     return images.perp_line(b, A, through, lg.a, lg.b, gn)
 
@@ -305,6 +366,13 @@ def _acc_rows(b: Builder, lg: Leg, target: str) -> tuple[str, list[Row]]:
     """The leg's side of an acceleration equation for ``target`` (B_k, or S with the base link's
     normal component added by the caller); its unknown tangential (or relative) parts, of one
     direction, make one row as the courses write them."""
+    if lg.block:
+        guide = b.c[_locus(b, lg)].label
+        a, leg, base = lg.a, lg.link, g_base(b, lg)
+        cor, unknown = f"a^k_{a}{base}{a}{leg}", f"a^r_{target}{a}"
+        return (f"a_{a} + {cor} + {unknown}",
+                [(f"a_{a}", GIVEN, "✓"), (cor, perp(guide), f"2ω{base}·v_{a}{leg}{a}{base}"),
+                 (unknown, parallel(guide), "?")])
     if lg.slides:
         guide = b.c[_locus(b, lg)].label
         m, bb, leg = lg.known, lg.b, lg.link
@@ -339,15 +407,30 @@ def emit_acceleration(b: Builder, g: Triad) -> None:
     b.segment(A, images.pole(A), s, f"π{alabel(name)}", f"a_{name}", SegmentKind.ABSOLUTE, gn)
     lk = ls[k]
     bk = lk.b
+    bk_name = f"{bk}{g.base}" if lk.block else bk
     n_ks = _normal(b, s, g.base, name, bk, bk, gn)
-    b.acc[bk] = images.meet_lines(b, A, f"acc.{bk}", images.perp_line(b, A, n_ks, name, bk, gn),
-                                  _acc_line(b, lk, starts[k], gn), alabel(bk), gn)
-    _epsilon(b, g.base, name, b.pos[bk], n_ks, b.acc[bk], gn)
-    _tangential(b, n_ks, b.acc[bk], f"a^t_{bk}{name}", gn)
-    images.absolute(b, bk, A, gn)
+    if lk.block:
+        key = base_key(g, lk)
+        label = ((vlabel(bk) + g.base) if not any(ch.isdigit() for ch in bk)
+                 else f"{vlabel(bk)}_{g.base}") + "′"
+        ak = images.meet_lines(b, A, f"acc.{key}", images.perp_line(b, A, n_ks, name, bk, gn),
+                               _acc_line(b, lk, starts[k], gn), label, gn)
+        img = b.bodies[g.base].image(key)
+        assert img is not None
+        img.acc = ak
+        b.segment(A, images.pole(A), ak, f"π{label}", f"a_{bk_name}", SegmentKind.ABSOLUTE, gn)
+    else:
+        ak = b.acc[bk] = images.meet_lines(
+            b, A, f"acc.{bk}", images.perp_line(b, A, n_ks, name, bk, gn),
+            _acc_line(b, lk, starts[k], gn), alabel(bk), gn)
+        images.absolute(b, bk, A, gn)
+    _epsilon(b, g.base, name, b.pos[bk], n_ks, ak, gn)
+    _tangential(b, n_ks, ak, f"a^t_{bk_name}{name}", gn)
     images.complete(b, g.base, A, gn)
     for n, lg in enumerate(ls):
-        if lg.slides:
+        if lg.block:
+            images.link_scalar(b, lg.link, g.base, A, gn)
+        elif lg.slides:
             images.link_scalar(b, lg.link, lg.known, A, gn)
             if lg.known != GROUND:
                 b.segment(A, starts[n], b.acc[lg.b],
@@ -367,12 +450,12 @@ def emit_acceleration(b: Builder, g: Triad) -> None:
         rows += r[:-1] + [(f"a^n_{name}{bb}", from_to(name, bb), f"ω{g.base}²·l_{bb}{name}"),
                           r[-1]]
     b.c.equations[(A, f"{gn} {name}")] = (f"a_{name} = {eqs[0]} = {eqs[1]}", rows)
-    ek, rk = _acc_rows(b, lk, bk)
+    ek, rk = _acc_rows(b, lk, bk_name)
     b.c.equations[(A, f"{gn} {bk}")] = (
-        _chain(f"a_{bk}", f"a_{name} + a^n_{bk}{name} + a^t_{bk}{name}", ek),
-        [(f"a_{name}", GIVEN, "✓"), (f"a^n_{bk}{name}", from_to(bk, name),
+        _chain(f"a_{bk_name}", f"a_{name} + a^n_{bk_name}{name} + a^t_{bk_name}{name}", ek),
+        [(f"a_{name}", GIVEN, "✓"), (f"a^n_{bk_name}{name}", from_to(bk, name),
                                      f"ω{g.base}²·l_{name}{bk}"),
-         (f"a^t_{bk}{name}", perp(f"{name}{bk}"), "?"), *rk])
+         (f"a^t_{bk_name}{name}", perp(f"{name}{bk}"), "?"), *rk])
 
 
 __all__ = ["emit_acceleration", "emit_position", "emit_velocity", "legs", "special_legs"]

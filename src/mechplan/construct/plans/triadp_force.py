@@ -13,6 +13,8 @@ reactions.
 
 from __future__ import annotations
 
+from ...errors import SceneError
+from ...i18n import Text
 from ...model.plans import Plan
 from ...model.structure import Triad
 from ..ops import Op
@@ -44,15 +46,15 @@ F = Plan.FORCE
 def _unknown_line(st: State, gn: str, lg: Leg, through: str, tag: str) -> str:
     """Through a vertex of the polygon, the line of the leg's unknown: ∥ A_iB_i or ⊥ the guide."""
     b = st.b
-    if lg.slides:
-        return _line(st, gn, through, tag, f"⊥{lg.pair.guide}", _guide_angle(st, lg.pair),
-                     turn=90)
+    if lg.guided:
+        guide = lg.guide_pair
+        return _line(st, gn, through, tag, f"⊥{guide.guide}", _guide_angle(st, guide), turn=90)
     return _line(st, gn, through, tag, f"∥{lg.a}{lg.b}", b.pos[lg.a], b.pos[lg.b], turn=0)
 
 
 def _unknown_row(lg: Leg, label: str, known: str) -> Row:
-    if lg.slides:
-        return (label, perp_to(f"{lg.pair.guide}"), known)
+    if lg.guided:
+        return (label, perp_to(f"{lg.guide_pair.guide}"), known)
     return (label, parallel_to(f"{lg.a}{lg.b}"), known)
 
 
@@ -67,6 +69,13 @@ def emit(st: State, g: Triad) -> None:
     couples: dict[int, str] = {}
     group_terms: list[Term] = []
     for n, lg in enumerate(ls):
+        if lg.block:
+            # a block without forces of its own: its pin's reaction is the guide's, ⊥ it
+            if any(t.force is not None for t in st.terms[lg.link]):
+                raise SceneError(Text("triadp.force.block_loads",
+                                      {"link": lg.link, "group": gn, "base": g.base}),
+                                 file=b.file, key=f"links.{lg.link}")
+            continue
         if lg.slides:
             couples[n] = _guide_couple(st, gn, lg.link, lg.pair, st.terms[lg.link],
                                        f"M_{pair_key(lg.known, lg.link)}")
@@ -78,11 +87,12 @@ def emit(st: State, g: Triad) -> None:
         group_terms += st.terms[link]
     total = _moment_sum(st, gn, g.base, name, group_terms, "special")
     lk = ls[k]
-    nk_label = (f"R_{pair_key(lk.known, lk.link)}" if lk.slides
+    nk_label = (f"R_{pair_key(lk.known, lk.link)}" if lk.guided
                 else f"R^n_{pair_key(lk.known, lk.link)}")
-    if lk.slides:
+    if lk.guided:
         rn_k = st.add(f"force.{gn}.N.{lk.known}{lk.link}", Op.LEG_NORMAL_FORCE,
-                      (b.pos[name], b.pos[lk.b], _guide_angle(st, lk.pair), total), Kind.POINT,
+                      (b.pos[name], b.pos[lk.b], _guide_angle(st, lk.guide_pair), total),
+                      Kind.POINT,
                       Role.RESULT, nk_label, gn, subject=(lk.b, name, st.label(total)))
     else:
         rn_k = st.add(f"force.{gn}.Rn.{lk.known}{lk.link}", Op.MOMENT_ALONG,
@@ -103,7 +113,7 @@ def emit(st: State, g: Triad) -> None:
     e = _chain(st, gn, w_j, own(j))
     li, lj = ls[i], ls[j]
     f = _close(st, gn, _unknown_line(st, gn, lj, e, "nj"), _unknown_line(st, gn, li, o, "ni"))
-    lab = {n: f"{'R' if ls[n].slides else 'R^n'}_{pair_key(ls[n].known, ls[n].link)}"
+    lab = {n: f"{'R' if ls[n].guided else 'R^n'}_{pair_key(ls[n].known, ls[n].link)}"
            for n in (i, j)}
     if j in rt:
         _between(st, gn, e, f, lab[j], "Rnj", Role.AUXILIARY)
@@ -120,7 +130,12 @@ def emit(st: State, g: Triad) -> None:
             _reaction(st, gn, lg.pair, lg.known, lg.link, outer[n], couples[n], b.pos[lg.b])
         else:
             _reaction(st, gn, lg.pair, lg.known, lg.link, outer[n])
-        _reaction(st, gn, g.inner[n], g.base, lg.link, inner[n])
+        if lg.block:        # the base link's guide on the block: the force at A and a couple
+            couple = _guide_couple(st, gn, lg.link, lg.inner, st.terms[lg.link],
+                                   f"M_{pair_key(g.base, lg.link)}")
+            _reaction(st, gn, g.inner[n], g.base, lg.link, inner[n], couple, b.pos[lg.a])
+        else:
+            _reaction(st, gn, g.inner[n], g.base, lg.link, inner[n])
     rows: list[Row] = []
     if i in rt:
         rows.append((st.label(rt[i]), perp_to(f"{li.a}{li.b}"), "✓"))
