@@ -15,6 +15,7 @@ from ..step import Step
 from . import (
     acceleration,
     centre_velocity,
+    driver_inputs,
     drivers,
     force,
     inputs,
@@ -40,7 +41,7 @@ from .spec import (
 
 #: the families, in the order of the plans
 FAMILIES = (position, velocity, acceleration, force, drivers, triad, inputs, centre_velocity,
-            triadp)
+            driver_inputs, triadp)
 
 #: the registry: name → spec, from the families' ``__all__``
 SPECS: dict[str, OpSpec] = {spec.value: spec for family in FAMILIES
