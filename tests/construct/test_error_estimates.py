@@ -172,7 +172,11 @@ def test_regular_positions_of_every_template_have_tiny_estimates(path):
     worst = max(float(np.max(est.relative(sid))) for sid in targets)
     # a class III group chains more meets (the special point, then the third leg): its bound is
     # a few 1e-12 (the measured error against mpmath is ~1e-14, tests/construct/test_triad.py)
-    assert worst < (1e-11 if path.stem == "six_bar_triad" else 1e-12), worst
+    # with a slider leg (six_bar_triad_slider) the base link's images are built by similarity
+    # from S and the slider's point, 44 mm apart at φ ≈ 180°: a bound of 5e-10 (measured error
+    # against mpmath ≤ 1e-13, tests/construct/test_triadp.py)
+    bound = {"six_bar_triad": 1e-11, "six_bar_triad_slider": 2e-9}.get(path.stem, 1e-12)
+    assert worst < bound, worst
 
 
 

@@ -76,9 +76,10 @@ def test_one_bound_of_every_bound_holds_and_spares_the_propagation(path):
     ev.evaluate_all(targets)
     est = estimate_errors(c, ev, targets)
     assert not any(est.may_exceed(sid, 1e-6) for sid in targets)
-    if path.stem == "six_bar_triad":
+    if path.stem in ("six_bar_triad", "six_bar_triad_slider"):
         # the one bound is not tight enough for a class III group: its estimates propagate
-        assert max(float(np.max(est.relative(sid))) for sid in targets) < 1e-11
+        bound = 1e-11 if path.stem == "six_bar_triad" else 2e-9
+        assert max(float(np.max(est.relative(sid))) for sid in targets) < bound
         return
     assert est._fill is not None                        # nothing propagated
     assert 0.0 < est._all < 1e-6

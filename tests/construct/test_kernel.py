@@ -12,6 +12,10 @@ import pytest
 from construct.test_error_estimates import SLOTTED_THROUGH_PIVOT
 from scenes import TEMPLATES
 
+#: templates the fused kernel compiles (a class III group with slider legs has no scalar forms:
+#: the numpy path evaluates it, tests/construct/test_triadp.py)
+KERNEL_TEMPLATES = [p for p in TEMPLATES if p.stem != "six_bar_triad_slider"]
+
 from mechplan.construct.estimate import estimate_errors
 from mechplan.construct.kernel import (
     CANNOT_TRUST,
@@ -46,7 +50,7 @@ def _assert_same(targets, ev, est, values, rel):
         assert np.allclose(rel[sid], est.relative(sid), rtol=1e-5, atol=0), sid
 
 
-@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", KERNEL_TEMPLATES, ids=lambda p: p.stem)
 def test_generated_code_equals_the_numpy_path(path):
     _c, targets, ev, est, (values, rel, bad) = _both(load_scene(path), PHI, jit=False)
     _assert_same(targets, ev, est, values, rel)
@@ -121,7 +125,7 @@ def _statuses(kernel, phi, tol):
     return quick, full
 
 
-@pytest.mark.parametrize("path", TEMPLATES, ids=lambda p: p.stem)
+@pytest.mark.parametrize("path", KERNEL_TEMPLATES, ids=lambda p: p.stem)
 def test_quick_body_decides_like_the_full_body(path):
     # the quick body skips the estimates where a bound proves them small; every status bit and
     # value must be the full body's, at a tolerance that nothing meets (every position falls

@@ -31,8 +31,9 @@ def test_every_operation_has_one_spec():
     # second_driver_length and a driver's law by a table, driver_law (W = 2 with cylinders);
     # a crank's ω, ε (and a second crank's θ) by its law, crank_law, and a second slider's
     # second_slider_position, and a cylinder's arc cutting a guide line, circle_line_driven
-    # (ops/driver_inputs.py)
-    assert len(names) == len(set(names)) == len(SPECS) == 72
+    # (ops/driver_inputs.py); triads with slider legs' triadp_angle, triadp_point,
+    # normal_through, leg_normal_force (ops/triadp.py)
+    assert len(names) == len(set(names)) == len(SPECS) == 76
     for family in FAMILIES:
         declared = {n for n, v in vars(family).items() if isinstance(v, OpSpec)}
         assert declared == set(family.__all__), family.__name__      # none left out of Op

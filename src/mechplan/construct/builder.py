@@ -162,13 +162,13 @@ class Builder:
     def build(self, plans: tuple[str, ...]) -> Construction:
         """Emit the position plan and, as asked, velocity and acceleration plans."""
         from ..model.structure import Triad
-        from .plans import acceleration, drivers, position, second_crank, triad, velocity
+        from .plans import acceleration, drivers, position, second_crank, triad, triadp, velocity
 
         position.emit_frame_and_drive(self)
         second_crank.emit_position(self)      # W = 2: the second crank (plans/second_crank.py)
         for group in self.structure.groups:
             if isinstance(group, Triad):
-                triad.emit_position(self, group)
+                (triadp if group.sliding else triad).emit_position(self, group)
             else:
                 drivers.position_group(self, group)
         if "velocity" in plans or "acceleration" in plans or "force" in plans:
@@ -176,7 +176,7 @@ class Builder:
             second_crank.emit_velocity(self)
             for group in self.structure.groups:
                 if isinstance(group, Triad):
-                    triad.emit_velocity(self, group)
+                    (triadp if group.sliding else triad).emit_velocity(self, group)
                 else:
                     drivers.velocity_group(self, group)
         if "acceleration" in plans or "force" in plans:
@@ -184,7 +184,7 @@ class Builder:
             second_crank.emit_acceleration(self)
             for group in self.structure.groups:
                 if isinstance(group, Triad):
-                    triad.emit_acceleration(self, group)
+                    (triadp if group.sliding else triad).emit_acceleration(self, group)
                 else:
                     drivers.acceleration_group(self, group)
         if "force" in plans and self.loading is not None:

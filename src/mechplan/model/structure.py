@@ -56,7 +56,9 @@ class Triad:
     """A class III Assur group: a ternary base link joined by three binary links.
 
     ``legs[i]`` is binary link i; ``outer[i]`` its pair with a known link, ``inner[i]`` its pair
-    with the base link. Supported: all six pairs revolute (RRR-RRR).
+    with the base link. Supported: all six pairs revolute (RRR-RRR), and legs that slide on a
+    known link's guide (outer pair prismatic, the leg the slider, pinned to the base at its
+    sliding point), e.g. ``RRP-RRR``.
     """
 
     base: str
@@ -89,6 +91,11 @@ class Triad:
     def klass(self) -> int:
         """Assur class: 3."""
         return 3
+
+    @property
+    def sliding(self) -> bool:
+        """Whether a leg slides on a guide (a prismatic pair: construct/plans/triadp.py)."""
+        return any(p.kind is PairKind.PRISMATIC for p in self.pairs)
 
 
 def _link_order(link: str) -> tuple[int, str]:
@@ -317,14 +324,33 @@ def _find_triad(mech: Mechanism, remaining: list[str], known: set[str]) -> Triad
             continue
         triad = Triad(base, legs, (outer[0][0], outer[1][0], outer[2][0]),  # type: ignore[arg-type]
                       (inner[0], inner[1], inner[2]))
+        if triad.kind != "RRR-RRR" and _slider_legs(triad):
+            return triad        # legs sliding on known guides: construct/plans/triadp.py
         if triad.kind != "RRR-RRR":
             raise TopologyError(
-                Text("errmsg2.structure.triad_kind",
+                Text("triadp.structure.triad_kind",
                      {"links": ", ".join(triad.links), "base": base,
                       "pairs": ", ".join(p.name for p in triad.pairs), "kind": str(triad.kind)}),
                 key=f"links.{base}")
         return triad
     return None
+
+
+def _slider_legs(triad: Triad) -> bool:
+    """Whether every leg is RR, a slider on a known link's guide pinned to the base at the
+    slider's point (outer P with the leg as the slider, inner R at the pair's point), or — one
+    leg at most — a block pinned to a known link sliding on a guide of the base link (outer R,
+    inner P with the leg as the slider at the outer pair's point)."""
+    blocks = 0
+    for leg, o, i in zip(triad.legs, triad.outer, triad.inner, strict=True):
+        if i.kind is PairKind.PRISMATIC:
+            if (o.kind is not PairKind.REVOLUTE or i.a != leg or i.b != triad.base
+                    or i.point != o.point):
+                return False
+            blocks += 1
+        elif o.kind is PairKind.PRISMATIC and (o.a != leg or o.point != i.point):
+            return False
+    return blocks <= 1
 
 
 def _raise_undecomposable(mech: Mechanism, remaining: list[str], known: set[str]) -> None:

@@ -21,6 +21,7 @@ from . import (
     inputs,
     position,
     triad,
+    triadp,
     velocity,
 )
 from . import catalog as Op
@@ -40,7 +41,7 @@ from .spec import (
 
 #: the families, in the order of the plans
 FAMILIES = (position, velocity, acceleration, force, drivers, triad, inputs, centre_velocity,
-            driver_inputs)
+            driver_inputs, triadp)
 
 #: the registry: name → spec, from the families' ``__all__``
 SPECS: dict[str, OpSpec] = {spec.value: spec for family in FAMILIES

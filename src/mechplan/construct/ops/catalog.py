@@ -14,4 +14,5 @@ from .force import *
 from .inputs import *
 from .position import *
 from .triad import *
+from .triadp import *
 from .velocity import *

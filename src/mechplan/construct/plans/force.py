@@ -61,7 +61,8 @@ def emit(b: Builder) -> None:
     for g in reversed(b.structure.groups):
         if isinstance(g, Triad):
             from .triad_force import emit as emit_triad
-            emit_triad(st, g)
+            from .triadp_force import emit as emit_triadp
+            (emit_triadp if g.sliding else emit_triad)(st, g)
             continue
         if drivers.cylinder_in(b, g):
             force_drivers.cylinder_group(st, g)
