@@ -226,7 +226,12 @@ def replays(sol: Solution, mu: dict[Plan, float]) -> list[Doc]:
 # -- the animation ---------------------------------------------------------------------------------
 
 def _frames_phi(sol: Solution, frames: int) -> np.ndarray:
-    """Crank angles of the animation from the first position, in the crank's sense of turning."""
+    """Crank angles of the animation from the first position, in the crank's sense of turning
+    (a linear driver's coordinate over its range: :func:`live_linear.linear_frames`)."""
+    if sol.scene.mechanism.drive.linear:
+        from .live_linear import linear_frames
+
+        return linear_frames(sol, frames)
     sense = 1.0 if sol.scene.mechanism.drive.omega >= 0 else -1.0
     return float(sol.phi[0]) + sense * np.arange(frames) * 2.0 * math.pi / frames
 
@@ -340,19 +345,24 @@ def _marks(sol: Solution, phi: np.ndarray, broken: np.ndarray) -> list[Doc]:
     """Dead centres, positions that cannot be built, and the positions of the sheets."""
     frames = phi.shape[0]
     step = 2.0 * math.pi / frames
+    linear = sol.scene.mechanism.drive.linear
 
-    def frame_of(angle: float) -> int:
+    def frame_of(angle: float) -> int | None:
+        if linear:                      # a length within the driver's range
+            from .live_linear import frame_of as frame_at
+
+            return frame_at(phi, angle)
         sense = 1.0 if sol.scene.mechanism.drive.omega >= 0 else -1.0
         return round(sense * (angle - float(phi[0])) / step) % frames
 
-    marks = [{"k": frame_of(a), "kind": "dead"} for a in _extreme_phis(sol)]
+    marks = [{"k": frame_of(a), "kind": "dead"} for a in ([] if linear else _extreme_phis(sol))]
     marks += [{"k": int(k), "kind": "unbuilt"} for k in np.flatnonzero(broken)]
     marks += [{"k": frame_of(float(sol.phi[k])), "kind": "chosen", "position": k}
               for k in plan_positions(sol)]
     # positions of the solution whose results the error estimate does not trust
     marks += [{"k": frame_of(float(sol.phi[k])), "kind": "flagged", "position": k}
               for k in sorted({f.k for f in sol.flags})]
-    return marks
+    return [m for m in marks if m["k"] is not None]
 
 
 def _diagram_anims(sol: Solution, phi: np.ndarray) -> list[Doc]:
@@ -363,6 +373,13 @@ def _diagram_anims(sol: Solution, phi: np.ndarray) -> list[Doc]:
     series = _series(sol, out, phi)
     if "s" not in series:
         return []
+    if sol.scene.mechanism.drive.linear:      # over the law's time, as on the sheets
+        from .live_linear import draw_linear_diagrams, linear_diagram_specs
+
+        t, axis, specs = linear_diagram_specs(sol, out, series, phi)
+        return [cursor_panel(f"diagram-{sp['key']}", lambda lang, sp=sp: sp["title"][lang],
+                             drawn, t, sp["y"], sp["symbol"])
+                for sp, drawn in draw_linear_diagrams(specs, t, axis)]
     rocker = out.point is None
     symbols = ("ψ", "ω", "ε") if rocker else ("s", "v", "a")
     units = ("°", "rad/s", "rad/s²") if rocker else ("m", "m/s", "m/s²")
@@ -458,8 +475,13 @@ def animation(sol: Solution, mu: dict[Plan, float], frames: int = FRAMES,
     broken = np.zeros(frames, dtype=bool)
     for p in panels[0]["points"].values():
         broken |= ~np.isfinite(p["xy"]).all(axis=1)
-    return {"frames": frames, "phi_deg": np.degrees(phi) % 360.0, "panels": panels,
-            "values": _values(sol, ev, mu), "marks": _marks(sol, phi, broken)}
+    doc = {"frames": frames, "phi_deg": np.degrees(phi) % 360.0, "panels": panels,
+           "values": _values(sol, ev, mu), "marks": _marks(sol, phi, broken)}
+    if sol.scene.mechanism.drive.linear:        # "l4 = 2400.0 mm" in place of φ
+        from .live_linear import coordinate_doc
+
+        doc["coordinate"] = coordinate_doc(sol, phi)
+    return doc
 
 
 def ui_strings() -> dict[str, dict[str, str]]:
