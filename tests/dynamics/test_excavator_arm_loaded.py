@@ -79,10 +79,11 @@ def _power(acc: np.ndarray, v: np.ndarray) -> float:
     return p + float(F_Q @ v[12:14]) + float(F_T @ v[14:16])
 
 
-def golden(l4: float) -> tuple[float, float]:
-    """(F_d4, F_d7) from the virtual power, each cylinder moving alone at a unit rate."""
-    l7 = L7_0 + L7DOT / L4DOT * (l4 - L4_0)
-    acc = _dd(lambda t: _at(l4 + L4DOT * t, l7 + L7DOT * t), 1e-2)
+def golden(l4: float, l7dot: float = L7DOT) -> tuple[float, float]:
+    """(F_d4, F_d7) from the virtual power, each cylinder moving alone at a unit rate (the arm
+    cylinder's real rate ``l7dot``: 0 when it is held at L7_0)."""
+    l7 = L7_0 + l7dot / L4DOT * (l4 - L4_0)
+    acc = _dd(lambda t: _at(l4 + L4DOT * t, l7 + l7dot * t), 1e-2)
     v4 = _d(lambda dq: _at(l4 + dq, l7), 1e-4)
     v7 = _d(lambda dq: _at(l4, l7 + dq), 1e-4)
     return -_power(acc, v4), -_power(acc, v7)
