@@ -75,7 +75,8 @@ def test_refusals_name_the_key(drive2, key):
 
 
 def test_only_a_cylinder_is_held():
-    text = _text().replace('kind = "cylinder"\nlink = "7"\nhold', 'kind = "crank"\nlink = "7"\nhold')
+    text = _text().replace('kind = "cylinder"\nlink = "7"\nhold',
+                           'kind = "crank"\nlink = "7"\nhold')
     with pytest.raises(SceneError) as err:
         parse_scene(text, "held.toml")
     assert err.value.key == "drive2.hold"
