@@ -1,6 +1,10 @@
-"""The live page of a machine driven by a cylinder or a slider: its animation runs over the
-driver's range (not a crank's turn), its diagrams are drawn over the law's time t, and the page
-writes the driver's coordinate ("l4 = 2400.0 mm") where a crank's page writes φ."""
+"""The kinematic diagrams of the live page, and what runs its animation for a linear driver.
+
+A crank's page draws s(φ), v(φ), a(φ) of the output link over one turn, φ in degrees. A machine
+driven by a cylinder or a slider runs its animation over the driver's range (not a crank's
+turn), draws its diagrams over the law's time t (the sheets' abscissa: docs/drivers.md) and
+writes the driver's coordinate ("l4 = 2400.0 mm") where a crank's page writes φ.
+"""
 
 from __future__ import annotations
 
@@ -12,9 +16,10 @@ import numpy as np
 from ..construct.terms import pole_label
 from ..i18n import LANGUAGES, message, unit
 from ..model.law import driver_time
-from ..model.output import Output
+from ..model.output import output_link
 from ..solve import Solution
 from .diagram import Axis, Curve, diagram_panel
+from .kinematics_sheet import _series
 
 Doc = dict[str, Any]
 
@@ -53,41 +58,47 @@ def coordinate_doc(sol: Solution, q_frames: np.ndarray) -> Doc:
             "values": np.asarray(q_frames, dtype=float) * 1000.0}
 
 
-def linear_diagram_specs(sol: Solution, out: Output, series: dict[str, np.ndarray],
-                         q_frames: np.ndarray) -> tuple[np.ndarray, Axis, list[Doc]]:
-    """The abscissa of the diagrams (the law's time t, s, at each frame: the sheets' abscissa),
-    its axis, and for each of s, v, a: key, symbol, unit, title in every language, ordinates."""
+def diagram_anims(sol: Solution, phi: np.ndarray) -> list[Doc]:
+    """s, v, a (or ψ, ω, ε) of the output link, as on sheet 1, with a cursor at every frame:
+    over φ (degrees of a crank's turn) or over a linear driver's time t (s)."""
+    from .live import cursor_panel
+
+    out = output_link(sol.scene.mechanism)
+    if out is None:
+        return []
+    series = _series(sol, out, phi)
+    if "s" not in series:
+        return []
     drive = sol.scene.mechanism.drive
-    t = np.asarray(driver_time(drive, q_frames), dtype=float)
+    if drive.linear:                # the law's time at each frame
+        x = np.asarray(driver_time(drive, phi), dtype=float)
+        x_axis = Axis("t", "s", 120.0)
+    else:
+        x = np.arange(phi.shape[0]) * 360.0 / phi.shape[0]
+        x_axis = Axis("φ", "°", 120.0)
     rocker = out.point is None
     symbols = ("ψ", "ω", "ε") if rocker else ("s", "v", "a")
     units = ("°", "rad/s", "rad/s²") if rocker else ("m", "m/s", "m/s²")
     kinds = ("displacement", "velocity", "acceleration")
-    specs: list[Doc] = []
+    panels = []
     for key, sym, si, kind in zip(("s", "v", "a"), symbols, units, kinds, strict=True):
         if key not in series:
             continue
         y = np.asarray(series[key], dtype=float)
         if key == "s":
             y = (y - float(np.nanmin(y))) * (math.degrees(1.0) if rocker else 1.0)
-        title = {lang: message(f"drives2.diagram.{kind}", lang, symbol=sym, x="t",
-                               link=out.link) for lang in LANGUAGES}
-        specs.append({"key": key, "symbol": sym, "unit": si, "title": title, "y": y})
-    return t, Axis("t", "s", 120.0), specs
 
+        def title(lang: str, sym: str = sym, kind: str = kind) -> str:
+            if drive.linear:        # "… over t" as the sheets title them
+                return message(f"drives2.diagram.{kind}", lang, symbol=sym, x="t",
+                               link=out.link)
+            return message(f"layout.diagram.{kind}", lang, symbol=sym, link=out.link)
 
-def draw_linear_diagrams(specs: list[Doc], x: np.ndarray, axis: Axis
-                         ) -> list[tuple[Doc, dict[str, Any]]]:
-    """Each diagram drawn in every language (its spec, language → :class:`Diagram`)."""
-    out = []
-    for sp in specs:
-        drawn = {lang: diagram_panel(f"diagram-{sp['key']}", sp["title"][lang],
-                                     [Curve(x, sp["y"])], axis,
-                                     Axis(sp["symbol"], sp["unit"], 40.0), lang)
+        drawn = {lang: diagram_panel(f"diagram-{key}", title(lang), [Curve(x, y)], x_axis,
+                                     Axis(sym, si, 40.0), lang)
                  for lang in LANGUAGES}
-        out.append((sp, drawn))
-    return out
+        panels.append(cursor_panel(f"diagram-{key}", title, drawn, x, y, sym))
+    return panels
 
 
-__all__ = ["coordinate_doc", "draw_linear_diagrams", "frame_of", "linear_diagram_specs",
-           "linear_frames"]
+__all__ = ["coordinate_doc", "diagram_anims", "frame_of", "linear_frames"]
