@@ -133,3 +133,17 @@ def test_the_golden_values_see_every_load():
     finally:
         F_T = kept
     assert abs(f4 - f4_free) > 0.05 * abs(f4)
+
+
+def test_friction_with_a_linear_first_driver_is_refused_naming_the_key():
+    """No friction iteration closes on a cylinder's driving force yet: a clear error naming
+    ``friction`` (before, a ValueError from inside the construction)."""
+    from mechplan.errors import SceneError
+    from mechplan.scene.loader import parse_scene
+
+    text = TEMPLATE.read_text(encoding="utf-8").replace(
+        "[drive]\n", '[friction]\nf = 0.1\npin_radius = "40 mm"\n\n[drive]\n', 1)
+    with pytest.raises(SceneError) as err:
+        solve(parse_scene(text, "friction.toml"))
+    assert err.value.key == "friction"
+    assert "link 4" in str(err.value)
