@@ -91,8 +91,8 @@ def crank_positions(scene: Scene, c: Construction, count: int | None = None) -> 
     n = position_count(scene, count)
     ensure_within_budget(n, 1, file=scene.path, key=None if count else "positions.count")
     drive = scene.mechanism.drive
-    if drive.linear:        # equal steps over the driver's range, both ends included
-        if drive.q_range is None:
+    if drive.linear or drive.law is not None:   # equal steps over the driver's range (a
+        if drive.q_range is None:               # linear driver's, a crank's table), both ends
             raise SceneError(Text(
                 "errmsg2.solve.no_range",
                 {"kind": drive.kind.value, "link": drive.link, "count": str(n)}),

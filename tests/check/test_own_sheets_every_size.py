@@ -40,8 +40,8 @@ GRID = sorted(TEMPLATES + DRIVER_TEMPLATES)
 
 def test_the_grid_is_every_linkage_template():
     assert sorted(p.stem for p in GRID) == [
-        "cam_lever_four_bar", "excavator_arm", "excavator_boom", "five_bar_two_cranks",
-        "four_bar", "machine_unit",
+        "cam_lever_four_bar", "cylinder_carriage", "excavator_arm", "excavator_boom",
+        "five_bar_crank_slider", "five_bar_two_cranks", "four_bar", "machine_unit",
         "offset_slider_crank", "press_friction", "quick_return", "shaper", "shaper_flywheel",
         "six_bar_triad", "slider_coulisse", "slider_crank", "v_engine"]
 

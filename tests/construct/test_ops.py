@@ -28,8 +28,11 @@ def test_every_operation_has_one_spec():
     # 57: 42 before, the drivers' 8, the friction's 3 and the triads' triad_angle,
     # triad_point, line_through, moment_along, and the second crank's second_crank_angle (W = 2);
     # the velocities by instant centres' 9 (ops/centre_velocity.py); a second cylinder's
-    # second_driver_length and a driver's law by a table, driver_law (W = 2 with cylinders)
-    assert len(names) == len(set(names)) == len(SPECS) == 69
+    # second_driver_length and a driver's law by a table, driver_law (W = 2 with cylinders);
+    # a crank's ω, ε (and a second crank's θ) by its law, crank_law, and a second slider's
+    # second_slider_position, and a cylinder's arc cutting a guide line, circle_line_driven
+    # (ops/driver_inputs.py)
+    assert len(names) == len(set(names)) == len(SPECS) == 72
     for family in FAMILIES:
         declared = {n for n, v in vars(family).items() if isinstance(v, OpSpec)}
         assert declared == set(family.__all__), family.__name__      # none left out of Op

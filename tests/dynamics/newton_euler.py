@@ -14,7 +14,7 @@ import numpy as np
 
 from mechplan.dynamics import Loading
 from mechplan.model.loads import Gravity, LoadKind, LoadSpec, MassSpec
-from mechplan.model.mechanism import GROUND, Mechanism, PairKind
+from mechplan.model.mechanism import GROUND, DriverKind, Mechanism, PairKind
 
 
 def _cross(a, b):
@@ -189,7 +189,10 @@ def solve_global(mech: Mechanism, loading: Loading, c, ev) -> Global:
         layout.append(pair)
     first = col
     for drive in mech.drivers:          # one balancing moment per crank (W = 2: two)
-        put(a, drive.link, None, zeros2, ones, col)
+        if drive.kind is DriverKind.SLIDER:     # a driving force along its frame guide
+            put(a, drive.link, kin.guide_dir(drive.guide), kin.pos(drive.pivot), None, col)
+        else:
+            put(a, drive.link, None, zeros2, ones, col)
         col += 1
     assert col == size
     for link, _, point, force, couple in applied_loads(mech, loading, kin, ev.phi):

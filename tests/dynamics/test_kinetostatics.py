@@ -61,6 +61,11 @@ def test_loaded_templates():
     assert {n for n, w in CASES if w == "scene"} >= {"v_engine", "machine_unit", "slider_crank"}
 
 
+def _second_key(mech) -> str:
+    """The result of the second driver's load: a crank's M_b<link>, a slider's F_d<link>."""
+    return f"{'F_d' if mech.drive2.linear else 'M_b'}{mech.drive2.link}"
+
+
 @pytest.mark.parametrize(("name", "which"), CASES)
 def test_reactions_match_global_newton_euler(name, which):
     scene = scene_of(name)
@@ -90,8 +95,8 @@ def test_reactions_match_global_newton_euler(name, which):
     mb = ev[c.results["M_b"]]
     size = max(float(np.abs(ref.balancing).max()), 1e-30)
     assert np.abs(mb - ref.balancing).max() < TOL * size
-    if mech.drive2 is not None:         # W = 2: the second crank's own balancing moment
-        m2 = ev[c.results[f"M_b{mech.drive2.link}"]]
+    if mech.drive2 is not None:         # W = 2: the second crank's M_b (a slider's F_d)
+        m2 = ev[c.results[_second_key(mech)]]
         assert ref.second is not None
         assert np.abs(m2 - ref.second).max() < TOL * max(float(np.abs(ref.second).max()), 1e-30)
 
@@ -111,8 +116,10 @@ def test_virtual_power_and_zhukovsky(name):
             power += couple * kin.scalar("omega", link)
     omega1 = kin.scalar("omega", mech.drive.link)
     mb, mz = ev[c.results["M_b"]], ev[c.results["M_b_zhukovsky"]]
-    if mech.drive2 is not None:         # W = 2: the second crank's balancing moment works too
-        power += ev[c.results[f"M_b{mech.drive2.link}"]] * kin.scalar("omega", mech.drive2.link)
+    if mech.drive2 is not None:         # W = 2: the second driver's M_b (or F_d) works too
+        rate = (ev["vel.rate2"] if mech.drive2.linear
+                else kin.scalar("omega", mech.drive2.link))
+        power += ev[c.results[_second_key(mech)]] * rate
     scale = np.abs(mb * omega1).max() + np.abs(power).max()
     assert np.abs(mb * omega1 + power).max() < TOL * scale
     assert np.abs(mz - mb).max() < TOL * np.abs(mb).max()
@@ -159,7 +166,13 @@ def test_every_force_polygon_closes(name):
         if link == mech.drive.link:
             moment += mb
         if mech.drive2 is not None and link == mech.drive2.link:     # W = 2
-            moment += ev[c.results[f"M_b{link}"]]
+            if mech.drive2.linear:      # a slider's F_d along its guide, through its point
+                fd = ev[c.results[_second_key(mech)]][:, None] * kin.guide_dir(mech.drive2.guide)
+                p = kin.pos(mech.drive2.pivot)
+                force += fd
+                moment += p[:, 0] * fd[:, 1] - p[:, 1] * fd[:, 0]
+            else:
+                moment += ev[c.results[f"M_b{link}"]]
         assert np.abs(force).max() < TOL * scale, link
         assert np.abs(moment).max() < TOL * scale, link     # lengths here are below 1 m
 

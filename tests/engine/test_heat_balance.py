@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from helpers import diesel_2600
 
 from mechplan.drafting.primitives import Circle, Table, Text
 from mechplan.i18n import number
@@ -65,32 +66,8 @@ def test_heat_balance_against_its_definitions(spec, bore):
     assert all(v > 0 for k, v in q.items() if k != "ic")
 
 
-SCENE = """
-kind = "engine"
-[engine]
-speed = "2600 rpm"
-bore = "120 mm"
-crank_radius = "60 mm"
-rod_length = "225 mm"
-cylinders = 8
-firing_order = [1, 5, 4, 2, 6, 3, 7, 8]
-[masses]
-piston = "2 kg"
-rod = "3 kg"
-rod_small_end = "1 kg"
-[thermal]
-fuel = "diesel"
-alpha = 1.4
-epsilon = 17
-p_a = "88 kPa"
-p_r = "110 kPa"
-T_r = 750
-n1 = 1.37
-n2 = 1.26
-xi_z = 0.82
-coolant_c = 0.47
-coolant_m = 0.68
-"""
+SCENE = diesel_2600(engine_extra="cylinders = 8\nfiring_order = [1, 5, 4, 2, 6, 3, 7, 8]",
+                    thermal_extra="coolant_c = 0.47\ncoolant_m = 0.68")
 
 
 @pytest.fixture(scope="module")

@@ -396,9 +396,6 @@ def test_layout_errors_name_the_key():
     with pytest.raises(SceneError, match=r"articulated\.rod_length.*cylinder 2 cannot reach"):
         solve_engine_text(RADIAL.format(n=5, engine_extra="", art_extra="").replace(
             'rod_length = "190 mm"', 'rod_length = "20 mm"'), "r.toml")
-    with pytest.raises(SceneError, match=r"rod_side.*in-line and side-by-side"):
-        solve_engine_text(RADIAL.format(n=5, engine_extra="", art_extra="")
-                          + '[rod_side]\nrod_diameter = "30 mm"\n', "r.toml")
     with pytest.raises(SceneError, match=r"engine\.banks"):
         solve_engine_text(V8_ART.replace("cylinders = 8", "cylinders = 8\nbanks = "
                                          '["0 deg", "90 deg"]'), "v.toml")

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 
 import pytest
+from helpers import diesel_2600
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
@@ -117,29 +118,7 @@ def test_eta_i_from_the_fuel_per_cycle():
     assert abs(c.p_i * V_h / (fuel * s.H_u * 1e3) - c.eta_i) < 1e-12
 
 
-SCENE = """
-kind = "engine"
-[engine]
-speed = "2600 rpm"
-bore = "120 mm"
-crank_radius = "60 mm"
-rod_length = "225 mm"
-[masses]
-piston = "2 kg"
-rod = "3 kg"
-rod_small_end = "1 kg"
-[thermal]
-fuel = "diesel"
-alpha = {alpha}
-epsilon = {epsilon}
-p_a = "88 kPa"
-p_r = "110 kPa"
-T_r = 750
-n1 = 1.37
-n2 = 1.26
-xi_z = 0.82
-{extra}
-"""
+SCENE = diesel_2600(alpha="{alpha}", epsilon="{epsilon}", thermal_extra="{extra}")
 
 
 def test_the_cycle_feeds_the_indicator_diagram():

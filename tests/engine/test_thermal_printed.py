@@ -63,3 +63,17 @@ def test_fuel_chemistry_of_a_diesel_2862():
                                       0.17e6, 330.0, 10.0, 0.153e6, 0.0, 900.0, 1.38, 1.25, 0.75,
                                       1.5, 0.5, 0.96, 0.87, 4, 3))
     assert kolchin.L0 == pytest.approx(0.4994, abs=5e-5)
+
+
+def test_charge_coefficient_of_the_diesel_2862():
+    """www.2862.com.cn/DoPqXJWv/ ("Z3102增压柴油机热力计算", ②进气过程计算 3): the charge
+    coefficient φc = εc/(εc − 1)·(p_a/p_s)·(T_s/T_a)·1/(1 + φr) = 14/13 · 0.153/0.17 · 330/340 =
+    0.941 (printed to three decimals: tolerance 0.0005). Ours is η_v = T0/(T0 + ΔT)·(ε·p_a −
+    p_r)/((ε − 1)·p0) with the page's intake state as T0, p0 (T_s 330 K, p_s = 1.7·100 kPa) and
+    no residual gases (p_r = 0): the same formula, 0.94072."""
+    spec = CycleSpec(True, 0.87, 0.126, 0.004, 42.5e3, 0.0, 1.8, 14.0, 1800, 0.17e6, 330.0,
+                     10.0, 0.153e6, 0.0, 900.0, 1.38, 1.25, 0.75, 1.5, 0.5, 0.96, 0.87, 4, 3,
+                     air_O2=0.21)
+    c = thermal_cycle(spec)
+    assert abs(c.eta_v - 0.941) <= 0.0005
+    assert c.eta_v == pytest.approx(14.0 / 13.0 * 0.153 / 0.17 * 330.0 / 340.0, rel=1e-12)

@@ -8,6 +8,7 @@ import math
 
 import numpy as np
 import pytest
+from helpers import diesel_2600
 
 from mechplan.errors import SceneError
 from mechplan.model.engine_wiebe import WiebeSpec, burnt, fuel_heat, volume, wiebe_cycle
@@ -70,34 +71,9 @@ def test_volume_is_the_exact_slider_crank():
     assert np.allclose(volume(phi, V_h, EPS, lam), V_h / (EPS - 1) + F_p * x, rtol=1e-13)
 
 
-SCENE = """
-kind = "engine"
-[engine]
-speed = "2600 rpm"
-bore = "120 mm"
-crank_radius = "60 mm"
-rod_length = "225 mm"
-table_step = "30 deg"
-[masses]
-piston = "2 kg"
-rod = "3 kg"
-rod_small_end = "1 kg"
-[thermal]
-fuel = "diesel"
-alpha = 1.4
-epsilon = 17
-p_a = "88 kPa"
-p_r = "110 kPa"
-T_r = 750
-n1 = 1.37
-n2 = 1.26
-xi_z = 0.82
-combustion = "wiebe"
-combustion_start = "{start}"
-combustion_duration = "50 deg"
-wiebe_m = 0.8
-{extra}
-"""
+SCENE = diesel_2600(engine_extra='table_step = "30 deg"', thermal_extra=(
+    'combustion = "wiebe"\ncombustion_start = "{start}"\ncombustion_duration = "50 deg"\n'
+    'wiebe_m = 0.8\n{extra}'))
 
 
 @pytest.fixture(scope="module")
@@ -151,10 +127,3 @@ def test_wiebe_errors(old, new, key):
     with pytest.raises(SceneError) as e:
         parse_engine_scene(text.replace(old, new), "w.toml")
     assert key in str(e.value)
-
-
-def test_wiebe_needs_a_four_stroke_engine():
-    text = SCENE.format(start="8 deg", extra="").replace("[engine]\n", "[engine]\nstrokes = 2\n")
-    with pytest.raises(SceneError) as e:
-        parse_engine_scene(text, "w.toml")
-    assert "thermal.combustion" in str(e.value)

@@ -41,7 +41,8 @@ def _helpers_digest() -> str:
     them imports numba)."""
     here = Path(__file__)
     text = b"".join((here.parent / name).read_bytes()
-                    for name in ("kernel_helpers.py", "kernel_triad.py", "ops/triad_solve.py"))
+                    for name in ("kernel_helpers.py", "kernel_triad.py", "ops/triad_solve.py",
+                                 "kernel_law.py"))
     return hashlib.sha256(text).hexdigest()[:16]
 
 
@@ -54,6 +55,7 @@ import numpy as np
 
 from mechplan.construct.kernel_helpers import _below1, _cdiv, _div, _div_nz, _height, _hyp
 from mechplan.construct.kernel_triad import _triad_angle
+from mechplan.construct.kernel_law import _law_at, _law_time, _where_finite
 
 # helpers {_helpers_digest()}
 prange = range

@@ -355,13 +355,16 @@ def _rigid_acceleration(g: ScalarGen, s: Step, n: str) -> None:
 
 def _drive_velocity(g: ScalarGen, s: Step, n: str) -> None:
     (ax, ay), (bx, by) = g.pt(s.input("pivot")), g.pt(s.input("tip"))
-    w = literal(s.param("omega"))
+    rest = s.rest()         # a law by a table: ω of the position is a step
+    w = g.name(rest[0]) if rest else literal(s.param("omega"))
     g.emit(f"{n}x = {w} * (-({by} - {ay}))", f"{n}y = {w} * ({bx} - {ax})")
 
 
 def _drive_acceleration(g: ScalarGen, s: Step, n: str) -> None:
     (ax, ay), (bx, by) = g.pt(s.input("pivot")), g.pt(s.input("tip"))
-    w, e = literal(s.param("omega")), literal(s.param("epsilon", 0.0))
+    rest = s.rest()         # a law by a table: ω and ε of the position are steps
+    w, e = ((g.name(rest[0]), g.name(rest[1])) if rest
+            else (literal(s.param("omega")), literal(s.param("epsilon", 0.0))))
     g.emit(f"_rx = {bx} - {ax}", f"_ry = {by} - {ay}",
            f"{n}x = {e} * (-_ry) - {w} * {w} * _rx", f"{n}y = {e} * _rx - {w} * {w} * _ry")
 

@@ -4,7 +4,10 @@ The same algorithm in the same order of operations — the window's cells with t
 splitting theirs, the general cells (nodes sorted) where the window does not decide, Newton's
 iteration and the safeguarded one — so the fused kernel's θ is the numpy path's. Compiled by
 numba once per machine like ``kernel_helpers`` (plain Python without numba); every generated
-kernel that has a triad calls :func:`_triad_angle`.
+kernel that has a triad calls :func:`_triad_angle`, passing the solver's constants
+(:data:`CONSTANTS`, so a compiled copy cached on disk never keeps old ones: numba's cache knows
+this file's date, not ``triad_solve``'s) and the cosines and sines of the window's nodes as the
+numpy path computes them (:func:`window_trig`).
 """
 
 from __future__ import annotations
@@ -14,12 +17,23 @@ import math
 import numpy as np
 
 from .kernel_helpers import _div, _jit
-from .ops.triad_solve import GRID, ITERATIONS, PURE, RESIDUAL_ULPS, STEP_TOL, WINDOW
+from .ops.triad_solve import GRID, ITERATIONS, PURE, RESIDUAL_ULPS, SETTLE, STEP_TOL, WINDOW
 
 NAN = math.nan
 INF = math.inf
 TWO_PI = 2 * math.pi
 EPS = float(np.finfo(float).eps)
+
+#: the solver's counts (grid, window, Newton steps at most and before settling, iterations) and
+#: tolerances (step, residual in roundings), passed to :func:`_triad_angle` by every kernel
+CONSTANTS = ((GRID, WINDOW, PURE, SETTLE, ITERATIONS), (STEP_TOL, RESIDUAL_ULPS))
+
+
+def window_trig(ref: float) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """cos θ and sin θ of the window's nodes about ``ref``, as ``triad_solve._window`` computes
+    them (the same values)."""
+    th = np.arange(-WINDOW, WINDOW + 1) * (2 * math.pi / GRID) + ref
+    return tuple(float(v) for v in np.cos(th)), tuple(float(v) for v in np.sin(th))
 
 
 @_jit
@@ -77,7 +91,16 @@ def _value(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y: floa
            theta: float, l1: float, l2: float, l3: float, d2x: float, d2y: float, d3x: float,
            d3y: float, sg: float) -> float:
     """f(θ) alone, as ``triad_solve._values`` computes it."""
-    c, s = math.cos(theta), math.sin(theta)
+    out: float = _value_cs(a1x, a1y, a2x, a2y, a3x, a3y, math.cos(theta), math.sin(theta), l1, l2,
+                           l3, d2x, d2y, d3x, d3y, sg)
+    return out
+
+
+@_jit
+def _value_cs(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y: float,
+              c: float, s: float, l1: float, l2: float, l3: float, d2x: float, d2y: float,
+              d3x: float, d3y: float, sg: float) -> float:
+    """f at the angle of cosine ``c`` and sine ``s``."""
     dx = a2x - (c * d2x - s * d2y) - a1x
     dy = a2y - (s * d2x + c * d2y) - a1y
     dd = dx * dx + dy * dy
@@ -114,65 +137,94 @@ def _turn(v: float, lo: float) -> float:
 
 
 @_jit
-def _window(a: tuple[float, ...], p: tuple[float, ...]) -> tuple[float, float, float, float, bool]:
-    """The window's bracket (lo, hi, f(lo), f(hi), decided) as ``triad_solve._window``."""
+def _cell(e: float, th0: float, thl: float, dt: float, m: int) -> int:
+    """The window's cell of a domain edge (−1: not inside), as ``triad_solve._window``."""
+    if not e <= thl:
+        return -1
+    return int(min(max(math.floor((e - th0) / dt), 0), m - 2))
+
+
+@_jit
+def _window(a: tuple[float, ...], p: tuple[float, ...], counts: tuple[int, ...],
+            cth: tuple[float, ...], sth: tuple[float, ...]
+            ) -> tuple[float, float, float, float, bool]:
+    """The window's bracket (lo, hi, f(lo), f(hi), decided) as ``triad_solve._window`` (the
+    nodes' cosines and sines given). No arrays: the nodes are visited once, each edge's halves
+    offered at its cell; the candidates' order in the numpy path's list (unsplit cells, halves
+    left of the edges, halves right of them) breaks ties of distance, so the visit's order does
+    not matter."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg, slope, ref = p[0], p[1], p[2], p[3], p[4], p[5], p[6], \
         p[7], p[8], p[9]
-    dt = TWO_PI / GRID
-    m = 2 * WINDOW + 1
-    th = np.empty(m)
-    f = np.empty(m)
-    for j in range(m):
-        th[j] = float(j - WINDOW) * dt + ref
-        f[j] = _value(a[0], a[1], a[2], a[3], a[4], a[5], th[j], l1, l2, l3, d2x, d2y, d3x,
-                      d3y, sg)
-    e = _edges(a[0], a[1], a[2], a[3], l1, l2, d2x, d2y, th[0])
-    split = np.zeros(m - 1, np.bool_)
-    cell = np.full(4, -1, np.int64)
-    fe = np.full(4, NAN)
+    grid, window = counts[0], counts[1]
+    dt = TWO_PI / grid
+    m = 2 * window + 1
+    th0 = float(-window) * dt + ref
+    thl = float(window) * dt + ref
+    e = _edges(a[0], a[1], a[2], a[3], l1, l2, d2x, d2y, th0)
+    cs = (_cell(e[0], th0, thl, dt, m), _cell(e[1], th0, thl, dt, m),
+          _cell(e[2], th0, thl, dt, m), _cell(e[3], th0, thl, dt, m))
     twice = False
     for k in range(4):
-        if e[k] <= th[m - 1]:
-            c = min(max(math.floor((e[k] - th[0]) / dt), 0), m - 2)
-            cell[k] = c
-            twice = twice or split[c]
-            split[c] = True
-            fe[k] = _value(a[0], a[1], a[2], a[3], a[4], a[5], e[k], l1, l2, l3, d2x, d2y, d3x,
-                           d3y, sg)
-    best, blo, bhi, bf0, bf1 = INF, NAN, NAN, NAN, NAN
-    # the candidates in the numpy path's order: unsplit cells, left halves, right halves
-    for part in range(3):
-        n = m - 1 if part == 0 else 4
-        for j in range(n):
-            if part == 0:
-                if split[j]:
+        for q in range(k + 1, 4):
+            if cs[k] >= 0 and cs[k] == cs[q]:
+                twice = True
+    fe = (NAN, NAN, NAN, NAN)
+    if cs[0] >= 0 or cs[1] >= 0 or cs[2] >= 0 or cs[3] >= 0:
+        fe = (_fe(a, p, e[0], cs[0]), _fe(a, p, e[1], cs[1]), _fe(a, p, e[2], cs[2]),
+              _fe(a, p, e[3], cs[3]))
+    best, key, blo, bhi, bf0, bf1 = INF, 0, NAN, NAN, NAN, NAN
+    lo = th0
+    f0 = _value_cs(a[0], a[1], a[2], a[3], a[4], a[5], cth[0], sth[0], l1, l2, l3, d2x, d2y,
+                   d3x, d3y, sg)
+    for j in range(m - 1):
+        hi = float(j + 1 - window) * dt + ref
+        f1 = _value_cs(a[0], a[1], a[2], a[3], a[4], a[5], cth[j + 1], sth[j + 1], l1, l2, l3,
+                       d2x, d2y, d3x, d3y, sg)
+        split = cs[0] == j or cs[1] == j or cs[2] == j or cs[3] == j
+        if not split and f0 * f1 <= 0 and (f1 - f0) * slope > 0:
+            dist = abs(0.5 * (lo + hi) - ref)
+            if dist < best or (dist == best and j < key):
+                best, key, blo, bhi, bf0, bf1 = dist, j, lo, hi, f0, f1
+        if split:
+            for k in range(4):
+                if cs[k] != j:
                     continue
-                lo, hi, f0, f1 = th[j], th[j + 1], f[j], f[j + 1]
-            else:
-                c = cell[j]
-                if c < 0:
-                    continue
-                if part == 1:
-                    lo, hi, f0, f1 = th[c], e[j], f[c], fe[j]
-                else:
-                    lo, hi, f0, f1 = e[j], th[c + 1], fe[j], f[c + 1]
-            if f0 * f1 <= 0 and (f1 - f0) * slope > 0:
-                dist = abs(0.5 * (lo + hi) - ref)
-                if dist < best:
-                    best, blo, bhi, bf0, bf1 = dist, lo, hi, f0, f1
+                # the half left of edge k (after every unsplit cell), then the one right of it
+                if f0 * fe[k] <= 0 and (fe[k] - f0) * slope > 0:
+                    dist = abs(0.5 * (lo + e[k]) - ref)
+                    kk = m + k
+                    if dist < best or (dist == best and kk < key):
+                        best, key, blo, bhi, bf0, bf1 = dist, kk, lo, e[k], f0, fe[k]
+                if fe[k] * f1 <= 0 and (f1 - fe[k]) * slope > 0:
+                    dist = abs(0.5 * (e[k] + hi) - ref)
+                    kk = m + 4 + k
+                    if dist < best or (dist == best and kk < key):
+                        best, key, blo, bhi, bf0, bf1 = dist, kk, e[k], hi, fe[k], f1
+        lo, f0 = hi, f1
     return blo, bhi, bf0, bf1, best < INF and not twice
 
 
 @_jit
-def _general(a: tuple[float, ...], p: tuple[float, ...]
+def _fe(a: tuple[float, ...], p: tuple[float, ...], e: float, cell: int) -> float:
+    """f at a domain edge inside the window (NaN where it is not)."""
+    if cell < 0:
+        return NAN
+    out: float = _value(a[0], a[1], a[2], a[3], a[4], a[5], e, p[0], p[1], p[2], p[3], p[4], p[5],
+                        p[6], p[7])
+    return out
+
+
+@_jit
+def _general(a: tuple[float, ...], p: tuple[float, ...], counts: tuple[int, ...]
              ) -> tuple[float, float, float, float, bool, float]:
     """The general cells (the domain's edges as nodes, sorted): the window, then the whole
     turn; (lo, hi, f(lo), f(hi), found, least |f| over the turn) as ``triad_solve._general``."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg, slope, ref = p[0], p[1], p[2], p[3], p[4], p[5], p[6], \
         p[7], p[8], p[9]
-    dt = TWO_PI / GRID
+    grid, window = counts[0], counts[1]
+    dt = TWO_PI / grid
     miss = INF
-    for half in (WINDOW, GRID // 2):
+    for half in (window, grid // 2):
         m = 2 * half + 1
         first = float(-half) * dt + ref
         last = float(half) * dt + ref
@@ -202,7 +254,7 @@ def _general(a: tuple[float, ...], p: tuple[float, ...]
                 dist = abs(0.5 * (nodes[j] + nodes[j + 1]) - ref)
                 if dist < best:
                     best, blo, bhi, bf0, bf1 = dist, nodes[j], nodes[j + 1], f0, f1
-        if half == GRID // 2:
+        if half == grid // 2:
             for j in range(k):
                 if abs(f[j]) < miss:       # noqa: PLR1730 - NaN never replaces it
                     miss = abs(f[j])
@@ -213,32 +265,37 @@ def _general(a: tuple[float, ...], p: tuple[float, ...]
 
 @_jit
 def _newton(a: tuple[float, ...], p: tuple[float, ...], lo: float, hi: float, flo: float,
-            fhi: float, size: float) -> tuple[float, float, float, float]:
+            fhi: float, size: float, counts: tuple[int, ...], tols: tuple[float, float]
+            ) -> tuple[float, float, float, float]:
     """θ and f, f′, the arcs' sine at the last point evaluated, as ``triad_solve.newton``."""
     l1, l2, l3, d2x, d2y, d3x, d3y, sg = p[0], p[1], p[2], p[3], p[4], p[5], p[6], p[7]
-    small = RESIDUAL_ULPS * EPS * size
+    pure, settle, iterations = counts[2], counts[3], counts[4]
+    step_tol = tols[0]
+    small = tols[1] * EPS * size
     lo0, hi0, flo0, fhi0 = lo, hi, flo, fhi
     x = hi - _div(fhi * (hi - lo), fhi - flo)
     if not (x > lo and x < hi):
         x = 0.5 * (lo + hi)
     prev = step = fx = fp = sx = x
-    for _ in range(PURE):
+    for it in range(pure):
         fx, fp, sx = _closure(a[0], a[1], a[2], a[3], a[4], a[5], x, l1, l2, l3, d2x, d2y, d3x,
                               d3y, sg)
         prev, step = step, _div(fx, fp)
         x = x - step
-    tol = STEP_TOL * (1.0 + abs(x))
-    s = abs(step)
-    done = (s * s * s <= tol * prev * prev and s <= 1e-6) or (s <= tol and abs(fx) <= small)
-    if done and x >= lo and x <= hi:
-        return x, fx, fp, sx
+        if it + 1 < settle:
+            continue
+        tol = step_tol * (1.0 + abs(x))
+        s = abs(step)
+        done = (s * s * s <= tol * prev * prev and s <= 1e-6) or (s <= tol and abs(fx) <= small)
+        if done and x >= lo and x <= hi:
+            return x, fx, fp, sx
     # the safeguarded iteration, from the secant point again
     lo, hi, flo, fhi = lo0, hi0, flo0, fhi0
     x = hi - _div(fhi * (hi - lo), fhi - flo)
     if not (x > lo and x < hi):
         x = 0.5 * (lo + hi)
     fx, fp, sx, xo = NAN, NAN, NAN, x
-    for _ in range(ITERATIONS):
+    for _ in range(iterations):
         xo = x
         fx, fp, sx = _closure(a[0], a[1], a[2], a[3], a[4], a[5], x, l1, l2, l3, d2x, d2y, d3x,
                               d3y, sg)
@@ -249,7 +306,7 @@ def _newton(a: tuple[float, ...], p: tuple[float, ...], lo: float, hi: float, fl
         step = _div(fx, fp)
         xn = x - step
         inside = math.isfinite(fp) and xn >= lo and xn <= hi
-        done = fx == 0.0 or (inside and abs(step) <= STEP_TOL * (1.0 + abs(x))
+        done = fx == 0.0 or (inside and abs(step) <= step_tol * (1.0 + abs(x))
                              and abs(fx) <= small)
         if not math.isfinite(fx):
             return NAN, fx, fp, sx
@@ -264,18 +321,20 @@ def _newton(a: tuple[float, ...], p: tuple[float, ...], lo: float, hi: float, fl
 @_jit
 def _triad_angle(a1x: float, a1y: float, a2x: float, a2y: float, a3x: float, a3y: float,
                  l1: float, l2: float, l3: float, d2x: float, d2y: float, d3x: float, d3y: float,
-                 sigma: float, slope: float, ref: float, size: float
+                 sigma: float, slope: float, ref: float, size: float, counts: tuple[int, ...],
+                 tols: tuple[float, float], cth: tuple[float, ...], sth: tuple[float, ...]
                  ) -> tuple[float, float, float]:
-    """θ of the base link, the gap and the sine at one position, as ``triad_solve.solve``."""
+    """θ of the base link, the gap and the sine at one position, as ``triad_solve.solve``
+    (``counts``, ``tols``: :data:`CONSTANTS`; ``cth``, ``sth``: :func:`window_trig`)."""
     a = (a1x, a1y, a2x, a2y, a3x, a3y)
     p = (l1, l2, l3, d2x, d2y, d3x, d3y, sigma, slope, ref)
-    lo, hi, flo, fhi, found = _window(a, p)
+    lo, hi, flo, fhi, found = _window(a, p, counts, cth, sth)
     miss = INF
     if not found:
-        lo, hi, flo, fhi, found, miss = _general(a, p)
+        lo, hi, flo, fhi, found, miss = _general(a, p, counts)
     if not found:
         return NAN, (miss if miss < INF else size), 0.0
-    theta, fb, fp, cc = _newton(a, p, lo, hi, flo, fhi, size)
+    theta, fb, fp, cc = _newton(a, p, lo, hi, flo, fhi, size, counts, tols)
     if not math.isfinite(theta):
         return NAN, (miss if miss < INF else size), 0.0
     sine = abs(fp) * cc / size

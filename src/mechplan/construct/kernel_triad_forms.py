@@ -26,10 +26,18 @@ def _lit(x: float) -> str:
 
 
 def _triad_angle(g: ScalarGen, s: Step, n: str) -> str:
+    from .kernel_triad import CONSTANTS, window_trig
+
     t = params(s)
     a = [c for name in ("a1", "a2", "a3") for c in g.pt(s.input(name))]
     consts = [t.l1, t.l2, t.l3, *t.d2, *t.d3, float(t.sigma), float(t.slope), t.ref, t.size]
-    args = ", ".join([*a, *(_lit(v) for v in consts)])
+    counts, tols = CONSTANTS
+
+    def tup(xs: tuple[float, ...]) -> str:
+        return "(" + ", ".join(_lit(v) for v in xs) + ",)"
+
+    args = ", ".join([*a, *(_lit(v) for v in consts), repr(counts), tup(tols),
+                      *(tup(v) for v in window_trig(t.ref))])
     g.emit(f"_t{n} = _triad_angle({args})", f"{n} = _t{n}[0]", f"_gap{n} = _t{n}[1]",
            f"sn{n} = _t{n}[2]", f"bad_i = bad_i | (not (_gap{n} <= 0.0)) | (sn{n} < MIN_SINE)")
     return f"sn{n}"

@@ -17,6 +17,7 @@ from pathlib import Path
 # one set of limits for every file read inside another (zips, workbooks, PDF attachments)
 from ..archive_limits import MAX_ENTRIES, MAX_MEMBER, MAX_RATIO, MAX_TOTAL, RATIO_FLOOR
 from ..errors import CheckError
+from ..submission.contained import read_member
 from .texts import say
 
 __all__ = ["MAX_DEPTH", "MAX_ENTRIES", "MAX_MEMBER", "MAX_RATIO", "MAX_TOTAL", "RATIO_FLOOR",
@@ -81,7 +82,7 @@ def read_zip(data: bytes, archive: str, depth: int = 0,
             if info.is_dir() or not parts or stat.S_ISLNK(info.external_attr >> 16):
                 continue
             _refuse_size(info.file_size, info.compress_size, entry, budget, archive)
-            body = _read_member(zf, info, entry, archive)
+            body = read_member(zf, info, entry, archive, ArchiveError)
             budget.total += len(body) - info.file_size   # the real size, not the header's
             full = (*prefix, *parts)
             if parts[-1].lower().endswith(".zip"):
@@ -114,23 +115,6 @@ def _refuse_size(size: int, packed: int, entry: str, budget: _Budget, archive: s
         raise ArchiveError(say("ratio", entry=entry, ratio=size // max(packed, 1),
                                limit=MAX_RATIO), file=archive)
     budget.total += size
-
-
-def _read_member(zf: zipfile.ZipFile, info: zipfile.ZipInfo, entry: str, archive: str) -> bytes:
-    """The member's bytes, read no further than its declared size (a lying header is caught)."""
-    try:
-        with zf.open(info) as fh:
-            body = fh.read(info.file_size + 1)
-    # zipfile's own failures on a damaged or hostile member: BadZipFile (bad CRC, header),
-    # RuntimeError (encrypted), NotImplementedError (a compression method it cannot read),
-    # EOFError/ValueError/OSError (truncated data)
-    except (zipfile.BadZipFile, OSError, ValueError, RuntimeError, NotImplementedError,
-            EOFError) as exc:
-        raise ArchiveError(say("bad_member", entry=entry, reason=str(exc)[:160]),
-                           file=archive) from None
-    if len(body) > info.file_size:
-        raise ArchiveError(say("ratio", entry=entry, ratio="?", limit=MAX_RATIO), file=archive)
-    return body
 
 
 def read_folder(folder: Path, skip: Path | None = None) -> list[Member]:

@@ -10,7 +10,9 @@ Per second (W), with G_T = g_e·N_e the fuel consumption (kg/h) and H_u in kJ/kg
   0.53, m = 0.6 … 0.7);
 - exhaust Q_r = G_T/3.6·{M2·[(mc_v)″(t_r) + 8.315]·t_r − M1·[(mc_v)(t0) + 8.315]·t0} with the
   products' mean heat capacity at t_r = T_r − 273 (the 0–1500 °C fits of the calculation) and the
-  fresh charge's (air, 20.6 + 2.638·10⁻³t) at the ambient t0 = T0 − 273;
+  fresh charge's (air, 20.6 + 2.638·10⁻³t) at the ambient t0 = T0 − 273; with the linear fits
+  (``heat_capacity = "linear"``) those fits at T = t + 273 K instead (a choice: no printed
+  balance with them was found);
 - incomplete combustion Q_ic = ΔH_u·G_T/3.6;
 - the remainder Q_rest = Q0 − (Q_e + Q_w + Q_r + Q_ic) (radiation, friction heat not carried by
   the coolant, unaccounted losses). The shares q_x = Q_x/Q0 sum to 100 % by construction.
@@ -20,7 +22,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .engine_thermal import LOW, R_MU, Cycle
+from .engine_thermal import LOW, R_MU, Cycle, linear_air_cv, linear_products_cv
 
 #: the parts of the balance, in the order the courses print them
 PARTS = ("e", "w", "r", "ic", "rest")
@@ -45,15 +47,21 @@ class HeatBalance:
 
 def products_cv(cycle: Cycle, t: float) -> float:
     """Mean molar heat capacity at constant volume of the products at t (°C), kJ/(kmol·K), from
-    0 °C: the mixture of the 0–1500 °C fits by mole fractions."""
+    0 °C: the mixture of the 0–1500 °C fits by mole fractions (or the linear fit at t + 273 K)."""
+    if cycle.spec.heat_capacity == "linear":
+        a, b = linear_products_cv(cycle.spec.alpha)
+        return a + b * (t + 273.0)
     prod = cycle.products
     total = sum(prod.values())
     return sum((LOW[g][0] + LOW[g][1] * t + LOW[g][2] * t * t) * v
                for g, v in prod.items()) / total
 
 
-def air_cv(t: float) -> float:
-    """Mean molar heat capacity at constant volume of air at t (°C), from 0 °C, kJ/(kmol·K)."""
+def air_cv(t: float, heat_capacity: str = "table") -> float:
+    """Mean molar heat capacity at constant volume of air at t (°C), from 0 °C, kJ/(kmol·K)
+    (or the linear fit at t + 273 K)."""
+    if heat_capacity == "linear":
+        return linear_air_cv(t + 273.0)
     return 20.6 + 2.638e-3 * t
 
 
@@ -70,7 +78,7 @@ def heat_balance(cycle: Cycle, N_e: float, bore: float, cylinders: int) -> HeatB
         Q_w *= (s.H_u - cycle.dH_u) / s.H_u
     t_r, t0 = s.T_r - 273.0, s.T0 - 273.0
     Q_r = G_T / 3.6 * (cycle.M2 * (products_cv(cycle, t_r) + R_MU) * t_r
-                       - cycle.M1 * (air_cv(t0) + R_MU) * t0)
+                       - cycle.M1 * (air_cv(t0, s.heat_capacity) + R_MU) * t0)
     Q_ic = cycle.dH_u * G_T / 3.6
     flows = {"e": N_e, "w": Q_w, "r": Q_r, "ic": Q_ic}
     flows["rest"] = Q0 - sum(flows.values())

@@ -6,8 +6,11 @@ Choices stated: p_a (or the intake losses at the rated speed), n1, n2, ξ_z (and
 diesel) are given, not read off the courses'
 nomograms; the mean molar heat capacities (kJ/(kmol·K), t in °C) are Kolchin–Demidov's fits of
 the individual gases — fresh charge (air) 20.6 + 2.638·10⁻³t, products at t_c from the 0–1500 °C
-fits, at t_z from the 1501–2800 °C fits — mixed by the products' mole fractions; p_k = p0,
-T_k = T0 (no supercharging); the clean-out and recharge coefficients are 1.
+fits, at t_z from the 1501–2800 °C fits — mixed by the products' mole fractions
+(``heat_capacity = "table"``), or the simplified linear fits many course works use
+(``"linear"``, T in K: see :func:`linear_air_cv`, :func:`linear_products_cv`); p_k = p0,
+T_k = T0 (no supercharging: a supercharged engine's p_k, T_k are given as p0, T0); the clean-out
+and recharge coefficients and ψ of T_a are 1 unless given.
 """
 
 from __future__ import annotations
@@ -28,6 +31,9 @@ LOW = {"CO2": (27.941, 0.019, -5.487e-6), "CO": (20.597, 0.00267, 0.0),
 #: 1501–2800 °C: a + b·t
 HIGH = {"CO2": (39.123, 0.003349), "CO": (22.49, 0.00143), "H2O": (26.67, 0.004438),
         "H2": (19.678, 0.001758), "N2": (21.951, 0.001457), "O2": (23.723, 0.00155)}
+
+#: the heat-capacity fits of the combustion equation (scene key ``heat_capacity``)
+HEAT_CAPACITY = ("table", "linear")
 
 FUELS = {"petrol": (0.855, 0.145, 0.0, 43.93e3, 115.0), "diesel": (0.870, 0.126, 0.004, 42.44e3,
                                                                   0.0)}
@@ -66,6 +72,11 @@ class CycleSpec:
     coolant_c: float = 0.5       # heat balance: c and m of the coolant's empirical formula
     coolant_m: float = 0.65
     air_O2: float = AIR_O2       # O2 in air by volume (Kolchin–Demidov 0.208; 0.21 in others)
+    heat_capacity: str = "table"  # HEAT_CAPACITY: Kolchin–Demidov's per-gas table fits | linear
+    clean_out: float = 1.0       # φ_cl of the residual gases (scavenging < 1)
+    recharge: float = 1.0        # φ_rc, the recharge coefficient
+    psi_r: float = 1.0           # ψ of T_a: residual gases' to charge's heat capacity
+    pumping: bool = False        # p_i less the pumping loop p_r − p_a (else in the mech. losses)
 
 
 @dataclass(frozen=True)
@@ -128,6 +139,63 @@ def _mix(fractions: dict[str, float], t: float, high: bool) -> tuple[float, floa
     return v, 0.0
 
 
+def linear_air_cv(T: float) -> float:
+    """Mean molar heat capacity at constant volume of the fresh charge (air), the simplified
+    linear fit 20.16 + 1.74·10⁻³·T, kJ/(kmol·K), T in K."""
+    return 20.16 + 1.74e-3 * T
+
+
+def linear_products_cv(alpha: float) -> tuple[float, float]:
+    """(a, b) of the products' simplified linear fit mc″_v = a + b·T (kJ/(kmol·K), T in K):
+    α ≥ 1 (diesel) a = 20.2 + 0.92/α, b = (15.5 + 13.8/α)·10⁻⁴; α < 1 (spark ignition)
+    a = 18.4 + 2.6α, b = (15.5 + 13.8α)·10⁻⁴."""
+    if alpha >= 1.0:
+        return 20.2 + 0.92 / alpha, (15.5 + 13.8 / alpha) * 1e-4
+    return 18.4 + 2.6 * alpha, (15.5 + 13.8 * alpha) * 1e-4
+
+
+def combustion_linear(diesel: bool, alpha: float, heat: float, M1: float, gamma_r: float,
+                      mu: float, lam: float, T_c: float, R: float = R_MU) -> float:
+    """T_z (K) of the combustion equation with the linear fits, in kelvin as the course works
+    write it: heat/(M1(1 + γ_r)) + mc_v(T_c)·T_c [+ R·λ·T_c] = μ·(mc″_v(T_z) [+ R])·T_z, the
+    bracketed terms for a diesel; ``heat`` = ξ_z·(H_u − ΔH_u) in kJ/kg, mc_v of the fresh
+    charge alone (the residual gases' share is not counted, as the sources print it). The
+    quadratic's positive root, which the courses' fixed-point iteration converges to."""
+    a, b = linear_products_cv(alpha)
+    left = heat / (M1 * (1.0 + gamma_r)) + linear_air_cv(T_c) * T_c
+    if diesel:
+        left += R * lam * T_c
+        a += R
+    return (-a + math.sqrt(a * a + 4.0 * b * left / mu)) / (2.0 * b)
+
+
+def pre_expansion(mu: float, T_z: float, lam: float, T_c: float) -> float:
+    """A diesel's pre-expansion ratio ρ = μ·T_z/(λ·T_c)."""
+    return mu * T_z / (lam * T_c)
+
+
+def expansion(p_z: float, T_z: float, delta: float, n2: float) -> tuple[float, float]:
+    """End of the polytropic expansion: (p_b, T_b) = (p_z/δ^n2, T_z/δ^(n2−1))."""
+    return p_z / delta ** n2, T_z / delta ** (n2 - 1.0)
+
+
+def mean_indicated_theory(p_c: float, epsilon: float, lam: float, rho: float, n1: float,
+                          n2: float) -> float:
+    """The mean indicated pressure of the sharp-cornered cycle, δ = ε/ρ:
+    p_c/(ε − 1)·[λ(ρ − 1) + λρ/(n2 − 1)·(1 − δ^(1−n2)) − (1 − ε^(1−n1))/(n1 − 1)]."""
+    delta = epsilon / rho
+    return float(p_c / (epsilon - 1.0) * (lam * (rho - 1.0)
+                                          + lam * rho / (n2 - 1.0) * (1.0 - delta ** (1.0 - n2))
+                                          - (1.0 - epsilon ** (1.0 - n1)) / (n1 - 1.0)))
+
+
+def mean_indicated(p_it: float, phi_i: float, pumping: float = 0.0) -> float:
+    """The mean indicated pressure of the rounded diagram p_i = φ_i·p_i′ − Δp_pump; the pumping
+    loop Δp_pump = p_r − p_a subtracted here in some courses, among the mechanical losses (0
+    here) in Kolchin–Demidov's."""
+    return phi_i * p_it - pumping
+
+
 def products_of(s: CycleSpec, L0: float) -> dict[str, float]:
     """kmol of each combustion product per kg of fuel."""
     if s.alpha < 1.0:
@@ -139,14 +207,45 @@ def products_of(s: CycleSpec, L0: float) -> dict[str, float]:
             "N2": (1.0 - s.air_O2) * s.alpha * L0}
 
 
-def end_of_intake(T_k: float, T_r: float, gamma_r: float) -> float:
-    """Temperature at the end of intake T_a = (T_k + γ_r·T_r)/(1 + γ_r), T_k = T0 + ΔT."""
-    return (T_k + gamma_r * T_r) / (1.0 + gamma_r)
+def end_of_intake(T_k: float, T_r: float, gamma_r: float, psi: float = 1.0) -> float:
+    """Temperature at the end of intake T_a = (T_k + ψ·γ_r·T_r)/(1 + γ_r), T_k = T0 + ΔT; ψ the
+    ratio of the residual gases' heat capacity to the charge's (1 in Kolchin–Demidov)."""
+    return (T_k + psi * gamma_r * T_r) / (1.0 + gamma_r)
+
+
+def residual_fraction(T_k: float, T_r: float, p_a: float, p_r: float, epsilon: float,
+                      clean_out: float = 1.0, recharge: float = 1.0) -> float:
+    """The residual-gas coefficient γ_r = T_k/T_r·φ_cl·p_r/(ε·φ_rc·p_a − φ_cl·p_r), T_k = T0 + ΔT,
+    with Kolchin–Demidov's clean-out (φ_cl, 1 without scavenging) and recharge (φ_rc)
+    coefficients."""
+    return T_k / T_r * clean_out * p_r / (epsilon * recharge * p_a - clean_out * p_r)
 
 
 def compression(p_a: float, T_a: float, epsilon: float, n1: float) -> tuple[float, float]:
     """End of the polytropic compression: (p_c, T_c) = (p_a·ε^n1, T_a·ε^(n1−1))."""
     return p_a * epsilon ** n1, T_a * epsilon ** (n1 - 1.0)
+
+
+def _combustion_table(s: CycleSpec, prod: dict[str, float], M1: float, gamma_r: float,
+                      mu: float, T_c: float, dH: float) -> float:
+    """T_z (K) of Kolchin–Demidov's combustion equation (t in °C) with the per-gas table fits:
+    the charge at t_c a mixture of air and residual products, the products at t_z from the
+    1501–2800 °C fits."""
+    t_c = T_c - 273.0
+    cv_air = 20.6 + 2.638e-3 * t_c
+    cv_res, _ = _mix(prod, t_c, high=False)
+    a, b = _mix(prod, 0.0, high=True)
+    if s.diesel:
+        a += R_MU
+        left = (s.xi_z * s.H_u / (M1 * (1.0 + gamma_r))
+                + ((cv_air + gamma_r * cv_res) / (1.0 + gamma_r) + R_MU * s.lambda_p) * t_c
+                + R_MU * 273.0 * (s.lambda_p - mu))
+    else:
+        left = (s.xi_z * (s.H_u - dH) / (M1 * (1.0 + gamma_r))
+                + (cv_air + gamma_r * cv_res) / (1.0 + gamma_r) * t_c)
+    # μ·(a + b·t_z)·t_z = left
+    t_z = (-a + math.sqrt(a * a + 4.0 * b * left / mu)) / (2.0 * b)
+    return t_z + 273.0
 
 
 def thermal_cycle(s: CycleSpec) -> Cycle:
@@ -160,42 +259,30 @@ def thermal_cycle(s: CycleSpec) -> Cycle:
     dH = 119950.0 * (1.0 - s.alpha) * L0 if s.alpha < 1.0 else 0.0
     eps = s.epsilon
     Tk = s.T0 + s.dT
-    gamma_r = Tk / s.T_r * s.p_r / (eps * s.p_a - s.p_r)
-    T_a = end_of_intake(Tk, s.T_r, gamma_r)
-    eta_v = s.T0 / Tk * (eps * s.p_a - s.p_r) / ((eps - 1.0) * s.p0)
+    gamma_r = residual_fraction(Tk, s.T_r, s.p_a, s.p_r, eps, s.clean_out, s.recharge)
+    T_a = end_of_intake(Tk, s.T_r, gamma_r, s.psi_r)
+    eta_v = (s.T0 / Tk * (s.recharge * eps * s.p_a - s.clean_out * s.p_r)
+             / ((eps - 1.0) * s.p0))
     p_c, T_c = compression(s.p_a, T_a, eps, s.n1)
-    t_c = T_c - 273.0
-    cv_air = 20.6 + 2.638e-3 * t_c
-    cv_res, _ = _mix(prod, t_c, high=False)
     mu = (mu0 + gamma_r) / (1.0 + gamma_r)
-    a, b = _mix(prod, 0.0, high=True)
-    if s.diesel:
-        a += R_MU
-        left = (s.xi_z * s.H_u / (M1 * (1.0 + gamma_r))
-                + ((cv_air + gamma_r * cv_res) / (1.0 + gamma_r) + R_MU * s.lambda_p) * t_c
-                + R_MU * 273.0 * (s.lambda_p - mu))
+    if s.heat_capacity == "linear":
+        T_z = combustion_linear(s.diesel, s.alpha, s.xi_z * (s.H_u - dH), M1, gamma_r, mu,
+                                s.lambda_p, T_c)
     else:
-        left = (s.xi_z * (s.H_u - dH) / (M1 * (1.0 + gamma_r))
-                + (cv_air + gamma_r * cv_res) / (1.0 + gamma_r) * t_c)
-    # μ·(a + b·t_z)·t_z = left
-    t_z = (-a + math.sqrt(a * a + 4.0 * b * left / mu)) / (2.0 * b)
-    T_z = t_z + 273.0
+        T_z = _combustion_table(s, prod, M1, gamma_r, mu, T_c, dH)
     if s.diesel:
         lam = s.lambda_p
         p_z = lam * p_c
-        rho = mu * T_z / (lam * T_c)
+        rho = pre_expansion(mu, T_z, lam, T_c)
         delta = eps / rho
     else:
         p_z = p_c * mu * T_z / T_c
         lam = p_z / p_c
         rho = 1.0
         delta = eps
-    p_b = p_z / delta ** s.n2
-    T_b = T_z / delta ** (s.n2 - 1.0)
-    p_it = p_c / (eps - 1.0) * (lam * (rho - 1.0)
-                                + lam * rho / (s.n2 - 1.0) * (1.0 - delta ** (1.0 - s.n2))
-                                - (1.0 - eps ** (1.0 - s.n1)) / (s.n1 - 1.0))
-    p_i = s.phi_i * p_it
+    p_b, T_b = expansion(p_z, T_z, delta, s.n2)
+    p_it = mean_indicated_theory(p_c, eps, lam, rho, s.n1, s.n2)
+    p_i = mean_indicated(p_it, s.phi_i, s.p_r - s.p_a if s.pumping else 0.0)
     rho_k = s.p0 / (R_AIR * s.T0)
     eta_i = p_i * l0 * s.alpha / (s.H_u * 1e3 * rho_k * eta_v)
     g_i = 3.6e6 / (s.H_u * eta_i)

@@ -11,9 +11,11 @@ polytropes as the courses do). The first law dQ = dU + p dV then reads
     V·dp/dφ = (k − 1)·dQ/dφ − k·p·dV/dφ + p·V·(dk/dφ)/(k − 1),
 
 so before combustion the pressure follows p·V^n1 = const and after it p·V^n2 = const; the exact
-slider-crank volume V(φ) = V_c + V_h/2·[1 − cos φ + (1 − √(1 − λ² sin² φ))/λ]. Intake at p_a and
-exhaust at p_r close the cycle (four-stroke), the pressure moving linearly within ``BLEND`` after
-the BDC and TDC where the sharp-cornered diagram has its vertical lines.
+slider-crank volume V(φ) = V_c + V_h/2·[1 − cos φ + (1 − √(1 − λ² sin² φ))/λ]. A four-stroke
+cycle is closed by intake at p_a and exhaust at p_r, the pressure moving linearly within ``BLEND``
+after the BDC and TDC where the sharp-cornered diagram has its vertical lines; a two-stroke cycle
+(0 … 2π from the combustion TDC: expansion, then compression) by the scavenging drop from p_b to
+p_a within ``BLEND`` after the BDC, where the courses' two-stroke diagram has its vertical b–a.
 """
 
 from __future__ import annotations
@@ -42,8 +44,9 @@ class WiebeSpec:
 
 @dataclass(frozen=True, slots=True)
 class Wiebe:
-    """The integrated closed cycle and its checks (SI; φ from the intake TDC of a four-stroke
-    cycle, combustion TDC at 2π)."""
+    """The integrated closed cycle and its checks (SI; φ of the closed part from the intake TDC
+    of a four-stroke cycle, combustion TDC at 2π, for either cycle; ``rows`` and ``peak`` in the
+    engine's own cycle angle: 0 … 4π, or 0 … 2π from the combustion TDC of a two-stroke)."""
 
     spec: WiebeSpec
     phi: np.ndarray              # rad, closed part π … 3π
@@ -55,6 +58,7 @@ class Wiebe:
     dU: float                    # J, U(3π) − U(π) (likewise)
     p_i: float                   # Pa, work / V_h
     rows: tuple[tuple[float, float], ...]   # (φ, p) over the whole cycle for the dynamics
+    strokes: int = 4
 
     @property
     def residual(self) -> float:
@@ -63,9 +67,16 @@ class Wiebe:
 
     @property
     def peak(self) -> tuple[float, float]:
-        """(p_max Pa, φ at the maximum rad)."""
+        """(p_max Pa, φ at the maximum rad, in the engine's cycle angle)."""
         k = int(np.argmax(self.p))
-        return float(self.p[k]), float(self.phi[k])
+        phi = float(self.phi[k])
+        return float(self.p[k]), phi if self.strokes == 4 else phi % (2.0 * math.pi)
+
+    @property
+    def phi_cycle(self) -> np.ndarray:
+        """φ of the closed part in the engine's cycle angle (a two-stroke's −π … π about its
+        combustion TDC)."""
+        return self.phi if self.strokes == 4 else self.phi - 2.0 * math.pi
 
 
 def burnt(phi: np.ndarray | float, phi_s: float, spec: WiebeSpec) -> np.ndarray:
@@ -98,8 +109,9 @@ def _dV(phi: float, V_h: float, lam: float) -> float:
 
 def wiebe_cycle(V_h: float, epsilon: float, lam: float, p_a: float, T_a: float, p_r: float,
                 n1: float, n2: float, Q: float, spec: WiebeSpec, step: float = math.radians(0.5),
-                ) -> Wiebe:
-    """Integrate the closed part for heat Q (J per cycle) and build the whole cycle's p(φ)."""
+                strokes: int = 4) -> Wiebe:
+    """Integrate the closed part for heat Q (J per cycle) and build the whole cycle's p(φ) of a
+    four- or two-stroke engine (``strokes``)."""
     phi_s = 2.0 * math.pi - spec.start
     phi_e = phi_s + spec.duration
 
@@ -135,8 +147,8 @@ def wiebe_cycle(V_h: float, epsilon: float, lam: float, p_a: float, T_a: float, 
     k = n1 + (n2 - n1) * x
     U = p * V / (k - 1.0)
     work = _work(phi, p, V_h, epsilon, lam, knots)
-    rows = _rows(phi, p, p_a, p_r)
-    return Wiebe(spec, phi, V, p, x, Q, work, float(U[-1] - U[0]), work / V_h, rows)
+    rows = _rows(phi, p, p_a, p_r) if strokes == 4 else _rows_two_stroke(phi, p)
+    return Wiebe(spec, phi, V, p, x, Q, work, float(U[-1] - U[0]), work / V_h, rows, strokes)
 
 
 def _work(phi: np.ndarray, p: np.ndarray, V_h: float, epsilon: float, lam: float,
@@ -160,6 +172,21 @@ def _rows(phi: np.ndarray, p: np.ndarray, p_a: float, p_r: float) -> tuple[tuple
     rows = [(0.0, p_r), (BLEND, p_a), (pi, p_a)]
     rows += [(float(f), float(q)) for f, q in zip(phi[1:-1], p[1:-1])]
     rows += [(3.0 * pi, float(p[-1])), (3.0 * pi + BLEND, p_r), (4.0 * pi, p_r)]
+    return tuple(rows)
+
+
+def _rows_two_stroke(phi: np.ndarray, p: np.ndarray) -> tuple[tuple[float, float], ...]:
+    """(φ, p) over 0 … 2π from the combustion TDC: the expansion (closed part 2π … 3π), the
+    scavenging drop from p_b to p_a within ``BLEND`` after the BDC, the compression (π … 2π)."""
+    pi = math.pi
+    p_tdc = float(np.interp(2.0 * pi, phi, p))
+    later = (phi > 2.0 * pi) & (phi < 3.0 * pi)
+    earlier = (phi > pi + BLEND) & (phi < 2.0 * pi)
+    rows = [(0.0, p_tdc)]
+    rows += [(float(f) - 2.0 * pi, float(q)) for f, q in zip(phi[later], p[later])]
+    rows += [(pi, float(p[-1])), (pi + BLEND, float(np.interp(pi + BLEND, phi, p)))]
+    rows += [(float(f), float(q)) for f, q in zip(phi[earlier], p[earlier])]
+    rows.append((2.0 * pi, p_tdc))
     return tuple(rows)
 
 

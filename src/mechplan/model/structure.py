@@ -171,8 +171,8 @@ def analyse(mech: Mechanism) -> Structure:
     if second is not None and second.kind is DriverKind.CYLINDER:
         view, more, cylinder2 = _merged_cylinder(view, second, key="drive2.link")
         originals = {q: originals.get(p, p) for q, p in more.items()}
-    elif second is not None:
-        _check_second_crank(mech, second.link)
+    elif second is not None:       # a crank or a slider on a frame guide: known as the first
+        _check_second_crank(mech, second)
         known.add(second.link)
     remaining = [k for k in view.moving if k not in known]
     groups: list[Group | Triad] = []
@@ -188,16 +188,37 @@ def analyse(mech: Mechanism) -> Structure:
         groups.append(group)
         known.update(group.links)
         remaining = [k for k in remaining if k not in known]
+    for cyl, key in ((cylinder, "drive.link"), (cylinder2, "drive2.link")):
+        _check_cylinder_group(groups, cyl, key)
     return Structure(len(mech.moving), len(mech.pairs), 0, drive.link, tuple(groups), cylinder,
                      second.link if second is not None else None, cylinder2)
 
 
-def _check_second_crank(mech: Mechanism, link: str) -> None:
+def _check_cylinder_group(groups: list[Group | Triad], cylinder: tuple[str, str] | None,
+                          key: str) -> None:
+    """A cylinder closes a class II group (its side of driven length: RRR or RRP); refuse it
+    as a leg of a class III group, naming the driver."""
+    if cylinder is None:
+        return
+    for g in groups:
+        if isinstance(g, Triad) and cylinder[0] in g.links:
+            raise TopologyError(Text("drives3.structure.cylinder_in_triad", {
+                "barrel": cylinder[0], "rod": cylinder[1], "group": g.name}), key=key)
+
+
+def _check_second_crank(mech: Mechanism, second: Drive) -> None:
+    link = second.link
     pairs = [p for p in mech.pairs_of(link) if p.other(link) == GROUND]
-    if link == mech.drive.link or mech.drive.linear:
+    if link == mech.drive.link:
         raise TopologyError(Text(
             "errmsg2.structure.second_driver_other",
             {"link": link, "first": mech.drive.link}), key="drive2.link")
+    if second.kind is DriverKind.SLIDER:
+        if len(pairs) != 1 or pairs[0].kind is not PairKind.PRISMATIC or pairs[0].a != link:
+            raise TopologyError(Text("errmsg2.structure.slider_one_guide",
+                                     {"link": link, "count": str(len(pairs))}),
+                                key="drive2.link")
+        return
     if len(pairs) != 1 or pairs[0].kind is not PairKind.REVOLUTE:
         raise TopologyError(Text("errmsg2.structure.second_driver_crank", {"link": link}),
                             key="drive2.link")

@@ -161,8 +161,12 @@ def _no_positions(drive: Drive) -> Exception:
 
 
 def linear_assembly_default(top: Table, drive: Drive) -> float:
-    """Where a linear driver's assembly is decided without ``assembly.at``: its first position."""
-    positions = linear_positions(top.table("positions"), drive)
+    """Where a linear driver's (or a crank's by a table) assembly is decided without
+    ``assembly.at``: its first position."""
+    from .crank_law import crank_law_positions
+
+    read = linear_positions if drive.linear else crank_law_positions
+    positions = read(top.table("positions"), drive)
     if positions.angles:
         return positions.angles[0]
     return drive.q_range[0] if drive.q_range else math.nan

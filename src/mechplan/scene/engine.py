@@ -134,8 +134,6 @@ def parse_engine_scene(text: str, file: str = "<scene>", *,
                          strokes, file, data_dir)
     rs = top.table("rod_side")
     double = rod_side(rs, bore, int(strokes), file, data_dir) if rs is not None else None
-    if double is not None and rods:
-        raise top.error("rod_side", Text("layouts.error.rod_side_articulated"))
     out = top.table("output")
     csv_path = None
     if out is not None:

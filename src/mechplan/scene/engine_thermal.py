@@ -8,7 +8,7 @@ import math
 
 from ..i18n import Text
 from ..model.engine import IndicatorKind, IndicatorSpec, ThermalSpec
-from ..model.engine_thermal import FUELS, Cycle, CycleSpec, thermal_cycle
+from ..model.engine_thermal import FUELS, HEAT_CAPACITY, Cycle, CycleSpec, thermal_cycle
 from ..model.engine_wiebe import WiebeSpec, fuel_heat, wiebe_cycle
 from .reader import Table
 
@@ -16,7 +16,8 @@ KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alp
         "p0", "T0", "dT", "p_a", "p_r", "T_r", "n1", "n2", "xi_z", "lambda_p", "K", "phi_i",
         "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity", "coolant_c",
         "coolant_m", "combustion", "combustion_start", "combustion_duration", "wiebe_m",
-        "wiebe_a", "air_oxygen")
+        "wiebe_a", "air_oxygen", "heat_capacity", "clean_out", "recharge", "residual_heat",
+        "pumping_loss")
 
 
 def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
@@ -50,23 +51,24 @@ def _intake(t: Table, p0: float, T0: float) -> float:
 
 
 def _wiebe(t: Table, c: Cycle, strokes: int, lam: float) -> Cycle:
-    """The optional single-zone Wiebe model (``combustion = "wiebe"``) attached to the cycle."""
+    """The optional single-zone Wiebe model (``combustion = "wiebe"``) attached to the cycle, for a
+    four- or two-stroke engine."""
     start = t.quantity("combustion_start", "angle", math.radians(10.0))
     duration = t.quantity("combustion_duration", "angle", math.radians(60.0), positive=True)
     assert start is not None and duration is not None
     m = _number(t, "wiebe_m", 1.5, 0.0, 6.0, "the Wiebe shape exponent m")
     a = _number(t, "wiebe_a", 6.908, 1.0, 12.0, "the Wiebe completeness a")
     late = duration - start
-    if strokes != 4 or not -math.pi / 2 < start < math.pi / 2 or not late < 0.9 * math.pi:
-        raise t.error("combustion_start" if strokes == 4 else "combustion",
-                      Text("thermal2.error.wiebe", {"start": f"{math.degrees(start):g}",
+    if not -math.pi / 2 < start < math.pi / 2 or not late < 0.9 * math.pi:
+        raise t.error("combustion_start",
+                      Text("thermal3.error.wiebe", {"start": f"{math.degrees(start):g}",
                                                     "duration": f"{math.degrees(duration):g}"}))
     s = c.spec
     V_h = 1.0        # m³: the model scales with V_h; the scene's cylinder is applied below
     Q = fuel_heat(s.p_a, c.T_a, s.epsilon * V_h / (s.epsilon - 1.0), c.gamma_r, c.M1, s.xi_z,
                   s.H_u, c.dH_u)
     w = wiebe_cycle(V_h, s.epsilon, lam, s.p_a, c.T_a, s.p_r, s.n1, s.n2, Q,
-                    WiebeSpec(start, duration, m, a))
+                    WiebeSpec(start, duration, m, a), strokes=strokes)
     return dataclasses.replace(c, wiebe=w)
 
 
@@ -115,10 +117,19 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
     c_w = _number(t, "coolant_c", 0.5, 0.3, 0.7, "c of the coolant's heat (heat balance)")
     m_w = _number(t, "coolant_m", 0.65, 0.5, 0.8, "m of the coolant's heat (heat balance)")
     o2 = _number(t, "air_oxygen", 0.208, 0.2, 0.22, "O2 in air by volume")
+    fits = t.string("heat_capacity", "table", choices=HEAT_CAPACITY) or "table"
+    clean = _number(t, "clean_out", 1.0, 0.0, 1.0, "the clean-out coefficient φ_cl")
+    recharge = _number(t, "recharge", 1.0, 0.9, 1.2, "the recharge coefficient φ_rc")
+    psi = _number(t, "residual_heat", 1.0, 0.8, 1.3, "ψ of T_a (residual gases' heat capacity)")
+    pumping = t.string("pumping_loss", "mechanical",
+                       choices=("mechanical", "indicated")) == "indicated"
+    if not eps * recharge * p_a > clean * p_r:
+        raise t.error("p_r", Text("cycle.error.residual"))
     spec = CycleSpec(diesel, C, H, O, Hu * 1e3, m_f if not diesel else 0.0, alpha, eps,
                      speed * 30.0 / 3.141592653589793, p_amb, T0, dT, p_a, p_r, T_r, n1, n2, xi,
                      lam_p, K, phi_i, eta_m, strokes, cylinders,
-                     power * 1e3 if power is not None else None, S_D, c_w, m_w, o2)
+                     power * 1e3 if power is not None else None, S_D, c_w, m_w, o2, fits, clean,
+                     recharge, psi, pumping)
     cycle = thermal_cycle(spec)
     if not cycle.rho < eps:
         raise t.error("xi_z", Text("cycle.error.rho", {"rho": cycle.rho}))

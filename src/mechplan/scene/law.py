@@ -26,14 +26,15 @@ TIME_UNITS = {"s": 1.0, "ms": 1e-3, "min": 60.0, "cycle": 1.0}
 MIN_ROWS = 5
 
 
-def read_law(d: Table) -> TableLaw:
-    """The law of ``d.law`` (a table of rows or a CSV file)."""
+def read_law(d: Table, dimension: str = "length") -> TableLaw:
+    """The law of ``d.law`` (a table of rows or a CSV file): q a ``dimension`` ("length", m; or
+    "angle", rad — a crank's φ, default unit deg)."""
     t = d.table("law", required=True)
     assert t is not None
     t.check_keys(LAW_KEYS)
     if t.has("table") == t.has("file"):
         raise t.error(None, Text("drives2.law.one_source"))
-    units = t.raw("units", ["s", "mm"])
+    units = t.raw("units", ["s", "mm" if dimension == "length" else "deg"])
     if (not isinstance(units, list) or len(units) != 2
             or not all(isinstance(u, str) for u in units) or units[0] not in TIME_UNITS):
         raise t.error("units", Text("drives2.law.units", {"value": repr(units)[:80]}))
@@ -55,7 +56,7 @@ def read_law(d: Table) -> TableLaw:
             raise t.error(f"{where}[{j}]", Text("drives2.law.row"))
         times.append(_number(t, row[0], units[0], f"{where}[{j}]") * scale)
         values.append(t.value_quantity(f"{_number(t, row[1], units[1], f'{where}[{j}]')!r} "
-                                       f"{units[1]}", f"{where}[{j}]", "length"))
+                                       f"{units[1]}", f"{where}[{j}]", dimension))
     if len(times) < MIN_ROWS:
         raise t.error(where, Text("drives2.law.few_rows",
                                   {"count": str(len(times)), "least": str(MIN_ROWS)}))

@@ -13,6 +13,7 @@ from ..model.mechanism import GROUND, Drive, DriverKind, Guide, Link, Mechanism,
 from ..model.plans import Plan
 from ..model.structure import analyse
 from .centres import CENTRES, centres_of, plan_names
+from .crank_law import crank_law_drive, crank_law_positions
 from .document import parse_toml
 from .drivers import linear_assembly_default, linear_drive, linear_positions
 from .geometry import POINT_NAME, extra_point, parse_side, split_pair, triangulate
@@ -314,7 +315,7 @@ def _drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
     kind = d.string("kind", "crank", choices=tuple(k.value for k in DriverKind))
     if kind != "crank":
         return linear_drive(d, DriverKind(kind), links, guides, pairs)
-    d.check_keys(("kind", "link", "speed", "omega", "sense", "from", "angle", "epsilon"))
+    d.check_keys(("kind", "link", "speed", "omega", "sense", "from", "angle", "epsilon", "law"))
     return crank_drive(d, links, guides, pairs)
 
 
@@ -325,25 +326,25 @@ def crank_drive(d: Table, links: dict[str, Link], guides: dict[str, Guide],
     assert link is not None
     if link not in links or link == GROUND:
         known = ", ".join(k for k in links if k != GROUND)
-        raise d.error("link", Text(
-            "errmsg2.scene_loader.unknown_drive_link",
-            {"link": repr(link), "links": known}))
+        raise d.error("link", Text("errmsg2.scene_loader.unknown_drive_link",
+                                   {"link": repr(link), "links": known}))
+    sense = d.string("sense", "ccw", choices=("cw", "ccw"))
+    pivots = [p.point for p in pairs
+              if p.kind is PairKind.REVOLUTE and {p.a, p.b} == {GROUND, link}]
+    if len(pivots) != 1:
+        raise d.error("link", Text("errmsg2.scene_loader.drive_one_pivot",
+                                   {"link": link, "count": str(len(pivots))}))
+    ref_name = d.string("from", "+x") or "+x"
+    ref = _reference_angle(d, ref_name, guides)
+    sign = 1.0 if sense == "ccw" else -1.0
+    if d.has("law"):        # φ(t) by a table (scene/crank_law.py)
+        return crank_law_drive(d, link, pivots[0], ref, ref_name, sign, first=d.path == "drive")
     if not d.has("speed") and not d.has("omega"):
         raise d.error("speed", Text("errmsg2.scene_loader.speed_missing"))
     speed_key = "speed" if d.has("speed") else "omega"
     speed = d.quantity(speed_key, "angular_velocity", required=True, positive=True)
     assert speed is not None
-    sense = d.string("sense", "ccw", choices=("cw", "ccw"))
-    pivots = [p.point for p in pairs
-              if p.kind is PairKind.REVOLUTE and {p.a, p.b} == {GROUND, link}]
-    if len(pivots) != 1:
-        raise d.error("link", Text(
-            "errmsg2.scene_loader.drive_one_pivot",
-            {"link": link, "count": str(len(pivots))}))
-    ref_name = d.string("from", "+x") or "+x"
-    ref = _reference_angle(d, ref_name, guides)
     eps = d.quantity("epsilon", "angular_acceleration", 0.0) or 0.0
-    sign = 1.0 if sense == "ccw" else -1.0
     return Drive(link=link, pivot=pivots[0], omega=sign * speed, epsilon=sign * eps,
                  ref_angle=ref, ref_name=ref_name)
 
@@ -371,7 +372,7 @@ def _assembly(top: Table, links: dict[str, Link], drive: Drive
     sides: dict[str, tuple[str, str, int]] = {}
     sketch: dict[str, tuple[float, float]] = {}
     a = top.table("assembly")
-    phi = linear_assembly_default(top, drive) if drive.linear else 0.0
+    phi = linear_assembly_default(top, drive) if drive.linear or drive.law else 0.0
     if a is None:
         return sides, sketch, phi
     names = {p for link in links.values() for p in link.points}
@@ -408,8 +409,8 @@ def _assembly(top: Table, links: dict[str, Link], drive: Drive
 def _positions(top: Table, drive: Drive, points: set[str], links: dict[str, Link]) -> Positions:
     t = top.table("positions")
     drive_t = top.table("drive")
-    if drive.linear:
-        return linear_positions(t, drive)
+    if drive.linear or drive.law is not None:   # a crank by a table: within its angles
+        return (linear_positions if drive.linear else crank_law_positions)(t, drive)
     if t is None:
         if drive_t is not None and drive_t.has("angle"):
             return Positions(angles=(drive_t.quantity("angle", "angle") or 0.0,))

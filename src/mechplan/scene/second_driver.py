@@ -1,11 +1,12 @@
-"""Read ``[drive2]``: a second driver (W = 2), a crank or a cylinder.
+"""Read ``[drive2]``: a second driver (W = 2), a crank, a cylinder or a slider on a frame guide.
 
 A second crank (five-bar with two cranks) has the crank keys of ``[drive]`` (``link``,
 ``speed``/``omega``, ``sense``, ``from``, ``epsilon``) and ``phase``: its angle φ2 when the first
-crank is at φ1 = 0; it is read only with a crank as ``[drive]``. A second cylinder (crank +
+crank is at φ1 = 0 (or at a linear first driver's range start). A second cylinder (crank +
 cylinder, two cylinders: an excavator's boom and arm) has the cylinder keys of ``[drive]``
 (``link``, ``speed``, ``acceleration``) and ``start``: its length when the first driver is at its
-reference (a crank's φ1 = 0, a linear driver's ``range`` start).
+reference (a crank's φ1 = 0, a linear driver's ``range`` start); a second slider on a frame
+guide likewise, ``start`` its displacement s along its guide (docs/drivers.md).
 
 The first driver's coordinate stays the independent variable of every plan; the second follows
 its law at constant rates, q2 = q2⁰ + (rate2/rate1)·(q1 − q1⁰) (docs/two_inputs.md,
@@ -21,7 +22,7 @@ from ..model.mechanism import Drive, DriverKind, Guide, Link, Pair
 from .reader import Table
 
 #: keys of [drive2] with a second crank
-SECOND_KEYS = ("kind", "link", "speed", "omega", "sense", "from", "epsilon", "phase")
+SECOND_KEYS = ("kind", "link", "speed", "omega", "sense", "from", "epsilon", "phase", "law")
 
 
 def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
@@ -33,18 +34,18 @@ def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
     from .held_driver import held_table
 
     d = held_table(d, first)        # hold = L: a cylinder at rest at the length L
-    kind = d.string("kind", "crank", choices=("crank", "cylinder"))
-    if kind == "cylinder":
-        drive = _second_cylinder(d, links, guides, pairs, first)
+    kind = d.string("kind", "crank", choices=("crank", "cylinder", "slider"))
+    if kind != "crank":
+        drive = _second_cylinder(d, links, guides, pairs, first, DriverKind(kind))
     else:
         d.check_keys(SECOND_KEYS)
-        if first.linear:
-            raise d.error("link", Text(
-                "drives2.scene.crank_after_linear",
-                {"kind": first.kind.value, "link": first.link}))
+        from .crank_law import check_first_clock
         from .loader import crank_drive
 
         drive = crank_drive(d, links, guides, pairs)
+        check_first_clock(d, first, "link")     # after a linear driver: its law names the time
+        if drive.law is not None and d.has("phase"):     # its table gives φ2 at every time
+            raise d.error("phase", Text("drives2.law.not_both", {"key": "phase"}))
         drive = replace(drive, phase=d.quantity("phase", "angle", 0.0) or 0.0)
     if drive.link == first.link:
         raise d.error("link", Text(
@@ -56,12 +57,13 @@ def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
 
 
 def _second_cylinder(d: Table, links: dict[str, Link], guides: dict[str, Guide],
-                     pairs: list[Pair], first: Drive) -> Drive:
-    """A second cylinder: its rod, law and ``start`` (its length at the first's reference)."""
+                     pairs: list[Pair], first: Drive, kind: DriverKind = DriverKind.CYLINDER
+                     ) -> Drive:
+    """A second cylinder or slider on a frame guide: its link, law and ``start`` (its length,
+    or a slider's displacement, at the first's reference)."""
     from .drivers import linear_drive
 
-    drive = linear_drive(d, DriverKind.CYLINDER, links, guides, pairs, extra_keys=("start",),
-                         first=False)
+    drive = linear_drive(d, kind, links, guides, pairs, extra_keys=("start",), first=False)
     if drive.link == first.link or (first.kind is DriverKind.CYLINDER
                                     and drive.carrier == first.carrier):
         raise d.error("link", Text(
@@ -76,7 +78,8 @@ def _second_cylinder(d: Table, links: dict[str, Link], guides: dict[str, Guide],
             raise d.error("law", Text(
                 "drives2.scene.first_range", {"kind": first.kind.value, "link": first.link}))
         return drive
-    start = d.quantity("start", "length", required=True, positive=True)
+    start = d.quantity("start", "length", required=True,
+                       positive=kind is DriverKind.CYLINDER)    # a slider's s may be ≤ 0
     assert start is not None
     if first.linear and first.q_range is None:
         raise d.error("start", Text(

@@ -83,10 +83,10 @@ def _widths(cells: list[list[str]]) -> list[float]:
 
 def wiebe_panel(w: Wiebe, lang: str, scale: float = 1.0) -> Panel:
     """p(φ) of the Wiebe model over the closed part, the start and end of combustion marked."""
-    deg = np.degrees(w.phi)
+    deg = np.degrees(w.phi_cycle)
     span = float(deg[-1] - deg[0])
     mu = round_scale(span / (144.0 * scale))
-    start = 360.0 - float(np.degrees(w.spec.start))
+    start = float(np.degrees(w.phi_cycle[0] - w.phi[0])) + 360.0 - float(np.degrees(w.spec.start))
     end = start + float(np.degrees(w.spec.duration))
     p_s, p_e = (float(np.interp(a, deg, w.p)) * 1e-6 for a in (start, end))
     title = message("thermal2.diagram.wiebe", lang, start=number(np.degrees(w.spec.start), 1,

@@ -57,8 +57,9 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     out = output_link(sol.scene.mechanism)
     if out is None:
         return []
-    if sol.scene.mechanism.drive.linear:    # over the driver's range, not a crank's turn
-        return _linear_diagrams(sol, out, lang, r)
+    drive = sol.scene.mechanism.drive
+    if drive.linear or drive.law is not None:   # over the driver's range (a linear driver's, a
+        return _linear_diagrams(sol, out, lang, r)  # crank's table), against the law's time
     omega = abs(sol.scene.mechanism.drive.omega)
     sweep_positions = not sol.scene.positions.angles and sol.positions >= 4
     phi0 = float(sol.phi[0]) if sweep_positions else 0.0
@@ -164,8 +165,9 @@ def balancing_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
     """M_b at the positions of a sweep, over the crank angle (a closed diagram of one turn)."""
     c = sol.construction
     sid = c.results.get("M_b")
-    if sid is None or sid not in sol.ev.values or sol.scene.positions.angles or sol.positions < 4:
-        return None
+    if (sid is None or sid not in sol.ev.values or sol.scene.positions.angles
+            or sol.positions < 4 or sol.scene.mechanism.drive.law is not None):
+        return None         # (a crank by a table: its positions are not one closed turn)
     m = np.asarray(sol.ev[sid], dtype=float)
     n = sol.positions
     x = np.arange(n + 1) * 360.0 / n

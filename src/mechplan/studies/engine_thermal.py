@@ -53,6 +53,12 @@ def thermal_lines(c: Cycle, V_h: float, lang: str, bore: float | None = None) ->
                    eta_e=n(c.eta_e), g_e=n(c.g_e, 1)),
            message("cycle.report.power", lang, N_e=n(c.power(V_h) * 1e-3, 2),
                    V_h=n(V_h * 1e3, 4))]
+    out.insert(6, message(f"thermal4.report.fits_{s.heat_capacity}", lang))
+    if (s.clean_out, s.recharge, s.psi_r) != (1.0, 1.0, 1.0):
+        out.insert(5, message("thermal4.report.intake", lang, clean=n(s.clean_out, 3),
+                              recharge=n(s.recharge, 3), psi=n(s.psi_r, 3)))
+    if s.pumping:
+        out.append(message("thermal4.report.pumping", lang, dp=n((s.p_r - s.p_a) * 1e-6)))
     if s.power is not None:
         vh, D, S = c.cylinder_for(s.power)
         out.append(message("cycle.report.sizing", lang, N_e=n(s.power * 1e-3, 2),
@@ -82,7 +88,10 @@ def thermal_json(c: Cycle, V_h: float, bore: float | None = None) -> dict[str, A
     ``bore`` (m), its heat balance (W and %)."""
     s = c.spec
     doc: dict[str, Any] = {
-        "diesel": s.diesel, "alpha": s.alpha, "epsilon": s.epsilon, "L0": c.L0, "l0": c.l0,
+        "diesel": s.diesel, "heat_capacity": s.heat_capacity,
+        "clean_out": s.clean_out, "recharge": s.recharge, "residual_heat": s.psi_r,
+        "pumping_loss": "indicated" if s.pumping else "mechanical", "alpha": s.alpha,
+        "epsilon": s.epsilon, "L0": c.L0, "l0": c.l0,
         "M1": c.M1, "products": c.products, "M2": c.M2, "mu0": c.mu0, "dH_u": c.dH_u * 1e3,
         "gamma_r": c.gamma_r, "T_a": c.T_a, "eta_v": c.eta_v, "p_a": s.p_a, "p_c": c.p_c,
         "T_c": c.T_c, "mu": c.mu, "T_z": c.T_z, "p_z": c.p_z, "lambda_p": c.lam, "rho": c.rho,

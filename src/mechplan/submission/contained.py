@@ -31,6 +31,25 @@ def refuse_member(size: int, packed: int, entry: str, file: str,
                                        "limit": MAX_RATIO}), file=file)
 
 
+def read_member(zf: zipfile.ZipFile, info: zipfile.ZipInfo, entry: str, file: str,
+                error: type[CheckError] = CheckError) -> bytes:
+    """One member's bytes, read no further than its declared size (a header that lies about the
+    size is refused as a bomb); zipfile's own failures on a damaged or hostile member — bad CRC or
+    header (BadZipFile), encryption (RuntimeError), an unknown method (NotImplementedError),
+    truncation (EOFError, ValueError, OSError) — refuse it naming ``entry``."""
+    try:
+        with zf.open(info) as fh:
+            body = fh.read(info.file_size + 1)
+    except (zipfile.BadZipFile, OSError, ValueError, RuntimeError, NotImplementedError,
+            EOFError) as exc:
+        raise error(Text("lms.bad_member", {"entry": entry, "reason": str(exc)[:160]}),
+                    file=file) from None
+    if len(body) > info.file_size:
+        raise error(Text("lms.ratio", {"entry": entry, "ratio": "?", "limit": MAX_RATIO}),
+                    file=file)
+    return body
+
+
 def zip_members(data: bytes, file: str, error: type[CheckError] = CheckError
                 ) -> Iterator[tuple[str, bytes]]:
     """The (name, bytes) of every file of a zip held in memory (an XLSX workbook), each checked
@@ -55,16 +74,4 @@ def zip_members(data: bytes, file: str, error: type[CheckError] = CheckError
                 raise error(Text("lms.too_big", {"entry": info.filename,
                                                  "limit": mb(MAX_TOTAL),
                                                  "member": mb(MAX_MEMBER)}), file=file)
-            try:
-                with zf.open(info) as fh:
-                    body = fh.read(info.file_size + 1)
-            # zipfile's own failures on a damaged member (CRC, encryption, method, truncation)
-            except (zipfile.BadZipFile, OSError, ValueError, RuntimeError, NotImplementedError,
-                    EOFError) as exc:
-                raise error(Text("lms.bad_member", {"entry": info.filename,
-                                                    "reason": str(exc)[:160]}),
-                            file=file) from None
-            if len(body) > info.file_size:          # a header that lies about the size
-                raise error(Text("lms.ratio", {"entry": info.filename, "ratio": "?",
-                                               "limit": MAX_RATIO}), file=file)
-            yield info.filename, body
+            yield info.filename, read_member(zf, info, info.filename, file, error)

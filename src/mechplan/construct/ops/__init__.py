@@ -12,7 +12,17 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from ..step import Step
-from . import acceleration, centre_velocity, drivers, force, inputs, position, triad, velocity
+from . import (
+    acceleration,
+    centre_velocity,
+    driver_inputs,
+    drivers,
+    force,
+    inputs,
+    position,
+    triad,
+    velocity,
+)
 from . import catalog as Op
 from .spec import (
     Drawn,
@@ -29,7 +39,8 @@ from .spec import (
 )
 
 #: the families, in the order of the plans
-FAMILIES = (position, velocity, acceleration, force, drivers, triad, inputs, centre_velocity)
+FAMILIES = (position, velocity, acceleration, force, drivers, triad, inputs, centre_velocity,
+            driver_inputs)
 
 #: the registry: name → spec, from the families' ``__all__``
 SPECS: dict[str, OpSpec] = {spec.value: spec for family in FAMILIES

@@ -30,9 +30,14 @@ if TYPE_CHECKING:
     from ..graph import Construction
 
 
-def drive_acceleration(step: Step, pivot: Array, tip: Array) -> Result:
-    """π b′: the crank's normal component −ω²·AB plus its tangential component ε × AB."""
+def drive_acceleration(step: Step, pivot: Array, tip: Array, *rates: Array) -> Result:
+    """π b′: the crank's normal component −ω²·AB plus its tangential component ε × AB; ω and ε
+    of each position from the two steps after ``tip`` when the crank moves by a law by a table
+    (``omega``, ``epsilon`` then their largest)."""
     r = tip - pivot
+    if rates:
+        w, e = rates[0][:, None], rates[1][:, None]
+        return e * perp(r) - w * w * r, None, None
     omega, eps = step.param("omega"), step.param("epsilon", 0.0)
     out = perp(r)                       # eps·perp(r) − ω²·r, in place: the same values
     out *= eps

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from .acceleration import *
 from .centre_velocity import *
+from .driver_inputs import *
 from .drivers import *
 from .force import *
 from .inputs import *

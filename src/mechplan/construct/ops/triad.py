@@ -18,7 +18,7 @@ from ...geom import meet
 from ...geom.vec import Array
 from ..step import Step
 from . import triad_solve
-from .spec import Drawn, Grade, Hint, HintView, Line, OpSpec, Result, Written, hint, line, measured
+from .spec import Drawn, Grade, Hint, HintView, Line, OpSpec, Result, Written, hint, measured
 from .triad_solve import Triad
 
 
@@ -50,18 +50,30 @@ def triad_point(step: Step, a1: Array, a2: Array, angle: Array) -> Result:
     t = params(step)
     c, s = np.cos(angle), np.sin(angle)
     d2 = t.d2
-    centre = np.stack((a2[..., 0] - (c * d2[0] - s * d2[1]), a2[..., 1] - (s * d2[0] + c * d2[1])),
-                      axis=-1)
+    centre = np.empty(np.broadcast_shapes(a2.shape, angle.shape + (2,)),
+                      np.result_type(a2, angle))
+    x, y = centre[..., 0], centre[..., 1]                 # component-wise, in place
+    np.multiply(c, d2[0], out=x)
+    x -= s * d2[1]
+    np.subtract(a2[..., 0], x, out=x)                      # a2x − (c·d2x − s·d2y)
+    np.multiply(s, d2[0], out=y)
+    y += c * d2[1]
+    np.subtract(a2[..., 1], y, out=y)                      # a2y − (s·d2x + c·d2y)
     return meet.circle_circle(a1, t.l1, centre, t.l2, t.sigma)
 
 
 def line_through(step: Step, p: Array, q: Array) -> Result:
     """The line of a leg on the position plan: through P and Q."""
-    d = q - p
-    n = np.sqrt(d[..., 0] * d[..., 0] + d[..., 1] * d[..., 1])
+    dx, dy = q[..., 0] - p[..., 0], q[..., 1] - p[..., 1]
+    n = dx * dx
+    n += dy * dy
+    np.sqrt(n, out=n)
+    out = np.empty(np.broadcast_shapes(p.shape, q.shape)[:-1] + (2, 2), np.result_type(p, q))
+    out[..., 0, 0], out[..., 0, 1] = p[..., 0], p[..., 1]
     with np.errstate(invalid="ignore", divide="ignore"):
-        u = d / n[..., None]
-    return line(p, u), None, None
+        np.divide(dx, n, out=out[..., 1, 0])
+        np.divide(dy, n, out=out[..., 1, 1])
+    return out, None, None
 
 
 def moment_along(step: Step, centre: Array, at: Array, toward: Array, total: Array) -> Result:

@@ -41,8 +41,11 @@ def pole(step: Step, n: int) -> Result:
     return np.zeros((n, 2)), None, None
 
 
-def drive_velocity(step: Step, pivot: Array, tip: Array) -> Result:
-    """pb ⊥ AB in the sense of ω: ``omega`` · (AB turned by 90°)."""
+def drive_velocity(step: Step, pivot: Array, tip: Array, *omega: Array) -> Result:
+    """pb ⊥ AB in the sense of ω: ``omega`` · (AB turned by 90°); ω of each position from the
+    step after ``tip`` when the crank moves by a law by a table (``omega`` then its largest)."""
+    if omega:
+        return omega[0][:, None] * perp(tip - pivot), None, None
     return step.param("omega") * perp(tip - pivot), None, None
 
 

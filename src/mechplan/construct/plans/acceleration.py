@@ -10,6 +10,8 @@ from ..ops import Op
 from ..segments import SegmentKind
 from ..step import Kind, Role
 from ..terms import GIVEN, from_to, parallel, perp
+from .crank_law import rate as law_rate
+from .crank_law import sizes as law_sizes
 from .images import (
     absolute,
     coincident,
@@ -34,14 +36,21 @@ def emit_drive(b: Builder) -> None:
     tip, group = start_plan(b, A)
     drive = b.mech.drive
     body = b.bodies[drive.link]
-    body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR, Role.GIVEN,
-                         f"ε{drive.link}", value=drive.epsilon)
+    by_law, rates = law_rate(b, drive, A, group), (drive.omega, drive.epsilon)
+    if by_law is None:
+        body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR,
+                             Role.GIVEN, f"ε{drive.link}", value=drive.epsilon)
+        extra: tuple[str, ...] = ()
+    else:                   # a law by a table: ω and ε of each position (plans/crank_law.py)
+        assert body.omega is not None
+        body.epsilon, rates, extra = by_law, law_sizes(drive), (body.omega, by_law)
     b.result(f"epsilon_{drive.link}", body.epsilon)
-    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
+    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION,
+                       (b.pos[drive.pivot], b.pos[tip], *extra), A,
                        Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
-                       omega=drive.omega, epsilon=drive.epsilon)
+                       omega=rates[0], epsilon=rates[1])
     rows = [(f"a^n_{tip}", from_to(tip, drive.pivot), f"ω{drive.link}²·l_{drive.pivot}{tip}")]
-    if drive.epsilon:
+    if rates[1]:
         rows.append(
             (f"a^t_{tip}", perp(f"{drive.pivot}{tip}"), f"ε{drive.link}·l_{drive.pivot}{tip}")
         )

@@ -21,14 +21,14 @@ import math
 from dataclasses import dataclass
 
 from ...i18n import Text
-from ...model.mechanism import GROUND, Drive, DriverKind
+from ...model.mechanism import GROUND, Drive, DriverKind, Pair, PairKind
 from ...model.plans import Plan
 from ...model.structure import Group, GroupKind
 from ..builder import Builder, alabel, vlabel
 from ..ops import Op
 from ..segments import SegmentKind
 from ..step import Kind, Role
-from ..terms import GIVEN, from_to, parallel, perp
+from ..terms import GIVEN, Row, from_to, parallel, perp
 from . import acceleration, images, position, velocity
 
 P, V, A = Plan.POSITION, Plan.VELOCITY, Plan.ACCELERATION
@@ -76,15 +76,25 @@ def first_group(b: Builder) -> str:
 
 
 def _sides(b: Builder, g: Group) -> tuple[str, str, str, str, str]:
-    """(partner link, its outer point P1, the cylinder's known end E, the inner point K, barrel)."""
+    """(partner link, its outer point P1, the cylinder's known end E, the inner point K, barrel).
+
+    The cylinder (barrel and rod, pinned at both ends) is the group's R–R side of driven length;
+    the partner's outer pair is a revolute (RRR: P1 its pin) or a prismatic pair (RRP: the
+    partner slides on a known link's guide, P1 its sliding point) — see :func:`partner_pair`.
+    """
     cyl = cylinder_of(b, g)
     assert cyl is not None
     barrel = cyl.barrel
-    if g.kind is not GroupKind.RRR:
+    if g.kind not in (GroupKind.RRR, GroupKind.RRP):
         raise _unsupported(b, g)
     if g.links[1] == barrel:
         return g.links[0], g.outer1.point, g.outer2.point, g.inner.point, barrel
     return g.links[1], g.outer2.point, g.outer1.point, g.inner.point, barrel
+
+
+def partner_pair(g: Group, partner: str) -> Pair:
+    """The outer pair of the link a cylinder drives in its group (revolute or prismatic)."""
+    return g.outer1 if g.links[0] == partner else g.outer2
 
 
 def _unsupported(b: Builder, g: Group) -> Exception:
@@ -173,13 +183,26 @@ def position_group(b: Builder, g: Group) -> None:
     assert cyl is not None
     partner, p1, e, k, barrel = _sides(b, g)
     rod, drive = cyl.rod, cyl.drive
-    r1 = b.mech.links[partner].distance(p1, k)
-    sid = b.add(f"pos.{k}", Op.CIRCLE_CIRCLE_DRIVEN, (b.pos[p1], b.pos[e], f"pos.q{cyl.tag}"), P,
-                Kind.POINT, Role.RESULT, k, g.name, subject=(p1, e, k), r1=r1, sigma=1)
+    outer = partner_pair(g, partner)
+    if outer.kind is PairKind.REVOLUTE:     # two arcs: about P1 and of the driven length
+        r1 = b.mech.links[partner].distance(p1, k)
+        sid = b.add(f"pos.{k}", Op.CIRCLE_CIRCLE_DRIVEN, (b.pos[p1], b.pos[e],
+                                                          f"pos.q{cyl.tag}"), P,
+                    Kind.POINT, Role.RESULT, k, g.name, subject=(p1, e, k), r1=r1, sigma=1)
+    else:           # the partner slides on a guide: the arc of driven length cuts K's line
+        carrier = outer.other(partner)
+        position.angle_from_pair(b, partner, outer, carrier, g.name)
+        line = position.locus(b, partner, k, outer, carrier, g.name)
+        sid = b.add(f"pos.{k}", Op.CIRCLE_LINE_DRIVEN, (b.pos[e], line, f"pos.q{cyl.tag}"), P,
+                    Kind.POINT, Role.RESULT, k, g.name,
+                    subject=(e, b.c[line].label, k), sigma=1)
     b.pos[k] = sid
     b.resolve_branch(sid, k, g.name, sid)
-    b.bodies[partner].anchor = p1
-    _angle_of(b, partner, p1, k, g.name)
+    if outer.kind is PairKind.REVOLUTE:
+        b.bodies[partner].anchor = p1
+        _angle_of(b, partner, p1, k, g.name)
+    else:
+        b.bodies[partner].anchor = k
     # the barrel's axis runs from its pivot to the rod's pin along its guide
     assert drive.guide is not None
     guide = b.mech.guides[drive.guide]
@@ -221,10 +244,17 @@ def velocity_group(b: Builder, g: Group) -> None:
                 subject=(b.c[b.vel[e]].label, e, k))
     b.segment(V, b.vel[e], rel, f"{b.c[b.vel[e]].label}r_{k}{e}", f"v_{k}{rod}{k}{barrel}",
               SegmentKind.SLIDING, g.name)
-    meet = images.meet_lines(b, V, f"vel.{k}", images.perp_line(b, V, b.vel[p1], p1, k, g.name),
+    outer = partner_pair(g, partner)
+    side, rows = _partner_velocity(b, g, partner, outer, p1, k)
+    meet = images.meet_lines(b, V, f"vel.{k}", side,
                              images.perp_line(b, V, rel, e, k, g.name), vlabel(k), g.name)
     b.vel[k] = meet
-    for link, p, vp in ((partner, p1, b.vel[p1]), (barrel, e, b.vel[e])):
+    turning = [(barrel, e, b.vel[e])]
+    if outer.kind is PairKind.REVOLUTE:
+        turning.insert(0, (partner, p1, b.vel[p1]))
+    else:           # the partner turns with the link whose guide it slides on
+        images.link_scalar(b, partner, outer.other(partner), V, g.name)
+    for link, p, vp in turning:
         body = b.bodies[link]
         body.omega = b.add(f"vel.omega.{link}", Op.OMEGA, (b.pos[p], b.pos[k], vp, meet), V,
                            Kind.SCALAR, Role.RESULT, f"ω{link}", g.name, subject=(p, k))
@@ -232,10 +262,9 @@ def velocity_group(b: Builder, g: Group) -> None:
     images.link_scalar(b, rod, barrel, V, g.name)
     images.absolute(b, k, V, g.name)
     b.c.equations[(V, g.name)] = (
-        f"v_{k} = v_{e} + v_{k}{rod}{k}{barrel} + v_{k}{e} = v_{p1} + v_{k}{p1}",
+        f"v_{k} = v_{e} + v_{k}{rod}{k}{barrel} + v_{k}{e} = " + " + ".join(r[0] for r in rows),
         [(f"v_{e}", GIVEN, "✓"), (f"v_{k}{rod}{k}{barrel}", parallel(f"{e}{k}"), b.c[rate].label),
-         (f"v_{k}{e}", perp(f"{e}{k}"), "?"), (f"v_{p1}", GIVEN, "✓"),
-         (f"v_{k}{p1}", perp(f"{p1}{k}"), "?")])
+         (f"v_{k}{e}", perp(f"{e}{k}"), "?"), *rows])
     for link in (partner, barrel, rod):
         images.complete(b, link, V, g.name)
 
@@ -249,7 +278,8 @@ def acceleration_group(b: Builder, g: Group) -> None:
     assert cyl is not None
     partner, p1, e, k, barrel = _sides(b, g)
     rod, rate = cyl.rod, f"acc.rate{cyl.tag}"
-    n1 = acceleration._normal(b, b.acc[p1], partner, p1, k, k, g.name)
+    outer = partner_pair(g, partner)
+    side, n1, rows = _partner_acceleration(b, g, partner, outer, p1, k)
     nc = acceleration._normal(b, b.acc[e], barrel, e, k, k, g.name)
     kor = acceleration._coriolis(b, nc, barrel, b.vel[e], f"vel.r.{k}{e}", f"{k}{e}", g.name)
     rel = b.add(f"acc.r.{k}{e}", Op.SLIDE_VECTOR, (kor, rate, b.pos[e], b.pos[k]), A,
@@ -257,23 +287,79 @@ def acceleration_group(b: Builder, g: Group) -> None:
                 subject=(b.c[kor].label, e, k))
     b.segment(A, kor, rel, f"{b.c[kor].label}r_{k}{e}", f"a^r_{k}{rod}{k}{barrel}",
               SegmentKind.SLIDING, g.name)
-    meet = images.meet_lines(b, A, f"acc.{k}", images.perp_line(b, A, n1, p1, k, g.name),
+    meet = images.meet_lines(b, A, f"acc.{k}", side,
                              images.perp_line(b, A, rel, e, k, g.name), alabel(k), g.name)
     b.acc[k] = meet
-    acceleration._epsilon(b, partner, p1, b.pos[k], n1, meet, g.name)
+    if n1 is not None:
+        acceleration._epsilon(b, partner, p1, b.pos[k], n1, meet, g.name)
+        acceleration._tangential(b, n1, meet, f"a^t_{k}{p1}", g.name)
+    else:           # the partner turns with the link whose guide it slides on
+        m = outer.other(partner)
+        images.link_scalar(b, partner, m, A, g.name)
+        if m != GROUND:         # the relative acceleration along the guide, measured
+            kk = side_start(b, side)
+            b.segment(A, kk, meet, f"{b.c[kk].label} {alabel(k)}", f"a^r_{k}{partner}{k}{m}",
+                      SegmentKind.SLIDING, g.name)
     acceleration._epsilon(b, barrel, e, b.pos[k], rel, meet, g.name)
-    acceleration._tangential(b, n1, meet, f"a^t_{k}{p1}", g.name)
     acceleration._tangential(b, rel, meet, f"a^t_{k}{e}", g.name)
     images.link_scalar(b, rod, barrel, A, g.name)
     images.absolute(b, k, A, g.name)
     b.c.equations[(A, g.name)] = (
-        (f"a_{k} = a_{e} + a^n_{k}{e} + a^k_{k}{e} + a^r_{k}{e} + a^t_{k}{e} "
-        f"= a_{p1} + a^n_{k}{p1} + a^t_{k}{p1}"),
+        (f"a_{k} = a_{e} + a^n_{k}{e} + a^k_{k}{e} + a^r_{k}{e} + a^t_{k}{e} = "
+         + " + ".join(r[0] for r in rows)),
         [(f"a_{e}", GIVEN, "✓"), (f"a^n_{k}{e}", from_to(k, e), f"ω{barrel}²·l_{e}{k}"),
          (f"a^k_{k}{e}", perp(f"{e}{k}"), f"2ω{barrel}·v_{k}{rod}{k}{barrel}"),
          (f"a^r_{k}{e}", parallel(f"{e}{k}"), b.c[rate].label),
-         (f"a^t_{k}{e}", perp(f"{e}{k}"), "?"), (f"a_{p1}", GIVEN, "✓"),
-         (f"a^n_{k}{p1}", from_to(k, p1), f"ω{partner}²·l_{p1}{k}"),
-         (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?")])
+         (f"a^t_{k}{e}", perp(f"{e}{k}"), "?"), *rows])
     for link in (partner, barrel, rod):
         images.complete(b, link, A, g.name)
+
+
+# -- the partner's side of a cylinder's group, by its outer pair ----------------------------------
+def _partner_velocity(b: Builder, g: Group, partner: str, outer: Pair, p1: str, k: str
+                      ) -> tuple[str, list[Row]]:
+    """The line of v_K through the partner's known image: ⊥ P1K from v_P1 (a revolute), or ∥ the
+    guide from the image of K on the guide's link (a prismatic pair); its equation's rows."""
+    if outer.kind is PairKind.REVOLUTE:
+        return (images.perp_line(b, V, b.vel[p1], p1, k, g.name),
+                [(f"v_{p1}", GIVEN, "✓"), (f"v_{k}{p1}", perp(f"{p1}{k}"), "?")])
+    m = outer.other(partner)
+    locus = position.locus_id(partner, k, outer.guide)
+    km = images.coincident(b, m, k, V, g.name)
+    guide = b.c[locus].label
+    if m == GROUND:
+        rows = [(f"v_{k}", parallel(guide), "?")]
+    else:
+        rows = [(f"v_{k}{m}", GIVEN, "✓"), (f"v_{k}{partner}{k}{m}", parallel(guide), "?")]
+    return images.parallel_line(b, V, km, locus, g.name), rows
+
+
+def _partner_acceleration(b: Builder, g: Group, partner: str, outer: Pair, p1: str, k: str
+                          ) -> tuple[str, str | None, list[Row]]:
+    """The line of a_K through the partner's known vectors: the normal a^n_KP1 then ⊥ P1K (a
+    revolute; its end returned), or the image of K on the guide's link and the Coriolis
+    2ω × v_rel, then ∥ the guide (a prismatic pair); its equation's rows."""
+    if outer.kind is PairKind.REVOLUTE:
+        n1 = acceleration._normal(b, b.acc[p1], partner, p1, k, k, g.name)
+        return (images.perp_line(b, A, n1, p1, k, g.name), n1,
+                [(f"a_{p1}", GIVEN, "✓"),
+                 (f"a^n_{k}{p1}", from_to(k, p1), f"ω{partner}²·l_{p1}{k}"),
+                 (f"a^t_{k}{p1}", perp(f"{p1}{k}"), "?")])
+    m = outer.other(partner)
+    locus = position.locus_id(partner, k, outer.guide)
+    km_v = images.coincident(b, m, k, V, g.name)
+    km = images.coincident(b, m, k, A, g.name)
+    kk = acceleration._coriolis(b, km, m, km_v, b.vel[k], f"{k}{partner}{k}{m}", g.name)
+    guide = b.c[locus].label
+    if m == GROUND:
+        rows = [(f"a_{k}", parallel(guide), "?")]
+    else:
+        rows = [(f"a_{k}{m}", GIVEN, "✓"),
+                (f"a^k_{k}{partner}{k}{m}", perp(guide), f"2ω{m}·v_{k}{partner}{k}{m}"),
+                (f"a^r_{k}{partner}{k}{m}", parallel(guide), "?")]
+    return images.parallel_line(b, A, kk, locus, g.name), None, rows
+
+
+def side_start(b: Builder, line: str) -> str:
+    """The image a construction line is drawn through."""
+    return b.c[line].input("through")

@@ -71,6 +71,8 @@ def emit(b: Builder) -> None:
     second = None
     drive2 = b.mech.drive2
     if drive2 is not None:      # W = 2: the second driver's own equilibrium first
+        if drive2.kind.value == "slider":       # its polygon closed by the frame's force
+            force_drivers.slider_driver(st, second=True)
         second = (b.c.results[f"F_d{drive2.link}"] if drive2.linear
                   else _driving_link(st, second=True))
     if b.mech.drive.linear:

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ...model.crank_law import absolute_law
 from ...model.law import largest
 from ...model.mechanism import Drive
 from ..builder import Builder
@@ -20,6 +21,7 @@ from ..step import Kind, Role
 
 def clock(first: Drive) -> dict[str, Any]:
     """The parameters that find the time from the first driver's step value."""
+    first = absolute_law(first)     # a crank's table in its step's θ
     if first.law is not None:
         return {"clock_times": first.law.times, "clock_values": first.law.values}
     # the time is the constant-rate law of a "second driver" moving at 1 m/s from 0:
@@ -35,6 +37,7 @@ def clock(first: Drive) -> dict[str, Any]:
 
 def motion(drive: Drive, order: int) -> dict[str, Any]:
     """The parameters of a driver's own law (its table, or its start and constant rates)."""
+    drive = absolute_law(drive)
     if drive.law is not None:
         size = largest(drive.law, order) if order else 0.0
         return {"times": drive.law.times, "values": drive.law.values, "size": size}

@@ -14,7 +14,7 @@ are laid off at their lengths (``POLAR_POINT``); on the velocity plan its pin's 
 
 from __future__ import annotations
 
-from ...model.mechanism import GROUND, Drive
+from ...model.mechanism import GROUND, Drive, DriverKind
 from ...model.plans import Plan
 from ..builder import Builder, alabel, vlabel
 from ..ops import Op
@@ -64,7 +64,9 @@ def _first_step(b: Builder) -> str:
 
 def _linear_group(b: Builder) -> str:
     cyl = b.structure.cylinder2
-    assert cyl is not None
+    if cyl is None:         # a slider on a frame guide: I(0,k) (plans/second_slider.py)
+        assert b.mech.drive2 is not None
+        return group_name(b.mech.drive2)
     return f"I({cyl[0]},{cyl[1]})"
 
 
@@ -74,27 +76,33 @@ def _emit_linear(b: Builder, plan: Plan) -> None:
     assert drive is not None
     group = _linear_group(b)
     from .laws import by_table, law_step
+    from .second_slider import emit as emit_slider
 
+    slider = drive.kind is DriverKind.SLIDER
+    symbol = "s" if slider else "l"
     if plan is P:
         b.c.second_driver = drive.link
         if by_table(b):     # a law by a table: the length at the position's time
-            sid = law_step(b, "pos.q2", drive, 0, P, f"l{drive.link}", group)
+            sid = law_step(b, "pos.q2", drive, 0, P, f"{symbol}{drive.link}", group)
         else:
             offset, ratio = law(b.mech.drive, drive)
-            sid = b.add("pos.q2", Op.SECOND_DRIVER_LENGTH, (_first_step(b),), P, Kind.SCALAR,
-                        Role.GIVEN, f"l{drive.link}", group,
+            op = Op.SECOND_SLIDER_POSITION if slider else Op.SECOND_DRIVER_LENGTH
+            sid = b.add("pos.q2", op, (_first_step(b),), P, Kind.SCALAR,
+                        Role.GIVEN, f"{symbol}{drive.link}", group,
                         subject=(b.mech.drive.link, drive.link), offset=offset, ratio=ratio)
         b.result(f"q_{drive.link}", sid)
-        return
-    dot = "̇" if plan is V else "̈"
-    value = drive.omega if plan is V else drive.epsilon
-    prefix = "vel" if plan is V else "acc"
-    if drive.law is not None:
-        law_step(b, f"{prefix}.rate2", drive, 1 if plan is V else 2, plan,
-                 f"l{dot}{drive.link}", group)
-        return
-    b.add(f"{prefix}.rate2", Op.DRIVER_RATE, (), plan, Kind.SCALAR, Role.GIVEN,
-          f"l{dot}{drive.link}", group, value=value)
+    else:
+        dot = "̇" if plan is V else "̈"
+        value = drive.omega if plan is V else drive.epsilon
+        prefix = "vel" if plan is V else "acc"
+        if drive.law is not None:
+            law_step(b, f"{prefix}.rate2", drive, 1 if plan is V else 2, plan,
+                     f"{symbol}{dot}{drive.link}", group)
+        else:
+            b.add(f"{prefix}.rate2", Op.DRIVER_RATE, (), plan, Kind.SCALAR, Role.GIVEN,
+                  f"{symbol}{dot}{drive.link}", group, value=value)
+    if slider:              # its point on the frame guide and its images
+        emit_slider(b, plan, group)
 
 
 def emit_position(b: Builder) -> None:
@@ -111,9 +119,12 @@ def emit_position(b: Builder) -> None:
     crank = b.mech.links[drive.link]
     pivot = drive.pivot
     tip = _tip(b, drive)
-    theta = b.add(f"pos.phi.{drive.link}", Op.SECOND_CRANK_ANGLE, (_first_step(b),), P, Kind.SCALAR,
-                  Role.GIVEN, f"θ{drive.link}", group, subject=(b.mech.drive.link, drive.link),
-                  offset=offset, ratio=ratio)
+    from .crank_law import angle
+
+    theta = angle(b, drive, group) or b.add(
+        f"pos.phi.{drive.link}", Op.SECOND_CRANK_ANGLE, (_first_step(b),), P, Kind.SCALAR,
+        Role.GIVEN, f"θ{drive.link}", group, subject=(b.mech.drive.link, drive.link),
+        offset=offset, ratio=ratio)
     base = _local_angle(b, drive.link, pivot, tip)
     for name in crank.points:
         if name == pivot:
@@ -142,12 +153,19 @@ def emit_velocity(b: Builder) -> None:
         return
     group, tip = group_name(drive), _tip(b, drive)
     body = b.bodies[drive.link]
-    body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR, Role.GIVEN,
-                       f"ω{drive.link}", group, value=drive.omega)
+    from .crank_law import rate, sizes
+
+    by_law, omega = rate(b, drive, V, group), drive.omega
+    if by_law is None:
+        body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR,
+                           Role.GIVEN, f"ω{drive.link}", group, value=drive.omega)
+    else:                   # a law by a table: ω2 of each position (plans/crank_law.py)
+        body.omega, omega = by_law, sizes(drive)[0]
     b.result(f"omega_{drive.link}", body.omega)
-    b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY, (b.pos[drive.pivot], b.pos[tip]), V,
-                       Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
-                       omega=drive.omega)
+    b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY,
+                       (b.pos[drive.pivot], b.pos[tip], *(() if by_law is None else (by_law,))),
+                       V, Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
+                       omega=omega)
     b.c.equations[(V, group)] = (
         f"v_{tip} = ω{drive.link} × l_{drive.pivot}{tip}",
         [(f"v_{tip}", perp(f"{drive.pivot}{tip}"), f"ω{drive.link}·l_{drive.pivot}{tip}")])
@@ -165,14 +183,23 @@ def emit_acceleration(b: Builder) -> None:
         return
     group, tip = group_name(drive), _tip(b, drive)
     body = b.bodies[drive.link]
-    body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR,
-                         Role.GIVEN, f"ε{drive.link}", group, value=drive.epsilon)
+    from .crank_law import rate, sizes
+
+    by_law, rates = rate(b, drive, A, group), (drive.omega, drive.epsilon)
+    extra: tuple[str, ...] = ()
+    if by_law is None:
+        body.epsilon = b.add(f"acc.epsilon.{drive.link}", Op.CONSTANT, (), A, Kind.SCALAR,
+                             Role.GIVEN, f"ε{drive.link}", group, value=drive.epsilon)
+    else:                   # a law by a table: ω2 and ε2 of each position
+        assert body.omega is not None
+        body.epsilon, rates, extra = by_law, sizes(drive), (body.omega, by_law)
     b.result(f"epsilon_{drive.link}", body.epsilon)
-    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION, (b.pos[drive.pivot], b.pos[tip]), A,
+    b.acc[tip] = b.add(f"acc.{tip}", Op.DRIVE_ACCELERATION,
+                       (b.pos[drive.pivot], b.pos[tip], *extra), A,
                        Kind.POINT, Role.RESULT, alabel(tip), group, subject=(drive.pivot, tip),
-                       omega=drive.omega, epsilon=drive.epsilon)
+                       omega=rates[0], epsilon=rates[1])
     rows = [(f"a^n_{tip}", from_to(tip, drive.pivot), f"ω{drive.link}²·l_{drive.pivot}{tip}")]
-    if drive.epsilon:
+    if rates[1]:
         rows.append((f"a^t_{tip}", perp(f"{drive.pivot}{tip}"),
                      f"ε{drive.link}·l_{drive.pivot}{tip}"))
     b.c.equations[(A, group)] = (f"a_{tip} = a^n_{tip} + a^t_{tip}", rows)

@@ -10,6 +10,8 @@ from ..ops import Op
 from ..segments import SegmentKind
 from ..step import Kind, Role
 from ..terms import GIVEN, parallel, perp
+from .crank_law import rate as law_rate
+from .crank_law import sizes as law_sizes
 from .images import (
     absolute,
     coincident,
@@ -34,12 +36,17 @@ def emit_drive(b: Builder) -> None:
     tip, group = start_plan(b, V)
     drive = b.mech.drive
     body = b.bodies[drive.link]
-    body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR, Role.GIVEN,
-                       f"ω{drive.link}", value=drive.omega)
+    by_law, omega = law_rate(b, drive, V, group), drive.omega
+    if by_law is None:
+        body.omega = b.add(f"vel.omega.{drive.link}", Op.CONSTANT, (), V, Kind.SCALAR,
+                           Role.GIVEN, f"ω{drive.link}", value=drive.omega)
+    else:                   # a law by a table: ω of each position (plans/crank_law.py)
+        body.omega, omega = by_law, law_sizes(drive)[0]
     b.result(f"omega_{drive.link}", body.omega)
-    b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY, (b.pos[drive.pivot], b.pos[tip]), V,
-                       Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
-                       omega=drive.omega)
+    b.vel[tip] = b.add(f"vel.{tip}", Op.DRIVE_VELOCITY,
+                       (b.pos[drive.pivot], b.pos[tip], *(() if by_law is None else (by_law,))),
+                       V, Kind.POINT, Role.RESULT, vlabel(tip), group, subject=(drive.pivot, tip),
+                       omega=omega)
     b.c.equations[(V, group)] = (
         f"v_{tip} = ω{drive.link} × l_{drive.pivot}{tip}",
         [(f"v_{tip}", perp(f"{drive.pivot}{tip}"), f"ω{drive.link}·l_{drive.pivot}{tip}")],

@@ -22,6 +22,7 @@ from ...scene.spec import Scene
 
 Array = np.ndarray
 TURN = 2.0 * math.pi
+HARMONIC_SAMPLES = 512        # samples per turn of the harmonic analysis (orders 1, 2 to ~1e-16)
 
 
 @dataclass(frozen=True)
@@ -49,11 +50,37 @@ class Slave:
     phi_bdc: float
     s_tdc: float                    # distance of the piston pin from the crank axis at TDC
     s_bdc: float
+    c1: complex = 0j                # orders 1 and 2 of that distance s(θ) = Σ Re(c_k e^{ikθ})
+    c2: complex = 0j
 
     @property
     def stroke(self) -> float:
         """Stroke of the articulated piston (m)."""
         return self.s_tdc - self.s_bdc
+
+    @property
+    def R_eq(self) -> float:
+        """|c1|: the crank radius of the piston's 1st-order motion (R of a central slider-crank)."""
+        return abs(self.c1)
+
+    @property
+    def lam_eq(self) -> float:
+        """4|c2|/|c1|: its 2nd order as a λ (λ + λ³/4 + … of a central slider-crank)."""
+        return 4.0 * abs(self.c2) / abs(self.c1)
+
+    def a_series(self, theta: Array, omega: float) -> Array:
+        """Acceleration (towards the crank axis +) kept to orders 1 and 2 of the exact motion:
+        ω²·[Re(c1 e^{iθ}) + 4 Re(c2 e^{2iθ})] at the linkage's crank angles θ."""
+        t = np.asarray(theta, float)
+        return omega * omega * np.real(self.c1 * np.exp(1j * t) + 4.0 * self.c2 * np.exp(2j * t))
+
+    def xi_brix(self, psi: Array) -> Array:
+        """Stroke fraction by Brix's construction drawn for this piston: a circle of radius R_eq,
+        the pole shifted R_eq·λ_eq/2 towards BDC, the ray at ψ from the piston's own exact TDC."""
+        lam = self.lam_eq
+        sn = np.sin(np.asarray(psi, float))
+        x = 1.0 - np.cos(psi) * np.sqrt(1.0 - lam * lam * sn * sn / 4.0) + lam / 2.0 * sn * sn
+        return np.asarray(x / 2.0)
 
 
 class ArticulatedGroup:
@@ -76,7 +103,8 @@ class ArticulatedGroup:
             tdc = self._dead_centre(k, u, int(np.argmax(s)))
             bdc = self._dead_centre(k, u, int(np.argmin(s)))
             ext = self._travel(k, u, np.array([tdc, bdc]))[0]
-            slaves.append(Slave(u, tdc, bdc, float(ext[0]), float(ext[1])))
+            c1, c2 = self._orders(k, u)
+            slaves.append(Slave(u, tdc, bdc, float(ext[0]), float(ext[1]), c1, c2))
         self.slaves: tuple[Slave, ...] = tuple(slaves)
 
     def state(self, phi: Array) -> GroupState:
@@ -90,6 +118,13 @@ class ArticulatedGroup:
                           tuple(ev[c.position(f"E{k}")] for k in names),
                           tuple(ev[c.velocity_image(f"E{k}")] for k in names),
                           tuple(ev[c.acceleration_image(f"E{k}")] for k in names))
+
+    def _orders(self, k: int, u: Array, n: int = HARMONIC_SAMPLES) -> tuple[complex, complex]:
+        """Orders 1 and 2 of the piston's exact distance from the crank axis (numerical harmonic
+        analysis: the discrete Fourier sum of n samples over a turn)."""
+        theta = np.arange(n) * TURN / n
+        c = np.fft.rfft(self._travel(k, u, theta)[0]) * (2.0 / n)
+        return complex(c[1]), complex(c[2])
 
     def _travel(self, k: int, u: Array, phi: Array) -> tuple[Array, Array]:
         c = self.construction

@@ -58,7 +58,12 @@ def _pieces(model: EngineModel, number: int) -> list[tuple[float, float]]:
         for k in range(spec.strokes):
             lo, hi = bounds[k], bounds[k + 1]
             cuts = [lo, hi]
-            for xi in dia.knots_xi(k)[1:-1]:
+            xis = list(dia.knots_xi(k)[1:-1])
+            if model.rod_diagram is not None:
+                # the crank end's stroke k − 1 at ξ' = 1 − x/S′
+                j = (k - 1) % spec.strokes
+                xis += [1.0 - xi for xi in model.rod_diagram.knots_xi(j)[1:-1]]
+            for xi in xis:
                 cuts.append(group.phi_of_travel(art.slot, float(xi) * stroke, lo + d, hi + d) - d)
             out += list(itertools.pairwise(sorted(cuts)))
         return out
@@ -93,7 +98,7 @@ def consistency_checks(model: EngineModel, dense: Array) -> Checks:
     W_rod = model.rod_diagram.work() if model.rod_diagram is not None else 0.0
     expected, torque, inertia = 0.0, 0.0, 0.0
     for c in spec.cylinders:
-        expected += W * model.stroke_of(c.number) / (2.0 * spec.R) + W_rod
+        expected += (W + W_rod) * model.stroke_of(c.number) / (2.0 * spec.R)
         torque += _integral(model, c.number, "M")
         inertia += _integral(model, c.number, "M_j")
     c1 = model.cylinder(1, dense)

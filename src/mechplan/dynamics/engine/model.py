@@ -187,16 +187,26 @@ class EngineModel:
         n = np.array([-u[1], u[0]])
         beta = np.arctan2(e @ n, e @ u)
         p = self.diagram.pressure_xi(x / sl.stroke, self.stroke_E(psi, number))
-        p_brix = self.diagram.at_phi(psi, self.kin.x_brix(psi) / (2.0 * spec.R))
+        # Brix's construction drawn for this piston, from its own exact TDC
+        own = psi - self.dead_centres(number)[0]
+        p_brix = self.diagram.at_phi(own, sl.xi_brix(own))
+        a_s = sl.a_series(phi - art.offset, w)
         m = self.m_j[number]
         Pk = (p - spec.p0) * spec.F_p
+        p_rod = None
+        if self.rod_diagram is not None:
+            # the crank end: its own stroke fraction 1 − x/S′, its stroke one behind the head's
+            # (its cycle starts at the head's exact BDC)
+            j = np.mod(self.stroke_E(psi, number) - 1, spec.strokes)
+            p_rod = self.rod_diagram.pressure_xi(1.0 - x / sl.stroke, j)
+            Pk = Pk - (p_rod - spec.p0) * spec.F_rod_side
         Pj = -m * a
         P = Pk + Pj
         M = P * v / w
         nan = np.full_like(P, np.nan)
-        return CylinderForces(psi, x, v, a, self.kin.a_series(psi, w), beta, p, p_brix, Pk, Pj,
-                              -m * self.kin.a_series(psi, w), P, P * np.tan(beta), P / np.cos(beta),
-                              M / spec.R, nan, M, Pj * v / w)
+        return CylinderForces(psi, x, v, a, a_s, beta, p, p_brix, Pk, Pj, -m * a_s, P,
+                              P * np.tan(beta), P / np.cos(beta), M / spec.R, nan, M, Pj * v / w,
+                              p_rod)
 
     def group_state(self, theta: Array) -> GroupState:
         """The linkage at its crank angles θ; the last evaluation is kept (the articulated

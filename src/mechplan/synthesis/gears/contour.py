@@ -18,6 +18,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from scipy.optimize import brentq
@@ -196,38 +197,52 @@ def blocking_contour(p: PairSpec, c: ContourSpec | None = None,
     x2 = np.linspace(*(x2_range or (lo2, 1.5)), n)
     lines = {name: _roots(lambda a, b, name=name: limit_values(p, c, a, b)[name], x1, x2)
              for name in LIMITS}
+    return contour_on_grid(
+        p, c, x1, x2, lines, lambda a, b: admissible(p, c, a, b), lambda a, b: pair_arrays(p, a, b),
+        lambda best, balanced, unbalance: _refine_balanced(p, c, best, balanced, unbalance))
+
+
+def contour_on_grid(p: PairSpec, c: ContourSpec, x1: np.ndarray, x2: np.ndarray,
+                    lines: dict[str, np.ndarray],
+                    admissible_at: Callable[[np.ndarray, np.ndarray], np.ndarray],
+                    arrays_at: Callable[[np.ndarray, np.ndarray], Any],
+                    refine: Callable[[tuple[float, float], np.ndarray,
+                                      Callable[[np.ndarray, np.ndarray], np.ndarray]],
+                                     tuple[float, float]] | None = None) -> Contour:
+    """The contour on the (x1, x2) grid with its limit ``lines``: the admissible mask, the line
+    of balanced specific sliding, and the chosen shifts — the admissible balanced point of the
+    largest ε_α (moved by ``refine`` where given), else the admissible grid point of the largest
+    ε_α; raise :class:`SceneError` when no shift pair is admissible."""
     X1, X2 = np.meshgrid(x1, x2, indexing="ij")
-    mask = admissible(p, c, X1, X2)
+    mask = admissible_at(X1, X2)
 
     def unbalance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-        q = pair_arrays(p, a, b)
+        q = arrays_at(a, b)
         with np.errstate(invalid="ignore"):
             d = q.sliding[0] - q.sliding[1]
         return np.where(np.isfinite(d), d, np.nan)
     balanced = _roots(unbalance, x1, x2)
-    best: tuple[float, float] | None = None
-    best_eps = -math.inf
-    rule = "balanced_max_eps"
     pts = balanced[np.isfinite(balanced[:, 0])]
     if pts.size:
-        ok = admissible(p, c, pts[:, 0], pts[:, 1])
+        ok = admissible_at(pts[:, 0], pts[:, 1])
         if ok.any():
             cand = pts[ok]
-            eps = pair_arrays(p, cand[:, 0], cand[:, 1]).eps
+            eps = arrays_at(cand[:, 0], cand[:, 1]).eps
             k = int(np.nanargmax(eps))
-            best, best_eps = (float(cand[k, 0]), float(cand[k, 1])), float(eps[k])
-            best = _refine_balanced(p, c, best, balanced, unbalance)
-            best_eps = float(pair_arrays(p, *best).eps)
-    if best is None:
-        rule = "max_eps"
-        if not mask.any():
-            raise SceneError(Text("contour.error.empty", {"z1": p.z1, "z2": p.z2,
-                                                          "k": c.tip_land, "eps": c.eps_min}),
-                             key="pair.shift_rule")
-        eps = np.where(mask, pair_arrays(p, X1, X2).eps, -np.inf)
-        i, j = np.unravel_index(int(np.argmax(eps)), eps.shape)
-        best, best_eps = (float(x1[i]), float(x2[j])), float(eps[i, j])
-    return Contour(c, x1, x2, lines, mask, balanced, best, rule, best_eps)
+            best = (float(cand[k, 0]), float(cand[k, 1]))
+            best_eps = float(eps[k])
+            if refine is not None:
+                best = refine(best, balanced, unbalance)
+                best_eps = float(arrays_at(np.asarray(best[0]), np.asarray(best[1])).eps)
+            return Contour(c, x1, x2, lines, mask, balanced, best, "balanced_max_eps", best_eps)
+    if not mask.any():
+        raise SceneError(Text("contour.error.empty", {"z1": p.z1, "z2": p.z2,
+                                                      "k": c.tip_land, "eps": c.eps_min}),
+                         key="pair.shift_rule")
+    eps_grid = np.where(mask, arrays_at(X1, X2).eps, -np.inf)
+    i, j = np.unravel_index(int(np.argmax(eps_grid)), eps_grid.shape)
+    return Contour(c, x1, x2, lines, mask, balanced, (float(x1[i]), float(x2[j])), "max_eps",
+                   float(eps_grid[i, j]))
 
 
 def _refine_balanced(p: PairSpec, c: ContourSpec, start: tuple[float, float],

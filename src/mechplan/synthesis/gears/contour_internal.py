@@ -41,7 +41,7 @@ import numpy as np
 from ...errors import SceneError
 from ...i18n import Text
 from ...model.gears import PairSpec
-from .contour import Contour, ContourSpec, _roots, inv_inverse_array
+from .contour import Contour, ContourSpec, _roots, contour_on_grid, inv_inverse_array
 
 LIMITS_INTERNAL = ("undercut1", "tip1", "tip2", "contact", "interference1", "interference2",
                    "involute2", "trochoid", "trimming")
@@ -160,32 +160,9 @@ def internal_contour(p: PairSpec, c: ContourSpec | None = None,
     x2 = np.linspace(*(x2_range or (-1.0, 1.5)), n)
     lines = {name: _roots(lambda a, b, name=name: internal_limits(p, c, a, b)[name], x1, x2)
              for name in LIMITS_INTERNAL}
-    X1, X2 = np.meshgrid(x1, x2, indexing="ij")
-    mask = internal_admissible(p, c, X1, X2)
-
-    def unbalance(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-        q = internal_arrays(p, a, b)
-        with np.errstate(invalid="ignore"):
-            d = q.sliding[0] - q.sliding[1]
-        return np.where(np.isfinite(d), d, np.nan)
-    balanced = _roots(unbalance, x1, x2)
-    pts = balanced[np.isfinite(balanced[:, 0])]
-    if pts.size:
-        ok = internal_admissible(p, c, pts[:, 0], pts[:, 1])
-        if ok.any():
-            cand = pts[ok]
-            eps = internal_arrays(p, cand[:, 0], cand[:, 1]).eps
-            k = int(np.nanargmax(eps))
-            return Contour(c, x1, x2, lines, mask, balanced,
-                           (float(cand[k, 0]), float(cand[k, 1])), "balanced_max_eps",
-                           float(eps[k]))
-    if not mask.any():
-        raise SceneError(Text("contour.error.empty", {"z1": p.z1, "z2": p.z2, "k": c.tip_land,
-                                                      "eps": c.eps_min}), key="pair.shift_rule")
-    eps = np.where(mask, internal_arrays(p, X1, X2).eps, -np.inf)
-    i, j = np.unravel_index(int(np.argmax(eps)), eps.shape)
-    return Contour(c, x1, x2, lines, mask, balanced, (float(x1[i]), float(x2[j])), "max_eps",
-                   float(eps[i, j]))
+    return contour_on_grid(p, c, x1, x2, lines,
+                           lambda a, b: internal_admissible(p, c, a, b),
+                           lambda a, b: internal_arrays(p, a, b))
 
 
 @dataclass(frozen=True)
