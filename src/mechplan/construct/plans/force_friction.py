@@ -36,6 +36,11 @@ def friction_loads(st: State) -> None:
     if spec is None:
         return
     b = st.b
+    drive = b.mech.drive
+    if drive.linear:        # the iteration closes on the first crank's balancing moment only
+        raise SceneError(Text("excavload.friction.linear_driver",
+                              {"kind": drive.kind.value, "link": drive.link}),
+                         file=b.file, key=spec.key)
     pairs = [p for p in b.mech.pairs if spec.of(p.a, p.b).f > 0
              and (p.kind is PairKind.PRISMATIC or spec.of(p.a, p.b).radius > 0)]
     carriers: dict[int, str] = {}
@@ -50,7 +55,6 @@ def friction_loads(st: State) -> None:
             carriers[index] = image.vel
     loop = FrictionLoop(b.c, tuple(f"R_{reaction_key(p.a, p.b)}" for p in pairs),
                         tolerance=spec.tolerance, max_iterations=spec.max_iterations)
-    drive = b.mech.drive
     gn = f"I({GROUND},{drive.link})"
     it = st.add("force.friction", Op.FRICTION_ITERATE, ("pos.phi1",), Kind.SCALAR, Role.RESULT,
                 "M_b⁰", gn, subject=(), loop=loop)
