@@ -37,11 +37,11 @@ class KernelUnsupported(KernelUnavailable):
 
 def _helpers_digest() -> str:
     """The digest of the helpers every kernel calls: ``kernel_helpers.py``, ``kernel_triad.py``
-    and the triad solver's constants in ``ops/triad_solve.py`` (read, not imported: importing
+    and the triad solver's constants in ``ops/triad_closure.py`` (read, not imported: importing
     them imports numba)."""
     here = Path(__file__)
     text = b"".join((here.parent / name).read_bytes()
-                    for name in ("kernel_helpers.py", "kernel_triad.py", "ops/triad_solve.py",
+                    for name in ("kernel_helpers.py", "kernel_triad.py", "ops/triad_closure.py",
                                  "kernel_law.py"))
     return hashlib.sha256(text).hexdigest()[:16]
 

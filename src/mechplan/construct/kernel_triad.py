@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from .kernel_helpers import _div, _jit
-from .ops.triad_solve import GRID, ITERATIONS, PURE, RESIDUAL_ULPS, SETTLE, STEP_TOL, WINDOW
+from .ops.triad_closure import GRID, ITERATIONS, PURE, RESIDUAL_ULPS, SETTLE, STEP_TOL, WINDOW
 
 NAN = math.nan
 INF = math.inf

@@ -16,95 +16,24 @@ needed. ``construct/kernel_triad.py`` is the same algorithm for one position.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
 import numpy as np
 
 from ...geom.vec import Array
-
-#: grid of base-link angles on which the closure's roots are bracketed
-GRID = 24
-#: cells on each side of the reference angle searched first
-WINDOW = 3
-#: iterations of the refinement, at most (a bisection from a 15° cell reaches the last bit in 52)
-ITERATIONS = 64
-#: plain Newton steps tried first (from a 15° cell's secant point the error falls as 1e-2,
-#: 1e-4, 1e-8, 1e-16)
-PURE = 4
-#: a Newton step this small (relative to 1 + |θ|) ends the refinement
-STEP_TOL = 4e-16
-#: …when the residual |f| is within this many roundings of the group's size
-RESIDUAL_ULPS = 64.0
-
-
-class Triad(NamedTuple):
-    """The group's dimensions and its assembly: lengths of the legs, the base link's points B_2,
-    B_3 relative to B_1 in its frame, the arcs' branch σ, the sign of f′ at the root and the
-    assembly's angle."""
-
-    l1: float
-    l2: float
-    l3: float
-    d2: tuple[float, float]
-    d3: tuple[float, float]
-    sigma: int
-    slope: int
-    ref: float
-
-    @property
-    def size(self) -> float:
-        return self.l1 + self.l2 + self.l3 + math.hypot(*self.d2) + math.hypot(*self.d3)
-
-
-def closure(a1: Array, a2: Array, a3: Array, theta: Array, t: Triad, sigma: int | None = None,
-            slope: bool = False) -> tuple[Array, Array, Array | None]:
-    """f(θ), the arcs' sine and (``slope``) f′(θ) at base angles θ (points broadcast against θ's
-    shape).
-
-    The arcs meet by Heron's product form (exact near tangency); a square of the half-chord
-    negative by rounding only (at a domain edge taken as a grid node) counts as zero. f′ is the
-    closed-form derivative (infinite at a domain edge, where the half-chord is zero).
-    """
-    sg = t.sigma if sigma is None else sigma
-    l1, l2, l3, d2, d3 = t.l1, t.l2, t.l3, t.d2, t.d3
-    c, s = np.cos(theta), np.sin(theta)
-    u2x, u2y = c * d2[0] - s * d2[1], s * d2[0] + c * d2[1]
-    dx = a2[..., 0] - u2x - a1[..., 0]
-    dy = a2[..., 1] - u2y - a1[..., 1]
-    dd = dx * dx + dy * dy
-    with np.errstate(invalid="ignore", divide="ignore"):
-        along = (l1 * l1 - l2 * l2 + dd) / (2.0 * dd)
-        big, small = (l1 + l2) ** 2 - dd, dd - (l1 - l2) ** 2
-        h2 = big * small / (4.0 * dd * dd)
-        h2 = np.where((h2 < 0.0) & (h2 > -1e-12), 0.0, h2)
-        h = np.sqrt(h2) * sg
-        bx = a1[..., 0] + along * dx - h * dy
-        by = a1[..., 1] + along * dy + h * dx
-        u3x, u3y = c * d3[0] - s * d3[1], s * d3[0] + c * d3[1]
-        rx = bx - a3[..., 0] + u3x
-        ry = by - a3[..., 1] + u3y
-        rr = np.sqrt(rx * rx + ry * ry)
-        f = rr - l3
-        sine = np.abs(h) * dd / (l1 * l2)
-        fp = None
-        if slope:
-            # d/dθ: dx′ = u2y, dy′ = −u2x; along, h² and h through dd
-            ddp = 2.0 * (dx * u2y - dy * u2x)
-            alongp = -(l1 * l1 - l2 * l2) * ddp / (2.0 * dd * dd)
-            h2p = ddp * ((big - small) * dd - 2.0 * big * small) / (4.0 * dd * dd * dd)
-            hp = h2p / (2.0 * h)
-            bxp = alongp * dx + along * u2y - hp * dy + h * u2x
-            byp = alongp * dy - along * u2x + hp * dx + h * u2y
-            fp = (rx * (bxp - u3y) + ry * (byp + u3x)) / rr
-    return f, sine, fp
-
-
-def _sloped(a1: Array, a2: Array, a3: Array, theta: Array, t: Triad
-            ) -> tuple[Array, Array, Array]:
-    """f, the arcs' sine and f′ at θ (:func:`closure` with the slope)."""
-    f, sine, fp = closure(a1, a2, a3, theta, t, slope=True)
-    assert fp is not None
-    return f, sine, fp
+from .triad_closure import (  # noqa: F401  (the solver's constants and closure, re-exported)
+    GRID,
+    ITERATIONS,
+    PURE,
+    RESIDUAL_ULPS,
+    SETTLE,
+    STEP_TOL,
+    WINDOW,
+    Cells,
+    Triad,
+    _sloped,
+    closure,
+)
+from .triad_newton import newton
 
 
 def edges(a1: Array, a2: Array, t: Triad) -> Array:
@@ -165,18 +94,6 @@ def rising(f0: Array, f1: Array, slope: int) -> Array:
     """Cells where f crosses zero with the sign ``slope`` (NaN ends compare False)."""
     out: Array = (f0 * f1 <= 0) & ((f1 - f0) * slope > 0)
     return out
-
-
-class Cells(NamedTuple):
-    """Per position: the bracket [lo, hi] with f at its ends, whether one was found, and (where
-    none) the least |f| over the branch."""
-
-    lo: Array
-    hi: Array
-    flo: Array
-    fhi: Array
-    found: Array
-    miss: Array
 
 
 def _values(a: tuple[Array, ...], th: Array, t: Triad,
@@ -321,200 +238,6 @@ def select(a1: Array, a2: Array, a3: Array, t: Triad) -> Cells:
     return cells
 
 
-def _slope_at(a: tuple[Array, ...], x: Array, t: Triad) -> tuple[Array, Array, Array]:
-    """f, the arcs' sine and f′ at θ = ``x`` (``a``: the points' coordinates as rows (N,)):
-    :func:`closure`'s formulas in its order of operations — the same values — with fewer
-    temporaries (the Newton iteration's inner step)."""
-    l1, l2, l3, sg = t.l1, t.l2, t.l3, t.sigma
-    (d20, d21), (d30, d31) = t.d2, t.d3
-    a1x, a1y, a2x, a2y, a3x, a3y = a
-    c, s = np.cos(x), np.sin(x)
-    u2x = c * d20
-    u2x -= s * d21
-    u2y = s * d20
-    u2y += c * d21
-    dx = a2x - u2x
-    dx -= a1x
-    dy = a2y - u2y
-    dy -= a1y
-    dd = dx * dx
-    dd += dy * dy
-    k = l1 * l1 - l2 * l2
-    with np.errstate(invalid="ignore", divide="ignore"):
-        two = 2.0 * dd
-        along = k + dd
-        along /= two
-        big = (l1 + l2) ** 2 - dd
-        small = dd - (l1 - l2) ** 2
-        four = 4.0 * dd
-        four *= dd                                         # 4·dd·dd
-        h = big * small
-        h /= four
-        np.copyto(h, 0.0, where=(h < 0.0) & (h > -1e-12))
-        np.sqrt(h, out=h)
-        if sg != 1:
-            h *= sg
-        rx = along * dx
-        rx += a1x
-        rx -= h * dy                                       # B_1
-        ry = along * dy
-        ry += a1y
-        ry += h * dx
-        u3x = c * d30
-        u3x -= s * d31
-        u3y = s * d30
-        u3y += c * d31
-        rx -= a3x
-        rx += u3x
-        ry -= a3y
-        ry += u3y
-        rr = rx * rx
-        rr += ry * ry
-        np.sqrt(rr, out=rr)
-        f = rr - l3
-        sine = np.abs(h)
-        sine *= dd
-        sine /= l1 * l2
-        ddp = dx * u2y
-        ddp -= dy * u2x
-        ddp *= 2.0
-        two *= dd                                          # 2·dd·dd
-        alongp = ddp * -k
-        alongp /= two
-        inner = big - small
-        inner *= dd
-        big *= 2.0
-        big *= small
-        inner -= big                                       # (big − small)·dd − 2·big·small
-        four *= dd                                         # 4·dd·dd·dd
-        hp = ddp * inner
-        hp /= four
-        hp /= 2.0 * h
-        bxp = alongp * dx
-        bxp += along * u2y
-        bxp -= hp * dy
-        bxp += h * u2x
-        byp = alongp * dy
-        byp -= along * u2x
-        byp += hp * dx
-        byp += h * u2y
-        bxp -= u3y
-        bxp *= rx
-        byp += u3x
-        byp *= ry
-        bxp += byp
-        bxp /= rr
-    return f, sine, bxp
-
-
-#: Newton steps after which a position may be settled (from a 15° cell's secant point the error
-#: falls as 1e-2, 1e-4, 1e-8, 1e-16: three steps settle it where the cell is not too curved)
-SETTLE = 3
-
-
-def _pure(a1: Array, a2: Array, a3: Array, c: Cells, t: Triad, out: tuple[Array, ...]
-          ) -> Array:
-    """At most ``PURE`` steps of Newton's iteration from the secant point, for the found
-    brackets (no bookkeeping between them). A position is settled, after ``SETTLE`` steps or
-    any later one, where the last iterate is in its bracket and its error, C·s² with
-    C = s / s_prev² estimated from the last two steps (the quadratic convergence), is below
-    ``STEP_TOL``·(1 + |θ|) — or the step itself is that small with a residual within
-    ``RESIDUAL_ULPS`` roundings of the group's size; the positions left go on. Fills ``out``
-    (θ, and f, f′, the arcs' sine at the last point evaluated); returns the positions left for
-    :func:`_guarded`."""
-    theta, f_at, fp_at, sine_at = out
-    idx = np.nonzero(c.found)[0]
-    lo, hi, flo, fhi = c.lo[idx], c.hi[idx], c.flo[idx], c.fhi[idx]
-    a = tuple(np.ascontiguousarray(p[idx, j]) for p in (a1, a2, a3) for j in (0, 1))
-    small = RESIDUAL_ULPS * np.finfo(float).eps * t.size
-    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
-        x = hi - fhi * (hi - lo) / (fhi - flo)
-        x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
-        prev = step = x
-        for it in range(PURE):
-            if not idx.size:
-                break
-            fx, sx, fp = _slope_at(a, x, t)
-            prev, step = step, fx / fp
-            x = x - step
-            if it + 1 < SETTLE:
-                continue
-            tol = STEP_TOL * (1.0 + np.abs(x))
-            s = np.abs(step)
-            done = ((s * s * s <= tol * prev * prev) & (s <= 1e-6)) | (
-                (s <= tol) & (np.abs(fx) <= small))
-            done &= (x >= lo) & (x <= hi)                  # NaN compares False
-            j = idx[done]
-            theta[j], f_at[j], fp_at[j], sine_at[j] = x[done], fx[done], fp[done], sx[done]
-            keep = ~done
-            if it + 1 < PURE and not keep.all():
-                idx, x, prev, step = idx[keep], x[keep], prev[keep], step[keep]
-                lo, hi = lo[keep], hi[keep]
-                a = tuple(v[keep] for v in a)
-            elif it + 1 == PURE:
-                idx = idx[keep]
-    left: Array = idx
-    return left
-
-
-def _guarded(a1: Array, a2: Array, a3: Array, c: Cells, t: Triad, idx: Array,
-             out: tuple[Array, ...]) -> None:
-    """Newton's iteration kept inside the bracket (a bisection where a step would leave it, not
-    move, or f′ is not finite) for the positions ``idx``, from the secant point; it ends where
-    the step is below ``STEP_TOL``·(1 + |θ|) with the residual within ``RESIDUAL_ULPS``
-    roundings of the group's size, or where f is zero. Fills ``out`` as :func:`_pure`."""
-    theta, f_at, fp_at, sine_at = out
-    lo, hi, flo, fhi = c.lo[idx], c.hi[idx], c.flo[idx], c.fhi[idx]
-    p1, p2, p3 = a1[idx], a2[idx], a3[idx]
-    small = RESIDUAL_ULPS * np.finfo(float).eps * t.size
-    fx = fp = sx = xo = np.empty(0)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        x = hi - fhi * (hi - lo) / (fhi - flo)
-        x = np.where((x > lo) & (x < hi), x, 0.5 * (lo + hi))
-        for _ in range(ITERATIONS):
-            if not idx.size:
-                break
-            fx, sx, fp = _sloped(p1, p2, p3, x, t)
-            same = np.sign(fx) == np.sign(fhi)
-            hi, fhi = np.where(same, x, hi), np.where(same, fx, fhi)
-            lo, flo = np.where(same, lo, x), np.where(same, flo, fx)
-            step = fx / fp
-            xn = x - step
-            inside = np.isfinite(fp) & (xn >= lo) & (xn <= hi)
-            done = (fx == 0.0) | (inside & (np.abs(step) <= STEP_TOL * (1.0 + np.abs(x)))
-                                  & (np.abs(fx) <= small))
-            done |= ~np.isfinite(fx)                       # left the domain: give up
-            xn = np.where(fx == 0.0, x, np.where(inside & ((xn != x) | done), xn,
-                                                  0.5 * (lo + hi)))
-            if done.any():
-                j = idx[done]
-                theta[j] = np.where(np.isfinite(fx[done]), xn[done], np.nan)
-                f_at[j], fp_at[j], sine_at[j] = fx[done], fp[done], sx[done]
-                keep = ~done
-                idx, xo, x = idx[keep], x[keep], xn[keep]
-                lo, hi, flo, fhi = lo[keep], hi[keep], flo[keep], fhi[keep]
-                p1, p2, p3 = p1[keep], p2[keep], p3[keep]
-                fx, fp, sx = fx[keep], fp[keep], sx[keep]
-            else:
-                x, xo = xn, x
-        # the iterations ran out: the last point evaluated
-        theta[idx], f_at[idx], fp_at[idx], sine_at[idx] = xo, fx, fp, sx
-
-
-def newton(a1: Array, a2: Array, a3: Array, c: Cells, t: Triad
-           ) -> tuple[Array, Array, Array, Array]:
-    """The root in each found bracket: θ (NaN where none) and, at the last point evaluated
-    (within a rounding or C·s² of θ), f, f′ and the arcs' sine. Newton's iteration
-    (:func:`_pure`), and where it does not settle in the bracket, the safeguarded one
-    (:func:`_guarded`)."""
-    out = tuple(np.full(c.lo.shape, np.nan) for _ in range(4))
-    left = _pure(a1, a2, a3, c, t, out)
-    if left.size:
-        _guarded(a1, a2, a3, c, t, left, out)
-    return out[0], out[1], out[2], out[3]
-
-
-#: positions solved together: each position is solved alone, so blocks give the same values;
 #: a block's temporaries stay in the cache and in memory already mapped (measured on 100 000
 #: positions: 8 192 at a time took 0.6× the time of all at once, in an evaluation less)
 BLOCK = 8192
