@@ -77,23 +77,38 @@ def _cut(block: Block, n: int) -> tuple[Block, Block]:
     return [p for p in block if p is not t] + [head], [tail]
 
 
-def _fits(blocks: Sequence[Block], title: str, w: float, h: float) -> bool:
-    x0, y0, x1, y1 = _titled("", blocks, title).bounds()
-    return x1 - x0 <= w + 1e-9 and y1 - y0 <= h + 1e-9
+def _size(block: Block) -> tuple[float, float]:
+    """Width and height (mm) of a block as :func:`_stacked` draws it."""
+    x0, y0, x1, y1 = Panel("", list(block)).bounds()
+    return x1 - x0, y1 - y0
 
 
 def _first(blocks: list[Block], title: str, w: float, h: float,
            cut: bool = True) -> tuple[list[Block], list[Block]]:
-    """The blocks that fit w × h (``cut``: the last one perhaps cut by rows) and the rest."""
+    """The blocks that fit w × h under the title (``cut``: the last one perhaps cut by rows)
+    and the rest. Sizes are added up from each block's box as :func:`_titled` stacks them."""
+    head_box = Panel("", [Text((0.0, 3.0), title, TITLE_H - 1.5)]).bounds()
+    top, title_w = head_box[3], head_box[2] - head_box[0]
+
+    def fits(width: float, height: float) -> bool:
+        return max(width, title_w) <= w + 1e-9 and top + height <= h + 1e-9
+
     first: list[Block] = []
+    used_w = used_h = 0.0
     for i, block in enumerate(blocks):
-        if _fits(first + [block], title, w, h):
+        bw, bh = _size(block)
+        gap = BETWEEN_MM if first else 0.0
+        if fits(max(used_w, bw), used_h + gap + bh):
             first.append(block)
+            used_w, used_h = max(used_w, bw), used_h + gap + bh
             continue
-        rows = _rows(block) if cut or not first else 0
+        t = next((p for p in block if isinstance(p, Table)), None)
+        heights = t.row_heights_mm if t is not None else ()
+        rows = len(heights) - 1 if cut or not first else 0
         for n in range(rows - MIN_ROWS, MIN_ROWS - 1, -1):
-            head, tail = _cut(block, n)
-            if _fits(first + [head], title, w, h):
+            cut_h = bh - sum(heights[n + 1:])               # the table is the block's foot
+            if fits(max(used_w, bw), used_h + gap + cut_h):
+                head, tail = _cut(block, n)
                 return first + [head], [tail] + blocks[i + 1:]
         return first, blocks[i:]
     return first, []
