@@ -25,6 +25,9 @@ from .panels import Panel
 GAP = 8.0          # mm between panels
 #: the coverage a full sheet (not the last of its set) should reach
 GOAL = 0.55
+#: a last sheet covered less than this is worth saving by letting a plan's tables go on an
+#: earlier sheet than the plan (:func:`fewest_sheets`)
+WASTED = 0.15
 
 #: enlargements of a capability sheet's drawings and diagrams tried, largest first; text heights
 #: and tables keep their size
@@ -192,10 +195,17 @@ def chain(name: str) -> str:
     return re.sub(r"([-.]\d+)+$", "", name)
 
 
-def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
-    """The panel redrawn in parts (``Panel.split_off``, else ``Panel.refit``), the first one
-    fitting the free room of this sheet (any of its free rectangles); None when no part fits."""
-    split = panel.split_off or panel.refit
+def sequence(name: str) -> str:
+    """The reading sequence of a panel: its :func:`chain`, a plan's tables set apart
+    ("acceleration-1-tables.2") with their plan — never on an earlier sheet than it."""
+    return chain(re.sub(r"-tables([-.]\d+)*$", "", name))
+
+
+def _split_into(room: Sheetful, panel: Panel, rows: bool = True) -> list[Panel] | None:
+    """The panel redrawn in parts (``Panel.split_off`` — with ``rows`` —, else ``Panel.refit``),
+    the first one fitting the free room of this sheet (any of its free rectangles); None when no
+    part fits."""
+    split = (panel.split_off if rows else None) or panel.refit
     if split is None:
         return None
     for w, h in room.free_rectangles()[:16]:
@@ -210,7 +220,8 @@ def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
 
 
 def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False,
-             columns: bool = False, bounds: Bounds | None = None) -> Groups | Panel:
+             columns: bool = False, bounds: Bounds | None = None,
+             rows: bool = True, after_plan: bool = True) -> Groups | Panel:
     """The panels, in reading order, on as few sheets as the packing needs.
 
     Each sheet takes every remaining panel that still fits its free room (so no panel on a
@@ -220,7 +231,9 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
     fills the free room; its parts stand for it and for the later panels of its sequence
     (the grid's other cells), which are dropped — or, split by ``Panel.split_off`` (a table:
     the rows that fit, then the others), for it alone. ``columns``: each panel at the leftmost, then
-    highest spot. Return
+    highest spot. ``rows=False``: no ``split_off`` (a table in parts of whole tables, by
+    ``Panel.refit``). ``after_plan``: a plan's tables set apart wait for their plan
+    (:func:`sequence`; else only the parts of one :func:`chain` keep their order). Return
     (panels, offsets) per sheet, or the first panel that fits no empty sheet.
     """
     groups: Groups = []
@@ -234,14 +247,15 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
         queue = list(rest)
         while queue:
             panel = queue.pop(0)
-            if any(chain(q.name) == chain(panel.name) for q in left):
+            key = sequence if after_plan else chain
+            if any(key(q.name) == key(panel.name) for q in left):
                 left.append(panel)
                 continue
             at = room.put(panel)
             # on an empty sheet: only a panel no sheet holds whole is split (else: an error)
             if at is None and split:
-                parts = _split_into(room, panel)
-                if parts is not None and panel.split_off is not None:
+                parts = _split_into(room, panel, rows)
+                if parts is not None and rows and panel.split_off is not None:
                     queue = parts + queue           # its parts stand for it alone
                     continue
                 if parts is not None:
@@ -276,36 +290,54 @@ def _reordered(panels: Sequence[Panel], key: Callable[[Panel], float]) -> list[P
     together and in order (ranked by their first part)."""
     rank: dict[str, float] = {}
     for p in panels[1:]:
-        rank.setdefault(chain(p.name), key(p))
-    rest = sorted(panels[1:], key=lambda p: -rank[chain(p.name)])     # stable: order kept
+        rank.setdefault(sequence(p.name), key(p))
+    rest = sorted(panels[1:], key=lambda p: -rank[sequence(p.name)])     # stable: order kept
     return list(panels[:1]) + rest
 
 
 def fewest_sheets(panels: Sequence[Panel], area: BaseGeometry, *,
-                  split: bool = False) -> Groups | Panel:
-    """:func:`paginate` in reading order, rows first — or, when one saves a sheet, in columns
-    first, or with the panels after the first taken tallest first or largest first."""
+                  split: bool = False, whole: bool = False) -> Groups | Panel:
+    """:func:`paginate` in reading order, rows first — or, when one saves a sheet (or fills the
+    full sheets better: :func:`_fuller`), in columns first, or with the panels after the first
+    taken tallest first or largest first; ``whole``: each also with tables in parts of whole
+    tables (``Panel.refit``) besides split by rows into a sheet's free room."""
     bounds = Bounds()
     best = paginate(panels, area, split=split, bounds=bounds)
     if isinstance(best, Panel) or len(best) == 1:
         return best
     orders = [list(panels), _reordered(panels, _height), _reordered(panels, _area_of)]
-    for order, columns in itertools.product(orders, (False, True)):
-        other = paginate(order, area, split=split, columns=columns, bounds=bounds)
+    for order, columns, rows in itertools.product(orders, (False, True),
+                                                  (True, False) if whole else (True,)):
+        if not columns and rows and order is orders[0]:
+            continue                                # the first one, above
+        other = paginate(order, area, split=split, columns=columns, bounds=bounds, rows=rows)
         if isinstance(other, Panel):
             continue
         if len(other) < len(best) or (len(other) == len(best) and _fuller(other, best, area)):
             best = other
+    if coverage(list(zip(*best[-1])), area) < WASTED:
+        # a last sheet nearly empty: taken only to keep tables after their plans — saved when
+        # the tables may go on an earlier sheet than their plan
+        for order, columns in itertools.product(orders, (False, True)):
+            other = paginate(order, area, split=split, columns=columns, bounds=bounds,
+                             after_plan=False)
+            if not isinstance(other, Panel) and len(other) < len(best):
+                best = other
     return best
 
 
 def _fuller(a: Groups, b: Groups, area: BaseGeometry) -> bool:
-    """Tell whether sheets ``a`` fill their full sheets (all but the last) clearly better than
-    ``b`` where ``b`` leaves one under :data:`GOAL`: the emptiest of them covered 10 points more
-    (the reading order is kept otherwise)."""
-    def emptiest(groups: Groups) -> float:
-        return min((coverage(list(zip(p, o)), area) for p, o in groups[:-1]), default=1.0)
-    return emptiest(b) < GOAL and emptiest(a) > emptiest(b) + 0.10
+    """Tell whether sheets ``a`` fill their full sheets (all but the last) better than ``b``
+    where ``b`` leaves one under :data:`GOAL`: fewer of them under it, or as many and the
+    emptiest of them covered 10 points more (the reading order is kept otherwise)."""
+    def covered(groups: Groups) -> list[float]:
+        return [coverage(list(zip(p, o)), area) for p, o in groups[:-1]]
+
+    ca, cb = covered(a), covered(b)
+    under_a, under_b = sum(c < GOAL for c in ca), sum(c < GOAL for c in cb)
+    if not under_b or under_a > under_b:
+        return False
+    return under_a < under_b or min(ca, default=1.0) > min(cb, default=1.0) + 0.10
 
 
 def coverage(placed: Sequence[tuple[Panel, tuple[float, float]]], area: BaseGeometry) -> float:
@@ -427,9 +459,10 @@ def _area(size: str, standard: str, language: str, fields: Mapping[str, str]) ->
 
 def _layout(build: Callable[[float], Sequence[Panel]], ks: Sequence[float],
             reductions: Sequence[float], *, size: str, standard: str, language: str,
-            fields: Mapping[str, str], grow: bool = False) -> Layout:
+            fields: Mapping[str, str], grow: bool = False,
+            split: bool | None = None) -> Layout:
     area = _area(size, standard, language, fields)
-    found = _search(build, area, ks, reductions, split=grow)
+    found = _search(build, area, ks, reductions, split=grow if split is None else split)
     if isinstance(found, Panel):
         raise _too_large(found, build, ks, reductions, area, size=size, standard=standard,
                          language=language, fields=fields)
@@ -467,31 +500,36 @@ def _too_large(panel: Panel, build: Callable[[float], Sequence[Panel]], ks: Sequ
 
 
 def fitted_layout(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
-                  language: str, fields: Mapping[str, str], grow: bool = False) -> Layout:
+                  language: str, fields: Mapping[str, str], grow: bool = False,
+                  split: bool | None = None) -> Layout:
     """The panels ``build(k)`` draws at the :func:`enlargement` that fills the sheet, placed;
     with ``grow``, each drawing then redrawn larger into its sheet's free room
     (:func:`.grow.grow_into_room`: for drawings whose scale nothing outside their panel repeats).
+    ``split`` (default: ``grow``): a panel that does not fit a sheet's free room is split into
+    it where it can be (a table's rows, a legend rewrapped: ``Panel.split_off``).
 
     Raise :class:`DrawingError` naming the panel and the smallest sheet that takes them when a
     panel is larger than the drawing area even at the smallest enlargement.
     """
     return _layout(build, ENLARGEMENTS, REDUCTIONS, size=size, standard=standard,
-                   language=language, fields=fields, grow=grow)
+                   language=language, fields=fields, grow=grow, split=split)
 
 
 def enlargement(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
-                language: str, fields: Mapping[str, str]) -> float:
+                language: str, fields: Mapping[str, str], split: bool = False) -> float:
     """The largest of :data:`ENLARGEMENTS` at which the panels ``build(k)`` draws take the fewest
     sheets (one when they can); one of :data:`REDUCTIONS` when a panel needs it; 1 when nothing
-    fits (drawing then fails naming the panel)."""
-    found = _search(build, _area(size, standard, language, fields))
+    fits (drawing then fails naming the panel). ``split``: as :func:`fitted_layout` lays them
+    out with it."""
+    found = _search(build, _area(size, standard, language, fields), split=split)
     return 1.0 if isinstance(found, Panel) else found[0]
 
 
 def fitted_sheets(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
                   language: str, name: str, fields: Mapping[str, str],
-                  grow: bool = False) -> list[Sheet]:
+                  grow: bool = False, split: bool | None = None) -> list[Sheet]:
     """Panels drawn at the :func:`enlargement` that fills the sheet, on framed sheets (``grow``:
     see :func:`fitted_layout`)."""
     return fitted_layout(build, size=size, standard=standard, language=language, fields=fields,
-                         grow=grow).sheets(language=language, name=name, fields=fields)
+                         grow=grow, split=split).sheets(language=language, name=name,
+                                                        fields=fields)
