@@ -8,7 +8,7 @@ from collections.abc import Callable, Sequence
 
 from shapely.geometry.base import BaseGeometry
 
-from .layout import Bounds, Groups, paginate, refitted
+from .layout import Bounds, Groups, Sheetful, _footprint, paginate, refitted, sequence
 from .panels import Panel
 
 #: the enlargements a drawing is redrawn at to fill its sheet's free room
@@ -26,6 +26,31 @@ def _one_sheet(panels: Sequence[Panel], area: BaseGeometry,
                 and [p.name for p in found[0][0]] == [p.name for p in panels]:
             return found[0][1]
     return None
+
+
+def _movable(groups: Groups, s: int) -> list[Panel]:
+    """The panels of the sheets after sheet ``s`` that could have gone on it: those with no
+    earlier part of their sequence (a plan for its tables) on a sheet after ``s``."""
+    out: list[Panel] = []
+    later: set[str] = set()
+    for panels, _ in groups[s + 1:]:
+        for p in panels:
+            if sequence(p.name) not in later:
+                out.append(p)
+            later.add(sequence(p.name))
+    return out
+
+
+def _frees_room(panels: Sequence[Panel], later: Sequence[Panel], area: BaseGeometry,
+                bounds: Bounds) -> bool:
+    """Tell whether a later sheet's panel would fit the free room these panels leave."""
+    if not later:
+        return False
+    room = Sheetful(area, bounds=bounds)
+    for p in panels:
+        if room.put(p) is None:
+            return False            # packed otherwise (columns first): not judged here
+    return any(room.spot(*_footprint(q, bounds)[4:]) is not None for q in later)
 
 
 def grow_into_room(build: Callable[[float], Sequence[Panel]], larger: Sequence[float],
@@ -46,8 +71,9 @@ def grow_into_room(build: Callable[[float], Sequence[Panel]], larger: Sequence[f
     bounds = Bounds()
     grown: dict[str, float] = {}
     out: Groups = []
-    for panels, offsets in groups:
+    for s, (panels, offsets) in enumerate(groups):
         panels = list(panels)
+        movable = _movable(groups, s)
         level = [-1] * len(panels)          # index into ``steps``; -1: as found
         changed = True
         while changed:
@@ -62,6 +88,8 @@ def grow_into_room(build: Callable[[float], Sequence[Panel]], larger: Sequence[f
                     continue
                 trial = panels[:i] + [versions[nxt][panel.name]] + panels[i + 1:]
                 at = _one_sheet(trial, area, bounds)
+                if at is not None and _frees_room(trial, movable, area, bounds):
+                    at = None               # redrawn, it would leave room a later panel fits
                 if at is None:
                     level[i] = len(steps)   # no larger drawing fits: it stays as it is
                     continue
