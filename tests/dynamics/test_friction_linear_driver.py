@@ -282,3 +282,23 @@ def test_the_sheet_draws_eta_over_the_drivers_time(boom_solution):
     from mechplan.sheet.compose import compose
     comp = compose(boom_solution, "A1", "iso", "en", name="boom")
     assert "force-diagram-eta" in [p.name for placed in comp.placements for p, _ in placed]
+
+
+def test_friction_only_in_the_driving_sliders_guide_closed_form():
+    """Only the frame guide of the driving block rubs (f = 0.3): the slot's reaction on the block
+    is ⊥ the slot, N = T/ρ from link 3's moments (T = 150 N·m, ρ = |O3B|), and the block needs
+    F_d = N·(sin θ3 + f·|cos θ3|): η = 1/(1 + f·|cot θ3|), θ3 the slot's angle."""
+    text = COULISSE.replace('"0-1" = { f = 0.2 }', '"0-1" = { f = 0.3 }').replace(
+        '"2-3" = { f = 0.15 }', '"2-3" = { f = 0 }').replace("f = 0.1\n", "f = 0\n")
+    fa = _solve(text)
+    fr = fa.friction
+    assert fr is not None and [p.pair for p in fr.pairs] == ["0-1"]
+    q = np.asarray(fa.phi)
+    theta = np.arctan2(0.3, q - 0.1)
+    n = 150.0 / np.hypot(q - 0.1, 0.3)
+    np.testing.assert_allclose(fr.free_moment, n * np.sin(theta), rtol=1e-12)
+    needed = n * (np.sin(theta) + 0.3 * np.abs(np.cos(theta)))
+    np.testing.assert_allclose(fa.balancing_moment, needed, rtol=1e-12)
+    eta = 1 / (1 + 0.3 * np.abs(np.cos(theta) / np.sin(theta)))
+    np.testing.assert_allclose(fr.efficiency, eta, rtol=1e-12)
+    np.testing.assert_allclose(fr.efficiency_power, fr.efficiency, rtol=1e-12)

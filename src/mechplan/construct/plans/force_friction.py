@@ -12,9 +12,9 @@ A linear first driver (cylinder, slider on a frame guide) likewise: the passes c
 driving force F_d, and the driving cylinder's own sliding pair (rod in barrel) takes friction
 against l̇, read on the velocity plan as the segment of the rod's sliding.
 
-Results: ``M_b0`` (the friction-free balancing moment; a linear driver's F_d⁰), ``Mf_<ij>`` (the friction couple on link
-j from link i of a revolute pair, the frame first), ``Ff_<ij>`` (the friction force on the slider
-j from the guide's link i of a prismatic pair).
+Results: ``M_b0`` (the friction-free balancing moment; a linear driver's F_d⁰), ``Mf_<ij>``
+(the friction couple on link j from link i of a revolute pair, the frame first), ``Ff_<ij>`` (the
+friction force on the slider j from the guide's link i of a prismatic pair).
 """
 
 from __future__ import annotations
