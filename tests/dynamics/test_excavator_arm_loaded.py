@@ -135,15 +135,21 @@ def test_the_golden_values_see_every_load():
     assert abs(f4 - f4_free) > 0.05 * abs(f4)
 
 
-def test_friction_with_a_linear_first_driver_is_refused_naming_the_key():
-    """No friction iteration closes on a cylinder's driving force yet: a clear error naming
-    ``friction`` (before, a ValueError from inside the construction)."""
-    from mechplan.errors import SceneError
+def test_friction_with_a_linear_first_driver_closes_on_its_driving_force():
+    """Friction in every pair (the two cylinders' sliding pairs too): the iteration closes on the
+    first cylinder's F_d; its friction-free pass is the template's F_d, the lever agrees."""
     from mechplan.scene.loader import parse_scene
 
-    text = TEMPLATE.read_text(encoding="utf-8").replace(
-        "[drive]\n", '[friction]\nf = 0.1\npin_radius = "40 mm"\n\n[drive]\n', 1)
-    with pytest.raises(SceneError) as err:
-        solve(parse_scene(text, "friction.toml"))
-    assert err.value.key == "friction"
-    assert "link 4" in str(err.value)
+    text = TEMPLATE.read_text(encoding="utf-8")
+    friction = text.replace("[drive]\n",
+                            '[friction]\nf = 0.1\npin_radius = "40 mm"\n\n[drive]\n', 1)
+    plain = solve(parse_scene(text, "plain.toml")).extras["forces"]
+    fa = solve(parse_scene(friction, "friction.toml")).extras["forces"]
+    fr = fa.friction
+    assert fr is not None and np.all(fr.converged)
+    assert {"3-4", "6-7"} <= {p.pair for p in fr.pairs}          # the cylinders' own pairs
+    scale = np.abs(plain.balancing_moment).max()
+    np.testing.assert_allclose(fr.free_moment, plain.balancing_moment, rtol=0, atol=1e-9 * scale)
+    np.testing.assert_allclose(fa.zhukovsky_moment, fa.balancing_moment, rtol=1e-9)
+    assert np.all(fa.balancing_moment > fr.free_moment)             # friction is overcome
+    assert np.all((fr.efficiency > 0.9) & (fr.efficiency < 1.0))
