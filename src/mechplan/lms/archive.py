@@ -17,7 +17,6 @@ from pathlib import Path
 # one set of limits for every file read inside another (zips, workbooks, PDF attachments)
 from ..archive_limits import MAX_ENTRIES, MAX_MEMBER, MAX_RATIO, MAX_TOTAL, RATIO_FLOOR
 from ..errors import CheckError
-from ..submission.contained import read_member
 from .texts import say
 
 __all__ = ["MAX_DEPTH", "MAX_ENTRIES", "MAX_MEMBER", "MAX_RATIO", "MAX_TOTAL", "RATIO_FLOOR",
@@ -82,6 +81,7 @@ def read_zip(data: bytes, archive: str, depth: int = 0,
             if info.is_dir() or not parts or stat.S_ISLNK(info.external_attr >> 16):
                 continue
             _refuse_size(info.file_size, info.compress_size, entry, budget, archive)
+            from ..submission.contained import read_member  # the package loads the readers
             body = read_member(zf, info, entry, archive, ArchiveError)
             budget.total += len(body) - info.file_size   # the real size, not the header's
             full = (*prefix, *parts)
