@@ -41,7 +41,7 @@ ALLOWED = [
      "cam profiles are sampled by the program, never given by the user"),
     ("sheet/layout.py", r"cannot move a", "layout of an unknown primitive type: a bug"),
     ("sheet/layout.py", r"no enlargement to try", "layout search invariant"),
-    ("sheet/layout.py", r"drawing area must be a rectangle less rectangles", "layout invariant"),
+    ("sheet/room.py", r"drawing area must be a rectangle less rectangles", "layout invariant"),
     # the drawing primitives validate what the program builds (a NaN from a construction, a text
     # height off the ISO series, a block inside a block): invariants of the drafting layer
     ("drafting/primitives.py", r".", "invariants of the drawing primitives built by mechplan"),

@@ -149,13 +149,14 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     if fa.linear:       # a cylinder or slider: its driving force (two ways), F_red and m_red
         n = unit("N", lang)
         pct = scientific(float(fa.difference_percent[k]), 3, lang)
-        return out + [
+        out += [
             message("drivers.force", lang, link=link, F=format_number(mb, 3, lang), unit=n,
                     role=role), *_second_lines(sol, fa, k, lang, w),
             f"  {w[5]}: F_d = {format_number(mz, 3, lang)} {n}; {w[6]} {pct} %",
             f"  {w[7]}: F_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {n}",
             (f"  {w[8]}: m_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
             f"{unit('kg', lang)}")]
+        return out + _friction_lines(fa, k, lang)
     sense = sense_text(mb, lang)
     nm = unit("N·m", lang)
     out.append(f"### {w[2]} {link}: M_b = {format_number(mb, 3, lang)} {nm} ({sense}; {role})")
@@ -165,10 +166,15 @@ def _forces(sol: Solution, k: int, lang: str) -> list[str]:
     out.append(f"  {w[7]}: M_red = {format_number(float(fa.reduced_moment[k]), 3, lang)} {nm}")
     out.append(f"  {w[8]}: J_red = {format_number(float(fa.reduced_inertia[k]), 6, lang)} "
                f"{unit('kg·m²', lang)}")
-    if fa.friction is not None:
-        from .dynamics.friction import report_lines
-        out += report_lines(fa.friction, k, lang)
-    return out
+    return out + _friction_lines(fa, k, lang)
+
+
+def _friction_lines(fa: Any, k: int, lang: str) -> list[str]:
+    """The friction block (a scene with ``[friction]``), else nothing."""
+    if fa.friction is None:
+        return []
+    from .dynamics.friction import report_lines
+    return report_lines(fa.friction, k, lang)
 
 
 def _second_lines(sol: Solution, fa: Any, k: int, lang: str, w: list[str]) -> list[str]:

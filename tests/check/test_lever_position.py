@@ -21,18 +21,22 @@ from mechplan.solve import solve
 
 @pytest.fixture(scope="module")
 def lever_sheet(tmp_path_factory):
-    """machine_unit on A4 (ISO, Russian): the sheet whose lever shares it with other plans."""
+    """machine_unit on a small sheet in Russian: the first sheet whose lever shares it with
+    velocity plans of other positions (the grid of every position; which sheet that is follows
+    the layout: A3 ГОСТ sheet 2 since the tables flow by rows, A4 ISO before)."""
     path = next(p for p in TEMPLATES if p.stem == "machine_unit")
     scene = load_scene(path)
-    comp = compose(solve(scene), "A4", "iso", "ru", name=path.stem)
-    for i, sheet in enumerate(comp.sheets):
-        names = [panel.name for panel, _ in comp.placements[i]]
-        if any(n.endswith("lever") for n in names) and any(
-                n.startswith("velocity") for n in names):
-            dxf = tmp_path_factory.mktemp("lever") / f"sheet-{i + 1}.dxf"
-            dxf.write_bytes(to_bytes(sheet))
-            return scene, dxf
-    pytest.fail("no A4 sheet holds the lever with velocity plans of other positions")
+    sol = solve(scene)
+    for size, standard in (("A4", "iso"), ("A3", "gost"), ("A4", "gost"), ("A3", "iso")):
+        comp = compose(sol, size, standard, "ru", name=path.stem)
+        for i, sheet in enumerate(comp.sheets):
+            names = [panel.name for panel, _ in comp.placements[i]]
+            if any(n.endswith("lever") for n in names) and any(
+                    n.startswith("velocity-all") for n in names):
+                dxf = tmp_path_factory.mktemp("lever") / f"sheet-{i + 1}.dxf"
+                dxf.write_bytes(to_bytes(sheet))
+                return scene, dxf
+    pytest.fail("no A4 or A3 sheet holds the lever with velocity plans of other positions")
 
 
 def _retitle(src, dst, old: str, new: str) -> None:

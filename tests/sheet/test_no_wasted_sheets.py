@@ -17,7 +17,7 @@ from mechplan.drafting.primitives import Line
 from mechplan.sheet import compose as compose_module
 from mechplan.sheet import layout
 from mechplan.sheet.frame import make_frame
-from mechplan.sheet.layout import GAP, Sheetful, chain, paginate
+from mechplan.sheet.layout import GAP, Sheetful, chain, paginate, sequence
 from mechplan.sheet.panels import Panel
 from mechplan.studies import solve_file
 
@@ -91,9 +91,9 @@ def test_no_panel_of_a_later_sheet_fits_an_earlier_sheets_free_room(path, monkey
             for j, placed in enumerate(placements[1:], start=1):
                 for panel, _ in placed:
                     # the parts of one sequence keep their order: a part cannot go on a sheet
-                    # before the one that holds the part before it
+                    # before the one that holds the part before it (a plan's tables: their plan)
                     before = [q for s in placements for q, _ in s
-                              if chain(q.name) == chain(panel.name)]
+                              if sequence(q.name) == sequence(panel.name)]
                     k = before.index(panel)
                     first = sheet_of[id(before[k - 1])] if k else 0
                     w, h = _footprint(panel)
@@ -126,6 +126,7 @@ def test_parts_of_one_sequence_keep_their_order():
     # grid-2 would fit beside the position plan, but not before grid-1
     assert names == [["position"], ["grid-1", "grid-2"]]
     assert chain("velocity-all-2-1") == chain("velocity-all-1") == "velocity-all"
+    assert sequence("acceleration-1-tables.2.1") == sequence("acceleration-1") == "acceleration"
 
 
 def test_the_packer_finds_every_spot_the_raster_finds():

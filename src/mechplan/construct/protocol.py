@@ -51,7 +51,7 @@ def vector_text(value: np.ndarray, lang: str, digits: int = 1, si_unit: str = "N
 def _scalar_text(step: Step, value: float, lang: str) -> str:
     written = step.op.written
     if step.plan is Plan.FORCE:
-        if written is Written.LINEAR or step.label == "F_d":   # a linear driver's force
+        if written is Written.LINEAR or step.label.startswith("F_d"):   # F_d, F_d⁰ (friction)
             return f"{number(value, 2, lang)} {unit('N', lang)}"
         if written is Written.OFFSET:
             return f"{number(value * 1000, 1, lang)} {mm(lang)}"

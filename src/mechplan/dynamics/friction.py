@@ -4,7 +4,8 @@ The force plan built with a loading that has ``friction`` lays the friction coup
 as known loads (:mod:`mechplan.construct.plans.force_friction`); this module reads them back.
 Instantaneous efficiency η = M_b⁰/M_b (friction-free over with friction, where the balancing
 moment drives) and by powers η = 1 − |P_f|/(M_b·ω1), P_f the power of every friction load
-(the two agree: the friction-free plan balances the same loads without P_f).
+(the two agree: the friction-free plan balances the same loads without P_f). A linear first
+driver (cylinder, slider): its driving force F_d and its rate q̇ in place of M_b and ω1.
 """
 
 from __future__ import annotations
@@ -49,6 +50,8 @@ class FrictionAnalysis:
     residual: Array           # (N,) last relative change of the reactions
     pairs: tuple[PairFrictionResult, ...]
     tolerance: float = 1e-10
+    #: a linear first driver: ``free_moment`` and ``moment`` are its driving force F_d⁰, F_d (N)
+    linear: bool = False
 
     @property
     def converged(self) -> Array:
@@ -64,9 +67,10 @@ class FrictionAnalysis:
 
     def json(self, i: int) -> dict[str, Any]:
         """The ``friction`` entry of position i."""
+        name = "driving_force" if self.linear else "balancing_moment"
         return {
-            "balancing_moment": _num(self.moment[i]),
-            "balancing_moment_without_friction": _num(self.free_moment[i]),
+            name: _num(self.moment[i]),
+            f"{name}_without_friction": _num(self.free_moment[i]),
             "efficiency": _num(self.efficiency[i]),
             "efficiency_by_powers": _num(self.efficiency_power[i]),
             "iterations": self.passes,
@@ -91,8 +95,9 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
         return None
     free = ev[it]
     info = ev.shared[("friction", it)]
-    moment = ev[c.balancing_moment()]
-    omega1 = ev[c.omega(mech.drive.link)]
+    linear = mech.drive.linear      # a cylinder or slider: F_d (N) and its rate q̇ (m/s)
+    moment = ev[c.driving_force() if linear else c.balancing_moment()]
+    omega1 = ev["vel.rate" if linear else c.omega(mech.drive.link)]
     scale = np.max(np.abs(omega1)) if omega1.size else 1.0
     pairs: list[PairFrictionResult] = []
     for p in mech.pairs:
@@ -130,7 +135,7 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
     eta_p = np.where(converged, eta_p, np.nan)
     return FrictionAnalysis(free, moment, eta, eta_p, int(info["passes"]),
                             np.asarray(info["residual"]), tuple(pairs),
-                            float(info["tolerance"]))
+                            float(info["tolerance"]), linear)
 
 
 __all__ = ["FrictionAnalysis", "PairFrictionResult", "analyse_friction"]
@@ -143,18 +148,20 @@ def report_lines(fa: FrictionAnalysis, k: int, lang: str) -> list[str]:
     from ..i18n import number as fmt
 
     nm = unit("N·m", lang)
+    # a linear driver: its driving force F_d (N) in place of the balancing moment
+    area, force = ("frictionlin", unit("N", lang)) if fa.linear else ("forces", nm)
     out = [f"### {message('forces.report.title', lang)}",
-           "  " + message("forces.report.moments", lang,
-                          free=f"{fmt(float(fa.free_moment[k]), 3, lang)} {nm}",
-                          friction=f"{fmt(float(fa.moment[k]), 3, lang)} {nm}"),
+           "  " + message(f"{area}.report.{'forces' if fa.linear else 'moments'}", lang,
+                          free=f"{fmt(float(fa.free_moment[k]), 3, lang)} {force}",
+                          friction=f"{fmt(float(fa.moment[k]), 3, lang)} {force}"),
            "  " + message("forces.report.iteration", lang, passes=fa.passes,
                           residual=scientific(float(fa.residual[k]), 2, lang))]
     eta, eta_p = float(fa.efficiency[k]), float(fa.efficiency_power[k])
     if math.isfinite(eta):
-        out.append("  " + message("forces.report.efficiency", lang, eta=fmt(eta, 4, lang),
+        out.append("  " + message(f"{area}.report.efficiency", lang, eta=fmt(eta, 4, lang),
                                   power=fmt(eta_p, 4, lang)))
     else:
-        out.append("  " + message("forces.report.no_efficiency", lang))
+        out.append("  " + message(f"{area}.report.no_efficiency", lang))
     for p in fa.pairs:
         if p.kind == "revolute":
             text = f"M_f = {fmt(float(p.load[k]), 3, lang)} {nm}"

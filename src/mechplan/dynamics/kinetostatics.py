@@ -148,7 +148,8 @@ def analyse_forces(c: Construction, ev: Evaluation, mech: Mechanism, loading: An
             phi=ev.phi, omega1=ev["vel.rate"], inertia=inertia, reactions=reactions,
             guide_reactions=guides, balancing_moment=ev[c.driving_force()],
             zhukovsky_moment=ev[c.zhukovsky_force()], reduced_moment=m_red,
-            reduced_inertia=j_red, linear=True, second=second, second_linear=second_linear)
+            reduced_inertia=j_red, linear=True, friction=analyse_friction(c, ev, mech),
+            second=second, second_linear=second_linear)
     return ForceAnalysis(
         phi=ev.phi, omega1=link_omega(c, ev, mech.drive.link), inertia=inertia,
         reactions=reactions, guide_reactions=guides,

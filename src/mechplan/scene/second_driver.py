@@ -31,6 +31,9 @@ def second_drive(top: Table, links: dict[str, Link], guides: dict[str, Guide],
     d = top.table("drive2")
     if d is None:
         return None
+    from .held_driver import held_table
+
+    d = held_table(d, first)        # hold = L: a cylinder at rest at the length L
     kind = d.string("kind", "crank", choices=("crank", "cylinder", "slider"))
     if kind != "crank":
         drive = _second_cylinder(d, links, guides, pairs, first, DriverKind(kind))

@@ -247,7 +247,7 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
     base.update({k: v for k, v in scene.drawing.title_block.items() if v})
     # one stream in reading order: kinetostatics fills the free room kinematics leaves
     area = packing_area(make_frame(size, standard, base, language=lang))
-    found = fewest_sheets(panels, area, split=True)
+    found = fewest_sheets(panels, area, split=True, whole=True)
     if isinstance(found, Panel):
         x0, y0, x1, y1 = found.bounds()
         fixed = ", ".join(f"{k} = {significant(v, 6, 'en')}"

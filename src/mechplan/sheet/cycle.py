@@ -133,7 +133,14 @@ def legend_panel(st: CycleView, lang: str, k: float) -> Panel:
                           for sp, a, b in m.on_shaft(st.origin))
         lines.append(f"{i}. {m.name}: {spans}")
     lines.extend(st.lines)
-    return Panel("cycle-legend", list(text_block((0.0, 0.0), lines, TEXT_H, WIDTH * k)))
+
+    def drawn(width: float) -> Panel:
+        return Panel("cycle-legend", list(text_block((0.0, 0.0), lines, TEXT_H, width)))
+
+    panel = drawn(WIDTH * k)
+    # into a sheet's free room narrower than it: its lines rewrapped to the room's width
+    panel.split_off = lambda w, h: [drawn(min(w, WIDTH * k))]
+    return panel
 
 
 def cycle_sheets(st: CycleView, title: str, size: str | None, standard: str | None,
@@ -146,7 +153,7 @@ def cycle_sheets(st: CycleView, title: str, size: str | None, standard: str | No
                                       for p in driven_panels(d, lang, k, size or "A3",
                                                              standard or "iso"))],
                          size=size or "A3", standard=standard or "iso", language=lang, name=name,
-                         fields={"title": title})
+                         fields={"title": title}, split=True)
 
 
 def driven_panels(d: CamLinkage, lang: str, k: float, size: str = "A3",

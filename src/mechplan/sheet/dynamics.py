@@ -152,7 +152,8 @@ def dynamics_sheets(d: MachineDynamics, scene: Scene, size: str, standard: str, 
     fields = {"title": scene.title, "document_type": message("dynamics.sheet.title", lang)}
     fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
     return fitted_sheets(lambda scale: dynamics_panels(d, lang, scale), size=size,
-                         standard=standard, language=lang, name=name, fields=fields)
+                         standard=standard, language=lang, name=name, fields=fields,
+                         split=True)
 
 
 def dynamics_enlargement(d: MachineDynamics, scene: Scene) -> float:
@@ -161,4 +162,5 @@ def dynamics_enlargement(d: MachineDynamics, scene: Scene) -> float:
     fields = {"title": scene.title, "document_type": message("dynamics.sheet.title", lang)}
     fields.update({k: v for k, v in scene.drawing.title_block.items() if v})
     return enlargement(lambda scale: dynamics_panels(d, lang, scale), size=scene.drawing.sheet,
-                       standard=scene.drawing.standard, language=lang, fields=fields)
+                       standard=scene.drawing.standard, language=lang, fields=fields,
+                       split=True)

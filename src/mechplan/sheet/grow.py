@@ -8,7 +8,7 @@ from collections.abc import Callable, Sequence
 
 from shapely.geometry.base import BaseGeometry
 
-from .layout import Bounds, Groups, Sheetful, _footprint, chain, paginate, refitted
+from .layout import Bounds, Groups, Sheetful, _footprint, paginate, refitted, sequence
 from .panels import Panel
 
 #: the enlargements a drawing is redrawn at to fill its sheet's free room
@@ -35,9 +35,9 @@ def _movable(groups: Groups, s: int) -> list[Panel]:
     later: set[str] = set()
     for panels, _ in groups[s + 1:]:
         for p in panels:
-            if chain(p.name) not in later:
+            if sequence(p.name) not in later:
                 out.append(p)
-            later.add(chain(p.name))
+            later.add(sequence(p.name))
     return out
 
 

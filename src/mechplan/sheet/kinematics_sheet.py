@@ -208,57 +208,20 @@ def split_tables(panel: Panel, title: str, apart: bool, r: Room) -> list[Panel]:
     if not apart and y1 - y0 <= r.height:
         return [panel]
     tables = tables_of(panel, title)
-    # taller than a sheet, or beside a plan that leaves room under it: in parts of whole tables
-    keep = [p for p in tables.primitives if not (isinstance(p, Text) and p.string == title)]
-    tables.refit = lambda w, h: _tables_in_parts(keep, tables.name, title, h)
     return [drawing_of(panel)] + ([tables] if tables.primitives else [])
 
 
 def tables_of(panel: Panel, title: str) -> Panel:
-    """The tables of a plan panel (segments, vector equations) under a title, without the plan."""
+    """The tables of a plan panel (segments, vector equations) under a title, without the plan;
+    the layout splits them by rows into a sheet's free room (:mod:`.table_rows`)."""
     keep: list[Primitive | Table] = [
         p for p in panel.primitives if isinstance(p, Table)
         or (isinstance(p, Text) and p.height_mm == TABLE_H)]
-    out = Panel(f"{panel.name}-tables", [])
     if not keep:
-        return out
-    from .layout import moved
+        return Panel(f"{panel.name}-tables", [])
+    from .table_rows import splittable
 
-    x0, _y0, _x1, y1 = Panel("", keep).bounds()
-    out.primitives.extend(moved(p, -x0, -y1) for p in keep)
-    out.primitives.append(Text((0.0, 3.0), title, TITLE_H - 1.5))
-    return out
-
-
-def _tables_in_parts(keep: list[Primitive | Table], name: str, title: str,
-                     max_h: float) -> list[Panel]:
-    """Tables too tall for a sheet: parts of whole tables (a caption stays with its table)."""
-    from .layout import moved
-
-    blocks: list[list[Primitive | Table]] = [[]]
-    for p in keep:
-        blocks[-1].append(p)
-        if isinstance(p, Table):
-            blocks.append([])
-    parts: list[list[Primitive | Table]] = [[]]
-    for block in (b for b in blocks if b):
-        trial = parts[-1] + block
-        _x0, y0, _x1, y1 = Panel("", trial).bounds()
-        if parts[-1] and y1 - y0 + TITLE_H + 3.0 > max_h:
-            parts.append(block)
-        else:
-            parts[-1] = trial
-    out = []
-    for i, prims in enumerate(parts):
-        x0, _y0, _x1, y1 = Panel("", prims).bounds()
-        at = [moved(p, -x0, -y1) for p in prims]
-        part = f"{name}.{i + 1}" if len(parts) > 1 else name
-        panel = Panel(part, [*at, Text((0.0, 3.0), title, TITLE_H - 1.5)])
-        if len(parts) > 1 and sum(isinstance(p, Table) for p in at) > 1:   # split again
-            panel.refit = (lambda w, h, at=at, part=part:
-                           _tables_in_parts(at, part, title, h))
-        out.append(panel)
-    return out
+    return splittable(keep, f"{panel.name}-tables", title)
 
 
 #: room above a titled grid for its title (5 mm text 4 mm above the cells)

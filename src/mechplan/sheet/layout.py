@@ -12,8 +12,7 @@ import re
 from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 
-import numpy as np
-from shapely import box, get_coordinates
+from shapely import box
 from shapely.geometry.base import BaseGeometry
 
 from ..drafting.frame import FrameLayout, make_frame
@@ -21,10 +20,13 @@ from ..drafting.primitives import Arc, Arrow, Circle, Line, Polyline, Primitive,
 from ..errors import DrawingError
 from ..i18n import Text as Msg
 from .panels import Panel
+from .room import GAP, Bounds, Sheetful, _footprint, _overlaps, pack  # noqa: F401  (re-exported)
 
-GAP = 8.0          # mm between panels
 #: the coverage a full sheet (not the last of its set) should reach
 GOAL = 0.55
+#: a last sheet covered less than this is worth saving by letting a plan's tables go on an
+#: earlier sheet than the plan (:func:`fewest_sheets`)
+WASTED = 0.15
 
 #: enlargements of a capability sheet's drawings and diagrams tried, largest first; text heights
 #: and tables keep their size
@@ -60,142 +62,23 @@ def drawing_area(frame: FrameLayout) -> BaseGeometry:
         frame.drawing_area)
 
 
-class Bounds:
-    """``Panel.bounds`` remembered while a set of panels is packed (and its panels kept alive,
-    so that an id is never reused for another panel)."""
-
-    def __init__(self) -> None:
-        self._known: dict[int, tuple[Panel, int, tuple[float, float, float, float]]] = {}
-
-    def __call__(self, panel: Panel) -> tuple[float, float, float, float]:
-        known = self._known.get(id(panel))
-        if known is None or known[1] != len(panel.primitives):
-            known = (panel, len(panel.primitives), panel.bounds())
-            self._known[id(panel)] = known
-        return known[2]
-
-
-def _footprint(panel: Panel, bounds: Callable[[Panel], tuple[float, float, float, float]]
-               ) -> tuple[float, float, float, float, float, float]:
-    """(x0, y0, x1, y1) of a panel and its width and height with the gap around it."""
-    x0, y0, x1, y1 = bounds(panel)
-    return x0, y0, x1, y1, x1 - x0 + GAP, y1 - y0 + GAP
-
-
-def _overlaps(rects: np.ndarray, boxes: np.ndarray) -> np.ndarray:
-    """For rectangles (..., 4) as (x0, y0, x1, y1): whether each overlaps any of ``boxes``."""
-    if not len(boxes):
-        return np.zeros(rects.shape[:-1], dtype=bool)
-    r = rects[..., None, :]
-    e = 1e-6
-    hit = ((boxes[:, 0] < r[..., 2] - e) & (boxes[:, 2] > r[..., 0] + e)
-           & (boxes[:, 1] < r[..., 3] - e) & (boxes[:, 3] > r[..., 1] + e))
-    return np.asarray(hit.any(axis=-1))
-
-
-class Sheetful:
-    """The free room of one drawing area as panels are put on it (each with the gap around it).
-
-    The area is its bounding box less rectangles (the title block's corner). A spot is found
-    exactly: a rectangle that fits can be slid left and up until its left edge lies on a
-    vertical edge of the area or of a placed box and its top edge on a horizontal one, so those
-    edges are the only candidates; the highest, then leftmost, is taken.
-    """
-
-    def __init__(self, area: BaseGeometry, *, columns: bool = False,
-                 bounds: Bounds | None = None) -> None:
-        """``columns``: take the leftmost, then highest spot (fill columns, not rows)."""
-        self.columns = columns
-        self.panel_bounds = bounds or Bounds()
-        self.bounds = area.bounds
-        cut = box(*self.bounds).difference(area)
-        pieces = list(getattr(cut, "geoms", [cut])) if not cut.is_empty else []
-        blocked = [g.bounds for g in pieces]
-        if any(abs(box(*b).area - g.area) > 1e-6 for b, g in zip(blocked, pieces)):
-            raise DrawingError("the drawing area must be a rectangle less rectangles")
-        self.blocked = np.asarray(blocked, dtype=float).reshape(-1, 4)
-        self.boxes = np.zeros((0, 4))
-        corners = get_coordinates(area)
-        self.xs, self.ys = set(corners[:, 0].tolist()), set(corners[:, 1].tolist())
-
-    def _obstacles(self) -> np.ndarray:
-        return np.vstack([self.blocked, self.boxes])
-
-    def _edges(self) -> tuple[np.ndarray, np.ndarray]:
-        xs = np.array(sorted(self.xs | set(self.boxes[:, 2].tolist())))
-        ys = np.array(sorted(self.ys | set(self.boxes[:, 1].tolist()), reverse=True))
-        return xs, ys
-
-    def spot(self, w: float, h: float) -> tuple[float, float] | None:
-        """The top-left corner of the highest, then leftmost, free w × h rectangle, or None."""
-        ax0, ay0, ax1, ay1 = self.bounds
-        xs, ys = self._edges()
-        cx, cy = np.meshgrid(xs, ys)              # rows: y from the top, columns: x
-        rects = np.stack([cx, cy - h, cx + w, cy], axis=-1)
-        ok = ((rects[..., 0] >= ax0 - 1e-9) & (rects[..., 2] <= ax1 + 1e-9)
-              & (rects[..., 1] >= ay0 - 1e-9) & (rects[..., 3] <= ay1 + 1e-9))
-        ok &= ~_overlaps(rects, self._obstacles())
-        if self.columns:
-            found = np.argwhere(ok.T)             # leftmost, then highest
-            if not len(found):
-                return None
-            i, j = found[0]
-        else:
-            found = np.argwhere(ok)               # row-major: highest, then leftmost
-            if not len(found):
-                return None
-            j, i = found[0]
-        return float(xs[i]), float(ys[j])
-
-    def free_rectangles(self) -> list[tuple[float, float]]:
-        """Sizes (w, h) of the free rectangles between the edges, largest area first."""
-        ax0, ay0, ax1, ay1 = self.bounds
-        xs, ys = self._edges()
-        x0, y1, x1, y0 = np.meshgrid(xs, ys, xs, ys, indexing="ij", sparse=False)
-        rects = np.stack([x0, y0, x1, y1], axis=-1)
-        ok = (x1 > x0 + 1e-9) & (y1 > y0 + 1e-9)
-        ok &= (x0 >= ax0 - 1e-9) & (x1 <= ax1 + 1e-9) & (y0 >= ay0 - 1e-9) & (y1 <= ay1 + 1e-9)
-        rects = rects[ok]
-        rects = rects[~_overlaps(rects, self._obstacles())]
-        sizes = {(round(float(r[2] - r[0]), 6), round(float(r[3] - r[1]), 6)) for r in rects}
-        return sorted(sizes, key=lambda wh: -wh[0] * wh[1])
-
-    def put(self, panel: Panel) -> tuple[float, float] | None:
-        """Place a panel at its spot: the offset that moves it there, or None (no room)."""
-        x0, _y0, _x1, y1, w, h = _footprint(panel, self.panel_bounds)
-        at = self.spot(w, h)
-        if at is None:
-            return None
-        cx, cy = at
-        self.boxes = np.vstack([self.boxes, [cx, cy - h, cx + w, cy]])
-        # a panel's box includes the gap: half of it keeps the panel off the area's edge
-        return (cx + GAP / 2 - x0, cy - GAP / 2 - y1)
-
-
-def pack(panels: Sequence[Panel],
-         area: BaseGeometry) -> tuple[list[tuple[float, float]], int | None]:
-    """Top-left-first packing in order; return the offsets of the panels placed and the first
-    that did not fit (None when all did)."""
-    room = Sheetful(area)
-    offsets: list[tuple[float, float]] = []
-    for index, panel in enumerate(panels):
-        at = room.put(panel)
-        if at is None:
-            return offsets, index
-        offsets.append(at)
-    return offsets, None
-
-
 def chain(name: str) -> str:
     """The panels whose names differ only by trailing part numbers ("velocity-all-1",
     "velocity-all-2"; "table.1", "table.2") are one sequence: kept in order across sheets."""
     return re.sub(r"([-.]\d+)+$", "", name)
 
 
-def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
-    """The panel redrawn in parts (``Panel.split_off``, else ``Panel.refit``), the first one
-    fitting the free room of this sheet (any of its free rectangles); None when no part fits."""
-    split = panel.split_off or panel.refit
+def sequence(name: str) -> str:
+    """The reading sequence of a panel: its :func:`chain`, a plan's tables set apart
+    ("acceleration-1-tables.2") with their plan — never on an earlier sheet than it."""
+    return chain(re.sub(r"-tables([-.]\d+)*$", "", name))
+
+
+def _split_into(room: Sheetful, panel: Panel, rows: bool = True) -> list[Panel] | None:
+    """The panel redrawn in parts (``Panel.split_off`` — with ``rows`` —, else ``Panel.refit``),
+    the first one fitting the free room of this sheet (any of its free rectangles); None when no
+    part fits."""
+    split = (panel.split_off if rows else None) or panel.refit
     if split is None:
         return None
     for w, h in room.free_rectangles()[:16]:
@@ -210,7 +93,8 @@ def _split_into(room: Sheetful, panel: Panel) -> list[Panel] | None:
 
 
 def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False,
-             columns: bool = False, bounds: Bounds | None = None) -> Groups | Panel:
+             columns: bool = False, bounds: Bounds | None = None,
+             rows: bool = True, after_plan: bool = True) -> Groups | Panel:
     """The panels, in reading order, on as few sheets as the packing needs.
 
     Each sheet takes every remaining panel that still fits its free room (so no panel on a
@@ -220,7 +104,9 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
     fills the free room; its parts stand for it and for the later panels of its sequence
     (the grid's other cells), which are dropped — or, split by ``Panel.split_off`` (a table:
     the rows that fit, then the others), for it alone. ``columns``: each panel at the leftmost, then
-    highest spot. Return
+    highest spot. ``rows=False``: no ``split_off`` (a table in parts of whole tables, by
+    ``Panel.refit``). ``after_plan``: a plan's tables set apart wait for their plan
+    (:func:`sequence`; else only the parts of one :func:`chain` keep their order). Return
     (panels, offsets) per sheet, or the first panel that fits no empty sheet.
     """
     groups: Groups = []
@@ -234,14 +120,15 @@ def paginate(panels: Sequence[Panel], area: BaseGeometry, *, split: bool = False
         queue = list(rest)
         while queue:
             panel = queue.pop(0)
-            if any(chain(q.name) == chain(panel.name) for q in left):
+            key = sequence if after_plan else chain
+            if any(key(q.name) == key(panel.name) for q in left):
                 left.append(panel)
                 continue
             at = room.put(panel)
             # on an empty sheet: only a panel no sheet holds whole is split (else: an error)
             if at is None and split:
-                parts = _split_into(room, panel)
-                if parts is not None and panel.split_off is not None:
+                parts = _split_into(room, panel, rows)
+                if parts is not None and rows and panel.split_off is not None:
                     queue = parts + queue           # its parts stand for it alone
                     continue
                 if parts is not None:
@@ -276,36 +163,54 @@ def _reordered(panels: Sequence[Panel], key: Callable[[Panel], float]) -> list[P
     together and in order (ranked by their first part)."""
     rank: dict[str, float] = {}
     for p in panels[1:]:
-        rank.setdefault(chain(p.name), key(p))
-    rest = sorted(panels[1:], key=lambda p: -rank[chain(p.name)])     # stable: order kept
+        rank.setdefault(sequence(p.name), key(p))
+    rest = sorted(panels[1:], key=lambda p: -rank[sequence(p.name)])     # stable: order kept
     return list(panels[:1]) + rest
 
 
 def fewest_sheets(panels: Sequence[Panel], area: BaseGeometry, *,
-                  split: bool = False) -> Groups | Panel:
-    """:func:`paginate` in reading order, rows first — or, when one saves a sheet, in columns
-    first, or with the panels after the first taken tallest first or largest first."""
+                  split: bool = False, whole: bool = False) -> Groups | Panel:
+    """:func:`paginate` in reading order, rows first — or, when one saves a sheet (or fills the
+    full sheets better: :func:`_fuller`), in columns first, or with the panels after the first
+    taken tallest first or largest first; ``whole``: each also with tables in parts of whole
+    tables (``Panel.refit``) besides split by rows into a sheet's free room."""
     bounds = Bounds()
     best = paginate(panels, area, split=split, bounds=bounds)
     if isinstance(best, Panel) or len(best) == 1:
         return best
     orders = [list(panels), _reordered(panels, _height), _reordered(panels, _area_of)]
-    for order, columns in itertools.product(orders, (False, True)):
-        other = paginate(order, area, split=split, columns=columns, bounds=bounds)
+    for order, columns, rows in itertools.product(orders, (False, True),
+                                                  (True, False) if whole else (True,)):
+        if not columns and rows and order is orders[0]:
+            continue                                # the first one, above
+        other = paginate(order, area, split=split, columns=columns, bounds=bounds, rows=rows)
         if isinstance(other, Panel):
             continue
         if len(other) < len(best) or (len(other) == len(best) and _fuller(other, best, area)):
             best = other
+    if coverage(list(zip(*best[-1])), area) < WASTED:
+        # a last sheet nearly empty: taken only to keep tables after their plans — saved when
+        # the tables may go on an earlier sheet than their plan
+        for order, columns in itertools.product(orders, (False, True)):
+            other = paginate(order, area, split=split, columns=columns, bounds=bounds,
+                             after_plan=False)
+            if not isinstance(other, Panel) and len(other) < len(best):
+                best = other
     return best
 
 
 def _fuller(a: Groups, b: Groups, area: BaseGeometry) -> bool:
-    """Tell whether sheets ``a`` fill their full sheets (all but the last) clearly better than
-    ``b`` where ``b`` leaves one under :data:`GOAL`: the emptiest of them covered 10 points more
-    (the reading order is kept otherwise)."""
-    def emptiest(groups: Groups) -> float:
-        return min((coverage(list(zip(p, o)), area) for p, o in groups[:-1]), default=1.0)
-    return emptiest(b) < GOAL and emptiest(a) > emptiest(b) + 0.10
+    """Tell whether sheets ``a`` fill their full sheets (all but the last) better than ``b``
+    where ``b`` leaves one under :data:`GOAL`: fewer of them under it, or as many and the
+    emptiest of them covered 10 points more (the reading order is kept otherwise)."""
+    def covered(groups: Groups) -> list[float]:
+        return [coverage(list(zip(p, o)), area) for p, o in groups[:-1]]
+
+    ca, cb = covered(a), covered(b)
+    under_a, under_b = sum(c < GOAL for c in ca), sum(c < GOAL for c in cb)
+    if not under_b or under_a > under_b:
+        return False
+    return under_a < under_b or min(ca, default=1.0) > min(cb, default=1.0) + 0.10
 
 
 def coverage(placed: Sequence[tuple[Panel, tuple[float, float]]], area: BaseGeometry) -> float:
@@ -427,9 +332,10 @@ def _area(size: str, standard: str, language: str, fields: Mapping[str, str]) ->
 
 def _layout(build: Callable[[float], Sequence[Panel]], ks: Sequence[float],
             reductions: Sequence[float], *, size: str, standard: str, language: str,
-            fields: Mapping[str, str], grow: bool = False) -> Layout:
+            fields: Mapping[str, str], grow: bool = False,
+            split: bool | None = None) -> Layout:
     area = _area(size, standard, language, fields)
-    found = _search(build, area, ks, reductions, split=grow)
+    found = _search(build, area, ks, reductions, split=grow if split is None else split)
     if isinstance(found, Panel):
         raise _too_large(found, build, ks, reductions, area, size=size, standard=standard,
                          language=language, fields=fields)
@@ -467,31 +373,36 @@ def _too_large(panel: Panel, build: Callable[[float], Sequence[Panel]], ks: Sequ
 
 
 def fitted_layout(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
-                  language: str, fields: Mapping[str, str], grow: bool = False) -> Layout:
+                  language: str, fields: Mapping[str, str], grow: bool = False,
+                  split: bool | None = None) -> Layout:
     """The panels ``build(k)`` draws at the :func:`enlargement` that fills the sheet, placed;
     with ``grow``, each drawing then redrawn larger into its sheet's free room
     (:func:`.grow.grow_into_room`: for drawings whose scale nothing outside their panel repeats).
+    ``split`` (default: ``grow``): a panel that does not fit a sheet's free room is split into
+    it where it can be (a table's rows, a legend rewrapped: ``Panel.split_off``).
 
     Raise :class:`DrawingError` naming the panel and the smallest sheet that takes them when a
     panel is larger than the drawing area even at the smallest enlargement.
     """
     return _layout(build, ENLARGEMENTS, REDUCTIONS, size=size, standard=standard,
-                   language=language, fields=fields, grow=grow)
+                   language=language, fields=fields, grow=grow, split=split)
 
 
 def enlargement(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
-                language: str, fields: Mapping[str, str]) -> float:
+                language: str, fields: Mapping[str, str], split: bool = False) -> float:
     """The largest of :data:`ENLARGEMENTS` at which the panels ``build(k)`` draws take the fewest
     sheets (one when they can); one of :data:`REDUCTIONS` when a panel needs it; 1 when nothing
-    fits (drawing then fails naming the panel)."""
-    found = _search(build, _area(size, standard, language, fields))
+    fits (drawing then fails naming the panel). ``split``: as :func:`fitted_layout` lays them
+    out with it."""
+    found = _search(build, _area(size, standard, language, fields), split=split)
     return 1.0 if isinstance(found, Panel) else found[0]
 
 
 def fitted_sheets(build: Callable[[float], Sequence[Panel]], *, size: str, standard: str,
                   language: str, name: str, fields: Mapping[str, str],
-                  grow: bool = False) -> list[Sheet]:
+                  grow: bool = False, split: bool | None = None) -> list[Sheet]:
     """Panels drawn at the :func:`enlargement` that fills the sheet, on framed sheets (``grow``:
     see :func:`fitted_layout`)."""
     return fitted_layout(build, size=size, standard=standard, language=language, fields=fields,
-                         grow=grow).sheets(language=language, name=name, fields=fields)
+                         grow=grow, split=split).sheets(language=language, name=name,
+                                                        fields=fields)

@@ -32,7 +32,6 @@ from ..solve import Solution
 from .compose import _extreme_phis, crank_degrees, plan_positions
 from .diagram import Axis, Curve, Diagram, diagram_panel
 from .dynamics import dynamics_scales
-from .kinematics_sheet import _series, output_link
 from .link_outline import drawn as draw_figure
 from .link_outline import link_figures
 from .panels import LABEL_H, TABLE_H, _pivot, _slider, mu_text, plan_title, vector_plan
@@ -226,7 +225,12 @@ def replays(sol: Solution, mu: dict[Plan, float]) -> list[Doc]:
 # -- the animation ---------------------------------------------------------------------------------
 
 def _frames_phi(sol: Solution, frames: int) -> np.ndarray:
-    """Crank angles of the animation from the first position, in the crank's sense of turning."""
+    """Crank angles of the animation from the first position, in the crank's sense of turning
+    (a linear driver's coordinate over its range: :func:`live_diagrams.linear_frames`)."""
+    if sol.scene.mechanism.drive.linear:
+        from .live_diagrams import linear_frames
+
+        return linear_frames(sol, frames)
     sense = 1.0 if sol.scene.mechanism.drive.omega >= 0 else -1.0
     return float(sol.phi[0]) + sense * np.arange(frames) * 2.0 * math.pi / frames
 
@@ -340,50 +344,24 @@ def _marks(sol: Solution, phi: np.ndarray, broken: np.ndarray) -> list[Doc]:
     """Dead centres, positions that cannot be built, and the positions of the sheets."""
     frames = phi.shape[0]
     step = 2.0 * math.pi / frames
+    linear = sol.scene.mechanism.drive.linear
 
-    def frame_of(angle: float) -> int:
+    def frame_of(angle: float) -> int | None:
+        if linear:                      # a length within the driver's range
+            from .live_diagrams import frame_of as frame_at
+
+            return frame_at(phi, angle)
         sense = 1.0 if sol.scene.mechanism.drive.omega >= 0 else -1.0
         return round(sense * (angle - float(phi[0])) / step) % frames
 
-    marks = [{"k": frame_of(a), "kind": "dead"} for a in _extreme_phis(sol)]
+    marks = [{"k": frame_of(a), "kind": "dead"} for a in ([] if linear else _extreme_phis(sol))]
     marks += [{"k": int(k), "kind": "unbuilt"} for k in np.flatnonzero(broken)]
     marks += [{"k": frame_of(float(sol.phi[k])), "kind": "chosen", "position": k}
               for k in plan_positions(sol)]
     # positions of the solution whose results the error estimate does not trust
     marks += [{"k": frame_of(float(sol.phi[k])), "kind": "flagged", "position": k}
               for k in sorted({f.k for f in sol.flags})]
-    return marks
-
-
-def _diagram_anims(sol: Solution, phi: np.ndarray) -> list[Doc]:
-    """s(φ), v(φ), a(φ) of the output link (as on sheet 1) with a cursor at every frame."""
-    out = output_link(sol.scene.mechanism)
-    if out is None:
-        return []
-    series = _series(sol, out, phi)
-    if "s" not in series:
-        return []
-    rocker = out.point is None
-    symbols = ("ψ", "ω", "ε") if rocker else ("s", "v", "a")
-    units = ("°", "rad/s", "rad/s²") if rocker else ("m", "m/s", "m/s²")
-    kinds = ("displacement", "velocity", "acceleration")
-    x = np.arange(phi.shape[0]) * 360.0 / phi.shape[0]
-    panels = []
-    for key, sym, si, kind in zip(("s", "v", "a"), symbols, units, kinds, strict=True):
-        if key not in series:
-            continue
-        y = np.asarray(series[key], dtype=float)
-        if key == "s":
-            y = (y - float(np.nanmin(y))) * (math.degrees(1.0) if rocker else 1.0)
-
-        def title(lang: str, sym: str = sym, kind: str = kind) -> str:
-            return message(f"layout.diagram.{kind}", lang, symbol=sym, link=out.link)
-
-        drawn = {lang: diagram_panel(f"diagram-{key}", title(lang), [Curve(x, y)],
-                                     Axis("φ", "°", 120.0), Axis(sym, si, 40.0), lang)
-                 for lang in LANGUAGES}
-        panels.append(cursor_panel(f"diagram-{key}", title, drawn, x, y, sym))
-    return panels
+    return [m for m in marks if m["k"] is not None]
 
 
 def cursor_panel(pid: str, title: Any, drawn: dict[str, Diagram], x: np.ndarray,
@@ -452,14 +430,21 @@ def animation(sol: Solution, mu: dict[Plan, float], frames: int = FRAMES,
     for plan in (Plan.VELOCITY, Plan.ACCELERATION):
         if plan.value in sol.plans and any(s.plan is plan for s in c.segments):
             panels.append(_vector_anim(sol, ev, plan, mu[plan]))
-    panels += _diagram_anims(sol, phi)
+    from .live_diagrams import diagram_anims
+
+    panels += diagram_anims(sol, phi)
     if dynamics is not None:
         panels += _dynamics_anims(dynamics, phi)
     broken = np.zeros(frames, dtype=bool)
     for p in panels[0]["points"].values():
         broken |= ~np.isfinite(p["xy"]).all(axis=1)
-    return {"frames": frames, "phi_deg": np.degrees(phi) % 360.0, "panels": panels,
-            "values": _values(sol, ev, mu), "marks": _marks(sol, phi, broken)}
+    doc = {"frames": frames, "phi_deg": np.degrees(phi) % 360.0, "panels": panels,
+           "values": _values(sol, ev, mu), "marks": _marks(sol, phi, broken)}
+    if sol.scene.mechanism.drive.linear:        # "l4 = 2400.0 mm" in place of φ
+        from .live_diagrams import coordinate_doc
+
+        doc["coordinate"] = coordinate_doc(sol, phi)
+    return doc
 
 
 def ui_strings() -> dict[str, dict[str, str]]:

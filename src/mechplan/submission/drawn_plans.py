@@ -379,6 +379,7 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
     for i, c in chosen.items():
         by_step.setdefault(c.step, []).append(i)
     for sid, idx in by_step.items():
+        idx = _surest(sid, idx, members, chosen, book, key, notes)
         spots = {members[i].at for i in idx}
         if len(spots) > 1:
             where = join((T("note.where_at", where=members[i].text.where, xy=_xy(members[i].at))
@@ -392,6 +393,26 @@ def _resolve(dp: DrawnPlan, members: list[_Label], book: LabelBook, notes: list[
         assert lb.at is not None
         dp.points[sid] = LabelledPoint(sid, book.plans[key][sid], lb.written, lb.at,
                                        lb.text.where, lb.distance, lb.how)
+
+
+def _surest(sid: str, idx: list[int], members: list[_Label], chosen: dict[int, Candidate],
+            book: LabelBook, key: PlanKey, notes: list[Note]) -> list[int]:
+    """The labels of one point to keep: where they stand at different points, those read most
+    surely (the exact label over an alias, e.g. ``g`` over a weight's ``G5`` read as g₅) when
+    they agree on one point; the others are noted and left out. All of them otherwise."""
+    if len({members[i].at for i in idx}) < 2:
+        return idx
+    top = max(chosen[i].weight for i in idx)
+    surest = [i for i in idx if chosen[i].weight == top]
+    if len({members[i].at for i in surest}) > 1:
+        return idx
+    for i in idx:
+        if i not in surest:
+            notes.append(Note("warning", T("note.label_weaker", written=members[i].written,
+                                           label=book.plans[key][sid],
+                                           plan=plan_title(key[0].value, key[1], case="gen")),
+                              members[i].text.where))
+    return surest
 
 
 def _xy(p: Point | None) -> str:

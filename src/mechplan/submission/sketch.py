@@ -25,6 +25,10 @@ BARB_MAX_MM = 8.0
 LOOSE_END_COST = {0: 0.45, 1: 0.45, 2: 0.15}
 #: a point marked on the sheet (POINT, a small CIRCLE) is preferred by this much (× distance)
 MARKER_BONUS = 0.2
+#: marked points and strokes no longer than this (mm), apart from the lines of a drawing, and
+#: this near (mm) one of its nodes, are part of it (:func:`_join_fragments`)
+FRAGMENT_MM = 3.0
+FRAGMENT_JOIN_MM = 2.0
 
 
 @dataclass
@@ -140,8 +144,39 @@ def drawn_graph(lines: list[DrawnLine], markers: list[tuple[Point, str]], snap: 
     ends = np.asarray(line_nodes, dtype=np.int64).reshape(-1, 2)
     component = [int(x) for x in components(m, ends[:, 0], ends[:, 1])]
     degree = [len(at_node.get(i, ())) for i in range(m)]
+    _join_fragments(nodes, line_nodes, length, component)
     return Graph(nodes, line_nodes, marker_nodes, decoration, component, degree,
                  np.asarray(loose, dtype=np.int64).reshape(-1, 2), snap)
+
+
+def _join_fragments(nodes: np.ndarray, line_nodes: list[tuple[int, int]], length: list[float],
+                    component: list[int]) -> None:
+    """Give a fragment — a drawing of marked points and strokes no longer than
+    :data:`FRAGMENT_MM` — the drawing of the nearest node of a larger one within
+    :data:`FRAGMENT_JOIN_MM`: the points of a force polygon joined by loads too small to draw
+    (an inertia force of 0.1 mm, a weight of 0.8 mm) are marked, or joined by stubs, and are
+    points of that polygon, not a drawing of their own."""
+    if not len(nodes):
+        return
+    comp = np.asarray(component, dtype=np.int64)
+    longest = np.zeros(int(comp.max()) + 1)
+    if line_nodes:
+        ends = np.asarray(line_nodes, dtype=np.int64).reshape(-1, 2)
+        np.maximum.at(longest, comp[ends[:, 0]], np.asarray(length, dtype=float))
+    fragment = longest[comp] <= FRAGMENT_MM
+    whole = np.flatnonzero(~fragment)
+    parts = np.flatnonzero(fragment)
+    if not len(whole) or not len(parts):
+        return
+    d, j = cKDTree(nodes[whole]).query(nodes[parts], distance_upper_bound=FRAGMENT_JOIN_MM)
+    best: dict[int, tuple[float, int]] = {}
+    for n, dist, k in zip(parts.tolist(), d.tolist(), j.tolist()):
+        if math.isfinite(dist) and dist < best.get(component[n], (math.inf, -1))[0]:
+            best[component[n]] = (dist, component[int(whole[k])])
+    if best:
+        for n in parts.tolist():
+            if component[n] in best:
+                component[n] = best[component[n]][1]
 
 
 def _overshoots(nodes: np.ndarray, loose: np.ndarray, degree: np.ndarray, snap: float,

@@ -20,6 +20,7 @@ import math
 import numpy as np
 
 from ...geom.vec import Array
+from .illinois import illinois
 from .triad_closure import (  # noqa: F401  (the solver's constants and closure, re-exported)
     GRID,
     ITERATIONS,
@@ -276,26 +277,7 @@ def refine(a1: Array, a2: Array, a3: Array, lo: Array, hi: Array, flo: Array, fh
            t: Triad, sigma: int) -> Array:
     """Illinois secant on brackets [lo, hi] (f changes sign) to the last bit (the assembly's
     roots on branch ``sigma``, found once)."""
-    side = np.zeros(lo.shape)
-    x = lo.copy()
-    active = np.ones(lo.shape, bool)
-    for _ in range(ITERATIONS):
-        if not active.any():
-            break
-        with np.errstate(invalid="ignore", divide="ignore"):
-            x = np.where(active, hi - fhi * (hi - lo) / (fhi - flo), x)
-        fx = closure(a1, a2, a3, x, t, sigma)[0]
-        fx = np.where(np.isfinite(fx), fx, 0.0)
-        same_hi = np.sign(fx) == np.sign(fhi)
-        upd_hi, upd_lo = active & same_hi, active & ~same_hi
-        # Illinois: halve the stale end's value when the same end moves twice
-        flo = np.where(upd_hi & (side == 1), 0.5 * flo, flo)
-        fhi = np.where(upd_lo & (side == -1), 0.5 * fhi, fhi)
-        hi, fhi = np.where(upd_hi, x, hi), np.where(upd_hi, fx, fhi)
-        lo, flo = np.where(upd_lo, x, lo), np.where(upd_lo, fx, flo)
-        side = np.where(upd_hi, 1, np.where(upd_lo, -1, side))
-        active &= (fx != 0) & (np.abs(hi - lo) > 4e-16 * (1 + np.abs(x)))
-    return x
+    return illinois(lambda x: closure(a1, a2, a3, x, t, sigma)[0], lo, hi, flo, fhi, ITERATIONS)
 
 
 def roots(a1: Array, a2: Array, a3: Array, t: Triad, sigma: int) -> list[tuple[float, int]]:

@@ -29,6 +29,7 @@ import numpy as np
 
 from ...geom import meet
 from ...geom.vec import Array
+from .illinois import illinois
 
 #: the legs' loci: per leg a point A_i (N, 2) or a line (N, 2, 2)
 Loci = tuple[Array, ...]
@@ -239,26 +240,8 @@ def cells(loci: Loci, g: Group, sigma: int, half: int = GRID // 2, per_turn: int
 def refine(loci: Loci, lo: Array, hi: Array, flo: Array, fhi: Array, g: Group,
            sigma: int) -> Array:
     """Illinois secant on brackets [lo, hi] where f changes sign, to the last bit."""
-    side = np.zeros(lo.shape)
-    x = lo.copy()
-    active = np.ones(lo.shape, bool)
-    for _ in range(ITERATIONS):
-        if not active.any():
-            break
-        with np.errstate(invalid="ignore", divide="ignore"):
-            x = np.where(active, hi - fhi * (hi - lo) / (fhi - flo), x)
-        x = np.where(active & ~((x >= lo) & (x <= hi)), 0.5 * (lo + hi), x)
-        fx = closure(loci, x, g, sigma)[0]
-        fx = np.where(np.isfinite(fx), fx, 0.0)
-        same_hi = np.sign(fx) == np.sign(fhi)
-        upd_hi, upd_lo = active & same_hi, active & ~same_hi
-        flo = np.where(upd_hi & (side == 1), 0.5 * flo, flo)
-        fhi = np.where(upd_lo & (side == -1), 0.5 * fhi, fhi)
-        hi, fhi = np.where(upd_hi, x, hi), np.where(upd_hi, fx, fhi)
-        lo, flo = np.where(upd_lo, x, lo), np.where(upd_lo, fx, flo)
-        side = np.where(upd_hi, 1, np.where(upd_lo, -1, side))
-        active &= (fx != 0) & (np.abs(hi - lo) > 4e-16 * (1 + np.abs(x)))
-    return x
+    return illinois(lambda x: closure(loci, x, g, sigma)[0], lo, hi, flo, fhi, ITERATIONS,
+                    clamp=True)
 
 
 def _pick(c: Cells, g: Group) -> tuple[Array, Array]:

@@ -8,9 +8,13 @@ reaction is tilted by the friction angle φ = atan f). The sizes come from the r
 previous pass (:func:`~mechplan.construct.ops.force.friction_iterate`): the first pass is
 friction-free.
 
-Results: ``M_b0`` (the friction-free balancing moment), ``Mf_<ij>`` (the friction couple on link
-j from link i of a revolute pair, the frame first), ``Ff_<ij>`` (the friction force on the slider
-j from the guide's link i of a prismatic pair).
+A linear first driver (cylinder, slider on a frame guide) likewise: the passes close on its
+driving force F_d, and the driving cylinder's own sliding pair (rod in barrel) takes friction
+against l̇, read on the velocity plan as the segment of the rod's sliding.
+
+Results: ``M_b0`` (the friction-free balancing moment; a linear driver's F_d⁰), ``Mf_<ij>``
+(the friction couple on link j from link i of a revolute pair, the frame first), ``Ff_<ij>`` (the
+friction force on the slider j from the guide's link i of a prismatic pair).
 """
 
 from __future__ import annotations
@@ -18,14 +22,17 @@ from __future__ import annotations
 from ...errors import SceneError
 from ...i18n import Text
 from ...model.loads import pair_id
-from ...model.mechanism import GROUND, PairKind
+from ...model.mechanism import GROUND, Pair, PairKind
 from ...model.plans import Plan
+from ..builder import Builder
 from ..graph import Construction, Evaluation, reaction_key
 from ..ops import Op
 from ..ops.force import FrictionLoop
 from ..step import Kind, Role
 from ..terms import Direction, Relation
+from .drivers import cylinders, first_group
 from .force_loads import State, Term, add_load, group_of
+from .laws import first_step
 
 F = Plan.FORCE
 
@@ -36,11 +43,16 @@ def friction_loads(st: State) -> None:
     if spec is None:
         return
     b = st.b
+    drive = b.mech.drive
     pairs = [p for p in b.mech.pairs if spec.of(p.a, p.b).f > 0
              and (p.kind is PairKind.PRISMATIC or spec.of(p.a, p.b).radius > 0)]
-    carriers: dict[int, str] = {}
+    carriers: dict[int, str | tuple[str, str]] = {}
     for index, p in enumerate(pairs):
         if p.kind is PairKind.PRISMATIC and p.b != GROUND:
+            sliding = _cylinder_sliding(b, p)
+            if sliding is not None:
+                carriers[index] = sliding
+                continue
             image = b.bodies[p.b].image(f"{p.point}@{p.b}")
             if image is None or image.vel is None or p.a == GROUND:
                 raise SceneError(
@@ -48,12 +60,13 @@ def friction_loads(st: State) -> None:
                          {"pair": pair_id(p.a, p.b), "link": p.b, "point": p.point}),
                     file=b.file, key=f"{spec.key}.pairs.{pair_id(p.a, p.b)}")
             carriers[index] = image.vel
+    # a linear driver (cylinder, slider): the passes close on its driving force F_d
     loop = FrictionLoop(b.c, tuple(f"R_{reaction_key(p.a, p.b)}" for p in pairs),
+                        balancing="F_d" if drive.linear else "M_b",
                         tolerance=spec.tolerance, max_iterations=spec.max_iterations)
-    drive = b.mech.drive
-    gn = f"I({GROUND},{drive.link})"
-    it = st.add("force.friction", Op.FRICTION_ITERATE, ("pos.phi1",), Kind.SCALAR, Role.RESULT,
-                "M_b⁰", gn, subject=(), loop=loop)
+    gn = first_group(b) if drive.linear else f"I({GROUND},{drive.link})"
+    it = st.add("force.friction", Op.FRICTION_ITERATE, (first_step(b),), Kind.SCALAR,
+                Role.RESULT, "F_d⁰" if drive.linear else "M_b⁰", gn, subject=(), loop=loop)
     b.result("M_b0", it)
     for index, p in enumerate(pairs):
         fr = spec.of(p.a, p.b)
@@ -87,9 +100,14 @@ def friction_loads(st: State) -> None:
         theta = b.bodies[p.a].angle
         assert theta is not None
         label = f"F^f_{reaction_key(carrier, slider)}"
-        moving = (carriers[index],) if index in carriers else ()
+        held = carriers.get(index)
+        # a driving cylinder's own pair: the rod's sliding in the barrel, l̇ along the axis, is
+        # the segment between two images of the velocity plan (v_E and the end of l̇ from it)
+        velocity = held[0] if isinstance(held, tuple) else b.vel[p.point]
+        moving: tuple[str, ...] = ((held[1],) if isinstance(held, tuple) else
+                                   (held,) if held is not None else ())
         f = st.add(f"force.friction.F.{key}", Op.FRICTION_FORCE,
-                   (it, b.vel[p.point], theta, *moving), Kind.POINT, Role.GIVEN, label,
+                   (it, velocity, theta, *moving), Kind.POINT, Role.GIVEN, label,
                    group_of(b, slider), subject=(p.point, p.guide or ""), index=index, f=fr.f)
         b.result(f"Ff_{reaction_key(carrier, slider)}", f)
         relative = f"v_{p.point}{slider}{carrier}" if moving else f"v_{p.point}"
@@ -104,7 +122,22 @@ def friction_loads(st: State) -> None:
             add_load(st, carrier, Term(back_label, back, b.pos[p.point],
                                        direction=Direction(Relation.OPPOSITE, label),
                                        magnitude="f·|N|", where=p.point,
-                                       velocity=carriers[index]))
+                                       velocity=moving[0]))
+
+
+def _cylinder_sliding(b: Builder, p: Pair) -> tuple[str, str] | None:
+    """A driving cylinder's pair (rod p.a in barrel p.b): the two images of the velocity plan
+    whose difference is the rod's velocity relative to the barrel, l̇ from the barrel's pin
+    towards the rod's (the step ``vel.r.<K><E>`` is v_E + l̇ along E→K), else None."""
+    if not any(c.rod == p.a and c.barrel == p.b for c in cylinders(b)):
+        return None
+    pin = p.point                                       # the rod's pin
+    pivot = b.mech.guides[p.guide or ""].through        # the barrel's
+    if f"vel.r.{pin}{pivot}" in b.c.steps:              # the rod's pin is K: r − v_E
+        return f"vel.r.{pin}{pivot}", b.vel[pivot]
+    if f"vel.r.{pivot}{pin}" in b.c.steps:              # the barrel's pin is K: v_E − r
+        return b.vel[pin], f"vel.r.{pivot}{pin}"
+    return None
 
 
 def unsettled(c: Construction, ev: Evaluation, k: int) -> str | None:

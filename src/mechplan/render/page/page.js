@@ -292,7 +292,9 @@ function frame(k) {
     a.svg.setAttribute("aria-label", tr(a.P.title));
   }
   $("phi").value = f;
-  $("phi-out").textContent = `φ = ${num(A.phi_deg[f], 1)}°`;
+  $("phi-out").textContent = A.coordinate   // a cylinder's or slider's length, else φ
+    ? `${tr(A.coordinate.symbol)} = ${num(A.coordinate.values[f], 1)} ${tr(A.coordinate.unit)}`
+    : `φ = ${num(A.phi_deg[f], 1)}°`;
   $("phi-out").dataset.frame = f;
   const tb = $("values");
   tb.replaceChildren(row("th", [ui("quantity"), ui("value"), `${ui("on_paper")}, ${ui("mm")}`]),
