@@ -146,21 +146,31 @@ _TITLE_TAIL = re.compile(r"[\s,;:—–-]+")
 _SAME_ANGLE_DEG = 0.05
 
 
-def titled_angles(ctx: Ctx) -> list[tuple[Point, float, Entry]]:
-    """The crank angles the sheet writes in titles ("Zhukovsky's lever — φ = 30°", "Position 10,
-    φ = 300°"), each with where its title stands and the title."""
+def titled_positions(ctx: Ctx, reports: Sequence[CheckReport]) -> list[tuple[Point, int, Entry]]:
+    """The candidate positions the sheet names in titles — a crank angle ("Zhukovsky's lever —
+    φ = 30°", "Position 10, φ = 300°") or a linear driver's coordinate ("Zhukovsky's lever —
+    l4 = 2400.0 mm") —, each with where its title stands and the title."""
     if ctx.sheet is None:
         return []
-    out: list[tuple[Point, float, Entry]] = []
+    linear = ctx.scene.mechanism.drive.linear
+    coordinate = ctx.c["pos.q"].label.replace("_", "").casefold() if linear else ""
+    out: list[tuple[Point, int, Entry]] = []
     for e in ctx.sheet.other_entries:
         words = [w for w in _TITLE_TAIL.split(e.name.strip()) if w]
         text = e.text or e.value
-        if e.at is None or len(words) < 2 or not is_angle_name(words[-1]) or not text:
+        if e.at is None or len(words) < 2 or not text:
             continue
-        try:
-            out.append((e.at, parse_angle(text), e))
-        except MechplanError:
-            continue
+        k: int | None = None
+        if linear:
+            if words[-1].replace("_", "").casefold() == coordinate:
+                k = _title_position(f"{e.name} = {text}", reports)
+        elif is_angle_name(words[-1]):
+            try:
+                k = _position_of(parse_angle(text), reports)
+            except MechplanError:
+                continue
+        if k is not None:
+            out.append((e.at, k, e))
     return out
 
 
@@ -173,7 +183,8 @@ def _position_of(angle: float, reports: Sequence[CheckReport]) -> int | None:
 
 
 def values_at_titled_positions(ctx: Ctx, reports: list[CheckReport], out: CheckReport) -> None:
-    """Grade each written value at the crank angle of the title it is written under.
+    """Grade each written value at the position (crank angle or driver coordinate) of the title
+    it is written under.
 
     A value written on a panel titled with its position (Zhukovsky's lever "— φ = 30°" with its
     M_b beneath) belongs to that position, whatever position the other plans of the sheet fit
@@ -182,20 +193,19 @@ def values_at_titled_positions(ctx: Ctx, reports: list[CheckReport], out: CheckR
     keeps the grade ``out`` gave it. ``reports[k]`` graded every value at candidate k, in the
     order of ``ctx.interp.values``.
     """
-    titles = titled_angles(ctx)
+    titles = titled_positions(ctx, reports)
     if not titles or len(out.values) != len(ctx.interp.values):
         return
     out.values = list(out.values)
     for i, gv in enumerate(ctx.interp.values):
         if gv.at is None:
             continue
-        above = [(math.dist(at, gv.at), angle, e) for at, angle, e in titles
+        above = [(math.dist(at, gv.at), k, e) for at, k, e in titles
                  if at[1] >= gv.at[1] - 1.0]
         if not above:
             continue
-        _, angle, title = min(above, key=lambda t: t[0])
-        k = _position_of(angle, reports)
-        if k is None or len(reports[k].values) != len(out.values):
+        _, k, title = min(above, key=lambda t: t[0])
+        if len(reports[k].values) != len(out.values):
             continue
         row = reports[k].values[i]
         if row is out.values[i]:
@@ -207,7 +217,6 @@ def values_at_titled_positions(ctx: Ctx, reports: list[CheckReport], out: CheckR
 
         out.values[i] = row
         out.notes.append(Note("info", T("note.value_at_title", name=gv.written,
-                                        phi=reports[k].phi_deg,
                                         title=f"{title.name} = {title.text or title.value}"),
                               gv.where))
         out.findings = [f for f in out.findings if not about(f)]

@@ -191,6 +191,7 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
     lines_of: dict[int, list[DrawnLine]] = {}
     for i, (a, _) in enumerate(graph.line_nodes):
         lines_of.setdefault(graph.component[a], []).append(sub.lines[i])
+    figures = _figures(lines_of, comps)
     kinds_in_book = {k[0] for k in book.plans}
     force_groups = [k[1] for k in book.plans if k[0] is Plan.FORCE and k[1]]
     decided: list[tuple[PlanKey, int, list[_Label]]] = []
@@ -204,7 +205,7 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
         # a title naming a force group ("Force plan I(0,1) — …") says the drawing is its polygon
         # (its μF may stand nearer another drawing)
         title = title_above(_points_of(members), sub.texts, force_groups,
-                            _boxes(comps, [comp])) if force_groups else None
+                            _boxes(comps, [comp]), figures) if force_groups else None
         titled_force = title is not None and any(names_group(title.text, g)
                                                  for g in force_groups)
         if titled_force:
@@ -218,8 +219,8 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
         plan = Plan.FORCE if titled_force else max(
             votes, key=lambda p: (votes[p], -list(Plan).index(p)))
         keys = [k for k in book.plans if k[0] is plan]
-        decided.append((_key_of(book, keys, members, sub, _boxes(comps, [comp])), comp,
-                        members))
+        decided.append((_key_of(book, keys, members, sub, _boxes(comps, [comp]), figures),
+                        comp, members))
     # merge drawings of one plan unless their labels clash
     plans: list[DrawnPlan] = []
     groups: list[tuple[PlanKey, list[int], list[_Label]]] = []
@@ -237,7 +238,7 @@ def _group(labels: list[_Label], graph: Graph, sub: Submission, book: LabelBook,
     for key, comps_, members in groups:
         dp = DrawnPlan(key)
         title = title_above(_points_of(members), sub.texts, [k[1] for k in book.plans],
-                            _boxes(comps, comps_))
+                            _boxes(comps, comps_), figures)
         dp.title = title.text.strip() if title is not None else ""
         for comp in comps_:
             dp.lines.extend(lines_of.get(comp, []))
@@ -276,13 +277,27 @@ def _boxes(comps: dict[int, list[_Label]], but: list[int]) -> list[Box]:
             and (b := box_of(_points_of(members))) is not None]
 
 
+def _figures(lines_of: dict[int, list[DrawnLine]], labelled: Collection[int]) -> list[Box]:
+    """The boxes of the unlabelled figures of lines (a table's rules, a frame) at least 2 mm
+    each way: a text standing over one of them heads it, not the drawing below."""
+    out = []
+    for comp, lines in lines_of.items():
+        if comp in labelled:
+            continue
+        xs = [c for ln in lines for c in (ln.start[0], ln.end[0])]
+        ys = [c for ln in lines for c in (ln.start[1], ln.end[1])]
+        if max(xs) - min(xs) >= 2.0 and max(ys) - min(ys) >= 2.0:
+            out.append((min(xs), max(xs), min(ys), max(ys)))
+    return out
+
+
 def _key_of(book: LabelBook, keys: list[PlanKey], members: list[_Label],
-            sub: Submission, others: list[Box]) -> PlanKey:
+            sub: Submission, others: list[Box], figures: list[Box]) -> PlanKey:
     """Which plan of a kind a drawing is: the group its title names (two cranks' force polygons
     carry the same letters), else the plan its labels fit best."""
     if len(keys) > 1:
         groups = [k[1] for k in keys if k[1]]
-        title = title_above(_points_of(members), sub.texts, groups, others)
+        title = title_above(_points_of(members), sub.texts, groups, others, figures)
         named = [k for k in keys if title is not None and names_group(title.text, k[1])]
         if len(named) == 1:
             return named[0]

@@ -75,12 +75,14 @@ def box_of(points: Iterable[Point]) -> Box | None:
 
 
 def title_above(points: Iterable[Point], texts: Sequence[SheetText],
-                groups: Sequence[str] = (), others: Sequence[Box] = ()) -> SheetText | None:
+                groups: Sequence[str] = (), others: Sequence[Box] = (),
+                figures: Sequence[Box] = ()) -> SheetText | None:
     """The title of the drawing whose labelled points are ``points``: among the texts that end
     with a position or name one of ``groups`` and stand above the drawing's box (their bottom no
     lower than its top less 1 mm, not beginning right of it, ending at most ``ASIDE_MM`` left of
-    it) with no other drawing (``others``) between it and the drawing, the nearest one (vertical
-    plus horizontal gap)."""
+    it) with no other drawing (``others``) between it and the drawing, and no unlabelled figure
+    (``figures``: a table's rules, a frame of lines) standing wholly between them — a text over a
+    table is the table's heading —, the nearest one (vertical plus horizontal gap)."""
     box = box_of(points)
     if box is None:
         return None
@@ -97,11 +99,19 @@ def title_above(points: Iterable[Point], texts: Sequence[SheetText],
         if aside > ASIDE_MM or lo > right:
             continue
         gap = (bottom - top if bottom > top else 0.0) + aside
-        if any(_between(o, (min(lo, left), right, top, bottom)) for o in others):
+        span = (min(lo, left), right, top, bottom)
+        if any(_between(o, span) for o in others) or any(_inside_gap(f, span) for f in figures):
             continue
         if best is None or gap < best[0]:
             best = (gap, t)
     return None if best is None else best[1]
+
+
+def _inside_gap(figure: Box, span: Box) -> bool:
+    """Whether a figure stands wholly in the vertical gap between a title and its drawing
+    (1 mm of slack each way) and overlaps them across."""
+    return (figure[0] < span[1] and figure[1] > span[0]
+            and figure[2] >= span[2] - 1.0 and figure[3] <= span[3] + 1.0)
 
 
 def _between(other: Box, span: Box) -> bool:
