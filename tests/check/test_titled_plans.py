@@ -10,6 +10,7 @@ must check clean at several sizes, standards and languages.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -144,3 +145,46 @@ def test_linear_driver_sheet_with_plans_of_two_positions(tmp_path):
     assert report.coordinate == "l4"
     text = report.text("ru")
     assert "l4 = 1562,50 мм" in text and "φ = 1562" not in text
+
+
+def test_a_text_over_a_table_heads_the_table_not_the_drawing_below():
+    """A force group's equation heading its table ("I(0,1): R21 + R01 = 0", the table's rules
+    under it) names the group but titles no drawing: the lever below the table keeps its own
+    title, further off but with nothing between (read as the group's second force plan before)."""
+    texts = [_text("I(0,1):  R21 + R01 = 0", 165, 253, 48),
+             _text("Zhukovsky's lever — φ = 33.8°", 31, 222.5, 70)]
+    table = (164.8, 212.4, 235.5, 250.5)                 # the rules of the table under the heading
+    lever = [(144.5, 195.9), (179.4, 167.2)]
+    assert title_above(lever, texts, ["I(0,1)"]) is texts[0]     # nearer, without the table
+    assert title_above(lever, texts, ["I(0,1)"], figures=[table]) is texts[1]
+    # a figure beside the gap (not across the span between them) leaves the title
+    assert title_above(lever, texts, ["I(0,1)"], figures=[(300.0, 340.0, 235.0, 250.0)]) \
+        is texts[0]
+    # an underline (no height) is not a figure that parts a title from its drawing
+    assert title_above(lever, texts, ["I(0,1)"], figures=[(165.0, 213.0, 251.0, 251.0)]) \
+        is texts[0]
+
+
+@pytest.mark.parametrize(("stem", "size", "standard", "lang"), [
+    ("press_friction", "A3", "gost", "ru"), ("press_friction", "A4", "iso", "en"),
+    ("machine_unit", "A3", "gost", "ru")])
+def test_the_lever_under_a_table_is_no_force_plan(stem, size, standard, lang, tmp_path):
+    """The sheets with the lever and a force group's tables: every drawn plan read once (no
+    "force … plan #2" made of the lever's letters), all segments right."""
+    scene = load_scene(TEMPLATES / f"{stem}.toml")
+    comp = compose(solve(scene), size, standard, lang, name=stem)
+    levers = 0
+    for i, sheet in enumerate(comp.sheets):
+        names = [panel.name for panel, _ in comp.placements[i]]
+        if not any(n.endswith("lever") for n in names):
+            continue
+        levers += 1
+        dxf = tmp_path / f"{stem}-{i + 1}.dxf"
+        dxf.write_bytes(to_bytes(sheet))
+        report = check(scene, dxf, Options())
+        forces = [p for p in report.plans if p.plan == "force"]
+        groups = [n.split("-")[2] for n in names if re.fullmatch(r"force-\d+-[^-]+", n)
+                  and not n.endswith("lever")]
+        assert len(forces) == len(groups), ([p.name for p in report.plans], names)
+        assert all(s.verdict not in (WRONG, MISSING) for p in report.plans for s in p.segments)
+    assert levers >= 1

@@ -7,7 +7,6 @@ from __future__ import annotations
 import json
 import os
 import re
-import shutil
 from pathlib import Path
 
 import numpy as np
@@ -31,19 +30,6 @@ def _elements(prim: dict) -> int:
         return 1
     return int(bool(prim.get("d"))) + int(bool(prim.get("h")))
 
-
-@pytest.fixture
-def browser(require):
-    exe = shutil.which("chromium") or shutil.which("chromium-browser")
-    require(exe is not None, "Chromium (apt-get install --no-install-recommends chromium)")
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        require(False, "Playwright for Python (pip install playwright)")
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=exe, args=["--no-sandbox", "--disable-gpu"])
-        yield b
-        b.close()
 
 
 @pytest.fixture(scope="module")

@@ -4,8 +4,6 @@ with its decimal comma and "мм"; no console error."""
 
 from __future__ import annotations
 
-import shutil
-
 import pytest
 from scenes import ROOT
 
@@ -14,19 +12,6 @@ from mechplan.studies import solve_file
 
 pytestmark = pytest.mark.external
 
-
-@pytest.fixture
-def browser(require):
-    exe = shutil.which("chromium") or shutil.which("chromium-browser")
-    require(exe is not None, "Chromium (apt-get install --no-install-recommends chromium)")
-    try:
-        from playwright.sync_api import sync_playwright
-    except ImportError:
-        require(False, "Playwright for Python (pip install playwright)")
-    with sync_playwright() as p:
-        b = p.chromium.launch(executable_path=exe, args=["--no-sandbox", "--disable-gpu"])
-        yield b
-        b.close()
 
 
 def test_the_slider_writes_the_cylinders_length(browser, tmp_path):

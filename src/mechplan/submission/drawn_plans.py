@@ -278,16 +278,15 @@ def _boxes(comps: dict[int, list[_Label]], but: list[int]) -> list[Box]:
 
 
 def _figures(lines_of: dict[int, list[DrawnLine]], labelled: Collection[int]) -> list[Box]:
-    """The boxes of the unlabelled figures of lines (a table's rules, a frame) at least 2 mm
-    each way: a text standing over one of them heads it, not the drawing below."""
+    """The boxes of the unlabelled figures of lines (a table's rules, a frame): a text standing
+    over one of them heads it, not the drawing below."""
     out = []
     for comp, lines in lines_of.items():
         if comp in labelled:
             continue
         xs = [c for ln in lines for c in (ln.start[0], ln.end[0])]
         ys = [c for ln in lines for c in (ln.start[1], ln.end[1])]
-        if max(xs) - min(xs) >= 2.0 and max(ys) - min(ys) >= 2.0:
-            out.append((min(xs), max(xs), min(ys), max(ys)))
+        out.append((min(xs), max(xs), min(ys), max(ys)))
     return out
 
 

@@ -108,9 +108,10 @@ def title_above(points: Iterable[Point], texts: Sequence[SheetText],
 
 
 def _inside_gap(figure: Box, span: Box) -> bool:
-    """Whether a figure stands wholly in the vertical gap between a title and its drawing
-    (1 mm of slack each way) and overlaps them across."""
-    return (figure[0] < span[1] and figure[1] > span[0]
+    """Whether a figure at least 2 mm each way (not an underline) stands wholly in the vertical
+    gap between a title and its drawing (1 mm of slack each way) and overlaps them across."""
+    return (figure[1] - figure[0] >= 2.0 and figure[3] - figure[2] >= 2.0
+            and figure[0] < span[1] and figure[1] > span[0]
             and figure[2] >= span[2] - 1.0 and figure[3] <= span[3] + 1.0)
 
 
