@@ -12,7 +12,8 @@ A linear first driver (cylinder, slider on a frame guide) likewise: the passes c
 driving force F_d, and the driving cylinder's own sliding pair (rod in barrel) takes friction
 against l̇, read on the velocity plan as the segment of the rod's sliding.
 
-Results: ``M_b0`` (the friction-free balancing moment; a linear driver's F_d⁰), ``Mf_<ij>``
+Results: ``M_b0`` (the friction-free balancing moment; a linear driver's F_d⁰), ``M_b0_second``
+(W = 2: the second driver's M_b⁰ or F_d⁰ of the same friction-free pass), ``Mf_<ij>``
 (the friction couple on link j from link i of a revolute pair, the frame first), ``Ff_<ij>`` (the
 friction force on the slider j from the guide's link i of a prismatic pair).
 """
@@ -35,6 +36,8 @@ from .force_loads import State, Term, add_load, group_of
 from .laws import first_step
 
 F = Plan.FORCE
+#: the result of a second driver's friction-free M_b⁰ or F_d⁰ (W = 2)
+SECOND_FREE = "M_b0_second"
 
 
 def friction_loads(st: State) -> None:
@@ -60,14 +63,23 @@ def friction_loads(st: State) -> None:
                          {"pair": pair_id(p.a, p.b), "link": p.b, "point": p.point}),
                     file=b.file, key=f"{spec.key}.pairs.{pair_id(p.a, p.b)}")
             carriers[index] = image.vel
-    # a linear driver (cylinder, slider): the passes close on its driving force F_d
+    # a linear driver (cylinder, slider): the passes close on its driving force F_d; a second
+    # driver (W = 2) on its own M_b or F_d, found in the same passes
+    drive2 = b.mech.drive2
+    second = None if drive2 is None else f"{'F_d' if drive2.linear else 'M_b'}{drive2.link}"
     loop = FrictionLoop(b.c, tuple(f"R_{reaction_key(p.a, p.b)}" for p in pairs),
                         balancing="F_d" if drive.linear else "M_b",
-                        tolerance=spec.tolerance, max_iterations=spec.max_iterations)
+                        tolerance=spec.tolerance, max_iterations=spec.max_iterations,
+                        others=() if second is None else (second,))
     gn = first_group(b) if drive.linear else f"I({GROUND},{drive.link})"
     it = st.add("force.friction", Op.FRICTION_ITERATE, (first_step(b),), Kind.SCALAR,
                 Role.RESULT, "F_d⁰" if drive.linear else "M_b⁰", gn, subject=(), loop=loop)
     b.result("M_b0", it)
+    if drive2 is not None and second is not None:   # the second driver's M_b⁰ or F_d⁰ of the friction-free pass
+        free2 = st.add("force.friction.second", Op.FRICTION_FREE, (it,), Kind.SCALAR,
+                       Role.RESULT, f"{second}⁰", group_of(b, drive2.link), subject=(),
+                       result=second)
+        b.result(SECOND_FREE, free2)
     for index, p in enumerate(pairs):
         fr = spec.of(p.a, p.b)
         key = reaction_key(p.a, p.b)
