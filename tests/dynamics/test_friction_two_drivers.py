@@ -460,3 +460,135 @@ def test_crank_cylinder_friction_free_limit():
     np.testing.assert_allclose(tiny.balancing_moment, plain.balancing_moment, rtol=1e-8,
                                atol=1e-8)
     np.testing.assert_allclose(tiny.second[1], plain.second[1], rtol=1e-8, atol=1e-7)
+
+
+# -- self-locking: crank 1 and a rotating guide (crank 4) with the block 3 pushed by the rod 2 -----
+ROTATING_GUIDE = """title = "Crank and rotating guide (W = 2)"
+language = "en"
+
+[ground]
+A = ["0 mm", "0 mm"]
+E = ["200 mm", "0 mm"]
+
+[links.1]
+name = "crank"
+lengths = {{ AB = "60 mm" }}
+
+[links.2]
+name = "rod"
+lengths = {{ BC = "150 mm" }}
+
+[links.3]
+name = "block"
+slides = {{ point = "C", on = "g" }}
+
+[links.4]
+name = "guide crank"
+points = {{ E = ["0 mm", "0 mm"], D = ["100 mm", "0 mm"] }}
+guides.g = {{ through = "E", toward = "D" }}
+
+[[loads]]
+type = "force"
+point = "C"
+link = "3"
+along = ["E", "D"]
+magnitude = "{load} N"
+
+[drive]
+link = "1"
+speed = "10 rad/s"
+
+[drive2]
+link = "4"
+speed = "4 rad/s"
+phase = "150 deg"
+
+[assembly]
+C = "+"
+
+[friction]
+f = 0
+pin_radius = "10 mm"
+max_iterations = 400
+[friction.pairs]
+"3-4" = {{ f = {f} }}
+"""
+
+
+def _guide_geometry(phi1: float):
+    """B, C (the root farther along the guide from E), the guide's unit u, s = |EC|."""
+    b = 0.06 * np.array([math.cos(phi1), math.sin(phi1)])
+    th4 = math.radians(150.0) + 0.4 * phi1
+    u = np.array([math.cos(th4), math.sin(th4)])
+    e = np.array([0.2, 0.0])
+    # |e + s·u − b| = 0.15: s² + 2 s u·(e − b) + |e − b|² − 0.15² = 0
+    half = float(u @ (e - b))
+    s = -half + math.sqrt(half * half - float((e - b) @ (e - b)) + 0.15 ** 2)
+    return b, e + s * u, u, s
+
+
+def _guide_case(phi1: float):
+    """(the sense of the block's sliding on the guide, cos α, sin α) of the rod to the guide."""
+    h = 1e-6
+    s = [_guide_geometry(phi1 + 10.0 * k * h)[3] for k in (-2, -1, 1, 2)]
+    sliding = (s[0] - 8 * s[1] + 8 * s[2] - s[3]) / (12 * h)
+    b, c, u, _ = _guide_geometry(phi1)
+    along = (c - b) / 0.15
+    return math.copysign(1.0, sliding), abs(float(along @ u)), abs(cross(u, along))
+
+
+def _unchecked(text: str, deg: float):
+    """The force analysis at one angle without the solve's refusal of a self-locked position."""
+    from mechplan.dynamics.kinetostatics import analyse_forces
+    from mechplan.solve import build
+
+    scene = parse_scene(text, "scene.toml")
+    loading = Loading.from_scene(scene)
+    _, c = build(scene, PLANS, loading)
+    ev = c.evaluate(np.radians([deg]))
+    return analyse_forces(c, ev, scene.mechanism, loading)
+
+
+@pytest.mark.parametrize("deg", [0.0, 100.0, 120.0, 340.0])
+def test_self_locking_with_two_drivers_where_the_tilted_reaction_says_so(deg):
+    """Friction only between the block and the rotating guide, a resistance P along the guide:
+    the rod (a two-force member) pushes the block with T(cos α − f·sin α) = P, so T grows without
+    bound as f·tan α → 1. Below (f·tan α = 0.9) the passes settle on that T and both balancing
+    moments are given; above (1.1) the position is flagged, neither moment with friction nor η is
+    given, and a solve at that angle is refused with the reason."""
+    phi1 = math.radians(deg)
+    sense, cos_a, sin_a = _guide_case(phi1)
+    b, c, _, _ = _guide_geometry(phi1)
+    load = -100.0 * sense                      # against the block's sliding
+    f_lock = cos_a / sin_a
+    settled = _solve(ROTATING_GUIDE.format(load=load, f=0.9 * f_lock), (deg,))
+    np.testing.assert_allclose(settled.ev[settled.construction.position("C")][0], c,
+                               atol=1e-12)
+    fa = settled.extras["forces"]
+    fr = fa.friction
+    assert fr.converged[0] and fr.second is not None
+    rod = np.hypot(*fa.reactions["23"].force[0])
+    assert rod == pytest.approx(100.0 / (cos_a - 0.9 * f_lock * sin_a), rel=1e-9)
+    assert math.isfinite(float(fr.moment[0])) and math.isfinite(float(fr.second.value[0]))
+    fa = _unchecked(ROTATING_GUIDE.format(load=load, f=1.1 * f_lock), deg)
+    fr = fa.friction
+    assert not fr.converged[0]
+    assert math.isnan(float(fr.moment[0])) and math.isnan(float(fr.second.value[0]))
+    assert math.isnan(float(fr.efficiency[0])) and math.isnan(float(fr.input_power[0]))
+    doc = fa.json(0)["friction"]
+    assert doc["converged"] is False and doc["efficiency"] is None
+    assert doc["second_driver"]["balancing_moment"] is None
+    assert doc["second_driver"]["balancing_moment_without_friction"] is not None
+
+
+def test_a_self_locked_position_with_two_drivers_is_refused(tmp_path):
+    from mechplan.errors import SingularError
+    from mechplan.scene import load_scene
+    from mechplan.solve import solve as solve_scene
+
+    sense, cos_a, sin_a = _guide_case(math.radians(100.0))
+    text = ROTATING_GUIDE.format(load=-100.0 * sense, f=1.1 * cos_a / sin_a)
+    path = tmp_path / "lock.toml"
+    path.write_text(text + '\n[positions]\nat = ["100 deg"]\n', encoding="utf-8")
+    with pytest.raises(SingularError, match="self-locks"):
+        solve_scene(load_scene(path))

@@ -295,7 +295,7 @@ def _second_lines(fa: FrictionAnalysis, s: DriverFriction, k: int, lang: str) ->
     def watts(x: Array) -> str:
         return f"{fmt(float(x[k]), 2, lang)} {w}"
     return ["  " + message("frictionw2.report.second", lang, link=s.link,
-                           symbol="F_d" if s.linear else "M_b",
+                           symbol=f"{'F_d' if s.linear else 'M_b'}{s.link}",
                            free=f"{fmt(float(s.free[k]), 3, lang)} {force}",
                            friction=f"{fmt(float(s.value[k]), 3, lang)} {force}"),
             "  " + message("frictionw2.report.powers", lang, free=watts(fa.free_input_power),
