@@ -104,7 +104,7 @@ pin_radius = "15 mm"
 "2-3" = {{ f = {f2} }}
 "0-4" = {{ f = {f3}, radius = "25 mm" }}
 """
-FIVE_F = dict(f0=0.12, f1=0.15, f2=0.2, f3=0.1)
+FIVE_F = {"f0": 0.12, "f1": 0.15, "f2": 0.2, "f3": 0.1}
 
 
 def _five_text(scale: float = 1.0) -> str:
@@ -334,7 +334,7 @@ pin_radius = "15 mm"
 "3-4" = {{ f = {f2} }}
 "0-3" = {{ f = {f3}, radius = "25 mm" }}
 """
-CC_F = dict(f0=0.1, f1=0.15, f2=0.2, f3=0.12)
+CC_F = {"f0": 0.1, "f1": 0.15, "f2": 0.2, "f3": 0.12}
 F_P, T2C = np.array([150.0, -400.0]), -5.0
 P_LOCAL = np.array([0.1, 0.04])
 
@@ -431,7 +431,7 @@ def test_crank_moment_and_cylinder_force_with_friction_against_fsolve():
     assert {q.pair for q in fr.pairs} == {"0-1", "1-2", "2-4", "0-3", "3-4"}
     assert np.all(fr.converged) and not np.any(fr.undefined)
     for k, phi in enumerate(CC_ANGLES):
-        (m1, fd), (m10, fd0), w, lost = _cc_reference(math.radians(phi))
+        (m1, fd), (m10, fd0), _, lost = _cc_reference(math.radians(phi))
         assert float(fa.balancing_moment[k]) == pytest.approx(m1, rel=1e-8, abs=1e-9)
         assert float(fa.second[1][k]) == pytest.approx(fd, rel=1e-8, abs=1e-8)
         assert float(fr.second.value[k]) == pytest.approx(fd, rel=1e-8, abs=1e-8)
@@ -558,7 +558,7 @@ def test_self_locking_with_two_drivers_where_the_tilted_reaction_says_so(deg):
     given, and a solve at that angle is refused with the reason."""
     phi1 = math.radians(deg)
     sense, cos_a, sin_a = _guide_case(phi1)
-    b, c, _, _ = _guide_geometry(phi1)
+    _, c, _, _ = _guide_geometry(phi1)
     load = -100.0 * sense                      # against the block's sliding
     f_lock = cos_a / sin_a
     settled = _solve(ROTATING_GUIDE.format(load=load, f=0.9 * f_lock), (deg,))

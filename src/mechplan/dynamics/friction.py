@@ -208,10 +208,10 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
                                             rel, np.abs(rel) <= UNDEFINED * scale))
     lost = sum((q.power for q in pairs), np.zeros_like(moment))
     converged = np.asarray(info["residual"]) <= float(info["tolerance"])
-    second = _second(c, ev, mech, converged)
+    driver2 = _second(c, ev, mech, converged)
     # the drivers' input power with and without friction (one driver: M_b·ω1 and M_b⁰·ω1)
-    power = moment * omega1 + (0.0 if second is None else second.value * second.rate)
-    power0 = free * omega1 + (0.0 if second is None else second.free * second.rate)
+    power = moment * omega1 + (0.0 if driver2 is None else driver2.value * driver2.rate)
+    power0 = free * omega1 + (0.0 if driver2 is None else driver2.free * driver2.rate)
     drives = power > 0
     with np.errstate(invalid="ignore", divide="ignore"):
         eta = np.where(drives, power0 / power, np.nan)
@@ -222,7 +222,7 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
     eta_p = np.where(converged, eta_p, np.nan)
     return FrictionAnalysis(free, moment, eta, eta_p, int(info["passes"]),
                             np.asarray(info["residual"]), tuple(pairs),
-                            float(info["tolerance"]), linear, np.asarray(omega1), second,
+                            float(info["tolerance"]), linear, np.asarray(omega1), driver2,
                             mech.drive.link)
 
 

@@ -75,7 +75,7 @@ def friction_loads(st: State) -> None:
     it = st.add("force.friction", Op.FRICTION_ITERATE, (first_step(b),), Kind.SCALAR,
                 Role.RESULT, "F_d⁰" if drive.linear else "M_b⁰", gn, subject=(), loop=loop)
     b.result("M_b0", it)
-    if drive2 is not None and second is not None:   # the second driver's M_b⁰ or F_d⁰ of the friction-free pass
+    if drive2 is not None and second is not None:   # its M_b⁰ or F_d⁰ of the friction-free pass
         free2 = st.add("force.friction.second", Op.FRICTION_FREE, (it,), Kind.SCALAR,
                        Role.RESULT, f"{second}⁰", group_of(b, drive2.link), subject=(),
                        result=second)
