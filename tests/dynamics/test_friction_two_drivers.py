@@ -592,3 +592,33 @@ def test_a_self_locked_position_with_two_drivers_is_refused(tmp_path):
     path.write_text(text + '\n[positions]\nat = ["100 deg"]\n', encoding="utf-8")
     with pytest.raises(SingularError, match="self-locks"):
         solve_scene(load_scene(path))
+
+
+def test_a_held_cylinder_has_no_relative_motion_and_no_friction():
+    """The excavator arm with its arm cylinder held (`[drive2] hold`): the arm turns with the boom,
+    so the pairs at E, F, G and the arm cylinder's rod in its barrel do not move relative to each
+    other; the sense of their friction is undefined (flagged) and their friction is zero, not a
+    rounding-level rate's random sign. The held cylinder gives no power: η = F_d⁰/F_d."""
+    text = (TEMPLATES / "excavator_arm.toml").read_text(encoding="utf-8")
+    text = text.replace('speed = "0.075 m/s"\nstart = "2700 mm"', 'hold = "2700 mm"')
+    text += '\n[friction]\nf = 0.1\npin_radius = "40 mm"\n'
+    scene = parse_scene(text, "held.toml")
+    fa = solve(scene, plans=PLANS, loading=Loading.from_scene(scene)).extras["forces"]
+    fr = fa.friction
+    assert np.all(fr.converged) and fr.second is not None and fr.second.link == "7"
+    still = {p.pair: p for p in fr.pairs if p.pair in {"2-5", "2-6", "5-7", "6-7"}}
+    assert len(still) == 4
+    for p in still.values():
+        assert np.all(p.undefined) and np.all(p.load == 0.0)
+    assert all(fa.json(k)["friction"]["undefined_sense"] == ["2-5", "2-6", "5-7", "6-7"]
+               for k in range(len(fa.phi)))
+    np.testing.assert_array_equal(fr.second.rate, 0.0)
+    # nothing in the arm's group rubs: the holding force is the friction-free one
+    np.testing.assert_allclose(fr.second.value, fr.second.free, rtol=1e-12)
+    np.testing.assert_allclose(fr.efficiency, fr.free_moment / fr.moment, rtol=1e-12)
+    np.testing.assert_allclose(fr.efficiency, fr.efficiency_power, rtol=1e-10)
+    assert np.all((fr.efficiency > 0.9) & (fr.efficiency < 1.0))
+    doc = fa.json(0)["friction"]
+    assert doc["second_driver"]["driving_force"] == pytest.approx(float(fa.second[1][0]))
+    assert doc["second_driver"]["power"] == 0.0 and doc["second_driver"]["ratio"] is None
+    assert doc["input_power"] == pytest.approx(doc["first_driver"]["power"])

@@ -357,7 +357,14 @@ def friction_couple(step: Step, loop: Array, *omegas: Array, shared: dict[Any, A
     Inputs after the loop: ω_j, then ω_i (absent when link i is the frame).
     """
     w_rel = omegas[0] - (omegas[1] if len(omegas) > 1 else 0.0)
-    return -float(step.param("rho")) * _basis(step, shared) * np.sign(w_rel), None, None
+    return -float(step.param("rho")) * _basis(step, shared) * _sense(step, w_rel), None, None
+
+
+def _sense(step: Step, rel: Array) -> Array:
+    """sign(rel), 0 where |rel| ≤ ``still`` (no relative motion: the sense of friction is
+    undefined, its friction taken as zero — a rounding-level rate has no sign)."""
+    still = float(step.param("still", 0.0))
+    return np.where(np.abs(rel) <= still, 0.0, np.sign(rel))
 
 
 def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *carrier: Array,
@@ -366,7 +373,7 @@ def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *carr
     of the carrier's point under it (``carrier``: that image; absent for a frame guide)."""
     u = direction(angle)
     v_rel = velocity - carrier[0] if carrier else velocity
-    sense = np.sign(dot(v_rel, u))
+    sense = _sense(step, dot(v_rel, u))
     return (-float(step.param("f")) * _basis(step, shared) * sense)[..., None] * u, None, None
 
 

@@ -36,6 +36,8 @@ from .force_loads import State, Term, add_load, group_of
 from .laws import first_step
 
 F = Plan.FORCE
+#: a relative rate below this share of the drivers' speeds leaves friction's sense open
+UNDEFINED = 1e-9
 #: the result of a second driver's friction-free M_b⁰ or F_d⁰ (W = 2)
 SECOND_FREE = "M_b0_second"
 
@@ -71,6 +73,9 @@ def friction_loads(st: State) -> None:
                         balancing="F_d" if drive.linear else "M_b",
                         tolerance=spec.tolerance, max_iterations=spec.max_iterations,
                         others=() if second is None else (second,))
+    # a relative rate this small against the drivers' speeds has no sense (friction zero there,
+    # as the analysis flags it): two links turning alike, a held cylinder's rod in its barrel
+    still = UNDEFINED * max(abs(drive.omega), abs(drive2.omega) if drive2 is not None else 0.0)
     gn = first_group(b) if drive.linear else f"I({GROUND},{drive.link})"
     it = st.add("force.friction", Op.FRICTION_ITERATE, (first_step(b),), Kind.SCALAR,
                 Role.RESULT, "F_d⁰" if drive.linear else "M_b⁰", gn, subject=(), loop=loop)
@@ -95,7 +100,7 @@ def friction_loads(st: State) -> None:
             label = f"M^f_{reaction_key(first, second)}"
             m = st.add(f"force.friction.M.{key}", Op.FRICTION_COUPLE, (it, *omegas), Kind.SCALAR,
                        Role.GIVEN, label, group_of(b, second), subject=(p.point, first, second),
-                       index=index, rho=fr.rho)
+                       index=index, rho=fr.rho, still=still)
             b.result(f"Mf_{reaction_key(first, second)}", m)
             add_load(st, second, Term(label, couple=m,
                                       direction=Direction(Relation.AGAINST,
@@ -120,7 +125,8 @@ def friction_loads(st: State) -> None:
                                    (held,) if held is not None else ())
         f = st.add(f"force.friction.F.{key}", Op.FRICTION_FORCE,
                    (it, velocity, theta, *moving), Kind.POINT, Role.GIVEN, label,
-                   group_of(b, slider), subject=(p.point, p.guide or ""), index=index, f=fr.f)
+                   group_of(b, slider), subject=(p.point, p.guide or ""), index=index, f=fr.f,
+                   still=still)
         b.result(f"Ff_{reaction_key(carrier, slider)}", f)
         relative = f"v_{p.point}{slider}{carrier}" if moving else f"v_{p.point}"
         add_load(st, slider, Term(label, f, b.pos[p.point],
