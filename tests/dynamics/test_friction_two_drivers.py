@@ -622,3 +622,40 @@ def test_a_held_cylinder_has_no_relative_motion_and_no_friction():
     assert doc["second_driver"]["driving_force"] == pytest.approx(float(fa.second[1][0]))
     assert doc["second_driver"]["power"] == 0.0 and doc["second_driver"]["ratio"] is None
     assert doc["input_power"] == pytest.approx(doc["first_driver"]["power"])
+
+
+@pytest.mark.parametrize("case", ["crank_slider", "slider_crank", "cylinder_slider",
+                                  "slider_slider", "cylinder_crank"])
+def test_every_order_of_driver_kinds_balances_the_power_with_friction(case):
+    """The loaded machines of tests/dynamics/test_second_driver_kinds_forces.py with friction in
+    every pair: the drivers' input power with friction covers the loads' and the friction's
+    (η = P⁰/P equals 1 − |ΣP_f|/P), Zhukovsky's lever with the second driver's value agrees,
+    and f = 0 gives each driver's frictionless value."""
+    import sys
+
+    sys.path.insert(0, str(Path(__file__).parents[1] / "construct"))
+    sys.path.insert(0, str(Path(__file__).parent))
+    from test_second_driver_kinds import CASES
+    from test_second_driver_kinds_forces import loaded
+
+    def run(text):
+        scene = parse_scene(text, "kinds.toml")
+        return solve(scene, at_deg=list(CASES[case])).extras["forces"]
+    friction = '\n[friction]\nf = {f}\npin_radius = "10 mm"\n'
+    fa = run(loaded(case) + friction.format(f=0.1))
+    plain = run(loaded(case))
+    fr = fa.friction
+    assert np.all(fr.converged) and fr.second is not None
+    lost = sum(p.power for p in fr.pairs)
+    np.testing.assert_allclose(fr.free_input_power - fr.input_power, lost, rtol=1e-9,
+                               atol=1e-9 * np.abs(fr.input_power).max())
+    ok = fr.input_power > 0
+    assert ok.any()
+    np.testing.assert_allclose(fr.efficiency[ok], fr.efficiency_power[ok], rtol=1e-9)
+    assert np.all(fr.efficiency[ok] <= 1.0) and np.all(np.isnan(fr.efficiency[~ok]))
+    np.testing.assert_allclose(fa.zhukovsky_moment, fa.balancing_moment, rtol=1e-9)
+    np.testing.assert_allclose(fr.free_moment, plain.balancing_moment, rtol=1e-9)
+    np.testing.assert_allclose(fr.second.free, plain.second[1], rtol=1e-9)
+    zero = run(loaded(case) + friction.format(f=0))
+    np.testing.assert_allclose(zero.balancing_moment, plain.balancing_moment, rtol=1e-12)
+    np.testing.assert_allclose(zero.second[1], plain.second[1], rtol=1e-12)
