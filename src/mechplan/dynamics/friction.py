@@ -23,12 +23,14 @@ from typing import Any
 import numpy as np
 
 from ..construct.graph import Construction, Evaluation, reaction_key
+from ..construct.plans.force_friction import UNDEFINED as _UNDEFINED
 from ..geom.vec import Array, dot
 from ..model.loads import pair_id
 from ..model.mechanism import GROUND, Mechanism, PairKind
 
-#: a relative velocity below this share of the drive's speed scale leaves friction's sense open
-UNDEFINED = 1e-9
+#: a relative velocity below this share of the drivers' speed scale leaves friction's sense open
+#: (the friction steps take it as zero below the same share: plans/force_friction.py)
+UNDEFINED = _UNDEFINED
 
 
 @dataclass(frozen=True, slots=True)
@@ -182,6 +184,9 @@ def analyse_friction(c: Construction, ev: Evaluation, mech: Mechanism) -> Fricti
     moment = ev[c.driving_force() if linear else c.balancing_moment()]
     omega1 = ev["vel.rate" if linear else c.omega(mech.drive.link)]
     scale = np.max(np.abs(omega1)) if omega1.size else 1.0
+    if mech.drive2 is not None and omega1.size:     # W = 2: the faster driver sets the scale
+        rate2 = ev["vel.rate2" if mech.drive2.linear else c.omega(mech.drive2.link)]
+        scale = max(scale, float(np.max(np.abs(rate2))))
     pairs: list[PairFrictionResult] = []
     for p in mech.pairs:
         if p.kind is PairKind.REVOLUTE:
