@@ -32,8 +32,9 @@ def test_every_operation_has_one_spec():
     # a crank's ω, ε (and a second crank's θ) by its law, crank_law, and a second slider's
     # second_slider_position, and a cylinder's arc cutting a guide line, circle_line_driven
     # (ops/driver_inputs.py); triads with slider legs' triadp_angle, triadp_point,
-    # normal_through, leg_normal_force (ops/triadp.py)
-    assert len(names) == len(set(names)) == len(SPECS) == 76
+    # normal_through, leg_normal_force (ops/triadp.py); friction_free, a second driver's
+    # friction-free M_b⁰ or F_d⁰ (W = 2)
+    assert len(names) == len(set(names)) == len(SPECS) == 77
     for family in FAMILIES:
         declared = {n for n, v in vars(family).items() if isinstance(v, OpSpec)}
         assert declared == set(family.__all__), family.__name__      # none left out of Op

@@ -3,6 +3,8 @@ that asks for it: ``[friction] diagram = true``). η is read from the solution, 
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ..i18n import message
@@ -26,18 +28,22 @@ def efficiency_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
     n = sol.positions
     drive = sol.scene.mechanism.drive
     if drive.linear:            # over the driver's time t = (q − q⁰)/q̇, an open curve
-        return _over_time(sol, eta, lang, r)
+        return _over_time(sol, eta, friction, lang, r)
     x = np.arange(n + 1) * 360.0 / n
     y = np.append(eta, eta[0])
     # every position where η is defined is marked with its number (a lone one has no line)
     markers = [Marker(float(x[k]), float(y[k]), str(k)) for k in range(n) if np.isfinite(y[k])]
-    d = diagram_panel("force-diagram-eta", message("forces.diagram.efficiency", lang),
+    # two drivers (W = 2): the machine's η = P⁰/P of the drivers' input powers
+    title = ("frictionw2.diagram.efficiency" if friction.second is not None
+             else "forces.diagram.efficiency")
+    d = diagram_panel("force-diagram-eta", message(title, lang),
                       [Curve(x, y)], Axis("φ", "°", min(180.0, 0.42 * r.width)),
                       Axis("η", "", min(50.0, 0.18 * r.height)), lang, markers=markers)
     return d.panel
 
 
-def _over_time(sol: Solution, eta: np.ndarray, lang: str, r: Room) -> Panel | None:
+def _over_time(sol: Solution, eta: np.ndarray, friction: Any, lang: str,
+               r: Room) -> Panel | None:
     """η over a linear driver's sweep (its positions from one end of its range to the other)
     against the law's time, as its kinematic diagrams."""
     from ..model.law import driver_time
@@ -48,7 +54,9 @@ def _over_time(sol: Solution, eta: np.ndarray, lang: str, r: Room) -> Panel | No
     x = np.asarray(driver_time(drive, np.asarray(sol.phi, dtype=float)), dtype=float)
     markers = [Marker(float(x[k]), float(eta[k]), str(k)) for k in range(len(eta))
                if np.isfinite(eta[k])]
-    d = diagram_panel("force-diagram-eta", message("frictionlin.diagram.efficiency", lang),
+    title = ("frictionw2.diagram.efficiency_time" if friction.second is not None
+             else "frictionlin.diagram.efficiency")
+    d = diagram_panel("force-diagram-eta", message(title, lang),
                       [Curve(x, eta)], Axis("t", "s", min(160.0, 0.36 * r.width)),
                       Axis("η", "", min(50.0, 0.18 * r.height)), lang, markers=markers)
     return d.panel

@@ -280,6 +280,9 @@ class FrictionLoop:
     reactions: tuple[str, ...]
     balancing: str = "M_b"
     tolerance: float = 1e-10
+    #: further drivers' balancing results (W = 2: ``M_b<link>`` or ``F_d<link>``), whose
+    #: friction-free values are kept for :func:`friction_free`
+    others: tuple[str, ...] = ()
     max_iterations: int = 50
     #: steps built on the friction loads (by the number of steps when found): the rest is
     #: evaluated once and kept for every next pass
@@ -312,6 +315,7 @@ def friction_iterate(step: Step, theta: Array, *, shared: dict[Any, Any]) -> Res
     basis = np.zeros((n, p))
     residual = np.full(n, np.inf)
     mb0 = np.zeros(n)
+    free: dict[str, Array] = {}
     passes = 0
     downstream = loop.downstream(step.id)
     kept: dict[str, Array] = {}
@@ -325,6 +329,7 @@ def friction_iterate(step: Step, theta: Array, *, shared: dict[Any, Any]) -> Res
                if p else basis)
         if passes == 1:
             mb0 = np.array(inner[c.results[loop.balancing]])
+            free = {r: np.array(inner[c.results[r]]) for r in loop.others}
             kept = {k: v for k, v in inner.values.items() if k not in downstream}
             kept_shared = {k: v for k, v in inner.shared.items() if k[0] != "friction"}
         scale = np.maximum(np.max(new, axis=-1, initial=0.0), 1e-300)
@@ -336,7 +341,7 @@ def friction_iterate(step: Step, theta: Array, *, shared: dict[Any, Any]) -> Res
     # bound) gets no friction loads at all: NaN, so nothing built on them passes for a result
     basis = np.where((residual <= loop.tolerance)[:, None], basis, np.nan)
     shared[("friction", step.id)] = {"basis": basis, "passes": passes, "residual": residual,
-                                     "tolerance": loop.tolerance}
+                                     "tolerance": loop.tolerance, "free": free}
     return mb0, None, None
 
 
@@ -352,7 +357,14 @@ def friction_couple(step: Step, loop: Array, *omegas: Array, shared: dict[Any, A
     Inputs after the loop: ω_j, then ω_i (absent when link i is the frame).
     """
     w_rel = omegas[0] - (omegas[1] if len(omegas) > 1 else 0.0)
-    return -float(step.param("rho")) * _basis(step, shared) * np.sign(w_rel), None, None
+    return -float(step.param("rho")) * _basis(step, shared) * _sense(step, w_rel), None, None
+
+
+def _sense(step: Step, rel: Array) -> Array:
+    """sign(rel), 0 where |rel| ≤ ``still`` (no relative motion: the sense of friction is
+    undefined, its friction taken as zero — a rounding-level rate has no sign)."""
+    still = float(step.param("still", 0.0))
+    return np.where(np.abs(rel) <= still, 0.0, np.sign(rel))
 
 
 def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *carrier: Array,
@@ -361,8 +373,15 @@ def friction_force(step: Step, loop: Array, velocity: Array, angle: Array, *carr
     of the carrier's point under it (``carrier``: that image; absent for a frame guide)."""
     u = direction(angle)
     v_rel = velocity - carrier[0] if carrier else velocity
-    sense = np.sign(dot(v_rel, u))
+    sense = _sense(step, dot(v_rel, u))
     return (-float(step.param("f")) * _basis(step, shared) * sense)[..., None] * u, None, None
+
+
+def friction_free(step: Step, loop: Array, *, shared: dict[Any, Any]) -> Result:
+    """A further driver's balancing moment or driving force of the friction-free pass (W = 2:
+    the second driver's M_b⁰ or F_d⁰), kept by the iteration (``result``: its result name)."""
+    out: Array = shared[("friction", step.input("loop"))]["free"][step.param("result")]
+    return out, None, None
 
 
 FRICTION_ITERATE = OpSpec("friction_iterate", friction_iterate, "protocol.op.friction_iterate",
@@ -371,4 +390,6 @@ FRICTION_COUPLE = OpSpec("friction_couple", friction_couple, "protocol.op.fricti
                          grade=Grade.VALUE)
 FRICTION_FORCE = OpSpec("friction_force", friction_force, "protocol.op.friction_force",
                         Drawn.VECTOR, Line.OUTLINE, Grade.VALUE)
-__all__ += ["FRICTION_COUPLE", "FRICTION_FORCE", "FRICTION_ITERATE"]
+FRICTION_FREE = OpSpec("friction_free", friction_free, "protocol.op.friction_free",
+                       grade=Grade.VALUE)
+__all__ += ["FRICTION_COUPLE", "FRICTION_FORCE", "FRICTION_FREE", "FRICTION_ITERATE"]

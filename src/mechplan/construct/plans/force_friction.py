@@ -12,7 +12,8 @@ A linear first driver (cylinder, slider on a frame guide) likewise: the passes c
 driving force F_d, and the driving cylinder's own sliding pair (rod in barrel) takes friction
 against l̇, read on the velocity plan as the segment of the rod's sliding.
 
-Results: ``M_b0`` (the friction-free balancing moment; a linear driver's F_d⁰), ``Mf_<ij>``
+Results: ``M_b0`` (the friction-free balancing moment; a linear driver's F_d⁰), ``M_b0_second``
+(W = 2: the second driver's M_b⁰ or F_d⁰ of the same friction-free pass), ``Mf_<ij>``
 (the friction couple on link j from link i of a revolute pair, the frame first), ``Ff_<ij>`` (the
 friction force on the slider j from the guide's link i of a prismatic pair).
 """
@@ -35,6 +36,10 @@ from .force_loads import State, Term, add_load, group_of
 from .laws import first_step
 
 F = Plan.FORCE
+#: a relative rate below this share of the drivers' speeds leaves friction's sense open
+UNDEFINED = 1e-9
+#: the result of a second driver's friction-free M_b⁰ or F_d⁰ (W = 2)
+SECOND_FREE = "M_b0_second"
 
 
 def friction_loads(st: State) -> None:
@@ -60,14 +65,26 @@ def friction_loads(st: State) -> None:
                          {"pair": pair_id(p.a, p.b), "link": p.b, "point": p.point}),
                     file=b.file, key=f"{spec.key}.pairs.{pair_id(p.a, p.b)}")
             carriers[index] = image.vel
-    # a linear driver (cylinder, slider): the passes close on its driving force F_d
+    # a linear driver (cylinder, slider): the passes close on its driving force F_d; a second
+    # driver (W = 2) on its own M_b or F_d, found in the same passes
+    drive2 = b.mech.drive2
+    second = None if drive2 is None else f"{'F_d' if drive2.linear else 'M_b'}{drive2.link}"
     loop = FrictionLoop(b.c, tuple(f"R_{reaction_key(p.a, p.b)}" for p in pairs),
                         balancing="F_d" if drive.linear else "M_b",
-                        tolerance=spec.tolerance, max_iterations=spec.max_iterations)
+                        tolerance=spec.tolerance, max_iterations=spec.max_iterations,
+                        others=() if second is None else (second,))
+    # a relative rate this small against the drivers' speeds has no sense (friction zero there,
+    # as the analysis flags it): two links turning alike, a held cylinder's rod in its barrel
+    still = UNDEFINED * max(abs(drive.omega), abs(drive2.omega) if drive2 is not None else 0.0)
     gn = first_group(b) if drive.linear else f"I({GROUND},{drive.link})"
     it = st.add("force.friction", Op.FRICTION_ITERATE, (first_step(b),), Kind.SCALAR,
                 Role.RESULT, "F_d⁰" if drive.linear else "M_b⁰", gn, subject=(), loop=loop)
     b.result("M_b0", it)
+    if drive2 is not None and second is not None:   # its M_b⁰ or F_d⁰ of the friction-free pass
+        free2 = st.add("force.friction.second", Op.FRICTION_FREE, (it,), Kind.SCALAR,
+                       Role.RESULT, f"{second}⁰", group_of(b, drive2.link), subject=(),
+                       result=second)
+        b.result(SECOND_FREE, free2)
     for index, p in enumerate(pairs):
         fr = spec.of(p.a, p.b)
         key = reaction_key(p.a, p.b)
@@ -83,7 +100,7 @@ def friction_loads(st: State) -> None:
             label = f"M^f_{reaction_key(first, second)}"
             m = st.add(f"force.friction.M.{key}", Op.FRICTION_COUPLE, (it, *omegas), Kind.SCALAR,
                        Role.GIVEN, label, group_of(b, second), subject=(p.point, first, second),
-                       index=index, rho=fr.rho)
+                       index=index, rho=fr.rho, still=still)
             b.result(f"Mf_{reaction_key(first, second)}", m)
             add_load(st, second, Term(label, couple=m,
                                       direction=Direction(Relation.AGAINST,
@@ -108,7 +125,8 @@ def friction_loads(st: State) -> None:
                                    (held,) if held is not None else ())
         f = st.add(f"force.friction.F.{key}", Op.FRICTION_FORCE,
                    (it, velocity, theta, *moving), Kind.POINT, Role.GIVEN, label,
-                   group_of(b, slider), subject=(p.point, p.guide or ""), index=index, f=fr.f)
+                   group_of(b, slider), subject=(p.point, p.guide or ""), index=index, f=fr.f,
+                   still=still)
         b.result(f"Ff_{reaction_key(carrier, slider)}", f)
         relative = f"v_{p.point}{slider}{carrier}" if moving else f"v_{p.point}"
         add_load(st, slider, Term(label, f, b.pos[p.point],
