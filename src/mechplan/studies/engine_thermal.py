@@ -55,11 +55,11 @@ def thermal_lines(c: Cycle, V_h: float, lang: str, bore: float | None = None) ->
                    V_h=n(V_h * 1e3, 4))]
     out.insert(6, message(f"thermal4.report.fits_{s.heat_capacity}", lang))
     if s.products_fit is not None:
-        out.insert(7, message("thermal5.report.products_fit", lang, a=n(s.products_fit[0]),
-                              b=n(s.products_fit[1] * 1e4)))
+        out.insert(7, message("thermal5.report.products_fit", lang, a=n(s.products_fit[0], 3),
+                              b=n(s.products_fit[1] * 1e4, 3)))
     if s.charge_fit is not None:
-        out.insert(7, message("thermal5.report.charge_fit", lang, a=n(s.charge_fit[0]),
-                              b=n(s.charge_fit[1] * 1e3)))
+        out.insert(7, message("thermal5.report.charge_fit", lang, a=n(s.charge_fit[0], 3),
+                              b=n(s.charge_fit[1] * 1e3, 3)))
     if (s.clean_out, s.recharge, s.psi_r) != (1.0, 1.0, 1.0):
         out.insert(5, message("thermal4.report.intake", lang, clean=n(s.clean_out, 3),
                               recharge=n(s.recharge, 3), psi=n(s.psi_r, 3)))
