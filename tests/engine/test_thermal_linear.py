@@ -14,9 +14,9 @@ rounding of theirs):
   (mc_v)_c = 22.1 at T_c = 1094 K; page,7,68638 (2.4 "процес розширення"): ρ = 1.38,
   δ = 11.63; page,8,68638: T_b = 1078 K with n2 = 1.261, p_b = 5.229·10⁵ Pa, p_z = 11.53 MPa.
 
-Not reproduced: the same page's T_z (2000 → 2051 → 2045 K by iteration): its heat-capacity formula
-is an image, and the linear fits below with its printed inputs give 2035 K (2027 … 2042 K over
-their rounding) — see :func:`test_the_ukrbukva_T_z_is_not_these_fits`.
+The same page's T_z (2000 → 2051 → 2045 K by iteration; its heat-capacity formula is an image) is
+reproduced with a given products' fit in tests/engine/test_thermal_fits.py; the simplified fits
+below give 2035 K with its printed inputs.
 """
 
 from __future__ import annotations

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .engine_thermal import LOW, R_MU, Cycle, linear_air_cv, linear_products_cv
+from .engine_thermal import LOW, R_MU, Cycle, linear_air_cv, linear_fits
 
 #: the parts of the balance, in the order the courses print them
 PARTS = ("e", "w", "r", "ic", "rest")
@@ -49,7 +49,7 @@ def products_cv(cycle: Cycle, t: float) -> float:
     """Mean molar heat capacity at constant volume of the products at t (°C), kJ/(kmol·K), from
     0 °C: the mixture of the 0–1500 °C fits by mole fractions (or the linear fit at t + 273 K)."""
     if cycle.spec.heat_capacity == "linear":
-        a, b = linear_products_cv(cycle.spec.alpha)
+        a, b = linear_fits(cycle.spec)[1]
         return a + b * (t + 273.0)
     prod = cycle.products
     total = sum(prod.values())
@@ -57,11 +57,12 @@ def products_cv(cycle: Cycle, t: float) -> float:
                for g, v in prod.items()) / total
 
 
-def air_cv(t: float, heat_capacity: str = "table") -> float:
+def air_cv(t: float, heat_capacity: str = "table",
+           fit: tuple[float, float] | None = None) -> float:
     """Mean molar heat capacity at constant volume of air at t (°C), from 0 °C, kJ/(kmol·K)
-    (or the linear fit at t + 273 K)."""
+    (or the linear fit at t + 273 K: ``fit`` (a, b) where the scene gives its own)."""
     if heat_capacity == "linear":
-        return linear_air_cv(t + 273.0)
+        return fit[0] + fit[1] * (t + 273.0) if fit else linear_air_cv(t + 273.0)
     return 20.6 + 2.638e-3 * t
 
 
@@ -78,7 +79,7 @@ def heat_balance(cycle: Cycle, N_e: float, bore: float, cylinders: int) -> HeatB
         Q_w *= (s.H_u - cycle.dH_u) / s.H_u
     t_r, t0 = s.T_r - 273.0, s.T0 - 273.0
     Q_r = G_T / 3.6 * (cycle.M2 * (products_cv(cycle, t_r) + R_MU) * t_r
-                       - cycle.M1 * (air_cv(t0, s.heat_capacity) + R_MU) * t0)
+                       - cycle.M1 * (air_cv(t0, s.heat_capacity, s.charge_fit) + R_MU) * t0)
     Q_ic = cycle.dH_u * G_T / 3.6
     flows = {"e": N_e, "w": Q_w, "r": Q_r, "ic": Q_ic}
     flows["rest"] = Q0 - sum(flows.values())

@@ -32,6 +32,9 @@ LOW = {"CO2": (27.941, 0.019, -5.487e-6), "CO": (20.597, 0.00267, 0.0),
 HIGH = {"CO2": (39.123, 0.003349), "CO": (22.49, 0.00143), "H2O": (26.67, 0.004438),
         "H2": (19.678, 0.001758), "N2": (21.951, 0.001457), "O2": (23.723, 0.00155)}
 
+#: the fresh charge's simplified linear fit a + b·T (kJ/(kmol·K), T in K)
+CHARGE_LINEAR = (20.16, 1.74e-3)
+
 #: the heat-capacity fits of the combustion equation (scene key ``heat_capacity``)
 HEAT_CAPACITY = ("table", "linear")
 
@@ -77,6 +80,8 @@ class CycleSpec:
     recharge: float = 1.0        # φ_rc, the recharge coefficient
     psi_r: float = 1.0           # ψ of T_a: residual gases' to charge's heat capacity
     pumping: bool = False        # p_i less the pumping loop p_r − p_a (else in the mech. losses)
+    charge_fit: tuple[float, float] | None = None    # linear: the charge's a + b·T (else 20.16…)
+    products_fit: tuple[float, float] | None = None  # linear: the products' a + b·T at this α
 
 
 @dataclass(frozen=True)
@@ -142,7 +147,7 @@ def _mix(fractions: dict[str, float], t: float, high: bool) -> tuple[float, floa
 def linear_air_cv(T: float) -> float:
     """Mean molar heat capacity at constant volume of the fresh charge (air), the simplified
     linear fit 20.16 + 1.74·10⁻³·T, kJ/(kmol·K), T in K."""
-    return 20.16 + 1.74e-3 * T
+    return CHARGE_LINEAR[0] + CHARGE_LINEAR[1] * T
 
 
 def linear_products_cv(alpha: float) -> tuple[float, float]:
@@ -154,15 +159,26 @@ def linear_products_cv(alpha: float) -> tuple[float, float]:
     return 18.4 + 2.6 * alpha, (15.5 + 13.8 * alpha) * 1e-4
 
 
+def linear_fits(s: CycleSpec) -> tuple[tuple[float, float], tuple[float, float]]:
+    """((a, b) of the fresh charge, (a, b) of the products) of the linear fits mc_v = a + b·T
+    (T in K) for a spec: the scene's own coefficients where given (``charge_cv``,
+    ``products_cv``), else the simplified fits above."""
+    return s.charge_fit or CHARGE_LINEAR, s.products_fit or linear_products_cv(s.alpha)
+
+
 def combustion_linear(diesel: bool, alpha: float, heat: float, M1: float, gamma_r: float,
-                      mu: float, lam: float, T_c: float, R: float = R_MU) -> float:
+                      mu: float, lam: float, T_c: float, R: float = R_MU,
+                      charge: tuple[float, float] | None = None,
+                      products: tuple[float, float] | None = None) -> float:
     """T_z (K) of the combustion equation with the linear fits, in kelvin as the course works
     write it: heat/(M1(1 + γ_r)) + mc_v(T_c)·T_c [+ R·λ·T_c] = μ·(mc″_v(T_z) [+ R])·T_z, the
     bracketed terms for a diesel; ``heat`` = ξ_z·(H_u − ΔH_u) in kJ/kg, mc_v of the fresh
     charge alone (the residual gases' share is not counted, as the sources print it). The
-    quadratic's positive root, which the courses' fixed-point iteration converges to."""
-    a, b = linear_products_cv(alpha)
-    left = heat / (M1 * (1.0 + gamma_r)) + linear_air_cv(T_c) * T_c
+    quadratic's positive root, which the courses' fixed-point iteration converges to.
+    ``charge`` and ``products`` (a, b) replace the simplified fits (a textbook's own)."""
+    a, b = products or linear_products_cv(alpha)
+    cv_c = charge[0] + charge[1] * T_c if charge else linear_air_cv(T_c)
+    left = heat / (M1 * (1.0 + gamma_r)) + cv_c * T_c
     if diesel:
         left += R * lam * T_c
         a += R
@@ -266,8 +282,9 @@ def thermal_cycle(s: CycleSpec) -> Cycle:
     p_c, T_c = compression(s.p_a, T_a, eps, s.n1)
     mu = (mu0 + gamma_r) / (1.0 + gamma_r)
     if s.heat_capacity == "linear":
+        charge, products = linear_fits(s)
         T_z = combustion_linear(s.diesel, s.alpha, s.xi_z * (s.H_u - dH), M1, gamma_r, mu,
-                                s.lambda_p, T_c)
+                                s.lambda_p, T_c, charge=charge, products=products)
     else:
         T_z = _combustion_table(s, prod, M1, gamma_r, mu, T_c, dH)
     if s.diesel:

@@ -17,7 +17,7 @@ KEYS = ("cycle", "fuel", "C", "H", "O", "heating_value", "fuel_molar_mass", "alp
         "eta_m", "power_kW", "stroke_bore", "intake_losses", "intake_velocity", "coolant_c",
         "coolant_m", "combustion", "combustion_start", "combustion_duration", "wiebe_m",
         "wiebe_a", "air_oxygen", "heat_capacity", "clean_out", "recharge", "residual_heat",
-        "pumping_loss")
+        "pumping_loss", "charge_cv", "products_cv")
 
 
 def _number(t: Table, name: str, default: float | None, lo: float, hi: float,
@@ -48,6 +48,22 @@ def _intake(t: Table, p0: float, T0: float) -> float:
     if not p_a > 0.3 * p0:
         raise t.error("intake_velocity", Text("cycle.error.intake_loss", {"p_a": p_a * 1e-3}))
     return p_a
+
+
+def _fit(t: Table, name: str, fits: str, lo: float, hi: float) -> tuple[float, float] | None:
+    """A linear heat-capacity fit given by its coefficients ``[a, b]`` (mc_v = a + b·T,
+    kJ/(kmol·K), T in K): only with ``heat_capacity = "linear"``; a within [lo, hi], b within
+    0 … 0.01."""
+    if not t.has(name):
+        return None
+    raw = t.raw(name)
+    if fits != "linear":
+        raise t.error(name, Text("thermal5.error.fit_table"))
+    ok = (isinstance(raw, list) and len(raw) == 2
+          and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in raw))
+    if not ok or not (lo <= raw[0] <= hi and 0.0 <= raw[1] <= 0.01):
+        raise t.error(name, Text("thermal5.error.fit", {"lo": lo, "hi": hi}))
+    return float(raw[0]), float(raw[1])
 
 
 def _wiebe(t: Table, c: Cycle, strokes: int, lam: float) -> Cycle:
@@ -118,6 +134,8 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
     m_w = _number(t, "coolant_m", 0.65, 0.5, 0.8, "m of the coolant's heat (heat balance)")
     o2 = _number(t, "air_oxygen", 0.208, 0.2, 0.22, "O2 in air by volume")
     fits = t.string("heat_capacity", "table", choices=HEAT_CAPACITY) or "table"
+    charge_fit = _fit(t, "charge_cv", fits, 15.0, 30.0)
+    products_fit = _fit(t, "products_cv", fits, 15.0, 35.0)
     clean = _number(t, "clean_out", 1.0, 0.0, 1.0, "the clean-out coefficient φ_cl")
     recharge = _number(t, "recharge", 1.0, 0.9, 1.2, "the recharge coefficient φ_rc")
     psi = _number(t, "residual_heat", 1.0, 0.8, 1.3, "ψ of T_a (residual gases' heat capacity)")
@@ -129,7 +147,7 @@ def parse_thermal(t: Table, *, strokes: int, cylinders: int, speed: float, p0: f
                      speed * 30.0 / 3.141592653589793, p_amb, T0, dT, p_a, p_r, T_r, n1, n2, xi,
                      lam_p, K, phi_i, eta_m, strokes, cylinders,
                      power * 1e3 if power is not None else None, S_D, c_w, m_w, o2, fits, clean,
-                     recharge, psi, pumping)
+                     recharge, psi, pumping, charge_fit, products_fit)
     cycle = thermal_cycle(spec)
     if not cycle.rho < eps:
         raise t.error("xi_z", Text("cycle.error.rho", {"rho": cycle.rho}))

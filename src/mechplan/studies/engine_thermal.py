@@ -54,6 +54,12 @@ def thermal_lines(c: Cycle, V_h: float, lang: str, bore: float | None = None) ->
            message("cycle.report.power", lang, N_e=n(c.power(V_h) * 1e-3, 2),
                    V_h=n(V_h * 1e3, 4))]
     out.insert(6, message(f"thermal4.report.fits_{s.heat_capacity}", lang))
+    if s.products_fit is not None:
+        out.insert(7, message("thermal5.report.products_fit", lang, a=n(s.products_fit[0], 3),
+                              b=n(s.products_fit[1] * 1e4, 3)))
+    if s.charge_fit is not None:
+        out.insert(7, message("thermal5.report.charge_fit", lang, a=n(s.charge_fit[0], 3),
+                              b=n(s.charge_fit[1] * 1e3, 3)))
     if (s.clean_out, s.recharge, s.psi_r) != (1.0, 1.0, 1.0):
         out.insert(5, message("thermal4.report.intake", lang, clean=n(s.clean_out, 3),
                               recharge=n(s.recharge, 3), psi=n(s.psi_r, 3)))
@@ -89,6 +95,8 @@ def thermal_json(c: Cycle, V_h: float, bore: float | None = None) -> dict[str, A
     s = c.spec
     doc: dict[str, Any] = {
         "diesel": s.diesel, "heat_capacity": s.heat_capacity,
+        "charge_cv": list(s.charge_fit) if s.charge_fit else None,
+        "products_cv": list(s.products_fit) if s.products_fit else None,
         "clean_out": s.clean_out, "recharge": s.recharge, "residual_heat": s.psi_r,
         "pumping_loss": "indicated" if s.pumping else "mechanical", "alpha": s.alpha,
         "epsilon": s.epsilon, "L0": c.L0, "l0": c.l0,
