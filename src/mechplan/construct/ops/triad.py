@@ -46,8 +46,23 @@ def triad_angle(step: Step, a1: Array, a2: Array, a3: Array) -> Result:
 
 
 def triad_point(step: Step, a1: Array, a2: Array, angle: Array) -> Result:
-    """B_1: the arc (A_1, l_1) meets the arc (A_2 − R(θ)·d2, l_2), branch ``sigma``."""
+    """B_1: the arc (A_1, l_1) meets the arc (A_2 − R(θ)·d2, l_2), branch ``sigma``;
+    ``triad_solve.BLOCK`` positions at a time (each alone: the same values), so that the
+    temporaries stay in the cache and in memory already mapped."""
     t = params(step)
+    n = angle.shape[0] if angle.ndim == 1 else 0
+    if n <= triad_solve.BLOCK or a1.shape != (n, 2) or a2.shape != (n, 2):
+        return _triad_point(t, a1, a2, angle)
+    point = np.empty((n, 2), np.result_type(a1, a2, angle))
+    gap, sine = np.empty(n, point.dtype), np.empty(n, point.dtype)
+    for i in range(0, n, triad_solve.BLOCK):
+        part = slice(i, i + triad_solve.BLOCK)
+        point[part], gap[part], sine[part] = _triad_point(t, a1[part], a2[part], angle[part])
+    return point, gap, sine
+
+
+def _triad_point(t: Triad, a1: Array, a2: Array, angle: Array) -> tuple[Array, Array, Array]:
+    """:func:`triad_point` at once."""
     c, s = np.cos(angle), np.sin(angle)
     d2 = t.d2
     centre = np.empty(np.broadcast_shapes(a2.shape, angle.shape + (2,)),
