@@ -79,15 +79,17 @@ def _triad_point(t: Triad, a1: Array, a2: Array, angle: Array) -> tuple[Array, A
 
 def line_through(step: Step, p: Array, q: Array) -> Result:
     """The line of a leg on the position plan: through P and Q."""
-    dx, dy = q[..., 0] - p[..., 0], q[..., 1] - p[..., 1]
+    out = np.empty(np.broadcast_shapes(p.shape, q.shape)[:-1] + (2, 2), np.result_type(p, q))
+    out[..., 0, 0], out[..., 0, 1] = p[..., 0], p[..., 1]
+    dx, dy = out[..., 1, 0], out[..., 1, 1]               # the direction, in place: fewer fresh
+    np.subtract(q[..., 0], p[..., 0], out=dx)              # arrays (each one's pages are touched
+    np.subtract(q[..., 1], p[..., 1], out=dy)              # for the first time in one run)
     n = dx * dx
     n += dy * dy
     np.sqrt(n, out=n)
-    out = np.empty(np.broadcast_shapes(p.shape, q.shape)[:-1] + (2, 2), np.result_type(p, q))
-    out[..., 0, 0], out[..., 0, 1] = p[..., 0], p[..., 1]
     with np.errstate(invalid="ignore", divide="ignore"):
-        np.divide(dx, n, out=out[..., 1, 0])
-        np.divide(dy, n, out=out[..., 1, 1])
+        dx /= n
+        dy /= n
     return out, None, None
 
 
