@@ -122,7 +122,19 @@ def carrier_angle(step: Step, pivot: Array, slider: Array) -> Result:
 
 def place(step: Step, origin: Array, angle: Array) -> Result:
     """A point of a link: ``offset`` in link coordinates from the origin, turned by the angle."""
-    return origin + rotate(np.asarray(step.param("offset"), dtype=origin.dtype), angle), None, None
+    ox, oy = np.asarray(step.param("offset"), dtype=origin.dtype)
+    c, s = np.cos(angle), np.sin(angle)
+    # origin + rotate(offset, angle), one component at a time in place (the same values, fewer
+    # fresh arrays)
+    out = np.empty(np.broadcast_shapes(origin.shape, np.shape(c) + (2,)), np.result_type(origin, c))
+    x, y = out[..., 0], out[..., 1]
+    np.multiply(c, ox, out=x)
+    x -= s * oy
+    x += origin[..., 0]
+    np.multiply(s, ox, out=y)
+    y += c * oy
+    y += origin[..., 1]
+    return out, None, None
 
 
 def similar_position(step: Step, a: Array, b: Array) -> Result:
