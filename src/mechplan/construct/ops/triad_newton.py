@@ -110,8 +110,10 @@ def _pure(a1: Array, a2: Array, a3: Array, c: Cells, t: Triad, out: tuple[Array,
     :func:`_guarded`."""
     theta, f_at, fp_at, sine_at = out
     idx = np.nonzero(c.found)[0]
-    lo, hi, flo, fhi = c.lo[idx], c.hi[idx], c.flo[idx], c.fhi[idx]
-    a = tuple(np.ascontiguousarray(p[idx, j]) for p in (a1, a2, a3) for j in (0, 1))
+    every = idx.size == c.found.size                      # as often: no gathers, the same values
+    pick: Array | slice = slice(None) if every else idx
+    lo, hi, flo, fhi = c.lo[pick], c.hi[pick], c.flo[pick], c.fhi[pick]
+    a = tuple(np.ascontiguousarray(p[pick, j]) for p in (a1, a2, a3) for j in (0, 1))
     small = RESIDUAL_ULPS * np.finfo(float).eps * t.size
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         x = hi - fhi * (hi - lo) / (fhi - flo)
