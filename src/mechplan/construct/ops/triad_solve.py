@@ -245,11 +245,12 @@ def select(a1: Array, a2: Array, a3: Array, t: Triad) -> Cells:
     return cells
 
 
-#: a block's temporaries stay in the cache and in memory already mapped: the window's (7, N)
-#: arrays of 4 096 positions stay under the allocator's thresholds, so the memory a block frees
-#: is the next one's (measured on 100 000 positions in a fresh process: 8 192 at a time
-#: faulted 6 000–7 000 fresh pages, 4 096 at a time 400, and took 0.75× the time)
-BLOCK = 4096
+#: a block's temporaries stay in the cache and in memory already mapped: the memory a block
+#: frees is the next one's where blocks are small enough for the allocator to keep it (measured
+#: on 100 000 positions in a fresh process, glibc's default thresholds: 8 192 at a time every
+#: block touched fresh pages, 9 000 in all, 530 ns a position; 6 144 at a time 700 pages and
+#: 380 ns; 4 096 at a time 480 pages and 420 ns, the Python overhead of more blocks)
+BLOCK = 6144
 
 
 def solve(a1: Array, a2: Array, a3: Array, t: Triad) -> tuple[Array, Array, Array]:
