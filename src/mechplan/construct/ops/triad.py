@@ -18,6 +18,7 @@ from ...geom import meet
 from ...geom.vec import Array
 from ..step import Step
 from . import triad_solve
+from .position import cos_sin
 from .spec import Drawn, Grade, Hint, HintView, Line, OpSpec, Result, Written, hint, measured
 from .triad_solve import Triad
 
@@ -45,28 +46,31 @@ def triad_angle(step: Step, a1: Array, a2: Array, a3: Array) -> Result:
     return triad_solve.solve(a1, a2, a3, params(step))
 
 
-def triad_point(step: Step, a1: Array, a2: Array, angle: Array) -> Result:
+def triad_point(step: Step, a1: Array, a2: Array, angle: Array, *,
+                shared: dict[tuple[str, ...], Array] | None = None) -> Result:
     """B_1: the arc (A_1, l_1) meets the arc (A_2 − R(θ)·d2, l_2), branch ``sigma``;
     ``triad_solve.BLOCK`` positions at a time (each alone: the same values), so that the
-    temporaries stay in the cache and in memory already mapped."""
+    temporaries stay in the cache and in memory already mapped; cos θ and sin θ computed once
+    for every step that turns by θ."""
     t = params(step)
+    c, s = cos_sin(step.input("angle") if shared is not None else "", angle, shared)
     n = angle.shape[0] if angle.ndim == 1 else 0
     if n <= triad_solve.BLOCK or a1.shape != (n, 2) or a2.shape != (n, 2):
-        return _triad_point(t, a1, a2, angle)
+        return _triad_point(t, a1, a2, c, s)
     point = np.empty((n, 2), np.result_type(a1, a2, angle))
     gap, sine = np.empty(n, point.dtype), np.empty(n, point.dtype)
     for i in range(0, n, triad_solve.BLOCK):
         part = slice(i, i + triad_solve.BLOCK)
-        point[part], gap[part], sine[part] = _triad_point(t, a1[part], a2[part], angle[part])
+        point[part], gap[part], sine[part] = _triad_point(t, a1[part], a2[part], c[part],
+                                                          s[part])
     return point, gap, sine
 
 
-def _triad_point(t: Triad, a1: Array, a2: Array, angle: Array) -> tuple[Array, Array, Array]:
-    """:func:`triad_point` at once."""
-    c, s = np.cos(angle), np.sin(angle)
+def _triad_point(t: Triad, a1: Array, a2: Array, c: Array, s: Array
+                 ) -> tuple[Array, Array, Array]:
+    """:func:`triad_point` at once, from cos θ and sin θ."""
     d2 = t.d2
-    centre = np.empty(np.broadcast_shapes(a2.shape, angle.shape + (2,)),
-                      np.result_type(a2, angle))
+    centre = np.empty(np.broadcast_shapes(a2.shape, np.shape(c) + (2,)), np.result_type(a2, c))
     x, y = centre[..., 0], centre[..., 1]                 # component-wise, in place
     np.multiply(c, d2[0], out=x)
     x -= s * d2[1]
