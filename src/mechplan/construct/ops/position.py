@@ -120,9 +120,40 @@ def carrier_angle(step: Step, pivot: Array, slider: Array) -> Result:
     return angle_of(rel) - angle_of(hit), gap, sine
 
 
-def place(step: Step, origin: Array, angle: Array) -> Result:
-    """A point of a link: ``offset`` in link coordinates from the origin, turned by the angle."""
-    return origin + rotate(np.asarray(step.param("offset"), dtype=origin.dtype), angle), None, None
+def place(step: Step, origin: Array, angle: Array, *,
+          shared: dict[tuple[str, ...], Array] | None = None) -> Result:
+    """A point of a link: ``offset`` in link coordinates from the origin, turned by the angle
+    (its cosine and sine computed once for every step that turns by it)."""
+    ox, oy = np.asarray(step.param("offset"), dtype=origin.dtype)
+    c, s = cos_sin(step.input("angle") if shared is not None else "", angle, shared)
+    # origin + rotate(offset, angle), one component at a time in place (the same values, fewer
+    # fresh arrays)
+    out = np.empty(np.broadcast_shapes(origin.shape, np.shape(c) + (2,)), np.result_type(origin, c))
+    x, y = out[..., 0], out[..., 1]
+    np.multiply(c, ox, out=x)
+    x -= s * oy
+    x += origin[..., 0]
+    np.multiply(s, ox, out=y)
+    y += c * oy
+    y += origin[..., 1]
+    return out, None, None
+
+
+def cos_sin(key: str, angle: Array, shared: dict[tuple[str, ...], Array] | None
+            ) -> tuple[Array, Array]:
+    """cos and sin of the angle the step ``key`` evaluated, kept in ``shared`` (one evaluation)
+    for the other steps that turn by it."""
+    name = ("cos_sin", key)
+    if shared is not None and name in shared:
+        c, s = shared[name]
+        return c, s
+    angle = np.asarray(angle)
+    both = np.empty((2, *angle.shape), angle.dtype if angle.dtype.kind == "f" else float)
+    np.cos(angle, out=both[0, ...])
+    np.sin(angle, out=both[1, ...])
+    if shared is not None:
+        shared[name] = both
+    return both[0], both[1]
 
 
 def similar_position(step: Step, a: Array, b: Array) -> Result:

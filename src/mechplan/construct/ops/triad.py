@@ -18,6 +18,7 @@ from ...geom import meet
 from ...geom.vec import Array
 from ..step import Step
 from . import triad_solve
+from .position import cos_sin
 from .spec import Drawn, Grade, Hint, HintView, Line, OpSpec, Result, Written, hint, measured
 from .triad_solve import Triad
 
@@ -45,13 +46,31 @@ def triad_angle(step: Step, a1: Array, a2: Array, a3: Array) -> Result:
     return triad_solve.solve(a1, a2, a3, params(step))
 
 
-def triad_point(step: Step, a1: Array, a2: Array, angle: Array) -> Result:
-    """B_1: the arc (A_1, l_1) meets the arc (A_2 − R(θ)·d2, l_2), branch ``sigma``."""
+def triad_point(step: Step, a1: Array, a2: Array, angle: Array, *,
+                shared: dict[tuple[str, ...], Array] | None = None) -> Result:
+    """B_1: the arc (A_1, l_1) meets the arc (A_2 − R(θ)·d2, l_2), branch ``sigma``;
+    ``triad_solve.BLOCK`` positions at a time (each alone: the same values), so that the
+    temporaries stay in the cache and in memory already mapped; cos θ and sin θ computed once
+    for every step that turns by θ."""
     t = params(step)
-    c, s = np.cos(angle), np.sin(angle)
+    c, s = cos_sin(step.input("angle") if shared is not None else "", angle, shared)
+    n = angle.shape[0] if angle.ndim == 1 else 0
+    if n <= triad_solve.BLOCK or a1.shape != (n, 2) or a2.shape != (n, 2):
+        return _triad_point(t, a1, a2, c, s)
+    point = np.empty((n, 2), np.result_type(a1, a2, angle))
+    gap, sine = np.empty(n, point.dtype), np.empty(n, point.dtype)
+    for i in range(0, n, triad_solve.BLOCK):
+        part = slice(i, i + triad_solve.BLOCK)
+        point[part], gap[part], sine[part] = _triad_point(t, a1[part], a2[part], c[part],
+                                                          s[part])
+    return point, gap, sine
+
+
+def _triad_point(t: Triad, a1: Array, a2: Array, c: Array, s: Array
+                 ) -> tuple[Array, Array, Array]:
+    """:func:`triad_point` at once, from cos θ and sin θ."""
     d2 = t.d2
-    centre = np.empty(np.broadcast_shapes(a2.shape, angle.shape + (2,)),
-                      np.result_type(a2, angle))
+    centre = np.empty(np.broadcast_shapes(a2.shape, np.shape(c) + (2,)), np.result_type(a2, c))
     x, y = centre[..., 0], centre[..., 1]                 # component-wise, in place
     np.multiply(c, d2[0], out=x)
     x -= s * d2[1]
@@ -64,15 +83,17 @@ def triad_point(step: Step, a1: Array, a2: Array, angle: Array) -> Result:
 
 def line_through(step: Step, p: Array, q: Array) -> Result:
     """The line of a leg on the position plan: through P and Q."""
-    dx, dy = q[..., 0] - p[..., 0], q[..., 1] - p[..., 1]
+    out = np.empty(np.broadcast_shapes(p.shape, q.shape)[:-1] + (2, 2), np.result_type(p, q))
+    out[..., 0, 0], out[..., 0, 1] = p[..., 0], p[..., 1]
+    dx, dy = out[..., 1, 0], out[..., 1, 1]               # the direction, in place: fewer fresh
+    np.subtract(q[..., 0], p[..., 0], out=dx)              # arrays (each one's pages are touched
+    np.subtract(q[..., 1], p[..., 1], out=dy)              # for the first time in one run)
     n = dx * dx
     n += dy * dy
     np.sqrt(n, out=n)
-    out = np.empty(np.broadcast_shapes(p.shape, q.shape)[:-1] + (2, 2), np.result_type(p, q))
-    out[..., 0, 0], out[..., 0, 1] = p[..., 0], p[..., 1]
     with np.errstate(invalid="ignore", divide="ignore"):
-        np.divide(dx, n, out=out[..., 1, 0])
-        np.divide(dy, n, out=out[..., 1, 1])
+        dx /= n
+        dy /= n
     return out, None, None
 
 

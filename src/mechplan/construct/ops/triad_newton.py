@@ -19,9 +19,10 @@ from .triad_closure import (
 
 
 def _slope_at(a: tuple[Array, ...], x: Array, t: Triad) -> tuple[Array, Array, Array]:
-    """f, the arcs' sine and f′ at θ = ``x`` (``a``: the points' coordinates as rows (N,)):
-    :func:`closure`'s formulas in its order of operations — the same values — with fewer
-    temporaries (the Newton iteration's inner step)."""
+    """f, the arcs' sine and f′ at θ = ``x`` (``a``: the points' coordinates as rows (N,)): f
+    and the sine by :func:`closure`'s formulas in its order of operations — the same values —
+    with fewer temporaries, f′ by implicit differentiation (equal to :func:`closure`'s within
+    roundings; the Newton iteration's inner step)."""
     l1, l2, l3, sg = t.l1, t.l2, t.l3, t.sigma
     (d20, d21), (d30, d31) = t.d2, t.d3
     a1x, a1y, a2x, a2y, a3x, a3y = a
@@ -61,6 +62,8 @@ def _slope_at(a: tuple[Array, ...], x: Array, t: Triad) -> tuple[Array, Array, A
         u3x -= s * d31
         u3y = s * d30
         u3y += c * d31
+        px = rx - a1x                                      # B_1 − A_1 (for f′ only)
+        py = ry - a1y
         rx -= a3x
         rx += u3x
         ry -= a3y
@@ -72,36 +75,25 @@ def _slope_at(a: tuple[Array, ...], x: Array, t: Triad) -> tuple[Array, Array, A
         sine = np.abs(h)
         sine *= dd
         sine /= l1 * l2
-        ddp = dx * u2y
-        ddp -= dy * u2x
-        ddp *= 2.0
-        two *= dd                                          # 2·dd·dd
-        alongp = ddp * -k
-        alongp /= two
-        inner = big - small
-        inner *= dd
-        big *= 2.0
-        big *= small
-        inner -= big                                       # (big − small)·dd − 2·big·small
-        four *= dd                                         # 4·dd·dd·dd
-        hp = ddp * inner
-        hp /= four
-        hp /= 2.0 * h
-        bxp = alongp * dx
-        bxp += along * u2y
-        bxp -= hp * dy
-        bxp += h * u2x
-        byp = alongp * dy
-        byp -= along * u2x
-        byp += hp * dx
-        byp += h * u2y
-        bxp -= u3y
-        bxp *= rx
-        byp += u3x
-        byp *= ry
-        bxp += byp
-        bxp /= rr
-    return f, sine, bxp
+        # f′ by implicit differentiation: B_1′ = λ·perp(B_1 − A_1) keeps the first arc, and the
+        # second, |B_1 − C_2| = l_2 with C_2 = A_2 − R(θ)·d2, gives λ·(B_1 − A_1) × (B_1 − C_2)
+        # = (B_1 − C_2)·C_2′ with C_2′ = (u2y, −u2x) and (B_1 − A_1) × (B_1 − C_2) = h·dd; then
+        # f′ = r·(B_1′ + perp(R(θ)·d3)) / |r|. Fewer operations than the chain rule through the
+        # half-chord; f′ only steers the steps (the root is where f is zero).
+        lam = px - dx                                      # B_1 − C_2
+        lam *= u2y
+        qy = py - dy
+        qy *= u2x
+        lam -= qy
+        h *= dd
+        lam /= h                                           # λ (infinite at a domain edge)
+        out = ry * px
+        out -= rx * py                                     # r · perp(B_1 − A_1)
+        out *= lam
+        out += ry * u3x
+        out -= rx * u3y                                    # + r · perp(R(θ)·d3)
+        out /= rr
+    return f, sine, out
 
 
 
@@ -118,8 +110,10 @@ def _pure(a1: Array, a2: Array, a3: Array, c: Cells, t: Triad, out: tuple[Array,
     :func:`_guarded`."""
     theta, f_at, fp_at, sine_at = out
     idx = np.nonzero(c.found)[0]
-    lo, hi, flo, fhi = c.lo[idx], c.hi[idx], c.flo[idx], c.fhi[idx]
-    a = tuple(np.ascontiguousarray(p[idx, j]) for p in (a1, a2, a3) for j in (0, 1))
+    every = idx.size == c.found.size                      # as often: no gathers, the same values
+    pick: Array | slice = slice(None) if every else idx
+    lo, hi, flo, fhi = c.lo[pick], c.hi[pick], c.flo[pick], c.fhi[pick]
+    a = tuple(np.ascontiguousarray(p[pick, j]) for p in (a1, a2, a3) for j in (0, 1))
     small = RESIDUAL_ULPS * np.finfo(float).eps * t.size
     with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
         x = hi - fhi * (hi - lo) / (fhi - flo)
