@@ -2,12 +2,12 @@
 and cannot-build mask (issue 29).
 
 Configurations: the template ``six_bar_triad_slider`` (``RRP-RRR``, a frame guide), its slider on a
-guide of the crank (Coriolis terms; the group closes over part of the turn only), its guide turned
-to 120° (the slider leg's normal gives the special point), two slider legs (``RPP-RRR``), a block
-on the base link (``RRR-RRP``), and the template with the leg AB shortened to 100 mm, whose group
-stops closing inside the turn: its ends, found by bisection on the numpy path, are sampled at 1°,
-1e-3°, 1e-6°, 1e-9° and 0° on either side (the group's Jacobian singular there: flagged, then
-refused). Every position of a full turn (0.5° apart) besides.
+guide of the crank (Coriolis terms), its guide turned to 120° (the slider leg's normal gives the
+special point), two slider legs (``RPP-RRR``), three (``PPP-RRR``, one on a guide of the crank), a
+block on the base link (``RRR-RRP``), and the template with the leg AB shortened to 100 mm. Every
+position of a full turn (0.5° apart); where a group stops closing inside the turn (the crank's
+guide, three sliders, the shortened leg), its ends — found by bisection on the numpy path, the
+group's Jacobian singular there — sampled 1°, 1e-3°, 1e-6°, 1e-9° and 0° away on either side.
 
 - values: ≤ 1e-14 of the larger of the plan's scale and the value's own size, at every position
   both paths build; NaN at the same positions;
@@ -51,12 +51,24 @@ def _shortened() -> str:
     return text.replace('B = ["120 mm", "89 mm"]\n', "")
 
 
+def _three_sliders() -> str:
+    """Two slider legs (``_two_sliders``) and the leg AB replaced by a slider B on a guide of the
+    crank through O, 36.56° from OA: a group PPP-RRR (three guide lines; B_1 the meet of two
+    lines), closing over part of the turn."""
+    t = _two_sliders().replace(
+        'lengths = { OA = "40 mm" }',
+        'lengths = { OA = "40 mm" }\nguides.h = { through = "O", angle = "36.56 deg" }')
+    return (t[:t.index("[links.2]")] + '[links.2]\nname = "slider B"\nslides = { point = "B", '
+            'on = "h" }\n\n' + t[t.index("[links.3]"):])
+
+
 CONFIGS = {
     "six_bar_triad_slider": lambda: TEMPLATE.read_text(encoding="utf-8"),
     "crank_guide_coriolis": _coriolis_scene,
     "guide_turned_120": lambda: _turned(120),
     "two_sliders_RPP": _two_sliders,
     "block_RRQ": _block,
+    "three_sliders_PPP": _three_sliders,
     "shortened_singular": _shortened,
 }
 
