@@ -215,3 +215,46 @@ def test_the_public_fast_path_uses_the_kernel(cache, monkeypatch):
             assert np.max(np.abs(mine - theirs)) <= 1e-14 * max(1.0, float(np.max(np.abs(theirs))))
     assert math.isclose(float(np.max(np.abs(quick.omega["3"] - slow.omega["3"]))), 0.0,
                         abs_tol=1e-12)
+
+
+def test_every_sliding_operation_has_a_scalar_form():
+    from mechplan.construct.kernel_scalar import SCALAR_FORMS
+
+    assert {Op.TRIADP_ANGLE, Op.TRIADP_POINT, Op.NORMAL_THROUGH} <= set(SCALAR_FORMS)
+    assert Op.LEG_NORMAL_FORCE not in SCALAR_FORMS          # a force step
+
+
+def test_the_scalar_solver_is_the_numpy_solver_at_a_double_root():
+    """The group of ``test_triadp.test_singular_group_is_flagged_then_refused`` (the three legs'
+    lines through one point: a double root), its guide moved across it in steps of 1e-5 m: θ,
+    the gap and the sine of the one-position solver (compiled, and as plain Python) are
+    ``triadp_solve.solve``'s — regular, flagged and refused positions alike."""
+    from mechplan.construct import kernel_triadp as kt
+    from mechplan.construct.ops import triadp_solve as ts
+
+    b = [np.array([0.0, 0.0]), np.array([0.08, 0.0]), np.array([0.04, 0.06])]
+    q = np.array([0.04, -0.10])
+    a = [bb + 0.09 * (bb - q) / np.linalg.norm(bb - q) for bb in b[:2]]
+    n3 = (b[2] - q) / np.linalg.norm(b[2] - q)
+    u3 = np.array([-n3[1], n3[0]])
+    shifts = np.linspace(-4e-4, 4e-4, 81)
+    one, two = np.repeat(a[0][None], shifts.size, 0), np.repeat(a[1][None], shifts.size, 0)
+    guide = np.stack((b[2] + shifts[:, None] * n3, np.repeat(u3[None], shifts.size, 0)), axis=1)
+    solvers = [getattr(kt._triadp_angle, "py_func", kt._triadp_angle), kt._triadp_angle]
+    seen = set()
+    for sigma in (1, -1):
+        for slope in (1, -1):
+            g = ts.Group("RRP", (0.09, 0.09, 0.0), tuple(b[1] - b[0]), tuple(b[2] - b[0]), sigma,
+                         slope, 0.0)
+            theta, gap, sine = ts.solve((one, two, guide), g)
+            seen |= {("closed" if s > 1e-3 else "flagged") if np.isfinite(t) else "refused"
+                     for t, s in zip(theta, sine, strict=True)}
+            trig = kt.grid_trig(g.ref)
+            for solver in solvers:
+                for k in range(shifts.size):
+                    lc = (*one[k], 0.0, 0.0, *two[k], 0.0, 0.0, *guide[k, 0], *guide[k, 1])
+                    got = solver(lc, (0, 0, 1), kt.group_args(g), kt.CONSTANTS, *trig)
+                    for mine, theirs in zip(got, (theta[k], gap[k], sine[k]), strict=True):
+                        assert mine == theirs or (np.isnan(mine) and np.isnan(theirs)) or \
+                            abs(mine - theirs) <= 4 * EPS * abs(theirs), (k, sigma, slope)
+    assert seen == {"closed", "flagged", "refused"}
