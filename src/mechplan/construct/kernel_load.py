@@ -36,13 +36,13 @@ class KernelUnsupported(KernelUnavailable):
 
 
 def _helpers_digest() -> str:
-    """The digest of the helpers every kernel calls: ``kernel_helpers.py``, ``kernel_triad.py``
-    and the triad solver's constants in ``ops/triad_closure.py`` (read, not imported: importing
-    them imports numba)."""
+    """The digest of the helpers every kernel calls: ``kernel_helpers.py``, ``kernel_triad.py``,
+    ``kernel_triadp.py`` and the triad solver's constants in ``ops/triad_closure.py`` (read, not
+    imported: importing them imports numba)."""
     here = Path(__file__)
     text = b"".join((here.parent / name).read_bytes()
                     for name in ("kernel_helpers.py", "kernel_triad.py", "ops/triad_closure.py",
-                                 "kernel_law.py"))
+                                 "kernel_law.py", "kernel_triadp.py"))
     return hashlib.sha256(text).hexdigest()[:16]
 
 
@@ -55,6 +55,7 @@ import numpy as np
 
 from mechplan.construct.kernel_helpers import _below1, _cdiv, _div, _div_nz, _height, _hyp
 from mechplan.construct.kernel_triad import _triad_angle
+from mechplan.construct.kernel_triadp import _triadp_angle
 from mechplan.construct.kernel_law import _law_at, _law_time, _where_finite
 
 # helpers {_helpers_digest()}

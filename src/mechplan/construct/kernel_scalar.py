@@ -232,18 +232,19 @@ def _circle_circle(g: ScalarGen, s: Step, n: str) -> str:
 
 def circle_meet(g: ScalarGen, s: Step, n: str, r1: str, r2: str,
                 sine_squared: bool = False,
-                centres: tuple[tuple[str, str], tuple[str, str]] | None = None) -> str:
+                centres: tuple[tuple[str, str], tuple[str, str]] | None = None,
+                squares: tuple[str, str] | None = None) -> str:
     """Two compass arcs about ``centre1``, ``centre2`` (or the ``centres`` given as source
     expressions) of radii ``r1``, ``r2`` (source expressions) meeting at point ``n`` on the
     step's side; its sine (squared when one radius is driven: the conditioning of a driven
-    length, docs/drivers.md)."""
+    length, docs/drivers.md). ``squares``: (r1 + r2)² and (r1 − r2)² as given expressions."""
     (ax, ay), (bx, by) = centres or (g.pt(s.input("centre1")), g.pt(s.input("centre2")))
     sigma = literal(s.param("sigma"))
+    big, small = squares or (f"({r1} + {r2}) ** 2", f"({r1} - {r2}) ** 2")
     g.emit(f"_dx = {bx} - {ax}", f"_dy = {by} - {ay}", "_d = _hyp(_dx, _dy)",
            f"_gap = max(_d - ({r1} + {r2}), abs({r1} - {r2}) - _d)",
            f"_a = _div({r1} * {r1} - {r2} * {r2} + _d * _d, 2.0 * _d)",
-           f"_h2 = _div((({r1} + {r2}) ** 2 - _d * _d) * (_d * _d - ({r1} - {r2}) ** 2), "
-           "4.0 * _d * _d)",
+           f"_h2 = _div(({big} - _d * _d) * (_d * _d - {small}), 4.0 * _d * _d)",
            "_h = _height(_h2, _gap)",
            "_ux = _div(_dx, _d)", "_uy = _div(_dy, _d)", f"_sh = {sigma} * _h",
            f"{n}x = {ax} + _a * _ux - _sh * _uy", f"{n}y = {ay} + _a * _uy + _sh * _ux",
@@ -273,7 +274,13 @@ def _circle_line(g: ScalarGen, s: Step, n: str) -> str:
 
 
 def _line_line(g: ScalarGen, s: Step, n: str) -> str:
-    (ax, ay, au, av), (bx, by, bu, bv) = g.line(s.input("line1")), g.line(s.input("line2"))
+    return line_meet(g, n, g.line(s.input("line1")), g.line(s.input("line2")))
+
+
+def line_meet(g: ScalarGen, n: str, one: tuple[str, str, str, str],
+              two: tuple[str, str, str, str]) -> str:
+    """Two lines (point, unit direction: source expressions) meeting at point ``n``; its sine."""
+    (ax, ay, au, av), (bx, by, bu, bv) = one, two
     g.emit(f"_s = {au} * {bv} - {av} * {bu}",
            f"_t = _div_nz(({bx} - {ax}) * {bv} - ({by} - {ay}) * {bu}, _s)",
            f"{n}x = {ax} + _t * {au}", f"{n}y = {ay} + _t * {av}", f"sn{n} = abs(_s)",
@@ -453,3 +460,8 @@ SCALAR_FORMS.update(INPUT_FORMS)
 from .kernel_triad_forms import TRIAD_FORMS
 
 SCALAR_FORMS.update(TRIAD_FORMS)
+
+# class III groups with sliding legs: the closure's root, the first inner point, a slider leg's line
+from .kernel_triadp_forms import TRIADP_FORMS
+
+SCALAR_FORMS.update(TRIADP_FORMS)

@@ -25,6 +25,19 @@ def _lit(x: float) -> str:
     return literal(x)
 
 
+def tuple_literal(xs: tuple[float, ...]) -> str:
+    """A tuple of float literals (each reads back to the same binary value)."""
+    return "(" + ", ".join(_lit(v) for v in xs) + ",)"
+
+
+def emit_root(g: ScalarGen, n: str, call: str) -> str:
+    """A class III group's closure solved by ``call`` (θ, gap, sine): its value ``n``, the
+    position marked cannot-build where the gap is not ≤ 0 or the sine below the least."""
+    g.emit(f"_t{n} = {call}", f"{n} = _t{n}[0]", f"_gap{n} = _t{n}[1]",
+           f"sn{n} = _t{n}[2]", f"bad_i = bad_i | (not (_gap{n} <= 0.0)) | (sn{n} < MIN_SINE)")
+    return f"sn{n}"
+
+
 def _triad_angle(g: ScalarGen, s: Step, n: str) -> str:
     from .kernel_triad import CONSTANTS, window_trig
 
@@ -32,15 +45,17 @@ def _triad_angle(g: ScalarGen, s: Step, n: str) -> str:
     a = [c for name in ("a1", "a2", "a3") for c in g.pt(s.input(name))]
     consts = [t.l1, t.l2, t.l3, *t.d2, *t.d3, float(t.sigma), float(t.slope), t.ref, t.size]
     counts, tols = CONSTANTS
+    args = ", ".join([*a, *(_lit(v) for v in consts), repr(counts), tuple_literal(tols),
+                      *(tuple_literal(v) for v in window_trig(t.ref))])
+    return emit_root(g, n, f"_triad_angle({args})")
 
-    def tup(xs: tuple[float, ...]) -> str:
-        return "(" + ", ".join(_lit(v) for v in xs) + ",)"
 
-    args = ", ".join([*a, *(_lit(v) for v in consts), repr(counts), tup(tols),
-                      *(tup(v) for v in window_trig(t.ref))])
-    g.emit(f"_t{n} = _triad_angle({args})", f"{n} = _t{n}[0]", f"_gap{n} = _t{n}[1]",
-           f"sn{n} = _t{n}[2]", f"bad_i = bad_i | (not (_gap{n} <= 0.0)) | (sn{n} < MIN_SINE)")
-    return f"sn{n}"
+def turned(g: ScalarGen, n: str, theta: str, d: tuple[float, float]) -> tuple[str, str]:
+    """R(θ)·d, a vector of the base link turned with it: the names of its components."""
+    dx, dy = (_lit(v) for v in d)
+    g.emit(f"_c = math.cos({theta})", f"_s = math.sin({theta})",
+           f"_rx{n} = _c * {dx} - _s * {dy}", f"_ry{n} = _s * {dx} + _c * {dy}")
+    return f"_rx{n}", f"_ry{n}"
 
 
 def _triad_point(g: ScalarGen, s: Step, n: str) -> str:
@@ -49,9 +64,8 @@ def _triad_point(g: ScalarGen, s: Step, n: str) -> str:
     t = params(s)
     a1, a2, angle = s.input("a1"), s.input("a2"), s.input("angle")
     (x2, y2), th = g.pt(a2), g.name(angle)
-    dx, dy = (_lit(v) for v in t.d2)
-    g.emit(f"_c = math.cos({th})", f"_s = math.sin({th})",
-           f"_cx{n} = {x2} - (_c * {dx} - _s * {dy})", f"_cy{n} = {y2} - (_s * {dx} + _c * {dy})")
+    rx, ry = turned(g, n, th, t.d2)
+    g.emit(f"_cx{n} = {x2} - {rx}", f"_cy{n} = {y2} - {ry}")
     return circle_meet(g, s, n, _lit(t.l1), _lit(t.l2),
                        centres=(g.pt(a1), (f"_cx{n}", f"_cy{n}")))
 
