@@ -183,7 +183,7 @@ def _edge(lc: tuple[float, ...], kinds: tuple[int, ...], p: tuple[float, ...],
     on, off = (lo, hi) if finite_lo else (hi, lo)
     pick, best = NAN, INF
     for k in range(4):      # the closed-form edge in the cell nearest its finite end
-        x = _turn(e[k], lo)
+        x: float = _turn(e[k], lo)
         if x >= lo and x <= hi and abs(x - on) < best:
             pick, best = x, abs(x - on)
     step = _sign(on - off) * EDGE_ULPS * (1.0 + abs(pick))

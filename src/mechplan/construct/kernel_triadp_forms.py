@@ -34,7 +34,7 @@ def _triadp_angle(g: ScalarGen, s: Step, n: str) -> str:
     from .kernel_triadp import CONSTANTS, KIND_CODES, grid_trig, group_args
 
     t = params(s)
-    loci = [c for sid in s.inputs[:3] for c in _locus(g, sid)]
+    loci = [c for name in ("one", "two", "three") for c in _locus(g, s.input(name))]
     kinds = "(" + ", ".join(str(KIND_CODES[k]) for k in t.kinds) + ",)"
     args = ", ".join(["(" + ", ".join(loci) + ",)", kinds, tuple_literal(group_args(t)),
                       repr(CONSTANTS), *(tuple_literal(v) for v in grid_trig(t.ref))])
@@ -46,7 +46,7 @@ def _triadp_point(g: ScalarGen, s: Step, n: str) -> str:
     from .kernel_triadp import group_args
 
     t = params(s)
-    one, two, angle = s.inputs[:3]
+    one, two, angle = s.input("one"), s.input("two"), s.input("angle")
     rx, ry = turned(g, n, g.name(angle), t.d2)
     if t.kinds[0] == "R" and t.kinds[1] == "R":
         (x2, y2), squares = g.pt(two), group_args(t)[14:16]
