@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 
 import numpy as np
+from shapely.geometry.base import BaseGeometry
 
 from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
@@ -29,7 +31,7 @@ from .kinematics_sheet import (
     split_tables,
     tables_of,
 )
-from .layout import drawing_area, fewest_sheets, framed
+from .layout import Groups, drawing_area, fewest_sheets, framed
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -44,6 +46,10 @@ from .scales import (
 from .textbook import textbook_panels
 
 GAP = 8.0          # mm between panels
+#: the lengthenings of a diagram's φ axis tried (its height kept) once it grows no more as a whole
+WIDER = (1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0, 2.25, 2.5, 2.8)
+#: and the heights tried with each (a title unwrapped on a wider diagram gives back room)
+TALLER = (1.0, 1.1, 1.2, 1.3)
 packing_area = drawing_area      # the drawing area clear of the centring marks and title block
 
 
@@ -180,6 +186,31 @@ def _diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     return out
 
 
+def _grown_diagrams(sol: Solution, lang: str, r: Room, groups: Groups,
+                    area: BaseGeometry) -> Groups:
+    """The diagrams over φ (their scales are their own) grown into their sheet's free room:
+    redrawn larger as a whole, then in the shapes of a longer φ axis (:data:`WIDER`) and a
+    taller one (:data:`TALLER`), each taken that fits and is larger — a stack of s, v, a
+    narrower than the room beside it, where no panel fits, widens into it; a later panel that
+    fits the room it leaves is pulled onto its sheet (:func:`.grow.grow_into_room`)."""
+    found, grown = grow_into_room(lambda k: _diagrams(sol, lang, Room(r.width * k,
+                                                                       r.height * k)),
+                                  [g for g in GROWTH if g > 1.0], groups, area)
+
+    shapes = sorted(itertools.product(WIDER, TALLER), key=lambda wh: (wh[0] * wh[1], wh[0]))
+
+    def wider(step: float) -> list[Panel]:
+        kw, kt = shapes[int(step)]
+        out: list[Panel] = []
+        for kh in sorted(set(grown.values()) | {1.0}):
+            out += [p for p in _diagrams(sol, lang, Room(r.width * kh * kw, r.height * kh * kt))
+                    if grown.get(p.name, 1.0) == kh]
+        return out
+
+    return grow_into_room(wider, range(len(shapes)), found, area, pull=True,
+                          onward=True)[0]
+
+
 def position_at(sol: Solution, k: int, lang: str) -> float | str:
     """φ of position k in degrees (:func:`crank_degrees`), or a linear driver's coordinate as
     written on its plans' titles: "l4 = 1562.5 mm"."""
@@ -259,9 +290,7 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
                                                            "size": str(size),
                                                            "value3": str(fixed or 'chosen')}),
             file=scene.path)
-    # the diagrams (their scales are their own) grow into their sheet's free room
-    found, _ = grow_into_room(lambda k: _diagrams(sol, lang, Room(r.width * k, r.height * k)),
-                     [g for g in GROWTH if g > 1.0], found, area)
+    found = _grown_diagrams(sol, lang, r, found, area)
     groups = [list(zip(p, o)) for p, o in found]
     sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)
     return Composition(sheets, groups, mu, size, standard)
