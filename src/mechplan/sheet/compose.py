@@ -48,8 +48,9 @@ from .textbook import textbook_panels
 GAP = 8.0          # mm between panels
 #: the lengthenings of a diagram's φ axis tried (its height kept) once it grows no more as a whole
 WIDER = (1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0, 2.25, 2.5, 2.8)
-#: and the heights tried with each (a title unwrapped on a wider diagram gives back room)
-TALLER = (1.0, 1.1, 1.2, 1.3)
+#: and the lengths of the kinematic diagrams' ordinates tried with each (a title unwrapped on a
+#: wider diagram gives back room; a stack at its widest may fill the height under it)
+TALLER = (1.0, 1.1, 1.2, 1.3, 1.4, 1.5)
 packing_area = drawing_area      # the drawing area clear of the centring marks and title block
 
 
@@ -176,10 +177,11 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
     return panels + [d for d in (mb, eta) if d is not None]
 
 
-def _diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
+def _diagrams(sol: Solution, lang: str, r: Room, tall: float = 1.0) -> list[Panel]:
     """The diagrams over φ of the sheets (kinematic, M_b, η) drawn for a room ``r``: the panels
-    the layout may redraw larger (no plan's scale factor depends on them)."""
-    out = kinematic_diagrams(sol, lang, r)
+    the layout may redraw larger (no plan's scale factor depends on them); ``tall``: the
+    kinematic ones' ordinates that many times longer."""
+    out = kinematic_diagrams(sol, lang, r, tall)
     if "force" in sol.plans:
         out += [d for d in (balancing_diagram(sol, lang, r), efficiency_diagram(sol, lang, r))
                 if d is not None]
@@ -203,7 +205,7 @@ def _grown_diagrams(sol: Solution, lang: str, r: Room, groups: Groups,
         kw, kt = shapes[int(step)]
         out: list[Panel] = []
         for kh in sorted(set(grown.values()) | {1.0}):
-            out += [p for p in _diagrams(sol, lang, Room(r.width * kh * kw, r.height * kh * kt))
+            out += [p for p in _diagrams(sol, lang, Room(r.width * kh * kw, r.height * kh), kt)
                     if grown.get(p.name, 1.0) == kh]
         return out
 
