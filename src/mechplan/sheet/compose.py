@@ -31,7 +31,7 @@ from .kinematics_sheet import (
     split_tables,
     tables_of,
 )
-from .layout import Groups, drawing_area, fewest_sheets, framed
+from .layout import GOAL, Groups, coverage, drawing_area, fewest_sheets, framed
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -51,6 +51,8 @@ WIDER = (1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0, 2.25, 2.5, 2.8)
 #: and the lengths of the kinematic diagrams' ordinates tried with each (a title unwrapped on a
 #: wider diagram gives back room; a stack at its widest may fill the height under it)
 TALLER = (1.0, 1.1, 1.2, 1.3, 1.4, 1.5)
+#: the longest ordinates tried in turn (:func:`_grown_diagrams`)
+TALLER_CAPS = (1.3, 1.5)
 packing_area = drawing_area      # the drawing area clear of the centring marks and title block
 
 
@@ -199,18 +201,32 @@ def _grown_diagrams(sol: Solution, lang: str, r: Room, groups: Groups,
                                                                        r.height * k)),
                                   [g for g in GROWTH if g > 1.0], groups, area)
 
-    shapes = sorted(itertools.product(WIDER, TALLER), key=lambda wh: (wh[0] * wh[1], wh[0]))
+    def wider_in(shapes: list[tuple[float, float]]) -> Groups:
+        def wider(step: float) -> list[Panel]:
+            kw, kt = shapes[int(step)]
+            out: list[Panel] = []
+            for kh in sorted(set(grown.values()) | {1.0}):
+                out += [p for p in _diagrams(sol, lang, Room(r.width * kh * kw,
+                                                             r.height * kh * kt), kt)
+                        if grown.get(p.name, 1.0) == kh]
+            return out
 
-    def wider(step: float) -> list[Panel]:
-        kw, kt = shapes[int(step)]
-        out: list[Panel] = []
-        for kh in sorted(set(grown.values()) | {1.0}):
-            out += [p for p in _diagrams(sol, lang, Room(r.width * kh * kw, r.height * kh), kt)
-                    if grown.get(p.name, 1.0) == kh]
-        return out
+        return grow_into_room(wider, range(len(shapes)), found, area, pull=True, onward=True)[0]
 
-    return grow_into_room(wider, range(len(shapes)), found, area, pull=True,
-                          onward=True)[0]
+    # each panel takes the largest shape that fits in turn, which need not fill the sheet best
+    # when two diagrams share it: the ordinates up to each cap tried, the set that leaves the
+    # fewest full sheets under the goal kept (then the fuller emptiest one)
+    tried = [wider_in(sorted(((kw, kt) for kw, kt in itertools.product(WIDER, TALLER)
+                              if kt <= cap), key=lambda wh: (wh[0] * wh[1], wh[0])))
+             for cap in TALLER_CAPS]
+    return min(tried, key=lambda g: (len(g), _emptiest(g, area)))
+
+
+def _emptiest(groups: Groups, area: BaseGeometry) -> tuple[int, float]:
+    """The count of full sheets (all but the last) under the goal, and minus the emptiest one's
+    coverage."""
+    full = [coverage(list(zip(p, o)), area) for p, o in groups[:-1]]
+    return sum(c < GOAL for c in full), -min(full, default=1.0)
 
 
 def position_at(sol: Solution, k: int, lang: str) -> float | str:
