@@ -201,24 +201,26 @@ def _grown_diagrams(sol: Solution, lang: str, r: Room, groups: Groups,
                                                                        r.height * k)),
                                   [g for g in GROWTH if g > 1.0], groups, area)
 
-    def wider_in(shapes: list[tuple[float, float]]) -> Groups:
+    def wider_in(shapes: list[tuple[float, float]], taller: bool) -> Groups:
         def wider(step: float) -> list[Panel]:
             kw, kt = shapes[int(step)]
             out: list[Panel] = []
             for kh in sorted(set(grown.values()) | {1.0}):
                 out += [p for p in _diagrams(sol, lang, Room(r.width * kh * kw,
-                                                             r.height * kh * kt), kt)
+                                                             r.height * kh * kt),
+                                             kt if taller else 1.0)
                         if grown.get(p.name, 1.0) == kh]
             return out
 
         return grow_into_room(wider, range(len(shapes)), found, area, pull=True, onward=True)[0]
 
     # each panel takes the largest shape that fits in turn, which need not fill the sheet best
-    # when two diagrams share it: the ordinates up to each cap tried, the set that leaves the
-    # fewest full sheets under the goal kept (then the fuller emptiest one)
+    # when two diagrams share it: the room's height up to 1.3 (the kinematic ordinates capped at
+    # 28 mm), and up to 1.5 with the kinematic ordinates lengthened as much again, both tried;
+    # the set that leaves the fewest full sheets under the goal kept (then the fuller emptiest)
     tried = [wider_in(sorted(((kw, kt) for kw, kt in itertools.product(WIDER, TALLER)
-                              if kt <= cap), key=lambda wh: (wh[0] * wh[1], wh[0])))
-             for cap in TALLER_CAPS]
+                              if kt <= cap), key=lambda wh: (wh[0] * wh[1], wh[0])), taller)
+             for cap, taller in zip(TALLER_CAPS, (False, True))]
     return min(tried, key=lambda g: (len(g), _emptiest(g, area)))
 
 
