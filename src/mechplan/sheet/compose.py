@@ -196,10 +196,13 @@ def _grown_diagrams(sol: Solution, lang: str, r: Room, groups: Groups,
     redrawn larger as a whole, then in the shapes of a longer φ axis (:data:`WIDER`) and a
     taller one (:data:`TALLER`), each taken that fits and is larger — a stack of s, v, a
     narrower than the room beside it, where no panel fits, widens into it; a later panel that
-    fits the room it leaves is pulled onto its sheet (:func:`.grow.grow_into_room`)."""
+    fits the room it leaves is pulled onto its sheet (:func:`.grow.grow_into_room`). The shapes
+    are tried only where a full sheet is under the goal (a search of some 60 shapes, redrawn)."""
     found, grown = grow_into_room(lambda k: _diagrams(sol, lang, Room(r.width * k,
                                                                        r.height * k)),
                                   [g for g in GROWTH if g > 1.0], groups, area)
+    if _emptiest(found, area)[0] == 0:      # every full sheet meets the goal: no reshaping
+        return found
 
     def wider_in(shapes: list[tuple[float, float]], taller: bool) -> Groups:
         def wider(step: float) -> list[Panel]:
