@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 
 import numpy as np
+from shapely.geometry.base import BaseGeometry
 
 from ..construct.extremes import extreme_positions
 from ..construct.protocol import plan_title as plan_name
@@ -29,7 +31,7 @@ from .kinematics_sheet import (
     split_tables,
     tables_of,
 )
-from .layout import drawing_area, fewest_sheets, framed
+from .layout import GOAL, Groups, coverage, drawing_area, fewest_sheets, framed
 from .lever import lever_title, zhukovsky_lever
 from .panels import Panel, plan_title, position_plan, vector_plan
 from .scales import (
@@ -44,6 +46,13 @@ from .scales import (
 from .textbook import textbook_panels
 
 GAP = 8.0          # mm between panels
+#: the lengthenings of a diagram's φ axis tried (its height kept) once it grows no more as a whole
+WIDER = (1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0, 2.25, 2.5, 2.8)
+#: and the lengths of the kinematic diagrams' ordinates tried with each (a title unwrapped on a
+#: wider diagram gives back room; a stack at its widest may fill the height under it)
+TALLER = (1.0, 1.1, 1.2, 1.3, 1.4, 1.5)
+#: the longest ordinates tried in turn (:func:`_grown_diagrams`)
+TALLER_CAPS = (1.3, 1.5)
 packing_area = drawing_area      # the drawing area clear of the centring marks and title block
 
 
@@ -170,14 +179,59 @@ def _force_panels(sol: Solution, mu: dict[Plan, float], lang: str, r: Room) -> l
     return panels + [d for d in (mb, eta) if d is not None]
 
 
-def _diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
+def _diagrams(sol: Solution, lang: str, r: Room, tall: float = 1.0) -> list[Panel]:
     """The diagrams over φ of the sheets (kinematic, M_b, η) drawn for a room ``r``: the panels
-    the layout may redraw larger (no plan's scale factor depends on them)."""
-    out = kinematic_diagrams(sol, lang, r)
+    the layout may redraw larger (no plan's scale factor depends on them); ``tall``: the
+    kinematic ones' ordinates that many times longer."""
+    out = kinematic_diagrams(sol, lang, r, tall)
     if "force" in sol.plans:
         out += [d for d in (balancing_diagram(sol, lang, r), efficiency_diagram(sol, lang, r))
                 if d is not None]
     return out
+
+
+def _grown_diagrams(sol: Solution, lang: str, r: Room, groups: Groups,
+                    area: BaseGeometry) -> Groups:
+    """The diagrams over φ (their scales are their own) grown into their sheet's free room:
+    redrawn larger as a whole, then in the shapes of a longer φ axis (:data:`WIDER`) and a
+    taller one (:data:`TALLER`), each taken that fits and is larger — a stack of s, v, a
+    narrower than the room beside it, where no panel fits, widens into it; a later panel that
+    fits the room it leaves is pulled onto its sheet (:func:`.grow.grow_into_room`). The shapes
+    are tried only where a full sheet is under the goal (a search of some 60 shapes, redrawn)."""
+    found, grown = grow_into_room(lambda k: _diagrams(sol, lang, Room(r.width * k,
+                                                                       r.height * k)),
+                                  [g for g in GROWTH if g > 1.0], groups, area)
+    if _emptiest(found, area)[0] == 0:      # every full sheet meets the goal: no reshaping
+        return found
+
+    def wider_in(shapes: list[tuple[float, float]], taller: bool) -> Groups:
+        def wider(step: float) -> list[Panel]:
+            kw, kt = shapes[int(step)]
+            out: list[Panel] = []
+            for kh in sorted(set(grown.values()) | {1.0}):
+                out += [p for p in _diagrams(sol, lang, Room(r.width * kh * kw,
+                                                             r.height * kh * kt),
+                                             kt if taller else 1.0)
+                        if grown.get(p.name, 1.0) == kh]
+            return out
+
+        return grow_into_room(wider, range(len(shapes)), found, area, pull=True, onward=True)[0]
+
+    # each panel takes the largest shape that fits in turn, which need not fill the sheet best
+    # when two diagrams share it: the room's height up to 1.3 (the kinematic ordinates capped at
+    # 28 mm), and up to 1.5 with the kinematic ordinates lengthened as much again, both tried;
+    # the set that leaves the fewest full sheets under the goal kept (then the fuller emptiest)
+    tried = [wider_in(sorted(((kw, kt) for kw, kt in itertools.product(WIDER, TALLER)
+                              if kt <= cap), key=lambda wh: (wh[0] * wh[1], wh[0])), taller)
+             for cap, taller in zip(TALLER_CAPS, (False, True))]
+    return min(tried, key=lambda g: (len(g), _emptiest(g, area)))
+
+
+def _emptiest(groups: Groups, area: BaseGeometry) -> tuple[int, float]:
+    """The count of full sheets (all but the last) under the goal, and minus the emptiest one's
+    coverage."""
+    full = [coverage(list(zip(p, o)), area) for p, o in groups[:-1]]
+    return sum(c < GOAL for c in full), -min(full, default=1.0)
 
 
 def position_at(sol: Solution, k: int, lang: str) -> float | str:
@@ -259,9 +313,7 @@ def compose(sol: Solution, size: str | None = None, standard: str | None = None,
                                                            "size": str(size),
                                                            "value3": str(fixed or 'chosen')}),
             file=scene.path)
-    # the diagrams (their scales are their own) grow into their sheet's free room
-    found, _ = grow_into_room(lambda k: _diagrams(sol, lang, Room(r.width * k, r.height * k)),
-                     [g for g in GROWTH if g > 1.0], found, area)
+    found = _grown_diagrams(sol, lang, r, found, area)
     groups = [list(zip(p, o)) for p, o in found]
     sheets = framed(groups, size=size, standard=standard, language=lang, name=name, fields=base)
     return Composition(sheets, groups, mu, size, standard)

@@ -52,14 +52,15 @@ def chords(x: np.ndarray, y: np.ndarray, dt: float) -> tuple[np.ndarray, np.ndar
     return (0.5 * (x[1:] + x[:-1]), np.diff(y) / dt)
 
 
-def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
-    """s(φ), v(φ), a(φ) of the output link: exact curves and the graphical differentiation."""
+def kinematic_diagrams(sol: Solution, lang: str, r: Room, tall: float = 1.0) -> list[Panel]:
+    """s(φ), v(φ), a(φ) of the output link: exact curves and the graphical differentiation;
+    ``tall``: their ordinate axes that many times their usual length (grown into free room)."""
     out = output_link(sol.scene.mechanism)
     if out is None:
         return []
     drive = sol.scene.mechanism.drive
     if drive.linear or drive.law is not None:   # over the driver's range (a linear driver's, a
-        return _linear_diagrams(sol, out, lang, r)  # crank's table), against the law's time
+        return _linear_diagrams(sol, out, lang, r, tall)  # crank's table), against the law's time
     omega = abs(sol.scene.mechanism.drive.omega)
     sweep_positions = not sol.scene.positions.angles and sol.positions >= 4
     phi0 = float(sol.phi[0]) if sweep_positions else 0.0
@@ -81,7 +82,7 @@ def kinematic_diagrams(sol: Solution, lang: str, r: Room) -> list[Panel]:
     symbols = ("ψ", "ω", "ε") if rocker else ("s", "v", "a")
     units = ("°", "rad/s", "rad/s²") if rocker else ("m", "m/s", "m/s²")
     length_x = min(160.0, 0.36 * r.width)
-    length_y = min(28.0, 0.1 * r.height)
+    length_y = min(28.0, 0.1 * r.height) * tall
     x_axis = Axis("φ", "°", length_x)
     # which line is which, over the diagrams: "—— exact   – – – graphical differentiation"
     legend = (f"—— {message('layout.diagram.exact', lang)}   – – – "
@@ -118,7 +119,8 @@ def _stacked(specs: list[tuple[str, str, str, list[Curve]]], out: Output, x_axis
     return stacks
 
 
-def _linear_diagrams(sol: Solution, out: Output, lang: str, r: Room) -> list[Panel]:
+def _linear_diagrams(sol: Solution, out: Output, lang: str, r: Room,
+                     tall: float = 1.0) -> list[Panel]:
     """s(t), v(t), a(t) of the output link over a linear driver's range, against the law's time
     (constant rate: t = (q − q⁰)/q̇; a table: its spline inverted): the exact curves, and the
     graphical differentiation by chords over the positions."""
@@ -158,7 +160,7 @@ def _linear_diagrams(sol: Solution, out: Output, lang: str, r: Room) -> list[Pan
                                  role=Role.DASHED)]))
     legend = (f"—— {message('layout.diagram.exact', lang)}   – – – "
               f"{message('layout.diagram.graphical', lang)}")
-    return _stacked(specs, out, x_axis, min(28.0, 0.1 * r.height), "t", legend, lang, r)
+    return _stacked(specs, out, x_axis, min(28.0, 0.1 * r.height) * tall, "t", legend, lang, r)
 
 
 def balancing_diagram(sol: Solution, lang: str, r: Room) -> Panel | None:
