@@ -7,13 +7,11 @@ fits is plain arithmetic on the 300 × 200 mm area and the 8 mm gap."""
 from __future__ import annotations
 
 import pytest
+from framed_sets import framed_sets
 from scenes import ROOT
 from shapely import box, unary_union
 
 from mechplan.drafting.primitives import Line
-from mechplan.sheet import compose as compose_module
-from mechplan.sheet import layout
-from mechplan.sheet.frame import make_frame
 from mechplan.sheet.grow import grow_into_room
 from mechplan.sheet.layout import GAP, GOAL, paginate
 from mechplan.sheet.panels import Panel
@@ -106,18 +104,8 @@ def _moved(panel: Panel, at: tuple[float, float]) -> tuple[float, float, float, 
 @pytest.mark.parametrize("stem", ["offset_slider_crank", "shaper_flywheel"])
 def test_the_kinematic_diagrams_widen_and_every_full_a4_sheet_reaches_the_goal(stem,
                                                                               monkeypatch):
-    sets: list = []
-    original = layout.framed
-
-    def framed(placements, *, size, standard, language, name, fields):
-        area = layout.drawing_area(make_frame(size, standard, dict(fields), language=language))
-        sets.append(([list(p) for p in placements], area))
-        return original(placements, size=size, standard=standard, language=language, name=name,
-                        fields=fields)
-
-    monkeypatch.setattr(layout, "framed", framed)
-    monkeypatch.setattr(compose_module, "framed", framed)
-    solve_file(str(ROOT / "templates" / f"{stem}.toml")).sheets("A4", None, None, stem)
+    sets = framed_sets(solve_file(str(ROOT / "templates" / f"{stem}.toml")), stem, "A4",
+                       monkeypatch)
     widths = [_size(p)[0] for placements, _ in sets for placed in placements
               for p, _ in placed if p.name == "diagram-kinematic"]
     assert widths and max(widths) > 90.0        # 71 mm on land

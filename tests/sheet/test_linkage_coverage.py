@@ -11,45 +11,14 @@ from __future__ import annotations
 import re
 
 import pytest
+from framed_sets import covered, framed_sets
 from scenes import ROOT
-from shapely import box, unary_union
 
 from mechplan.drafting.primitives import Table, Text
-from mechplan.sheet import compose as compose_module
-from mechplan.sheet import layout
-from mechplan.sheet.frame import make_frame
 from mechplan.sheet.layout import GOAL
 from mechplan.sheet.panels import TABLE_H, Panel
 from mechplan.sheet.table_rows import MIN_ROWS, splittable
 from mechplan.studies import solve_file
-
-
-def _sets(stem: str, size: str, monkeypatch) -> list[tuple[list, object]]:
-    """Every set of sheets framed for a template at a size: (placements, drawing area)."""
-    sets: list = []
-    original = layout.framed
-
-    def framed(placements, *, size, standard, language, name, fields):
-        area = layout.drawing_area(make_frame(size, standard, dict(fields), language=language))
-        sets.append(([list(p) for p in placements], area))
-        return original(placements, size=size, standard=standard, language=language, name=name,
-                        fields=fields)
-
-    monkeypatch.setattr(layout, "framed", framed)
-    monkeypatch.setattr(compose_module, "framed", framed)
-    solve_file(str(ROOT / "templates" / f"{stem}.toml")).sheets(size, None, None, stem)
-    return sets
-
-
-def _covered(placed, area) -> float:
-    """The share of the drawing area under the placed panels' boxes (shapely union)."""
-    boxes = []
-    for panel, (dx, dy) in placed:
-        x0, y0, x1, y1 = panel.bounds()
-        b = box(x0 + dx, y0 + dy, x1 + dx, y1 + dy)
-        assert b.difference(area).area < 1e-6 * b.area, panel.name     # inside the area
-        boxes.append(b)
-    return unary_union(boxes).area / area.area
 
 
 # full A4 sheets at 46–54 % on main (a plan alone on a sheet, its tables on the next; a table
@@ -59,8 +28,8 @@ def _covered(placed, area) -> float:
 @pytest.mark.parametrize("stem", ["slider_crank", "shaper", "five_bar_two_cranks",
                                   "slider_coulisse", "machine_course"])
 def test_every_full_a4_sheet_of_these_sets_reaches_the_goal(stem, monkeypatch):
-    for placements, area in _sets(stem, "A4", monkeypatch):
-        full = [_covered(p, area) for p in placements[:-1]]
+    for placements, area in framed_sets(_study(stem), stem, "A4", monkeypatch):
+        full = [covered(p, area) for p in placements[:-1]]
         assert full and all(c >= GOAL for c in full), [round(c, 3) for c in full]
 
 
@@ -69,7 +38,7 @@ def test_a_plans_tables_never_come_before_the_plan(stem, monkeypatch):
     """Reading order: the tables of a plan set apart (or their first rows) are on the sheet of
     the plan or a later one, in order of their parts."""
     seen = 0
-    for placements, _area in _sets(stem, "A4", monkeypatch):
+    for placements, _area in framed_sets(_study(stem), stem, "A4", monkeypatch):
         sheet_of: dict[str, int] = {}
         parts: dict[str, list[str]] = {}
         for i, placed in enumerate(placements):
@@ -138,3 +107,7 @@ def test_tables_too_small_to_cut_stay_whole():
     x0, _y0, x1, _y1 = splittable(_tables([3, 3]), "t", "T").bounds()
     whole = splittable(_tables([3, 3]), "t", "T").split_off(x1 - x0, 10.0)
     assert len(whole) == 1                          # nothing fits 10 mm: the layout looks on
+
+
+def _study(stem: str):
+    return solve_file(str(ROOT / "templates" / f"{stem}.toml"))

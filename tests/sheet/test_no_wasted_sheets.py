@@ -10,13 +10,11 @@ import math
 import numpy as np
 import pytest
 import shapely
+from framed_sets import framed_sets
 from scenes import ALL_TEMPLATES
 from shapely import box
 
 from mechplan.drafting.primitives import Line
-from mechplan.sheet import compose as compose_module
-from mechplan.sheet import layout
-from mechplan.sheet.frame import make_frame
 from mechplan.sheet.layout import GAP, Sheetful, chain, paginate, sequence
 from mechplan.sheet.panels import Panel
 from mechplan.studies import solve_file
@@ -29,21 +27,6 @@ def _study(path):
     return solve_file(str(path))
 
 
-def _sets(path, size, monkeypatch) -> list:
-    """Every set of sheets framed for the template at the size: (placements, drawing area)."""
-    sets: list = []
-    original = layout.framed
-
-    def framed(placements, *, size, standard, language, name, fields):
-        area = layout.drawing_area(make_frame(size, standard, dict(fields), language=language))
-        sets.append(([list(p) for p in placements], area))
-        return original(placements, size=size, standard=standard, language=language, name=name,
-                        fields=fields)
-
-    monkeypatch.setattr(layout, "framed", framed)
-    monkeypatch.setattr(compose_module, "framed", framed)
-    _study(path).sheets(size, None, None, path.stem)
-    return sets
 
 
 class Raster:
@@ -85,7 +68,7 @@ def _footprint(panel: Panel) -> tuple[float, float]:
 def test_no_panel_of_a_later_sheet_fits_an_earlier_sheets_free_room(path, monkeypatch):
     late = []
     for size in SIZES:
-        for placements, area in _sets(path, size, monkeypatch):
+        for placements, area in framed_sets(_study(path), path.stem, size, monkeypatch):
             rasters = [Raster(area, placed) for placed in placements]
             sheet_of = {id(q): n for n, placed in enumerate(placements) for q, _ in placed}
             for j, placed in enumerate(placements[1:], start=1):

@@ -8,43 +8,16 @@ Coverage is measured here from the placed panels' boxes (independently of the la
 from __future__ import annotations
 
 import pytest
+from framed_sets import covered, framed_sets
 from scenes import ROOT
 from shapely import box
 
 from mechplan.drafting.primitives import Line, Table
-from mechplan.sheet import compose as compose_module
-from mechplan.sheet import layout
 from mechplan.sheet.fit import table_panel
-from mechplan.sheet.frame import make_frame
 from mechplan.sheet.grow import GROWTH, grow_into_room
 from mechplan.sheet.layout import GAP, GOAL, paginate
 from mechplan.sheet.panels import Panel
 from mechplan.studies import solve_file
-
-
-def _sets(stem: str, size: str, monkeypatch) -> list[tuple[list, float]]:
-    """Every set of sheets framed for a template at a size: (placements, drawing-area mm²)."""
-    sets: list = []
-    original = layout.framed
-
-    def framed(placements, *, size, standard, language, name, fields):
-        area = layout.drawing_area(make_frame(size, standard, dict(fields), language=language))
-        sets.append(([list(p) for p in placements], area.area))
-        return original(placements, size=size, standard=standard, language=language, name=name,
-                        fields=fields)
-
-    monkeypatch.setattr(layout, "framed", framed)
-    monkeypatch.setattr(compose_module, "framed", framed)
-    solve_file(str(ROOT / "templates" / f"{stem}.toml")).sheets(size, None, None, stem)
-    return sets
-
-
-def _covered(placed, area: float) -> float:
-    total = 0.0
-    for panel, _ in placed:
-        x0, y0, x1, y1 = panel.bounds()
-        total += (x1 - x0) * (y1 - y0)
-    return total / area
 
 
 # sets that had full sheets at 23–46 % (one cylinder's table alone on a sheet, diagrams in one
@@ -55,8 +28,8 @@ def _covered(placed, area: float) -> float:
     ("cam_follower_dynamics", "A4", 4)])
 def test_every_full_sheet_of_an_engine_or_cam_set_reaches_the_goal(stem, size, before,
                                                                    monkeypatch):
-    for placements, area in _sets(stem, size, monkeypatch):
-        full = [_covered(p, area) for p in placements[:-1]]
+    for placements, area in framed_sets(_study(stem), stem, size, monkeypatch):
+        full = [covered(p, area) for p in placements[:-1]]
         assert all(c >= GOAL for c in full), [round(c, 3) for c in full]
         assert len(placements) < before            # the sheets it took on main
 
@@ -103,3 +76,7 @@ def test_a_tables_parts_can_be_split_again_into_a_free_room():
     assert drawn == first                                   # every row once, in order
     assert all(t.cells[0] == tuple(rows[0]) for p in again for t in p.primitives
                if isinstance(t, Table))                     # each part repeats the heading
+
+
+def _study(stem: str):
+    return solve_file(str(ROOT / "templates" / f"{stem}.toml"))
